@@ -1,0 +1,78 @@
+#include "analysis/measurements.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace dem {
+
+double void_ratio(const Particles& p, const PeriodicCell& cell) {
+  const double vs = total_solid_volume(p);
+  return (cell.volume() - vs) / vs;
+}
+
+double coordination_number(std::size_t contacts, std::size_t particles) {
+  return particles ? 2.0 * static_cast<double>(contacts) / static_cast<double>(particles) : 0.0;
+}
+
+ContactCounts count_contacts(const Simulation& sim) {
+  const Particles& p = sim.particles();
+  const PairList& pairs = sim.pairs();
+  std::vector<unsigned> per_particle(p.size(), 0);
+  ContactCounts c;
+  const bool frictional = !pairs.sliding.empty();
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    const auto i = pairs.first[k], j = pairs.second[k];
+    const double rsum = p.radius[i] + p.radius[j];
+    if (sim.cell().branch(p.s[i], p.s[j]).squaredNorm() >= rsum * rsum) continue;
+    ++c.contacts;
+    ++per_particle[i];
+    ++per_particle[j];
+    if (frictional && pairs.sliding[k]) ++c.sliding;
+  }
+  for (unsigned n : per_particle) {
+    if (n == 0) ++c.particles_no_contact;
+    if (n == 1) ++c.particles_one_contact;
+  }
+  return c;
+}
+
+double mechanical_coordination_number(const ContactCounts& c, std::size_t particles) {
+  const double n = static_cast<double>(particles - c.particles_no_contact - c.particles_one_contact);
+  return n > 0 ? (2.0 * static_cast<double>(c.contacts) - static_cast<double>(c.particles_one_contact)) / n : 0.0;
+}
+
+double unbalanced_force_ratio(const Simulation& sim) {
+  const StepSums& s = sim.sums();
+  if (s.contacts == 0 || s.sum_normal_force_N <= 0) return 1.0;
+  double sum_net = 0;
+  for (const Vec3& f : sim.net_force()) sum_net += f.norm();
+  const double mean_net = sum_net / static_cast<double>(sim.net_force().size());
+  return mean_net / (s.sum_normal_force_N / static_cast<double>(s.contacts));
+}
+
+double rotational_kinetic_energy(const Particles& p) {
+  double e = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) e += 0.5 * p.inertia[i] * p.omega[i].squaredNorm();
+  return e;
+}
+
+double mean_stress(const Mat3& stress_Pa) { return stress_Pa.trace() / 3.0; }
+
+double deviator_stress(const Mat3& stress_Pa) {
+  const Vec3 s = Eigen::SelfAdjointEigenSolver<Mat3>(stress_Pa, Eigen::EigenvaluesOnly).eigenvalues();
+  return std::sqrt(0.5 * ((s[0] - s[1]) * (s[0] - s[1]) + (s[1] - s[2]) * (s[1] - s[2]) + (s[0] - s[2]) * (s[0] - s[2])));
+}
+
+double inertial_number(const Simulation& sim) {
+  const double p = mean_stress(sim.sums().stress_Pa);
+  if (p <= 0) return 0.0;
+  const Particles& parts = sim.particles();
+  double d_mean = 0;
+  for (double r : parts.radius) d_mean += 2 * r;
+  d_mean /= static_cast<double>(parts.size());
+  return sim.strain_rate().cwiseAbs().maxCoeff() * d_mean * std::sqrt(sim.material().density_kg_per_m3 / p);
+}
+
+}  // namespace dem

@@ -1,0 +1,37 @@
+#pragma once
+// Measurements of a simulation state. Pure functions: they read a const state and never change a
+// trajectory. Compression positive.
+#include <cstddef>
+
+#include "dynamics/simulation.hpp"
+
+namespace dem {
+
+double void_ratio(const Particles& p, const PeriodicCell& cell);          // (V - Vs) / Vs, overlaps not subtracted
+double coordination_number(std::size_t contacts, std::size_t particles);  // 2 Nc / Np (rattlers included)
+
+struct ContactCounts {
+  std::size_t contacts = 0;          // Nc
+  std::size_t sliding = 0;           // Ns (|f_t| at the Coulomb limit)
+  std::size_t particles_no_contact = 0;   // N0
+  std::size_t particles_one_contact = 0;  // N1
+};
+// Counts the pairs in contact at the current positions, and the sliding flags of the last force evaluation.
+ContactCounts count_contacts(const Simulation& sim);
+
+// Mechanical coordination number without rattlers (Thornton 2000): (2 Nc - N1) / (Np - N0 - N1).
+double mechanical_coordination_number(const ContactCounts& c, std::size_t particles);
+
+// Mean |net force on a particle| / mean normal contact force, from the last force evaluation.
+// The normal force is used as the mean contact force; since |f| >= f_n this errs on the high side.
+double unbalanced_force_ratio(const Simulation& sim);
+
+double rotational_kinetic_energy(const Particles& p);  // [J]
+
+// Inertial number I = max_k |rate_k| d_mean sqrt(rho / p), p the mean stress; 0 if p <= 0.
+double inertial_number(const Simulation& sim);
+
+double mean_stress(const Mat3& stress_Pa);        // p = tr(sigma) / 3
+double deviator_stress(const Mat3& stress_Pa);    // q = sqrt(((s1-s2)^2 + (s2-s3)^2 + (s1-s3)^2) / 2), principal values
+
+}  // namespace dem

@@ -1,0 +1,65 @@
+#pragma once
+// The periodic orthorhombic cell: the one place that knows the lengths, wrapping and minimum image.
+//
+// Sign convention (used everywhere in the engine): strains and strain rates are positive in
+// compression. A strain rate r on axis k shrinks L_k as dL_k/dt = -r L_k, so the true strain
+// eps_k = -ln(L_k / L_k0) is positive in compression.
+#include <cassert>
+#include <cmath>
+
+#include "core/types.hpp"
+
+namespace dem {
+
+class PeriodicCell {
+ public:
+  PeriodicCell() = default;
+  explicit PeriodicCell(const Vec3& lengths_m) { set_lengths(lengths_m); reference_ = lengths_m; }
+
+  const Vec3& lengths() const { return L_; }
+  const Vec3& inverse_lengths() const { return invL_; }
+  double volume() const { return L_.prod(); }
+
+  // Lengths at which strain is zero (reset at the start of a stage that measures strain).
+  const Vec3& reference_lengths() const { return reference_; }
+  void set_reference_lengths(const Vec3& l) { reference_ = l; }
+  Vec3 strain() const {  // true strain, compression positive
+    return Vec3(-std::log(L_[0] / reference_[0]), -std::log(L_[1] / reference_[1]), -std::log(L_[2] / reference_[2]));
+  }
+
+  // Real-space vector from particle i to the nearest periodic image of particle j.
+  Vec3 branch(const Vec3& s_i, const Vec3& s_j) const {
+    Vec3 ds = s_j - s_i;
+    for (int k = 0; k < 3; ++k) ds[k] -= std::floor(ds[k] + 0.5);
+    return ds.cwiseProduct(L_);
+  }
+
+  static void wrap(Vec3& s) {
+    for (int k = 0; k < 3; ++k) {
+      s[k] -= std::floor(s[k]);
+      if (s[k] >= 1.0) s[k] = 0.0;  // -1e-17 + 1 rounds to 1.0
+    }
+  }
+
+  Vec3 to_real(const Vec3& s) const { return s.cwiseProduct(L_); }
+
+  // Homogeneous deformation over one step: L_k <- L_k exp(-rate_k dt). Particles, stored in
+  // fractional coordinates, follow it affinely without being touched.
+  void deform(const Vec3& strain_rate_per_s, double dt_s) {
+    Vec3 l;
+    for (int k = 0; k < 3; ++k) l[k] = L_[k] * std::exp(-strain_rate_per_s[k] * dt_s);
+    set_lengths(l);
+  }
+
+  void set_lengths(const Vec3& l) {
+    L_ = l;
+    invL_ = l.cwiseInverse();
+  }
+
+ private:
+  Vec3 L_ = Vec3::Ones();
+  Vec3 invL_ = Vec3::Ones();
+  Vec3 reference_ = Vec3::Ones();
+};
+
+}  // namespace dem

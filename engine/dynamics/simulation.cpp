@@ -1,0 +1,89 @@
+#include "dynamics/simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "dynamics/kernel.hpp"
+
+namespace dem {
+
+double critical_time_step(const Particles& p, double kn_N_per_m) {
+  const double m_min = *std::min_element(p.mass.begin(), p.mass.end());
+  return 2.0 * std::sqrt(m_min / kn_N_per_m);
+}
+
+struct Simulation::Kernel {
+  virtual ~Kernel() = default;
+  virtual void forces(Simulation& sim) = 0;
+  virtual double integrate(Simulation& sim) = 0;
+};
+
+template <class Friction, class DampingPolicy>
+struct KernelImpl final : Simulation::Kernel {
+  LinearSpring<Friction> law;
+  DampingPolicy damping;
+  KernelImpl(LinearSpring<Friction> l, DampingPolicy d) : law(l), damping(std::move(d)) {}
+  void forces(Simulation& s) override {
+    compute_forces(law, s.particles_, s.cell_, s.list_.pairs(), s.strain_rate_, s.dt_, s.force_, s.torque_, s.sums_);
+  }
+  double integrate(Simulation& s) override {
+    return dem::integrate<Friction::has_tangential>(damping, s.particles_, s.cell_, s.force_, s.torque_, s.dt_);
+  }
+};
+
+namespace {
+template <class Friction>
+std::unique_ptr<Simulation::Kernel> make_kernel(LinearSpring<Friction> law, const Particles& p, const Damping& d,
+                                                double dt) {
+  if (d.form == Damping::Form::Local)
+    return std::make_unique<KernelImpl<Friction, LocalDamping>>(law, LocalDamping(p, d, law.kn, dt));
+  return std::make_unique<KernelImpl<Friction, ViscousDamping>>(law, ViscousDamping(p, d, law.kn, dt));
+}
+}  // namespace
+
+Simulation::Simulation(Particles particles, PeriodicCell cell, Material material, Damping damping, double time_step_s,
+                       double verlet_skin_m)
+    : particles_(std::move(particles)),
+      cell_(cell),
+      material_(material),
+      damping_(damping),
+      dt_(time_step_s),
+      list_(verlet_skin_m, material.friction > 0) {
+  if (material_.friction > 0)
+    kernel_ = make_kernel(LinearSpring<Coulomb>{material_.kn_N_per_m, Coulomb{material_.ks_N_per_m, material_.friction}},
+                          particles_, damping_, dt_);
+  else
+    kernel_ = make_kernel(LinearSpring<NoFriction>{material_.kn_N_per_m, {}}, particles_, damping_, dt_);
+}
+
+Simulation::~Simulation() = default;
+Simulation::Simulation(Simulation&&) noexcept = default;
+Simulation& Simulation::operator=(Simulation&&) noexcept = default;
+
+void Simulation::restore(std::int64_t step, const Vec3& strain_rate, PairList contacts) {
+  step_ = step;
+  strain_rate_ = strain_rate;
+  list_.restore(std::move(contacts));
+}
+
+void Simulation::step(const CellTargets& targets, const ServoSettings& servo) {
+  if (list_.needs_rebuild(particles_, cell_)) list_.build(particles_, cell_);
+  kernel_->forces(*this);
+  if (!sums_.stress_Pa.allFinite()) {
+    std::ostringstream msg;
+    msg << "non-finite contact stress at step " << step_ << " (time " << time() << " s)";
+    throw NonFiniteError(msg.str());
+  }
+  strain_rate_ = servo_strain_rates(targets, sums_.stress_Pa, sums_.stiffness_Pa, servo, dt_);
+  kinetic_energy_ = kernel_->integrate(*this);
+  if (!std::isfinite(kinetic_energy_)) {
+    std::ostringstream msg;
+    msg << "non-finite kinetic energy at step " << step_ << " (time " << time() << " s): the run is unstable";
+    throw NonFiniteError(msg.str());
+  }
+  cell_.deform(strain_rate_, dt_);
+  ++step_;
+}
+
+}  // namespace dem

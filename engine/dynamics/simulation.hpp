@@ -1,0 +1,107 @@
+#pragma once
+// The simulation: state (particles, cell, contacts), the time step, and one fixed order of
+// operations per step:
+//
+//   1. rebuild the Verlet list if the rebuild criterion says so;
+//   2. contact forces at the current positions (velocities from the previous half step);
+//      the contact stress and the servo stiffness are summed in the same loop;
+//   3. strain rates of the cell from the axis targets (servo);
+//   4. leapfrog update of velocities (with damping) and fractional positions;
+//   5. homogeneous deformation of the cell.
+//
+// The contact law (friction or not) and the damping form are chosen once, when the simulation is
+// built; the per-step loop is a monomorphic template (see dynamics/kernel.hpp).
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "cell/periodic_cell.hpp"
+#include "control/stress_servo.hpp"
+#include "core/particles.hpp"
+#include "neighbour/verlet_list.hpp"
+
+namespace dem {
+
+struct Material {
+  double density_kg_per_m3 = 2650;
+  double kn_N_per_m = 1e6;
+  double ks_N_per_m = 1e6;
+  double friction = 0.5;  // mu [-]; 0 selects the frictionless kernel
+};
+
+// SPEC section 5. Viscous: body force -c v on the fluctuating velocity with c = 2 C_t sqrt(kn m),
+// torque -c_r omega with c_r = 2 C_r sqrt(kn r^2 I) (the rotational analogue). Local: Cundall's
+// non-viscous damping, each force component reduced by alpha |F_k| opposing the velocity.
+struct Damping {
+  enum class Form { Viscous, Local };
+  Form form = Form::Viscous;
+  double translational = 0.05;  // C_t (viscous: fraction of critical) or alpha (local) [-]
+  double rotational = 0.05;     // C_r [-]
+};
+
+// Thrown when a value becomes non-finite; the message names the step.
+struct NonFiniteError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Critical time step of the lightest particle on one normal spring: 2 sqrt(m_min / kn), the
+// stability limit of the leapfrog scheme for an undamped harmonic oscillator.
+double critical_time_step(const Particles& p, double kn_N_per_m);
+
+struct StepSums {          // by-products of the last force evaluation
+  Mat3 stress_Pa = Mat3::Zero();       // (1/V) sum_c f_c (x) l_c, symmetrised, compression positive
+  Vec3 stiffness_Pa = Vec3::Zero();    // servo stiffness K_k
+  std::size_t contacts = 0;            // pairs in contact
+  double sum_normal_force_N = 0;
+};
+
+class Simulation {
+ public:
+  Simulation(Particles particles, PeriodicCell cell, Material material, Damping damping, double time_step_s,
+             double verlet_skin_m);
+  ~Simulation();
+  Simulation(Simulation&&) noexcept;
+  Simulation& operator=(Simulation&&) noexcept;
+
+  void step(const CellTargets& targets, const ServoSettings& servo);
+
+  const Particles& particles() const { return particles_; }
+  const PeriodicCell& cell() const { return cell_; }
+  PeriodicCell& cell() { return cell_; }
+  const PairList& pairs() const { return list_.pairs(); }
+  const VerletList& verlet_list() const { return list_; }
+  const Material& material() const { return material_; }
+  const Damping& damping() const { return damping_; }
+  double time_step() const { return dt_; }
+  std::int64_t step_count() const { return step_; }
+  double time() const { return static_cast<double>(step_) * dt_; }
+  const Vec3& strain_rate() const { return strain_rate_; }  // applied in the last step [1/s]
+  const StepSums& sums() const { return sums_; }
+  const std::vector<Vec3>& net_force() const { return force_; }  // from the last force evaluation [N]
+  double kinetic_energy() const { return kinetic_energy_; }      // translational, fluctuating, after the last step [J]
+
+  // Restores the dynamic state saved by a previous run (for a bit-for-bit continuation).
+  void restore(std::int64_t step, const Vec3& strain_rate, PairList contacts);
+
+  // Internal: the per-step kernel, chosen once from the material and damping.
+  struct Kernel;
+
+ private:
+  template <class Friction, class DampingPolicy>
+  friend struct KernelImpl;
+  Particles particles_;
+  PeriodicCell cell_;
+  Material material_;
+  Damping damping_;
+  double dt_;
+  VerletList list_;
+  std::int64_t step_ = 0;
+  Vec3 strain_rate_ = Vec3::Zero();
+  StepSums sums_;
+  std::vector<Vec3> force_, torque_;
+  double kinetic_energy_ = 0;
+  std::unique_ptr<Kernel> kernel_;
+};
+
+}  // namespace dem

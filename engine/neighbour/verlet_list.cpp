@@ -1,0 +1,111 @@
+#include "neighbour/verlet_list.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace dem {
+
+bool VerletList::needs_rebuild(const Particles& p, const PeriodicCell& cell) const {
+  if (!built_ || p.size() != s_at_build_.size()) return true;
+  const Vec3& L = cell.lengths();
+  double max_disp2 = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    Vec3 ds = p.s[i] - s_at_build_[i];
+    for (int k = 0; k < 3; ++k) ds[k] -= std::floor(ds[k] + 0.5);
+    max_disp2 = std::max(max_disp2, ds.cwiseProduct(L).squaredNorm());
+  }
+  const double lambda_min = L.cwiseQuotient(lengths_at_build_).minCoeff();
+  const double affine_closing = (2 * max_radius_ + skin_) * std::max(0.0, 1.0 - lambda_min);
+  return 2 * std::sqrt(max_disp2) + affine_closing > skin_;
+}
+
+void VerletList::collect_pairs(const Particles& p, const PeriodicCell& cell, PairList& out) const {
+  const std::size_t n = p.size();
+  const Vec3& L = cell.lengths();
+  const double range = 2 * max_radius_ + skin_;
+  int nb[3];
+  for (int k = 0; k < 3; ++k) nb[k] = static_cast<int>(std::floor(L[k] / range));
+  auto within = [&](std::size_t i, std::size_t j) {
+    const double cut = p.radius[i] + p.radius[j] + skin_;
+    return cell.branch(p.s[i], p.s[j]).squaredNorm() < cut * cut;
+  };
+  std::vector<std::uint32_t> js;
+  if (std::min({nb[0], nb[1], nb[2]}) < 3) {  // too few bins for a 27-bin stencil: all pairs
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = i + 1; j < n; ++j)
+        if (within(i, j)) {
+          out.first.push_back(static_cast<std::uint32_t>(i));
+          out.second.push_back(static_cast<std::uint32_t>(j));
+        }
+    return;
+  }
+  // Counting sort of particles into bins (fractional coordinates, so bins deform with the cell).
+  const std::size_t nbins = static_cast<std::size_t>(nb[0]) * nb[1] * nb[2];
+  auto bin_of = [&](const Vec3& s, int k) { return std::min(nb[k] - 1, static_cast<int>(s[k] * nb[k])); };
+  std::vector<std::uint32_t> start(nbins + 1, 0), members(n);
+  std::vector<std::uint32_t> bin(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    bin[i] = static_cast<std::uint32_t>((bin_of(p.s[i], 0) * nb[1] + bin_of(p.s[i], 1)) * nb[2] + bin_of(p.s[i], 2));
+    ++start[bin[i] + 1];
+  }
+  for (std::size_t b = 0; b < nbins; ++b) start[b + 1] += start[b];
+  std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+  for (std::size_t i = 0; i < n; ++i) members[fill[bin[i]]++] = static_cast<std::uint32_t>(i);
+
+  for (std::size_t i = 0; i < n; ++i) {
+    const int b0 = bin_of(p.s[i], 0), b1 = bin_of(p.s[i], 1), b2 = bin_of(p.s[i], 2);
+    js.clear();
+    for (int d0 = -1; d0 <= 1; ++d0)
+      for (int d1 = -1; d1 <= 1; ++d1)
+        for (int d2 = -1; d2 <= 1; ++d2) {
+          const int c0 = (b0 + d0 + nb[0]) % nb[0], c1 = (b1 + d1 + nb[1]) % nb[1], c2 = (b2 + d2 + nb[2]) % nb[2];
+          const std::size_t c = (static_cast<std::size_t>(c0) * nb[1] + c1) * nb[2] + c2;
+          for (std::uint32_t m = start[c]; m < start[c + 1]; ++m) {
+            const std::uint32_t j = members[m];
+            if (j > i && within(i, j)) js.push_back(j);
+          }
+        }
+    std::sort(js.begin(), js.end());
+    for (std::uint32_t j : js) {
+      out.first.push_back(static_cast<std::uint32_t>(i));
+      out.second.push_back(j);
+    }
+  }
+}
+
+void VerletList::build(const Particles& p, const PeriodicCell& cell) {
+  max_radius_ = p.size() ? *std::max_element(p.radius.begin(), p.radius.end()) : 0.0;
+  const double range = 2 * max_radius_ + skin_;
+  for (int k = 0; k < 3; ++k) {
+    if (cell.lengths()[k] <= 2 * range) {
+      std::ostringstream msg;
+      msg << "cell side L" << k + 1 << " = " << cell.lengths()[k] << " m is not larger than twice the contact range "
+          << "2*(largest diameter + skin) = " << 2 * range << " m: the periodic minimum image would be ambiguous";
+      throw std::runtime_error(msg.str());
+    }
+  }
+  PairList fresh;
+  collect_pairs(p, cell, fresh);
+  if (keep_history_) {  // carry tangential springs of surviving pairs over (both lists sorted by (i, j))
+    fresh.spring.assign(fresh.size(), Vec3::Zero());
+    fresh.sliding.assign(fresh.size(), 0);
+    std::size_t o = 0;
+    for (std::size_t k = 0; k < fresh.size() && o < pairs_.size(); ++k) {
+      const auto key = std::make_pair(fresh.first[k], fresh.second[k]);
+      while (o < pairs_.size() && std::make_pair(pairs_.first[o], pairs_.second[o]) < key) ++o;
+      if (o < pairs_.size() && pairs_.first[o] == key.first && pairs_.second[o] == key.second) {
+        fresh.spring[k] = pairs_.spring[o];
+        fresh.sliding[k] = pairs_.sliding[o];
+      }
+    }
+  }
+  pairs_ = std::move(fresh);
+  s_at_build_ = p.s;
+  lengths_at_build_ = cell.lengths();
+  built_ = true;
+  ++builds_;
+}
+
+}  // namespace dem
