@@ -22,15 +22,29 @@ ContactCounts count_contacts(const Simulation& sim) {
   std::vector<unsigned> per_particle(p.size(), 0);
   ContactCounts c;
   const bool frictional = !pairs.sliding.empty();
+  const double kn = sim.material().kn_N_per_m, ks = sim.material().ks_N_per_m;
+  double sum_fn = 0;
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     const auto i = pairs.first[k], j = pairs.second[k];
     const double rsum = p.radius[i] + p.radius[j];
-    if (sim.cell().branch(p.s[i], p.s[j]).squaredNorm() >= rsum * rsum) continue;
+    const Vec3 l = sim.cell().branch(p.s[i], p.s[j]);
+    const double dist2 = l.squaredNorm();
+    if (dist2 >= rsum * rsum) continue;
+    const double dist = std::sqrt(dist2);
+    const double fn = kn * (rsum - dist);
+    Vec3 f = fn / dist * l;
+    if (frictional) {
+      f -= ks * pairs.spring[k];
+      if (pairs.sliding[k]) ++c.sliding;
+    }
+    c.stress_Pa += f * l.transpose();
+    sum_fn += fn;
     ++c.contacts;
     ++per_particle[i];
     ++per_particle[j];
-    if (frictional && pairs.sliding[k]) ++c.sliding;
   }
+  c.stress_Pa = 0.5 * (c.stress_Pa + c.stress_Pa.transpose()) / sim.cell().volume();
+  c.mean_normal_force_N = c.contacts ? sum_fn / static_cast<double>(c.contacts) : 0.0;
   for (unsigned n : per_particle) {
     if (n == 0) ++c.particles_no_contact;
     if (n == 1) ++c.particles_one_contact;

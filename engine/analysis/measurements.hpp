@@ -11,12 +11,16 @@ double void_ratio(const Particles& p, const PeriodicCell& cell);          // (V 
 double coordination_number(std::size_t contacts, std::size_t particles);  // 2 Nc / Np (rattlers included)
 
 struct ContactCounts {
-  std::size_t contacts = 0;          // Nc
-  std::size_t sliding = 0;           // Ns (|f_t| at the Coulomb limit)
+  std::size_t contacts = 0;               // Nc
+  std::size_t sliding = 0;                // Ns (|f_t| at the Coulomb limit at the last force evaluation)
   std::size_t particles_no_contact = 0;   // N0
   std::size_t particles_one_contact = 0;  // N1
+  Mat3 stress_Pa = Mat3::Zero();          // (1/V) sum_c f_c (x) l_c, symmetrised, compression positive
+  double mean_normal_force_N = 0;
 };
-// Counts the pairs in contact at the current positions, and the sliding flags of the last force evaluation.
+// Surveys the contacts at the current positions: counts, and the stress from the normal springs
+// plus the stored tangential springs (f_t = -ks u_s). Recomputed from the state, so it can be
+// called at any time without touching the trajectory.
 ContactCounts count_contacts(const Simulation& sim);
 
 // Mechanical coordination number without rattlers (Thornton 2000): (2 Nc - N1) / (Np - N0 - N1).

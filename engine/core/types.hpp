@@ -1,6 +1,7 @@
 #pragma once
 // Basic vector types shared by the whole engine. SI units throughout.
 #include <Eigen/Core>
+#include <Eigen/Geometry>  // cross products
 
 namespace dem {
 using Vec3 = Eigen::Vector3d;

@@ -1,0 +1,114 @@
+// dem: the command-line front end of the engine.
+//   dem run SCENE.yaml --out RESULT.h5     run a scene, write its result
+//   dem keys                               the reference of every scene key
+//   dem --help
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "config/scene_config.hpp"
+#include "config/yaml_section.hpp"
+#include "analysis/time_series.hpp"
+#include "io/hdf5.hpp"
+#include "run/run_scene.hpp"
+#include "version.hpp"
+
+namespace {
+
+const char* usage =
+    "usage:\n"
+    "  dem run SCENE.yaml --out RESULT.h5 [--quiet]   run a scene and write its result (HDF5)\n"
+    "  dem keys                                       list every scene key with unit, range, default\n"
+    "  dem table RESULT.h5 [COLUMN ...]               print time-series columns as tab-separated text\n"
+    "  dem --version | --help\n"
+    "\n"
+    "The result is written to RESULT.h5.partial while the run goes on and renamed to RESULT.h5\n"
+    "(status 'complete') only when it finishes. Exit status: 0 success, 1 run failed, 2 bad input.\n";
+
+int run(int argc, char** argv) {
+  std::string scene_file, out;
+  bool quiet = false;
+  for (int i = 2; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--out" && i + 1 < argc) out = argv[++i];
+    else if (a == "--quiet") quiet = true;
+    else if (!a.empty() && a[0] == '-') { std::fprintf(stderr, "dem run: unknown option '%s'\n%s", a.c_str(), usage); return 2; }
+    else if (scene_file.empty()) scene_file = a;
+    else { std::fprintf(stderr, "dem run: more than one scene given ('%s')\n", a.c_str()); return 2; }
+  }
+  if (scene_file.empty() || out.empty()) {
+    std::fprintf(stderr, "dem run: need a scene file and --out RESULT.h5\n%s", usage);
+    return 2;
+  }
+  dem::SceneConfig scene;
+  try {
+    scene = dem::load_scene(scene_file);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 2;
+  }
+  try {
+    const bool progress = !quiet && isatty(STDERR_FILENO);
+    const dem::RunSummary s = dem::run_scene(scene, out, progress);
+    std::fprintf(stderr, "%s: %lld steps in %.1f s (%.3g steps/s) -> %s\n", scene.name.c_str(),
+                 static_cast<long long>(s.steps), s.wall_time_s, static_cast<double>(s.steps) / s.wall_time_s, out.c_str());
+    return 0;
+  } catch (const dem::ConfigError& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s: %s\n(partial result kept in %s.partial)\n", scene_file.c_str(), e.what(), out.c_str());
+    return 1;
+  }
+}
+
+// Prints time-series columns of a result (all of them if none are named) as tab-separated text.
+int table(int argc, char** argv) {
+  if (argc < 3) { std::fprintf(stderr, "dem table: need a result file\n%s", usage); return 2; }
+  try {
+    dem::h5::Handle f = dem::h5::open_file_read(argv[2]);
+    dem::h5::Handle g = dem::h5::open_group(f, "timeseries");
+    std::vector<std::string> names;
+    for (int i = 3; i < argc; ++i) names.push_back(argv[i]);
+    if (names.empty())
+      for (const auto& c : dem::series_columns()) names.push_back(c.name);
+    std::vector<std::vector<double>> cols;
+    std::size_t width = 0;
+    for (const auto& n : names) {
+      if (!dem::h5::exists(g, n)) { std::fprintf(stderr, "dem table: %s has no column '%s'\n", argv[2], n.c_str()); return 2; }
+      cols.push_back(dem::h5::read<double>(g, n, width));
+    }
+    std::printf("#");
+    for (const auto& n : names) std::printf(" %s", n.c_str());
+    std::printf("\n");
+    for (std::size_t r = 0; r < cols[0].size(); ++r) {
+      for (std::size_t c = 0; c < cols.size(); ++c) std::printf(c ? "\t%.10g" : "%.10g", cols[c][r]);
+      std::printf("\n");
+    }
+    return 0;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 2;
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) {
+    std::fputs(usage, argc < 2 ? stderr : stdout);
+    return argc < 2 ? 2 : 0;
+  }
+  const std::string cmd = argv[1];
+  if (cmd == "--version") { std::printf("dem %s (result schema %d)\n", dem::software_version, dem::schema_version); return 0; }
+  if (cmd == "keys") { std::fputs(dem::scene_key_reference().c_str(), stdout); return 0; }
+  if (cmd == "run") return run(argc, argv);
+  if (cmd == "table") return table(argc, argv);
+  std::fprintf(stderr, "dem: unknown command '%s'\n%s", cmd.c_str(), usage);
+  return 2;
+}

@@ -1,0 +1,241 @@
+#include "config/scene_config.hpp"
+
+#include <filesystem>
+#include <limits>
+#include <sstream>
+
+#include "config/yaml_section.hpp"
+
+namespace dem {
+
+namespace {
+
+constexpr double inf = std::numeric_limits<double>::infinity();
+
+std::string resolve_path(const std::string& scene_file, const std::string& p) {
+  namespace fs = std::filesystem;
+  if (fs::path(p).is_absolute()) return p;
+  return (fs::path(scene_file).parent_path() / p).lexically_normal().string();
+}
+
+Vec3 vec3(const std::vector<double>& v) { return Vec3(v[0], v[1], v[2]); }
+
+ParticleSource read_particles(Section s) {
+  ParticleSource src;
+  const int given = int(s.has("lattice")) + int(s.has("csv")) + int(s.has("state"));
+  if (given != 1) s.fail("", "give exactly one of 'lattice', 'csv' or 'state'");
+  if (s.has("lattice")) {
+    src.kind = ParticleSource::Kind::Lattice;
+    Section l = s.child("lattice", "simple cubic lattice of spheres, one per site");
+    const auto n = l.numbers("n", "", {1, 200}, 3, 3, "lattice sites per axis");
+    for (int k = 0; k < 3; ++k) {
+      if (n[k] != std::floor(n[k])) l.fail("n", "must be whole numbers");
+      src.lattice.n[k] = static_cast<int>(n[k]);
+    }
+    src.lattice.spacing_m = l.number("spacing", "m", {0, 1, true}, std::nullopt, "centre-to-centre distance");
+    src.lattice.seed = static_cast<std::uint64_t>(l.integer("seed", 0, std::numeric_limits<std::int64_t>::max(), 1,
+                                                            "random seed of the diameter sampler"));
+    l.finish();
+    Section g = s.child("grading", "mass-based percent-finer curve, piecewise linear");
+    src.grading_diameters_m = g.numbers("diameters", "m", {0, 1, true}, 2, 50, "diameters of the curve's points, increasing");
+    src.grading_percent_finer = g.numbers("percent_finer", "%", {0, 100}, 2, 50, "percent finer by mass at each diameter, 0 ... 100");
+    if (src.grading_percent_finer.size() != src.grading_diameters_m.size())
+      g.fail("percent_finer", "must have as many items as 'diameters' (" +
+                                  std::to_string(src.grading_diameters_m.size()) + ")");
+    g.finish();
+  } else if (s.has("csv")) {
+    src.kind = ParticleSource::Kind::Csv;
+    src.path = resolve_path(s.file(), s.text("csv", std::nullopt, "CSV file with header x,y,z,radius (m)"));
+    src.cell_m = vec3(s.numbers("cell", "m", {0, 1e3, true}, 3, 3, "cell lengths L1, L2, L3 for a CSV file"));
+  } else {
+    src.kind = ParticleSource::Kind::State;
+    src.path = resolve_path(s.file(), s.text("state", std::nullopt, "result file (HDF5) whose final state to start from"));
+  }
+  s.finish();
+  return src;
+}
+
+HoldCriteria read_hold(Section h) {
+  HoldCriteria c;
+  c.stress_tolerance = h.number("stress_tolerance", "", {0, 1, true}, 0.005,
+                                "each principal stress within this fraction of its target");
+  c.unbalanced_force_ratio = h.number("unbalanced_force_ratio", "", {0, 1, true}, 1e-3,
+                                      "mean |net force| / mean contact force below this");
+  c.check_interval_steps = h.integer("check_interval", 1, 1000000000, 100, "steps between checks of the criteria");
+  c.max_duration_s = h.number("max_duration", "s", {0, 1e6, true}, 10.0,
+                              "the stage fails if the criteria do not hold within this time");
+  h.finish();
+  return c;
+}
+
+StageConfig read_stage(Section s) {
+  StageConfig st;
+  st.name = s.text("name", std::nullopt, "stage name, written into the results");
+  const std::string type = s.choice("type", {"strain_rate", "stress"}, std::nullopt,
+                                    "strain_rate: fixed strain rates for a duration; stress: ramp to a target stress and hold");
+  st.reset_strain = s.boolean("reset_strain", false, "measure strains from the start of this stage");
+  if (type == "strain_rate") {
+    st.type = StageConfig::Type::StrainRate;
+    st.strain_rate_per_s = vec3(s.numbers("strain_rate", "1/s", {-1e3, 1e3}, 3, 3, "strain rate per axis, compression positive"));
+    st.duration_s = s.number("duration", "s", {0, 1e6, true}, std::nullopt, "stage duration");
+  } else {
+    st.type = StageConfig::Type::Stress;
+    st.target_Pa = vec3(s.numbers("target", "Pa", {0, 1e10, true}, 3, 3, "target principal stresses, compression positive"));
+    st.stress_rate_Pa_per_s = s.number("rate", "Pa/s", {0, 1e12, true}, std::nullopt,
+                                       "rate at which each target ramps from the stage's starting stress");
+    st.max_strain_rate_per_s = s.number("max_strain_rate", "1/s", {0, 1e3, true}, 1.0,
+                                        "cap on the cell strain rate of each axis");
+    if (s.has("hold")) st.hold = read_hold(s.child("hold", "equilibrium criteria that end the stage"));
+    else s.child("hold", "equilibrium criteria that end the stage");  // required: declares and reports it
+  }
+  s.finish();
+  return st;
+}
+
+std::string emit_resolved(const SceneConfig& c) {
+  YAML::Emitter out;
+  out << YAML::BeginMap << YAML::Key << "name" << YAML::Value << c.name;
+  out << YAML::Key << "particles" << YAML::Value << YAML::BeginMap;
+  const auto& p = c.particles;
+  if (p.kind == ParticleSource::Kind::Lattice) {
+    out << YAML::Key << "lattice" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "n" << YAML::Value
+        << std::vector<int>{p.lattice.n[0], p.lattice.n[1], p.lattice.n[2]} << YAML::Key << "spacing" << YAML::Value
+        << p.lattice.spacing_m << YAML::Key << "seed" << YAML::Value << p.lattice.seed << YAML::EndMap;
+    out << YAML::Key << "grading" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "diameters"
+        << YAML::Value << p.grading_diameters_m << YAML::Key << "percent_finer" << YAML::Value << p.grading_percent_finer
+        << YAML::EndMap;
+  } else if (p.kind == ParticleSource::Kind::Csv) {
+    out << YAML::Key << "csv" << YAML::Value << p.path << YAML::Key << "cell" << YAML::Value << YAML::Flow
+        << std::vector<double>{p.cell_m[0], p.cell_m[1], p.cell_m[2]};
+  } else {
+    out << YAML::Key << "state" << YAML::Value << p.path;
+  }
+  out << YAML::EndMap;
+  out << YAML::Key << "material" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "density"
+      << YAML::Value << c.material.density_kg_per_m3 << YAML::Key << "kn" << YAML::Value << c.material.kn_N_per_m
+      << YAML::Key << "ks" << YAML::Value << c.material.ks_N_per_m << YAML::Key << "friction" << YAML::Value
+      << c.material.friction << YAML::EndMap;
+  out << YAML::Key << "damping" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "form" << YAML::Value
+      << (c.damping.form == Damping::Form::Viscous ? "viscous" : "local") << YAML::Key << "translational"
+      << YAML::Value << c.damping.translational << YAML::Key << "rotational" << YAML::Value << c.damping.rotational
+      << YAML::EndMap;
+  out << YAML::Key << "numerics" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "time_step"
+      << YAML::Value << c.time_step_s << YAML::Key << "max_time_step_fraction" << YAML::Value
+      << c.max_time_step_fraction << YAML::Key << "verlet_skin" << YAML::Value << c.verlet_skin_m << YAML::EndMap;
+  out << YAML::Key << "servo" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "gain" << YAML::Value
+      << c.servo.gain << YAML::EndMap;
+  out << YAML::Key << "output" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "interval"
+      << YAML::Value << c.output.interval_steps << YAML::Key << "flush_rows" << YAML::Value << c.output.flush_rows
+      << YAML::EndMap;
+  out << YAML::Key << "stages" << YAML::Value << YAML::BeginSeq;
+  for (const auto& s : c.stages) {
+    out << YAML::BeginMap << YAML::Key << "name" << YAML::Value << s.name << YAML::Key << "reset_strain"
+        << YAML::Value << s.reset_strain;
+    if (s.type == StageConfig::Type::StrainRate) {
+      out << YAML::Key << "type" << YAML::Value << "strain_rate" << YAML::Key << "strain_rate" << YAML::Value
+          << YAML::Flow << std::vector<double>{s.strain_rate_per_s[0], s.strain_rate_per_s[1], s.strain_rate_per_s[2]}
+          << YAML::Key << "duration" << YAML::Value << s.duration_s;
+    } else {
+      out << YAML::Key << "type" << YAML::Value << "stress" << YAML::Key << "target" << YAML::Value << YAML::Flow
+          << std::vector<double>{s.target_Pa[0], s.target_Pa[1], s.target_Pa[2]} << YAML::Key << "rate" << YAML::Value
+          << s.stress_rate_Pa_per_s << YAML::Key << "max_strain_rate" << YAML::Value << s.max_strain_rate_per_s
+          << YAML::Key << "hold" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "stress_tolerance"
+          << YAML::Value << s.hold.stress_tolerance << YAML::Key << "unbalanced_force_ratio" << YAML::Value
+          << s.hold.unbalanced_force_ratio << YAML::Key << "check_interval" << YAML::Value
+          << s.hold.check_interval_steps << YAML::Key << "max_duration" << YAML::Value << s.hold.max_duration_s
+          << YAML::EndMap;
+    }
+    out << YAML::EndMap;
+  }
+  out << YAML::EndSeq << YAML::EndMap;
+  return out.c_str();
+}
+
+}  // namespace
+
+static SceneConfig parse_scene(Section root, const std::string& file) {
+  SceneConfig c;
+  c.file = file;
+  c.name = root.text("name", std::filesystem::path(file).stem().string(), "scene name");
+  c.particles = read_particles(root.child("particles", "where the particles come from: lattice, csv or state"));
+
+  Section m = root.child("material", "material constants");
+  c.material.density_kg_per_m3 = m.number("density", "kg/m^3", {0, 1e5, true}, 2650.0, "solid density");
+  c.material.kn_N_per_m = m.number("kn", "N/m", {0, 1e12, true}, std::nullopt, "normal contact stiffness");
+  c.material.ks_N_per_m = m.number("ks", "N/m", {0, 1e12}, std::nullopt, "tangential contact stiffness");
+  c.material.friction = m.number("friction", "", {0, 10}, std::nullopt, "Coulomb friction coefficient mu; 0 = frictionless kernel");
+  m.finish();
+  if (c.material.friction > 0 && c.material.ks_N_per_m <= 0)
+    m.fail("ks", "must be > 0 when friction > 0, got " + std::to_string(c.material.ks_N_per_m));
+
+  if (root.has("damping")) {
+    Section d = root.child("damping", "damping of particle motion (SPEC section 5)");
+    c.damping.form = d.choice("form", {"viscous", "local"}, "viscous",
+                              "viscous: fraction of critical on the fluctuating velocity; local: Cundall's non-viscous") == "viscous"
+                         ? Damping::Form::Viscous
+                         : Damping::Form::Local;
+    c.damping.translational = d.number("translational", "", {0, 1}, 0.05, "C_t (viscous) or alpha (local)");
+    c.damping.rotational = d.number("rotational", "", {0, 1}, 0.05, "C_r (viscous) or alpha for spins (local)");
+    d.finish();
+  }
+
+  Section n = root.child("numerics", "time integration and neighbour search");
+  c.time_step_s = n.number("time_step", "s", {0, 1, true}, std::nullopt, "fixed time step");
+  c.max_time_step_fraction = n.number("max_time_step_fraction", "", {0, 10, true}, 0.2,
+                                      "largest allowed time_step / critical step 2 sqrt(m_min/kn); raise only on purpose");
+  c.verlet_skin_m = n.number("verlet_skin", "m", {0, 1, true}, 2e-4, "Verlet list skin distance");
+  n.finish();
+
+  if (root.has("servo")) {
+    Section s = root.child("servo", "stress servo of stress-controlled axes");
+    c.servo.gain = s.number("gain", "", {0, 1, true}, 1e-3, "fraction of the stress error removed per step");
+    s.finish();
+  }
+  if (root.has("output")) {
+    Section o = root.child("output", "time-series output");
+    c.output.interval_steps = o.integer("interval", 1, 1000000000, 1000, "steps between time-series rows");
+    c.output.flush_rows = o.integer("flush_rows", 1, 1000000, 20, "rows between flushes of the result file to disk");
+    o.finish();
+  }
+  for (Section& s : root.list("stages", "the stages, run in order")) c.stages.push_back(read_stage(s));
+  for (std::size_t i = 0; i < c.stages.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (c.stages[i].name == c.stages[j].name)
+        throw ConfigError(file + ": stages[" + std::to_string(i) + "].name: duplicate stage name '" + c.stages[i].name + "'");
+  root.finish();
+  c.resolved_yaml = emit_resolved(c);
+  return c;
+}
+
+SceneConfig load_scene(const std::string& file) { return parse_scene(Section::load_file(file), file); }
+
+SceneConfig scene_from_text(const std::string& text, const std::string& file) {
+  return parse_scene(Section::from_text(text, file), file);
+}
+
+std::string scene_key_reference() {
+  // Declarations are recorded as keys are read: read one example of each variant.
+  const char* common = "material: {kn: 1.0e6, ks: 1.0e6, friction: 0.5, density: 2650}\n"
+                       "damping: {form: viscous, translational: 0.05, rotational: 0.05}\n"
+                       "numerics: {time_step: 1.0e-6, max_time_step_fraction: 0.2, verlet_skin: 2.0e-4}\n"
+                       "servo: {gain: 1.0e-3}\noutput: {interval: 1000, flush_rows: 20}\n";
+  scene_from_text(std::string("name: a\nparticles:\n  lattice: {n: [2, 2, 2], spacing: 0.005, seed: 1}\n"
+                              "  grading: {diameters: [0.003, 0.0045], percent_finer: [0, 100]}\n") + common +
+                      "stages:\n  - {name: s, type: stress, target: [1, 1, 1], rate: 1, max_strain_rate: 1, reset_strain: false,\n"
+                      "     hold: {stress_tolerance: 0.005, unbalanced_force_ratio: 0.001, check_interval: 100, max_duration: 1}}\n",
+                  "example");
+  scene_from_text(std::string("particles: {csv: p.csv, cell: [1, 1, 1]}\n") + common +
+                      "stages: [{name: s, type: strain_rate, strain_rate: [0, 0, 0], duration: 1}]\n",
+                  "example");
+  scene_from_text(std::string("particles: {state: s.h5}\n") + common +
+                      "stages: [{name: s, type: strain_rate, strain_rate: [0, 0, 0], duration: 1}]\n",
+                  "example");
+  std::ostringstream out;
+  out << "Scene keys (unit; allowed; default; meaning):\n";
+  for (const auto& [key, d] : key_docs())
+    out << "  " << key << (d.unit.empty() ? "" : " [" + d.unit + "]") << "; " << d.allowed << "; " << d.default_value
+        << "; " << d.doc << "\n";
+  return out.str();
+}
+
+}  // namespace dem

@@ -1,0 +1,73 @@
+#pragma once
+// A scene, parsed once from YAML into typed, validated structs. The engine never sees YAML.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "control/stress_servo.hpp"
+#include "core/types.hpp"
+#include "dynamics/simulation.hpp"
+#include "generate/grading.hpp"
+
+namespace dem {
+
+struct ParticleSource {
+  enum class Kind { Lattice, Csv, State };
+  Kind kind = Kind::Lattice;
+  LatticeSpec lattice;
+  std::vector<double> grading_diameters_m, grading_percent_finer;
+  std::string path;           // CSV file (x,y,z,radius per row) or saved state (HDF5), resolved against the scene folder
+  Vec3 cell_m = Vec3::Zero(); // cell lengths for a CSV file
+};
+
+struct HoldCriteria {
+  double stress_tolerance = 0.005;          // |sigma_kk - target_k| <= tolerance * |target_k| on every axis [-]
+  double unbalanced_force_ratio = 1e-3;     // [-]
+  std::int64_t check_interval_steps = 100;
+  double max_duration_s = 10;               // the stage fails if the criteria do not hold by then
+};
+
+struct StageConfig {
+  enum class Type { StrainRate, Stress };
+  std::string name;
+  Type type = Type::StrainRate;
+  bool reset_strain = false;      // strains measured from the start of this stage
+  // strain_rate stage
+  Vec3 strain_rate_per_s = Vec3::Zero();
+  double duration_s = 0;
+  // stress stage: ramp every axis from its stress at the stage start to `target` at `rate`, then hold
+  Vec3 target_Pa = Vec3::Zero();
+  double stress_rate_Pa_per_s = 0;
+  double max_strain_rate_per_s = 1;
+  HoldCriteria hold;
+};
+
+struct OutputConfig {
+  std::int64_t interval_steps = 1000;  // time-series row every N steps (and at every stage end)
+  std::int64_t flush_rows = 20;        // the file is flushed to disk every N rows
+};
+
+struct SceneConfig {
+  std::string file;           // the YAML file it came from
+  std::string name;
+  ParticleSource particles;
+  Material material;
+  Damping damping;
+  double time_step_s = 1e-6;
+  double max_time_step_fraction = 0.2;  // largest allowed dt / critical dt
+  double verlet_skin_m = 2e-4;
+  ServoSettings servo;
+  OutputConfig output;
+  std::vector<StageConfig> stages;
+  std::string resolved_yaml;  // every key with its value after defaults, recorded in the result
+};
+
+// Reads and validates a scene file; throws ConfigError naming file, key path and allowed values.
+SceneConfig load_scene(const std::string& file);
+// The same from YAML text; `file` names it in error messages and resolves relative paths.
+SceneConfig scene_from_text(const std::string& text, const std::string& file);
+
+// The key reference (`dem keys`): every key with unit, allowed values, default and doc.
+std::string scene_key_reference();
+
+}  // namespace dem

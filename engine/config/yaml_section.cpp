@@ -1,0 +1,245 @@
+#include "config/yaml_section.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+namespace dem {
+
+std::map<std::string, KeyDoc>& key_docs() {
+  static std::map<std::string, KeyDoc> docs;
+  return docs;
+}
+
+namespace {
+
+std::string fmt(double x) {
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
+
+std::string range_text(Range r) {
+  std::string lo = r.min_open ? "(" : "[";
+  return lo + fmt(r.min) + ", " + fmt(r.max) + "]";
+}
+
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diag = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diag = up;
+    }
+  }
+  return row[b.size()];
+}
+
+std::string pattern_of(const std::string& path) { return std::regex_replace(path, std::regex("\\[[0-9]+\\]"), "[]"); }
+
+std::string scalar_text(const YAML::Node& n) {
+  if (n.IsScalar()) return "'" + n.Scalar() + "'";
+  if (n.IsSequence()) return "a list";
+  if (n.IsMap()) return "a mapping";
+  return "nothing";
+}
+
+}  // namespace
+
+Section::Section(YAML::Node node, std::string file, std::string path)
+    : node_(std::move(node)), file_(std::move(file)), path_(std::move(path)) {
+  if (!node_.IsMap()) {
+    std::ostringstream msg;
+    msg << file_ << ": " << (path_.empty() ? "the file" : path_) << " must be a mapping of keys, got "
+        << scalar_text(node_);
+    throw ConfigError(msg.str());
+  }
+  std::set<std::string> seen;
+  for (const auto& kv : node_) {
+    const std::string key = kv.first.as<std::string>();
+    if (!seen.insert(key).second) fail(key, "duplicate key" + where(kv.first));
+  }
+}
+
+Section Section::load_file(const std::string& file) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::exists(file, ec)) throw ConfigError(file + ": no such file");
+  if (fs::is_directory(file, ec)) throw ConfigError(file + ": is a directory, expected a YAML file");
+  std::ifstream in(file);
+  std::stringstream text;
+  if (!in || !(text << in.rdbuf())) {
+    if (fs::file_size(file, ec) == 0 && !ec) throw ConfigError(file + ": the file is empty");
+    throw ConfigError(file + ": cannot be read");
+  }
+  return from_text(text.str(), file);
+}
+
+Section Section::from_text(const std::string& text, const std::string& file) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw ConfigError(file + ": not valid YAML: " + e.what());
+  }
+  if (!root || root.IsNull()) throw ConfigError(file + ": the file is empty");
+  return Section(root, file, "");
+}
+
+std::string Section::where(const YAML::Node& n) const {
+  const YAML::Mark m = n.Mark();
+  return m.line >= 0 ? " (line " + std::to_string(m.line + 1) + ")" : "";
+}
+
+void Section::fail(const std::string& key, const std::string& what) const {
+  const std::string at = key.empty() ? (path_.empty() ? "top level" : path_) : key_path(key);
+  throw ConfigError(file_ + ": " + at + ": " + what);
+}
+
+void Section::declare(const std::string& key, const std::string& unit, const std::string& allowed,
+                      const std::string& def, const std::string& doc) const {
+  used_.insert(key);
+  key_docs()[pattern_of(key_path(key))] = KeyDoc{unit, allowed, def, doc};
+}
+
+bool Section::has(const std::string& key) const { return static_cast<bool>(node_[key]); }
+
+YAML::Node Section::get(const std::string& key) const { return node_[key]; }
+
+double Section::number(const std::string& key, const std::string& unit, Range range, std::optional<double> def,
+                       const std::string& doc) {
+  declare(key, unit, range_text(range), def ? fmt(*def) : "required", doc);
+  const YAML::Node n = get(key);
+  if (!n) {
+    if (def) return *def;
+    fail(key, "missing (a number in " + range_text(range) + (unit.empty() ? "" : " " + unit) + ")");
+  }
+  double x = 0;
+  if (!n.IsScalar() || !YAML::convert<double>::decode(n, x))
+    fail(key, "must be a number" + (unit.empty() ? "" : " [" + unit + "]") + ", got " + scalar_text(n) + where(n));
+  const bool below = range.min_open ? !(x > range.min) : !(x >= range.min);
+  if (!std::isfinite(x) || below || !(x <= range.max))
+    fail(key, "must be in " + range_text(range) + (unit.empty() ? "" : " " + unit) + ", got " + n.Scalar() + where(n));
+  return x;
+}
+
+std::int64_t Section::integer(const std::string& key, std::int64_t min, std::int64_t max,
+                              std::optional<std::int64_t> def, const std::string& doc) {
+  const std::string allowed = "integer in [" + std::to_string(min) + ", " + std::to_string(max) + "]";
+  declare(key, "", allowed, def ? std::to_string(*def) : "required", doc);
+  const YAML::Node n = get(key);
+  if (!n) {
+    if (def) return *def;
+    fail(key, "missing (an " + allowed + ")");
+  }
+  long long x = 0;
+  if (!n.IsScalar() || !YAML::convert<long long>::decode(n, x))
+    fail(key, "must be an " + allowed + ", got " + scalar_text(n) + where(n));
+  if (x < min || x > max) fail(key, "must be an " + allowed + ", got " + n.Scalar() + where(n));
+  return x;
+}
+
+bool Section::boolean(const std::string& key, bool def, const std::string& doc) {
+  declare(key, "", "true or false", def ? "true" : "false", doc);
+  const YAML::Node n = get(key);
+  if (!n) return def;
+  bool b = false;
+  if (!n.IsScalar() || !YAML::convert<bool>::decode(n, b))
+    fail(key, "must be true or false, got " + scalar_text(n) + where(n));
+  return b;
+}
+
+std::string Section::choice(const std::string& key, const std::vector<std::string>& allowed,
+                            std::optional<std::string> def, const std::string& doc) {
+  std::string list;
+  for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
+  declare(key, "", "one of: " + list, def ? *def : "required", doc);
+  const YAML::Node n = get(key);
+  if (!n) {
+    if (def) return *def;
+    fail(key, "missing (one of: " + list + ")");
+  }
+  if (!n.IsScalar() || std::find(allowed.begin(), allowed.end(), n.Scalar()) == allowed.end())
+    fail(key, "must be one of: " + list + ", got " + scalar_text(n) + where(n));
+  return n.Scalar();
+}
+
+std::string Section::text(const std::string& key, std::optional<std::string> def, const std::string& doc) {
+  declare(key, "", "text", def ? "'" + *def + "'" : "required", doc);
+  const YAML::Node n = get(key);
+  if (!n) {
+    if (def) return *def;
+    fail(key, "missing (text)");
+  }
+  if (!n.IsScalar() || n.Scalar().empty()) fail(key, "must be non-empty text, got " + scalar_text(n) + where(n));
+  return n.Scalar();
+}
+
+std::vector<double> Section::numbers(const std::string& key, const std::string& unit, Range range,
+                                     std::size_t min_count, std::size_t max_count, const std::string& doc) {
+  const std::string count = min_count == max_count ? std::to_string(min_count)
+                                                   : std::to_string(min_count) + " to " + std::to_string(max_count);
+  const std::string allowed = "list of " + count + " numbers in " + range_text(range);
+  declare(key, unit, allowed, "required", doc);
+  const YAML::Node n = get(key);
+  if (!n) fail(key, "missing (a " + allowed + (unit.empty() ? "" : " " + unit) + ")");
+  if (!n.IsSequence() || n.size() < min_count || n.size() > max_count)
+    fail(key, "must be a " + allowed + ", got " + (n.IsSequence() ? std::to_string(n.size()) + " items" : scalar_text(n)) +
+                  where(n));
+  std::vector<double> out;
+  for (std::size_t i = 0; i < n.size(); ++i) {
+    double x = 0;
+    const YAML::Node item = n[i];
+    const std::string item_key = key + "[" + std::to_string(i) + "]";
+    if (!item.IsScalar() || !YAML::convert<double>::decode(item, x))
+      fail(item_key, "must be a number, got " + scalar_text(item) + where(item));
+    const bool below = range.min_open ? !(x > range.min) : !(x >= range.min);
+    if (!std::isfinite(x) || below || !(x <= range.max))
+      fail(item_key, "must be in " + range_text(range) + (unit.empty() ? "" : " " + unit) + ", got " + item.Scalar() +
+                         where(item));
+    out.push_back(x);
+  }
+  return out;
+}
+
+Section Section::child(const std::string& key, const std::string& doc) {
+  declare(key, "", "mapping", "required", doc);
+  const YAML::Node n = get(key);
+  if (!n) fail(key, "missing (a mapping)");
+  return Section(n, file_, key_path(key));
+}
+
+std::vector<Section> Section::list(const std::string& key, const std::string& doc) {
+  declare(key, "", "list of mappings", "required", doc);
+  const YAML::Node n = get(key);
+  if (!n || !n.IsSequence() || n.size() == 0)
+    fail(key, "must be a non-empty list of mappings, got " + (n ? scalar_text(n) : std::string("nothing")));
+  std::vector<Section> out;
+  for (std::size_t i = 0; i < n.size(); ++i) out.emplace_back(n[i], file_, key_path(key) + "[" + std::to_string(i) + "]");
+  return out;
+}
+
+void Section::finish() const {
+  for (const auto& kv : node_) {
+    const std::string key = kv.first.as<std::string>();
+    if (used_.count(key)) continue;
+    std::string best;
+    std::size_t best_d = 3;  // suggest only close matches
+    for (const auto& u : used_) {
+      const std::size_t d = edit_distance(key, u);
+      if (d < best_d) best_d = d, best = u;
+    }
+    std::string msg = "unknown key '" + key + "'" + where(kv.first);
+    if (!best.empty()) msg += " (did you mean '" + best + "'?)";
+    throw ConfigError(file_ + ": " + (path_.empty() ? "top level" : path_) + ": " + msg);
+  }
+}
+
+}  // namespace dem

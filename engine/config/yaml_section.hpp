@@ -1,0 +1,74 @@
+#pragma once
+// Typed, validated reading of one YAML mapping. Each key is declared once, where it is read, with
+// its unit, range, default and a line of documentation; the same declaration feeds the error
+// messages and `dem keys` (the key reference). Unknown and duplicate keys are errors, and every
+// error names the file, the full key path, the line, what is allowed and what was found.
+#include <yaml-cpp/yaml.h>
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace dem {
+
+struct ConfigError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct KeyDoc {
+  std::string unit, allowed, default_value, doc;
+};
+// Every key declared so far, by path pattern (list indices written as []); filled as files are read.
+std::map<std::string, KeyDoc>& key_docs();
+
+struct Range {
+  double min, max;
+  bool min_open = false;  // true: value must be > min rather than >= min
+};
+
+class Section {
+ public:
+  Section(YAML::Node node, std::string file, std::string path);
+
+  // Parses a whole file; throws ConfigError if it is missing, unreadable, empty or not a mapping.
+  static Section load_file(const std::string& file);
+  static Section from_text(const std::string& text, const std::string& file);
+
+  bool has(const std::string& key) const;
+  double number(const std::string& key, const std::string& unit, Range range, std::optional<double> def,
+                const std::string& doc);
+  std::int64_t integer(const std::string& key, std::int64_t min, std::int64_t max, std::optional<std::int64_t> def,
+                       const std::string& doc);
+  bool boolean(const std::string& key, bool def, const std::string& doc);
+  std::string choice(const std::string& key, const std::vector<std::string>& allowed, std::optional<std::string> def,
+                     const std::string& doc);
+  std::string text(const std::string& key, std::optional<std::string> def, const std::string& doc);
+  std::vector<double> numbers(const std::string& key, const std::string& unit, Range range, std::size_t min_count,
+                              std::size_t max_count, const std::string& doc);
+  Section child(const std::string& key, const std::string& doc);
+  std::vector<Section> list(const std::string& key, const std::string& doc);
+
+  // Throws if the mapping has a key that was never read (with a did-you-mean suggestion).
+  void finish() const;
+
+  [[noreturn]] void fail(const std::string& key, const std::string& what) const;
+  const std::string& file() const { return file_; }
+  const std::string& path() const { return path_; }
+  std::string key_path(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+
+ private:
+  YAML::Node get(const std::string& key) const;
+  void declare(const std::string& key, const std::string& unit, const std::string& allowed, const std::string& def,
+               const std::string& doc) const;
+  std::string where(const YAML::Node& n) const;
+
+  YAML::Node node_;
+  std::string file_, path_;
+  mutable std::set<std::string> used_;
+};
+
+}  // namespace dem

@@ -1,0 +1,204 @@
+#include "io/hdf5.hpp"
+
+#include <filesystem>
+
+namespace dem::h5 {
+
+namespace {
+
+void check(herr_t status, const std::string& what) {
+  if (status < 0) throw Error("HDF5: " + what + " failed");
+}
+
+hid_t checked(hid_t id, const std::string& what) {
+  if (id < 0) throw Error("HDF5: " + what + " failed");
+  return id;
+}
+
+template <class T>
+hid_t native_type();
+template <> hid_t native_type<double>() { return H5T_NATIVE_DOUBLE; }
+template <> hid_t native_type<std::uint32_t>() { return H5T_NATIVE_UINT32; }
+template <> hid_t native_type<std::uint8_t>() { return H5T_NATIVE_UINT8; }
+template <> hid_t native_type<std::int64_t>() { return H5T_NATIVE_INT64; }
+
+// Quiet HDF5's own error stack printing: errors are reported by our exceptions.
+struct SilenceOnce {
+  SilenceOnce() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
+};
+void silence() { static SilenceOnce once; }
+
+}  // namespace
+
+void Handle::reset() {
+  if (id_ < 0) return;
+  switch (H5Iget_type(id_)) {
+    case H5I_FILE: H5Fclose(id_); break;
+    case H5I_GROUP: H5Gclose(id_); break;
+    case H5I_DATASET: H5Dclose(id_); break;
+    case H5I_DATASPACE: H5Sclose(id_); break;
+    case H5I_ATTR: H5Aclose(id_); break;
+    case H5I_DATATYPE: H5Tclose(id_); break;
+    case H5I_GENPROP_LST: H5Pclose(id_); break;
+    default: break;
+  }
+  id_ = -1;
+}
+
+Handle create_file(const std::string& path) {
+  silence();
+  const hid_t f = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  if (f < 0) throw Error(path + ": cannot create the HDF5 file (is the folder writable?)");
+  return Handle(f);
+}
+
+Handle open_file_read(const std::string& path) {
+  silence();
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw Error(path + ": no such file");
+  const hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (f < 0) throw Error(path + ": not a readable HDF5 file (truncated or corrupt?)");
+  return Handle(f);
+}
+
+Handle open_file_write(const std::string& path) {
+  silence();
+  const hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  if (f < 0) throw Error(path + ": cannot open the HDF5 file for writing");
+  return Handle(f);
+}
+
+Handle create_group(hid_t parent, const std::string& name) {
+  return Handle(checked(H5Gcreate2(parent, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), "creating group " + name));
+}
+
+Handle open_group(hid_t parent, const std::string& name) {
+  if (!exists(parent, name)) throw Error("HDF5: group '" + name + "' is missing");
+  return Handle(checked(H5Gopen2(parent, name.c_str(), H5P_DEFAULT), "opening group " + name));
+}
+
+bool exists(hid_t parent, const std::string& path) {
+  std::string partial;
+  for (std::size_t pos = 0; pos <= path.size();) {  // every prefix must exist (H5Lexists demands it)
+    const std::size_t next = path.find('/', pos);
+    partial = path.substr(0, next);
+    if (H5Lexists(parent, partial.c_str(), H5P_DEFAULT) <= 0) return false;
+    if (next == std::string::npos) break;
+    pos = next + 1;
+  }
+  return true;
+}
+
+void set_attribute(hid_t obj, const std::string& name, const std::string& value) {
+  if (H5Aexists(obj, name.c_str()) > 0) check(H5Adelete(obj, name.c_str()), "deleting attribute " + name);
+  Handle type(H5Tcopy(H5T_C_S1));
+  check(H5Tset_size(type, value.empty() ? 1 : value.size()), "string type");
+  Handle space(H5Screate(H5S_SCALAR));
+  Handle attr(checked(H5Acreate2(obj, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT), "attribute " + name));
+  check(H5Awrite(attr, type, value.empty() ? "" : value.data()), "writing attribute " + name);
+}
+
+template <class T>
+static void set_numeric_attribute(hid_t obj, const std::string& name, T value) {
+  if (H5Aexists(obj, name.c_str()) > 0) check(H5Adelete(obj, name.c_str()), "deleting attribute " + name);
+  Handle space(H5Screate(H5S_SCALAR));
+  Handle attr(checked(H5Acreate2(obj, name.c_str(), native_type<T>(), space, H5P_DEFAULT, H5P_DEFAULT), "attribute " + name));
+  check(H5Awrite(attr, native_type<T>(), &value), "writing attribute " + name);
+}
+
+void set_attribute(hid_t obj, const std::string& name, double value) { set_numeric_attribute(obj, name, value); }
+void set_attribute(hid_t obj, const std::string& name, std::int64_t value) { set_numeric_attribute(obj, name, value); }
+
+bool has_attribute(hid_t obj, const std::string& name) { return H5Aexists(obj, name.c_str()) > 0; }
+
+std::string get_string_attribute(hid_t obj, const std::string& name) {
+  if (!has_attribute(obj, name)) throw Error("HDF5: attribute '" + name + "' is missing");
+  Handle attr(checked(H5Aopen(obj, name.c_str(), H5P_DEFAULT), "opening attribute " + name));
+  Handle type(H5Aget_type(attr));
+  if (H5Tget_class(type) != H5T_STRING) throw Error("HDF5: attribute '" + name + "' is not a string");
+  if (H5Tis_variable_str(type) > 0) throw Error("HDF5: attribute '" + name + "' is a variable-length string (unsupported)");
+  std::string value(H5Tget_size(type), '\0');
+  Handle mem(H5Tcopy(H5T_C_S1));
+  check(H5Tset_size(mem, value.size()), "string type");
+  check(H5Aread(attr, mem, value.data()), "reading attribute " + name);
+  while (!value.empty() && value.back() == '\0') value.pop_back();
+  return value;
+}
+
+template <class T>
+static T get_numeric_attribute(hid_t obj, const std::string& name) {
+  if (!has_attribute(obj, name)) throw Error("HDF5: attribute '" + name + "' is missing");
+  Handle attr(checked(H5Aopen(obj, name.c_str(), H5P_DEFAULT), "opening attribute " + name));
+  T value{};
+  check(H5Aread(attr, native_type<T>(), &value), "reading attribute " + name);
+  return value;
+}
+
+double get_double_attribute(hid_t obj, const std::string& name) { return get_numeric_attribute<double>(obj, name); }
+std::int64_t get_int_attribute(hid_t obj, const std::string& name) { return get_numeric_attribute<std::int64_t>(obj, name); }
+
+template <class T>
+void write(hid_t parent, const std::string& name, const std::vector<T>& data, std::size_t cols, const std::string& units) {
+  const hsize_t dims[2] = {cols ? data.size() / cols : 0, cols};
+  Handle space(H5Screate_simple(cols == 1 ? 1 : 2, dims, nullptr));
+  Handle ds(checked(H5Dcreate2(parent, name.c_str(), native_type<T>(), space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                    "creating dataset " + name));
+  if (!data.empty()) check(H5Dwrite(ds, native_type<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), "writing " + name);
+  set_attribute(ds, "units", units);
+}
+
+template <class T>
+std::vector<T> read(hid_t parent, const std::string& name, std::size_t& cols) {
+  if (!exists(parent, name)) throw Error("HDF5: dataset '" + name + "' is missing");
+  Handle ds(checked(H5Dopen2(parent, name.c_str(), H5P_DEFAULT), "opening dataset " + name));
+  Handle space(H5Dget_space(ds));
+  const int rank = H5Sget_simple_extent_ndims(space);
+  if (rank < 1 || rank > 2) throw Error("HDF5: dataset '" + name + "' has rank " + std::to_string(rank));
+  hsize_t dims[2] = {0, 1};
+  H5Sget_simple_extent_dims(space, dims, nullptr);
+  cols = static_cast<std::size_t>(dims[1]);
+  std::vector<T> out(static_cast<std::size_t>(dims[0] * dims[1]));
+  if (!out.empty()) check(H5Dread(ds, native_type<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()), "reading " + name);
+  return out;
+}
+
+template void write(hid_t, const std::string&, const std::vector<double>&, std::size_t, const std::string&);
+template void write(hid_t, const std::string&, const std::vector<std::uint32_t>&, std::size_t, const std::string&);
+template void write(hid_t, const std::string&, const std::vector<std::uint8_t>&, std::size_t, const std::string&);
+template void write(hid_t, const std::string&, const std::vector<std::int64_t>&, std::size_t, const std::string&);
+template std::vector<double> read(hid_t, const std::string&, std::size_t&);
+template std::vector<std::uint32_t> read(hid_t, const std::string&, std::size_t&);
+template std::vector<std::uint8_t> read(hid_t, const std::string&, std::size_t&);
+template std::vector<std::int64_t> read(hid_t, const std::string&, std::size_t&);
+
+Column::Column(hid_t parent, const std::string& name, const std::string& units) {
+  const hsize_t dims[1] = {0}, max_dims[1] = {H5S_UNLIMITED}, chunk[1] = {256};
+  Handle space(H5Screate_simple(1, dims, max_dims));
+  Handle props(H5Pcreate(H5P_DATASET_CREATE));
+  check(H5Pset_chunk(props, 1, chunk), "chunking " + name);
+  dataset_ = Handle(checked(H5Dcreate2(parent, name.c_str(), H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, props, H5P_DEFAULT),
+                            "creating column " + name));
+  set_attribute(dataset_, "units", units);
+}
+
+Column::Column(hid_t parent, const std::string& name) {
+  dataset_ = Handle(checked(H5Dopen2(parent, name.c_str(), H5P_DEFAULT), "opening column " + name));
+  Handle space(H5Dget_space(dataset_));
+  hsize_t dims[1] = {0};
+  H5Sget_simple_extent_dims(space, dims, nullptr);
+  size_ = static_cast<std::size_t>(dims[0]);
+}
+
+void Column::append(const std::vector<double>& values) {
+  if (values.empty()) return;
+  const hsize_t new_size[1] = {size_ + values.size()};
+  check(H5Dset_extent(dataset_, new_size), "extending column");
+  Handle file_space(H5Dget_space(dataset_));
+  const hsize_t start[1] = {size_}, count[1] = {values.size()};
+  check(H5Sselect_hyperslab(file_space, H5S_SELECT_SET, start, nullptr, count, nullptr), "selecting rows");
+  Handle mem_space(H5Screate_simple(1, count, nullptr));
+  check(H5Dwrite(dataset_, H5T_NATIVE_DOUBLE, mem_space, file_space, H5P_DEFAULT, values.data()), "appending rows");
+  size_ += values.size();
+}
+
+}  // namespace dem::h5

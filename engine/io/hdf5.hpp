@@ -1,0 +1,75 @@
+#pragma once
+// A thin RAII layer over the HDF5 C API: handles, attributes, whole datasets and extendable
+// columns. Every dataset written here carries a `units` attribute.
+#include <hdf5.h>
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace dem::h5 {
+
+struct Error : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Owns one HDF5 identifier and closes it with the right H5?close.
+class Handle {
+ public:
+  Handle() = default;
+  explicit Handle(hid_t id) : id_(id) {}
+  ~Handle() { reset(); }
+  Handle(Handle&& o) noexcept : id_(o.id_) { o.id_ = -1; }
+  Handle& operator=(Handle&& o) noexcept {
+    if (this != &o) { reset(); id_ = o.id_; o.id_ = -1; }
+    return *this;
+  }
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+  hid_t id() const { return id_; }
+  operator hid_t() const { return id_; }
+  void reset();
+
+ private:
+  hid_t id_ = -1;
+};
+
+Handle create_file(const std::string& path);     // truncates
+Handle open_file_read(const std::string& path);  // throws h5::Error naming the file if it cannot be opened
+Handle open_file_write(const std::string& path);
+Handle create_group(hid_t parent, const std::string& name);
+Handle open_group(hid_t parent, const std::string& name);
+bool exists(hid_t parent, const std::string& path);
+
+void set_attribute(hid_t obj, const std::string& name, const std::string& value);
+void set_attribute(hid_t obj, const std::string& name, double value);
+void set_attribute(hid_t obj, const std::string& name, std::int64_t value);
+std::string get_string_attribute(hid_t obj, const std::string& name);
+double get_double_attribute(hid_t obj, const std::string& name);
+std::int64_t get_int_attribute(hid_t obj, const std::string& name);
+bool has_attribute(hid_t obj, const std::string& name);
+
+// A whole dataset of rows x cols values (cols = 1 writes a 1-D dataset).
+template <class T>
+void write(hid_t parent, const std::string& name, const std::vector<T>& data, std::size_t cols, const std::string& units);
+// Reads a dataset written by write(); `cols` receives the second dimension (1 for 1-D).
+template <class T>
+std::vector<T> read(hid_t parent, const std::string& name, std::size_t& cols);
+
+// A 1-D dataset of doubles that grows by appending (chunked, unlimited).
+class Column {
+ public:
+  Column(hid_t parent, const std::string& name, const std::string& units);
+  // Reopens an existing column for appending.
+  Column(hid_t parent, const std::string& name);
+  void append(const std::vector<double>& values);
+  std::size_t size() const { return size_; }
+  hid_t id() const { return dataset_; }
+
+ private:
+  Handle dataset_;
+  std::size_t size_ = 0;
+};
+
+}  // namespace dem::h5

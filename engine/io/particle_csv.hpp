@@ -1,0 +1,15 @@
+#pragma once
+// Particles from a CSV file: a header line `x,y,z,radius` (metres), then one sphere per line.
+#include <string>
+
+#include "cell/periodic_cell.hpp"
+#include "core/particles.hpp"
+
+namespace dem {
+
+// Reads spheres into `particles` (positions wrapped into the cell). Throws std::runtime_error
+// naming the file and line for a missing header, a wrong column count, a non-number, a non-finite
+// value or a non-positive radius.
+void read_particle_csv(const std::string& file, const PeriodicCell& cell, double density_kg_per_m3, Particles& particles);
+
+}  // namespace dem

@@ -1,0 +1,122 @@
+#include "io/state_io.hpp"
+
+#include <cmath>
+#include <utility>
+
+namespace dem {
+
+namespace {
+
+std::vector<double> flatten(const std::vector<Vec3>& v) {
+  std::vector<double> out;
+  out.reserve(3 * v.size());
+  for (const Vec3& x : v) out.insert(out.end(), {x[0], x[1], x[2]});
+  return out;
+}
+
+std::vector<Vec3> unflatten(const std::vector<double>& d, std::size_t cols, const std::string& file,
+                            const std::string& name) {
+  if (cols != 3) throw h5::Error(file + ": /state/" + name + " must have 3 columns, has " + std::to_string(cols));
+  std::vector<Vec3> out(d.size() / 3);
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = Vec3(d[3 * i], d[3 * i + 1], d[3 * i + 2]);
+  return out;
+}
+
+}  // namespace
+
+void write_state(hid_t group, const Simulation& sim) {
+  const Particles& p = sim.particles();
+  const PeriodicCell& cell = sim.cell();
+  std::vector<Vec3> x(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) x[i] = cell.to_real(p.s[i]);
+  h5::write(group, "position", flatten(x), 3, "m");
+  h5::write(group, "position_fractional", flatten(p.s), 3, "1");
+  h5::write(group, "velocity", flatten(p.v), 3, "m/s");
+  h5::write(group, "angular_velocity", flatten(p.omega), 3, "rad/s");
+  h5::write(group, "radius", p.radius, 1, "m");
+  h5::write(group, "mass", p.mass, 1, "kg");
+  h5::write(group, "moment_of_inertia", p.inertia, 1, "kg m^2");
+  const Vec3& L = cell.lengths();
+  const Vec3& L0 = cell.reference_lengths();
+  const Vec3& r = sim.strain_rate();
+  h5::write(group, "cell_lengths", std::vector<double>{L[0], L[1], L[2]}, 1, "m");
+  h5::write(group, "cell_reference_lengths", std::vector<double>{L0[0], L0[1], L0[2]}, 1, "m");
+  h5::write(group, "cell_strain_rate", std::vector<double>{r[0], r[1], r[2]}, 1, "1/s");
+
+  // Contacts: the pairs whose spheres overlap, with their history.
+  const PairList& pairs = sim.pairs();
+  const bool frictional = !pairs.spring.empty();
+  std::vector<std::uint32_t> first, second;
+  std::vector<Vec3> spring;
+  std::vector<std::uint8_t> sliding;
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    const auto i = pairs.first[k], j = pairs.second[k];
+    const double rsum = p.radius[i] + p.radius[j];
+    if (cell.branch(p.s[i], p.s[j]).squaredNorm() >= rsum * rsum) continue;
+    first.push_back(i);
+    second.push_back(j);
+    if (frictional) {
+      spring.push_back(pairs.spring[k]);
+      sliding.push_back(pairs.sliding[k]);
+    }
+  }
+  h5::write(group, "contact_first", first, 1, "1");
+  h5::write(group, "contact_second", second, 1, "1");
+  if (frictional) {
+    h5::write(group, "contact_tangential_spring", flatten(spring), 3, "m");
+    h5::write(group, "contact_sliding", sliding, 1, "1");
+  }
+  h5::set_attribute(group, "step", static_cast<std::int64_t>(sim.step_count()));
+  h5::set_attribute(group, "time", sim.time());
+  h5::set_attribute(group, "time_step", sim.time_step());
+}
+
+SavedState read_state(const std::string& file) {
+  h5::Handle f = h5::open_file_read(file);
+  if (!h5::has_attribute(f, "status") || h5::get_string_attribute(f, "status") != "complete")
+    throw h5::Error(file + ": not a complete result (status '" +
+                    (h5::has_attribute(f, "status") ? h5::get_string_attribute(f, "status") : std::string("missing")) +
+                    "'); only a finished run's state can be loaded");
+  h5::Handle g = h5::open_group(f, "state");
+  SavedState st;
+  std::size_t cols = 0;
+  Particles& p = st.particles;
+  p.s = unflatten(h5::read<double>(g, "position_fractional", cols), cols, file, "position_fractional");
+  p.v = unflatten(h5::read<double>(g, "velocity", cols), cols, file, "velocity");
+  p.omega = unflatten(h5::read<double>(g, "angular_velocity", cols), cols, file, "angular_velocity");
+  p.radius = h5::read<double>(g, "radius", cols);
+  p.mass = h5::read<double>(g, "mass", cols);
+  p.inertia = h5::read<double>(g, "moment_of_inertia", cols);
+  const std::size_t n = p.s.size();
+  if (p.v.size() != n || p.omega.size() != n || p.radius.size() != n || p.mass.size() != n || p.inertia.size() != n)
+    throw h5::Error(file + ": /state particle datasets have different lengths");
+  for (std::size_t i = 0; i < n; ++i)
+    if (!(p.radius[i] > 0) || !(p.mass[i] > 0) || !(p.inertia[i] > 0) || !p.s[i].allFinite() || !p.v[i].allFinite())
+      throw h5::Error(file + ": /state particle " + std::to_string(i) + " has a non-finite or non-positive value");
+  const auto L = h5::read<double>(g, "cell_lengths", cols);
+  const auto L0 = h5::read<double>(g, "cell_reference_lengths", cols);
+  const auto r = h5::read<double>(g, "cell_strain_rate", cols);
+  if (L.size() != 3 || L0.size() != 3 || r.size() != 3) throw h5::Error(file + ": /state cell datasets must have 3 values");
+  st.cell = PeriodicCell(Vec3(L[0], L[1], L[2]));
+  st.cell.set_reference_lengths(Vec3(L0[0], L0[1], L0[2]));
+  st.strain_rate_per_s = Vec3(r[0], r[1], r[2]);
+  st.contacts.first = h5::read<std::uint32_t>(g, "contact_first", cols);
+  st.contacts.second = h5::read<std::uint32_t>(g, "contact_second", cols);
+  if (h5::exists(g, "contact_tangential_spring")) {
+    st.contacts.spring = unflatten(h5::read<double>(g, "contact_tangential_spring", cols), cols, file, "contact_tangential_spring");
+    st.contacts.sliding = h5::read<std::uint8_t>(g, "contact_sliding", cols);
+  }
+  const std::size_t nc = st.contacts.first.size();
+  if (st.contacts.second.size() != nc || (!st.contacts.spring.empty() && (st.contacts.spring.size() != nc || st.contacts.sliding.size() != nc)))
+    throw h5::Error(file + ": /state contact datasets have different lengths");
+  for (std::size_t k = 0; k < nc; ++k)
+    if (st.contacts.first[k] >= st.contacts.second[k] || st.contacts.second[k] >= n ||
+        (k > 0 && std::make_pair(st.contacts.first[k - 1], st.contacts.second[k - 1]) >=
+                      std::make_pair(st.contacts.first[k], st.contacts.second[k])))
+      throw h5::Error(file + ": /state contact " + std::to_string(k) + " names invalid particles");
+  st.step = h5::get_int_attribute(g, "step");
+  st.time_step_s = h5::get_double_attribute(g, "time_step");
+  return st;
+}
+
+}  // namespace dem

@@ -1,0 +1,24 @@
+#pragma once
+// The saved state: everything needed to continue a run bit for bit (layout in engine/README.md).
+#include <cstdint>
+#include <string>
+
+#include "dynamics/simulation.hpp"
+#include "io/hdf5.hpp"
+
+namespace dem {
+
+struct SavedState {
+  Particles particles;
+  PeriodicCell cell;
+  PairList contacts;     // pairs in contact, with springs and sliding flags if frictional
+  Vec3 strain_rate_per_s = Vec3::Zero();
+  std::int64_t step = 0;
+  double time_step_s = 0;
+};
+
+void write_state(hid_t group, const Simulation& sim);
+// Reads the /state group of a *complete* result file; throws naming the file otherwise.
+SavedState read_state(const std::string& file);
+
+}  // namespace dem

@@ -1,0 +1,191 @@
+#include "run/run_scene.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "analysis/measurements.hpp"
+#include "analysis/time_series.hpp"
+#include "config/yaml_section.hpp"
+#include "io/particle_csv.hpp"
+#include "io/result_writer.hpp"
+#include "io/state_io.hpp"
+
+namespace dem {
+
+Simulation build_simulation(const SceneConfig& scene) {
+  const ParticleSource& src = scene.particles;
+  Particles particles;
+  PeriodicCell cell;
+  SavedState saved;
+  switch (src.kind) {
+    case ParticleSource::Kind::Lattice:
+      make_lattice(src.lattice, GradingCurve(src.grading_diameters_m, src.grading_percent_finer),
+                   scene.material.density_kg_per_m3, particles, cell);
+      break;
+    case ParticleSource::Kind::Csv:
+      cell = PeriodicCell(src.cell_m);
+      read_particle_csv(src.path, cell, scene.material.density_kg_per_m3, particles);
+      break;
+    case ParticleSource::Kind::State:
+      saved = read_state(src.path);
+      particles = saved.particles;
+      cell = saved.cell;
+      break;
+  }
+  const double dt_crit = critical_time_step(particles, scene.material.kn_N_per_m);
+  if (scene.time_step_s > scene.max_time_step_fraction * dt_crit) {
+    std::ostringstream msg;
+    msg << scene.file << ": numerics.time_step = " << scene.time_step_s << " s is above the allowed "
+        << scene.max_time_step_fraction << " x critical time step = " << scene.max_time_step_fraction * dt_crit
+        << " s (critical step 2 sqrt(m_min/kn) = " << dt_crit
+        << " s); reduce time_step, or raise numerics.max_time_step_fraction on purpose";
+    throw ConfigError(msg.str());
+  }
+  Simulation sim(std::move(particles), cell, scene.material, scene.damping, scene.time_step_s, scene.verlet_skin_m);
+  if (src.kind == ParticleSource::Kind::State) {
+    // A new run from a saved state: its own step count starts at zero; the dynamic state continues.
+    PairList contacts = std::move(saved.contacts);
+    if (scene.material.friction > 0 && contacts.spring.empty()) {  // frictionless sample, frictional scene
+      contacts.spring.assign(contacts.size(), Vec3::Zero());
+      contacts.sliding.assign(contacts.size(), 0);
+    } else if (scene.material.friction == 0) {
+      contacts.spring.clear();
+      contacts.sliding.clear();
+    }
+    sim.restore(0, saved.strain_rate_per_s, std::move(contacts));
+  }
+  return sim;
+}
+
+namespace {
+
+std::int64_t steps_for(double duration_s, double dt_s) { return std::llround(duration_s / dt_s); }
+
+bool output_due(const Simulation& sim, const SceneConfig& scene) {
+  return sim.step_count() % scene.output.interval_steps == 0;
+}
+
+constexpr std::int64_t progress_every = 256;
+
+void run_strain_rate_stage(Simulation& sim, const SceneConfig& scene, int index, const StageHooks& hooks) {
+  const StageConfig& st = scene.stages[static_cast<std::size_t>(index)];
+  CellTargets targets;
+  for (int k = 0; k < 3; ++k) targets[static_cast<std::size_t>(k)] = {AxisTarget::Mode::StrainRate, st.strain_rate_per_s[k], 0, 0};
+  const std::int64_t n = steps_for(st.duration_s, sim.time_step());
+  for (std::int64_t i = 0; i < n; ++i) {
+    sim.step(targets, scene.servo);
+    if (hooks.row && output_due(sim, scene)) hooks.row(sim, index);
+    if (hooks.progress && i % progress_every == 0)
+      hooks.progress(sim, {index, static_cast<double>(i) / static_cast<double>(n), ""});
+  }
+}
+
+void run_stress_stage(Simulation& sim, const SceneConfig& scene, int index, const StageHooks& hooks) {
+  const StageConfig& st = scene.stages[static_cast<std::size_t>(index)];
+  const double dt = sim.time_step();
+  const Mat3 start_stress = count_contacts(sim).stress_Pa;
+  // Each axis ramps linearly from its stress at the stage start to its target at the stage rate.
+  Vec3 from, ramp_time;
+  for (int k = 0; k < 3; ++k) {
+    from[k] = start_stress(k, k);
+    ramp_time[k] = std::abs(st.target_Pa[k] - from[k]) / st.stress_rate_Pa_per_s;
+  }
+  const double ramp_end = ramp_time.maxCoeff();
+  const std::int64_t max_steps = steps_for(st.hold.max_duration_s, dt);
+  const ServoSettings servo{scene.servo.gain, st.max_strain_rate_per_s};
+  CellTargets targets;
+  double stress_error = 0, unbalanced = 1;
+  for (std::int64_t i = 0;; ++i) {
+    const double t = static_cast<double>(i) * dt;
+    for (int k = 0; k < 3; ++k) {
+      const double sign = st.target_Pa[k] >= from[k] ? 1.0 : -1.0;
+      const bool ramping = t < ramp_time[k];
+      targets[static_cast<std::size_t>(k)] = {AxisTarget::Mode::Stress, 0,
+                                              ramping ? from[k] + sign * st.stress_rate_Pa_per_s * t : st.target_Pa[k],
+                                              ramping ? sign * st.stress_rate_Pa_per_s : 0.0};
+    }
+    sim.step(targets, servo);
+    const std::int64_t done = i + 1;
+    if (hooks.row && output_due(sim, scene)) hooks.row(sim, index);
+    const double t_done = static_cast<double>(done) * dt;
+    if (t_done >= ramp_end && done % st.hold.check_interval_steps == 0) {
+      const Mat3& s = sim.sums().stress_Pa;
+      stress_error = 0;
+      for (int k = 0; k < 3; ++k) stress_error = std::max(stress_error, std::abs(s(k, k) - st.target_Pa[k]) / st.target_Pa[k]);
+      unbalanced = unbalanced_force_ratio(sim);
+      if (stress_error <= st.hold.stress_tolerance && unbalanced <= st.hold.unbalanced_force_ratio) return;
+    }
+    if (done >= max_steps) {
+      std::ostringstream msg;
+      msg << "stage '" << st.name << "' did not reach equilibrium within hold.max_duration = " << st.hold.max_duration_s
+          << " s: largest stress error " << 100 * stress_error << " % (allowed " << 100 * st.hold.stress_tolerance
+          << " %), unbalanced force ratio " << unbalanced << " (allowed " << st.hold.unbalanced_force_ratio << ")";
+      throw StageError(msg.str());
+    }
+    if (hooks.progress && i % progress_every == 0) {
+      std::ostringstream status;
+      status << "p = " << mean_stress(sim.sums().stress_Pa) / 1e3 << " kPa";
+      if (t_done >= ramp_end) status << ", holding: stress error " << 100 * stress_error << " %, unbalanced " << unbalanced;
+      hooks.progress(sim, {index, t_done < ramp_end ? t_done / std::max(ramp_end, dt) : -1.0, status.str()});
+    }
+  }
+}
+
+}  // namespace
+
+void run_stage(Simulation& sim, const SceneConfig& scene, int index, const StageHooks& hooks) {
+  const StageConfig& st = scene.stages[static_cast<std::size_t>(index)];
+  if (st.reset_strain) sim.cell().set_reference_lengths(sim.cell().lengths());
+  if (st.type == StageConfig::Type::StrainRate)
+    run_strain_rate_stage(sim, scene, index, hooks);
+  else
+    run_stress_stage(sim, scene, index, hooks);
+  if (hooks.row && !output_due(sim, scene)) hooks.row(sim, index);  // the stage end is always recorded
+}
+
+RunSummary run_scene(const SceneConfig& scene, const std::string& out_path, bool show_progress) {
+  using clock = std::chrono::steady_clock;
+  const auto start = clock::now();
+  Simulation sim = build_simulation(scene);  // all input checks happen before the output file exists
+  ResultWriter out(out_path, scene);
+  auto last_print = start;
+  int stage_seen = -1;          // for the ETA: the stage being timed and when it started
+  double stage_start_wall = 0;  // [s since the run started]
+  StageHooks hooks;
+  hooks.row = [&](const Simulation& s, int stage) { out.append_row(measure_row(s, stage)); };
+  if (show_progress)
+    hooks.progress = [&](const Simulation& s, const StageProgress& pr) {
+      const auto now = clock::now();
+      if (now - last_print < std::chrono::milliseconds(500)) return;
+      last_print = now;
+      const double elapsed = std::chrono::duration<double>(now - start).count();
+      std::fprintf(stderr, "\r\033[K[%s %d/%zu '%s'] step %lld, t = %.4g s", scene.name.c_str(), pr.stage + 1,
+                   scene.stages.size(), scene.stages[static_cast<std::size_t>(pr.stage)].name.c_str(),
+                   static_cast<long long>(s.step_count()), s.time());
+      if (pr.fraction > 0) {
+        // Time left in this stage, from its progress so far.
+        if (stage_seen != pr.stage) stage_seen = pr.stage, stage_start_wall = elapsed;
+        const double stage_elapsed = elapsed - stage_start_wall;
+        std::fprintf(stderr, ", %.0f %% of stage, ETA %.0f s", 100 * pr.fraction, stage_elapsed * (1 - pr.fraction) / pr.fraction);
+      }
+      if (!pr.status.empty()) std::fprintf(stderr, ", %s", pr.status.c_str());
+      std::fflush(stderr);
+    };
+  try {
+    hooks.row(sim, 0);
+    for (int i = 0; i < static_cast<int>(scene.stages.size()); ++i) run_stage(sim, scene, i, hooks);
+    out.write_state(sim);
+    const double wall = std::chrono::duration<double>(clock::now() - start).count();
+    out.complete(wall);
+    if (show_progress) std::fprintf(stderr, "\r\033[K");
+    return {sim.step_count(), wall};
+  } catch (const std::exception& e) {
+    if (show_progress) std::fprintf(stderr, "\n");
+    out.fail(e.what());
+    throw;
+  }
+}
+
+}  // namespace dem
