@@ -25,7 +25,7 @@ test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 bench: build
-	$(BUILD)/bin/dem-bench
+	$(BUILD)/bin/dem-bench $(BUILD)/bench
 
 # The three preparation scenes of SPEC section 2, full size (8,000 spheres).
 samples: build

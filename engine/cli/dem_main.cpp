@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -62,7 +63,8 @@ int run(int argc, char** argv) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "error: %s: %s\n(partial result kept in %s.partial)\n", scene_file.c_str(), e.what(), out.c_str());
+    std::fprintf(stderr, "error: %s: %s\n", scene_file.c_str(), e.what());
+    if (std::filesystem::exists(out + ".partial")) std::fprintf(stderr, "(partial result kept in %s.partial)\n", out.c_str());
     return 1;
   }
 }

@@ -58,7 +58,7 @@ void read_particle_csv(const std::string& file, const PeriodicCell& cell, double
     if (!(v[3] > 0))
       throw std::runtime_error(file + ": line " + std::to_string(line_no) + ": radius must be > 0 m, got " + std::to_string(v[3]));
     Vec3 s = Vec3(v[0], v[1], v[2]).cwiseProduct(cell.inverse_lengths());
-    PeriodicCell::wrap(s);
+    PeriodicCell::wrap_any(s);
     particles.add(s, v[3], density_kg_per_m3);
   }
   if (particles.size() == 0) throw std::runtime_error(file + ": no particles after the header");

@@ -14,8 +14,10 @@ std::vector<double> flatten(const std::vector<Vec3>& v) {
   return out;
 }
 
-std::vector<Vec3> unflatten(const std::vector<double>& d, std::size_t cols, const std::string& file,
-                            const std::string& name) {
+// Reads an N x 3 dataset of /state into vectors.
+std::vector<Vec3> read_vec3(hid_t group, const std::string& file, const std::string& name) {
+  std::size_t cols = 0;
+  const std::vector<double> d = h5::read<double>(group, name, cols);
   if (cols != 3) throw h5::Error(file + ": /state/" + name + " must have 3 columns, has " + std::to_string(cols));
   std::vector<Vec3> out(d.size() / 3);
   for (std::size_t i = 0; i < out.size(); ++i) out[i] = Vec3(d[3 * i], d[3 * i + 1], d[3 * i + 2]);
@@ -81,9 +83,9 @@ SavedState read_state(const std::string& file) {
   SavedState st;
   std::size_t cols = 0;
   Particles& p = st.particles;
-  p.s = unflatten(h5::read<double>(g, "position_fractional", cols), cols, file, "position_fractional");
-  p.v = unflatten(h5::read<double>(g, "velocity", cols), cols, file, "velocity");
-  p.omega = unflatten(h5::read<double>(g, "angular_velocity", cols), cols, file, "angular_velocity");
+  p.s = read_vec3(g, file, "position_fractional");
+  p.v = read_vec3(g, file, "velocity");
+  p.omega = read_vec3(g, file, "angular_velocity");
   p.radius = h5::read<double>(g, "radius", cols);
   p.mass = h5::read<double>(g, "mass", cols);
   p.inertia = h5::read<double>(g, "moment_of_inertia", cols);
@@ -103,7 +105,7 @@ SavedState read_state(const std::string& file) {
   st.contacts.first = h5::read<std::uint32_t>(g, "contact_first", cols);
   st.contacts.second = h5::read<std::uint32_t>(g, "contact_second", cols);
   if (h5::exists(g, "contact_tangential_spring")) {
-    st.contacts.spring = unflatten(h5::read<double>(g, "contact_tangential_spring", cols), cols, file, "contact_tangential_spring");
+    st.contacts.spring = read_vec3(g, file, "contact_tangential_spring");
     st.contacts.sliding = h5::read<std::uint8_t>(g, "contact_sliding", cols);
   }
   const std::size_t nc = st.contacts.first.size();

@@ -12,8 +12,7 @@ bool VerletList::needs_rebuild(const Particles& p, const PeriodicCell& cell) con
   const Vec3& L = cell.lengths();
   double max_disp2 = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    Vec3 ds = p.s[i] - s_at_build_[i];
-    for (int k = 0; k < 3; ++k) ds[k] -= std::floor(ds[k] + 0.5);
+    const Vec3 ds = PeriodicCell::min_image(p.s[i] - s_at_build_[i]);
     max_disp2 = std::max(max_disp2, ds.cwiseProduct(L).squaredNorm());
   }
   const double lambda_min = L.cwiseQuotient(lengths_at_build_).minCoeff();
