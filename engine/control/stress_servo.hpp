@@ -4,8 +4,8 @@
 //
 //   rate_k = gain * (target_k - sigma_kk) / (K_k dt)  +  dtarget_k/dt / K_k,   |rate_k| <= max_rate,
 //
-// with K_k = (1/V) sum_c kn (n_k l_k)^2 the affine stiffness of the packing on axis k (stress
-// increment per unit compressive strain if all particles followed the cell). The first term
+// with K_k = (1/V) sum_c kn (n_k l_k)^2 the affine stiffness of the normal springs on axis k
+// (stress increment per unit compressive strain if all particles followed the cell). The first term
 // removes a fraction `gain` of the stress error per step; the second (feed-forward) term follows a
 // moving target without lag. Because K_k is the affine (upper-bound) stiffness, the servo
 // under-corrects rather than overshoots. With no contacts (K = 0) the axis moves at the cap.

@@ -59,6 +59,10 @@ void compute_forces(const LinearSpring<Friction>& law, const Particles& p, const
     force[j] += f;
     force[i] -= f;
     stress.noalias() += f * l.transpose();
+    // Servo stiffness: d(sigma_kk)/d(eps_k) of the normal springs if the contact followed the
+    // cell, kn (n_k l_k)^2. (Adding the sticking tangential springs, ks (l_k^2 - (n_k l_k)^2),
+    // over-estimates the relaxed stiffness: on a 1,000-sphere packing ramped at 2 MPa/s the
+    // stress then lagged its target by 0.7 % of p, against a 0.3 % lead with kn alone.)
     const Vec3 nl = nrm.cwiseProduct(l);
     stiffness += kn * nl.cwiseProduct(nl);
     ++contacts;
