@@ -9,6 +9,7 @@
 namespace dem {
 
 double critical_time_step(const Particles& p, double kn_N_per_m) {
+  if (p.size() == 0) throw std::invalid_argument("critical_time_step: no particles");
   const double m_min = *std::min_element(p.mass.begin(), p.mass.end());
   return 2.0 * std::sqrt(m_min / kn_N_per_m);
 }

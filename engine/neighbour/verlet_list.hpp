@@ -39,7 +39,14 @@ class VerletList {
   bool needs_rebuild(const Particles& p, const PeriodicCell& cell) const;
   // Replaces the pairs, e.g. with contacts and springs loaded from a saved state; the next build()
   // keeps their history.
-  void restore(PairList pairs) { pairs_ = std::move(pairs); built_ = false; }
+  void restore(PairList pairs) {
+    pairs_ = std::move(pairs);
+    if (keep_history_ && pairs_.spring.size() != pairs_.size()) {  // history-less pairs start unloaded
+      pairs_.spring.assign(pairs_.size(), Vec3::Zero());
+      pairs_.sliding.assign(pairs_.size(), 0);
+    }
+    built_ = false;
+  }
   // Rebuilds the list; throws std::runtime_error if the cell is too small for the minimum image.
   void build(const Particles& p, const PeriodicCell& cell);
 

@@ -46,11 +46,10 @@ Simulation build_simulation(const SceneConfig& scene) {
   Simulation sim(std::move(particles), cell, scene.material, scene.damping, scene.time_step_s, scene.verlet_skin_m);
   if (src.kind == ParticleSource::Kind::State) {
     // A new run from a saved state: its own step count starts at zero; the dynamic state continues.
+    // A frictional scene started from a frictionless sample gets unloaded springs (VerletList::restore);
+    // a frictionless scene drops any springs.
     PairList contacts = std::move(saved.contacts);
-    if (scene.material.friction > 0 && contacts.spring.empty()) {  // frictionless sample, frictional scene
-      contacts.spring.assign(contacts.size(), Vec3::Zero());
-      contacts.sliding.assign(contacts.size(), 0);
-    } else if (scene.material.friction == 0) {
+    if (scene.material.friction == 0) {
       contacts.spring.clear();
       contacts.sliding.clear();
     }

@@ -36,7 +36,7 @@ inline CellTargets fixed_cell() { return CellTargets{}; }
 // Fractional position of real point x in `cell`, wrapped into [0,1).
 inline Vec3 fractional(const PeriodicCell& cell, const Vec3& x) {
   Vec3 s = x.cwiseProduct(cell.inverse_lengths());
-  PeriodicCell::wrap(s);
+  PeriodicCell::wrap_any(s);
   return s;
 }
 

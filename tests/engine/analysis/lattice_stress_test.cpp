@@ -58,6 +58,12 @@ void check_lattice(const std::array<int, 3>& n, const Vec3& a) {
   REQUIRE(counts.particles_no_contact == 0);
   REQUIRE(coordination_number(counts.contacts, N) == 6.0);
   REQUIRE(mechanical_coordination_number(counts, N) == 6.0);
+  // The survey recomputes the stress from the state after the step; the balanced lattice has not
+  // moved (net forces are round-off), so it gives the same tensor, and the mean normal force is the
+  // average of kn delta_k over the three axes (N contacts each).
+  for (int k = 0; k < 3; ++k) REQUIRE(counts.stress_Pa(k, k) == Approx(expected[k]).epsilon(1e-12));
+  REQUIRE((counts.stress_Pa - Mat3(expected.asDiagonal())).norm() <= 1e-12 * expected.norm());
+  REQUIRE(counts.mean_normal_force_N == Approx(kn * (3 * d - a.sum()) / 3).epsilon(1e-12));
   // Void ratio: cell volume per sphere a1 a2 a3 against the sphere volume.
   REQUIRE(void_ratio(sim.particles(), sim.cell()) == Approx(a.prod() / sphere_volume(d / 2) - 1).epsilon(1e-13));
 }

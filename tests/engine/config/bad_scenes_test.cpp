@@ -1,0 +1,338 @@
+// A catalogue of bad scenes. Every one must be refused before a run starts, with a message that
+// names the file, the key path and what is allowed (engine/config/yaml_section.hpp promises
+// exactly that: "every error names the file, the full key path, the line, what is allowed and
+// what was found"). The expected texts are the engine's wording from yaml_section.cpp and
+// scene_config.cpp; the `why` of each case says why the scene is bad.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "config/scene_config.hpp"
+#include "config/yaml_section.hpp"
+#include "engine/io/io_test_support.hpp"
+#include "run/run_scene.hpp"
+
+using namespace dem;
+
+namespace {
+
+// A scene assembled from one line per part, so that every case knows its line numbers:
+//   1 name, 2 particles:, 3 lattice, 4 grading, 5 material, 6 numerics, 7 stages, 8... stage items,
+//   then `extra` lines.
+struct Yaml {
+  std::string lattice = "{n: [3, 3, 3], spacing: 5.0e-3, seed: 1}";
+  std::string grading = "{diameters: [3.0e-3, 4.5e-3], percent_finer: [0, 100]}";
+  std::string material = "{kn: 1.0e6, ks: 1.0e6, friction: 0.5}";
+  std::string numerics = "{time_step: 1.0e-6}";
+  std::string stages = "\n  - {name: a, type: strain_rate, strain_rate: [0.1, 0.1, 0.1], duration: 1.0e-4}";
+  std::string extra = "";
+  std::string text() const {
+    return "name: bad\nparticles:\n  lattice: " + lattice + "\n  grading: " + grading + "\nmaterial: " + material +
+           "\nnumerics: " + numerics + "\nstages:" + stages + "\n" + extra;
+  }
+};
+
+const std::string stress_stage = "\n  - {name: a, type: stress, target: [1.0e5, 1.0e5, 1.0e5], rate: 1.0e6, hold: {max_duration: 1}}";
+
+enum class Kind { Config, InvalidArgument };
+
+struct BadScene {
+  std::string what;                   // the mistake
+  std::string yaml;
+  Kind kind;                          // the exception type the engine documents for it
+  std::vector<std::string> expected;  // substrings of the message
+};
+
+struct Outcome {
+  bool threw = false;
+  Kind kind = Kind::Config;
+  std::string message;
+};
+
+// Parses the scene and builds its simulation (some checks, e.g. the grading curve and the
+// critical time step, happen only when the particles exist).
+Outcome refuse(const std::string& yaml, const std::string& file = "bad.yaml") {
+  Outcome o;
+  try {
+    const SceneConfig scene = scene_from_text(yaml, file);
+    build_simulation(scene);
+  } catch (const ConfigError& e) {
+    o = {true, Kind::Config, e.what()};
+  } catch (const std::invalid_argument& e) {
+    o = {true, Kind::InvalidArgument, e.what()};
+  } catch (const std::exception& e) {
+    o = {true, Kind::Config, std::string("UNEXPECTED exception type: ") + e.what()};
+    FAIL(o.message);
+  }
+  return o;
+}
+
+std::vector<BadScene> catalogue() {
+  const Kind C = Kind::Config;
+  return {
+      // --- unknown and duplicate keys ---------------------------------------------------------
+      // An unread key is an error (Section::finish); a key within edit distance 2 of a declared
+      // key of the same mapping is suggested. 'densty' is one deletion from 'density'.
+      {"misspelt optional key 'densty' in material", Yaml{.material = "{kn: 1.0e6, ks: 1.0e6, friction: 0.5, densty: 2000}"}.text(), C,
+       {"bad.yaml: material: unknown key 'densty' (line 5)", "did you mean 'density'?"}},
+      // The same in a nested mapping: hold's 'max_duraton' is one deletion from 'max_duration'.
+      {"misspelt key 'max_duraton' in a stage's hold",
+       Yaml{.stages = "\n  - {name: a, type: stress, target: [1.0e5, 1.0e5, 1.0e5], rate: 1.0e6, hold: {max_duraton: 1}}"}.text(), C,
+       {"bad.yaml: stages[0].hold: unknown key 'max_duraton' (line 8)", "did you mean 'max_duration'?"}},
+      // A misspelt damping key: 'translatonal' is one deletion from 'translational'.
+      {"misspelt key 'translatonal' in damping", Yaml{.extra = "damping: {form: viscous, translatonal: 0.1}\n"}.text(), C,
+       {"bad.yaml: damping: unknown key 'translatonal' (line 9)", "did you mean 'translational'?"}},
+      // A required key that is misspelt is reported as missing (it is read before the unknown-key
+      // check): the message still names material.friction and its range. (The did-you-mean for
+      // this case is a known gap, see "misspelt required key" in this file.)
+      {"'fricton' instead of the required 'friction'", Yaml{.material = "{kn: 1.0e6, ks: 1.0e6, fricton: 0.5}"}.text(), C,
+       {"bad.yaml: material.friction: missing (a number in [0, 10])"}},
+      // 'colour' is no scene key and is far from every top-level key: no suggestion, but the line.
+      {"unknown top-level key", Yaml{.extra = "colour: red\n"}.text(), C, {"bad.yaml: top level: unknown key 'colour' (line 9)"}},
+      // A key used in the wrong kind of stage is unknown there: strain_rate stages have no target.
+      {"stress key in a strain_rate stage",
+       Yaml{.stages = "\n  - {name: a, type: strain_rate, strain_rate: [0.1, 0.1, 0.1], duration: 1.0e-4, target: [1, 1, 1]}"}.text(), C,
+       {"bad.yaml: stages[0]: unknown key 'target' (line 8)"}},
+      // YAML leaves duplicate keys undefined; the Section constructor refuses them with the line
+      // of the second one.
+      {"duplicate key material.kn", Yaml{.material = "{kn: 1.0e6, ks: 1.0e6, friction: 0.5, kn: 2.0e6}"}.text(), C,
+       {"bad.yaml: material.kn: duplicate key (line 5)"}},
+      {"duplicate top-level section numerics", Yaml{.extra = "numerics: {time_step: 2.0e-6}\n"}.text(), C,
+       {"bad.yaml: numerics: duplicate key (line 9)"}},
+      // --- missing required keys (declared without default) ------------------------------------
+      {"missing material.kn", Yaml{.material = "{ks: 1.0e6, friction: 0.5}"}.text(), C,
+       {"bad.yaml: material.kn: missing (a number in (0, 1e+12] N/m)"}},
+      {"missing numerics.time_step", Yaml{.numerics = "{verlet_skin: 2.0e-4}"}.text(), C,
+       {"bad.yaml: numerics.time_step: missing (a number in (0, 1] s)"}},
+      {"missing stages", "name: bad\nparticles:\n  lattice: {n: [3, 3, 3], spacing: 5.0e-3}\n"
+                         "  grading: {diameters: [3.0e-3, 4.5e-3], percent_finer: [0, 100]}\n"
+                         "material: {kn: 1.0e6, ks: 1.0e6, friction: 0.5}\nnumerics: {time_step: 1.0e-6}\n", C,
+       {"bad.yaml: stages: must be a non-empty list of mappings, got nothing"}},
+      {"empty stages list", Yaml{.stages = " []"}.text(), C, {"bad.yaml: stages: must be a non-empty list of mappings"}},
+      {"missing material section", "name: bad\nparticles:\n  lattice: {n: [3, 3, 3], spacing: 5.0e-3}\n"
+                                   "  grading: {diameters: [3.0e-3, 4.5e-3], percent_finer: [0, 100]}\n"
+                                   "numerics: {time_step: 1.0e-6}\nstages: [{name: a, type: strain_rate, strain_rate: [0, 0, 0], duration: 1}]\n", C,
+       {"bad.yaml: material: missing (a mapping)"}},
+      // A stress stage must say when it has reached its target (hold), even if only to accept the defaults.
+      {"stress stage without hold", Yaml{.stages = "\n  - {name: a, type: stress, target: [1.0e5, 1.0e5, 1.0e5], rate: 1.0e6}"}.text(), C,
+       {"bad.yaml: stages[0].hold: missing (a mapping)"}},
+      // --- wrong types ---------------------------------------------------------------------------
+      {"text where a number is expected", Yaml{.material = "{kn: stiff, ks: 1.0e6, friction: 0.5}"}.text(), C,
+       {"bad.yaml: material.kn: must be a number [N/m], got 'stiff' (line 5)"}},
+      {"a list where a scalar is expected", Yaml{.material = "{kn: 1.0e6, ks: 1.0e6, friction: [0.5]}"}.text(), C,
+       {"bad.yaml: material.friction: must be a number, got a list (line 5)"}},
+      {"a mapping where a list is expected",
+       Yaml{.stages = "\n  - {name: a, type: strain_rate, strain_rate: {x: 0.1}, duration: 1.0e-4}"}.text(), C,
+       {"bad.yaml: stages[0].strain_rate: must be a list of 3 numbers in [-1000, 1000], got a mapping (line 8)"}},
+      {"a scalar where a mapping is expected", Yaml{.material = "1.0e6"}.text(), C,
+       {"bad.yaml: material must be a mapping of keys, got '1.0e6'"}},
+      {"not true/false for a boolean",
+       Yaml{.stages = "\n  - {name: a, type: strain_rate, strain_rate: [0.1, 0.1, 0.1], duration: 1.0e-4, reset_strain: maybe}"}.text(), C,
+       {"bad.yaml: stages[0].reset_strain: must be true or false, got 'maybe' (line 8)"}},
+      {"a fraction where an integer is expected", Yaml{.extra = "output: {interval: 0.5}\n"}.text(), C,
+       {"bad.yaml: output.interval: must be an integer in [1, 1000000000], got '0.5' (line 9)"}},
+      // --- values out of range -------------------------------------------------------------------
+      // Friction is a Coulomb coefficient mu in [0, 10].
+      {"negative friction", Yaml{.material = "{kn: 1.0e6, ks: 1.0e6, friction: -0.1}"}.text(), C,
+       {"bad.yaml: material.friction: must be in [0, 10], got -0.1 (line 5)"}},
+      // kn must be > 0 (open lower bound "(0,"): a zero spring has no critical time step.
+      {"zero kn", Yaml{.material = "{kn: 0, ks: 1.0e6, friction: 0.5}"}.text(), C,
+       {"bad.yaml: material.kn: must be in (0, 1e+12] N/m, got 0 (line 5)"}},
+      {"negative kn", Yaml{.material = "{kn: -1.0e6, ks: 1.0e6, friction: 0.5}"}.text(), C,
+       {"bad.yaml: material.kn: must be in (0, 1e+12] N/m, got -1.0e6"}},
+      {"zero time step", Yaml{.numerics = "{time_step: 0}"}.text(), C,
+       {"bad.yaml: numerics.time_step: must be in (0, 1] s, got 0 (line 6)"}},
+      {"negative time step", Yaml{.numerics = "{time_step: -1.0e-6}"}.text(), C,
+       {"bad.yaml: numerics.time_step: must be in (0, 1] s, got -1.0e-6"}},
+      // SPEC section 5 has two damping forms only.
+      {"damping form not viscous/local", Yaml{.extra = "damping: {form: coulomb}\n"}.text(), C,
+       {"bad.yaml: damping.form: must be one of: viscous, local, got 'coulomb' (line 9)"}},
+      // Lattice site counts are whole numbers in [1, 200].
+      {"lattice n not whole", Yaml{.lattice = "{n: [3, 3.5, 3], spacing: 5.0e-3}"}.text(), C,
+       {"bad.yaml: particles.lattice.n: must be whole numbers"}},
+      {"lattice n zero", Yaml{.lattice = "{n: [0, 3, 3], spacing: 5.0e-3}"}.text(), C,
+       {"bad.yaml: particles.lattice.n[0]: must be in [1, 200], got 0 (line 3)"}},
+      {"grading percent_finer shorter than diameters",
+       Yaml{.grading = "{diameters: [3.0e-3, 4.0e-3, 4.5e-3], percent_finer: [0, 100]}"}.text(), C,
+       {"bad.yaml: particles.grading.percent_finer: must have as many items as 'diameters' (3)"}},
+      // The curve's end points are checked by GradingCurve when the lattice is generated, and it
+      // throws std::invalid_argument (engine/generate/grading.cpp) without the file name.
+      {"grading not starting at 0 %", Yaml{.grading = "{diameters: [3.0e-3, 4.5e-3], percent_finer: [10, 100]}"}.text(),
+       Kind::InvalidArgument, {"grading:", "percent_finer must start at 0 and end at 100"}},
+      {"grading not ending at 100 %", Yaml{.grading = "{diameters: [3.0e-3, 4.5e-3], percent_finer: [0, 90]}"}.text(),
+       Kind::InvalidArgument, {"grading:", "percent_finer must start at 0 and end at 100"}},
+      {"grading diameters decreasing", Yaml{.grading = "{diameters: [4.5e-3, 3.0e-3], percent_finer: [0, 100]}"}.text(),
+       Kind::InvalidArgument, {"grading: diameters must increase strictly"}},
+      // The lattice generator refuses spheres larger than the spacing (they would overlap).
+      {"lattice spacing below the largest diameter", Yaml{.lattice = "{n: [3, 3, 3], spacing: 4.0e-3}"}.text(),
+       Kind::InvalidArgument, {"lattice spacing 0.004 m is smaller than the largest diameter 0.0045 m"}},
+      // Targets are compressive stresses, > 0.
+      {"negative stress target",
+       Yaml{.stages = "\n  - {name: a, type: stress, target: [1.0e5, -1.0e5, 1.0e5], rate: 1.0e6, hold: {max_duration: 1}}"}.text(), C,
+       {"bad.yaml: stages[0].target[1]: must be in (0, 1e+10] Pa, got -1.0e5 (line 8)"}},
+      {"zero hold.max_duration",
+       Yaml{.stages = "\n  - {name: a, type: stress, target: [1.0e5, 1.0e5, 1.0e5], rate: 1.0e6, hold: {max_duration: 0}}"}.text(), C,
+       {"bad.yaml: stages[0].hold.max_duration: must be in (0, 1e+06] s, got 0"}},
+      {"unknown stage type", Yaml{.stages = "\n  - {name: a, type: cyclic, duration: 1}"}.text(), C,
+       {"bad.yaml: stages[0].type: must be one of: strain_rate, stress, got 'cyclic' (line 8)"}},
+      {"strain_rate with 2 items", Yaml{.stages = "\n  - {name: a, type: strain_rate, strain_rate: [0.1, 0.1], duration: 1.0e-4}"}.text(), C,
+       {"bad.yaml: stages[0].strain_rate: must be a list of 3 numbers in [-1000, 1000], got 2 items (line 8)"}},
+      // Stage names identify stages in the results, so they must be unique; the second one is named.
+      {"duplicate stage names", Yaml{.stages = "\n  - {name: a, type: strain_rate, strain_rate: [0.1, 0.1, 0.1], duration: 1.0e-4}" + stress_stage}.text(), C,
+       {"bad.yaml: stages[1].name: duplicate stage name 'a'"}},
+      // Coulomb friction needs a tangential spring.
+      {"friction > 0 with ks = 0", Yaml{.material = "{kn: 1.0e6, ks: 0, friction: 0.5}"}.text(), C,
+       {"bad.yaml: material.ks: must be > 0 when friction > 0"}},
+      // --- particle sources ----------------------------------------------------------------------
+      {"particles with both lattice and csv", Yaml{.grading = "{diameters: [3.0e-3, 4.5e-3], percent_finer: [0, 100]}\n  csv: p.csv"}.text(), C,
+       {"bad.yaml: particles: give exactly one of 'lattice', 'csv' or 'state'"}},
+      {"particles with no source", "name: bad\nparticles: {}\nmaterial: {kn: 1.0e6, ks: 1.0e6, friction: 0.5}\n"
+                                   "numerics: {time_step: 1.0e-6}\nstages: [{name: a, type: strain_rate, strain_rate: [0, 0, 0], duration: 1}]\n", C,
+       {"bad.yaml: particles: give exactly one of 'lattice', 'csv' or 'state'"}},
+      // --- not a scene at all -------------------------------------------------------------------
+      {"empty text", "", C, {"bad.yaml: the file is empty"}},
+      {"only a comment", "# nothing here\n", C, {"bad.yaml: the file is empty"}},
+      {"a scalar document", "hello\n", C, {"bad.yaml: the file must be a mapping of keys, got 'hello'"}},
+      // An unclosed flow mapping on line 5: yaml-cpp reports where it noticed (line 6).
+      {"invalid YAML syntax", Yaml{.material = "{kn: 1.0e6, ks: 1.0e6, friction: 0.5"}.text(), C,
+       {"bad.yaml: not valid YAML:", "line 6"}},
+      // --- numbers that are not finite ---------------------------------------------------------
+      // 1e400 overflows a double: yaml-cpp refuses to convert it, so it is "not a number".
+      {"huge number 1e400", Yaml{.material = "{kn: 1e400, ks: 1.0e6, friction: 0.5}"}.text(), C,
+       {"bad.yaml: material.kn: must be a number [N/m], got '1e400' (line 5)"}},
+      {"huge number 1e400 in a list", Yaml{.stages = "\n  - {name: a, type: stress, target: [1e400, 1.0e5, 1.0e5], rate: 1.0e6, hold: {max_duration: 1}}"}.text(), C,
+       {"bad.yaml: stages[0].target[0]: must be a number, got '1e400' (line 8)"}},
+      // .nan is a valid YAML float, but NaN compares false with every bound: out of range.
+      {"NaN as a number", Yaml{.material = "{kn: .nan, ks: 1.0e6, friction: 0.5}"}.text(), C,
+       {"bad.yaml: material.kn: must be in (0, 1e+12] N/m, got .nan (line 5)"}},
+      {".inf time step", Yaml{.numerics = "{time_step: .inf}"}.text(), C,
+       {"bad.yaml: numerics.time_step: must be in (0, 1] s, got .inf (line 6)"}},
+      {"NaN in a list", Yaml{.stages = "\n  - {name: a, type: strain_rate, strain_rate: [0.1, .nan, 0.1], duration: 1.0e-4}"}.text(), C,
+       {"bad.yaml: stages[0].strain_rate[1]: must be in [-1000, 1000] 1/s, got .nan (line 8)"}},
+  };
+}
+
+}  // namespace
+
+TEST_CASE("the base of the bad-scene catalogue is a valid scene", "[config]") {
+  // Each bad scene differs from this one in one part only, so the error must come from that part.
+  const SceneConfig scene = scene_from_text(Yaml{}.text(), "bad.yaml");
+  CHECK(scene.name == "bad");
+  CHECK(build_simulation(scene).particles().size() == 27);
+}
+
+TEST_CASE("bad scenes are refused with a message naming file, key path and what is allowed", "[config]") {
+  const auto cases = catalogue();
+  REQUIRE(cases.size() >= 20);
+  for (const BadScene& c : cases) {
+    INFO("case: " << c.what << "\n--- yaml ---\n" << c.yaml << "------------");
+    const Outcome o = refuse(c.yaml);
+    INFO("message: " << o.message);
+    CHECK(o.threw);
+    if (!o.threw) continue;
+    CHECK((o.kind == c.kind));
+    // Every ConfigError starts with the file name, so a user with many scenes knows which one.
+    if (c.kind == Kind::Config) CHECK(o.message.rfind("bad.yaml: ", 0) == 0);
+    for (const std::string& e : c.expected) CHECK_THAT(o.message, Catch::Matchers::Contains(e));
+  }
+}
+
+TEST_CASE("scene files that cannot be read are refused naming the file", "[config]") {
+  const std::string dir = test::scratch_dir("bad_scene_files");
+  SECTION("an empty file") {
+    // A zero-byte file parses to a null YAML document.
+    test::write_text(dir + "/empty.yaml", "");
+    REQUIRE_THROWS_MATCHES(load_scene(dir + "/empty.yaml"), ConfigError,
+                           Catch::Matchers::Message(dir + "/empty.yaml: the file is empty"));
+  }
+  SECTION("a directory") {
+    REQUIRE_THROWS_MATCHES(load_scene(dir), ConfigError,
+                           Catch::Matchers::Message(dir + ": is a directory, expected a YAML file"));
+  }
+  SECTION("a nonexistent file") {
+    REQUIRE_THROWS_MATCHES(load_scene(dir + "/missing.yaml"), ConfigError,
+                           Catch::Matchers::Message(dir + "/missing.yaml: no such file"));
+  }
+  SECTION("a file with a YAML error names the file and the line") {
+    test::write_text(dir + "/broken.yaml", Yaml{.material = "{kn: 1.0e6, ks: 1.0e6, friction: 0.5"}.text());
+    REQUIRE_THROWS_WITH(load_scene(dir + "/broken.yaml"),
+                        Catch::Matchers::StartsWith(dir + "/broken.yaml: not valid YAML") && Catch::Matchers::Contains("line 6"));
+  }
+  SECTION("a bad value in a file names the file and the key") {
+    test::write_text(dir + "/bad.yaml", Yaml{.material = "{kn: 1.0e6, ks: 1.0e6, friction: -1}"}.text());
+    REQUIRE_THROWS_WITH(load_scene(dir + "/bad.yaml"),
+                        Catch::Matchers::Contains(dir + "/bad.yaml: material.friction: must be in [0, 10], got -1 (line 5)"));
+  }
+}
+
+TEST_CASE("a time step above the allowed fraction of the critical step is refused with both numbers", "[config]") {
+  // The SPEC material (kn = 1e6 N/m, density 2650) with 3 ... 4.5 mm spheres: the critical step
+  // 2 sqrt(m_min/kn) lies between the values of a 3 mm sphere (1.224e-5 s) and a 4.5 mm sphere,
+  // so dt = 1e-4 s is far above 0.2 x critical (~2.5e-6 s).
+  const double pi = 3.14159265358979323846;
+  const auto step_of = [&](double d) { return 2 * std::sqrt(2650 * pi / 6 * d * d * d / 1e6); };
+  const SceneConfig ok = scene_from_text(Yaml{.numerics = "{time_step: 1.0e-7}"}.text(), "crit.yaml");
+  const double dt_crit = critical_time_step(build_simulation(ok).particles(), 1e6);
+  REQUIRE(dt_crit >= step_of(3e-3));
+  REQUIRE(dt_crit <= step_of(4.5e-3));
+
+  std::ostringstream crit_text, allowed_text;
+  crit_text << dt_crit;             // the engine prints with the default stream format
+  allowed_text << 0.2 * dt_crit;
+  const SceneConfig bad = scene_from_text(Yaml{.numerics = "{time_step: 1.0e-4}"}.text(), "crit.yaml");
+  REQUIRE_THROWS_MATCHES(build_simulation(bad), ConfigError,
+                         Catch::Matchers::Predicate<std::exception>(
+                             [&](const std::exception& e) {
+                               const std::string m = e.what();
+                               return m.find("crit.yaml: numerics.time_step = 0.0001 s") != std::string::npos &&
+                                      m.find("critical step 2 sqrt(m_min/kn) = " + crit_text.str() + " s") != std::string::npos &&
+                                      m.find("0.2 x critical time step = " + allowed_text.str() + " s") != std::string::npos &&
+                                      m.find("max_time_step_fraction") != std::string::npos;
+                             },
+                             "names the time step, the critical step and the allowed step"));
+
+  // The rule is exactly dt <= fraction x dt_crit: just below is accepted, just above refused,
+  // and raising max_time_step_fraction on purpose accepts dt = 1e-4 (< 10 x 1.2e-5).
+  const auto scene_with = [&](const std::string& numerics) {
+    return scene_from_text(Yaml{.numerics = numerics}.text(), "crit.yaml");
+  };
+  std::ostringstream below, above;
+  below.precision(17);
+  above.precision(17);
+  below << "{time_step: " << 0.2 * dt_crit * (1 - 1e-9) << "}";
+  above << "{time_step: " << 0.2 * dt_crit * (1 + 1e-9) << "}";
+  CHECK_NOTHROW(build_simulation(scene_with(below.str())));
+  CHECK_THROWS_AS(build_simulation(scene_with(above.str())), ConfigError);
+  CHECK_NOTHROW(build_simulation(scene_with("{time_step: 1.0e-4, max_time_step_fraction: 10}")));
+}
+
+// Known gaps in the did-you-mean suggestions ([!shouldfail]: these pass while the gap exists;
+// when the engine is fixed they start failing, and the tag should then be removed).
+TEST_CASE("known gap: a misspelt required key gets a did-you-mean suggestion", "[config][!shouldfail]") {
+  // 'fricton' is one letter from 'friction'. The engine reads material.friction (required)
+  // before it checks for unknown keys, so the user sees "missing" and never the suggestion.
+  const Outcome o = refuse(Yaml{.material = "{kn: 1.0e6, ks: 1.0e6, fricton: 0.5}"}.text());
+  INFO(o.message);
+  CHECK_THAT(o.message, Catch::Matchers::Contains("did you mean 'friction'?"));
+}
+
+TEST_CASE("known gap: a misspelt optional section gets a did-you-mean suggestion", "[config][!shouldfail]") {
+  // 'dampign' is a transposition of 'damping', but absent optional sections (damping, servo,
+  // output) are never declared, so finish() has nothing to suggest.
+  const Outcome o = refuse(Yaml{.extra = "dampign: {form: local}\n"}.text());
+  INFO(o.message);
+  CHECK_THAT(o.message, Catch::Matchers::Contains("did you mean 'damping'?"));
+}
+
+TEST_CASE("known gap: a grading curve error names the scene file and key path", "[config][!shouldfail]") {
+  // The promise of yaml_section.hpp is that every input error names the file and key path; the
+  // grading end points are checked only by GradingCurve at build time, whose message has neither.
+  const Outcome o = refuse(Yaml{.grading = "{diameters: [3.0e-3, 4.5e-3], percent_finer: [10, 100]}"}.text());
+  INFO(o.message);
+  CHECK((o.kind == Kind::Config));
+  CHECK_THAT(o.message, Catch::Matchers::Contains("bad.yaml: particles.grading.percent_finer"));
+}

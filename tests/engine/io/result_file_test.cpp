@@ -1,0 +1,263 @@
+// The result file of a run (engine/io/result_writer.hpp, layout in engine/README.md): written as
+// "<out>.partial", renamed to <out> with status "complete" only when the run finishes; a failed
+// run keeps the .partial with status "failed: <reason>" and never touches <out>.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "analysis/time_series.hpp"
+#include "config/scene_config.hpp"
+#include "config/yaml_section.hpp"
+#include "engine/io/io_test_support.hpp"
+#include "io/hdf5.hpp"
+#include "io/result_writer.hpp"
+#include "io/state_io.hpp"
+#include "run/run_scene.hpp"
+#include "version.hpp"
+
+using namespace dem;
+namespace fs = std::filesystem;
+
+namespace {
+
+// 500 steps of slow isotropic compression (dt = 1 us).
+const std::string squeeze_stage = "  - {name: squeeze, type: strain_rate, strain_rate: [0.1, 0.1, 0.1], duration: 5.0e-4}\n";
+
+// A denser variant of the tiny scene for the complete-run test: 4 ... 4.5 mm spheres 4.5 mm apart,
+// compressed by 1 % (20/s for 500 steps), so that the Verlet list holds pairs and the frictional
+// contact history exists. 13.5 mm cell, > 2 x (4.5 mm + skin).
+std::string dense_tiny_scene() {
+  return "name: dense_tiny\n"
+         "particles:\n"
+         "  lattice: {n: [3, 3, 3], spacing: 4.5e-3, seed: 1}\n"
+         "  grading: {diameters: [4.0e-3, 4.5e-3], percent_finer: [0, 100]}\n"
+         "material: {kn: 1.0e6, ks: 1.0e6, friction: 0.5}\n"
+         "numerics: {time_step: 1.0e-6}\n"
+         "output: {interval: 100, flush_rows: 2}\n"
+         "stages:\n"
+         "  - {name: squeeze, type: strain_rate, strain_rate: [20, 20, 20], duration: 5.0e-4}\n";
+}
+
+// A stress stage that cannot finish: the ramp to 100 kPa at 1 MPa/s takes 0.1 s, but the stage may
+// last only 10 us (10 steps), so it throws StageError.
+const std::string hopeless_stage =
+    "  - {name: consolidate, type: stress, target: [1.0e5, 1.0e5, 1.0e5], rate: 1.0e6, hold: {max_duration: 1.0e-5}}\n";
+
+// The documented /state datasets (engine/README.md) with their units.
+const std::map<std::string, std::string> state_units = {
+    {"position", "m"},          {"position_fractional", "1"},    {"velocity", "m/s"},
+    {"angular_velocity", "rad/s"}, {"radius", "m"},              {"mass", "kg"},
+    {"moment_of_inertia", "kg m^2"}, {"cell_lengths", "m"},      {"cell_reference_lengths", "m"},
+    {"cell_strain_rate", "1/s"}, {"contact_first", "1"},          {"contact_second", "1"},
+    {"contact_tangential_spring", "m"}, {"contact_sliding", "1"}};
+
+std::string units_of(hid_t group, const std::string& name) {
+  h5::Handle ds(H5Dopen2(group, name.c_str(), H5P_DEFAULT));
+  REQUIRE(ds.id() >= 0);
+  return h5::has_attribute(ds, "units") ? h5::get_string_attribute(ds, "units") : "<none>";
+}
+
+}  // namespace
+
+TEST_CASE("a complete run writes a complete, self-describing result file", "[io][result]") {
+  const std::string dir = test::scratch_dir("result_complete");
+  const std::string out = dir + "/tiny.h5";
+  const SceneConfig scene = scene_from_text(dense_tiny_scene(), dir + "/tiny.yaml");
+  const RunSummary summary = run_scene(scene, out, false);
+  CHECK(summary.steps == 500);  // duration / dt
+
+  // Renamed on completion: only the final name exists.
+  REQUIRE(fs::exists(out));
+  CHECK_FALSE(fs::exists(out + ".partial"));
+
+  h5::Handle f = h5::open_file_read(out);
+  SECTION("root attributes") {
+    CHECK(h5::get_string_attribute(f, "status") == "complete");
+    CHECK(h5::get_string_attribute(f, "software_version") == software_version);
+    CHECK(h5::get_int_attribute(f, "schema_version") == schema_version);
+    CHECK(h5::get_string_attribute(f, "scene_file") == dir + "/tiny.yaml");
+    CHECK(h5::get_string_attribute(f, "damping_form") == "viscous");
+    CHECK(h5::get_double_attribute(f, "wall_time_s") > 0);
+    // The recorded scene is the resolved one, and it is itself a valid scene that resolves to
+    // the same text (so the run can be repeated from the result file alone).
+    const std::string yaml = h5::get_string_attribute(f, "scene_yaml");
+    CHECK(yaml == scene.resolved_yaml);
+    CHECK(scene_from_text(yaml, "again.yaml").resolved_yaml == yaml);
+  }
+  SECTION("time series: every documented column, with its units, one row per 100 steps") {
+    h5::Handle g = h5::open_group(f, "timeseries");
+    std::set<std::string> expected, present;
+    for (const SeriesColumn& c : series_columns()) expected.insert(c.name);
+    for (const std::string& n : test::h5_members(g)) present.insert(n);
+    CHECK(present == expected);
+    // Rows at steps 0 (start), 100, ..., 500 (the stage end falls on an output step: no extra row).
+    const std::vector<double> want_steps = {0, 100, 200, 300, 400, 500};
+    for (const SeriesColumn& c : series_columns()) {
+      INFO("column " << c.name);
+      CHECK(units_of(g, c.name) == c.units);
+      std::size_t cols = 0;
+      const auto v = h5::read<double>(g, c.name, cols);
+      CHECK(cols == 1);
+      CHECK(v.size() == want_steps.size());
+    }
+    std::size_t cols = 0;
+    CHECK(h5::read<double>(g, "step", cols) == want_steps);
+    const auto stage = h5::read<double>(g, "stage", cols);
+    CHECK(std::all_of(stage.begin(), stage.end(), [](double s) { return s == 0; }));
+    // L(t) = L0 exp(-rate t): after 500 steps of 1 us at 20/s, L = 13.5 mm x exp(-0.01).
+    const auto L1 = h5::read<double>(g, "cell_length_1", cols);
+    CHECK(L1.front() == Approx(13.5e-3).epsilon(1e-12));
+    CHECK(L1.back() == Approx(13.5e-3 * std::exp(-0.01)).epsilon(1e-12));
+  }
+  SECTION("state: every documented dataset with its units and the step attributes") {
+    h5::Handle g = h5::open_group(f, "state");
+    std::set<std::string> expected, present;
+    for (const auto& [name, units] : state_units) expected.insert(name);
+    for (const std::string& n : test::h5_members(g)) present.insert(n);
+    CHECK(present == expected);  // frictional scene: springs and sliding flags included
+    for (const std::string& n : test::h5_members(g)) {
+      INFO("dataset " << n);
+      CHECK(units_of(g, n) == state_units.at(n));
+    }
+    CHECK(h5::get_int_attribute(g, "step") == 500);
+    CHECK(h5::get_double_attribute(g, "time_step") == 1e-6);
+    CHECK(h5::get_double_attribute(g, "time") == Approx(5e-4));
+    std::size_t cols = 0;
+    CHECK(h5::read<double>(g, "position", cols).size() == 27 * 3);
+    CHECK(cols == 3);
+    CHECK(h5::read<double>(g, "radius", cols).size() == 27);
+    CHECK(h5::read<double>(g, "cell_lengths", cols).size() == 3);
+  }
+}
+
+TEST_CASE("a frictionless run's state has no tangential springs", "[io][result]") {
+  // friction 0 runs the frictionless kernel, which keeps no contact history (engine/README.md:
+  // springs and sliding flags are written for frictional runs only).
+  const std::string dir = test::scratch_dir("result_frictionless");
+  const SceneConfig scene = scene_from_text(test::tiny_scene(squeeze_stage, "{kn: 1.0e6, ks: 0, friction: 0}"), dir + "/s.yaml");
+  run_scene(scene, dir + "/r.h5", false);
+  h5::Handle f = h5::open_file_read(dir + "/r.h5");
+  h5::Handle g = h5::open_group(f, "state");
+  CHECK(h5::exists(g, "contact_first"));
+  CHECK_FALSE(h5::exists(g, "contact_tangential_spring"));
+  CHECK_FALSE(h5::exists(g, "contact_sliding"));
+}
+
+TEST_CASE("known bug: a frictional run without any neighbour pair still writes its (empty) contact history",
+          "[io][result][!shouldfail]") {
+  // engine/README.md: contact_tangential_spring and contact_sliding are written for frictional
+  // runs. write_state (engine/io/state_io.cpp) decides "frictional" from !pairs.spring.empty(),
+  // so a frictional run whose Verlet list is empty (the tiny scene: 5 mm spacing, spheres
+  // <= 4.5 mm, gaps > skin) writes the layout of a frictionless run.
+  const std::string dir = test::scratch_dir("result_friction_no_pairs");
+  const SceneConfig scene = scene_from_text(test::tiny_scene(squeeze_stage), dir + "/s.yaml");
+  REQUIRE(scene.material.friction > 0);
+  run_scene(scene, dir + "/r.h5", false);
+  h5::Handle f = h5::open_file_read(dir + "/r.h5");
+  h5::Handle g = h5::open_group(f, "state");
+  CHECK(h5::exists(g, "contact_tangential_spring"));
+  CHECK(h5::exists(g, "contact_sliding"));
+}
+
+TEST_CASE("h5ls lists the time series and the state of a result file", "[io][result]") {
+  // An independent reader (the HDF5 command-line tools) must see the documented layout.
+  if (!test::have_program("h5ls")) {
+    WARN("h5ls not installed (package hdf5-tools): skipped");
+    return;
+  }
+  const std::string dir = test::scratch_dir("result_h5ls");
+  const SceneConfig scene = scene_from_text(test::tiny_scene(squeeze_stage), dir + "/s.yaml");
+  run_scene(scene, dir + "/r.h5", false);
+  const test::CommandResult r = test::run_command("h5ls -r '" + dir + "/r.h5' 2>&1");
+  INFO(r.out);
+  REQUIRE(r.exit_code == 0);
+  // h5ls -r prints one object per line: its path, padding, then its kind ("Dataset {...}").
+  std::set<std::string> datasets;
+  std::istringstream lines(r.out);
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream words(line);
+    std::string path, kind;
+    words >> path >> kind;
+    if (kind == "Dataset") datasets.insert(path);
+  }
+  CHECK(datasets.count("/timeseries/p") == 1);
+  CHECK(datasets.count("/timeseries/step") == 1);
+  CHECK(datasets.count("/state/position") == 1);
+  CHECK(datasets.count("/state/contact_first") == 1);
+}
+
+TEST_CASE("a failed run keeps only the .partial file, marked failed, and leaves the result path alone", "[io][result]") {
+  const std::string dir = test::scratch_dir("result_failed");
+  const std::string out = dir + "/r.h5";
+  const SceneConfig bad = scene_from_text(test::tiny_scene(hopeless_stage), dir + "/bad.yaml");
+
+  SECTION("no earlier result") {
+    CHECK_THROWS_AS(run_scene(bad, out, false), StageError);
+    CHECK_FALSE(fs::exists(out));  // a failed run never gets the final name
+    REQUIRE(fs::exists(out + ".partial"));
+    const std::string status = test::h5_status(out + ".partial");
+    CHECK_THAT(status, Catch::Matchers::StartsWith("failed: stage 'consolidate' did not reach equilibrium within "
+                                                   "hold.max_duration = 1e-05 s"));
+    {
+      // The rows measured before the failure are kept (the initial row at least) ...
+      h5::Handle f = h5::open_file_read(out + ".partial");
+      std::size_t cols = 0;
+      CHECK(h5::read<double>(h5::open_group(f, "timeseries"), "step", cols).size() >= 1);
+      // ... but there is no final state, and a failed result cannot be used as a starting state.
+      CHECK_FALSE(h5::exists(f, "state"));
+    }  // closed: the run below recreates this file
+    CHECK_THROWS_WITH(read_state(out + ".partial"),
+                      Catch::Matchers::StartsWith(out + ".partial: not a complete result (status 'failed: stage 'consolidate'"));
+
+    // A later successful run to the same path replaces the stale .partial.
+    const SceneConfig good = scene_from_text(test::tiny_scene(squeeze_stage), dir + "/good.yaml");
+    run_scene(good, out, false);
+    CHECK(test::h5_status(out) == "complete");
+    CHECK_FALSE(fs::exists(out + ".partial"));
+  }
+  SECTION("an existing complete result at the out path is left untouched") {
+    // Write something at the out path first (any bytes will do: the run must not open it).
+    const std::string earlier = "an earlier, complete result\n";
+    test::write_text(out, earlier);
+    CHECK_THROWS_AS(run_scene(bad, out, false), StageError);
+    CHECK(test::read_bytes(out) == earlier);
+    CHECK_THAT(test::h5_status(out + ".partial"), Catch::Matchers::StartsWith("failed: "));
+  }
+}
+
+TEST_CASE("input errors are raised before any output file exists", "[io][result]") {
+  // run_scene builds the simulation (all input checks) before it creates the .partial file, so a
+  // bad scene leaves nothing behind that could be mistaken for a run.
+  const std::string dir = test::scratch_dir("result_input_error");
+  std::string text = test::tiny_scene(squeeze_stage);
+  text.replace(text.find("time_step: 1.0e-6"), 17, "time_step: 1.0e-4");  // 40 x the allowed step
+  const SceneConfig too_big_step = scene_from_text(text, dir + "/s.yaml");
+  CHECK_THROWS_AS(run_scene(too_big_step, dir + "/r.h5", false), ConfigError);
+  CHECK(fs::is_empty(dir));
+
+  // An output folder that does not exist: HDF5 cannot create the file; the error names the path.
+  const SceneConfig good = scene_from_text(test::tiny_scene(squeeze_stage), dir + "/s.yaml");
+  CHECK_THROWS_WITH(run_scene(good, dir + "/no/such/folder/r.h5", false),
+                    Catch::Matchers::StartsWith(dir + "/no/such/folder/r.h5.partial: cannot create the HDF5 file"));
+}
+
+TEST_CASE("a result writer is 'running' while open and 'failed' if dropped before completion", "[io][result]") {
+  // The status tells a reader whether a file is finished. A writer that is destroyed without
+  // complete() (an exception escaping the run) marks the file failed, never complete.
+  const std::string dir = test::scratch_dir("result_writer");
+  const SceneConfig scene = scene_from_text(test::tiny_scene(squeeze_stage), dir + "/s.yaml");
+  {
+    ResultWriter w(dir + "/r.h5", scene);
+    CHECK(w.partial_path() == dir + "/r.h5.partial");
+    CHECK(h5::get_string_attribute(w.file(), "status") == "running");
+  }
+  CHECK_FALSE(fs::exists(dir + "/r.h5"));
+  CHECK(test::h5_status(dir + "/r.h5.partial") == "failed: the run was interrupted");
+}
