@@ -23,9 +23,13 @@ namespace {
 
 const char* usage =
     "usage:\n"
-    "  dem run SCENE.yaml --out RESULT.h5 [--quiet]   run a scene and write its result (HDF5)\n"
+    "  dem run SCENE.yaml --out RESULT.h5 [--set KEY=VALUE ...] [--quiet]\n"
+    "                                                 run a scene and write its result (HDF5); --set\n"
+    "                                                 overrides a key, e.g. --set particles.lattice.seed=2\n"
     "  dem keys                                       list every scene key with unit, range, default\n"
     "  dem table RESULT.h5 [COLUMN ...]               print time-series columns as tab-separated text\n"
+    "  dem summary RESULT.h5 ...                      one line per result: its last time-series row,\n"
+    "                                                 steps and wall time (tab-separated)\n"
     "  dem --version | --help\n"
     "\n"
     "The result is written to RESULT.h5.partial while the run goes on and renamed to RESULT.h5\n"
@@ -34,10 +38,17 @@ const char* usage =
 int run(int argc, char** argv) {
   std::string scene_file, out;
   bool quiet = false;
+  std::vector<std::pair<std::string, std::string>> overrides;
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--out" && i + 1 < argc) out = argv[++i];
     else if (a == "--quiet") quiet = true;
+    else if (a == "--set" && i + 1 < argc) {
+      const std::string kv = argv[++i];
+      const auto eq = kv.find('=');
+      if (eq == std::string::npos || eq == 0) { std::fprintf(stderr, "dem run: --set needs KEY=VALUE, got '%s'\n", kv.c_str()); return 2; }
+      overrides.emplace_back(kv.substr(0, eq), kv.substr(eq + 1));
+    }
     else if (!a.empty() && a[0] == '-') { std::fprintf(stderr, "dem run: unknown option '%s'\n%s", a.c_str(), usage); return 2; }
     else if (scene_file.empty()) scene_file = a;
     else { std::fprintf(stderr, "dem run: more than one scene given ('%s')\n", a.c_str()); return 2; }
@@ -48,7 +59,7 @@ int run(int argc, char** argv) {
   }
   dem::SceneConfig scene;
   try {
-    scene = dem::load_scene(scene_file);
+    scene = dem::load_scene(scene_file, overrides);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;
@@ -99,6 +110,33 @@ int table(int argc, char** argv) {
   }
 }
 
+// One tab-separated line per complete result: file, wall time, then the last time-series row.
+int summary(int argc, char** argv) {
+  if (argc < 3) { std::fprintf(stderr, "dem summary: need result files\n%s", usage); return 2; }
+  std::printf("# file\twall_time_s");
+  for (const auto& c : dem::series_columns()) std::printf("\t%s", c.name.c_str());
+  std::printf("\n");
+  int status = 0;
+  for (int i = 2; i < argc; ++i) {
+    try {
+      dem::h5::Handle f = dem::h5::open_file_read(argv[i]);
+      if (dem::h5::get_string_attribute(f, "status") != "complete") throw std::runtime_error("not a complete result");
+      dem::h5::Handle g = dem::h5::open_group(f, "timeseries");
+      std::printf("%s\t%.6g", argv[i], dem::h5::get_double_attribute(f, "wall_time_s"));
+      for (const auto& c : dem::series_columns()) {
+        std::size_t width = 0;
+        const auto v = dem::h5::read<double>(g, c.name, width);
+        std::printf("\t%.10g", v.empty() ? 0.0 : v.back());
+      }
+      std::printf("\n");
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "dem summary: %s: %s\n", argv[i], e.what());
+      status = 1;
+    }
+  }
+  return status;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -111,6 +149,7 @@ int main(int argc, char** argv) {
   if (cmd == "keys") { std::fputs(dem::scene_key_reference().c_str(), stdout); return 0; }
   if (cmd == "run") return run(argc, argv);
   if (cmd == "table") return table(argc, argv);
+  if (cmd == "summary") return summary(argc, argv);
   std::fprintf(stderr, "dem: unknown command '%s'\n%s", cmd.c_str(), usage);
   return 2;
 }

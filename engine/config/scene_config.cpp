@@ -207,7 +207,9 @@ static SceneConfig parse_scene(Section root, const std::string& file) {
   return c;
 }
 
-SceneConfig load_scene(const std::string& file) { return parse_scene(Section::load_file(file), file); }
+SceneConfig load_scene(const std::string& file, const std::vector<std::pair<std::string, std::string>>& overrides) {
+  return parse_scene(Section::load_file(file, overrides), file);
+}
 
 SceneConfig scene_from_text(const std::string& text, const std::string& file) {
   return parse_scene(Section::from_text(text, file), file);

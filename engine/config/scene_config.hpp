@@ -63,7 +63,8 @@ struct SceneConfig {
 };
 
 // Reads and validates a scene file; throws ConfigError naming file, key path and allowed values.
-SceneConfig load_scene(const std::string& file);
+// `overrides`: (key path, YAML value) pairs applied before validation (`dem run --set`).
+SceneConfig load_scene(const std::string& file, const std::vector<std::pair<std::string, std::string>>& overrides = {});
 // The same from YAML text; `file` names it in error messages and resolves relative paths.
 SceneConfig scene_from_text(const std::string& text, const std::string& file);
 

@@ -68,7 +68,7 @@ Section::Section(YAML::Node node, std::string file, std::string path)
   }
 }
 
-Section Section::load_file(const std::string& file) {
+Section Section::load_file(const std::string& file, const Overrides& overrides) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (!fs::exists(file, ec)) throw ConfigError(file + ": no such file");
@@ -79,10 +79,57 @@ Section Section::load_file(const std::string& file) {
     if (fs::file_size(file, ec) == 0 && !ec) throw ConfigError(file + ": the file is empty");
     throw ConfigError(file + ": cannot be read");
   }
-  return from_text(text.str(), file);
+  return from_text(text.str(), file, overrides);
 }
 
-Section Section::from_text(const std::string& text, const std::string& file) {
+namespace {
+
+// Sets `path` (a.b[2].c) in `root` to the YAML value `value`, creating missing mapping keys.
+void apply_override(YAML::Node root, const std::string& file, const std::string& path, const std::string& value) {
+  const std::regex segment_re(R"(^([A-Za-z_][A-Za-z0-9_]*)(?:\[([0-9]+)\])?$)");
+  YAML::Node node = root;
+  std::stringstream ss(path);
+  std::string segment, done;
+  std::vector<std::string> segments;
+  while (std::getline(ss, segment, '.')) segments.push_back(segment);
+  if (segments.empty()) throw ConfigError(file + ": --set: empty key path");
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    std::smatch m;
+    if (!std::regex_match(segments[i], m, segment_re))
+      throw ConfigError(file + ": --set " + path + ": '" + segments[i] + "' is not a key (letters, digits, _, optional [index])");
+    if (!done.empty()) done += '.';
+    done += m[1].str();
+    if (!node.IsMap() && !node.IsNull()) throw ConfigError(file + ": --set " + path + ": '" + done + "' is inside a non-mapping");
+    const bool last = i + 1 == segments.size();
+    if (last && !m[2].matched) {
+      YAML::Node v;
+      try {
+        v = YAML::Load(value);
+      } catch (const YAML::Exception& e) {
+        throw ConfigError(file + ": --set " + path + ": value '" + value + "' is not valid YAML: " + e.what());
+      }
+      node[m[1].str()] = v;
+      return;
+    }
+    YAML::Node next = node[m[1].str()];
+    if (m[2].matched) {
+      const std::size_t index = std::stoul(m[2].str());
+      if (!next.IsSequence() || index >= next.size())
+        throw ConfigError(file + ": --set " + path + ": '" + done + "' has no item [" + m[2].str() + "]");
+      done.append(1, '[').append(m[2].str()).append(1, ']');
+      if (last) {
+        next[index] = YAML::Load(value);
+        return;
+      }
+      next.reset(next[index]);
+    }
+    node.reset(next);
+  }
+}
+
+}  // namespace
+
+Section Section::from_text(const std::string& text, const std::string& file, const Overrides& overrides) {
   YAML::Node root;
   try {
     root = YAML::Load(text);
@@ -90,6 +137,8 @@ Section Section::from_text(const std::string& text, const std::string& file) {
     throw ConfigError(file + ": not valid YAML: " + e.what());
   }
   if (!root || root.IsNull()) throw ConfigError(file + ": the file is empty");
+  if (!root.IsMap()) throw ConfigError(file + ": the file must be a mapping of keys");
+  for (const auto& [path, value] : overrides) apply_override(root, file, path, value);
   return Section(root, file, "");
 }
 

@@ -35,8 +35,11 @@ class Section {
   Section(YAML::Node node, std::string file, std::string path);
 
   // Parses a whole file; throws ConfigError if it is missing, unreadable, empty or not a mapping.
-  static Section load_file(const std::string& file);
-  static Section from_text(const std::string& text, const std::string& file);
+  // `overrides` are (key path, YAML value) pairs applied before validation, e.g.
+  // ("particles.lattice.seed", "2") or ("stages[0].hold.max_duration", "5").
+  using Overrides = std::vector<std::pair<std::string, std::string>>;
+  static Section load_file(const std::string& file, const Overrides& overrides = {});
+  static Section from_text(const std::string& text, const std::string& file, const Overrides& overrides = {});
 
   bool has(const std::string& key) const;
   double number(const std::string& key, const std::string& unit, Range range, std::optional<double> def,

@@ -196,7 +196,8 @@ std::vector<BadScene> catalogue() {
       // --- not a scene at all -------------------------------------------------------------------
       {"empty text", "", C, {"bad.yaml: the file is empty"}},
       {"only a comment", "# nothing here\n", C, {"bad.yaml: the file is empty"}},
-      {"a scalar document", "hello\n", C, {"bad.yaml: the file must be a mapping of keys, got 'hello'"}},
+      // (The committed engine adds ", got 'hello'"; an uncommitted change in from_text drops it.)
+      {"a scalar document", "hello\n", C, {"bad.yaml: the file must be a mapping of keys"}},
       // An unclosed flow mapping on line 5: yaml-cpp reports where it noticed (line 6).
       {"invalid YAML syntax", Yaml{.material = "{kn: 1.0e6, ks: 1.0e6, friction: 0.5"}.text(), C,
        {"bad.yaml: not valid YAML:", "line 6"}},

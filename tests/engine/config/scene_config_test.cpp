@@ -170,3 +170,21 @@ TEST_CASE("the shipped example scenes load and build", "[config]") {
     CHECK(build_simulation(c).particles().size() == 8000);
   }
 }
+
+// Known gaps in the key reference ([!shouldfail]: pass while the gap exists; remove the tag when fixed).
+TEST_CASE("known gap: the key reference shows optional sections as optional", "[config][!shouldfail]") {
+  // damping, servo and output may be left out (scene_config.cpp reads them only `if
+  // (root.has(...))`), but Section::child declares every mapping as "required".
+  const std::string ref = scene_key_reference();
+  CHECK_THAT(ref, !Catch::Matchers::Contains("  damping; mapping; required;"));
+  CHECK_THAT(ref, !Catch::Matchers::Contains("  servo; mapping; required;"));
+  CHECK_THAT(ref, !Catch::Matchers::Contains("  output; mapping; required;"));
+}
+
+TEST_CASE("known gap: the key reference shows the default scene name as the file's stem", "[config][!shouldfail]") {
+  // The default of `name` is the scene file's stem; the reference is built by parsing example
+  // texts named "example", so `dem keys` prints the default as 'example' (and in a program that
+  // parsed other scenes before, the stem of whichever was parsed last).
+  const std::string ref = scene_key_reference();
+  CHECK_THAT(ref, !Catch::Matchers::Contains("  name; text; 'example';"));
+}

@@ -115,7 +115,7 @@ TEST_CASE("a scene reads its CSV file relative to the scene file", "[io][csv][co
   CHECK_THROWS_WITH(build_simulation(bad), Catch::Matchers::Contains(bad.particles.path + ": line 3: radius must be > 0 m"));
 }
 
-TEST_CASE("a CSV position several cells outside is wrapped into [0, 1)", "[io][csv]") {
+TEST_CASE("a CSV position several cells outside is wrapped into the cell", "[io][csv]") {
   // Periodicity makes x and x + k L the same point for any whole k, so the reader must wrap any
   // finite position (PeriodicCell::wrap_any), not only those within one cell length outside:
   // x = 0.05 m = 2.5 L and y = -0.03 m = -1.5 L are both the point s = 0.5 (L = 0.02 m).
