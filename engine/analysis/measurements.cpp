@@ -16,7 +16,7 @@ double coordination_number(std::size_t contacts, std::size_t particles) {
   return particles ? 2.0 * static_cast<double>(contacts) / static_cast<double>(particles) : 0.0;
 }
 
-ContactCounts count_contacts(const Simulation& sim) {
+ContactCounts count_contacts(const Simulation& sim, bool keep_normals) {
   const Particles& p = sim.particles();
   const PairList& pairs = sim.pairs();
   std::vector<unsigned> per_particle(p.size(), 0);
@@ -39,6 +39,10 @@ ContactCounts count_contacts(const Simulation& sim) {
     }
     c.stress_Pa += f * l.transpose();
     sum_fn += fn;
+    if (keep_normals) {
+      c.normals.push_back(l / dist);
+      c.normal_forces_N.push_back(fn);
+    }
     ++c.contacts;
     ++per_particle[i];
     ++per_particle[j];
@@ -66,6 +70,12 @@ double unbalanced_force_ratio(const Simulation& sim) {
   return mean_net / (s.sum_normal_force_N / static_cast<double>(s.contacts));
 }
 
+double translational_kinetic_energy(const Particles& p) {
+  double e = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) e += 0.5 * p.mass[i] * p.v[i].squaredNorm();
+  return e;
+}
+
 double rotational_kinetic_energy(const Particles& p) {
   double e = 0;
   for (std::size_t i = 0; i < p.size(); ++i) e += 0.5 * p.inertia[i] * p.omega[i].squaredNorm();
@@ -79,8 +89,7 @@ double deviator_stress(const Mat3& stress_Pa) {
   return std::sqrt(0.5 * ((s[0] - s[1]) * (s[0] - s[1]) + (s[1] - s[2]) * (s[1] - s[2]) + (s[0] - s[2]) * (s[0] - s[2])));
 }
 
-double inertial_number(const Simulation& sim) {
-  const double p = mean_stress(sim.sums().stress_Pa);
+double inertial_number(const Simulation& sim, double p) {
   if (p <= 0) return 0.0;
   const Particles& parts = sim.particles();
   double d_mean = 0;

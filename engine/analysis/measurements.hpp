@@ -2,6 +2,7 @@
 // Measurements of a simulation state. Pure functions: they read a const state and never change a
 // trajectory. Compression positive.
 #include <cstddef>
+#include <vector>
 
 #include "dynamics/simulation.hpp"
 
@@ -17,11 +18,13 @@ struct ContactCounts {
   std::size_t particles_one_contact = 0;  // N1
   Mat3 stress_Pa = Mat3::Zero();          // (1/V) sum_c f_c (x) l_c, symmetrised, compression positive
   double mean_normal_force_N = 0;
+  std::vector<Vec3> normals;              // unit normal of each contact (filled if asked for)
+  std::vector<double> normal_forces_N;    // f_n of each contact (filled if asked for)
 };
 // Surveys the contacts at the current positions: counts, and the stress from the normal springs
 // plus the stored tangential springs (f_t = -ks u_s). Recomputed from the state, so it can be
 // called at any time without touching the trajectory.
-ContactCounts count_contacts(const Simulation& sim);
+ContactCounts count_contacts(const Simulation& sim, bool keep_normals = false);
 
 // Mechanical coordination number without rattlers (Thornton 2000): (2 Nc - N1) / (Np - N0 - N1).
 double mechanical_coordination_number(const ContactCounts& c, std::size_t particles);
@@ -30,10 +33,12 @@ double mechanical_coordination_number(const ContactCounts& c, std::size_t partic
 // The normal force is used as the mean contact force; since |f| >= f_n this errs on the high side.
 double unbalanced_force_ratio(const Simulation& sim);
 
-double rotational_kinetic_energy(const Particles& p);  // [J]
+double translational_kinetic_energy(const Particles& p);  // of the fluctuating velocities [J]
+double rotational_kinetic_energy(const Particles& p);     // [J]
 
-// Inertial number I = max_k |rate_k| d_mean sqrt(rho / p), p the mean stress; 0 if p <= 0.
-double inertial_number(const Simulation& sim);
+// Inertial number I = max_k |rate_k| d_mean sqrt(rho / p) with the last applied strain rates and
+// the mean stress p given; 0 if p <= 0.
+double inertial_number(const Simulation& sim, double p_Pa);
 
 double mean_stress(const Mat3& stress_Pa);        // p = tr(sigma) / 3
 double deviator_stress(const Mat3& stress_Pa);    // q = sqrt(((s1-s2)^2 + (s2-s3)^2 + (s1-s3)^2) / 2), principal values

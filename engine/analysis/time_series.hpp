@@ -13,7 +13,17 @@ struct SeriesColumn {
 
 const std::vector<SeriesColumn>& series_columns();
 
+// Where in the run a row is taken.
+struct RowContext {
+  int stage = 0;
+  int cycle = 0;           // stress-path cycle (0 outside cycles)
+  int leg = -1;            // stress-path leg index (-1 outside stress paths)
+  bool leg_end = false;    // the row is taken at the end of a leg
+  bool cycle_end = false;  // ... which is also the end of a cycle
+  Vec3 strain_at_previous_leg_end = Vec3::Zero();  // for the strain increment vector
+};
+
 // One row, in the order of series_columns(). Computed only when a row is written.
-std::vector<double> measure_row(const Simulation& sim, int stage_index);
+std::vector<double> measure_row(const Simulation& sim, const RowContext& where);
 
 }  // namespace dem

@@ -1,5 +1,6 @@
 #include "config/scene_config.hpp"
 
+#include <cmath>
 #include <filesystem>
 #include <limits>
 #include <sstream>
@@ -68,16 +69,83 @@ HoldCriteria read_hold(Section h) {
   return c;
 }
 
+// A path: a list whose items are a state name, an explicit [s1, s2, s3] (Pa) at mean stress p, or
+// {repeat: N, path: [...]} (one cycle per repetition; blocks are not nested).
+std::vector<PathItem> read_path(const YAML::Node& node, const Section& s, const std::string& key, double p, double R,
+                                bool inside_block) {
+  if (!node.IsSequence() || node.size() == 0) s.fail(key, "must be a non-empty list of states or repeat blocks");
+  std::vector<PathItem> items;
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const YAML::Node item = node[i];
+    const std::string at = key + "[" + std::to_string(i) + "]";
+    const std::string line = item.Mark().line >= 0 ? " (line " + std::to_string(item.Mark().line + 1) + ")" : "";
+    PathItem out;
+    if (item.IsScalar()) {
+      if (!is_named_state(item.Scalar()))
+        s.fail(at, "unknown stress state '" + item.Scalar() + "'" + line + "; known: A, TC1, TC2, TC3, TE1, TE2, TE3, or [s1, s2, s3] in Pa");
+      out.label = item.Scalar();
+      out.state_Pa = named_state(out.label, p, R);
+    } else if (item.IsSequence()) {
+      if (item.size() != 3) s.fail(at, "an explicit state needs 3 principal stresses [s1, s2, s3] in Pa" + line);
+      for (std::size_t k = 0; k < 3; ++k) {
+        double v = 0;
+        if (!item[k].IsScalar() || !YAML::convert<double>::decode(item[k], v) || !std::isfinite(v) || v <= 0)
+          s.fail(at, "stresses must be positive numbers (Pa)" + line);
+        out.state_Pa[static_cast<int>(k)] = v;
+      }
+      const double mean = out.state_Pa.mean();
+      if (std::abs(mean - p) > 1e-9 * p) {
+        std::ostringstream msg;
+        msg << "state [" << out.state_Pa[0] << ", " << out.state_Pa[1] << ", " << out.state_Pa[2] << "] has mean stress "
+            << mean << " Pa, but the path keeps p = mean_stress = " << p << " Pa constant" << line;
+        s.fail(at, msg.str());
+      }
+      std::ostringstream label;
+      label << "[" << out.state_Pa[0] << ", " << out.state_Pa[1] << ", " << out.state_Pa[2] << "]";
+      out.label = label.str();
+    } else if (item.IsMap()) {
+      if (inside_block) s.fail(at, "repeat blocks cannot be nested" + line);
+      if (!item["repeat"] || !item["path"] || item.size() != 2)
+        s.fail(at, "a block is {repeat: N, path: [...]} with exactly these two keys" + line);
+      long long n = 0;
+      if (!item["repeat"].IsScalar() || !YAML::convert<long long>::decode(item["repeat"], n) || n < 1 || n > 100000)
+        s.fail(at + ".repeat", "must be an integer in [1, 100000]" + line);
+      out.repeat = static_cast<int>(n);
+      out.block = read_path(item["path"], s, at + ".path", p, R, true);
+      out.label = "repeat";
+    } else {
+      s.fail(at, "must be a state name, [s1, s2, s3] or {repeat: N, path: [...]}" + line);
+    }
+    items.push_back(std::move(out));
+  }
+  return items;
+}
+
 StageConfig read_stage(Section s) {
   StageConfig st;
   st.name = s.text("name", std::nullopt, "stage name, written into the results");
-  const std::string type = s.choice("type", {"strain_rate", "stress"}, std::nullopt,
-                                    "strain_rate: fixed strain rates for a duration; stress: ramp to a target stress and hold");
+  const std::string type = s.choice("type", {"strain_rate", "stress", "stress_path"}, std::nullopt,
+                                    "strain_rate: fixed strain rates for a duration; stress: ramp to a target stress and hold; "
+                                    "stress_path: straight legs between stress states at constant mean stress");
   st.reset_strain = s.boolean("reset_strain", false, "measure strains from the start of this stage");
   if (type == "strain_rate") {
     st.type = StageConfig::Type::StrainRate;
     st.strain_rate_per_s = vec3(s.numbers("strain_rate", "1/s", {-1e3, 1e3}, 3, 3, "strain rate per axis, compression positive"));
     st.duration_s = s.number("duration", "s", {0, 1e6, true}, std::nullopt, "stage duration");
+  } else if (type == "stress_path") {
+    st.type = StageConfig::Type::StressPath;
+    st.mean_stress_Pa = s.number("mean_stress", "Pa", {0, 1e10, true}, 1e5, "p, kept constant along the path");
+    st.stress_ratio = s.number("stress_ratio", "", {1, 100}, 1.24, "R = sigma_max/sigma_min of the named TC/TE states");
+    st.stress_rate_Pa_per_s = s.number("rate", "Pa/s", {0, 1e12, true}, std::nullopt,
+                                       "rate of the principal stress that changes most on each leg");
+    st.max_strain_rate_per_s = s.number("max_strain_rate", "1/s", {0, 1e3, true}, 1.0,
+                                        "cap on the cell strain rate of each axis");
+    const YAML::Node path = s.raw("path", "list of states (A, TC1..3, TE1..3, [s1, s2, s3]) and {repeat: N, path: [...]}",
+                                  "the path, starting from A; each repetition of a block is a cycle");
+    st.path = read_path(path, s, "path", st.mean_stress_Pa, st.stress_ratio, false);
+    YAML::Emitter e;
+    e << YAML::Flow << path;
+    st.path_text = e.c_str();
   } else {
     st.type = StageConfig::Type::Stress;
     st.target_Pa = vec3(s.numbers("target", "Pa", {0, 1e10, true}, 3, 3, "target principal stresses, compression positive"));
@@ -135,6 +203,11 @@ std::string emit_resolved(const SceneConfig& c) {
       out << YAML::Key << "type" << YAML::Value << "strain_rate" << YAML::Key << "strain_rate" << YAML::Value
           << YAML::Flow << std::vector<double>{s.strain_rate_per_s[0], s.strain_rate_per_s[1], s.strain_rate_per_s[2]}
           << YAML::Key << "duration" << YAML::Value << s.duration_s;
+    } else if (s.type == StageConfig::Type::StressPath) {
+      out << YAML::Key << "type" << YAML::Value << "stress_path" << YAML::Key << "mean_stress" << YAML::Value
+          << s.mean_stress_Pa << YAML::Key << "stress_ratio" << YAML::Value << s.stress_ratio << YAML::Key << "rate"
+          << YAML::Value << s.stress_rate_Pa_per_s << YAML::Key << "max_strain_rate" << YAML::Value
+          << s.max_strain_rate_per_s << YAML::Key << "path" << YAML::Value << YAML::Load(s.path_text);
     } else {
       out << YAML::Key << "type" << YAML::Value << "stress" << YAML::Key << "target" << YAML::Value << YAML::Flow
           << std::vector<double>{s.target_Pa[0], s.target_Pa[1], s.target_Pa[2]} << YAML::Key << "rate" << YAML::Value
@@ -168,8 +241,8 @@ static SceneConfig parse_scene(Section root, const std::string& file) {
   if (c.material.friction > 0 && c.material.ks_N_per_m <= 0)
     m.fail("ks", "must be > 0 when friction > 0, got " + std::to_string(c.material.ks_N_per_m));
 
-  if (root.has("damping")) {
-    Section d = root.child("damping", "damping of particle motion (SPEC section 5)");
+  {
+    Section d = root.optional_child("damping", "damping of particle motion (SPEC section 5)");
     c.damping.form = d.choice("form", {"viscous", "local"}, "viscous",
                               "viscous: fraction of critical on the fluctuating velocity; local: Cundall's non-viscous") == "viscous"
                          ? Damping::Form::Viscous
@@ -186,13 +259,13 @@ static SceneConfig parse_scene(Section root, const std::string& file) {
   c.verlet_skin_m = n.number("verlet_skin", "m", {0, 1, true}, 2e-4, "Verlet list skin distance");
   n.finish();
 
-  if (root.has("servo")) {
-    Section s = root.child("servo", "stress servo of stress-controlled axes");
+  {
+    Section s = root.optional_child("servo", "stress servo of stress-controlled axes");
     c.servo.gain = s.number("gain", "", {0, 1, true}, 1e-3, "fraction of the stress error removed per step");
     s.finish();
   }
-  if (root.has("output")) {
-    Section o = root.child("output", "time-series output");
+  {
+    Section o = root.optional_child("output", "time-series output");
     c.output.interval_steps = o.integer("interval", 1, 1000000000, 1000, "steps between time-series rows");
     c.output.flush_rows = o.integer("flush_rows", 1, 1000000, 20, "rows between flushes of the result file to disk");
     o.finish();
@@ -230,8 +303,10 @@ std::string scene_key_reference() {
                       "stages: [{name: s, type: strain_rate, strain_rate: [0, 0, 0], duration: 1}]\n",
                   "example");
   scene_from_text(std::string("particles: {state: s.h5}\n") + common +
-                      "stages: [{name: s, type: strain_rate, strain_rate: [0, 0, 0], duration: 1}]\n",
+                      "stages: [{name: s, type: stress_path, mean_stress: 1.0e5, stress_ratio: 1.24, rate: 2.0e6,\n"
+                      "          max_strain_rate: 1, path: [TC1, {repeat: 5, path: [TC2, TC3, TC1]}]}]\n",
                   "example");
+  key_docs()["name"].default_value = "the scene file's name without extension";
   std::ostringstream out;
   out << "Scene keys (unit; allowed; default; meaning):\n";
   for (const auto& [key, d] : key_docs())

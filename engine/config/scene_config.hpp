@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "control/stress_path.hpp"
 #include "control/stress_servo.hpp"
 #include "core/types.hpp"
 #include "dynamics/simulation.hpp"
@@ -28,7 +29,7 @@ struct HoldCriteria {
 };
 
 struct StageConfig {
-  enum class Type { StrainRate, Stress };
+  enum class Type { StrainRate, Stress, StressPath };
   std::string name;
   Type type = Type::StrainRate;
   bool reset_strain = false;      // strains measured from the start of this stage
@@ -40,6 +41,11 @@ struct StageConfig {
   double stress_rate_Pa_per_s = 0;
   double max_strain_rate_per_s = 1;
   HoldCriteria hold;
+  // stress_path stage: straight legs between states at constant mean stress, at `rate`
+  double mean_stress_Pa = 1e5;   // p
+  double stress_ratio = 1.24;    // R = sigma_max / sigma_min of the named TC/TE states
+  std::vector<PathItem> path;
+  std::string path_text;         // the path as written (for the resolved scene)
 };
 
 struct OutputConfig {

@@ -137,7 +137,7 @@ Section Section::from_text(const std::string& text, const std::string& file, con
     throw ConfigError(file + ": not valid YAML: " + e.what());
   }
   if (!root || root.IsNull()) throw ConfigError(file + ": the file is empty");
-  if (!root.IsMap()) throw ConfigError(file + ": the file must be a mapping of keys");
+  if (!root.IsMap()) throw ConfigError(file + ": the file must be a mapping of keys, got " + scalar_text(root));
   for (const auto& [path, value] : overrides) apply_override(root, file, path, value);
   return Section(root, file, "");
 }
@@ -150,6 +150,18 @@ std::string Section::where(const YAML::Node& n) const {
 void Section::fail(const std::string& key, const std::string& what) const {
   const std::string at = key.empty() ? (path_.empty() ? "top level" : path_) : key_path(key);
   throw ConfigError(file_ + ": " + at + ": " + what);
+}
+
+void Section::fail_missing(const std::string& key, const std::string& what) const {
+  std::string msg = "missing (" + what + ")";
+  for (const auto& kv : node_) {  // a present key that nobody reads and that looks like this one
+    const std::string k = kv.first.as<std::string>();
+    if (!used_.count(k) && k != key && edit_distance(k, key) <= 2) {
+      msg += "; found '" + k + "'" + where(kv.first) + ": did you mean '" + key + "'?";
+      break;
+    }
+  }
+  fail(key, msg);
 }
 
 void Section::declare(const std::string& key, const std::string& unit, const std::string& allowed,
@@ -168,7 +180,7 @@ double Section::number(const std::string& key, const std::string& unit, Range ra
   const YAML::Node n = get(key);
   if (!n) {
     if (def) return *def;
-    fail(key, "missing (a number in " + range_text(range) + (unit.empty() ? "" : " " + unit) + ")");
+    fail_missing(key, "a number in " + range_text(range) + (unit.empty() ? "" : " " + unit));
   }
   double x = 0;
   if (!n.IsScalar() || !YAML::convert<double>::decode(n, x))
@@ -186,7 +198,7 @@ std::int64_t Section::integer(const std::string& key, std::int64_t min, std::int
   const YAML::Node n = get(key);
   if (!n) {
     if (def) return *def;
-    fail(key, "missing (an " + allowed + ")");
+    fail_missing(key, "an " + allowed);
   }
   long long x = 0;
   if (!n.IsScalar() || !YAML::convert<long long>::decode(n, x))
@@ -213,7 +225,7 @@ std::string Section::choice(const std::string& key, const std::vector<std::strin
   const YAML::Node n = get(key);
   if (!n) {
     if (def) return *def;
-    fail(key, "missing (one of: " + list + ")");
+    fail_missing(key, "one of: " + list);
   }
   if (!n.IsScalar() || std::find(allowed.begin(), allowed.end(), n.Scalar()) == allowed.end())
     fail(key, "must be one of: " + list + ", got " + scalar_text(n) + where(n));
@@ -225,7 +237,7 @@ std::string Section::text(const std::string& key, std::optional<std::string> def
   const YAML::Node n = get(key);
   if (!n) {
     if (def) return *def;
-    fail(key, "missing (text)");
+    fail_missing(key, "text");
   }
   if (!n.IsScalar() || n.Scalar().empty()) fail(key, "must be non-empty text, got " + scalar_text(n) + where(n));
   return n.Scalar();
@@ -238,7 +250,7 @@ std::vector<double> Section::numbers(const std::string& key, const std::string& 
   const std::string allowed = "list of " + count + " numbers in " + range_text(range);
   declare(key, unit, allowed, "required", doc);
   const YAML::Node n = get(key);
-  if (!n) fail(key, "missing (a " + allowed + (unit.empty() ? "" : " " + unit) + ")");
+  if (!n) fail_missing(key, "a " + allowed + (unit.empty() ? "" : " " + unit));
   if (!n.IsSequence() || n.size() < min_count || n.size() > max_count)
     fail(key, "must be a " + allowed + ", got " + (n.IsSequence() ? std::to_string(n.size()) + " items" : scalar_text(n)) +
                   where(n));
@@ -258,10 +270,23 @@ std::vector<double> Section::numbers(const std::string& key, const std::string& 
   return out;
 }
 
+YAML::Node Section::raw(const std::string& key, const std::string& allowed, const std::string& doc) {
+  declare(key, "", allowed, "required", doc);
+  const YAML::Node n = get(key);
+  if (!n) fail_missing(key, allowed);
+  return n;
+}
+
+Section Section::optional_child(const std::string& key, const std::string& doc) {
+  declare(key, "", "mapping", "optional (every key at its default)", doc);
+  const YAML::Node n = get(key);
+  return Section(n ? n : YAML::Node(YAML::NodeType::Map), file_, key_path(key));
+}
+
 Section Section::child(const std::string& key, const std::string& doc) {
   declare(key, "", "mapping", "required", doc);
   const YAML::Node n = get(key);
-  if (!n) fail(key, "missing (a mapping)");
+  if (!n) fail_missing(key, "a mapping");
   return Section(n, file_, key_path(key));
 }
 

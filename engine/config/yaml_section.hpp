@@ -53,6 +53,10 @@ class Section {
   std::vector<double> numbers(const std::string& key, const std::string& unit, Range range, std::size_t min_count,
                               std::size_t max_count, const std::string& doc);
   Section child(const std::string& key, const std::string& doc);
+  // A mapping that may be left out: then every key in it takes its default.
+  Section optional_child(const std::string& key, const std::string& doc);
+  // The node of a required key whose structure the caller checks itself (e.g. a stress path).
+  YAML::Node raw(const std::string& key, const std::string& allowed, const std::string& doc);
   std::vector<Section> list(const std::string& key, const std::string& doc);
 
   // Throws if the mapping has a key that was never read (with a did-you-mean suggestion).
@@ -65,6 +69,7 @@ class Section {
 
  private:
   YAML::Node get(const std::string& key) const;
+  [[noreturn]] void fail_missing(const std::string& key, const std::string& what) const;
   void declare(const std::string& key, const std::string& unit, const std::string& allowed, const std::string& def,
                const std::string& doc) const;
   std::string where(const YAML::Node& n) const;

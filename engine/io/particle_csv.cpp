@@ -34,6 +34,8 @@ void read_particle_csv(const std::string& file, const PeriodicCell& cell, double
   while (std::getline(in, line)) {
     ++line_no;
     if (trim(line).empty()) continue;
+    if (trim(line).back() == ',')
+      throw std::runtime_error(file + ": line " + std::to_string(line_no) + ": trailing comma (expected 4 values x,y,z,radius)");
     std::vector<double> v;
     std::stringstream ss(line);
     std::string field;

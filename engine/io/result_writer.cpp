@@ -2,11 +2,30 @@
 
 #include <filesystem>
 
-#include "analysis/time_series.hpp"
 #include "io/state_io.hpp"
+#include "run/run_scene.hpp"
 #include "version.hpp"
 
 namespace dem {
+
+ColumnTable::ColumnTable(hid_t file, const std::string& group, const std::vector<SeriesColumn>& columns)
+    : group_(h5::create_group(file, group)), pending_(columns.size()) {
+  for (const SeriesColumn& c : columns) {
+    columns_.emplace_back(group_, c.name, c.units);
+    if (!c.doc.empty()) h5::set_attribute(columns_.back().id(), "doc", c.doc);
+  }
+}
+
+void ColumnTable::append(const std::vector<double>& row) {
+  for (std::size_t c = 0; c < columns_.size(); ++c) pending_[c].push_back(row[c]);
+}
+
+void ColumnTable::flush() {
+  for (std::size_t c = 0; c < columns_.size(); ++c) {
+    columns_[c].append(pending_[c]);
+    pending_[c].clear();
+  }
+}
 
 ResultWriter::ResultWriter(std::string out_path, const SceneConfig& scene)
     : out_(std::move(out_path)), partial_(out_ + ".partial"), flush_rows_(static_cast<std::size_t>(scene.output.flush_rows)) {
@@ -17,12 +36,8 @@ ResultWriter::ResultWriter(std::string out_path, const SceneConfig& scene)
   h5::set_attribute(file_, "scene_file", scene.file);
   h5::set_attribute(file_, "scene_yaml", scene.resolved_yaml);
   h5::set_attribute(file_, "damping_form", std::string(scene.damping.form == Damping::Form::Viscous ? "viscous" : "local"));
-  series_ = h5::create_group(file_, "timeseries");
-  for (const SeriesColumn& c : series_columns()) {
-    columns_.emplace_back(series_, c.name, c.units);
-    if (!c.doc.empty()) h5::set_attribute(columns_.back().id(), "doc", c.doc);
-  }
-  pending_.resize(columns_.size());
+  tables_.emplace_back(file_, "timeseries", series_columns());
+  tables_.emplace_back(file_, "legs", leg_columns());
   H5Fflush(file_, H5F_SCOPE_GLOBAL);
 }
 
@@ -31,15 +46,17 @@ ResultWriter::~ResultWriter() {
 }
 
 void ResultWriter::append_row(const std::vector<double>& row) {
-  for (std::size_t c = 0; c < columns_.size(); ++c) pending_[c].push_back(row[c]);
-  if (pending_[0].size() >= flush_rows_) flush();
+  tables_[0].append(row);
+  if (tables_[0].pending_rows() >= flush_rows_) flush();
 }
 
+void ResultWriter::append_leg(const std::vector<double>& row) { tables_[1].append(row); }
+
+void ResultWriter::add_warning(const std::string& warning) { warnings_ += warning + "\n"; }
+
 void ResultWriter::flush() {
-  for (std::size_t c = 0; c < columns_.size(); ++c) {
-    columns_[c].append(pending_[c]);
-    pending_[c].clear();
-  }
+  for (ColumnTable& t : tables_) t.flush();
+  if (!warnings_.empty()) h5::set_attribute(file_, "warnings", warnings_);
   H5Fflush(file_, H5F_SCOPE_GLOBAL);
 }
 
@@ -48,13 +65,16 @@ void ResultWriter::write_state(const Simulation& sim) {
   dem::write_state(g, sim);
 }
 
+void ResultWriter::close() {
+  tables_.clear();
+  file_.reset();
+}
+
 void ResultWriter::complete(double wall_time_s) {
   flush();
   h5::set_attribute(file_, "wall_time_s", wall_time_s);
   h5::set_attribute(file_, "status", std::string("complete"));
-  columns_.clear();
-  series_.reset();
-  file_.reset();  // closes the file before it gets its final name
+  close();  // the file is closed before it gets its final name
   std::filesystem::rename(partial_, out_);
   done_ = true;
 }
@@ -65,9 +85,7 @@ void ResultWriter::fail(const std::string& reason) noexcept {
   try {
     flush();
     h5::set_attribute(file_, "status", std::string("failed: ") + reason);
-    columns_.clear();
-    series_.reset();
-    file_.reset();
+    close();
   } catch (...) {
   }
 }

@@ -3,23 +3,38 @@
 // run that finishes is renamed to <out> with status "complete", so a half-written file can never
 // be mistaken for a finished one. A run that fails keeps "<out>.partial" with status
 // "failed: <reason>"; a killed run leaves it at "running".
-#include <memory>
 #include <string>
 #include <vector>
 
+#include "analysis/time_series.hpp"
 #include "config/scene_config.hpp"
 #include "io/hdf5.hpp"
 
 namespace dem {
+
+// A group of equally long, extendable columns, filled row by row and flushed in batches.
+class ColumnTable {
+ public:
+  ColumnTable(hid_t file, const std::string& group, const std::vector<SeriesColumn>& columns);
+  void append(const std::vector<double>& row);
+  std::size_t pending_rows() const { return pending_.empty() ? 0 : pending_[0].size(); }
+  void flush();  // writes pending rows (the caller flushes the file)
+
+ private:
+  h5::Handle group_;
+  std::vector<h5::Column> columns_;
+  std::vector<std::vector<double>> pending_;  // per column
+};
 
 class ResultWriter {
  public:
   ResultWriter(std::string out_path, const SceneConfig& scene);
   ~ResultWriter();
 
-  void append_row(const std::vector<double>& row);  // buffered; flushed every `flush_rows` rows
+  void append_row(const std::vector<double>& row);  // /timeseries; flushed every `flush_rows` rows
+  void append_leg(const std::vector<double>& row);  // /legs (stress-path stages)
+  void add_warning(const std::string& warning);     // kept in the `warnings` attribute
   void flush();
-  hid_t file() const { return file_; }
   void write_state(const class Simulation& sim);
   // Marks the file complete and moves it to its final name.
   void complete(double wall_time_s);
@@ -28,11 +43,12 @@ class ResultWriter {
   const std::string& partial_path() const { return partial_; }
 
  private:
+  void close();
   std::string out_, partial_;
   std::size_t flush_rows_;
-  h5::Handle file_, series_;
-  std::vector<h5::Column> columns_;
-  std::vector<std::vector<double>> pending_;  // per column
+  h5::Handle file_;
+  std::vector<ColumnTable> tables_;  // [0] time series, [1] legs
+  std::string warnings_;
   bool done_ = false;
 };
 

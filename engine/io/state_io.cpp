@@ -47,7 +47,7 @@ void write_state(hid_t group, const Simulation& sim) {
 
   // Contacts: the pairs whose spheres overlap, with their history.
   const PairList& pairs = sim.pairs();
-  const bool frictional = !pairs.spring.empty();
+  const bool frictional = sim.material().friction > 0;
   std::vector<std::uint32_t> first, second;
   std::vector<Vec3> spring;
   std::vector<std::uint8_t> sliding;
@@ -73,7 +73,19 @@ void write_state(hid_t group, const Simulation& sim) {
   h5::set_attribute(group, "time_step", sim.time_step());
 }
 
+static SavedState read_state_unchecked(const std::string& file);
+
 SavedState read_state(const std::string& file) {
+  try {
+    return read_state_unchecked(file);
+  } catch (const h5::Error& e) {  // every message names the file
+    const std::string what = e.what();
+    if (what.rfind(file, 0) == 0) throw;
+    throw h5::Error(file + ": " + what);
+  }
+}
+
+static SavedState read_state_unchecked(const std::string& file) {
   h5::Handle f = h5::open_file_read(file);
   if (!h5::has_attribute(f, "status") || h5::get_string_attribute(f, "status") != "complete")
     throw h5::Error(file + ": not a complete result (status '" +
@@ -93,12 +105,18 @@ SavedState read_state(const std::string& file) {
   if (p.v.size() != n || p.omega.size() != n || p.radius.size() != n || p.mass.size() != n || p.inertia.size() != n)
     throw h5::Error(file + ": /state particle datasets have different lengths");
   for (std::size_t i = 0; i < n; ++i)
-    if (!(p.radius[i] > 0) || !(p.mass[i] > 0) || !(p.inertia[i] > 0) || !p.s[i].allFinite() || !p.v[i].allFinite())
+    if (!(p.radius[i] > 0) || !(p.mass[i] > 0) || !(p.inertia[i] > 0) || !std::isfinite(p.radius[i]) ||
+        !std::isfinite(p.mass[i]) || !std::isfinite(p.inertia[i]) || !p.v[i].allFinite() || !p.omega[i].allFinite())
       throw h5::Error(file + ": /state particle " + std::to_string(i) + " has a non-finite or non-positive value");
+    else if (!(p.s[i].minCoeff() >= 0.0 && p.s[i].maxCoeff() < 1.0))
+      throw h5::Error(file + ": /state/position_fractional of particle " + std::to_string(i) + " is outside [0, 1)");
   const auto L = h5::read<double>(g, "cell_lengths", cols);
   const auto L0 = h5::read<double>(g, "cell_reference_lengths", cols);
   const auto r = h5::read<double>(g, "cell_strain_rate", cols);
   if (L.size() != 3 || L0.size() != 3 || r.size() != 3) throw h5::Error(file + ": /state cell datasets must have 3 values");
+  for (int k = 0; k < 3; ++k)
+    if (!(L[k] > 0) || !(L0[k] > 0) || !std::isfinite(L[k]) || !std::isfinite(L0[k]) || !std::isfinite(r[k]))
+      throw h5::Error(file + ": /state cell lengths must be positive and finite, strain rates finite");
   st.cell = PeriodicCell(Vec3(L[0], L[1], L[2]));
   st.cell.set_reference_lengths(Vec3(L0[0], L0[1], L0[2]));
   st.strain_rate_per_s = Vec3(r[0], r[1], r[2]);

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "analysis/measurements.hpp"
+#include "control/stress_path.hpp"
 #include "analysis/time_series.hpp"
 #include "config/yaml_section.hpp"
 #include "io/particle_csv.hpp"
@@ -19,20 +20,27 @@ Simulation build_simulation(const SceneConfig& scene) {
   Particles particles;
   PeriodicCell cell;
   SavedState saved;
-  switch (src.kind) {
-    case ParticleSource::Kind::Lattice:
-      make_lattice(src.lattice, GradingCurve(src.grading_diameters_m, src.grading_percent_finer),
-                   scene.material.density_kg_per_m3, particles, cell);
-      break;
-    case ParticleSource::Kind::Csv:
-      cell = PeriodicCell(src.cell_m);
-      read_particle_csv(src.path, cell, scene.material.density_kg_per_m3, particles);
-      break;
-    case ParticleSource::Kind::State:
-      saved = read_state(src.path);
-      particles = saved.particles;
-      cell = saved.cell;
-      break;
+  try {  // bad particle input is bad input: reported as a ConfigError naming the scene key
+    switch (src.kind) {
+      case ParticleSource::Kind::Lattice:
+        make_lattice(src.lattice, GradingCurve(src.grading_diameters_m, src.grading_percent_finer),
+                     scene.material.density_kg_per_m3, particles, cell);
+        break;
+      case ParticleSource::Kind::Csv:
+        cell = PeriodicCell(src.cell_m);
+        read_particle_csv(src.path, cell, scene.material.density_kg_per_m3, particles);
+        break;
+      case ParticleSource::Kind::State:
+        saved = read_state(src.path);
+        particles = saved.particles;
+        cell = saved.cell;
+        break;
+    }
+  } catch (const std::exception& e) {
+    const char* key = src.kind == ParticleSource::Kind::Lattice ? "particles.lattice/grading"
+                      : src.kind == ParticleSource::Kind::Csv   ? "particles.csv"
+                                                                 : "particles.state";
+    throw ConfigError(scene.file + ": " + key + ": " + e.what());
   }
   const double dt_crit = critical_time_step(particles, scene.material.kn_N_per_m);
   if (scene.time_step_s > scene.max_time_step_fraction * dt_crit) {
@@ -75,7 +83,7 @@ void run_strain_rate_stage(Simulation& sim, const SceneConfig& scene, int index,
   const std::int64_t n = steps_for(st.duration_s, sim.time_step());
   for (std::int64_t i = 0; i < n; ++i) {
     sim.step(targets, scene.servo);
-    if (hooks.row && output_due(sim, scene)) hooks.row(sim, index);
+    if (hooks.row && output_due(sim, scene)) hooks.row(sim, {index});
     if (hooks.progress && i % progress_every == 0)
       hooks.progress(sim, {index, static_cast<double>(i) / static_cast<double>(n), ""});
   }
@@ -107,7 +115,7 @@ void run_stress_stage(Simulation& sim, const SceneConfig& scene, int index, cons
     }
     sim.step(targets, servo);
     const std::int64_t done = i + 1;
-    if (hooks.row && output_due(sim, scene)) hooks.row(sim, index);
+    if (hooks.row && output_due(sim, scene)) hooks.row(sim, {index});
     const double t_done = static_cast<double>(done) * dt;
     if (t_done >= ramp_end && done % st.hold.check_interval_steps == 0) {
       const Mat3& s = sim.sums().stress_Pa;
@@ -132,16 +140,104 @@ void run_stress_stage(Simulation& sim, const SceneConfig& scene, int index, cons
   }
 }
 
+double mean_diameter(const Particles& p) {
+  double d = 0;
+  for (double r : p.radius) d += 2 * r;
+  return d / static_cast<double>(p.size());
+}
+
+// Straight legs between stress states at constant mean stress (SPEC section 3). Each leg moves
+// the targets linearly so that the principal stress changing most moves at the stage rate; the
+// servo gets the leg's stress rates as feed-forward. Records each leg's tracking error and
+// largest inertial number.
+void run_stress_path_stage(Simulation& sim, const SceneConfig& scene, int index, const StageHooks& hooks) {
+  const StageConfig& st = scene.stages[static_cast<std::size_t>(index)];
+  const double dt = sim.time_step();
+  const double p = st.mean_stress_Pa;
+  const std::vector<PathLeg> legs = expand_path(st.path, named_state("A", p, st.stress_ratio), st.stress_rate_Pa_per_s);
+  const ServoSettings servo{scene.servo.gain, st.max_strain_rate_per_s};
+  const double inertia_scale = mean_diameter(sim.particles()) * std::sqrt(sim.material().density_kg_per_m3);
+  std::int64_t total_steps = 0, done_steps = 0;
+  for (const PathLeg& leg : legs) total_steps += std::max<std::int64_t>(1, steps_for(leg.duration_s, dt));
+  Vec3 strain_at_leg_start = sim.cell().strain();
+  CellTargets targets;
+  for (const PathLeg& leg : legs) {
+    const std::int64_t n = std::max<std::int64_t>(1, steps_for(leg.duration_s, dt));
+    const Vec3 rate = (leg.to_Pa - leg.from_Pa) / (static_cast<double>(n) * dt);
+    LegRecord rec{index, leg.index, leg.cycle, leg.ends_cycle, leg.to_Pa, static_cast<double>(n) * dt, n, 0, Vec3::Zero(), 0};
+    Vec3 sum_sq = Vec3::Zero();
+    for (std::int64_t i = 0; i < n; ++i) {
+      const Vec3 target = leg.from_Pa + (leg.to_Pa - leg.from_Pa) * (static_cast<double>(i) / static_cast<double>(n));
+      for (int k = 0; k < 3; ++k)
+        targets[static_cast<std::size_t>(k)] = {AxisTarget::Mode::Stress, 0, target[k], rate[k]};
+      sim.step(targets, servo);
+      const Mat3& s = sim.sums().stress_Pa;  // at this step's positions, i.e. at time t_i
+      for (int k = 0; k < 3; ++k) sum_sq[k] += (s(k, k) - target[k]) * (s(k, k) - target[k]);
+      const double p_now = s.trace() / 3;
+      if (p_now > 0)
+        rec.max_inertial_number = std::max(rec.max_inertial_number,
+                                           sim.strain_rate().cwiseAbs().maxCoeff() * inertia_scale / std::sqrt(p_now));
+      ++done_steps;
+      const bool last = i + 1 == n;
+      if (hooks.row && (last || output_due(sim, scene)))
+        hooks.row(sim, {index, leg.cycle, leg.index, last, last && leg.ends_cycle, strain_at_leg_start});
+      if (hooks.progress && done_steps % progress_every == 0) {
+        std::ostringstream status;
+        status << "cycle " << leg.cycle << ", leg " << leg.index + 1 << "/" << legs.size() << " -> " << leg.to_label;
+        hooks.progress(sim, {index, static_cast<double>(done_steps) / static_cast<double>(total_steps), status.str()});
+      }
+    }
+    rec.end_step = sim.step_count();
+    rec.rms_error = (sum_sq / static_cast<double>(n)).cwiseSqrt() / p;
+    if (hooks.leg) hooks.leg(rec);
+    if (hooks.warning && rec.max_inertial_number > 1e-3) {
+      std::ostringstream msg;
+      msg << "stage '" << st.name << "' leg " << leg.index << " (cycle " << leg.cycle << "): inertial number reached "
+          << rec.max_inertial_number << " > 1e-3, the loading is not quasi-static";
+      hooks.warning(msg.str());
+    }
+    strain_at_leg_start = sim.cell().strain();
+  }
+}
+
 }  // namespace
+
+const std::vector<SeriesColumn>& leg_columns() {
+  static const std::vector<SeriesColumn> columns = {
+      {"stage", "1", "stage index"},
+      {"leg", "1", "leg index from 0"},
+      {"cycle", "1", "cycle of the leg (0 before the first cycle)"},
+      {"ends_cycle", "1", "1 if the leg is the last of its cycle"},
+      {"target_1", "Pa", "principal stress the leg ends at"},
+      {"target_2", "Pa", ""},
+      {"target_3", "Pa", ""},
+      {"duration", "s", "leg duration"},
+      {"steps", "1", ""},
+      {"end_step", "1", "step at which the leg ended"},
+      {"rms_error_1", "1", "RMS of (stress_11 - target) over the leg, divided by p"},
+      {"rms_error_2", "1", ""},
+      {"rms_error_3", "1", ""},
+      {"max_inertial_number", "1", "largest inertial number during the leg"},
+  };
+  return columns;
+}
+
+std::vector<double> leg_row(const LegRecord& r) {
+  return {static_cast<double>(r.stage), static_cast<double>(r.leg), static_cast<double>(r.cycle), r.ends_cycle ? 1.0 : 0.0,
+          r.target_Pa[0], r.target_Pa[1], r.target_Pa[2], r.duration_s, static_cast<double>(r.steps),
+          static_cast<double>(r.end_step), r.rms_error[0], r.rms_error[1], r.rms_error[2], r.max_inertial_number};
+}
 
 void run_stage(Simulation& sim, const SceneConfig& scene, int index, const StageHooks& hooks) {
   const StageConfig& st = scene.stages[static_cast<std::size_t>(index)];
   if (st.reset_strain) sim.cell().set_reference_lengths(sim.cell().lengths());
-  if (st.type == StageConfig::Type::StrainRate)
-    run_strain_rate_stage(sim, scene, index, hooks);
-  else
-    run_stress_stage(sim, scene, index, hooks);
-  if (hooks.row && !output_due(sim, scene)) hooks.row(sim, index);  // the stage end is always recorded
+  if (hooks.row) hooks.row(sim, {index});  // every stage starts and ends with a row
+  switch (st.type) {
+    case StageConfig::Type::StrainRate: run_strain_rate_stage(sim, scene, index, hooks); break;
+    case StageConfig::Type::Stress: run_stress_stage(sim, scene, index, hooks); break;
+    case StageConfig::Type::StressPath: run_stress_path_stage(sim, scene, index, hooks); return;  // rows at every leg end
+  }
+  if (hooks.row && !output_due(sim, scene)) hooks.row(sim, {index});  // the stage end is always recorded
 }
 
 RunSummary run_scene(const SceneConfig& scene, const std::string& out_path, bool show_progress) {
@@ -153,7 +249,13 @@ RunSummary run_scene(const SceneConfig& scene, const std::string& out_path, bool
   int stage_seen = -1;          // for the ETA: the stage being timed and when it started
   double stage_start_wall = 0;  // [s since the run started]
   StageHooks hooks;
-  hooks.row = [&](const Simulation& s, int stage) { out.append_row(measure_row(s, stage)); };
+  hooks.row = [&](const Simulation& s, const RowContext& where) { out.append_row(measure_row(s, where)); };
+  hooks.leg = [&](const LegRecord& r) { out.append_leg(leg_row(r)); };
+  hooks.warning = [&](const std::string& w) {
+    if (show_progress) std::fprintf(stderr, "\n");
+    std::fprintf(stderr, "warning: %s\n", w.c_str());
+    out.add_warning(w);
+  };
   if (show_progress)
     hooks.progress = [&](const Simulation& s, const StageProgress& pr) {
       const auto now = clock::now();
@@ -173,7 +275,6 @@ RunSummary run_scene(const SceneConfig& scene, const std::string& out_path, bool
       std::fflush(stderr);
     };
   try {
-    hooks.row(sim, 0);
     for (int i = 0; i < static_cast<int>(scene.stages.size()); ++i) run_stage(sim, scene, i, hooks);
     out.write_state(sim);
     const double wall = std::chrono::duration<double>(clock::now() - start).count();

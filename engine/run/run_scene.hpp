@@ -3,6 +3,7 @@
 #include <functional>
 #include <string>
 
+#include "analysis/time_series.hpp"
 #include "config/scene_config.hpp"
 #include "dynamics/simulation.hpp"
 
@@ -18,9 +19,24 @@ struct StageProgress {
   std::string status;    // e.g. the current stress error while holding
 };
 
+// What a stress-path stage records about each leg.
+struct LegRecord {
+  int stage = 0, leg = 0, cycle = 0;
+  bool ends_cycle = false;
+  Vec3 target_Pa = Vec3::Zero();  // the state the leg ends at
+  double duration_s = 0;
+  std::int64_t steps = 0, end_step = 0;
+  Vec3 rms_error = Vec3::Zero();  // RMS of (sigma_kk - target_k) over the leg's steps, divided by p
+  double max_inertial_number = 0;
+};
+const std::vector<SeriesColumn>& leg_columns();
+std::vector<double> leg_row(const LegRecord& r);
+
 struct StageHooks {
-  std::function<void(const Simulation&, int stage)> row;              // at output steps and stage ends
+  std::function<void(const Simulation&, const RowContext&)> row;          // at output steps and stage/leg ends
   std::function<void(const Simulation&, const StageProgress&)> progress;  // every few hundred steps
+  std::function<void(const LegRecord&)> leg;                              // at each leg end of a stress path
+  std::function<void(const std::string&)> warning;                        // e.g. inertial number above 1e-3
 };
 
 // Thrown when a stage cannot reach its goal (e.g. equilibrium not reached in max_duration).
