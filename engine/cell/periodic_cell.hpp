@@ -28,10 +28,13 @@ class PeriodicCell {
   }
 
   // Nearest image of a fractional difference of two wrapped positions (each component in (-1, 1)).
-  // Branch-free compares instead of floor(): same result on that interval, and much faster.
-  static Vec3 min_image(Vec3 ds) {
-    for (int k = 0; k < 3; ++k) ds[k] -= static_cast<double>(ds[k] >= 0.5) - static_cast<double>(ds[k] < -0.5);
-    return ds;
+  // Subtracts the nearest integer, found by the round-to-nearest of adding and removing
+  // 1.5 * 2^52 (exact for |x| < 2^51 in the default rounding mode): two vectorisable additions
+  // instead of a floor() call, which the profile showed as a quarter of the force loop.
+  static Vec3 min_image(const Vec3& ds) {
+    constexpr double magic = 6755399441055744.0;  // 1.5 * 2^52
+    const Vec3 nearest = (ds.array() + magic).matrix() - Vec3::Constant(magic);
+    return ds - nearest;
   }
 
   // Real-space vector from particle i to the nearest periodic image of particle j (both wrapped).
