@@ -4,6 +4,7 @@
 //   dem --help
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -123,10 +124,10 @@ int summary(int argc, char** argv) {
       if (dem::h5::get_string_attribute(f, "status") != "complete") throw std::runtime_error("not a complete result");
       dem::h5::Handle g = dem::h5::open_group(f, "timeseries");
       std::printf("%s\t%.6g", argv[i], dem::h5::get_double_attribute(f, "wall_time_s"));
-      for (const auto& c : dem::series_columns()) {
+      for (const auto& c : dem::series_columns()) {  // columns a result's schema lacks print as nan
         std::size_t width = 0;
-        const auto v = dem::h5::read<double>(g, c.name, width);
-        std::printf("\t%.10g", v.empty() ? 0.0 : v.back());
+        const auto v = dem::h5::exists(g, c.name) ? dem::h5::read<double>(g, c.name, width) : std::vector<double>{};
+        std::printf("\t%.10g", v.empty() ? std::nan("") : v.back());
       }
       std::printf("\n");
     } catch (const std::exception& e) {

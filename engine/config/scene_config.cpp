@@ -43,6 +43,10 @@ ParticleSource read_particles(Section s) {
     if (src.grading_percent_finer.size() != src.grading_diameters_m.size())
       g.fail("percent_finer", "must have as many items as 'diameters' (" +
                                   std::to_string(src.grading_diameters_m.size()) + ")");
+    src.grading_basis = g.choice("basis", {"mass", "number"}, "mass",
+                                 "mass: percent finer by mass (SPEC section 1); number: percent finer by count") == "mass"
+                            ? GradingCurve::Basis::Mass
+                            : GradingCurve::Basis::Number;
     g.finish();
   } else if (s.has("csv")) {
     src.kind = ParticleSource::Kind::Csv;
@@ -171,6 +175,7 @@ std::string emit_resolved(const SceneConfig& c) {
         << p.lattice.spacing_m << YAML::Key << "seed" << YAML::Value << p.lattice.seed << YAML::EndMap;
     out << YAML::Key << "grading" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "diameters"
         << YAML::Value << p.grading_diameters_m << YAML::Key << "percent_finer" << YAML::Value << p.grading_percent_finer
+        << YAML::Key << "basis" << YAML::Value << (p.grading_basis == GradingCurve::Basis::Mass ? "mass" : "number")
         << YAML::EndMap;
   } else if (p.kind == ParticleSource::Kind::Csv) {
     out << YAML::Key << "csv" << YAML::Value << p.path << YAML::Key << "cell" << YAML::Value << YAML::Flow

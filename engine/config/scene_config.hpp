@@ -17,6 +17,7 @@ struct ParticleSource {
   Kind kind = Kind::Lattice;
   LatticeSpec lattice;
   std::vector<double> grading_diameters_m, grading_percent_finer;
+  GradingCurve::Basis grading_basis = GradingCurve::Basis::Mass;
   std::string path;           // CSV file (x,y,z,radius per row) or saved state (HDF5), resolved against the scene folder
   Vec3 cell_m = Vec3::Zero(); // cell lengths for a CSV file
 };

@@ -9,8 +9,8 @@ namespace dem {
 
 double uniform01(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
 
-GradingCurve::GradingCurve(std::vector<double> diameters_m, std::vector<double> percent_finer)
-    : d_(std::move(diameters_m)), P_(std::move(percent_finer)) {
+GradingCurve::GradingCurve(std::vector<double> diameters_m, std::vector<double> percent_finer, Basis basis)
+    : d_(std::move(diameters_m)), P_(std::move(percent_finer)), basis_(basis) {
   if (d_.size() < 2 || d_.size() != P_.size())
     throw std::invalid_argument("grading: need at least two (diameter, percent) points of equal count");
   for (std::size_t k = 0; k + 1 < d_.size(); ++k)
@@ -23,7 +23,8 @@ GradingCurve::GradingCurve(std::vector<double> diameters_m, std::vector<double> 
   // proportional to c (1/a^2 - 1/b^2) / 2.
   for (std::size_t k = 0; k + 1 < d_.size(); ++k) {
     const double a = d_[k], b = d_[k + 1], c = (P_[k + 1] - P_[k]) / 100.0 / (b - a);
-    segment_number_weight_.push_back(0.5 * c * (1 / (a * a) - 1 / (b * b)));
+    segment_number_weight_.push_back(basis_ == Basis::Mass ? 0.5 * c * (1 / (a * a) - 1 / (b * b))
+                                                           : (P_[k + 1] - P_[k]) / 100.0);
   }
 }
 
@@ -33,9 +34,10 @@ double GradingCurve::sample(std::mt19937_64& rng) const {
   double u = uniform01(rng) * total;
   std::size_t k = 0;
   while (k + 1 < segment_number_weight_.size() && u >= segment_number_weight_[k]) u -= segment_number_weight_[k++];
-  // Within the segment, the number CDF is (1/a^2 - 1/d^2) / (1/a^2 - 1/b^2).
   const double a = d_[k], b = d_[k + 1];
   const double f = std::min(1.0, u / segment_number_weight_[k]);
+  if (basis_ == Basis::Number) return std::clamp(a + f * (b - a), a, b);
+  // Within the segment, the number CDF is (1/a^2 - 1/d^2) / (1/a^2 - 1/b^2).
   const double inv_d2 = 1 / (a * a) - f * (1 / (a * a) - 1 / (b * b));
   return std::clamp(1 / std::sqrt(inv_d2), a, b);
 }

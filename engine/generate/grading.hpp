@@ -13,9 +13,13 @@ namespace dem {
 // rises from 0 to 100. Diameters are drawn so that the *mass* distribution follows the curve:
 // on a segment where the mass density is the constant c, the number density is proportional to
 // c / d^3, whose cumulative distribution is inverted in closed form.
+//
+// With Basis::Number the curve is read as a percent finer *by count* instead (diameters uniform in
+// number within each segment), the other common reading of a grading curve.
 class GradingCurve {
  public:
-  GradingCurve(std::vector<double> diameters_m, std::vector<double> percent_finer);
+  enum class Basis { Mass, Number };
+  GradingCurve(std::vector<double> diameters_m, std::vector<double> percent_finer, Basis basis = Basis::Mass);
   double sample(std::mt19937_64& rng) const;                  // one diameter [m]
   double mass_fraction_finer(double diameter_m) const;        // the curve itself, in [0, 1]
   const std::vector<double>& diameters() const { return d_; }
@@ -23,6 +27,7 @@ class GradingCurve {
 
  private:
   std::vector<double> d_, P_;
+  Basis basis_;
   std::vector<double> segment_number_weight_;  // relative number of particles per segment
 };
 

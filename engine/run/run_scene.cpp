@@ -23,7 +23,7 @@ Simulation build_simulation(const SceneConfig& scene) {
   try {  // bad particle input is bad input: reported as a ConfigError naming the scene key
     switch (src.kind) {
       case ParticleSource::Kind::Lattice:
-        make_lattice(src.lattice, GradingCurve(src.grading_diameters_m, src.grading_percent_finer),
+        make_lattice(src.lattice, GradingCurve(src.grading_diameters_m, src.grading_percent_finer, src.grading_basis),
                      scene.material.density_kg_per_m3, particles, cell);
         break;
       case ParticleSource::Kind::Csv:
