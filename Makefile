@@ -4,9 +4,11 @@ JOBS     ?= $(shell nproc 2>/dev/null || echo 2)
 PACKAGES := g++ cmake make libeigen3-dev libhdf5-dev libyaml-cpp-dev catch2 gnuplot-nox hdf5-tools
 SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps build test bench quick samples clean
+.PHONY: all deps build test bench samples samples-study cyclic-tests clean
 
-all: deps build test samples
+# Until the study pipeline (issue 5) exists: build, test, prepare the three samples, run the five
+# cyclic tests on each, and write the sample table.
+all: deps build test samples cyclic-tests
 
 # Install only the Debian packages that are missing (non-interactive).
 deps:
@@ -27,12 +29,24 @@ test: build
 bench: build
 	$(BUILD)/bin/dem-bench $(BUILD)/bench
 
-# The three preparation scenes of SPEC section 2, full size (8,000 spheres).
+# The three preparation scenes of SPEC section 2, full size (8,000 spheres), seed 1; then the table.
 samples: build
 	mkdir -p results/samples
-	for d in loose medium dense; do \
-	  $(BUILD)/bin/dem run scenes/prepare_$$d.yaml --out results/samples/$$d.h5 || exit 1; \
+	for d in dense medium loose; do \
+	  [ -f results/samples/$${d}_n20_s1_viscous.h5 ] || \
+	  $(BUILD)/bin/dem run scenes/prepare_$$d.yaml --out results/samples/$${d}_n20_s1_viscous.h5 \
+	    --set name=prepare_$${d}_n20_s1_viscous || exit 1; \
 	done
+	reports/samples/make_table.sh $(BUILD)/bin/dem results/samples > reports/samples/table.md
+
+# Issue 3's whole sample study: 3 seeds x 3 sizes x 3 densities, and local damping (hours).
+samples-study: build
+	reports/samples/run_samples.sh $(BUILD)/bin/dem results/samples
+	reports/samples/make_table.sh $(BUILD)/bin/dem results/samples > reports/samples/table.md
+
+# The five cyclic tests (scenes/tests) on each full-size sample.
+cyclic-tests: samples
+	reports/samples/run_tests.sh $(BUILD)/bin/dem "dense medium loose"
 
 clean:
 	rm -rf $(BUILD)

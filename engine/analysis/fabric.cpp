@@ -16,8 +16,11 @@ Mat3 strong_fabric_tensor(std::span<const Vec3> normals, std::span<const double>
   double mean = 0;
   for (double fn : normal_forces_N) mean += fn;
   mean /= static_cast<double>(normal_forces_N.size());
+  // "Greater than the mean" beyond the round-off of the mean itself: in a network of equal forces
+  // the rounded mean can fall an ulp below them, and none of them is strong.
+  const double threshold = mean * (1 + 1e-12);
   for (std::size_t c = 0; c < normals.size(); ++c)
-    if (normal_forces_N[c] > mean) f.noalias() += normals[c] * normals[c].transpose();
+    if (normal_forces_N[c] > threshold) f.noalias() += normals[c] * normals[c].transpose();
   return f / static_cast<double>(normals.size());
 }
 

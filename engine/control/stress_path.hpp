@@ -28,7 +28,7 @@ struct PathLeg {
   Vec3 from_Pa, to_Pa;
   std::string to_label;
   double duration_s = 0;    // largest principal change / rate
-  int cycle = 0;            // 0 before the first repeat block; repetitions are numbered 1, 2, ...
+  int cycle = 0;            // repetitions of blocks are numbered 1, 2, ...; legs outside blocks have 0
   int index = 0;            // leg number in the whole path, from 0
   bool ends_cycle = false;  // the last leg of a repetition
 };

@@ -38,6 +38,8 @@ struct Yaml {
 
 const std::string stress_stage = "\n  - {name: a, type: stress, target: [1.0e5, 1.0e5, 1.0e5], rate: 1.0e6, hold: {max_duration: 1}}";
 
+// Every bad scene must give a ConfigError (`dem run` exits 2 for it); an std::invalid_argument
+// escaping build_simulation would be a regression (it used to, for grading and lattice errors).
 enum class Kind { Config, InvalidArgument };
 
 struct BadScene {
@@ -87,10 +89,24 @@ std::vector<BadScene> catalogue() {
       {"misspelt key 'translatonal' in damping", Yaml{.extra = "damping: {form: viscous, translatonal: 0.1}\n"}.text(), C,
        {"bad.yaml: damping: unknown key 'translatonal' (line 9)", "did you mean 'translational'?"}},
       // A required key that is misspelt is reported as missing (it is read before the unknown-key
-      // check): the message still names material.friction and its range. (The did-you-mean for
-      // this case is a known gap, see "misspelt required key" in this file.)
+      // check), naming material.friction and its range, and the present, unread key within edit
+      // distance 2 ('fricton': one deletion) is suggested with its line.
       {"'fricton' instead of the required 'friction'", Yaml{.material = "{kn: 1.0e6, ks: 1.0e6, fricton: 0.5}"}.text(), C,
+       {"bad.yaml: material.friction: missing (a number in [0, 10]); found 'fricton' (line 5): did you mean 'friction'?"}},
+      // The same for a required mapping: 'numerix' is one substitution from 'numerics'.
+      {"'numerix' instead of the required section 'numerics'", Yaml{}.text().replace(Yaml{}.text().find("numerics:"), 9, "numerix:"), C,
+       {"bad.yaml: numerics: missing (a mapping); found 'numerix' (line 6): did you mean 'numerics'?"}},
+      // A key far from the missing one (edit distance > 2) is not suggested: the plain "missing".
+      {"required key missing, an unrelated unknown key present", Yaml{.material = "{kn: 1.0e6, ks: 1.0e6, colour: red}"}.text(), C,
        {"bad.yaml: material.friction: missing (a number in [0, 10])"}},
+      // Optional sections (damping, servo, output) are always declared, so a misspelt one is an
+      // unknown key with a suggestion: 'dampign' is a transposition (distance 2) of 'damping'.
+      {"misspelt optional section 'dampign'", Yaml{.extra = "dampign: {form: local}\n"}.text(), C,
+       {"bad.yaml: top level: unknown key 'dampign' (line 9)", "did you mean 'damping'?"}},
+      {"misspelt optional section 'outptu'", Yaml{.extra = "outptu: {interval: 10}\n"}.text(), C,
+       {"bad.yaml: top level: unknown key 'outptu' (line 9)", "did you mean 'output'?"}},
+      {"misspelt optional section 'sevro'", Yaml{.extra = "sevro: {gain: 0.01}\n"}.text(), C,
+       {"bad.yaml: top level: unknown key 'sevro' (line 9)", "did you mean 'servo'?"}},
       // 'colour' is no scene key and is far from every top-level key: no suggestion, but the line.
       {"unknown top-level key", Yaml{.extra = "colour: red\n"}.text(), C, {"bad.yaml: top level: unknown key 'colour' (line 9)"}},
       // A key used in the wrong kind of stage is unknown there: strain_rate stages have no target.
@@ -159,17 +175,18 @@ std::vector<BadScene> catalogue() {
       {"grading percent_finer shorter than diameters",
        Yaml{.grading = "{diameters: [3.0e-3, 4.0e-3, 4.5e-3], percent_finer: [0, 100]}"}.text(), C,
        {"bad.yaml: particles.grading.percent_finer: must have as many items as 'diameters' (3)"}},
-      // The curve's end points are checked by GradingCurve when the lattice is generated, and it
-      // throws std::invalid_argument (engine/generate/grading.cpp) without the file name.
-      {"grading not starting at 0 %", Yaml{.grading = "{diameters: [3.0e-3, 4.5e-3], percent_finer: [10, 100]}"}.text(),
-       Kind::InvalidArgument, {"grading:", "percent_finer must start at 0 and end at 100"}},
-      {"grading not ending at 100 %", Yaml{.grading = "{diameters: [3.0e-3, 4.5e-3], percent_finer: [0, 90]}"}.text(),
-       Kind::InvalidArgument, {"grading:", "percent_finer must start at 0 and end at 100"}},
-      {"grading diameters decreasing", Yaml{.grading = "{diameters: [4.5e-3, 3.0e-3], percent_finer: [0, 100]}"}.text(),
-       Kind::InvalidArgument, {"grading: diameters must increase strictly"}},
+      // The curve's end points are checked by GradingCurve when the lattice is generated
+      // (engine/generate/grading.cpp, std::invalid_argument); build_simulation rethrows any error
+      // in making the particles as a ConfigError "<scene>: particles.lattice/grading: <message>".
+      {"grading not starting at 0 %", Yaml{.grading = "{diameters: [3.0e-3, 4.5e-3], percent_finer: [10, 100]}"}.text(), C,
+       {"bad.yaml: particles.lattice/grading: grading: diameters must be positive, percent_finer must start at 0 and end at 100"}},
+      {"grading not ending at 100 %", Yaml{.grading = "{diameters: [3.0e-3, 4.5e-3], percent_finer: [0, 90]}"}.text(), C,
+       {"bad.yaml: particles.lattice/grading: grading: diameters must be positive, percent_finer must start at 0 and end at 100"}},
+      {"grading diameters decreasing", Yaml{.grading = "{diameters: [4.5e-3, 3.0e-3], percent_finer: [0, 100]}"}.text(), C,
+       {"bad.yaml: particles.lattice/grading: grading: diameters must increase strictly and percent_finer must not decrease"}},
       // The lattice generator refuses spheres larger than the spacing (they would overlap).
-      {"lattice spacing below the largest diameter", Yaml{.lattice = "{n: [3, 3, 3], spacing: 4.0e-3}"}.text(),
-       Kind::InvalidArgument, {"lattice spacing 0.004 m is smaller than the largest diameter 0.0045 m"}},
+      {"lattice spacing below the largest diameter", Yaml{.lattice = "{n: [3, 3, 3], spacing: 4.0e-3}"}.text(), C,
+       {"bad.yaml: particles.lattice/grading: lattice spacing 0.004 m is smaller than the largest diameter 0.0045 m"}},
       // Targets are compressive stresses, > 0.
       {"negative stress target",
        Yaml{.stages = "\n  - {name: a, type: stress, target: [1.0e5, -1.0e5, 1.0e5], rate: 1.0e6, hold: {max_duration: 1}}"}.text(), C,
@@ -178,7 +195,7 @@ std::vector<BadScene> catalogue() {
        Yaml{.stages = "\n  - {name: a, type: stress, target: [1.0e5, 1.0e5, 1.0e5], rate: 1.0e6, hold: {max_duration: 0}}"}.text(), C,
        {"bad.yaml: stages[0].hold.max_duration: must be in (0, 1e+06] s, got 0"}},
       {"unknown stage type", Yaml{.stages = "\n  - {name: a, type: cyclic, duration: 1}"}.text(), C,
-       {"bad.yaml: stages[0].type: must be one of: strain_rate, stress, got 'cyclic' (line 8)"}},
+       {"bad.yaml: stages[0].type: must be one of: strain_rate, stress, stress_path, got 'cyclic' (line 8)"}},
       {"strain_rate with 2 items", Yaml{.stages = "\n  - {name: a, type: strain_rate, strain_rate: [0.1, 0.1], duration: 1.0e-4}"}.text(), C,
        {"bad.yaml: stages[0].strain_rate: must be a list of 3 numbers in [-1000, 1000], got 2 items (line 8)"}},
       // Stage names identify stages in the results, so they must be unique; the second one is named.
@@ -196,8 +213,8 @@ std::vector<BadScene> catalogue() {
       // --- not a scene at all -------------------------------------------------------------------
       {"empty text", "", C, {"bad.yaml: the file is empty"}},
       {"only a comment", "# nothing here\n", C, {"bad.yaml: the file is empty"}},
-      // (The committed engine adds ", got 'hello'"; an uncommitted change in from_text drops it.)
-      {"a scalar document", "hello\n", C, {"bad.yaml: the file must be a mapping of keys"}},
+      {"a scalar document", "hello\n", C, {"bad.yaml: the file must be a mapping of keys, got 'hello'"}},
+      {"a list document", "- a\n- b\n", C, {"bad.yaml: the file must be a mapping of keys, got a list"}},
       // An unclosed flow mapping on line 5: yaml-cpp reports where it noticed (line 6).
       {"invalid YAML syntax", Yaml{.material = "{kn: 1.0e6, ks: 1.0e6, friction: 0.5"}.text(), C,
        {"bad.yaml: not valid YAML:", "line 6"}},
@@ -311,29 +328,51 @@ TEST_CASE("a time step above the allowed fraction of the critical step is refuse
   CHECK_NOTHROW(build_simulation(scene_with("{time_step: 1.0e-4, max_time_step_fraction: 10}")));
 }
 
-// Known gaps in the did-you-mean suggestions ([!shouldfail]: these pass while the gap exists;
-// when the engine is fixed they start failing, and the tag should then be removed).
-TEST_CASE("known gap: a misspelt required key gets a did-you-mean suggestion", "[config][!shouldfail]") {
-  // 'fricton' is one letter from 'friction'. The engine reads material.friction (required)
-  // before it checks for unknown keys, so the user sees "missing" and never the suggestion.
+TEST_CASE("a misspelt required key gets a did-you-mean suggestion", "[config]") {
+  // 'fricton' is one letter from 'friction'. material.friction is required and read before the
+  // unknown-key check, so the error is "missing"; it must point at the present, unread
+  // look-alike with its line (line 5 of the catalogue's scene).
   const Outcome o = refuse(Yaml{.material = "{kn: 1.0e6, ks: 1.0e6, fricton: 0.5}"}.text());
   INFO(o.message);
-  CHECK_THAT(o.message, Catch::Matchers::Contains("did you mean 'friction'?"));
+  CHECK((o.kind == Kind::Config));
+  CHECK(o.message == "bad.yaml: material.friction: missing (a number in [0, 10]); found 'fricton' (line 5): did you mean 'friction'?");
+  // A key that is read (declared) is never offered as the look-alike of another: 'kn' and 'ks'
+  // are one substitution apart, and with ks missing the present kn is not suggested.
+  const Outcome ks = refuse(Yaml{.material = "{kn: 1.0e6, friction: 0.5}"}.text());
+  CHECK(ks.message == "bad.yaml: material.ks: missing (a number in [0, 1e+12] N/m)");
 }
 
-TEST_CASE("known gap: a misspelt optional section gets a did-you-mean suggestion", "[config][!shouldfail]") {
-  // 'dampign' is a transposition of 'damping', but absent optional sections (damping, servo,
-  // output) are never declared, so finish() has nothing to suggest.
+TEST_CASE("a misspelt optional section gets a did-you-mean suggestion", "[config]") {
+  // 'dampign' is a transposition of 'damping'. damping, servo and output are declared even when
+  // absent (Section::optional_child), so finish() can suggest them.
   const Outcome o = refuse(Yaml{.extra = "dampign: {form: local}\n"}.text());
   INFO(o.message);
+  CHECK((o.kind == Kind::Config));
+  CHECK_THAT(o.message, Catch::Matchers::StartsWith("bad.yaml: top level: unknown key 'dampign' (line 9)"));
   CHECK_THAT(o.message, Catch::Matchers::Contains("did you mean 'damping'?"));
+  // Absent optional sections take every default; present but empty ones too.
+  const SceneConfig absent = scene_from_text(Yaml{}.text(), "bad.yaml");
+  const SceneConfig empty = scene_from_text(Yaml{.extra = "damping: {}\nservo: {}\noutput: {}\n"}.text(), "bad.yaml");
+  CHECK((absent.damping.form == Damping::Form::Viscous));
+  CHECK(absent.damping.translational == 0.05);
+  CHECK(absent.servo.gain == 1e-3);
+  CHECK(absent.output.interval_steps == 1000);
+  CHECK(empty.resolved_yaml == absent.resolved_yaml);
 }
 
-TEST_CASE("known gap: a grading curve error names the scene file and key path", "[config][!shouldfail]") {
-  // The promise of yaml_section.hpp is that every input error names the file and key path; the
-  // grading end points are checked only by GradingCurve at build time, whose message has neither.
+TEST_CASE("a particle-making error names the scene file and the particle source", "[config]") {
+  // The grading end points are checked only by GradingCurve when the particles are made; the
+  // message is the generator's, prefixed by the scene file and "particles.lattice/grading" (the
+  // engine cannot tell which of the two keys is at fault, so it names both).
   const Outcome o = refuse(Yaml{.grading = "{diameters: [3.0e-3, 4.5e-3], percent_finer: [10, 100]}"}.text());
   INFO(o.message);
   CHECK((o.kind == Kind::Config));
-  CHECK_THAT(o.message, Catch::Matchers::Contains("bad.yaml: particles.grading.percent_finer"));
+  CHECK(o.message ==
+        "bad.yaml: particles.lattice/grading: grading: diameters must be positive, percent_finer must start at 0 and end at 100");
+  // A CSV source: the key is particles.csv, then the CSV reader's message naming its file and line.
+  const std::string folder = std::string(DEM_SOURCE_DIR) + "/tests/data/csv_scene";
+  const SceneConfig bad_csv = load_scene(folder + "/bad_csv_scene.yaml");
+  REQUIRE_THROWS_MATCHES(build_simulation(bad_csv), ConfigError,
+                         Catch::Matchers::Message(folder + "/bad_csv_scene.yaml: particles.csv: " + bad_csv.particles.path +
+                                                  ": line 3: radius must be > 0 m, got -0.002000"));
 }

@@ -145,7 +145,8 @@ TEST_CASE("the key reference lists every key with unit, range and default", "[co
                           "stages[].duration [s]", "stages[].target [Pa]", "stages[].rate [Pa/s]",
                           "stages[].max_strain_rate [1/s]", "stages[].hold.stress_tolerance;",
                           "stages[].hold.unbalanced_force_ratio;", "stages[].hold.check_interval;",
-                          "stages[].hold.max_duration [s]"}) {
+                          "stages[].hold.max_duration [s]", "stages[].mean_stress [Pa]", "stages[].stress_ratio;",
+                          "stages[].path;"}) {
     INFO(key);
     CHECK_THAT(ref, Catch::Matchers::Contains("  " + std::string(key)));
   }
@@ -153,6 +154,10 @@ TEST_CASE("the key reference lists every key with unit, range and default", "[co
   CHECK_THAT(ref, Catch::Matchers::Contains("material.friction; [0, 10]; required;"));
   CHECK_THAT(ref, Catch::Matchers::Contains("numerics.time_step [s]; (0, 1]; required;"));
   CHECK_THAT(ref, Catch::Matchers::Contains("damping.form; one of: viscous, local; viscous;"));
+  CHECK_THAT(ref, Catch::Matchers::Contains("stages[].type; one of: strain_rate, stress, stress_path; required;"));
+  // The stress-path defaults: p = 100 kPa and R = 1.24 (SPEC section 3).
+  CHECK_THAT(ref, Catch::Matchers::Contains("stages[].mean_stress [Pa]; (0, 1e+10]; 100000;"));
+  CHECK_THAT(ref, Catch::Matchers::Contains("stages[].stress_ratio; [1, 100]; 1.24;"));
 }
 
 TEST_CASE("the shipped example scenes load and build", "[config]") {
@@ -171,20 +176,34 @@ TEST_CASE("the shipped example scenes load and build", "[config]") {
   }
 }
 
-// Known gaps in the key reference ([!shouldfail]: pass while the gap exists; remove the tag when fixed).
-TEST_CASE("known gap: the key reference shows optional sections as optional", "[config][!shouldfail]") {
-  // damping, servo and output may be left out (scene_config.cpp reads them only `if
-  // (root.has(...))`), but Section::child declares every mapping as "required".
+TEST_CASE("the key reference shows optional sections as optional, with their keys' defaults", "[config]") {
+  // damping, servo and output may be left out (Section::optional_child): then every key in them
+  // takes its default, and `dem keys` says so instead of "required".
   const std::string ref = scene_key_reference();
-  CHECK_THAT(ref, !Catch::Matchers::Contains("  damping; mapping; required;"));
-  CHECK_THAT(ref, !Catch::Matchers::Contains("  servo; mapping; required;"));
-  CHECK_THAT(ref, !Catch::Matchers::Contains("  output; mapping; required;"));
+  for (const char* section : {"damping", "servo", "output"}) {
+    INFO(section);
+    CHECK_THAT(ref, Catch::Matchers::Contains(std::string("\n  ") + section + "; mapping; optional (every key at its default);"));
+    CHECK_THAT(ref, !Catch::Matchers::Contains(std::string("\n  ") + section + "; mapping; required;"));
+  }
+  // Their keys with the defaults of "a minimal scene gets the documented defaults" above.
+  CHECK_THAT(ref, Catch::Matchers::Contains("\n  damping.translational; [0, 1]; 0.05;"));
+  CHECK_THAT(ref, Catch::Matchers::Contains("\n  damping.rotational; [0, 1]; 0.05;"));
+  CHECK_THAT(ref, Catch::Matchers::Contains("\n  servo.gain; (0, 1]; 0.001;"));
+  CHECK_THAT(ref, Catch::Matchers::Contains("\n  output.interval; integer in [1, 1000000000]; 1000;"));
+  CHECK_THAT(ref, Catch::Matchers::Contains("\n  output.flush_rows; integer in [1, 1000000]; 20;"));
+  // The sections that must be given stay required.
+  CHECK_THAT(ref, Catch::Matchers::Contains("\n  material; mapping; required;"));
+  CHECK_THAT(ref, Catch::Matchers::Contains("\n  numerics; mapping; required;"));
+  CHECK_THAT(ref, Catch::Matchers::Contains("\n  particles; mapping; required;"));
 }
 
-TEST_CASE("known gap: the key reference shows the default scene name as the file's stem", "[config][!shouldfail]") {
-  // The default of `name` is the scene file's stem; the reference is built by parsing example
-  // texts named "example", so `dem keys` prints the default as 'example' (and in a program that
-  // parsed other scenes before, the stem of whichever was parsed last).
+TEST_CASE("the key reference shows the default scene name as the file's stem", "[config]") {
+  // The default of `name` is the scene file's stem. The reference is built by parsing example
+  // texts named "example", whose stem must not leak into it, and parsing another scene first
+  // must not change it.
+  scene_from_text(lattice_particles + minimal_rest, "some/folder/other_scene.yaml");
   const std::string ref = scene_key_reference();
-  CHECK_THAT(ref, !Catch::Matchers::Contains("  name; text; 'example';"));
+  CHECK_THAT(ref, Catch::Matchers::Contains("\n  name; text; the scene file's name without extension;"));
+  CHECK_THAT(ref, !Catch::Matchers::Contains("'example'"));
+  CHECK_THAT(ref, !Catch::Matchers::Contains("other_scene"));
 }

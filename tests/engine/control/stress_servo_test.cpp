@@ -23,7 +23,7 @@ AxisTarget strain_rate_target(double rate) {
 }
 }  // namespace
 
-TEST_CASE("servo: strain-rate axes return the prescribed rate; stress axes without contacts move at the cap",
+TEST_CASE("servo: strain-rate axes return the prescribed rate, stress axes without contacts move at the cap",
           "[control][servo]") {
   ServoSettings s;
   s.gain = 0.01;

@@ -58,7 +58,7 @@ double max_energy_error(const Particles& p0, const PeriodicCell& cell, double kn
 
 }  // namespace
 
-TEST_CASE("undamped frictionless packing conserves energy; the error shrinks as dt^2", "[dynamics][energy]") {
+TEST_CASE("undamped frictionless packing conserves energy, the error shrinks as dt^2", "[dynamics][energy]") {
   // 100 spheres (d = 1.6 to 2.4 mm) in a 12 mm cell, solid fraction 0.23, initial overlaps up to 10 %
   // of d: the packing is driven apart by its elastic energy, with many contacts opening and closing.
   //

@@ -129,13 +129,21 @@ TEST_CASE("a CSV position several cells outside is wrapped into the cell", "[io]
   CHECK(p.s[0].z() == Approx(0.25));
 }
 
-// A known bug in engine/io/particle_csv.cpp ([!shouldfail]: passes while the bug exists; when it
-// is fixed it starts failing and the tag should be removed).
-TEST_CASE("known bug: a CSV line with a trailing comma (5 fields) is refused", "[io][csv][!shouldfail]") {
+TEST_CASE("a CSV line with a trailing comma (5 fields) is refused", "[io][csv]") {
   // "a,b,c,d," has five fields, the last one empty, like "a,,c,d" (refused as "'' is not a
-  // number"); std::getline drops the empty last field, so the line is silently accepted.
-  const std::string file = test::scratch_dir("csv_trailing_comma") + "/p.csv";
-  test::write_text(file, "x,y,z,radius\n0.005,0.005,0.005,0.002,\n");
+  // number"); std::getline would drop the empty last field, so the reader checks for it.
+  const std::string dir = test::scratch_dir("csv_trailing_comma");
+  const std::string file = dir + "/p.csv";
+  test::write_text(file, "x,y,z,radius\n0.005,0.005,0.005,0.002\n0.015,0.005,0.005,0.002,\n");
   Particles p;
-  CHECK_THROWS_WITH(read_particle_csv(file, cell20mm, 2650, p), Catch::Matchers::Contains(file + ": line 2:"));
+  CHECK_THROWS_WITH(read_particle_csv(file, cell20mm, 2650, p),
+                    file + ": line 3: trailing comma (expected 4 values x,y,z,radius)");
+  // Trailing blanks after the comma do not hide it.
+  test::write_text(file, "x,y,z,radius\n0.005,0.005,0.005,0.002, \n");
+  CHECK_THROWS_WITH(read_particle_csv(file, cell20mm, 2650, p), Catch::Matchers::StartsWith(file + ": line 2: trailing comma"));
+  // Control: the same line without the comma (and with trailing blanks) is read.
+  test::write_text(file, "x,y,z,radius\n0.005,0.005,0.005,0.002 \n");
+  Particles ok;
+  read_particle_csv(file, cell20mm, 2650, ok);
+  CHECK(ok.size() == 1);
 }

@@ -115,6 +115,27 @@ TEST_CASE("a complete run writes a complete, self-describing result file", "[io]
     const auto L1 = h5::read<double>(g, "cell_length_1", cols);
     CHECK(L1.front() == Approx(13.5e-3).epsilon(1e-12));
     CHECK(L1.back() == Approx(13.5e-3 * std::exp(-0.01)).epsilon(1e-12));
+    // Outside stress paths: cycle 0, leg -1, no leg or cycle ends.
+    for (const char* name : {"cycle", "leg_end", "cycle_end"}) {
+      INFO(name);
+      const auto v = h5::read<double>(g, name, cols);
+      CHECK(std::all_of(v.begin(), v.end(), [](double x) { return x == 0; }));
+    }
+    const auto leg = h5::read<double>(g, "leg", cols);
+    CHECK(std::all_of(leg.begin(), leg.end(), [](double x) { return x == -1; }));
+  }
+  SECTION("legs table: every documented column, with its units, and no rows without a stress path") {
+    h5::Handle g = h5::open_group(f, "legs");
+    std::set<std::string> expected, present;
+    for (const SeriesColumn& c : leg_columns()) expected.insert(c.name);
+    for (const std::string& n : test::h5_members(g)) present.insert(n);
+    CHECK(present == expected);
+    for (const SeriesColumn& c : leg_columns()) {
+      INFO("column " << c.name);
+      CHECK(units_of(g, c.name) == c.units);
+      std::size_t cols = 0;
+      CHECK(h5::read<double>(g, c.name, cols).empty());
+    }
   }
   SECTION("state: every documented dataset with its units and the step attributes") {
     h5::Handle g = h5::open_group(f, "state");
@@ -150,20 +171,27 @@ TEST_CASE("a frictionless run's state has no tangential springs", "[io][result]"
   CHECK_FALSE(h5::exists(g, "contact_sliding"));
 }
 
-TEST_CASE("known bug: a frictional run without any neighbour pair still writes its (empty) contact history",
-          "[io][result][!shouldfail]") {
+TEST_CASE("a frictional run without any neighbour pair still writes its (empty) contact history", "[io][result]") {
   // engine/README.md: contact_tangential_spring and contact_sliding are written for frictional
-  // runs. write_state (engine/io/state_io.cpp) decides "frictional" from !pairs.spring.empty(),
-  // so a frictional run whose Verlet list is empty (the tiny scene: 5 mm spacing, spheres
-  // <= 4.5 mm, gaps > skin) writes the layout of a frictionless run.
+  // runs. write_state decides "frictional" from the material (friction > 0), so a frictional run
+  // whose Verlet list is empty (the tiny scene: 5 mm spacing, spheres <= 4.5 mm, gaps > skin)
+  // has the frictional layout with zero contacts, and loads back as such.
   const std::string dir = test::scratch_dir("result_friction_no_pairs");
   const SceneConfig scene = scene_from_text(test::tiny_scene(squeeze_stage), dir + "/s.yaml");
   REQUIRE(scene.material.friction > 0);
   run_scene(scene, dir + "/r.h5", false);
-  h5::Handle f = h5::open_file_read(dir + "/r.h5");
-  h5::Handle g = h5::open_group(f, "state");
-  CHECK(h5::exists(g, "contact_tangential_spring"));
-  CHECK(h5::exists(g, "contact_sliding"));
+  {
+    h5::Handle f = h5::open_file_read(dir + "/r.h5");
+    h5::Handle g = h5::open_group(f, "state");
+    CHECK(h5::exists(g, "contact_tangential_spring"));
+    CHECK(h5::exists(g, "contact_sliding"));
+    std::size_t cols = 0;
+    CHECK(h5::read<double>(g, "contact_tangential_spring", cols).empty());
+    CHECK(h5::read<std::uint32_t>(g, "contact_first", cols).empty());
+  }
+  const SavedState st = read_state(dir + "/r.h5");
+  CHECK(st.contacts.size() == 0);
+  CHECK(st.particles.size() == 27);
 }
 
 TEST_CASE("h5ls lists the time series and the state of a result file", "[io][result]") {
@@ -256,7 +284,8 @@ TEST_CASE("a result writer is 'running' while open and 'failed' if dropped befor
   {
     ResultWriter w(dir + "/r.h5", scene);
     CHECK(w.partial_path() == dir + "/r.h5.partial");
-    CHECK(h5::get_string_attribute(w.file(), "status") == "running");
+    // Read back through a second (read-only) handle, as another program would.
+    CHECK(test::h5_status(dir + "/r.h5.partial") == "running");
   }
   CHECK_FALSE(fs::exists(dir + "/r.h5"));
   CHECK(test::h5_status(dir + "/r.h5.partial") == "failed: the run was interrupted");

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "config/scene_config.hpp"
+#include "config/yaml_section.hpp"
 #include "engine/io/io_test_support.hpp"
 #include "io/hdf5.hpp"
 #include "io/state_io.hpp"
@@ -150,9 +151,13 @@ TEST_CASE("damaged or unfinished state files are refused naming the file", "[io]
        "/state particle 7 has a non-finite or non-positive value"},
       {damaged_copy(good, "nan_velocity", [](hid_t f) { edit_values<double>(f, "state/velocity", [](auto& v) { v[5 * 3 + 1] = a_nan; }); }),
        "/state particle 5 has a non-finite or non-positive value"},
+      // Fractional positions must lie in [0, 1) (core/particles.hpp); an infinite one does not.
       {damaged_copy(good, "inf_position",
                     [](hid_t f) { edit_values<double>(f, "state/position_fractional", [](auto& v) { v[2] = HUGE_VAL; }); }),
-       "/state particle 0 has a non-finite or non-positive value"},
+       "/state/position_fractional of particle 0 is outside [0, 1)"},
+      {damaged_copy(good, "nan_position",
+                    [](hid_t f) { edit_values<double>(f, "state/position_fractional", [](auto& v) { v[3 * 9] = a_nan; }); }),
+       "/state/position_fractional of particle 9 is outside [0, 1)"},
       // Shapes: N x 3 vectors, N scalars per particle, 3 cell values.
       {damaged_copy(good, "velocity_2_columns", [n](hid_t f) { replace_dataset(f, "velocity", std::vector<double>(2 * n, 0.0), 2); }),
        "/state/velocity must have 3 columns, has 2"},
@@ -183,9 +188,15 @@ TEST_CASE("damaged or unfinished state files are refused naming the file", "[io]
   for (const Case& c : cases) {
     INFO(c.file);
     CHECK_THROWS_WITH(read_state(c.file), Catch::Matchers::StartsWith(c.file + ": " + c.expected));
-    // The same through a scene: the error reaches the user unchanged.
+    // The same through a scene: a ConfigError (bad input) naming the scene file and key, then
+    // the reader's message unchanged.
     const SceneConfig scene = scene_from_text(scene_text("particles: {state: " + c.file + "}\n", frictional), dir + "/s.yaml");
-    CHECK_THROWS_WITH(build_simulation(scene), Catch::Matchers::StartsWith(c.file + ": " + c.expected));
+    CHECK_THROWS_MATCHES(build_simulation(scene), ConfigError,
+                         Catch::Matchers::Predicate<std::exception>(
+                             [&](const std::exception& e) {
+                               return std::string(e.what()).rfind(dir + "/s.yaml: particles.state: " + c.file + ": " + c.expected, 0) == 0;
+                             },
+                             "starts with the scene file, particles.state, then " + c.file + ": " + c.expected));
   }
   // A scene naming a state file that does not exist, or a file that is not HDF5.
   CHECK_THROWS_WITH(read_state(dir + "/none.h5"), dir + "/none.h5: no such file");
@@ -193,50 +204,72 @@ TEST_CASE("damaged or unfinished state files are refused naming the file", "[io]
   CHECK_THROWS_WITH(read_state(dir + "/text.h5"), Catch::Matchers::StartsWith(dir + "/text.h5: not a readable HDF5 file"));
 }
 
-// Known gaps in read_state ([!shouldfail]: pass while the gap exists; remove the tag when fixed).
-TEST_CASE("known gap: a complete result without /state is refused naming the file", "[io][state][!shouldfail]") {
-  // read_state promises to throw "naming the file"; h5::open_group's message is
-  // "HDF5: group 'state' is missing", without it (the same for a missing dataset).
+TEST_CASE("a complete result without /state is refused naming the file", "[io][state]") {
+  // read_state promises to throw "naming the file"; a missing group or dataset (h5::Error from
+  // the HDF5 layer) is prefixed with it.
   const std::string dir = test::scratch_dir("state_no_group");
-  const std::string file = damaged_copy(good_result(dir), "no_state", [](hid_t f) { REQUIRE(H5Ldelete(f, "state", H5P_DEFAULT) >= 0); });
-  CHECK_THROWS_WITH(read_state(file), Catch::Matchers::StartsWith(file + ": "));
+  const std::string good = good_result(dir);
+  const std::string file = damaged_copy(good, "no_state", [](hid_t f) { REQUIRE(H5Ldelete(f, "state", H5P_DEFAULT) >= 0); });
+  CHECK_THROWS_WITH(read_state(file), Catch::Matchers::StartsWith(file + ": ") && Catch::Matchers::Contains("'state'"));
+  const std::string no_mass = damaged_copy(good, "no_mass", [](hid_t f) {
+    h5::Handle g = h5::open_group(f, "state");
+    REQUIRE(H5Ldelete(g, "mass", H5P_DEFAULT) >= 0);
+  });
+  CHECK_THROWS_WITH(read_state(no_mass), Catch::Matchers::StartsWith(no_mass + ": ") && Catch::Matchers::Contains("mass"));
 }
 
-TEST_CASE("known gap: a non-finite spin in a saved state is refused", "[io][state][!shouldfail]") {
-  // read_state checks positions and velocities for finiteness but not angular velocities; a NaN
-  // spin would only surface later as a non-finite stress in the first step.
+TEST_CASE("a non-finite spin in a saved state is refused", "[io][state]") {
+  // A NaN spin would otherwise surface only later, as a non-finite stress in the first step.
+  // angular_velocity is N x 3: value 4 is particle 1, component y.
   const std::string dir = test::scratch_dir("state_nan_spin");
-  const std::string file = damaged_copy(good_result(dir), "nan_spin", [](hid_t f) {
+  const std::string good = good_result(dir);
+  const std::string nan_spin = damaged_copy(good, "nan_spin", [](hid_t f) {
     edit_values<double>(f, "state/angular_velocity", [](auto& v) { v[4] = a_nan; });
   });
-  CHECK_THROWS_WITH(read_state(file), Catch::Matchers::StartsWith(file + ": /state particle 1 "));
+  CHECK_THROWS_WITH(read_state(nan_spin), nan_spin + ": /state particle 1 has a non-finite or non-positive value");
+  const std::string inf_spin = damaged_copy(good, "inf_spin", [](hid_t f) {
+    edit_values<double>(f, "state/angular_velocity", [](auto& v) { v[3 * 20 + 2] = -HUGE_VAL; });
+  });
+  CHECK_THROWS_WITH(read_state(inf_spin), inf_spin + ": /state particle 20 has a non-finite or non-positive value");
 }
 
-TEST_CASE("known gap: non-positive or non-finite cell lengths in a saved state are refused", "[io][state][!shouldfail]") {
-  // A cell of length 0 or NaN cannot hold particles; read_state checks the count of the cell
-  // values but not the values themselves.
+TEST_CASE("non-positive or non-finite cell lengths and non-finite strain rates in a saved state are refused", "[io][state]") {
+  // A cell of length 0 or NaN cannot hold particles; a strain rate of NaN would poison the first step.
   const std::string dir = test::scratch_dir("state_bad_cell");
   const std::string good = good_result(dir);
-  const std::string zero = damaged_copy(good, "zero_cell", [](hid_t f) { edit_values<double>(f, "state/cell_lengths", [](auto& v) { v[1] = 0; }); });
-  const std::string not_a_number =
-      damaged_copy(good, "nan_cell", [](hid_t f) { edit_values<double>(f, "state/cell_reference_lengths", [](auto& v) { v[0] = a_nan; }); });
-  CHECK_THROWS_WITH(read_state(zero), Catch::Matchers::StartsWith(zero + ": "));
-  CHECK_THROWS_WITH(read_state(not_a_number), Catch::Matchers::StartsWith(not_a_number + ": "));
+  const std::string expected = ": /state cell lengths must be positive and finite, strain rates finite";
+  const std::vector<std::string> bad = {
+      damaged_copy(good, "zero_cell", [](hid_t f) { edit_values<double>(f, "state/cell_lengths", [](auto& v) { v[1] = 0; }); }),
+      damaged_copy(good, "negative_cell", [](hid_t f) { edit_values<double>(f, "state/cell_lengths", [](auto& v) { v[2] = -0.018; }); }),
+      damaged_copy(good, "inf_cell", [](hid_t f) { edit_values<double>(f, "state/cell_lengths", [](auto& v) { v[0] = HUGE_VAL; }); }),
+      damaged_copy(good, "nan_reference", [](hid_t f) { edit_values<double>(f, "state/cell_reference_lengths", [](auto& v) { v[0] = a_nan; }); }),
+      damaged_copy(good, "zero_reference", [](hid_t f) { edit_values<double>(f, "state/cell_reference_lengths", [](auto& v) { v[2] = 0; }); }),
+      damaged_copy(good, "nan_rate", [](hid_t f) { edit_values<double>(f, "state/cell_strain_rate", [](auto& v) { v[1] = a_nan; }); }),
+      damaged_copy(good, "inf_rate", [](hid_t f) { edit_values<double>(f, "state/cell_strain_rate", [](auto& v) { v[0] = HUGE_VAL; }); }),
+  };
+  for (const std::string& file : bad) {
+    INFO(file);
+    CHECK_THROWS_WITH(read_state(file), file + expected);
+  }
+  // Control: a negative strain rate (extension) is a valid state.
+  const std::string extension =
+      damaged_copy(good, "negative_rate", [](hid_t f) { edit_values<double>(f, "state/cell_strain_rate", [](auto& v) { v[0] = -5; }); });
+  CHECK(read_state(extension).strain_rate_per_s[0] == -5);
 }
 
-TEST_CASE("known gap: a saved fractional position outside the unit interval is refused or wrapped", "[io][state][!shouldfail]") {
+TEST_CASE("a saved fractional position outside the unit interval is refused", "[io][state]") {
   // Particles must hold s in [0, 1) (core/particles.hpp); the minimum image and the binning rely
-  // on it. read_state accepts any finite s, e.g. 1.5.
+  // on it. 1.0 itself is outside (the interval is half-open), 0 is inside.
   const std::string dir = test::scratch_dir("state_outside");
-  const std::string file = damaged_copy(good_result(dir), "outside", [](hid_t f) {
-    edit_values<double>(f, "state/position_fractional", [](auto& v) { v[0] = 1.5; });
-  });
-  bool refused_or_wrapped = false;
-  try {
-    const SavedState st = read_state(file);
-    refused_or_wrapped = st.particles.s[0].x() >= 0 && st.particles.s[0].x() < 1;
-  } catch (const std::exception& e) {
-    refused_or_wrapped = std::string(e.what()).rfind(file + ": ", 0) == 0;
+  const std::string good = good_result(dir);
+  const auto with_s0 = [&](const std::string& name, double x) {
+    return damaged_copy(good, name, [x](hid_t f) { edit_values<double>(f, "state/position_fractional", [x](auto& v) { v[0] = x; }); });
+  };
+  for (const auto& [name, x] : std::vector<std::pair<std::string, double>>{{"s_1_5", 1.5}, {"s_1", 1.0}, {"s_minus", -1e-17}}) {
+    const std::string file = with_s0(name, x);
+    INFO(file);
+    CHECK_THROWS_WITH(read_state(file), file + ": /state/position_fractional of particle 0 is outside [0, 1)");
   }
-  CHECK(refused_or_wrapped);
+  const std::string zero = with_s0("s_0", 0.0);
+  CHECK(read_state(zero).particles.s[0].x() == 0.0);
 }

@@ -77,6 +77,8 @@ TEST_CASE("dem keys lists every scene key and dem --version names the version", 
   CHECK_THAT(keys.out, Catch::Matchers::Contains("  material.friction; [0, 10]; required;"));
   CHECK_THAT(keys.out, Catch::Matchers::Contains("  numerics.time_step [s]"));
   CHECK_THAT(keys.out, Catch::Matchers::Contains("  stages[].hold.max_duration [s]"));
+  CHECK_THAT(keys.out, Catch::Matchers::Contains("  damping; mapping; optional (every key at its default);"));
+  CHECK_THAT(keys.out, Catch::Matchers::Contains("  stages[].path; "));
   const auto version = dem_stdout("--version");
   CHECK(version.exit_code == 0);
   CHECK_THAT(version.out, Catch::Matchers::Contains(dem::software_version));
@@ -117,21 +119,35 @@ TEST_CASE("dem run: a stage that fails exits with status 1 and keeps the partial
   CHECK_THAT(dem::test::h5_status(dir + "/r.h5.partial"), Catch::Matchers::StartsWith("failed: "));
 }
 
-TEST_CASE("known bug: dem run exits 2 (bad input) for a bad grading curve, lattice or particle file", "[run][cli][!shouldfail]") {
-  // These scenes are bad input, found only when the particles are made (grading and lattice
-  // generators: std::invalid_argument; CSV reader: std::runtime_error), not ConfigError, so
-  // dem_main.cpp's catch sorts them with failed runs (exit 1) instead of bad input (exit 2).
-  if (!have_dem()) FAIL("dem not built");
+TEST_CASE("dem run exits 2 (bad input) for a bad grading curve, lattice, particle file or state file", "[run][cli]") {
+  // These are found only when the particles are made (grading and lattice generators, CSV and
+  // state readers); build_simulation rethrows them as ConfigError naming the scene file and the
+  // particle source, so dem sorts them with bad input (exit 2), before any output file exists.
+  if (!have_dem()) return;
   const std::string dir = dem::test::scratch_dir("cli_bad_grading");
+  const auto refused = [&](const std::string& scene, const std::string& expected) {
+    INFO(scene);
+    const auto r = dem_stderr("run '" + scene + "' --out '" + dir + "/r.h5'");
+    INFO(r.out);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.out, Catch::Matchers::Contains("error: " + scene + ": " + expected));
+    CHECK_THAT(r.out, !Catch::Matchers::Contains("partial result kept"));
+    CHECK_FALSE(fs::exists(dir + "/r.h5.partial"));
+  };
   std::string text = dem::test::tiny_scene(tiny_stage);
   text.replace(text.find("percent_finer: [0, 100]"), 23, "percent_finer: [10, 100]");
   dem::test::write_text(dir + "/g.yaml", text);
-  CHECK(dem_stderr("run '" + dir + "/g.yaml' --out '" + dir + "/r.h5'").exit_code == 2);
+  refused(dir + "/g.yaml", "particles.lattice/grading: grading: diameters must be positive, percent_finer must start at 0");
   text = dem::test::tiny_scene(tiny_stage);
   text.replace(text.find("spacing: 5.0e-3"), 15, "spacing: 4.0e-3");
   dem::test::write_text(dir + "/l.yaml", text);
-  CHECK(dem_stderr("run '" + dir + "/l.yaml' --out '" + dir + "/r.h5'").exit_code == 2);
+  refused(dir + "/l.yaml", "particles.lattice/grading: lattice spacing 0.004 m is smaller than the largest diameter");
   // tests/data/csv_scene/bad_csv_scene.yaml: its CSV file has a negative radius on line 3.
-  const std::string csv_scene = std::string(DEM_SOURCE_DIR) + "/tests/data/csv_scene/bad_csv_scene.yaml";
-  CHECK(dem_stderr("run '" + csv_scene + "' --out '" + dir + "/r.h5'").exit_code == 2);
+  const std::string csv_folder = std::string(DEM_SOURCE_DIR) + "/tests/data/csv_scene";
+  refused(csv_folder + "/bad_csv_scene.yaml", "particles.csv: " + csv_folder + "/negative_radius.csv: line 3: radius must be > 0 m");
+  // A state file that is not a result file.
+  dem::test::write_text(dir + "/not_a_result.h5", "plain text\n");
+  dem::test::write_text(dir + "/s.yaml", "name: s\nparticles: {state: not_a_result.h5}\nmaterial: {kn: 1.0e6, ks: 1.0e6, friction: 0.5}\n"
+                                          "numerics: {time_step: 1.0e-6}\nstages:\n" + tiny_stage);
+  refused(dir + "/s.yaml", "particles.state: " + dir + "/not_a_result.h5: not a readable HDF5 file");
 }
