@@ -9,12 +9,13 @@ out=${2:-$here/results/samples}
 jobs=${JOBS:-2}
 mkdir -p "$out"
 
-list() {  # density n seed damping
+list() {  # density n seed damping; full-size seeds 2 and 3 only with FULL=1 (hours)
   for n in 20 10 15; do
-    for seed in 2 3 1; do
+    for seed in 1 2 3; do
+      [ "$n" = 20 ] && [ "$seed" != 1 ] && [ "${FULL:-0}" != 1 ] && continue
       for d in dense medium loose; do echo "$d $n $seed viscous"; done
     done
-    [ "$n" = 20 ] && for d in dense medium loose; do echo "$d 20 1 local"; done
+    for d in dense medium loose; do echo "$d $n 1 local"; done
   done
 }
 
