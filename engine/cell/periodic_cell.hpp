@@ -48,13 +48,16 @@ class PeriodicCell {
     }
   }
 
-  // Brings a fractional position back into [0, 1) after a step (moves are far below one cell).
-  static void wrap(Vec3& s) {
+  // Brings a fractional position back into [0, 1) after a step. Returns false if it cannot (a move
+  // of more than a cell in one step, or NaN): the run has become unstable.
+  static bool wrap(Vec3& s) {
+    bool ok = true;
     for (int k = 0; k < 3; ++k) {
       if (s[k] < 0.0) s[k] += 1.0;
       if (s[k] >= 1.0) s[k] -= 1.0;  // also catches -1e-17 + 1 == 1.0
-      assert(s[k] >= 0.0 && s[k] < 1.0);
+      ok = ok && s[k] >= 0.0 && s[k] < 1.0;
     }
+    return ok;
   }
 
   Vec3 to_real(const Vec3& s) const { return s.cwiseProduct(L_); }

@@ -114,20 +114,22 @@ struct LocalDamping {
 };
 
 // Leapfrog update of velocities and fractional positions. Returns the translational kinetic
-// energy of the fluctuating motion at the new half step [J].
+// energy of the fluctuating motion at the new half step [J], or NaN if a particle moved by more
+// than a cell in one step (the run is unstable; positions can no longer be trusted).
 template <bool Rotate, class DampingPolicy>
 double integrate(const DampingPolicy& damping, Particles& p, const PeriodicCell& cell, const std::vector<Vec3>& force,
                  const std::vector<Vec3>& torque, double dt) {
   const Vec3 dt_over_L = dt * cell.inverse_lengths();
   double twice_ke = 0;
+  bool wrapped = true;
   for (std::size_t i = 0; i < p.size(); ++i) {
     damping.velocity(i, p.v[i], force[i]);
     p.s[i] += p.v[i].cwiseProduct(dt_over_L);
-    PeriodicCell::wrap(p.s[i]);
+    wrapped &= PeriodicCell::wrap(p.s[i]);
     twice_ke += p.mass[i] * p.v[i].squaredNorm();
     if constexpr (Rotate) damping.spin(i, p.omega[i], torque[i]);
   }
-  return 0.5 * twice_ke;
+  return wrapped ? 0.5 * twice_ke : std::nan("");
 }
 
 }  // namespace dem

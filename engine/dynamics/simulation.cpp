@@ -80,7 +80,8 @@ void Simulation::step(const CellTargets& targets, const ServoSettings& servo) {
   kinetic_energy_ = kernel_->integrate(*this);
   if (!std::isfinite(kinetic_energy_)) {
     std::ostringstream msg;
-    msg << "non-finite kinetic energy at step " << step_ << " (time " << time() << " s): the run is unstable";
+    msg << "non-finite kinetic energy or a particle moving more than a cell in one step at step " << step_ << " (time "
+        << time() << " s): the run is unstable (time step too large for the stiffness?)";
     throw NonFiniteError(msg.str());
   }
   cell_.deform(strain_rate_, dt_);
