@@ -17,7 +17,7 @@
 #include "config/yaml_section.hpp"
 #include "analysis/time_series.hpp"
 #include "io/hdf5.hpp"
-#include "run/run_scene.hpp"
+#include "run/run_scene.hpp"  // leg_columns
 #include "version.hpp"
 
 namespace {
@@ -28,7 +28,8 @@ const char* usage =
     "                                                 run a scene and write its result (HDF5); --set\n"
     "                                                 overrides a key, e.g. --set particles.lattice.seed=2\n"
     "  dem keys                                       list every scene key with unit, range, default\n"
-    "  dem table RESULT.h5 [COLUMN ...]               print time-series columns as tab-separated text\n"
+    "  dem table RESULT.h5 [--legs] [COLUMN ...]      print time-series (or per-leg) columns as\n"
+    "                                                 tab-separated text\n"
     "  dem summary RESULT.h5 ...                      one line per result: its last time-series row,\n"
     "                                                 steps and wall time (tab-separated)\n"
     "  dem --version | --help\n"
@@ -86,11 +87,12 @@ int table(int argc, char** argv) {
   if (argc < 3) { std::fprintf(stderr, "dem table: need a result file\n%s", usage); return 2; }
   try {
     dem::h5::Handle f = dem::h5::open_file_read(argv[2]);
-    dem::h5::Handle g = dem::h5::open_group(f, "timeseries");
+    const bool legs = argc > 3 && std::string(argv[3]) == "--legs";
+    dem::h5::Handle g = dem::h5::open_group(f, legs ? "legs" : "timeseries");
     std::vector<std::string> names;
-    for (int i = 3; i < argc; ++i) names.push_back(argv[i]);
+    for (int i = legs ? 4 : 3; i < argc; ++i) names.push_back(argv[i]);
     if (names.empty())
-      for (const auto& c : dem::series_columns()) names.push_back(c.name);
+      for (const auto& c : legs ? dem::leg_columns() : dem::series_columns()) names.push_back(c.name);
     std::vector<std::vector<double>> cols;
     std::size_t width = 0;
     for (const auto& n : names) {

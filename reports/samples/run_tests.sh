@@ -14,8 +14,11 @@ for d in $densities; do
   for t in 1 2 3 4 5; do
     name=${d}_test$t
     [ -f "$out/$name.h5" ] && { echo "skip $name"; continue; }
+    # Several workers may share the list: a lock folder marks a run taken (remove stale ones by hand).
+    mkdir "$out/$name.lock" 2>/dev/null || { echo "skip $name (taken by another worker)"; continue; }
     "$dem" run "$here/scenes/tests/test$t.yaml" --out "$out/$name.h5" --quiet \
       --set "name=$name" --set "particles.state=$sample" > "$out/$name.log" 2>&1 \
       && echo "done $name" || echo "FAILED $name (see $out/$name.log)"
+    rmdir "$out/$name.lock"
   done
 done
