@@ -17,6 +17,7 @@
 #include "config/yaml_section.hpp"
 #include "analysis/time_series.hpp"
 #include "io/hdf5.hpp"
+#include "io/state_io.hpp"
 #include "run/run_scene.hpp"  // leg_columns
 #include "version.hpp"
 
@@ -30,6 +31,7 @@ const char* usage =
     "  dem keys                                       list every scene key with unit, range, default\n"
     "  dem table RESULT.h5 [--legs] [COLUMN ...]      print time-series (or per-leg) columns as\n"
     "                                                 tab-separated text\n"
+    "  dem state RESULT.h5                            the final particles: x y z radius (m), tab-separated\n"
     "  dem summary RESULT.h5 ...                      one line per result: its last time-series row,\n"
     "                                                 steps and wall time (tab-separated)\n"
     "  dem --version | --help\n"
@@ -113,6 +115,24 @@ int table(int argc, char** argv) {
   }
 }
 
+// The final particles of a result: real position and radius, one tab-separated line each.
+int state(int argc, char** argv) {
+  if (argc < 3) { std::fprintf(stderr, "dem state: need a result file\n%s", usage); return 2; }
+  try {
+    const dem::SavedState st = dem::read_state(argv[2]);
+    std::printf("# x\ty\tz\tradius (m); cell %.10g %.10g %.10g\n", st.cell.lengths()[0], st.cell.lengths()[1],
+                st.cell.lengths()[2]);
+    for (std::size_t i = 0; i < st.particles.size(); ++i) {
+      const dem::Vec3 x = st.cell.to_real(st.particles.s[i]);
+      std::printf("%.10g\t%.10g\t%.10g\t%.10g\n", x[0], x[1], x[2], st.particles.radius[i]);
+    }
+    return 0;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 2;
+  }
+}
+
 // One tab-separated line per complete result: file, wall time, then the last time-series row.
 int summary(int argc, char** argv) {
   if (argc < 3) { std::fprintf(stderr, "dem summary: need result files\n%s", usage); return 2; }
@@ -153,6 +173,7 @@ int main(int argc, char** argv) {
   if (cmd == "run") return run(argc, argv);
   if (cmd == "table") return table(argc, argv);
   if (cmd == "summary") return summary(argc, argv);
+  if (cmd == "state") return state(argc, argv);
   std::fprintf(stderr, "dem: unknown command '%s'\n%s", cmd.c_str(), usage);
   return 2;
 }
