@@ -4,7 +4,7 @@ JOBS     ?= $(shell nproc 2>/dev/null || echo 2)
 PACKAGES := g++ cmake make libeigen3-dev libhdf5-dev libyaml-cpp-dev catch2 gnuplot-nox hdf5-tools
 SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps build test bench samples samples-study cyclic-tests clean
+.PHONY: all deps build test bench quick study samples samples-study cyclic-tests clean
 
 # Until the study pipeline (issue 5) exists: build, test, prepare the three samples, run the five
 # cyclic tests on each, and write the sample table.
@@ -28,6 +28,14 @@ test: build
 
 bench: build
 	$(BUILD)/bin/dem-bench $(BUILD)/bench
+
+# The study through the pipeline (issue 5): every density x test, reusing finished results.
+study: build
+	$(BUILD)/bin/pipeline pipeline/studies/paper.yaml --profile paper -j $(JOBS)
+
+# The same with the quick profile (1,000 spheres, at most 2 cycles per repeat block).
+quick: build
+	$(BUILD)/bin/pipeline pipeline/studies/paper.yaml --profile quick -j $(JOBS)
 
 # The three preparation scenes of SPEC section 2, full size (8,000 spheres), seed 1; then the table.
 samples: build

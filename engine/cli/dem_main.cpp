@@ -19,6 +19,7 @@
 #include "io/hdf5.hpp"
 #include "io/state_io.hpp"
 #include "run/run_scene.hpp"  // leg_columns
+#include "source_hash.hpp"
 #include "version.hpp"
 
 namespace {
@@ -27,14 +28,15 @@ const char* usage =
     "usage:\n"
     "  dem run SCENE.yaml --out RESULT.h5 [--set KEY=VALUE ...] [--quiet]\n"
     "                                                 run a scene and write its result (HDF5); --set\n"
-    "                                                 overrides a key, e.g. --set particles.lattice.seed=2\n"
+    "                                                 overrides a key, e.g. --set particles.lattice.seed=2;\n"
+    "                                                 --input-hash H is recorded in the result (pipeline)\n"
     "  dem keys                                       list every scene key with unit, range, default\n"
     "  dem table RESULT.h5 [--legs] [COLUMN ...]      print time-series (or per-leg) columns as\n"
     "                                                 tab-separated text\n"
     "  dem state RESULT.h5                            the final particles: x y z radius (m), tab-separated\n"
     "  dem summary RESULT.h5 ...                      one line per result: its last time-series row,\n"
     "                                                 steps and wall time (tab-separated)\n"
-    "  dem --version | --help\n"
+    "  dem --version | --source-hash | --help\n"
     "\n"
     "The result is written to RESULT.h5.partial while the run goes on and renamed to RESULT.h5\n"
     "(status 'complete') only when it finishes. Exit status: 0 success, 1 run failed, 2 bad input.\n";
@@ -43,10 +45,12 @@ int run(int argc, char** argv) {
   std::string scene_file, out;
   bool quiet = false;
   std::vector<std::pair<std::string, std::string>> overrides;
+  std::string input_hash;
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--out" && i + 1 < argc) out = argv[++i];
     else if (a == "--quiet") quiet = true;
+    else if (a == "--input-hash" && i + 1 < argc) input_hash = argv[++i];
     else if (a == "--set" && i + 1 < argc) {
       const std::string kv = argv[++i];
       const auto eq = kv.find('=');
@@ -70,7 +74,7 @@ int run(int argc, char** argv) {
   }
   try {
     const bool progress = !quiet && isatty(STDERR_FILENO);
-    const dem::RunSummary s = dem::run_scene(scene, out, progress);
+    const dem::RunSummary s = dem::run_scene(scene, out, progress, input_hash);
     std::fprintf(stderr, "%s: %lld steps in %.1f s (%.3g steps/s) -> %s\n", scene.name.c_str(),
                  static_cast<long long>(s.steps), s.wall_time_s, static_cast<double>(s.steps) / s.wall_time_s, out.c_str());
     return 0;
@@ -168,7 +172,15 @@ int main(int argc, char** argv) {
     return argc < 2 ? 2 : 0;
   }
   const std::string cmd = argv[1];
-  if (cmd == "--version") { std::printf("dem %s (result schema %d)\n", dem::software_version, dem::schema_version); return 0; }
+  if (cmd == "--version") {
+    std::printf("dem %s (result schema %d, engine source %s)\n", dem::software_version, dem::schema_version,
+                dem::engine_source_hash);
+    return 0;
+  }
+  if (cmd == "--source-hash") {  // what the pipeline keys its reuse of results on
+    std::printf("%s schema %d\n", dem::engine_source_hash, dem::schema_version);
+    return 0;
+  }
   if (cmd == "keys") { std::fputs(dem::scene_key_reference().c_str(), stdout); return 0; }
   if (cmd == "run") return run(argc, argv);
   if (cmd == "table") return table(argc, argv);

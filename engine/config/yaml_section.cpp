@@ -82,8 +82,6 @@ Section Section::load_file(const std::string& file, const Overrides& overrides) 
   return from_text(text.str(), file, overrides);
 }
 
-namespace {
-
 // Sets `path` (a.b[2].c) in `root` to the YAML value `value`, creating missing mapping keys.
 void apply_override(YAML::Node root, const std::string& file, const std::string& path, const std::string& value) {
   const std::regex segment_re(R"(^([A-Za-z_][A-Za-z0-9_]*)(?:\[([0-9]+)\])?$)");
@@ -126,8 +124,6 @@ void apply_override(YAML::Node root, const std::string& file, const std::string&
     node.reset(next);
   }
 }
-
-}  // namespace
 
 Section Section::from_text(const std::string& text, const std::string& file, const Overrides& overrides) {
   YAML::Node root;

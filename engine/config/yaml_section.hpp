@@ -25,6 +25,10 @@ struct KeyDoc {
 // Every key declared so far, by path pattern (list indices written as []); filled as files are read.
 std::map<std::string, KeyDoc>& key_docs();
 
+// Sets the key `path` (a.b[2].c) of `root` to the YAML `value`, creating missing mapping keys;
+// throws ConfigError naming `file` if the path does not fit the document.
+void apply_override(YAML::Node root, const std::string& file, const std::string& path, const std::string& value);
+
 struct Range {
   double min, max;
   bool min_open = false;  // true: value must be > min rather than >= min

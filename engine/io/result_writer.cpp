@@ -52,6 +52,10 @@ void ResultWriter::append_row(const std::vector<double>& row) {
 
 void ResultWriter::append_leg(const std::vector<double>& row) { tables_[1].append(row); }
 
+void ResultWriter::set_attribute(const std::string& name, const std::string& value) {
+  h5::set_attribute(file_, name, value);
+}
+
 void ResultWriter::add_warning(const std::string& warning) { warnings_ += warning + "\n"; }
 
 void ResultWriter::flush() {

@@ -34,6 +34,7 @@ class ResultWriter {
   void append_row(const std::vector<double>& row);  // /timeseries; flushed every `flush_rows` rows
   void append_leg(const std::vector<double>& row);  // /legs (stress-path stages)
   void add_warning(const std::string& warning);     // kept in the `warnings` attribute
+  void set_attribute(const std::string& name, const std::string& value);  // a root attribute
   void flush();
   void write_state(const class Simulation& sim);
   // Marks the file complete and moves it to its final name.

@@ -240,11 +240,13 @@ void run_stage(Simulation& sim, const SceneConfig& scene, int index, const Stage
   if (hooks.row && !output_due(sim, scene)) hooks.row(sim, {index});  // the stage end is always recorded
 }
 
-RunSummary run_scene(const SceneConfig& scene, const std::string& out_path, bool show_progress) {
+RunSummary run_scene(const SceneConfig& scene, const std::string& out_path, bool show_progress,
+                     const std::string& input_hash) {
   using clock = std::chrono::steady_clock;
   const auto start = clock::now();
   Simulation sim = build_simulation(scene);  // all input checks happen before the output file exists
   ResultWriter out(out_path, scene);
+  if (!input_hash.empty()) out.set_attribute("input_hash", input_hash);
   auto last_print = start;
   int stage_seen = -1;          // for the ETA: the stage being timed and when it started
   double stage_start_wall = 0;  // [s since the run started]

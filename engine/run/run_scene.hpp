@@ -53,6 +53,8 @@ struct RunSummary {
 };
 
 // Runs a whole scene and writes the result file (see io/result_writer.hpp for the guarantees).
-RunSummary run_scene(const SceneConfig& scene, const std::string& out_path, bool show_progress);
+// `input_hash` (if not empty) is recorded in the result's `input_hash` attribute.
+RunSummary run_scene(const SceneConfig& scene, const std::string& out_path, bool show_progress,
+                     const std::string& input_hash = "");
 
 }  // namespace dem

@@ -1,0 +1,33 @@
+#pragma once
+// The runs of a study: one preparation per density, then every test from that density's sample.
+// Each run gets a resolved scene file (every override applied), written where `dem run` can read
+// it, and an input hash over that scene, the engine version and the hashes of the runs it needs.
+#include <string>
+#include <vector>
+
+#include "config/study_config.hpp"
+
+namespace pipeline {
+
+struct PlannedRun {
+  std::string name;         // dense_prepare, dense_test1, ...
+  std::string scene_file;   // resolved scene (written by write_scenes)
+  std::string scene_text;
+  std::string result, log;  // result file and log of `dem run`
+  std::string hash;         // input hash, recorded in the result
+  int depends_on = -1;      // index of the run whose result this one starts from
+  double cost = 0;          // estimated particle-steps, for the ETA
+};
+
+// Plans every run; validates each resolved scene with the engine's own parser (ConfigError on
+// bad input, before anything runs).
+std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, const std::string& out_dir,
+                                   const std::string& engine_version);
+
+// Writes the resolved scenes (only where the text changed, so file times stay meaningful).
+void write_scenes(const std::vector<PlannedRun>& runs);
+
+// FNV-1a, 64 bit, as 16 hex digits: stable across platforms and compilers.
+std::string content_hash(const std::string& text);
+
+}  // namespace pipeline
