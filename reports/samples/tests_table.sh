@@ -24,6 +24,6 @@ for d in loose medium dense; do
       NR > 1 && $3 == 1 && $2 == 1 { ev1 = 100 * $4; cn1 = $5 }
       NR > 1 && $3 == 1 && $2 == last { evl = 100 * $4; cnl = $5 }
       END { split(legs, l, "\t")
-            printf "| %s | %s | %d | %.0f | %s | %s | %.3f | %.3f | %.3f | %.3f | %.3f |\n", d, t, steps, wall, l[1], l[2], ev1, evl, cn0, cn1, cnl }'
+            printf "| %s | %s | %d | %.0f | %s | %s | %.4f | %.4f | %.3f | %.3f | %.3f |\n", d, t, steps, wall, l[1], l[2], ev1, evl, cn0, cn1, cnl }'
   done
 done
