@@ -10,7 +10,7 @@ jobs=${JOBS:-2}
 mkdir -p "$out"
 
 list() {  # density n seed damping; full-size seeds 2 and 3 only with FULL=1 (hours)
-  for n in 20 10 15; do
+  for n in 10 15 20; do
     for seed in 1 2 3; do
       [ "$n" = 20 ] && [ "$seed" != 1 ] && [ "${FULL:-0}" != 1 ] && continue
       for d in dense medium loose; do echo "$d $n $seed viscous"; done
