@@ -1,0 +1,204 @@
+#include "quantities.hpp"
+
+#include <cmath>
+#include <functional>
+#include <map>
+#include <numbers>
+#include <sstream>
+
+namespace validation {
+
+namespace {
+
+// Value of `column` at the end of cycle `c` (the row with cycle_end = 1 and cycle = c).
+std::optional<double> at_cycle_end(const TestResult& t, const std::string& column, int c) {
+  const auto& cyc = t.series.at("cycle");
+  const auto& end = t.series.at("cycle_end");
+  const auto& v = t.series.at(column);
+  for (std::size_t i = 0; i < cyc.size(); ++i)
+    if (end[i] == 1 && static_cast<int>(cyc[i]) == c) return v[i];
+  return std::nullopt;
+}
+
+// Mean over the tests of f(test); the note says how many tests contributed.
+Measured mean_over_tests(const DensityResults& r, const std::function<std::optional<double>(const TestResult&)>& f) {
+  double sum = 0;
+  int n = 0;
+  std::string tests;
+  for (const TestResult& t : r.tests)
+    if (const auto v = f(t)) {
+      sum += *v;
+      ++n;
+      if (!tests.empty()) tests += ',';
+      tests += std::to_string(t.number);
+    }
+  if (n == 0) return {std::nullopt, "no test reaches the cycles asked for"};
+  return {sum / n, "mean of tests " + tests};
+}
+
+std::optional<double> change(const TestResult& t, const std::string& column, int a, int b, double scale) {
+  const auto va = at_cycle_end(t, column, a), vb = at_cycle_end(t, column, b);
+  if (!va || !vb) return std::nullopt;
+  return scale * (*vb - *va);
+}
+
+// Mean angle (degrees) between each leg's strain increment and its stress increment in the
+// pi-plane, over the legs of cycle c.
+std::optional<double> misalignment(const TestResult& t, int c) {
+  const auto& legs_cycle = t.legs.at("cycle");
+  const auto& t1 = t.legs.at("target_1");
+  const auto& t2 = t.legs.at("target_2");
+  const auto& t3 = t.legs.at("target_3");
+  const auto& leg_end = t.series.at("leg_end");
+  const auto& leg = t.series.at("leg");
+  const auto& dx = t.series.at("pi_strain_increment_x");
+  const auto& dy = t.series.at("pi_strain_increment_y");
+  double sum = 0;
+  int n = 0;
+  for (std::size_t k = 0; k < legs_cycle.size(); ++k) {
+    if (static_cast<int>(legs_cycle[k]) != c) continue;
+    const double p1 = k ? t1[k - 1] : 1e5, p2 = k ? t2[k - 1] : 1e5, p3 = k ? t3[k - 1] : 1e5;  // leg 0 starts at A
+    const double sx = ((t3[k] - p3) - (t2[k] - p2)) / std::sqrt(2.0);
+    const double sy = (2 * (t1[k] - p1) - (t2[k] - p2) - (t3[k] - p3)) / std::sqrt(6.0);
+    for (std::size_t i = 0; i < leg.size(); ++i) {
+      if (leg_end[i] != 1 || static_cast<std::size_t>(leg[i]) != k) continue;
+      const double ns = std::hypot(sx, sy), ne = std::hypot(dx[i], dy[i]);
+      if (ns > 0 && ne > 0) {
+        const double cosine = std::clamp((sx * dx[i] + sy * dy[i]) / (ns * ne), -1.0, 1.0);
+        sum += std::acos(cosine) * 180 / std::numbers::pi;
+        ++n;
+      }
+    }
+  }
+  if (n == 0) return std::nullopt;
+  return sum / n;
+}
+
+std::optional<double> ev_at(const TestResult& t, int c) {
+  const auto v = at_cycle_end(t, "volumetric_strain", c);
+  if (!v) return std::nullopt;
+  return 100 * *v;
+}
+
+Measured extreme_test(const DensityResults& r, int c, bool largest) {
+  int best = 0;
+  double best_value = 0;
+  std::ostringstream note;
+  for (const TestResult& t : r.tests)
+    if (const auto v = ev_at(t, c)) {
+      note << "test " << t.number << ": " << *v << " %; ";
+      if (best == 0 || (largest ? *v > best_value : *v < best_value)) best = t.number, best_value = *v;
+    }
+  if (best == 0) return {std::nullopt, "no test reaches the cycle asked for"};
+  return {static_cast<double>(best), note.str()};
+}
+
+using Fn = std::function<Measured(const QuantityRequest&, const DensityResults&)>;
+
+const std::map<std::string, Fn>& registry() {
+  static const std::map<std::string, Fn> fns = {
+      {"void_ratio_after_preparation",
+       [](const QuantityRequest&, const DensityResults& r) -> Measured {
+         if (!r.prepared) return {std::nullopt, "no prepared sample"};
+         return {r.sample.at("void_ratio"), ""};
+       }},
+      {"coordination_after_preparation",
+       [](const QuantityRequest&, const DensityResults& r) -> Measured {
+         if (!r.prepared) return {std::nullopt, "no prepared sample"};
+         return {r.sample.at("coordination_number"), "without rattlers: " + std::to_string(r.sample.at("coordination_number_mechanical"))};
+       }},
+      {"cell_side_cm_after_preparation",
+       [](const QuantityRequest&, const DensityResults& r) -> Measured {
+         if (!r.prepared) return {std::nullopt, "no prepared sample"};
+         const double v = r.sample.at("cell_length_1") * r.sample.at("cell_length_2") * r.sample.at("cell_length_3");
+         return {100 * std::cbrt(v), "cube root of the cell volume"};
+       }},
+      {"qp_strong_fabric_slope",
+       [](const QuantityRequest&, const DensityResults& r) -> Measured {
+         double sxy = 0, sxx = 0, syy = 0;
+         std::size_t n = 0;
+         for (const TestResult& t : r.tests) {
+           const auto& x = t.series.at("strong_fabric_ratio");
+           const auto& y = t.series.at("q_over_p");
+           const auto& leg = t.series.at("leg");
+           for (std::size_t i = 0; i < x.size(); ++i)
+             if (leg[i] >= 0) sxy += x[i] * y[i], sxx += x[i] * x[i], syy += y[i] * y[i], ++n;
+         }
+         if (n < 2 || sxx == 0) return {std::nullopt, "no shearing rows"};
+         const double slope = sxy / sxx;
+         const double r2 = 1 - (syy - 2 * slope * sxy + slope * slope * sxx) / syy;  // uncentred, fit through 0
+         std::ostringstream note;
+         note << "least squares through the origin over " << n << " rows of " << r.tests.size() << " tests, R^2 = " << r2;
+         return {slope, note.str()};
+       }},
+      {"ev_after_cycle",
+       [](const QuantityRequest& q, const DensityResults& r) {
+         return mean_over_tests(r, [&](const TestResult& t) { return ev_at(t, q.cycle); });
+       }},
+      {"ev_growth",
+       [](const QuantityRequest& q, const DensityResults& r) {
+         return mean_over_tests(r, [&](const TestResult& t) { return change(t, "volumetric_strain", q.from_cycle, q.to_cycle, 100); });
+       }},
+      {"ev_growth_magnitude",
+       [](const QuantityRequest& q, const DensityResults& r) {
+         Measured m = mean_over_tests(r, [&](const TestResult& t) { return change(t, "volumetric_strain", q.from_cycle, q.to_cycle, 100); });
+         if (m.value) m.value = std::abs(*m.value);
+         return m;
+       }},
+      {"cn_change",
+       [](const QuantityRequest& q, const DensityResults& r) {
+         return mean_over_tests(r, [&](const TestResult& t) { return change(t, "coordination_number", q.from_cycle, q.to_cycle, 1); });
+       }},
+      {"cn_change_magnitude",
+       [](const QuantityRequest& q, const DensityResults& r) {
+         Measured m = mean_over_tests(r, [&](const TestResult& t) { return change(t, "coordination_number", q.from_cycle, q.to_cycle, 1); });
+         if (m.value) m.value = std::abs(*m.value);
+         return m;
+       }},
+      {"sliding_change",
+       [](const QuantityRequest& q, const DensityResults& r) {
+         return mean_over_tests(r, [&](const TestResult& t) { return change(t, "sliding_fraction", q.from_cycle, q.to_cycle, 100); });
+       }},
+      {"sliding_change_magnitude",
+       [](const QuantityRequest& q, const DensityResults& r) {
+         Measured m = mean_over_tests(r, [&](const TestResult& t) { return change(t, "sliding_fraction", q.from_cycle, q.to_cycle, 100); });
+         if (m.value) m.value = std::abs(*m.value);
+         return m;
+       }},
+      {"test_with_largest_ev", [](const QuantityRequest& q, const DensityResults& r) { return extreme_test(r, q.cycle, true); }},
+      {"test_with_smallest_ev", [](const QuantityRequest& q, const DensityResults& r) { return extreme_test(r, q.cycle, false); }},
+      {"strain_increment_alignment_gain",
+       [](const QuantityRequest& q, const DensityResults& r) {
+         return mean_over_tests(r, [&](const TestResult& t) -> std::optional<double> {
+           const auto a = misalignment(t, q.from_cycle), b = misalignment(t, q.to_cycle);
+           if (!a || !b) return std::nullopt;
+           return *a - *b;
+         });
+       }},
+      {"strain_increment_alignment_gain_magnitude",
+       [](const QuantityRequest& q, const DensityResults& r) {
+         Measured m = mean_over_tests(r, [&](const TestResult& t) -> std::optional<double> {
+           const auto a = misalignment(t, q.from_cycle), b = misalignment(t, q.to_cycle);
+           if (!a || !b) return std::nullopt;
+           return *a - *b;
+         });
+         if (m.value) m.value = std::abs(*m.value);
+         return m;
+       }},
+  };
+  return fns;
+}
+
+}  // namespace
+
+bool known_quantity(const std::string& name) { return registry().count(name) > 0; }
+
+Measured compute(const QuantityRequest& q, const DensityResults& r) {
+  try {
+    return registry().at(q.quantity)(q, r);
+  } catch (const std::out_of_range&) {
+    return {std::nullopt, "a column this quantity needs is missing from the results"};
+  }
+}
+
+}  // namespace validation

@@ -1,0 +1,29 @@
+#pragma once
+// The study's results as the validation reads them: per density, the prepared sample's last row
+// and each test's time series and legs.
+#include <map>
+#include <string>
+#include <vector>
+
+namespace validation {
+
+using Columns = std::map<std::string, std::vector<double>>;
+
+struct TestResult {
+  int number = 0;  // 1..5
+  Columns series;  // /timeseries
+  Columns legs;    // /legs
+};
+
+struct DensityResults {
+  bool prepared = false;
+  std::map<std::string, double> sample;  // last time-series row of the preparation
+  std::vector<TestResult> tests;
+};
+
+// Reads DIR/<density>_prepare.h5 and DIR/<density>_test<N>.h5 (N = 1..5) for each density; files
+// that are missing or not complete are left out and listed in `missing`.
+std::map<std::string, DensityResults> load_results(const std::string& dir, const std::vector<std::string>& densities,
+                                                   std::vector<std::string>& missing);
+
+}  // namespace validation
