@@ -23,7 +23,9 @@ struct Row {
   bool must_pass = false;
 };
 
-std::vector<Row> load_references(const std::string& file) {
+// Rows of the reference file; with profile "quick" only rows that have a `quick` entry, with its
+// tolerance and must_pass (the quick profile's samples are smaller and its tests shorter).
+std::vector<Row> load_references(const std::string& file, const std::string& profile) {
   dem::Section root = dem::Section::load_file(file);
   root.text("source", std::nullopt, "where the reference values come from");
   std::vector<Row> rows;
@@ -42,8 +44,17 @@ std::vector<Row> load_references(const std::string& file) {
     r.cycle = static_cast<int>(s.integer("cycle", 0, 1000, 0, "cycle for per-cycle quantities"));
     r.from_cycle = static_cast<int>(s.integer("from_cycle", 0, 1000, 0, "first cycle of a change"));
     r.to_cycle = static_cast<int>(s.integer("to_cycle", 0, 1000, 0, "last cycle of a change"));
+    bool keep = profile == "paper";
+    if (s.has("quick")) {
+      dem::Section q = s.child("quick", "tolerance and must_pass of the row for the quick profile");
+      const double tol = q.number("tolerance", "", {0, 1e9}, r.tolerance, "tolerance at the quick size");
+      const bool must = q.boolean("must_pass", false, "must pass at the quick size");
+      const std::string why = q.text("reason", std::nullopt, "why the quick tolerance differs");
+      q.finish();
+      if (profile == "quick") r.tolerance = tol, r.must_pass = must, r.reason = why, keep = true;
+    }
     s.finish();
-    rows.push_back(r);
+    if (keep) rows.push_back(r);
   }
   root.finish();
   return rows;
@@ -71,21 +82,23 @@ std::string number(double x) {
 
 int main(int argc, char** argv) {
   namespace fs = std::filesystem;
-  std::string results, references, out;
+  std::string results, references, out, profile = "paper";
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
     if (a == "--results") results = argv[i + 1];
     else if (a == "--references") references = argv[i + 1];
     else if (a == "--out") out = argv[i + 1];
+    else if (a == "--profile") profile = argv[i + 1];
     else { std::fprintf(stderr, "validate: unknown option '%s'\n", a.c_str()); return 2; }
   }
   if (results.empty() || references.empty() || out.empty()) {
-    std::fprintf(stderr, "usage: validate --results DIR --references reference_data/paper.yaml --out DIR\n");
+    std::fprintf(stderr, "usage: validate --results DIR --references reference_data/paper.yaml --out DIR [--profile paper|quick]\n");
     return 2;
   }
   std::vector<Row> rows;
   try {
-    rows = load_references(references);
+    if (profile != "paper" && profile != "quick") throw std::runtime_error("--profile must be paper or quick");
+    rows = load_references(references, profile);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;
@@ -94,7 +107,7 @@ int main(int argc, char** argv) {
   const auto all = validation::load_results(results, {"loose", "medium", "dense"}, missing);
   fs::create_directories(out);
   std::ofstream json(fs::path(out) / "validation.json"), md(fs::path(out) / "validation.md");
-  json << "{\n  \"results\": " << json_string(fs::absolute(results).string()) << ",\n  \"references\": "
+  json << "{\n  \"profile\": " << json_string(profile) << ",\n  \"results\": " << json_string(fs::absolute(results).string()) << ",\n  \"references\": "
        << json_string(references) << ",\n  \"missing_results\": [";
   for (std::size_t i = 0; i < missing.size(); ++i) json << (i ? ", " : "") << json_string(missing[i]);
   json << "],\n  \"rows\": [\n";
