@@ -4,11 +4,14 @@ JOBS     ?= $(shell nproc 2>/dev/null || echo 2)
 PACKAGES := g++ cmake make libeigen3-dev libhdf5-dev libyaml-cpp-dev catch2 gnuplot-nox hdf5-tools
 SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps build test bench quick study samples samples-study cyclic-tests clean
+RESULTS  ?= results/study/paper
 
-# Until the study pipeline (issue 5) exists: build, test, prepare the three samples, run the five
-# cyclic tests on each, and write the sample table.
-all: deps build test samples cyclic-tests
+.PHONY: all deps build test bench quick study report samples samples-study cyclic-tests clean
+
+# Everything: install, build, test, run the full study (reusing finished runs), validate it, draw
+# the figures and write reports/index.md. Fails at the end if a must-pass validation row fails.
+all: deps build test study report
+	$(BUILD)/bin/validate --results $(RESULTS) --references reference_data/paper.yaml --out reports
 
 # Install only the Debian packages that are missing (non-interactive).
 deps:
@@ -23,8 +26,13 @@ build: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
 	cmake --build $(BUILD) -j $(JOBS)
 
+# Unit tests, then a smoke run of the whole pipeline (quick profile, into the build folder) with
+# the validation rows that hold at that size.
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+	$(BUILD)/bin/pipeline pipeline/studies/paper.yaml --profile quick --out $(BUILD)/smoke -j $(JOBS)
+	$(BUILD)/bin/validate --results $(BUILD)/smoke --references reference_data/paper.yaml \
+	  --out $(BUILD)/smoke/validation --profile quick
 
 bench: build
 	$(BUILD)/bin/dem-bench $(BUILD)/bench
@@ -33,9 +41,20 @@ bench: build
 study: build
 	$(BUILD)/bin/pipeline pipeline/studies/paper.yaml --profile paper -j $(JOBS)
 
-# The same with the quick profile (1,000 spheres, at most 2 cycles per repeat block).
+# The same with the quick profile (1,000 spheres, at most 2 cycles per repeat block), validated
+# and drawn into build/quick-report (reports/ is kept for the full study).
 quick: build
 	$(BUILD)/bin/pipeline pipeline/studies/paper.yaml --profile quick -j $(JOBS)
+	-$(BUILD)/bin/validate --results results/study/quick --references reference_data/paper.yaml \
+	  --out $(BUILD)/quick-report --profile quick
+	reports/make_figures.sh $(BUILD)/bin/dem results/study/quick $(BUILD)/quick-report/figures
+	reports/make_report.sh $(BUILD)/bin/dem results/study/quick $(BUILD)/quick-report
+
+# Validation table, figures and reports/index.md from the results of the full study.
+report: build
+	-$(BUILD)/bin/validate --results $(RESULTS) --references reference_data/paper.yaml --out reports
+	reports/make_figures.sh $(BUILD)/bin/dem $(RESULTS) reports/figures
+	reports/make_report.sh $(BUILD)/bin/dem $(RESULTS) reports
 
 # The three preparation scenes of SPEC section 2, full size (8,000 spheres), seed 1; then the table.
 samples: build
