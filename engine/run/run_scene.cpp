@@ -68,6 +68,19 @@ Simulation build_simulation(const SceneConfig& scene) {
 
 namespace {
 
+}  // namespace
+
+HoldStatus hold_status(const Simulation& sim, const StageConfig& st) {
+  const Mat3& s = sim.sums().stress_Pa;
+  HoldStatus h;
+  for (int k = 0; k < 3; ++k) h.stress_error = std::max(h.stress_error, std::abs(s(k, k) - st.target_Pa[k]) / st.target_Pa[k]);
+  h.unbalanced_force_ratio = unbalanced_force_ratio(sim);
+  h.met = h.stress_error <= st.hold.stress_tolerance && h.unbalanced_force_ratio <= st.hold.unbalanced_force_ratio;
+  return h;
+}
+
+namespace {
+
 std::int64_t steps_for(double duration_s, double dt_s) { return std::llround(duration_s / dt_s); }
 
 bool output_due(const Simulation& sim, const SceneConfig& scene) {
@@ -118,11 +131,10 @@ void run_stress_stage(Simulation& sim, const SceneConfig& scene, int index, cons
     if (hooks.row && output_due(sim, scene)) hooks.row(sim, {index});
     const double t_done = static_cast<double>(done) * dt;
     if (t_done >= ramp_end && done % st.hold.check_interval_steps == 0) {
-      const Mat3& s = sim.sums().stress_Pa;
-      stress_error = 0;
-      for (int k = 0; k < 3; ++k) stress_error = std::max(stress_error, std::abs(s(k, k) - st.target_Pa[k]) / st.target_Pa[k]);
-      unbalanced = unbalanced_force_ratio(sim);
-      if (stress_error <= st.hold.stress_tolerance && unbalanced <= st.hold.unbalanced_force_ratio) return;
+      const HoldStatus h = hold_status(sim, st);
+      stress_error = h.stress_error;
+      unbalanced = h.unbalanced_force_ratio;
+      if (h.met) return;
     }
     if (done >= max_steps) {
       std::ostringstream msg;

@@ -44,6 +44,17 @@ struct StageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The equilibrium criteria of a stress stage's hold (SPEC section 2), from the last force
+// evaluation: every principal stress within `hold.stress_tolerance` of its target, and the
+// unbalanced force ratio at most `hold.unbalanced_force_ratio`. The stage checks them every
+// `hold.check_interval` steps once the ramp is over and ends at the first check where they hold.
+struct HoldStatus {
+  double stress_error = 0;            // largest |sigma_kk - target_k| / target_k
+  double unbalanced_force_ratio = 0;
+  bool met = false;
+};
+HoldStatus hold_status(const Simulation& sim, const StageConfig& stage);
+
 // Runs stage `index` of the scene to its end.
 void run_stage(Simulation& sim, const SceneConfig& scene, int index, const StageHooks& hooks);
 
