@@ -139,31 +139,13 @@ const std::map<std::string, Fn>& registry() {
        [](const QuantityRequest& q, const DensityResults& r) {
          return mean_over_tests(r, [&](const TestResult& t) { return change(t, "volumetric_strain", q.from_cycle, q.to_cycle, 100); });
        }},
-      {"ev_growth_magnitude",
-       [](const QuantityRequest& q, const DensityResults& r) {
-         Measured m = mean_over_tests(r, [&](const TestResult& t) { return change(t, "volumetric_strain", q.from_cycle, q.to_cycle, 100); });
-         if (m.value) m.value = std::abs(*m.value);
-         return m;
-       }},
       {"cn_change",
        [](const QuantityRequest& q, const DensityResults& r) {
          return mean_over_tests(r, [&](const TestResult& t) { return change(t, "coordination_number", q.from_cycle, q.to_cycle, 1); });
        }},
-      {"cn_change_magnitude",
-       [](const QuantityRequest& q, const DensityResults& r) {
-         Measured m = mean_over_tests(r, [&](const TestResult& t) { return change(t, "coordination_number", q.from_cycle, q.to_cycle, 1); });
-         if (m.value) m.value = std::abs(*m.value);
-         return m;
-       }},
       {"sliding_change",
        [](const QuantityRequest& q, const DensityResults& r) {
          return mean_over_tests(r, [&](const TestResult& t) { return change(t, "sliding_fraction", q.from_cycle, q.to_cycle, 100); });
-       }},
-      {"sliding_change_magnitude",
-       [](const QuantityRequest& q, const DensityResults& r) {
-         Measured m = mean_over_tests(r, [&](const TestResult& t) { return change(t, "sliding_fraction", q.from_cycle, q.to_cycle, 100); });
-         if (m.value) m.value = std::abs(*m.value);
-         return m;
        }},
       {"test_with_largest_ev", [](const QuantityRequest& q, const DensityResults& r) { return extreme_test(r, q.cycle, true); }},
       {"test_with_smallest_ev", [](const QuantityRequest& q, const DensityResults& r) { return extreme_test(r, q.cycle, false); }},
@@ -175,27 +157,28 @@ const std::map<std::string, Fn>& registry() {
            return *a - *b;
          });
        }},
-      {"strain_increment_alignment_gain_magnitude",
-       [](const QuantityRequest& q, const DensityResults& r) {
-         Measured m = mean_over_tests(r, [&](const TestResult& t) -> std::optional<double> {
-           const auto a = misalignment(t, q.from_cycle), b = misalignment(t, q.to_cycle);
-           if (!a || !b) return std::nullopt;
-           return *a - *b;
-         });
-         if (m.value) m.value = std::abs(*m.value);
-         return m;
-       }},
   };
   return fns;
 }
 
 }  // namespace
 
-bool known_quantity(const std::string& name) { return registry().count(name) > 0; }
+// "<quantity>_magnitude" is the absolute value of <quantity> (for "hardly changes" statements).
+const std::string magnitude_suffix = "_magnitude";
+
+std::string base_name(const std::string& name) {
+  const bool magnitude = name.size() > magnitude_suffix.size() &&
+                         name.compare(name.size() - magnitude_suffix.size(), magnitude_suffix.size(), magnitude_suffix) == 0;
+  return magnitude ? name.substr(0, name.size() - magnitude_suffix.size()) : name;
+}
+
+bool known_quantity(const std::string& name) { return registry().count(base_name(name)) > 0; }
 
 Measured compute(const QuantityRequest& q, const DensityResults& r) {
   try {
-    return registry().at(q.quantity)(q, r);
+    Measured m = registry().at(base_name(q.quantity))(q, r);
+    if (m.value && base_name(q.quantity) != q.quantity) m.value = std::abs(*m.value);
+    return m;
   } catch (const std::out_of_range&) {
     return {std::nullopt, "a column this quantity needs is missing from the results"};
   }
