@@ -9,13 +9,13 @@ out=${2:-$here/results/samples}
 jobs=${JOBS:-2}
 mkdir -p "$out"
 
-list() {  # density n seed damping; full-size seeds 2 and 3 only with FULL=1 (hours)
+list() {  # density n seed damping; full-size seeds 2 and 3, and local damping beyond 1,000 spheres, only with FULL=1
   for n in 10 15 20; do
     for seed in 1 2 3; do
       [ "$n" = 20 ] && [ "$seed" != 1 ] && [ "${FULL:-0}" != 1 ] && continue
       for d in dense medium loose; do echo "$d $n $seed viscous"; done
     done
-    for d in dense medium loose; do echo "$d $n 1 local"; done
+    [ "$n" = 10 ] || [ "${FULL:-0}" = 1 ] && for d in dense medium loose; do echo "$d $n 1 local"; done
   done
 }
 
