@@ -84,7 +84,7 @@ Outcome execute(const std::vector<PlannedRun>& runs, const std::string& dem, int
     const double workers = std::max(1.0, std::min<double>(jobs, static_cast<double>(running.size())));
     const double elapsed = std::chrono::duration<double>(clock::now() - start).count();
     std::printf("[pipeline %s] %s; %d ran, %d reused, %d failed, %zu running; ETA %s\n", minutes(elapsed).c_str(),
-                what.c_str(), out.ran, out.reused, out.failed, running.size(), minutes(cost_left / rate / workers).c_str());
+                what.c_str(), out.ran, out.reused, out.failed, running.size(), minutes(std::max(0.0, cost_left) / rate / workers).c_str());
     std::fflush(stdout);
   };
   while (true) {
