@@ -47,7 +47,8 @@ ContactCounts count_contacts(const Simulation& sim, bool keep_normals) {
     ++per_particle[i];
     ++per_particle[j];
   }
-  c.stress_Pa = 0.5 * (c.stress_Pa + c.stress_Pa.transpose()) / sim.cell().volume();
+  const Mat3 sum = c.stress_Pa;  // a copy: assigning (A + A^T) to A itself aliases in Eigen
+  c.stress_Pa = 0.5 * (sum + sum.transpose()) / sim.cell().volume();
   c.mean_normal_force_N = c.contacts ? sum_fn / static_cast<double>(c.contacts) : 0.0;
   for (unsigned n : per_particle) {
     if (n == 0) ++c.particles_no_contact;

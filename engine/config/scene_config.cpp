@@ -196,7 +196,8 @@ std::string emit_resolved(const SceneConfig& c) {
       << YAML::Value << c.time_step_s << YAML::Key << "max_time_step_fraction" << YAML::Value
       << c.max_time_step_fraction << YAML::Key << "verlet_skin" << YAML::Value << c.verlet_skin_m << YAML::EndMap;
   out << YAML::Key << "servo" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "gain" << YAML::Value
-      << c.servo.gain << YAML::EndMap;
+      << c.servo.gain << YAML::Key << "adapt_window" << YAML::Value << c.servo.adapt_window_steps << YAML::Key
+      << "min_stiffness_ratio" << YAML::Value << c.servo.min_stiffness_ratio << YAML::EndMap;
   out << YAML::Key << "output" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "interval"
       << YAML::Value << c.output.interval_steps << YAML::Key << "flush_rows" << YAML::Value << c.output.flush_rows
       << YAML::EndMap;
@@ -267,6 +268,10 @@ static SceneConfig parse_scene(Section root, const std::string& file) {
   {
     Section s = root.optional_child("servo", "stress servo of stress-controlled axes");
     c.servo.gain = s.number("gain", "", {0, 1, true}, 1e-3, "fraction of the stress error removed per step");
+    c.servo.adapt_window_steps = static_cast<int>(s.integer("adapt_window", 0, 1000000, 250,
+        "steps between updates of the learnt stiffness ratio of stress stages (0: off, affine stiffness)"));
+    c.servo.min_stiffness_ratio = s.number("min_stiffness_ratio", "", {0, 1, true}, 0.05,
+                                           "lower bound of the learnt stiffness ratio");
     s.finish();
   }
   {

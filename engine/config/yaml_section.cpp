@@ -97,7 +97,8 @@ void apply_override(YAML::Node root, const std::string& file, const std::string&
       throw ConfigError(file + ": --set " + path + ": '" + segments[i] + "' is not a key (letters, digits, _, optional [index])");
     if (!done.empty()) done += '.';
     done += m[1].str();
-    if (!node.IsMap() && !node.IsNull()) throw ConfigError(file + ": --set " + path + ": '" + done + "' is inside a non-mapping");
+    if (node.IsDefined() && !node.IsMap() && !node.IsNull())
+      throw ConfigError(file + ": --set " + path + ": '" + done + "' is inside a non-mapping");
     const bool last = i + 1 == segments.size();
     if (last && !m[2].matched) {
       YAML::Node v;

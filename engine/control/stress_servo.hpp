@@ -27,11 +27,34 @@ struct AxisTarget {
 struct ServoSettings {
   double gain = 1e-3;                // fraction of the stress error removed per step [-]
   double max_strain_rate_per_s = 1;  // cap on |strain rate| of a stress-controlled axis [1/s]
+  int adapt_window_steps = 250;      // AdaptiveServo: steps between stiffness-ratio updates (0: off)
+  double min_stiffness_ratio = 0.05; // AdaptiveServo: lower bound of the learnt ratio kappa
 };
 
 using CellTargets = std::array<AxisTarget, 3>;
 
 Vec3 servo_strain_rates(const CellTargets& targets, const Mat3& stress_Pa, const Vec3& stiffness_Pa,
                         const ServoSettings& settings, double dt_s);
+
+// The servo above with a learnt stiffness. A packing is softer than affine (particles rearrange,
+// contacts slide): with real stiffness kappa K the servo above settles, on a ramp at rate r, to a
+// lag e = r dt (1 - kappa) / (gain kappa), 18 % of p for kappa = 0.1 at the paper's 2 MPa/s. So
+// every `adapt_window_steps` steps each stress-controlled axis compares the stress change it
+// measured with the change K dt sum(rate) the affine stiffness predicted, and uses
+// kappa K (kappa = their ratio, smoothed, in [min_stiffness_ratio, 1], at most halved or doubled
+// per window) in both terms. With kappa learnt the ramp lag vanishes.
+class AdaptiveServo {
+ public:
+  explicit AdaptiveServo(const ServoSettings& settings) : settings_(settings) {}
+  Vec3 rates(const CellTargets& targets, const Mat3& stress_Pa, const Vec3& stiffness_Pa, double dt_s);
+  const Vec3& stiffness_ratio() const { return kappa_; }
+
+ private:
+  ServoSettings settings_;
+  Vec3 kappa_ = Vec3::Ones();
+  Vec3 predicted_ = Vec3::Zero();     // affine prediction of the stress change in this window [Pa]
+  Vec3 window_start_ = Vec3::Zero();  // stress at the window start [Pa]
+  int steps_ = -1;                    // steps in the window; -1 before the first call
+};
 
 }  // namespace dem

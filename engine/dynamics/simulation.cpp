@@ -69,6 +69,14 @@ void Simulation::restore(std::int64_t step, const Vec3& strain_rate, PairList co
 }
 
 void Simulation::step(const CellTargets& targets, const ServoSettings& servo) {
+  advance([&] { return servo_strain_rates(targets, sums_.stress_Pa, sums_.stiffness_Pa, servo, dt_); });
+}
+
+void Simulation::step(const CellTargets& targets, AdaptiveServo& servo) {
+  advance([&] { return servo.rates(targets, sums_.stress_Pa, sums_.stiffness_Pa, dt_); });
+}
+
+void Simulation::advance(const std::function<Vec3()>& strain_rates) {
   if (list_.needs_rebuild(particles_, cell_)) list_.build(particles_, cell_);
   kernel_->forces(*this);
   if (!sums_.stress_Pa.allFinite()) {
@@ -76,7 +84,7 @@ void Simulation::step(const CellTargets& targets, const ServoSettings& servo) {
     msg << "non-finite contact stress at step " << step_ << " (time " << time() << " s)";
     throw NonFiniteError(msg.str());
   }
-  strain_rate_ = servo_strain_rates(targets, sums_.stress_Pa, sums_.stiffness_Pa, servo, dt_);
+  strain_rate_ = strain_rates();
   kinetic_energy_ = kernel_->integrate(*this);
   if (!std::isfinite(kinetic_energy_)) {
     std::ostringstream msg;

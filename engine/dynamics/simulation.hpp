@@ -12,6 +12,7 @@
 // The contact law (friction or not) and the damping form are chosen once, when the simulation is
 // built; the per-step loop is a monomorphic template (see dynamics/kernel.hpp).
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -65,6 +66,8 @@ class Simulation {
   Simulation& operator=(Simulation&&) noexcept;
 
   void step(const CellTargets& targets, const ServoSettings& servo);
+  // The same with a servo that learns the packing's stiffness (stress stages and paths).
+  void step(const CellTargets& targets, AdaptiveServo& servo);
 
   const Particles& particles() const { return particles_; }
   const PeriodicCell& cell() const { return cell_; }
@@ -90,6 +93,8 @@ class Simulation {
  private:
   template <class Friction, class DampingPolicy>
   friend struct KernelImpl;
+  // One step, the fixed order above; `strain_rates` is called after the force evaluation.
+  void advance(const std::function<Vec3()>& strain_rates);
   Particles particles_;
   PeriodicCell cell_;
   Material material_;

@@ -114,7 +114,9 @@ void run_stress_stage(Simulation& sim, const SceneConfig& scene, int index, cons
   }
   const double ramp_end = ramp_time.maxCoeff();
   const std::int64_t max_steps = steps_for(st.hold.max_duration_s, dt);
-  const ServoSettings servo{scene.servo.gain, st.max_strain_rate_per_s};
+  ServoSettings settings = scene.servo;
+  settings.max_strain_rate_per_s = st.max_strain_rate_per_s;
+  AdaptiveServo servo(settings);
   CellTargets targets;
   double stress_error = 0, unbalanced = 1;
   for (std::int64_t i = 0;; ++i) {
@@ -167,7 +169,9 @@ void run_stress_path_stage(Simulation& sim, const SceneConfig& scene, int index,
   const double dt = sim.time_step();
   const double p = st.mean_stress_Pa;
   const std::vector<PathLeg> legs = expand_path(st.path, named_state("A", p, st.stress_ratio), st.stress_rate_Pa_per_s);
-  const ServoSettings servo{scene.servo.gain, st.max_strain_rate_per_s};
+  ServoSettings settings = scene.servo;
+  settings.max_strain_rate_per_s = st.max_strain_rate_per_s;
+  AdaptiveServo servo(settings);
   const double inertia_scale = mean_diameter(sim.particles()) * std::sqrt(sim.material().density_kg_per_m3);
   std::int64_t total_steps = 0, done_steps = 0;
   for (const PathLeg& leg : legs) total_steps += std::max<std::int64_t>(1, steps_for(leg.duration_s, dt));
