@@ -1,0 +1,93 @@
+// The pipeline's plan of the paper study: runs, dependencies, resolved scenes and input hashes.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <string>
+
+#include "config/scene_config.hpp"
+#include "config/study_config.hpp"
+#include "exec/scheduler.hpp"
+#include "plan/run_plan.hpp"
+
+namespace {
+const std::string study_file = std::string(DEM_SOURCE_DIR) + "/pipeline/studies/paper.yaml";
+const std::string out = std::string(DEM_BINARY_DIR) + "/test_tmp/plan";
+}  // namespace
+
+TEST_CASE("content_hash is FNV-1a 64", "[pipeline]") {
+  // Published FNV-1a 64 test vectors: "" -> cbf29ce484222325, "a" -> af63dc4c8601ec8c.
+  CHECK(pipeline::content_hash("") == "cbf29ce484222325");
+  CHECK(pipeline::content_hash("a") == "af63dc4c8601ec8c");
+}
+
+TEST_CASE("the paper study plans a preparation per density and every test after it", "[pipeline]") {
+  const pipeline::Study study = pipeline::load_study(study_file);
+  const auto runs = pipeline::plan_study(study, study.profile("quick"), out, "engine-A");
+  REQUIRE(runs.size() == 3 * (1 + 5));
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const auto& r = runs[i];
+    names.insert(r.name);
+    const bool prep = r.name.find("_prepare") != std::string::npos;
+    if (prep) {
+      CHECK(r.depends_on == -1);
+      // The quick profile's lattice: 10^3 spheres, with the density's friction.
+      const dem::SceneConfig s = dem::scene_from_text(r.scene_text, r.scene_file);
+      CHECK(s.particles.lattice.n[0] == 10);
+    } else {
+      REQUIRE(r.depends_on >= 0);
+      const auto& p = runs[static_cast<std::size_t>(r.depends_on)];
+      CHECK(p.name.substr(0, p.name.find('_')) == r.name.substr(0, r.name.find('_')));  // same density
+      CHECK(static_cast<std::size_t>(r.depends_on) < i);                             // planned before
+      const dem::SceneConfig s = dem::scene_from_text(r.scene_text, r.scene_file);
+      CHECK(s.particles.path == std::filesystem::absolute(p.result).string());
+      // max_repeat: 2 caps every repeat block of the quick profile.
+      for (const auto& item : s.stages[0].path) CHECK(item.repeat <= 2);
+    }
+    CHECK(r.cost > 0);
+  }
+  CHECK(names.size() == runs.size());
+  const dem::SceneConfig loose = dem::scene_from_text(runs[0].scene_text, runs[0].scene_file);
+  CHECK(loose.material.friction == 0.5);
+}
+
+TEST_CASE("input hashes change with the engine, the scene and the sample a test starts from", "[pipeline]") {
+  const pipeline::Study study = pipeline::load_study(study_file);
+  const auto a = pipeline::plan_study(study, study.profile("quick"), out, "engine-A");
+  const auto a2 = pipeline::plan_study(study, study.profile("quick"), out, "engine-A");
+  const auto b = pipeline::plan_study(study, study.profile("quick"), out, "engine-B");
+  const auto paper = pipeline::plan_study(study, study.profile("paper"), out, "engine-A");
+  std::set<std::string> hashes;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    CHECK(a[i].hash == a2[i].hash);      // deterministic
+    CHECK(a[i].hash != b[i].hash);       // engine version
+    CHECK(a[i].hash != paper[i].hash);   // profile changes the resolved scene (preparation) or the sample (tests)
+    hashes.insert(a[i].hash);
+  }
+  CHECK(hashes.size() == a.size());
+}
+
+TEST_CASE("a result counts as up to date only if complete with the same input hash", "[pipeline]") {
+  std::filesystem::create_directories(out);
+  const std::string missing = out + "/does_not_exist.h5";
+  CHECK_FALSE(pipeline::up_to_date(missing, "x"));
+  const std::string garbage = out + "/garbage.h5";
+  { std::ofstream(garbage) << "not an HDF5 file"; }
+  CHECK_FALSE(pipeline::up_to_date(garbage, "x"));  // a truncated or corrupt file is run again
+}
+
+TEST_CASE("a study with an unknown profile or a missing scene is refused naming the key", "[pipeline]") {
+  const pipeline::Study study = pipeline::load_study(study_file);
+  CHECK_THROWS_WITH(study.profile("huge"), Catch::Matchers::Contains("no profile 'huge'") &&
+                                               Catch::Matchers::Contains("paper, quick"));
+  std::filesystem::create_directories(out);
+  const std::string bad = out + "/bad_study.yaml";
+  {
+    std::ofstream f(bad);
+    f << "name: bad\noutput: x\npreparation: nowhere.yaml\ndensities: [{name: loose, friction: 0.5}]\n"
+         "tests: [{name: t, scene: nowhere.yaml}]\nprofiles: {paper: {}, quick: {}}\n";
+  }
+  CHECK_THROWS_WITH(pipeline::load_study(bad), Catch::Matchers::Contains("preparation: no such file"));
+}
