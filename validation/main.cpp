@@ -71,6 +71,16 @@ std::string json_string(const std::string& s) {
   return out + "\"";
 }
 
+// A Markdown table cell: '|' would end the cell.
+std::string cell(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    if (c == '|') out += '\\';
+    out += c;
+  }
+  return out;
+}
+
 std::string number(double x) {
   std::ostringstream s;
   s.precision(6);
@@ -135,10 +145,10 @@ int main(int argc, char** argv) {
          << ", \"must_pass\": " << (r.must_pass ? "true" : "false") << ", \"source\": " << json_string(r.source)
          << ", \"reason\": " << json_string(r.reason) << ", \"note\": " << json_string(m.note) << "}"
          << (i + 1 < rows.size() ? "," : "") << "\n";
-    md << "| " << r.name << " | " << (m.value ? number(*m.value) : "—") << " | " << number(r.reference) << " | " << tol
+    md << "| " << cell(r.name) << " | " << (m.value ? number(*m.value) : "—") << " | " << number(r.reference) << " | " << tol
        << " | " << (m.value && r.check == "within" ? number(*m.value - r.reference) : "") << " | "
-       << (pass ? "✅ pass" : "❌ fail") << " | " << (r.must_pass ? "yes" : "no") << " | " << r.source << " | "
-       << r.reason << " | " << m.note << " |\n";
+       << (pass ? "✅ pass" : "❌ fail") << " | " << (r.must_pass ? "yes" : "no") << " | " << cell(r.source) << " | "
+       << cell(r.reason) << " | " << cell(m.note) << " |\n";
   }
   json << "  ],\n  \"passed\": " << passed << ",\n  \"total\": " << rows.size() << ",\n  \"must_pass_failed\": "
        << failed_must << "\n}\n";
