@@ -16,7 +16,8 @@ files=("$dir"/*_n*_s*_*.h5)
     key = f[1] " " f[2] " " f[4]
     if (!(key in count)) order[++groups] = key
     count[key]++
-    L = ($col["cell_length_1"] * $col["cell_length_2"] * $col["cell_length_3"]) ^ (1 / 3) * 100
+    np = substr(f[2], 2) ^ 3        # scale the side to the 8,000-sphere sample the paper reports
+    L = ($col["cell_length_1"] * $col["cell_length_2"] * $col["cell_length_3"] * 8000 / np) ^ (1 / 3) * 100
     v[key, "e0"] += $col["void_ratio"];              s[key, "e0"] += $col["void_ratio"] ^ 2
     v[key, "L"] += L;                                  s[key, "L"] += L ^ 2
     v[key, "cn"] += $col["coordination_number"];     s[key, "cn"] += $col["coordination_number"] ^ 2
@@ -37,7 +38,7 @@ files=("$dir"/*_n*_s*_*.h5)
     ref_e["loose"] = 0.73; ref_e["medium"] = 0.67; ref_e["dense"] = 0.57
     ref_z["loose"] = 4.09; ref_z["medium"] = 4.88; ref_z["dense"] = 5.94
     ref_L["loose"] = 7.3; ref_L["medium"] = 7.2; ref_L["dense"] = 7.1
-    print "| sample | particles | damping | seeds | e0 (paper) | Δe0 | cell side cm (paper) | CN (paper) | ΔCN | CN w/o rattlers | sliding % | mean f_n (N) | unbalanced | steps | wall time (s) |"
+    print "| sample | particles | damping | seeds | e0 (paper) | Δe0 | cell side cm, 8,000-sphere equivalent (paper) | CN (paper) | ΔCN | CN w/o rattlers | sliding % | mean f_n (N) | unbalanced | steps | wall time (s) |"
     print "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
     for (g = 1; g <= groups; g++) {
       key = order[g]; split(key, k, " ")
