@@ -24,7 +24,7 @@ set terminal pngcairo size 900,650 font ",12"
 set output "$figs/fig01_grading.png"
 set title "Fig. 1  Grain size distribution (d_{min} = 3 mm, d_{50} = 3.7 mm, d_{max} = 4.5 mm)"
 set xlabel "diameter d (mm)"; set ylabel "percent finer (%)"
-set xrange [2.9:4.6]; set yrange [0:105]; set grid; set key right bottom box opaque
+set xrange [2.9:4.6]; set yrange [0:105]; set grid; set key left top Left reverse box opaque font ",10"
 plot "$figs/fig01_grading_target.dat" w lp lw 3 pt 7 ps 1.5 lc rgb "black" t "target curve (SPEC: percent finer by mass)", \
      "$figs/fig01_grading_mass_basis.dat" u 1:2 w l lw 2 lc rgb "#1f77b4" t "realised by mass, 8,000 spheres sampled by mass (default)", \
      "$figs/fig01_grading_mass_basis.dat" u 1:3 w l lw 2 dt 2 lc rgb "#1f77b4" t "   same sample, percent finer by count"$( [ -f "$figs/fig01_grading_number_basis.dat" ] && printf '%s' ", \\
