@@ -90,13 +90,16 @@ double deviator_stress(const Mat3& stress_Pa) {
   return std::sqrt(0.5 * ((s[0] - s[1]) * (s[0] - s[1]) + (s[1] - s[2]) * (s[1] - s[2]) + (s[0] - s[2]) * (s[0] - s[2])));
 }
 
+double mean_diameter(const Particles& p) {
+  double d = 0;
+  for (double r : p.radius) d += 2 * r;
+  return p.size() ? d / static_cast<double>(p.size()) : 0.0;
+}
+
 double inertial_number(const Simulation& sim, double p) {
   if (p <= 0) return 0.0;
   const Particles& parts = sim.particles();
-  double d_mean = 0;
-  for (double r : parts.radius) d_mean += 2 * r;
-  d_mean /= static_cast<double>(parts.size());
-  return sim.strain_rate().cwiseAbs().maxCoeff() * d_mean * std::sqrt(sim.material().density_kg_per_m3 / p);
+  return sim.strain_rate().cwiseAbs().maxCoeff() * mean_diameter(parts) * std::sqrt(sim.material().density_kg_per_m3 / p);
 }
 
 }  // namespace dem

@@ -36,6 +36,8 @@ double unbalanced_force_ratio(const Simulation& sim);
 double translational_kinetic_energy(const Particles& p);  // of the fluctuating velocities [J]
 double rotational_kinetic_energy(const Particles& p);     // [J]
 
+double mean_diameter(const Particles& p);  // [m]
+
 // Inertial number I = max_k |rate_k| d_mean sqrt(rho / p) with the last applied strain rates and
 // the mean stress p given; 0 if p <= 0.
 double inertial_number(const Simulation& sim, double p_Pa);

@@ -81,6 +81,13 @@ HoldStatus hold_status(const Simulation& sim, const StageConfig& st) {
 
 namespace {
 
+// The servo of a stress stage or path: the scene's settings with the stage's strain-rate cap.
+AdaptiveServo stage_servo(const SceneConfig& scene, const StageConfig& st) {
+  ServoSettings settings = scene.servo;
+  settings.max_strain_rate_per_s = st.max_strain_rate_per_s;
+  return AdaptiveServo(settings);
+}
+
 std::int64_t steps_for(double duration_s, double dt_s) { return std::llround(duration_s / dt_s); }
 
 bool output_due(const Simulation& sim, const SceneConfig& scene) {
@@ -114,9 +121,7 @@ void run_stress_stage(Simulation& sim, const SceneConfig& scene, int index, cons
   }
   const double ramp_end = ramp_time.maxCoeff();
   const std::int64_t max_steps = steps_for(st.hold.max_duration_s, dt);
-  ServoSettings settings = scene.servo;
-  settings.max_strain_rate_per_s = st.max_strain_rate_per_s;
-  AdaptiveServo servo(settings);
+  AdaptiveServo servo = stage_servo(scene, st);
   CellTargets targets;
   double stress_error = 0, unbalanced = 1;
   for (std::int64_t i = 0;; ++i) {
@@ -154,11 +159,6 @@ void run_stress_stage(Simulation& sim, const SceneConfig& scene, int index, cons
   }
 }
 
-double mean_diameter(const Particles& p) {
-  double d = 0;
-  for (double r : p.radius) d += 2 * r;
-  return d / static_cast<double>(p.size());
-}
 
 // Straight legs between stress states at constant mean stress (SPEC section 3). Each leg moves
 // the targets linearly so that the principal stress changing most moves at the stage rate; the
@@ -169,9 +169,7 @@ void run_stress_path_stage(Simulation& sim, const SceneConfig& scene, int index,
   const double dt = sim.time_step();
   const double p = st.mean_stress_Pa;
   const std::vector<PathLeg> legs = expand_path(st.path, named_state("A", p, st.stress_ratio), st.stress_rate_Pa_per_s);
-  ServoSettings settings = scene.servo;
-  settings.max_strain_rate_per_s = st.max_strain_rate_per_s;
-  AdaptiveServo servo(settings);
+  AdaptiveServo servo = stage_servo(scene, st);
   const double inertia_scale = mean_diameter(sim.particles()) * std::sqrt(sim.material().density_kg_per_m3);
   std::int64_t total_steps = 0, done_steps = 0;
   for (const PathLeg& leg : legs) total_steps += std::max<std::int64_t>(1, steps_for(leg.duration_s, dt));
