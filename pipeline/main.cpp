@@ -1,7 +1,8 @@
 // pipeline: runs a study (every density x test) with the dem engine, reusing finished results.
-//   pipeline STUDY.yaml [--profile paper|quick] [--out DIR] [-j N] [--dem PATH] [--plan]
+//   pipeline STUDY.yaml [--profile paper|quick] [--out DIR] [-j N] [--threads T] [--dem PATH] [--plan]
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -15,9 +16,10 @@
 namespace {
 
 const char* usage =
-    "usage: pipeline STUDY.yaml [--profile paper|quick] [--out DIR] [-j N] [--dem PATH] [--plan]\n"
+    "usage: pipeline STUDY.yaml [--profile paper|quick] [--out DIR] [-j N] [--threads T] [--dem PATH] [--plan]\n"
     "  --profile  study size (default paper)        --out  results folder (default: the study's output/PROFILE)\n"
     "  -j         runs at once (default: cores)     --dem  the engine (default: dem beside this program)\n"
+    "  --threads  threads inside each run (default: cores / runs at once, at least 1; results do not depend on it)\n"
     "  --plan     write the resolved scenes and list the runs, run nothing\n"
     "A run whose result is complete with the same input hash (resolved scene, engine version and the\n"
     "sample it starts from) is reused, so an interrupted study continues where it stopped.\n";
@@ -42,6 +44,7 @@ int main(int argc, char** argv) {
   namespace fs = std::filesystem;
   std::string study_file, profile = "paper", out, dem;
   int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  int threads = 0;  // 0: cores / jobs
   bool plan_only = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -52,10 +55,14 @@ int main(int argc, char** argv) {
     else if (a == "-j" && i + 1 < argc) {
       try { jobs = std::stoi(argv[++i]); } catch (const std::exception&) { jobs = 0; }
       if (jobs < 1 || jobs > 256) { std::fprintf(stderr, "pipeline: -j must be an integer in [1, 256]\n"); return 2; }
+    } else if (a == "--threads" && i + 1 < argc) {
+      try { threads = std::stoi(argv[++i]); } catch (const std::exception&) { threads = 0; }
+      if (threads < 1 || threads > 256) { std::fprintf(stderr, "pipeline: --threads must be an integer in [1, 256]\n"); return 2; }
     } else if (a == "--plan") plan_only = true;
     else if (!a.empty() && a[0] != '-' && study_file.empty()) study_file = a;
     else { std::fprintf(stderr, "pipeline: unexpected argument '%s'\n%s", a.c_str(), usage); return 2; }
   }
+  if (threads == 0) threads = std::max(1, static_cast<int>(std::max(1u, std::thread::hardware_concurrency())) / jobs);
   if (study_file.empty()) { std::fprintf(stderr, "pipeline: need a study file\n%s", usage); return 2; }
   if (dem.empty()) dem = (fs::canonical("/proc/self/exe").parent_path() / "dem").string();
   const std::string version = engine_version(dem);
@@ -75,7 +82,7 @@ int main(int argc, char** argv) {
     }
     std::printf("[pipeline] study '%s', profile %s, engine %s, results in %s\n", study.name.c_str(), profile.c_str(),
                 version.c_str(), out.c_str());
-    const pipeline::Outcome o = pipeline::execute(runs, dem, jobs);
+    const pipeline::Outcome o = pipeline::execute(runs, dem, jobs, threads);
     std::printf("[pipeline] done in %.1f min: %d ran, %d reused, %d failed, %d blocked\n", o.wall_time_s / 60, o.ran,
                 o.reused, o.failed, o.blocked);
     return o.failed + o.blocked > 0 ? 1 : 0;

@@ -52,10 +52,12 @@ class PeriodicCell {
   // of more than a cell in one step, or NaN): the run has become unstable.
   static bool wrap(Vec3& s) {
     bool ok = true;
-    for (int k = 0; k < 3; ++k) {
-      if (s[k] < 0.0) s[k] += 1.0;
-      if (s[k] >= 1.0) s[k] -= 1.0;  // also catches -1e-17 + 1 == 1.0
-      ok = ok && s[k] >= 0.0 && s[k] < 1.0;
+    for (int k = 0; k < 3; ++k) {  // selects, not branches: the compiler emits blends
+      double x = s[k];
+      x += x < 0.0 ? 1.0 : 0.0;
+      x -= x >= 1.0 ? 1.0 : 0.0;  // also catches -1e-17 + 1 == 1.0
+      s[k] = x;
+      ok &= (x >= 0.0) & (x < 1.0);
     }
     return ok;
   }

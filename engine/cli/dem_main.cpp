@@ -2,10 +2,12 @@
 //   dem run SCENE.yaml --out RESULT.h5     run a scene, write its result
 //   dem keys                               the reference of every scene key
 //   dem --help
+#include <omp.h>
 #include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <filesystem>
@@ -26,9 +28,11 @@ namespace {
 
 const char* usage =
     "usage:\n"
-    "  dem run SCENE.yaml --out RESULT.h5 [--set KEY=VALUE ...] [--quiet]\n"
+    "  dem run SCENE.yaml --out RESULT.h5 [--set KEY=VALUE ...] [--threads N] [--quiet]\n"
     "                                                 run a scene and write its result (HDF5); --set\n"
     "                                                 overrides a key, e.g. --set particles.lattice.seed=2;\n"
+    "                                                 --threads: threads inside the run (default 1; the\n"
+    "                                                 result is bit for bit the same for any count);\n"
     "                                                 --input-hash H is recorded in the result (pipeline)\n"
     "  dem keys                                       list every scene key with unit, range, default\n"
     "  dem table RESULT.h5 [--legs] [COLUMN ...]      print time-series (or per-leg) columns as\n"
@@ -46,11 +50,22 @@ int run(int argc, char** argv) {
   bool quiet = false;
   std::vector<std::pair<std::string, std::string>> overrides;
   std::string input_hash;
+  int threads = 1;
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--out" && i + 1 < argc) out = argv[++i];
     else if (a == "--quiet") quiet = true;
     else if (a == "--input-hash" && i + 1 < argc) input_hash = argv[++i];
+    else if (a == "--threads" && i + 1 < argc) {
+      const std::string t = argv[++i];
+      char* end = nullptr;
+      const long n = std::strtol(t.c_str(), &end, 10);
+      if (end == t.c_str() || *end != '\0' || n < 1 || n > 256) {
+        std::fprintf(stderr, "dem run: --threads must be an integer in [1, 256], got '%s'\n", t.c_str());
+        return 2;
+      }
+      threads = static_cast<int>(n);
+    }
     else if (a == "--set" && i + 1 < argc) {
       const std::string kv = argv[++i];
       const auto eq = kv.find('=');
@@ -72,6 +87,7 @@ int run(int argc, char** argv) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;
   }
+  omp_set_num_threads(threads);
   try {
     const bool progress = !quiet && isatty(STDERR_FILENO);
     const dem::RunSummary s = dem::run_scene(scene, out, progress, input_hash);

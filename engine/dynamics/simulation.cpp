@@ -26,10 +26,11 @@ struct KernelImpl final : Simulation::Kernel {
   DampingPolicy damping;
   KernelImpl(LinearSpring<Friction> l, DampingPolicy d) : law(l), damping(std::move(d)) {}
   void forces(Simulation& s) override {
-    compute_forces(law, s.particles_, s.cell_, s.list_.pairs(), s.strain_rate_, s.dt_, s.force_, s.torque_, s.sums_);
+    compute_forces(law, s.particles_, s.cell_, s.list_.pairs(), s.strain_rate_, s.dt_, *s.pair_forces_, s.sums_);
   }
   double integrate(Simulation& s) override {
-    return dem::integrate<Friction::has_tangential>(damping, s.particles_, s.cell_, s.force_, s.torque_, s.dt_);
+    return dem::integrate<Friction::has_tangential>(damping, s.particles_, s.cell_, s.list_.index(), *s.pair_forces_,
+                                                    s.force_, s.dt_);
   }
 };
 
@@ -50,7 +51,8 @@ Simulation::Simulation(Particles particles, PeriodicCell cell, Material material
       material_(material),
       damping_(damping),
       dt_(time_step_s),
-      list_(verlet_skin_m, material.friction > 0) {
+      list_(verlet_skin_m, material.friction > 0),
+      pair_forces_(std::make_unique<PairForces>()) {
   if (material_.friction > 0)
     kernel_ = make_kernel(LinearSpring<Coulomb>{material_.kn_N_per_m, Coulomb{material_.ks_N_per_m, material_.friction}},
                           particles_, damping_, dt_);

@@ -50,6 +50,8 @@ struct NonFiniteError : std::runtime_error {
 // stability limit of the leapfrog scheme for an undamped harmonic oscillator.
 double critical_time_step(const Particles& p, double kn_N_per_m);
 
+struct PairForces;  // dynamics/kernel.hpp
+
 struct StepSums {          // by-products of the last force evaluation
   Mat3 stress_Pa = Mat3::Zero();       // (1/V) sum_c f_c (x) l_c, symmetrised, compression positive
   Vec3 stiffness_Pa = Vec3::Zero();    // servo stiffness K_k
@@ -104,7 +106,8 @@ class Simulation {
   std::int64_t step_ = 0;
   Vec3 strain_rate_ = Vec3::Zero();
   StepSums sums_;
-  std::vector<Vec3> force_, torque_;
+  std::unique_ptr<PairForces> pair_forces_;  // per-pair forces of the last evaluation
+  std::vector<Vec3> force_;
   double kinetic_energy_ = 0;
   std::unique_ptr<Kernel> kernel_;
 };

@@ -7,11 +7,29 @@
 
 namespace dem {
 
+void PairIndex::build(const PairList& pairs, std::size_t particles) {
+  first_begin.assign(particles + 1, 0);
+  second_begin.assign(particles + 1, 0);
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    ++first_begin[pairs.first[k] + 1];
+    ++second_begin[pairs.second[k] + 1];
+  }
+  for (std::size_t i = 0; i < particles; ++i) {
+    first_begin[i + 1] += first_begin[i];
+    second_begin[i + 1] += second_begin[i];
+  }
+  second_pairs.resize(pairs.size());
+  std::vector<std::uint32_t> fill(second_begin.begin(), second_begin.end() - 1);
+  for (std::size_t k = 0; k < pairs.size(); ++k) second_pairs[fill[pairs.second[k]]++] = static_cast<std::uint32_t>(k);
+}
+
 bool VerletList::needs_rebuild(const Particles& p, const PeriodicCell& cell) const {
   if (!built_ || p.size() != s_at_build_.size()) return true;
   const Vec3& L = cell.lengths();
-  double max_disp2 = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
+  double max_disp2 = 0;  // a maximum: the same whatever the order or the number of threads
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(p.size());
+#pragma omp parallel for schedule(static) reduction(max : max_disp2)
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
     const Vec3 ds = PeriodicCell::min_image(p.s[i] - s_at_build_[i]);
     max_disp2 = std::max(max_disp2, ds.cwiseProduct(L).squaredNorm());
   }
@@ -101,6 +119,7 @@ void VerletList::build(const Particles& p, const PeriodicCell& cell) {
     }
   }
   pairs_ = std::move(fresh);
+  index_.build(pairs_, p.size());
   s_at_build_ = p.s;
   lengths_at_build_ = cell.lengths();
   built_ = true;

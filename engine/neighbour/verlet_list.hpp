@@ -26,6 +26,17 @@ struct PairList {
   std::size_t size() const { return first.size(); }
 };
 
+// For each particle, the pairs it belongs to, so that pair forces can be gathered per particle in
+// pair order (the same order as a serial scatter, whatever the number of threads): the pairs where
+// it is `second` (listed in `second_pairs`, ascending), then those where it is `first` (a contiguous
+// range of the sorted list).
+struct PairIndex {
+  std::vector<std::uint32_t> first_begin;   // pairs first_begin[i] .. first_begin[i+1]-1 have first == i
+  std::vector<std::uint32_t> second_begin;  // second_pairs[second_begin[i] .. second_begin[i+1]-1]
+  std::vector<std::uint32_t> second_pairs;  // pair indices with second == i, ascending
+  void build(const PairList& pairs, std::size_t particles);
+};
+
 class VerletList {
  public:
   VerletList() = default;
@@ -34,6 +45,7 @@ class VerletList {
   double skin() const { return skin_; }
   const PairList& pairs() const { return pairs_; }
   PairList& pairs() { return pairs_; }
+  const PairIndex& index() const { return index_; }
   std::size_t builds() const { return builds_; }
 
   bool needs_rebuild(const Particles& p, const PeriodicCell& cell) const;
@@ -56,6 +68,7 @@ class VerletList {
   double skin_ = 0;
   bool keep_history_ = false;
   PairList pairs_;
+  PairIndex index_;
   std::vector<Vec3> s_at_build_;
   Vec3 lengths_at_build_ = Vec3::Ones();
   double max_radius_ = 0;

@@ -29,7 +29,7 @@ namespace {
 
 enum class State { Waiting, Running, Done, Failed, Blocked };
 
-pid_t spawn(const std::string& dem, const PlannedRun& r) {
+pid_t spawn(const std::string& dem, const PlannedRun& r, int threads) {
   const pid_t pid = fork();
   if (pid < 0) throw std::runtime_error("fork failed");
   if (pid == 0) {  // child: output to the run's log, then exec dem
@@ -39,7 +39,8 @@ pid_t spawn(const std::string& dem, const PlannedRun& r) {
       dup2(fd, STDERR_FILENO);
       close(fd);
     }
-    std::vector<std::string> args = {dem, "run", r.scene_file, "--out", r.result, "--quiet", "--input-hash", r.hash};
+    std::vector<std::string> args = {dem, "run", r.scene_file, "--out", r.result, "--quiet", "--input-hash", r.hash,
+                                     "--threads", std::to_string(threads)};
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
@@ -59,7 +60,7 @@ std::string minutes(double s) {
 
 }  // namespace
 
-Outcome execute(const std::vector<PlannedRun>& runs, const std::string& dem, int jobs) {
+Outcome execute(const std::vector<PlannedRun>& runs, const std::string& dem, int jobs, int threads) {
   using clock = std::chrono::steady_clock;
   const auto start = clock::now();
   std::vector<State> state(runs.size(), State::Waiting);
@@ -75,8 +76,8 @@ Outcome execute(const std::vector<PlannedRun>& runs, const std::string& dem, int
       cost_left += runs[i].cost;
     }
   }
-  std::printf("[pipeline] %zu runs: %d reused, %zu to run, %d at a time\n", runs.size(), out.reused,
-              runs.size() - static_cast<std::size_t>(out.reused), jobs);
+  std::printf("[pipeline] %zu runs: %d reused, %zu to run, %d at a time, %d thread%s each\n", runs.size(),
+              out.reused, runs.size() - static_cast<std::size_t>(out.reused), jobs, threads, threads > 1 ? "s" : "");
   auto report = [&](const std::string& what) {
     // ETA from the throughput of the runs finished so far (particle-steps per second per worker),
     // or 8e6 per worker before any has finished (the engine's benchmark).
@@ -101,7 +102,7 @@ Outcome execute(const std::vector<PlannedRun>& runs, const std::string& dem, int
         continue;
       }
       if (dep >= 0 && state[static_cast<std::size_t>(dep)] != State::Done) continue;
-      running[spawn(dem, runs[i])] = i;
+      running[spawn(dem, runs[i], threads)] = i;
       state[i] = State::Running;
       started[i] = clock::now();
       report("started " + runs[i].name);

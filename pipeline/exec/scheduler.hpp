@@ -17,6 +17,7 @@ struct Outcome {
 // True if `result` is a complete result whose `input_hash` attribute equals `hash`.
 bool up_to_date(const std::string& result, const std::string& hash);
 
-Outcome execute(const std::vector<PlannedRun>& runs, const std::string& dem_binary, int jobs);
+// `threads`: threads inside each run (dem run --threads).
+Outcome execute(const std::vector<PlannedRun>& runs, const std::string& dem_binary, int jobs, int threads = 1);
 
 }  // namespace pipeline
