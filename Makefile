@@ -34,8 +34,12 @@ test: build
 	$(BUILD)/bin/validate --results $(BUILD)/smoke --references reference_data/paper.yaml \
 	  --out $(BUILD)/smoke/validation --profile quick
 
+# Speed of the engine (1 and 2 threads) and of LAMMPS on the same packings -> reports/bench.{json,md}.
 bench: build
-	$(BUILD)/bin/dem-bench $(BUILD)/bench
+	@dpkg -s lammps >/dev/null 2>&1 || { echo "installing: lammps (for the side-by-side benchmark)"; \
+	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get update -qq && \
+	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends lammps; }
+	reports/bench/run_bench.sh $(BUILD) reports
 
 # The study through the pipeline (issue 5): every density x test, reusing finished results.
 study: build

@@ -70,10 +70,27 @@ mkdir -p "$report"
   if [ -f "$report/figures/README.md" ]; then
     sed -e 's#](\(fig[^)]*\))#](figures/\1)#g' "$report/figures/README.md" | sed '1{/^# /d}'
   fi
+  # One sentence per figure comparing it with the paper's text, written by a person who looked at
+  # both: reports/figure_notes.tsv (file<TAB>sentence). A figure without one says so.
+  notes=$report/figure_notes.tsv
   for png in "$report"/figures/*.png; do
+    name=$(basename "$png")
+    note=$([ -f "$notes" ] && awk -F'\t' -v f="$name" '$1 == f { print $2 }' "$notes")
     echo
-    echo "![$(basename "$png" .png)](figures/$(basename "$png"))"
+    echo "![${name%.png}](figures/$name)"
+    echo
+    echo "${note:-*No comparison with the paper written for this figure yet.*}"
   done
+  echo
+  echo "## Performance"
+  echo
+  if [ -f "$report/bench.md" ]; then
+    echo "\`make bench\` (engine and LAMMPS on the same packings; \`reports/bench.json\`):"
+    echo
+    cat "$report/bench.md"
+  else
+    echo "No benchmark yet (\`make bench\`)."
+  fi
   echo
   echo "## Provenance"
   echo

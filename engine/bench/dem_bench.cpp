@@ -1,10 +1,15 @@
-// dem-bench: particle-steps per second of the step loop on the engine's own jammed packing.
+// dem-bench: particle-steps per second of the step loop on the engine's own jammed packings.
 //
-// 1. Builds (once, cached in BENCH_DIR) an 8,000-sphere periodic packing: the SPEC lattice
-//    compressed isotropically with mu = 0.5 to 100 kPa by the engine itself.
-// 2. Loads it and times the step loop at constant stress (the servo holding 100 kPa), for
-//    mu = 0.5 and mu = 0 (the frictionless kernel), median of several repetitions.
+// 1. Builds (once, cached in BENCH_DIR) two 8,000-sphere periodic packings, the SPEC lattice
+//    compressed isotropically to 100 kPa by the engine itself: one with mu = 0.5 and one with
+//    mu = 0 (a frictionless packing unjams at the mu = 0.5 packing's volume, so each friction is
+//    timed on a packing jammed with it; the mu = 0 one has more contacts).
+// 2. Loads each and times the step loop at constant stress (the servo holding 100 kPa) on 1 and
+//    on 2 threads, median of several repetitions, and checks that both thread counts end in the
+//    same state bit for bit.
 // Prints a table and writes BENCH_DIR/bench.json.
+//   dem-bench [BENCH_DIR] [STEPS] [REPETITIONS]
+#include <omp.h>
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -26,7 +31,7 @@ name: bench_packing
 particles:
   lattice: {n: [20, 20, 20], spacing: 5.0e-3, seed: 7}
   grading: {diameters: [3.0e-3, 3.7e-3, 4.5e-3], percent_finer: [0, 50, 100]}
-material: {density: 2650, kn: 1.0e6, ks: 1.0e6, friction: 0.5}
+material: {density: 2650, kn: 1.0e6, ks: 1.0e6, friction: FRICTION}
 damping: {form: viscous, translational: 0.05, rotational: 0.05}
 numerics: {time_step: 1.0e-6, verlet_skin: 2.0e-4}
 output: {interval: 10000}
@@ -47,9 +52,26 @@ std::string timing_scene(const std::string& packing, double friction, long steps
 
 struct Result {
   double friction;
+  int threads;
   double median_rate, min_rate, max_rate;
   double contacts_per_particle;
+  bool same_as_one_thread;
 };
+
+// Builds the packing for `friction` once (cached) and returns its path.
+std::string packing_for(const std::string& dir, double friction) {
+  namespace fs = std::filesystem;
+  const std::string tag = friction > 0 ? "mu05" : "mu0";
+  const std::string path = fs::absolute(dir + "/packing_" + tag + ".h5").string();
+  if (fs::exists(path)) return path;
+  std::string text = packing_scene;
+  text.replace(text.find("FRICTION"), 8, friction > 0 ? "0.5" : "0.0");
+  std::fprintf(stderr, "dem-bench: building the 8,000-sphere packing (mu = %g, 100 kPa) once -> %s\n", friction,
+               path.c_str());
+  const auto s = dem::run_scene(dem::scene_from_text(text, dir + "/bench_packing.yaml"), path, false);
+  std::fprintf(stderr, "dem-bench: packing built in %lld steps, %.1f s\n", static_cast<long long>(s.steps), s.wall_time_s);
+  return path;
+}
 
 }  // namespace
 
@@ -59,50 +81,59 @@ int main(int argc, char** argv) {
   const long steps = argc > 2 ? std::stol(argv[2]) : 4000;
   const int reps = argc > 3 ? std::stoi(argv[3]) : 5;
   fs::create_directories(dir);
-  const std::string packing = fs::absolute(dir + "/packing_mu05.h5").string();
-  if (!fs::exists(packing)) {
-    std::fprintf(stderr, "dem-bench: building the 8,000-sphere packing (mu = 0.5, 100 kPa) once -> %s\n", packing.c_str());
-    const auto s = dem::run_scene(dem::scene_from_text(packing_scene, dir + "/bench_packing.yaml"), packing, false);
-    std::fprintf(stderr, "dem-bench: packing built in %lld steps, %.1f s\n", static_cast<long long>(s.steps), s.wall_time_s);
-  }
   std::vector<Result> results;
   for (double mu : {0.5, 0.0}) {
+    const std::string packing = packing_for(dir, mu);
     const dem::SceneConfig scene = dem::scene_from_text(timing_scene(packing, mu, 1000000000L), dir + "/bench.yaml");
-    std::vector<double> rates;
-    double z = 0;
-    for (int r = 0; r < reps; ++r) {
-      dem::Simulation sim = dem::build_simulation(scene);
-      dem::CellTargets targets;
-      for (auto& t : targets) t = {dem::AxisTarget::Mode::Stress, 0, 1e5, 0};
-      const dem::ServoSettings servo{scene.servo.gain, 1.0};
-      for (int i = 0; i < 200; ++i) sim.step(targets, servo);  // warm-up: list built, caches filled
-      const auto t0 = std::chrono::steady_clock::now();
-      for (long i = 0; i < steps; ++i) sim.step(targets, servo);
-      const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      rates.push_back(static_cast<double>(steps) * static_cast<double>(sim.particles().size()) / wall);
-      z = 2.0 * static_cast<double>(sim.sums().contacts) / static_cast<double>(sim.particles().size());
+    std::vector<dem::Vec3> one_thread_positions;
+    for (int threads : {1, 2}) {
+      omp_set_num_threads(threads);
+      std::vector<double> rates;
+      double z = 0;
+      bool same = true;
+      for (int r = 0; r < reps; ++r) {
+        dem::Simulation sim = dem::build_simulation(scene);
+        dem::CellTargets targets;
+        for (auto& t : targets) t = {dem::AxisTarget::Mode::Stress, 0, 1e5, 0};
+        const dem::ServoSettings servo{scene.servo.gain, 1.0};
+        for (int i = 0; i < 200; ++i) sim.step(targets, servo);  // warm-up: list built, caches filled
+        const auto t0 = std::chrono::steady_clock::now();
+        for (long i = 0; i < steps; ++i) sim.step(targets, servo);
+        const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        rates.push_back(static_cast<double>(steps) * static_cast<double>(sim.particles().size()) / wall);
+        z = 2.0 * static_cast<double>(sim.sums().contacts) / static_cast<double>(sim.particles().size());
+        if (threads == 1 && r == 0) one_thread_positions = sim.particles().s;
+        same = same && sim.particles().s == one_thread_positions;
+      }
+      std::sort(rates.begin(), rates.end());
+      results.push_back({mu, threads, rates[rates.size() / 2], rates.front(), rates.back(), z, same});
     }
-    std::sort(rates.begin(), rates.end());
-    results.push_back({mu, rates[rates.size() / 2], rates.front(), rates.back(), z});
   }
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   const double peak_mb = static_cast<double>(usage.ru_maxrss) / 1024.0;
-  std::printf("dem-bench %s: 8,000 spheres, dt = 1e-6 s, %ld steps x %d repetitions, 1 thread\n", dem::software_version,
-              steps, reps);
-  std::printf("%-10s %-22s %-24s %-10s\n", "friction", "particle-steps/s (med)", "min .. max", "2Nc/Np");
-  for (const auto& r : results)
-    std::printf("%-10.2f %-22.3e %.3e .. %.3e  %-10.2f\n", r.friction, r.median_rate, r.min_rate, r.max_rate,
-                r.contacts_per_particle);
+  std::printf("dem-bench %s: 8,000 spheres, dt = 1e-6 s, %ld steps x %d repetitions\n", dem::software_version, steps,
+              reps);
+  std::printf("%-9s %-8s %-22s %-24s %-8s %-10s %s\n", "friction", "threads", "particle-steps/s (med)", "min .. max",
+              "2Nc/Np", "speed-up", "same bits as 1 thread");
+  for (const auto& r : results) {
+    const double one = r.threads == 1 ? r.median_rate : results[&r - &results[0] - 1].median_rate;
+    std::printf("%-9.2f %-8d %-22.3e %.3e .. %.3e  %-8.2f %-10.2f %s\n", r.friction, r.threads, r.median_rate, r.min_rate,
+                r.max_rate, r.contacts_per_particle, r.median_rate / one, r.same_as_one_thread ? "yes" : "NO");
+  }
   std::printf("peak memory (max RSS): %.1f MB\n", peak_mb);
   std::ofstream json(dir + "/bench.json");
-  json << "{\n  \"software_version\": \"" << dem::software_version << "\",\n  \"particles\": 8000,\n  \"steps\": " << steps
-       << ",\n  \"repetitions\": " << reps << ",\n  \"threads\": 1,\n  \"peak_rss_MB\": " << peak_mb << ",\n  \"runs\": [\n";
+  json << "{\n  \"code\": \"cyclic-triax dem\",\n  \"version\": \"" << dem::software_version
+       << "\",\n  \"particles\": 8000,\n  \"steps\": " << steps << ",\n  \"repetitions\": " << reps
+       << ",\n  \"peak_rss_MB\": " << peak_mb << ",\n  \"runs\": [\n";
   for (std::size_t i = 0; i < results.size(); ++i)
-    json << "    {\"friction\": " << results[i].friction << ", \"particle_steps_per_s_median\": " << results[i].median_rate
-         << ", \"min\": " << results[i].min_rate << ", \"max\": " << results[i].max_rate
-         << ", \"coordination_number\": " << results[i].contacts_per_particle << "}" << (i + 1 < results.size() ? "," : "")
-         << "\n";
+    json << "    {\"friction\": " << results[i].friction << ", \"threads\": " << results[i].threads
+         << ", \"particle_steps_per_s_median\": " << results[i].median_rate << ", \"min\": " << results[i].min_rate
+         << ", \"max\": " << results[i].max_rate << ", \"coordination_number\": " << results[i].contacts_per_particle
+         << ", \"same_bits_as_1_thread\": " << (results[i].same_as_one_thread ? "true" : "false") << "}"
+         << (i + 1 < results.size() ? "," : "") << "\n";
   json << "  ]\n}\n";
+  for (const auto& r : results)
+    if (!r.same_as_one_thread) return 1;
   return 0;
 }

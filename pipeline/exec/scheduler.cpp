@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -88,9 +89,20 @@ Outcome execute(const std::vector<PlannedRun>& runs, const std::string& dem, int
                 what.c_str(), out.ran, out.reused, out.failed, running.size(), minutes(std::max(0.0, cost_left) / rate / workers).c_str());
     std::fflush(stdout);
   };
+  // Longest chain first: a run's priority is its own cost plus that of the runs waiting for it, so
+  // every preparation starts before any test and the last sample is not prepared at the end.
+  std::vector<double> priority(runs.size());
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    priority[i] += runs[i].cost;
+    if (runs[i].depends_on >= 0) priority[static_cast<std::size_t>(runs[i].depends_on)] += runs[i].cost;
+  }
+  std::vector<std::size_t> order(runs.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return priority[a] > priority[b]; });
   while (true) {
     // Start what can start.
-    for (std::size_t i = 0; i < runs.size() && static_cast<int>(running.size()) < jobs; ++i) {
+    for (std::size_t i : order) {
+      if (static_cast<int>(running.size()) >= jobs) break;
       if (state[i] != State::Waiting) continue;
       const int dep = runs[i].depends_on;
       if (dep >= 0 && (state[static_cast<std::size_t>(dep)] == State::Failed ||

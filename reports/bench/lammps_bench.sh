@@ -1,0 +1,150 @@
+#!/usr/bin/env bash
+# lammps_bench.sh: time LAMMPS (Debian package `lammps`) on the same sphere packing as `make bench`,
+# so that LAMMPS and our engine can be shown side by side. Speed is in particle-steps per second.
+#
+#   reports/bench/lammps_bench.sh PARTICLES.txt LX LY LZ STEPS REPS OUT.json
+#
+# PARTICLES.txt: "x y z radius" (m), one sphere per line, '#' comment lines (`dem state R.h5`).
+# LX LY LZ: periodic box 0..L (m). Settings as in dem-bench: SI units, density 2650 kg/m^3, Hookean
+# contacts kn = kt = 1e6 N/m with tangential history and Coulomb friction mu, dt = 1e-6 s, neighbour
+# skin 2e-4 m checked every step. Serial, one core (OMP_NUM_THREADS=1), mu = 0.5 then mu = 0
+# (FRICTIONS="0.5" or "0" times one only, e.g. each on the packing jammed with that friction).
+#
+# Like dem-bench, every repetition starts again from the packing: read it, `run 200` (warm-up), then
+# `run STEPS`, timed by LAMMPS's "Loop time of T ... for N steps with A atoms": rate = N A / T.
+# Median = sorted[REPS/2] (as dem-bench), min, max.
+#
+# Damping (5% of critical, for the mean sphere mass m): contact damping gamma_n = 2*0.05*sqrt(kn/m_eff),
+# m_eff = m/2, gamma_t = gamma_n/2; and, as the engine's viscous damping, a body force
+# -2*0.05*sqrt(kn*m)*v (fix viscous). Without the body force the packing, which loses its
+# tangential springs when read as bare positions, unjams within ~2000 steps and LAMMPS then times a
+# nearly contact-free gas (about 3x faster). LAMMPS 2021 has no cheap spin damping (the engine damps
+# spins too), so the box being fixed, the mu = 0.5 packing still relaxes slowly; mu = 0 unjams
+# at once (as it does in the engine at fixed volume; dem-bench's stress servo re-compacts it).
+# The table shows contacts per sphere (2Nc/N) and pressure after the warm-up -> after the timed run.
+# Set LMP to use another launcher, e.g. LMP="mpirun -np 1 lmp".
+set -euo pipefail
+
+die() { echo "lammps_bench: $*" >&2; exit 1; }
+[ $# -eq 7 ] || die "usage: $0 PARTICLES.txt LX LY LZ STEPS REPS OUT.json"
+particles=$1 lx=$2 ly=$3 lz=$4 steps=$5 reps=$6 out=$7
+[ -r "$particles" ] || die "cannot read $particles"
+[[ $steps =~ ^[1-9][0-9]*$ && $reps =~ ^[1-9][0-9]*$ ]] || die "STEPS and REPS must be positive integers"
+LMP=${LMP:-lmp}
+command -v "${LMP%% *}" >/dev/null || die "'${LMP%% *}' not found: install the Debian package lammps (apt-get install -y lammps)"
+export OMP_NUM_THREADS=1
+
+density=2650 kn=1.0e6 kt=1.0e6 zeta=0.05 dt=1.0e-6 skin=2.0e-4 warmup=200
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+# 1. LAMMPS data file (atom_style sphere: id type diameter density x y z); prints the atom count,
+#    gamma_n (1/s; the Hooke damping force is m_eff gamma_n v_n) and the fix viscous gamma (kg/s).
+read -r natoms gamman gammav < <(awk -v lx="$lx" -v ly="$ly" -v lz="$lz" -v rho="$density" -v kn="$kn" -v zeta="$zeta" \
+    -v data="$tmp/data.spheres" '
+  /^[[:space:]]*(#|$)/ { next }
+  NF < 4 { print "lammps_bench: bad line " NR ": " $0 > "/dev/stderr"; exit 1 }
+  { n++; x[n] = $1; y[n] = $2; z[n] = $3; r[n] = $4; msum += 4 / 3 * 3.141592653589793 * $4^3 * rho }
+  END {
+    if (n == 0) { print "lammps_bench: no particles" > "/dev/stderr"; exit 1 }
+    printf "spheres from dem state\n\n%d atoms\n1 atom types\n\n", n > data
+    printf "0 %s xlo xhi\n0 %s ylo yhi\n0 %s zlo zhi\n\nAtoms # sphere\n\n", lx, ly, lz > data
+    for (i = 1; i <= n; i++) printf "%d 1 %.17g %s %s %s %s\n", i, 2 * r[i], rho, x[i], y[i], z[i] > data
+    m = msum / n
+    printf "%d %.6g %.6g\n", n, 2 * zeta * sqrt(kn / (m / 2)), 2 * zeta * sqrt(kn * m)
+  }' "$particles") || die "could not convert $particles"
+gammat=$(awk -v g="$gamman" 'BEGIN { printf "%.6g", g / 2 }')
+
+# 2. The input; ${mu} comes from the command line. Contacts (compute contact/atom) and pressure are
+#    evaluated only outside the timed runs.
+cat >"$tmp/in.setup" <<EOF
+units           si
+atom_style      sphere
+boundary        p p p
+comm_modify     vel yes
+read_data       $tmp/data.spheres
+pair_style      gran/hooke/history $kn $kt $gamman $gammat \${mu} 1
+pair_coeff      * *
+neighbor        $skin bin
+neigh_modify    delay 0 every 1 check yes
+fix             integrate all nve/sphere
+fix             damping all viscous $gammav
+timestep        $dt
+compute         nc all contact/atom
+compute         z all reduce ave c_nc
+variable        z equal c_z
+variable        p equal press
+EOF
+for ((i = 0; i < reps; i++)); do cat <<EOF
+include         $tmp/in.setup
+thermo_style    custom step atoms ke press c_z
+thermo_modify   lost error
+run             $warmup
+print           "BENCH warm contacts_per_atom \${z} pressure_Pa \${p}"
+thermo_style    custom step atoms ke
+thermo_modify   lost error
+print           "BENCH timed"
+run             $steps
+thermo_style    custom step atoms ke press c_z
+thermo_modify   lost error
+run             0
+print           "BENCH end contacts_per_atom \${z} pressure_Pa \${p}"
+clear
+EOF
+done >"$tmp/in.bench"
+
+# 3. Run mu = 0.5 and mu = 0; parse each log.
+printf '%-9s %-23s %-25s %-14s %-16s %-11s %s\n' friction "particle-steps/s (med)" "min .. max" "2Nc/N" "p (kPa)" "neigh/atom" "list builds"
+runs=""
+frictions=${FRICTIONS:-0.5 0}
+for mu in $frictions; do
+  log=$tmp/log.mu$mu
+  if ! $LMP -var mu "$mu" -in "$tmp/in.bench" -log "$log" -screen none >"$tmp/stdout" 2>&1 ||
+     [ "$(grep -c '^BENCH end' "$log")" -ne "$reps" ]; then
+    echo "lammps_bench: LAMMPS run with mu = $mu failed; end of its log:" >&2
+    tail -n 25 "$log" "$tmp/stdout" >&2 2>/dev/null || true
+    exit 1
+  fi
+  # Means over repetitions of contacts, pressure and neighbours; list builds summed over timed runs.
+  row=$(awk -v reps="$reps" -v mu="$mu" '
+    /^BENCH timed/ { timed = 1 }
+    /^Loop time of/ && timed { rate[++n] = $9 * $12 / $4 }
+    /^Ave neighs\/atom/ && timed { neigh += $4 / reps }
+    /^Neighbor list builds/ && timed { builds += $5 }
+    /^Dangerous builds/ { dangerous += $4; timed = 0 }
+    /^BENCH warm/ { z0 += $4 / reps; p0 += $6 / reps }
+    /^BENCH end/ { z1 += $4 / reps; p1 += $6 / reps }
+    END {
+      if (n != reps) { print "lammps_bench: expected " reps " timed runs in the log" > "/dev/stderr"; exit 1 }
+      for (i = 1; i <= n; i++) for (j = i + 1; j <= n; j++) if (rate[j] < rate[i]) { t = rate[i]; rate[i] = rate[j]; rate[j] = t }
+      med = rate[int(n / 2) + 1]
+      printf "%-9s %-23.3e %.3e .. %.3e %5.2f -> %-5.2f %6.1f -> %-6.1f %-11.2f %d (dangerous %d)\n", mu, med, rate[1], rate[n], z0, z1, p0 / 1e3, p1 / 1e3, 2 * neigh, builds, dangerous > "/dev/stderr"
+      printf "{\"friction\": %s, \"particle_steps_per_s_median\": %.6g, \"min\": %.6g, \"max\": %.6g, ", mu, med, rate[1], rate[n]
+      printf "\"coordination_number_start\": %.6g, \"coordination_number_end\": %.6g, \"neighbours_per_atom\": %.6g, ", z0, z1, 2 * neigh
+      printf "\"pressure_Pa_start\": %.6g, \"pressure_Pa_end\": %.6g, \"neighbour_list_builds\": %d, \"dangerous_builds\": %d}", p0, p1, builds, dangerous
+    }' "$log" 2>"$tmp/row") || die "could not parse $log"
+  cat "$tmp/row"
+  runs="$runs${runs:+,
+    }$row"
+done
+
+# 4. JSON; the version is LAMMPS's banner plus the Debian package version.
+version=$(head -n 1 "$tmp/log.mu${frictions%% *}" | sed 's/^LAMMPS (\(.*\))$/\1/')
+pkg=$(dpkg-query -W -f='${Version}' lammps 2>/dev/null || echo unknown)
+mkdir -p "$(dirname "$out")"
+cat >"$out" <<EOF
+{
+  "code": "LAMMPS",
+  "version": "$version (Debian lammps $pkg)",
+  "particles": $natoms,
+  "steps": $steps,
+  "repetitions": $reps,
+  "threads": 1,
+  "settings": "pair_style gran/hooke/history $kn $kt $gamman $gammat MU 1; fix nve/sphere; fix viscous $gammav; fixed periodic box",
+  "runs": [
+    $runs
+  ]
+}
+EOF
+if command -v jq >/dev/null; then jq empty "$out" || die "$out is not valid JSON"; fi
+echo "LAMMPS $version, $natoms spheres, $steps steps x $reps repetitions, 1 core -> $out"

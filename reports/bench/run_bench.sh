@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# run_bench.sh: `make bench`. Times our engine (dem-bench: 1 and 2 threads) and LAMMPS (one core) on
+# the same 8,000-sphere packings, and writes OUT_DIR/bench.json and OUT_DIR/bench.md.
+#
+#   reports/bench/run_bench.sh BUILD_DIR OUT_DIR [STEPS] [REPS]
+#
+# Each friction is timed on a packing jammed at 100 kPa with that friction (built once by dem-bench,
+# cached in BUILD_DIR/bench). LAMMPS gets the same positions, radii, box, contact law, dt and skin
+# (reports/bench/lammps_bench.sh says what it cannot match: it has no stress servo and no spin damping).
+set -euo pipefail
+build=${1:?usage: run_bench.sh BUILD_DIR OUT_DIR [STEPS] [REPS]}
+out=${2:?usage: run_bench.sh BUILD_DIR OUT_DIR [STEPS] [REPS]}
+steps=${3:-3000}
+reps=${4:-5}
+here=$(cd "$(dirname "$0")" && pwd)
+work=$build/bench
+mkdir -p "$work" "$out"
+
+echo "== our engine (dem-bench) =="
+"$build/bin/dem-bench" "$work" "$steps" "$reps"
+
+echo "== LAMMPS, same packings =="
+for tag in mu05:0.5 mu0:0; do
+  name=${tag%%:*} mu=${tag##*:}
+  "$build/bin/dem" state "$work/packing_$name.h5" >"$work/packing_$name.txt"
+  read -r lx ly lz < <("$build/bin/dem" table "$work/packing_$name.h5" cell_length_1 cell_length_2 cell_length_3 | tail -n 1)
+  FRICTIONS=$mu "$here/lammps_bench.sh" "$work/packing_$name.txt" "$lx" "$ly" "$lz" "$steps" "$reps" "$work/lammps_$name.json"
+done
+
+# One line per run in both JSON files (our own formats): pick the median of a (friction, threads) run.
+engine_rate() { grep "\"friction\": $1, \"threads\": $2," "$work/bench.json" | sed 's/.*"particle_steps_per_s_median": \([^,]*\),.*/\1/'; }
+engine_z() { grep "\"friction\": $1, \"threads\": 1," "$work/bench.json" | sed 's/.*"coordination_number": \([^,]*\),.*/\1/'; }
+lammps_rate() { grep '"particle_steps_per_s_median"' "$work/lammps_$1.json" | sed 's/.*"particle_steps_per_s_median": \([^,]*\),.*/\1/'; }
+lammps_z() { grep '"coordination_number_start"' "$work/lammps_$1.json" | sed 's/.*"coordination_number_start": \([^,]*\),.*/\1/'; }
+
+{
+  echo "{"
+  echo "  \"engine\": $(sed 's/^/  /' "$work/bench.json" | sed '1s/^  //'),"
+  echo "  \"lammps\": ["
+  sed 's/^/    /' "$work/lammps_mu05.json"
+  echo "    ,"
+  sed 's/^/    /' "$work/lammps_mu0.json"
+  echo "  ]"
+  echo "}"
+} >"$out/bench.json"
+
+{
+  echo "| friction | packing 2Nc/N (ours / LAMMPS at start) | ours, 1 thread | ours, 2 threads | 2 / 1 thread | LAMMPS, 1 core | ours (1 thread) / LAMMPS |"
+  echo "|---|---|---|---|---|---|---|"
+  for tag in mu05:0.5 mu0:0; do
+    name=${tag%%:*} mu=${tag##*:}
+    e1=$(engine_rate "$mu" 1) e2=$(engine_rate "$mu" 2) l=$(lammps_rate "$name")
+    awk -v mu="$mu" -v e1="$e1" -v e2="$e2" -v l="$l" -v ze="$(engine_z "$mu")" -v zl="$(lammps_z "$name")" 'BEGIN {
+      printf "| %s | %.2f / %.2f | %.3g | %.3g | %.2f | %.3g | %.2f |\n", mu, ze, zl, e1, e2, e2 / e1, l, e1 / l }'
+  done
+  echo
+  echo "Particle-steps per second, medians of $reps repetitions of $steps steps (dt = 1 µs, 8,000 spheres),"
+  echo "measured by \`make bench\` on $(nproc) cores ($(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'))."
+  echo "Peak memory of dem-bench: $(grep peak_rss_MB "$work/bench.json" | sed 's/.*: \([0-9.]*\).*/\1/') MB."
+} >"$out/bench.md"
+cat "$out/bench.md"
