@@ -89,3 +89,18 @@ TEST_CASE("pipeline: a failed run is reported and blocks only the runs that need
   std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
   CHECK_THAT(text, Catch::Matchers::Contains("time_step"));
 }
+
+TEST_CASE("pipeline: every preparation runs before any test (longest chain first)", "[pipeline][scheduler]") {
+  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "scheduler_order";
+  fs::remove_all(dir);
+  write_study(dir, "2.0e-4");
+  const pipeline::Study study = pipeline::load_study((dir / "study.yaml").string());
+  const auto runs = pipeline::plan_study(study, study.profile("quick"), (dir / "out").string(), "test-engine");
+  pipeline::write_scenes(runs);
+  REQUIRE(pipeline::execute(runs, dem, 1).ran == 4);  // one at a time: the order is the start order
+  // Listed order is loose_prepare, loose_test1, dense_prepare, dense_test1; the dense sample must
+  // be finished before the first test (a result is renamed into place when it is complete).
+  const auto finished = [&](const std::string& name) { return fs::last_write_time(dir / "out" / (name + ".h5")); };
+  CHECK(finished("dense_prepare") < finished("loose_test1"));
+  CHECK(finished("loose_prepare") < finished("dense_prepare"));
+}
