@@ -75,7 +75,8 @@ mkdir -p "$report"
   notes=$report/figure_notes.tsv
   for png in "$report"/figures/*.png; do
     name=$(basename "$png")
-    note=$([ -f "$notes" ] && awk -F'\t' -v f="$name" '$1 == f { print $2 }' "$notes")
+    note=""
+    if [ -f "$notes" ]; then note=$(awk -F'\t' -v f="$name" '$1 == f { print $2 }' "$notes"); fi
     echo
     echo "![${name%.png}](figures/$name)"
     echo
