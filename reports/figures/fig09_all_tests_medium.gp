@@ -14,11 +14,11 @@ set arrow 3 from 0,0 to 0.83*0.33*0.8660254,-0.83*0.33*0.5 head filled size grap
 set label 1 "σ_1" at 0,0.9*0.33 center font ",12" tc rgb "#555555"
 set label 2 "σ_2" at -0.87*0.33*0.8660254,-0.93*0.33*0.5 right font ",12" tc rgb "#555555"
 set label 3 "σ_3" at 0.87*0.33*0.8660254,-0.93*0.33*0.5 left font ",12" tc rgb "#555555"
-set title "medium, Test 1, cycle 1\narrows: Δε × 500  (0.1 on the axes = 0.02 % strain)" font ",11"
+set title "medium, Test 1, cycle 1\narrows: Δε × 200  (0.1 on the axes = 0.05 % strain)" font ",11"
 plot '/work/main/reports/figures/fig03_test1_target.dat' u 1:2:3:4 w vectors nohead lw 3 lc rgb "#dddddd" t "target path", \
   '/work/main/reports/figures/fig09_medium_test1_cycle1_path.dat' u 1:2 w l lw 1 lc rgb "#2ca02c" t "measured stress", \
-  '/work/main/reports/figures/fig09_medium_test1_cycle1.dat' u 1:2:($3*500):($4*500) w vectors head filled size graph 0.03,20 lw 2.2 lc rgb "#000000" t "strain increment of a leg", \
-  '/work/main/reports/figures/fig09_medium_test1_cycle1.dat' u ($1+$3*500):($2+$4*500):6 w labels offset char 0.6,0.6 font ",9" tc rgb "#000000" t ""
+  '/work/main/reports/figures/fig09_medium_test1_cycle1.dat' u 1:2:($3*200):($4*200) w vectors head filled size graph 0.03,20 lw 2.2 lc rgb "#000000" t "strain increment of a leg", \
+  '/work/main/reports/figures/fig09_medium_test1_cycle1.dat' u ($1+$3*200):($2+$4*200):6 w labels offset char 0.6,0.6 font ",9" tc rgb "#000000" t ""
 unset label 99
 set title "medium, Test 2, cycle 1\narrows: Δε × 500  (0.1 on the axes = 0.02 % strain)" font ",11"
 plot '/work/main/reports/figures/fig03_test2_target.dat' u 1:2:3:4 w vectors nohead lw 3 lc rgb "#dddddd" t "target path", \
@@ -44,11 +44,11 @@ plot '/work/main/reports/figures/fig03_test5_target.dat' u 1:2:3:4 w vectors noh
   '/work/main/reports/figures/fig09_medium_test5_cycle1.dat' u 1:2:($3*500):($4*500) w vectors head filled size graph 0.03,20 lw 2.2 lc rgb "#000000" t "strain increment of a leg", \
   '/work/main/reports/figures/fig09_medium_test5_cycle1.dat' u ($1+$3*500):($2+$4*500):6 w labels offset char 0.6,0.6 font ",9" tc rgb "#000000" t ""
 unset label 99
-set title "medium, Test 1, cycle 5\narrows: Δε × 500  (0.1 on the axes = 0.02 % strain)" font ",11"
+set title "medium, Test 1, cycle 5\narrows: Δε × 200  (0.1 on the axes = 0.05 % strain)" font ",11"
 plot '/work/main/reports/figures/fig03_test1_target.dat' u 1:2:3:4 w vectors nohead lw 3 lc rgb "#dddddd" t "target path", \
   '/work/main/reports/figures/fig09_medium_test1_cycle5_path.dat' u 1:2 w l lw 1 lc rgb "#2ca02c" t "measured stress", \
-  '/work/main/reports/figures/fig09_medium_test1_cycle5.dat' u 1:2:($3*500):($4*500) w vectors head filled size graph 0.03,20 lw 2.2 lc rgb "#000000" t "strain increment of a leg", \
-  '/work/main/reports/figures/fig09_medium_test1_cycle5.dat' u ($1+$3*500):($2+$4*500):6 w labels offset char 0.6,0.6 font ",9" tc rgb "#000000" t ""
+  '/work/main/reports/figures/fig09_medium_test1_cycle5.dat' u 1:2:($3*200):($4*200) w vectors head filled size graph 0.03,20 lw 2.2 lc rgb "#000000" t "strain increment of a leg", \
+  '/work/main/reports/figures/fig09_medium_test1_cycle5.dat' u ($1+$3*200):($2+$4*200):6 w labels offset char 0.6,0.6 font ",9" tc rgb "#000000" t ""
 unset label 99
 set title "medium, Test 2, cycle 5\narrows: Δε × 500  (0.1 on the axes = 0.02 % strain)" font ",11"
 plot '/work/main/reports/figures/fig03_test2_target.dat' u 1:2:3:4 w vectors nohead lw 3 lc rgb "#dddddd" t "target path", \
