@@ -13,7 +13,7 @@ mkdir -p "$report"
   echo "# cyclic-triax: reproduction of the seed paper's study"
   echo
   echo "Generated on $(date -u +%Y-%m-%d) from \`$(realpath --relative-to="$here" "$results")\`${REPORT_NOTE:+ — $REPORT_NOTE}."
-  echo "Source: commit \`$(git -C "$here" rev-parse --short=12 HEAD 2>/dev/null || echo unknown)\`$(git -C "$here" diff --quiet 2>/dev/null || echo ' (with uncommitted changes)'); engine: \`$("$dem" --version)\`."
+  echo "Source: commit \`$(git -C "$here" rev-parse --short=12 HEAD 2>/dev/null || echo unknown)\`$(git -C "$here" diff --quiet HEAD -- . ':!reports' 2>/dev/null || echo ' (with uncommitted changes)'); engine: \`$("$dem" --version)\`."
   engines=$(for f in "$results"/*.h5; do [ -f "$f" ] || continue; h5dump -a software_version "$f" 2>/dev/null | sed -n 's/.*(0): "\(.*\)".*/\1/p'; done | sort | uniq -c | awk '{printf "%s%s (%d runs)", (NR > 1 ? ", " : ""), $2, $1}')
   echo "The results were written by: ${engines:-unknown}."
   echo
