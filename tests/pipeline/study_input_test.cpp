@@ -1,0 +1,89 @@
+// Bad study files: each is refused before anything runs, with a message naming the file, the key
+// (with its line where there is one) and what is allowed. The expected fragments are the parts a
+// user needs to fix the file.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "config/study_config.hpp"
+#include "config/yaml_section.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct BadStudy {
+  std::string what, text;
+  std::vector<std::string> expected;  // fragments of the message, besides the file name
+};
+
+const std::string good_tail =
+    "tests: [{name: t1, scene: t.yaml}]\n"
+    "profiles: {paper: {lattice: 20}, quick: {lattice: 10}}\n";
+const std::string head = "name: s\noutput: out\npreparation: prep.yaml\n";
+const std::string density = "densities: [{name: loose, friction: 0.5}]\n";
+
+const std::vector<BadStudy> catalogue = {
+    {"empty file", "", {"the file is empty"}},
+    {"a list, not a mapping", "- a\n- b\n", {"must be a mapping", "got a list"}},
+    {"missing name", "output: out\npreparation: prep.yaml\n" + density + good_tail, {"name: missing"}},
+    {"duplicate key", "name: s\n" + head + density + good_tail, {"name: duplicate key", "line 2"}},
+    {"misspelt key", head + "densites: [{name: loose, friction: 0.5}]\n" + good_tail, {"densities: must be a non-empty list"}},
+    {"negative friction", head + "densities: [{name: loose, friction: -1}]\n" + good_tail,
+     {"densities[0].friction", "must be in [0, 10]", "got -1", "line 4"}},
+    {"friction not a number", head + "densities: [{name: loose, friction: high}]\n" + good_tail,
+     {"densities[0].friction", "must be a number", "'high'"}},
+    {"huge lattice", head + density + "tests: [{name: t1, scene: t.yaml}]\nprofiles: {paper: {lattice: 1.0e9}, quick: {}}\n",
+     {"profiles.paper.lattice", "[2, 100]"}},
+    {"negative max_repeat", head + density + "tests: [{name: t1, scene: t.yaml}]\nprofiles: {paper: {}, quick: {max_repeat: -2}}\n",
+     {"profiles.quick.max_repeat", "[0, 1000000]"}},
+    {"no quick profile", head + density + "tests: [{name: t1, scene: t.yaml}]\nprofiles: {paper: {}}\n",
+     {"profiles.quick", "missing"}},
+    {"unknown profile key", head + density + "tests: [{name: t1, scene: t.yaml}]\nprofiles: {paper: {latice: 20}, quick: {}}\n",
+     {"profiles.paper", "latice"}},
+    {"duplicate density name", head + "densities: [{name: loose, friction: 0.5}, {name: loose, friction: 0}]\n" + good_tail,
+     {"densities[1].name", "duplicate name 'loose'"}},
+    {"test scene missing", head + density + "tests: [{name: t1, scene: nowhere.yaml}]\nprofiles: {paper: {}, quick: {}}\n",
+     {"tests[0].scene", "no such file", "nowhere.yaml"}},
+    {"preparation missing", "name: s\noutput: out\npreparation: gone.yaml\n" + density + good_tail,
+     {"preparation", "no such file", "gone.yaml"}},
+    {"empty density list", head + "densities: []\n" + good_tail, {"densities: must be a non-empty list"}},
+    {"broken YAML", head + "densities: [{name: loose, friction: 0.5}\n" + good_tail, {"not valid YAML", "line"}},
+};
+
+}  // namespace
+
+TEST_CASE("bad study files are refused naming the file, the key and what is allowed", "[pipeline][input]") {
+  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "bad_studies";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "prep.yaml") << "name: p\n";
+  std::ofstream(dir / "t.yaml") << "name: t\n";
+  {  // the good study the cases are made from loads
+    const std::string good = (dir / "good.yaml").string();
+    std::ofstream(good) << head << density << good_tail;
+    CHECK_NOTHROW(pipeline::load_study(good));
+  }
+  for (std::size_t i = 0; i < catalogue.size(); ++i) {
+    const BadStudy& c = catalogue[i];
+    const std::string file = (dir / ("bad" + std::to_string(i) + ".yaml")).string();
+    std::ofstream(file) << c.text;
+    INFO(c.what);
+    try {
+      pipeline::load_study(file);
+      FAIL("accepted: " << c.what);
+    } catch (const dem::ConfigError& e) {
+      const std::string msg = e.what();
+      INFO(msg);
+      CHECK(msg.find(file) != std::string::npos);
+      for (const std::string& f : c.expected) CHECK(msg.find(f) != std::string::npos);
+    }
+  }
+  SECTION("a directory or a missing file instead of a study") {
+    CHECK_THROWS_WITH(pipeline::load_study(dir.string()), Catch::Matchers::Contains("is a directory"));
+    CHECK_THROWS_WITH(pipeline::load_study((dir / "absent.yaml").string()), Catch::Matchers::Contains("absent.yaml"));
+  }
+}
