@@ -6,7 +6,7 @@ SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 RESULTS  ?= results/study/paper
 
-.PHONY: all deps build test bench quick study report samples samples-study cyclic-tests clean
+.PHONY: all deps build test sanitize fuzz bench quick study report samples samples-study cyclic-tests clean
 
 # Everything: install, build, test, run the full study (reusing finished runs), validate it, draw
 # the figures and write reports/index.md. Fails at the end if a must-pass validation row fails.
@@ -33,6 +33,33 @@ test: build
 	$(BUILD)/bin/pipeline pipeline/studies/paper.yaml --profile quick --out $(BUILD)/smoke -j $(JOBS)
 	$(BUILD)/bin/validate --results $(BUILD)/smoke --references reference_data/paper.yaml \
 	  --out $(BUILD)/smoke/validation --profile quick
+
+# The input readers (scene, study, CSV, HDF5 state) and the rest of the unit tests that read input,
+# built with AddressSanitizer and UndefinedBehaviorSanitizer; any finding fails (CI runs this).
+sanitize: deps
+	cmake -S . -B $(BUILD)-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDEM_SANITIZE=ON >/dev/null
+	cmake --build $(BUILD)-sanitize -j $(JOBS) --target dem_tests
+	ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 OMP_NUM_THREADS=1 \
+	  $(BUILD)-sanitize/bin/dem_tests "[config],[csv],[state],[input],[io],[result]"
+
+# libFuzzer on the scene YAML, study YAML and particle CSV readers (clang), FUZZ_SECONDS each;
+# crashes are written to build-fuzz/crashes. Corpora start from the project's own files.
+FUZZ_SECONDS ?= 60
+fuzz: deps
+	@dpkg -s clang libomp-dev >/dev/null 2>&1 || { $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get update -qq && \
+	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends clang libomp-dev; }
+	cmake -S . -B $(BUILD)-fuzz -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+	  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDEM_FUZZ=ON >/dev/null
+	cmake --build $(BUILD)-fuzz -j $(JOBS) --target fuzz_scene fuzz_study fuzz_csv
+	mkdir -p $(BUILD)-fuzz/crashes $(BUILD)-fuzz/corpus/scene $(BUILD)-fuzz/corpus/study $(BUILD)-fuzz/corpus/csv
+	cp scenes/*.yaml scenes/tests/*.yaml $(BUILD)-fuzz/corpus/scene/
+	cp pipeline/studies/*.yaml $(BUILD)-fuzz/corpus/study/
+	printf 'x,y,z,radius\n0.01,0.01,0.01,0.002\n0.02,0.01,0.01,0.002\n' > $(BUILD)-fuzz/corpus/csv/two.csv
+	for t in scene study csv; do \
+	  $(BUILD)-fuzz/bin/fuzz_$$t $(BUILD)-fuzz/corpus/$$t -max_total_time=$(FUZZ_SECONDS) -timeout=10 \
+	    -artifact_prefix=$(BUILD)-fuzz/crashes/$$t- -print_final_stats=1 > $(BUILD)-fuzz/$$t.log 2>&1; rc=$$?; \
+	  tail -n 14 $(BUILD)-fuzz/$$t.log; [ $$rc = 0 ] || { echo "fuzz_$$t found a bug: $(BUILD)-fuzz/$$t.log"; exit 1; }; \
+	done
 
 # Speed of the engine (1 and 2 threads) and of LAMMPS on the same packings -> reports/bench.{json,md}.
 bench: build
