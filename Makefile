@@ -85,6 +85,7 @@ quick: build
 report: build
 	-$(BUILD)/bin/validate --results $(RESULTS) --references reference_data/paper.yaml --out reports
 	reports/make_figures.sh $(BUILD)/bin/dem $(RESULTS) reports/figures
+	SAMPLE=%s_prepare.h5 LATTICE=$(BUILD)/lattice.h5 reports/samples/figures.sh $(BUILD)/bin/dem $(RESULTS) reports/figures
 	reports/make_report.sh $(BUILD)/bin/dem $(RESULTS) reports
 
 # The three preparation scenes of SPEC section 2, full size (8,000 spheres), seed 1; then the table.

@@ -3,11 +3,16 @@
 #   Fig. 1: grading curve, target (SPEC section 1) and realised in the samples (by mass and by count).
 #   Fig. 2: (A) the lattice before compression, (B-D) the loose, medium and dense samples, in 3-D.
 # Usage: reports/samples/figures.sh [DEM] [SAMPLES_DIR] [FIG_DIR]
+# SAMPLE: the file name of a sample in SAMPLES_DIR, %s standing for loose/medium/dense (default
+# the issue-3 names %s_n20_s1_viscous.h5; the study's are %s_prepare.h5). LATTICE: where the
+# one-step lattice result is kept (default SAMPLES_DIR/lattice.h5).
 set -euo pipefail
 here=$(cd "$(dirname "$0")/../.." && pwd)
 dem=${1:-$here/build/bin/dem}
 samples=${2:-$here/results/samples}
 figs=${3:-$here/reports/figures}
+pattern=${SAMPLE:-%s_n20_s1_viscous.h5}
+sample() { printf "$samples/$pattern" "$1"; }
 mkdir -p "$figs"
 
 # Realised percent finer by mass, sorted by diameter (mm), from a result's final particles.
@@ -16,7 +21,7 @@ realised() {
     awk '{ d[NR] = $1; m[NR] = $2; total += $2 } END { for (i = 1; i <= NR; i++) { c += m[i]; print d[i], 100 * c / total, 100 * i / NR } }'
 }
 printf '3.0 0\n3.7 50\n4.5 100\n' > "$figs/fig01_grading_target.dat"
-realised "$samples/dense_n20_s1_viscous.h5" > "$figs/fig01_grading_mass_basis.dat"
+realised "$(sample dense)" > "$figs/fig01_grading_mass_basis.dat"
 number_sample=$here/results/sweep/dense_number.h5
 [ -f "$number_sample" ] && realised "$number_sample" > "$figs/fig01_grading_number_basis.dat"
 gnuplot <<GP
@@ -32,13 +37,13 @@ plot "$figs/fig01_grading_target.dat" w lp lw 3 pt 7 ps 1.5 lc rgb "black" t "ta
 GP
 
 # Fig. 2: the lattice (a one-step run of the preparation scene) and the three samples.
-lattice=$samples/lattice.h5
+lattice=${LATTICE:-$samples/lattice.h5}
 [ -f "$lattice" ] || "$dem" run "$here/scenes/prepare_dense.yaml" --out "$lattice" --quiet --set name=lattice \
   --set 'stages=[{name: lattice, type: strain_rate, strain_rate: [0, 0, 0], duration: 1.0e-6}]'
 "$dem" state "$lattice" | awk 'NR > 1 { print 1000 * $1, 1000 * $2, 1000 * $3, 1000 * $4 }' > "$figs/fig02_lattice.dat"
 for d in loose medium dense; do
-  if [ -f "$samples/${d}_n20_s1_viscous.h5" ]; then
-    "$dem" state "$samples/${d}_n20_s1_viscous.h5" | awk 'NR > 1 { print 1000 * $1, 1000 * $2, 1000 * $3, 1000 * $4 }' > "$figs/fig02_$d.dat"
+  if [ -f "$(sample "$d")" ]; then
+    "$dem" state "$(sample "$d")" | awk 'NR > 1 { print 1000 * $1, 1000 * $2, 1000 * $3, 1000 * $4 }' > "$figs/fig02_$d.dat"
   else
     echo "note: no $d sample yet, its panel stays empty" >&2; echo "0 0 0 0" > "$figs/fig02_$d.dat"
   fi
