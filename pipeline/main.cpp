@@ -43,7 +43,8 @@ std::string engine_version(const std::string& dem) {
 int main(int argc, char** argv) {
   namespace fs = std::filesystem;
   std::string study_file, profile = "paper", out, dem;
-  int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  int jobs = cores;
   int threads = 0;  // 0: cores / jobs
   bool plan_only = false;
   for (int i = 1; i < argc; ++i) {
@@ -62,7 +63,7 @@ int main(int argc, char** argv) {
     else if (!a.empty() && a[0] != '-' && study_file.empty()) study_file = a;
     else { std::fprintf(stderr, "pipeline: unexpected argument '%s'\n%s", a.c_str(), usage); return 2; }
   }
-  if (threads == 0) threads = std::max(1, static_cast<int>(std::max(1u, std::thread::hardware_concurrency())) / jobs);
+  if (threads == 0) threads = std::max(1, cores / jobs);
   if (study_file.empty()) { std::fprintf(stderr, "pipeline: need a study file\n%s", usage); return 2; }
   if (dem.empty()) dem = (fs::canonical("/proc/self/exe").parent_path() / "dem").string();
   const std::string version = engine_version(dem);

@@ -224,6 +224,7 @@ fig_by_density() {
         add "$figs/${name}_${d}_test$t.dat" '1:2' "$style lc rgb \"${tcol[$t]}\"" "Test $t"
       done
       for r in "${REFS[@]}"; do if [ -n "$r" ]; then add_raw "$r"; fi; done
+      if [ "$ANY" = 1 ] && [ -n "${DREF[$d]:-}" ]; then add_raw "${DREF[$d]}"; fi
       panel_plot
       i=$((i + 1))
     done
@@ -231,7 +232,8 @@ fig_by_density() {
   } > "$figs/$name.gp"
   run_gp "$name"
 }
-REFS=("")
+REFS=("")         # reference lines drawn in every panel
+declare -A DREF   # a reference line for one density's panel, drawn when that density has data
 
 # Fig. 4: q against p, every row, all tests. Panel order of the caption: (A) dense (B) medium (C) loose.
 for d in "${densities[@]}"; do for t in "${tests[@]}"; do
@@ -426,23 +428,12 @@ for d in "${densities[@]}"; do for t in "${tests[@]}"; do
   # friction, e.g. 0.2 for medium), not from a step with the shearing friction
   { echo "# cycle sliding_percent (cycle_end rows)"; pick "$d$t" ts 'cycle_end == 1' cycle '100*sliding_fraction'; } > "$figs/fig11_sliding_${d}_test$t.dat"
 done; done
-# Fig. 10 by hand: its reference line (the paper's value before shearing) depends on the density.
-{
-  preamble "$figs/fig10_coordination.png" 1800 620
-  echo 'set multiplot layout 1,3 title "Fig. 10  Coordination number 2N_c/N_p (rattlers included) at the end of each cycle, all tests" font ",13"'
-  echo 'set xlabel "cycle number (0 = start of shearing)"; set ylabel "coordination number"; set key top right; set offsets 0, 0.3, graph 0.4, graph 0.05'
-  i=0
-  for d in "${densities[@]}"; do
-    echo "set xrange [0:*]; set yrange [*:*]; set title \"(${letters[$i]}) $d\" font \",12\""
-    panel_reset
-    for t in "${tests[@]}"; do add "$figs/fig10_coordination_${d}_test$t.dat" '1:2' "w lp lw 1.4 pt 7 ps 0.7 lc rgb \"${tcol[$t]}\"" "Test $t"; done
-    [ "$ANY" = 1 ] && add_raw "${cn_paper[$d]} w l dt 2 lw 1.5 lc rgb '#777777' t 'paper, before shearing (${cn_paper[$d]})'"
-    panel_plot
-    i=$((i + 1))
-  done
-  echo "unset multiplot"
-} > "$figs/fig10_coordination.gp"
-run_gp fig10_coordination
+# Fig. 10: each panel also shows the paper's value before shearing for its density.
+for d in "${densities[@]}"; do DREF[$d]="${cn_paper[$d]} w l dt 2 lw 1.5 lc rgb '#777777' t 'paper, before shearing (${cn_paper[$d]})'"; done
+fig_by_density fig10_coordination "${densities[*]}" "cycle number (0 = start of shearing)" "coordination number" \
+  "[0:*]" "[*:*]" "Fig. 10  Coordination number 2N_c/N_p (rattlers included) at the end of each cycle, all tests" "top right" \
+  "set offsets 0, 0.3, graph 0.4, graph 0.05" "w lp lw 1.4 pt 7 ps 0.7"
+DREF=()
 REFS=("")
 fig_by_density fig11_sliding "loose medium dense" "cycle number" "sliding contact fraction N_s/N_c (%)" \
   "[0:*]" "[0:*]" "Fig. 11  Sliding contact fraction N_s/N_c × 100 % (|f_t| ≥ μ f_n) at the end of each cycle, all tests" "top right" "set offsets 0, 0.3, graph 0.4, 0" "w lp lw 1.4 pt 7 ps 0.7"

@@ -56,6 +56,7 @@ struct Result {
   double median_rate, min_rate, max_rate;
   double contacts_per_particle;
   bool same_as_one_thread;
+  double speedup;  // median rate / the 1-thread median of the same friction
 };
 
 // Builds the packing for `friction` once (cached) and returns its path.
@@ -86,6 +87,7 @@ int main(int argc, char** argv) {
     const std::string packing = packing_for(dir, mu);
     const dem::SceneConfig scene = dem::scene_from_text(timing_scene(packing, mu, 1000000000L), dir + "/bench.yaml");
     std::vector<dem::Vec3> one_thread_positions;
+    double one_thread_rate = 0;
     for (int threads : {1, 2}) {
       omp_set_num_threads(threads);
       std::vector<double> rates;
@@ -106,7 +108,9 @@ int main(int argc, char** argv) {
         same = same && sim.particles().s == one_thread_positions;
       }
       std::sort(rates.begin(), rates.end());
-      results.push_back({mu, threads, rates[rates.size() / 2], rates.front(), rates.back(), z, same});
+      const double median = rates[rates.size() / 2];
+      if (threads == 1) one_thread_rate = median;
+      results.push_back({mu, threads, median, rates.front(), rates.back(), z, same, median / one_thread_rate});
     }
   }
   rusage usage{};
@@ -117,9 +121,8 @@ int main(int argc, char** argv) {
   std::printf("%-9s %-8s %-22s %-24s %-8s %-10s %s\n", "friction", "threads", "particle-steps/s (med)", "min .. max",
               "2Nc/Np", "speed-up", "same bits as 1 thread");
   for (const auto& r : results) {
-    const double one = r.threads == 1 ? r.median_rate : results[&r - &results[0] - 1].median_rate;
     std::printf("%-9.2f %-8d %-22.3e %.3e .. %.3e  %-8.2f %-10.2f %s\n", r.friction, r.threads, r.median_rate, r.min_rate,
-                r.max_rate, r.contacts_per_particle, r.median_rate / one, r.same_as_one_thread ? "yes" : "NO");
+                r.max_rate, r.contacts_per_particle, r.speedup, r.same_as_one_thread ? "yes" : "NO");
   }
   std::printf("peak memory (max RSS): %.1f MB\n", peak_mb);
   std::ofstream json(dir + "/bench.json");
