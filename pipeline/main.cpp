@@ -75,17 +75,24 @@ int main(int argc, char** argv) {
     out = fs::absolute(out).lexically_normal().string();
     const auto runs = pipeline::plan_study(study, prof, out, version);
     pipeline::write_scenes(runs);
+    pipeline::write_manifest(runs, study, out);
     if (plan_only) {
       for (const auto& r : runs)
-        std::printf("%-18s %-9s %.3g particle-steps  %s\n", r.name.c_str(),
-                    pipeline::up_to_date(r.result, r.hash) ? "reuse" : "run", r.cost, r.scene_file.c_str());
+        std::printf("%-24s %-9s %.3g particle-steps  %s\n", r.name.c_str(),
+                    pipeline::up_to_date(r.result, r.hash)                       ? "reuse"
+                    : r.may_fail && pipeline::recorded_stop(r.result, r.hash) ? "stopped"
+                                                                                : "run",
+                    r.cost, r.scene_file.c_str());
       return 0;
     }
     std::printf("[pipeline] study '%s', profile %s, engine %s, results in %s\n", study.name.c_str(), profile.c_str(),
                 version.c_str(), out.c_str());
     const pipeline::Outcome o = pipeline::execute(runs, dem, jobs, threads);
-    std::printf("[pipeline] done in %.1f min: %d ran, %d reused, %d failed, %d blocked\n", o.wall_time_s / 60, o.ran,
+    std::printf("[pipeline] done in %.1f min: %d ran, %d reused, %d failed, %d blocked", o.wall_time_s / 60, o.ran,
                 o.reused, o.failed, o.blocked);
+    if (o.stopped + o.skipped > 0)  // may_fail runs: outcomes, not failures
+      std::printf("; %d stopped with a message and %d skipped, as allowed (may_fail)", o.stopped, o.skipped);
+    std::printf("\n");
     return o.failed + o.blocked > 0 ? 1 : 0;
   } catch (const dem::ConfigError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());

@@ -8,9 +8,6 @@
 
 namespace validation {
 
-namespace {
-
-// Value of `column` at the end of cycle `c` (the row with cycle_end = 1 and cycle = c).
 std::optional<double> at_cycle_end(const TestResult& t, const std::string& column, int c) {
   const auto& cyc = t.series.at("cycle");
   const auto& end = t.series.at("cycle_end");
@@ -19,6 +16,8 @@ std::optional<double> at_cycle_end(const TestResult& t, const std::string& colum
     if (end[i] == 1 && static_cast<int>(cyc[i]) == c) return v[i];
   return std::nullopt;
 }
+
+namespace {
 
 // Mean over the tests of f(test); the note says how many tests contributed.
 Measured mean_over_tests(const DensityResults& r, const std::function<std::optional<double>(const TestResult&)>& f) {

@@ -22,4 +22,7 @@ Measured compute(const QuantityRequest& q, const DensityResults& r);
 // The names compute() knows, for the reference file's validation.
 bool known_quantity(const std::string& name);
 
+// Value of `column` at the end of cycle `c` (the row with cycle_end = 1 and cycle = c), if any.
+std::optional<double> at_cycle_end(const TestResult& t, const std::string& column, int c);
+
 }  // namespace validation

@@ -29,6 +29,19 @@ Columns read_group(hid_t file, const std::string& group) {
 
 }  // namespace
 
+Columns read_columns(const std::string& file, const std::string& group) {
+  dem::h5::Handle f = dem::h5::open_file_read(file);
+  return read_group(f, group);
+}
+
+bool is_complete(const std::string& file) {
+  try {
+    return complete(dem::h5::open_file_read(file));
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
 std::map<std::string, DensityResults> load_results(const std::string& dir, const std::vector<std::string>& densities,
                                                    std::vector<std::string>& missing) {
   namespace fs = std::filesystem;

@@ -21,6 +21,12 @@ struct DensityResults {
   std::vector<TestResult> tests;
 };
 
+// One group (timeseries or legs) of a result file, complete or not (.partial results of stopped
+// runs too); throws if the file cannot be read.
+Columns read_columns(const std::string& file, const std::string& group);
+// True if the file is a complete result.
+bool is_complete(const std::string& file);
+
 // Reads DIR/<density>_prepare.h5 and DIR/<density>_test<N>.h5 (N = 1..5) for each density; files
 // that are missing or not complete are left out and listed in `missing`.
 std::map<std::string, DensityResults> load_results(const std::string& dir, const std::vector<std::string>& densities,

@@ -1,7 +1,9 @@
 #include "config/study_config.hpp"
 
 #include <filesystem>
+#include <regex>
 #include <set>
+#include <sstream>
 
 #include "config/yaml_section.hpp"
 
@@ -20,7 +22,59 @@ void require_file(const dem::Section& s, const std::string& key, const std::stri
   if (!std::filesystem::is_regular_file(path, ec)) s.fail(key, "no such file: " + path);
 }
 
+// A mapping of scene key paths to values (`numerics.time_step: 2.0e-6`, `stages[0].rate: 4.0e6`),
+// as `dem run --set` takes them. The keys' form is checked here; whether each is a scene key is
+// checked when the plan parses the resolved scenes (the engine's parser names what is allowed).
+Overrides read_overrides(dem::Section& s, const std::string& key, bool for_test, const std::string& doc) {
+  Overrides out;
+  if (!s.has(key)) {
+    s.optional_child(key, doc);  // declared all the same, so that a misspelt key gets a suggestion
+    return out;
+  }
+  const YAML::Node n = s.raw(key, "mapping of scene key paths to values", doc);
+  if (!n.IsMap() || n.size() == 0)
+    s.fail(key, "must be a non-empty mapping of scene key paths to values, e.g. {numerics.time_step: 2.0e-6}");
+  static const std::regex path_re(R"(^[A-Za-z_][A-Za-z0-9_]*(\[[0-9]+\])?(\.[A-Za-z_][A-Za-z0-9_]*(\[[0-9]+\])?)*$)");
+  for (const auto& kv : n) {
+    const std::string k = kv.first.IsScalar() ? kv.first.Scalar() : "";
+    if (!std::regex_match(k, path_re))
+      s.fail(key, "'" + k + "' is not a scene key path (names of letters, digits and _, each with an optional [index], joined by '.')");
+    // The pipeline owns these: run names, and which sample a test starts from.
+    if (k == "name" || (for_test && k.rfind("particles", 0) == 0))
+      s.fail(key + "." + k, "is set by the pipeline; allowed: any other scene key (dem keys lists them)");
+    if (!kv.second || kv.second.IsNull()) s.fail(key + "." + k, "needs a value");
+    // A file named in an override is relative to the study file, like every path of a study.
+    YAML::Node value = YAML::Clone(kv.second);
+    if ((k == "particles.csv" || k == "particles.state") && value.IsScalar()) value = resolve(s.file(), value.Scalar());
+    if (k == "particles" && value.IsMap())
+      for (const char* f : {"csv", "state"})
+        if (value[f] && value[f].IsScalar()) value[f] = resolve(s.file(), value[f].Scalar());
+    YAML::Emitter e;
+    e << YAML::Flow << value;
+    out.emplace_back(k, e.c_str());
+  }
+  return out;
+}
+
 }  // namespace
+
+std::string describe(const Variant& v) {
+  std::string out;
+  auto add = [&](const std::string& what, const Overrides& o) {
+    if (o.empty()) return;
+    out += (out.empty() ? "" : "; ") + what;
+    for (std::size_t i = 0; i < o.size(); ++i) out += (i ? ", " : "") + o[i].first + " = " + o[i].second;
+  };
+  add("", v.set);
+  add("preparation: ", v.prepare);
+  add("test: ", v.test);
+  if (v.time_step_fraction) {
+    std::ostringstream f;
+    f << *v.time_step_fraction;
+    out += (out.empty() ? "" : "; ") + std::string("time step = ") + f.str() + " x critical";
+  }
+  return out.empty() ? "as written" : out;
+}
 
 const Profile& Study::profile(const std::string& wanted) const {
   std::string known;
@@ -48,11 +102,16 @@ Study load_study(const std::string& file) {
     if (!names.insert(den.name).second) d.fail("name", "duplicate name '" + den.name + "'");
     st.densities.push_back(den);
   }
-  for (dem::Section& t : root.list("tests", "the cyclic tests: name and scene file")) {
+  // A study of variants may have no tests: each variant is then its preparation run alone.
+  const bool has_variants = root.has("variants");
+  std::vector<dem::Section> tests;
+  if (!has_variants || root.has("tests")) tests = root.list("tests", "the cyclic tests: name and scene file");
+  for (dem::Section& t : tests) {
     TestCase tc;
     tc.name = t.text("name", std::nullopt, "test name");
     tc.scene = resolve(file, t.text("scene", std::nullopt, "scene file of the test, relative to the study file"));
     require_file(t, "scene", tc.scene);
+    tc.set = read_overrides(t, "set", true, "scene overrides of this test in every variant");
     t.finish();
     if (!names.insert(tc.name).second) t.fail("name", "duplicate name '" + tc.name + "'");
     st.tests.push_back(tc);
@@ -69,6 +128,34 @@ Study load_study(const std::string& file) {
     st.profiles.push_back(pr);
   }
   profiles.finish();
+  const bool may_fail = root.boolean("may_fail", false, "default of the variants' may_fail");
+  if (has_variants) {
+    std::set<std::string> variant_names;
+    static const std::regex name_re("^[A-Za-z0-9_-]+$");  // part of file names
+    for (dem::Section& v : root.list("variants", "settings of the study, each a set of scene overrides")) {
+      Variant var;
+      var.name = v.text("name", std::nullopt, "variant name (letters, digits, _ and -; part of the run names)");
+      if (!std::regex_match(var.name, name_re)) v.fail("name", "must be letters, digits, _ and -, got '" + var.name + "'");
+      if (!variant_names.insert(var.name).second) v.fail("name", "duplicate name '" + var.name + "'");
+      var.set = read_overrides(v, "set", false, "scene overrides of the preparation and the tests");
+      var.prepare = read_overrides(v, "prepare", false, "scene overrides of the preparation");
+      var.test = read_overrides(v, "test", true, "scene overrides of the tests");
+      for (const auto& o : var.set)
+        if (o.first.rfind("particles", 0) == 0 && !st.tests.empty())
+          v.fail("set." + o.first, "would change where the tests' particles come from; put it under prepare:");
+      if (v.has("time_step_fraction")) {
+        var.time_step_fraction = v.number("time_step_fraction", "", {0, 10, true}, std::nullopt,
+                                          "numerics.time_step as a fraction of the sample's critical step 2 sqrt(m_min/kn)");
+        for (const Overrides* o : {&var.set, &var.prepare, &var.test})
+          for (const auto& kv : *o)
+            if (kv.first == "numerics.time_step")
+              v.fail("time_step_fraction", "and numerics.time_step both set the time step; keep one");
+      }
+      var.may_fail = v.boolean("may_fail", may_fail, "a run that stops with a message is an outcome, not a failure");
+      v.finish();
+      st.variants.push_back(var);
+    }
+  }
   root.finish();
   return st;
 }

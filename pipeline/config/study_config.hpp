@@ -1,9 +1,15 @@
 #pragma once
-// A study: every density x test combination of the paper, read from YAML into typed structs.
+// A study: every density x test combination of the paper, read from YAML into typed structs; a
+// study may also list variants (convergence, stability), each a set of scene overrides.
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace pipeline {
+
+// Scene overrides, (key path, YAML value) in the order written: what `dem run --set` takes.
+using Overrides = std::vector<std::pair<std::string, std::string>>;
 
 struct Density {
   std::string name;    // loose, medium, dense
@@ -13,6 +19,18 @@ struct Density {
 struct TestCase {
   std::string name;   // test1 ... test5
   std::string scene;  // scene file (absolute path)
+  Overrides set;      // applied to this test's scene in every variant
+};
+
+// One setting of a study: the preparation and the tests with these overrides applied after the
+// profile's. A variant with no preparation overrides shares the preparation of the variant before
+// it with the same resolved preparation (the plan merges identical preparations).
+struct Variant {
+  std::string name;
+  Overrides set;            // applied to the preparation and the tests
+  Overrides prepare, test;  // then these, to the preparation only / the tests only
+  std::optional<double> time_step_fraction;  // numerics.time_step = this x the sample's critical step
+  bool may_fail = false;    // a run that stops with a message is an outcome, not a study failure
 };
 
 struct Profile {
@@ -27,10 +45,14 @@ struct Study {
   std::string output;       // results folder (absolute)
   std::string preparation;  // preparation scene template (absolute); friction set per density
   std::vector<Density> densities;
-  std::vector<TestCase> tests;
+  std::vector<TestCase> tests;      // may be empty when the study has variants (preparations only)
   std::vector<Profile> profiles;
+  std::vector<Variant> variants;    // empty: the paper study's form, runs named <density>_<test>
   const Profile& profile(const std::string& name) const;  // throws naming the known profiles
 };
+
+// The variant's settings in one line (the tables of the report name variants by them).
+std::string describe(const Variant& v);
 
 // Reads and validates a study; relative paths are taken from the study file's folder.
 Study load_study(const std::string& file);

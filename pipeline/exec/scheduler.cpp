@@ -8,7 +8,11 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <map>
+#include <sstream>
+
+#include <yaml-cpp/yaml.h>
 
 #include "io/hdf5.hpp"
 
@@ -26,9 +30,61 @@ bool up_to_date(const std::string& result, const std::string& hash) {
   }
 }
 
+std::string outcome_file(const std::string& result) { return result + ".outcome"; }
+
+std::optional<Stop> read_stop(const std::string& result) {
+  try {
+    const YAML::Node n = YAML::LoadFile(outcome_file(result));
+    Stop s;
+    s.input_hash = n["input_hash"].as<std::string>();
+    s.exit_code = n["exit_code"].as<int>();
+    s.message = n["message"].as<std::string>();
+    return s;
+  } catch (const std::exception&) {
+    return std::nullopt;  // missing or unreadable: the run is run again
+  }
+}
+
+void write_stop(const std::string& result, const Stop& stop) {
+  YAML::Emitter e;
+  e << YAML::BeginMap << YAML::Key << "input_hash" << YAML::Value << stop.input_hash << YAML::Key << "exit_code"
+    << YAML::Value << stop.exit_code << YAML::Key << "outcome" << YAML::Value
+    << (stop.exit_code == 2 ? "refused" : "stopped") << YAML::Key << "message" << YAML::Value
+    << YAML::DoubleQuoted << stop.message << YAML::EndMap;
+  const std::string tmp = outcome_file(result) + ".tmp";
+  {
+    std::ofstream out(tmp);
+    out << e.c_str() << "\n";
+    if (!out) throw std::runtime_error(tmp + ": cannot be written");
+  }
+  std::filesystem::rename(tmp, outcome_file(result));  // atomic: never half an outcome
+}
+
+std::optional<Stop> recorded_stop(const std::string& result, const std::string& hash) {
+  auto s = read_stop(result);
+  if (s && s->input_hash == hash) return s;
+  return std::nullopt;
+}
+
 namespace {
 
 enum class State { Waiting, Running, Done, Failed, Blocked };
+
+// Why a run stopped: the failed status of its .partial result (a run that started), else the last
+// "error: " line of its log (input refused before any step).
+std::string stop_message(const PlannedRun& r) {
+  try {
+    dem::h5::Handle f = dem::h5::open_file_read(r.result + ".partial");
+    const std::string status = dem::h5::get_string_attribute(f, "status");
+    if (status.rfind("failed: ", 0) == 0) return status.substr(8);
+  } catch (const std::exception&) {
+  }
+  std::ifstream log(r.log);
+  std::string line, last;
+  while (std::getline(log, line))
+    if (line.rfind("error: ", 0) == 0) last = line.substr(7);
+  return last;
+}
 
 pid_t spawn(const std::string& dem, const PlannedRun& r, int threads) {
   const pid_t pid = fork();
@@ -73,6 +129,9 @@ Outcome execute(const std::vector<PlannedRun>& runs, const std::string& dem, int
     if (up_to_date(runs[i].result, runs[i].hash)) {
       state[i] = State::Done;
       ++out.reused;
+    } else if (runs[i].may_fail && recorded_stop(runs[i].result, runs[i].hash)) {
+      state[i] = State::Failed;  // stopped before with these inputs: its outcome stands
+      ++out.reused;
     } else {
       cost_left += runs[i].cost;
     }
@@ -108,12 +167,15 @@ Outcome execute(const std::vector<PlannedRun>& runs, const std::string& dem, int
       if (dep >= 0 && (state[static_cast<std::size_t>(dep)] == State::Failed ||
                        state[static_cast<std::size_t>(dep)] == State::Blocked)) {
         state[i] = State::Blocked;
-        ++out.blocked;
+        ++(runs[i].may_fail ? out.skipped : out.blocked);
         cost_left -= runs[i].cost;
-        std::printf("[pipeline] %s blocked: %s failed\n", runs[i].name.c_str(), runs[static_cast<std::size_t>(dep)].name.c_str());
+        std::printf("[pipeline] %s %s: %s did not finish\n", runs[i].name.c_str(), runs[i].may_fail ? "skipped" : "blocked",
+                    runs[static_cast<std::size_t>(dep)].name.c_str());
         continue;
       }
       if (dep >= 0 && state[static_cast<std::size_t>(dep)] != State::Done) continue;
+      std::error_code ec;
+      std::filesystem::remove(outcome_file(runs[i].result), ec);  // a stale outcome must not outlive a new run
       running[spawn(dem, runs[i], threads)] = i;
       state[i] = State::Running;
       started[i] = clock::now();
@@ -135,6 +197,13 @@ Outcome execute(const std::vector<PlannedRun>& runs, const std::string& dem, int
       cost_done += runs[i].cost;
       busy_wall += wall;
       report("finished " + runs[i].name + " in " + minutes(wall));
+    } else if (runs[i].may_fail && WIFEXITED(status) && (WEXITSTATUS(status) == 1 || WEXITSTATUS(status) == 2)) {
+      // An expected kind of end: the engine refused the input or stopped the run, with a message.
+      state[i] = State::Failed;
+      ++out.stopped;
+      const Stop stop{runs[i].hash, WEXITSTATUS(status), stop_message(runs[i])};
+      write_stop(runs[i].result, stop);
+      report("stopped " + runs[i].name + " (allowed: " + stop.message + ")");
     } else {
       state[i] = State::Failed;
       ++out.failed;

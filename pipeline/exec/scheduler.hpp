@@ -1,7 +1,10 @@
 #pragma once
 // Runs planned runs as `dem run` subprocesses, at most `jobs` at once, each after the run it
 // depends on. A run whose result is complete and carries the same input hash is reused; a failed
-// run is reported with its log and blocks only the runs that need it.
+// run is reported with its log and blocks only the runs that need it. A run marked may_fail that
+// stops with a message (refused input, exit 2; or a failed run, exit 1) is an outcome: recorded in
+// <result>.outcome with its input hash, reused like a result, and not a failure of the study.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,11 +14,25 @@ namespace pipeline {
 
 struct Outcome {
   int ran = 0, reused = 0, failed = 0, blocked = 0;
+  int stopped = 0;  // may_fail runs that stopped with a message this time (reused ones count as reused)
+  int skipped = 0;  // may_fail runs not run because the run they need stopped
   double wall_time_s = 0;
 };
 
 // True if `result` is a complete result whose `input_hash` attribute equals `hash`.
 bool up_to_date(const std::string& result, const std::string& hash);
+
+// A may_fail run's recorded stop: <result>.outcome, written atomically when it stopped.
+struct Stop {
+  std::string input_hash;
+  int exit_code = 0;     // 2: refused before any step; 1: stopped during the run
+  std::string message;   // the engine's message (status attribute of the .partial, or the log's error line)
+};
+std::string outcome_file(const std::string& result);
+std::optional<Stop> read_stop(const std::string& result);
+void write_stop(const std::string& result, const Stop& stop);
+// The recorded stop of `result` if it has the input hash `hash`.
+std::optional<Stop> recorded_stop(const std::string& result, const std::string& hash);
 
 // `threads`: threads inside each run (dem run --threads).
 Outcome execute(const std::vector<PlannedRun>& runs, const std::string& dem_binary, int jobs, int threads = 1);

@@ -6,11 +6,14 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "config/scene_config.hpp"
 #include "config/yaml_section.hpp"
 #include "control/stress_path.hpp"
+#include "dynamics/simulation.hpp"
+#include "generate/grading.hpp"
 
 namespace pipeline {
 
@@ -68,48 +71,143 @@ double estimated_steps(const dem::SceneConfig& scene) {
 
 }  // namespace
 
+namespace {
+
+// 17 significant digits: the time step read back is the same double, so a fraction of exactly
+// max_time_step_fraction is accepted by the engine's check rather than refused by round-off.
+std::string exact(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", x);
+  return buf;
+}
+
+// The spheres a lattice preparation will start from (what the critical step depends on).
+dem::Particles lattice_particles(const dem::SceneConfig& scene) {
+  if (scene.particles.kind != dem::ParticleSource::Kind::Lattice)
+    throw dem::ConfigError(scene.file + ": time_step_fraction needs a preparation from particles.lattice");
+  dem::Particles p;
+  dem::PeriodicCell cell;
+  const dem::ParticleSource& src = scene.particles;
+  dem::make_lattice(src.lattice, dem::GradingCurve(src.grading_diameters_m, src.grading_percent_finer, src.grading_basis),
+                    scene.material.density_kg_per_m3, p, cell);
+  return p;
+}
+
+// Errors in a variant's scenes name the study file and the variant, then the engine's message
+// (which names the scene key and what is allowed).
+template <class F>
+auto in_variant(const Study& study, std::size_t index, const Variant* v, F&& f) {
+  if (!v) return f();
+  try {
+    return f();
+  } catch (const dem::ConfigError& e) {
+    throw dem::ConfigError(study.file + ": variants[" + std::to_string(index) + "] (" + v->name + "): " + e.what());
+  }
+}
+
+}  // namespace
+
 std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, const std::string& out_dir,
                                    const std::string& engine_version) {
   std::vector<PlannedRun> runs;
   const std::string header = "# Resolved by the pipeline from " + study.file + " (profile " + profile.name +
                              "); do not edit, edit the study or its scenes.\n";
-  const double particles = static_cast<double>(profile.lattice) * profile.lattice * profile.lattice;
-  for (const Density& d : study.densities) {
-    PlannedRun prep;
-    prep.name = d.name + "_prepare";
-    prep.scene_file = (fs::path(out_dir) / "scenes" / (prep.name + ".yaml")).string();
-    prep.result = (fs::path(out_dir) / (prep.name + ".h5")).string();
-    prep.log = (fs::path(out_dir) / "logs" / (prep.name + ".log")).string();
-    YAML::Node scene = load_yaml(study.preparation);
-    const std::string n = std::to_string(profile.lattice);
-    dem::apply_override(scene, study.preparation, "name", prep.name);
-    std::ostringstream mu;
-    mu << d.friction;
-    dem::apply_override(scene, study.preparation, "material.friction", mu.str());
-    dem::apply_override(scene, study.preparation, "particles.lattice.n", "[" + n + ", " + n + ", " + n + "]");
-    prep.scene_text = emit(scene, header);
-    const dem::SceneConfig parsed = dem::scene_from_text(prep.scene_text, prep.scene_file);
-    prep.hash = content_hash(engine_version + "\n" + prep.scene_text);
-    prep.cost = particles * estimated_steps(parsed);
-    const int prep_index = static_cast<int>(runs.size());
-    runs.push_back(prep);
+  // A study without variants is one unnamed variant with no overrides: the paper study's runs,
+  // names and hashes are those of a pipeline without variants.
+  const std::vector<Variant> variants = study.variants.empty() ? std::vector<Variant>{Variant{}} : study.variants;
+  const bool named = !study.variants.empty();
+  std::map<std::string, int> preparations;  // resolved preparation (without its name) -> run index
+  std::map<int, double> particles;          // preparation run index -> its number of spheres
+  auto paths = [&](PlannedRun& r) {
+    r.scene_file = (fs::path(out_dir) / "scenes" / (r.name + ".yaml")).string();
+    r.result = (fs::path(out_dir) / (r.name + ".h5")).string();
+    r.log = (fs::path(out_dir) / "logs" / (r.name + ".log")).string();
+  };
+  for (std::size_t vi = 0; vi < variants.size(); ++vi) {
+    const Variant& v = variants[vi];
+    const Variant* where = named ? &v : nullptr;
+    const std::string prefix = named ? v.name + "_" : "";
+    for (const Density& d : study.densities) {
+      PlannedRun prep;
+      // A study of cases (variants, one sample, no tests): each run is its case.
+      const bool case_only = named && study.tests.empty() && study.densities.size() == 1;
+      prep.name = case_only ? v.name : prefix + d.name + "_prepare";
+      prep.density = d.name;
+      prep.may_fail = v.may_fail;
+      paths(prep);
+      YAML::Node scene = load_yaml(study.preparation);
+      const std::string n = std::to_string(profile.lattice);
+      dem::Particles sample;  // only for time_step_fraction
+      in_variant(study, vi, where, [&] {
+        dem::apply_override(scene, study.preparation, "name", prep.name);
+        std::ostringstream mu;
+        mu << d.friction;
+        dem::apply_override(scene, study.preparation, "material.friction", mu.str());
+        dem::apply_override(scene, study.preparation, "particles.lattice.n", "[" + n + ", " + n + ", " + n + "]");
+        for (const auto& [key, value] : v.set) dem::apply_override(scene, study.preparation, key, value);
+        for (const auto& [key, value] : v.prepare) dem::apply_override(scene, study.preparation, key, value);
+        if (v.time_step_fraction) {
+          const dem::SceneConfig parsed = dem::scene_from_text(emit(scene, header), prep.scene_file);
+          sample = lattice_particles(parsed);
+          const double dt = *v.time_step_fraction * dem::critical_time_step(sample, parsed.material.kn_N_per_m);
+          dem::apply_override(scene, study.preparation, "numerics.time_step", exact(dt));
+        }
+        return 0;
+      });
+      // Variants that change only the tests share one preparation: same scene but for its name.
+      YAML::Node unnamed = YAML::Clone(scene);
+      unnamed["name"] = "";
+      const std::string unnamed_text = emit(unnamed, "");
+      int prep_index = -1;
+      if (const auto it = preparations.find(unnamed_text); it != preparations.end()) {
+        prep_index = it->second;
+        runs[static_cast<std::size_t>(prep_index)].variants.push_back(v.name);
+        runs[static_cast<std::size_t>(prep_index)].may_fail &= v.may_fail;
+      } else {
+        prep.scene_text = emit(scene, header);
+        const dem::SceneConfig parsed =
+            in_variant(study, vi, where, [&] { return dem::scene_from_text(prep.scene_text, prep.scene_file); });
+        prep.hash = content_hash(engine_version + "\n" + prep.scene_text);
+        prep_index = static_cast<int>(runs.size());
+        const auto& lat = parsed.particles.lattice;
+        particles[prep_index] = static_cast<double>(lat.n[0]) * lat.n[1] * lat.n[2];
+        prep.cost = particles[prep_index] * estimated_steps(parsed);
+        prep.variants = {v.name};
+        preparations[unnamed_text] = prep_index;
+        runs.push_back(prep);
+      }
+      const PlannedRun from = runs[static_cast<std::size_t>(prep_index)];  // a copy: runs grows below
 
-    for (const TestCase& t : study.tests) {
-      PlannedRun run;
-      run.name = d.name + "_" + t.name;
-      run.scene_file = (fs::path(out_dir) / "scenes" / (run.name + ".yaml")).string();
-      run.result = (fs::path(out_dir) / (run.name + ".h5")).string();
-      run.log = (fs::path(out_dir) / "logs" / (run.name + ".log")).string();
-      YAML::Node ts = load_yaml(t.scene);
-      dem::apply_override(ts, t.scene, "name", run.name);
-      dem::apply_override(ts, t.scene, "particles", "{state: " + fs::absolute(prep.result).string() + "}");
-      cap_repeats(ts, profile.max_repeat);
-      run.scene_text = emit(ts, header);
-      const dem::SceneConfig tp = dem::scene_from_text(run.scene_text, run.scene_file);
-      run.hash = content_hash(engine_version + "\n" + run.scene_text + "\nfrom " + prep.hash);
-      run.depends_on = prep_index;
-      run.cost = particles * estimated_steps(tp);
-      runs.push_back(run);
+      for (const TestCase& t : study.tests) {
+        PlannedRun run;
+        run.name = prefix + d.name + "_" + t.name;
+        run.density = d.name;
+        run.test = t.name;
+        run.variants = {v.name};
+        run.may_fail = v.may_fail;
+        paths(run);
+        YAML::Node ts = load_yaml(t.scene);
+        in_variant(study, vi, where, [&] {
+          dem::apply_override(ts, t.scene, "name", run.name);
+          dem::apply_override(ts, t.scene, "particles", "{state: " + fs::absolute(from.result).string() + "}");
+          for (const auto& [key, value] : t.set) dem::apply_override(ts, t.scene, key, value);
+          for (const auto& [key, value] : v.set) dem::apply_override(ts, t.scene, key, value);
+          for (const auto& [key, value] : v.test) dem::apply_override(ts, t.scene, key, value);
+          cap_repeats(ts, profile.max_repeat);
+          if (v.time_step_fraction) {  // the test's spheres are the sample's; its kn may differ
+            const dem::SceneConfig parsed = dem::scene_from_text(emit(ts, header), run.scene_file);
+            const double dt = *v.time_step_fraction * dem::critical_time_step(sample, parsed.material.kn_N_per_m);
+            dem::apply_override(ts, t.scene, "numerics.time_step", exact(dt));
+          }
+          return 0;
+        });
+        run.scene_text = emit(ts, header);
+        const dem::SceneConfig tp = in_variant(study, vi, where, [&] { return dem::scene_from_text(run.scene_text, run.scene_file); });
+        run.hash = content_hash(engine_version + "\n" + run.scene_text + "\nfrom " + from.hash);
+        run.depends_on = prep_index;
+        run.cost = particles[prep_index] * estimated_steps(tp);
+        runs.push_back(run);
+      }
     }
   }
   return runs;
@@ -127,6 +225,23 @@ void write_scenes(const std::vector<PlannedRun>& runs) {
     out << r.scene_text;
     if (!out) throw std::runtime_error(r.scene_file + ": cannot be written");
   }
+}
+
+void write_manifest(const std::vector<PlannedRun>& runs, const Study& study, const std::string& out_dir) {
+  fs::create_directories(out_dir);
+  std::map<std::string, std::string> settings;
+  for (const Variant& v : study.variants) settings[v.name] = describe(v);
+  std::ostringstream text;
+  text << "# variant\tdensity\ttest\trun\tresult\tstarts_from\tmay_fail\tsettings\n";
+  for (const PlannedRun& r : runs)
+    for (const std::string& v : r.variants)
+      text << (v.empty() ? "-" : v) << '\t' << r.density << '\t' << (r.test.empty() ? "-" : r.test) << '\t' << r.name
+           << '\t' << r.result << '\t'
+           << (r.depends_on >= 0 ? runs[static_cast<std::size_t>(r.depends_on)].name : std::string("-")) << '\t'
+           << (r.may_fail ? 1 : 0) << '\t' << (settings.count(v) ? settings[v] : "as written") << '\n';
+  const fs::path file = fs::path(out_dir) / "runs.tsv", tmp = fs::path(out_dir) / "runs.tsv.tmp";
+  std::ofstream(tmp) << text.str();
+  fs::rename(tmp, file);  // atomic: a reader never sees half a manifest
 }
 
 }  // namespace pipeline

@@ -10,13 +10,16 @@
 namespace pipeline {
 
 struct PlannedRun {
-  std::string name;         // dense_prepare, dense_test1, ...
+  std::string name;         // dense_prepare, dense_test1, ... (with variants: <variant>_dense_prepare, ...)
   std::string scene_file;   // resolved scene (written by write_scenes)
   std::string scene_text;
   std::string result, log;  // result file and log of `dem run`
   std::string hash;         // input hash, recorded in the result
   int depends_on = -1;      // index of the run whose result this one starts from
   double cost = 0;          // estimated particle-steps, for the ETA
+  std::string density, test;  // test: empty for a preparation
+  std::vector<std::string> variants;  // the variants whose results this run is (a shared preparation: several)
+  bool may_fail = false;    // stopping with a message is an outcome (the scheduler records it)
 };
 
 // Plans every run; validates each resolved scene with the engine's own parser (ConfigError on
@@ -26,6 +29,10 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
 
 // Writes the resolved scenes (only where the text changed, so file times stay meaningful).
 void write_scenes(const std::vector<PlannedRun>& runs);
+
+// Writes <out_dir>/runs.tsv: one line per run and variant it belongs to, with the variant's
+// settings (what build/bin/compare-runs reads).
+void write_manifest(const std::vector<PlannedRun>& runs, const Study& study, const std::string& out_dir);
 
 // FNV-1a, 64 bit, as 16 hex digits: stable across platforms and compilers.
 std::string content_hash(const std::string& text);

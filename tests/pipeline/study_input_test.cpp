@@ -52,6 +52,31 @@ const std::vector<BadStudy> catalogue = {
      {"preparation", "no such file", "gone.yaml"}},
     {"empty density list", head + "densities: []\n" + good_tail, {"densities: must be a non-empty list"}},
     {"broken YAML", head + "densities: [{name: loose, friction: 0.5}\n" + good_tail, {"not valid YAML", "line"}},
+    // variants (issue 7): scene overrides per setting of the study
+    {"misspelt variant key", head + density + good_tail + "variants: [{name: a, sett: {numerics.time_step: 1.0e-6}}]\n",
+     {"variants[0]", "unknown key 'sett'", "did you mean 'set'"}},
+    {"override path not a key path", head + density + good_tail + "variants: [{name: a, set: {\"numerics..time_step\": 1}}]\n",
+     {"variants[0].set", "'numerics..time_step' is not a scene key path"}},
+    {"override of the run name", head + density + good_tail + "variants: [{name: a, set: {name: x}}]\n",
+     {"variants[0].set.name", "is set by the pipeline", "allowed: any other scene key"}},
+    {"test override of its sample", head + density + good_tail + "variants: [{name: a, test: {particles.state: x.h5}}]\n",
+     {"variants[0].test.particles.state", "is set by the pipeline"}},
+    {"particles for preparation and tests", head + density + good_tail + "variants: [{name: a, set: {particles.lattice.n: [2, 2, 2]}}]\n",
+     {"variants[0].set.particles.lattice.n", "put it under prepare:"}},
+    {"two time steps", head + density + good_tail + "variants: [{name: a, time_step_fraction: 0.1, set: {numerics.time_step: 1.0e-6}}]\n",
+     {"variants[0].time_step_fraction", "keep one"}},
+    {"zero time step fraction", head + density + good_tail + "variants: [{name: a, time_step_fraction: 0}]\n",
+     {"variants[0].time_step_fraction", "got 0"}},
+    {"duplicate variant", head + density + good_tail + "variants: [{name: a}, {name: a}]\n",
+     {"variants[1].name", "duplicate name 'a'"}},
+    {"variant name with a slash", head + density + good_tail + "variants: [{name: a/b}]\n",
+     {"variants[0].name", "letters, digits, _ and -", "'a/b'"}},
+    {"empty override mapping", head + density + good_tail + "variants: [{name: a, set: {}}]\n",
+     {"variants[0].set", "non-empty mapping of scene key paths"}},
+    {"may_fail not a boolean", head + density + good_tail + "variants: [{name: a, may_fail: maybe}]\n",
+     {"variants[0].may_fail", "true or false", "maybe"}},
+    {"test override of the run name", head + density + "tests: [{name: t1, scene: t.yaml, set: {name: x}}]\n" +
+     "profiles: {paper: {lattice: 20}, quick: {lattice: 10}}\n", {"tests[0].set.name", "is set by the pipeline"}},
 };
 
 }  // namespace
