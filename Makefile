@@ -5,6 +5,8 @@ PACKAGES := g++ cmake make libeigen3-dev libhdf5-dev libyaml-cpp-dev catch2 gnup
 SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 RESULTS  ?= results/study/paper
+CONVERGENCE ?= results/convergence/paper
+STABILITY   ?= results/stability/paper
 
 .PHONY: all deps build test sanitize fuzz bench quick study report samples samples-study cyclic-tests clean
 
@@ -68,9 +70,12 @@ bench: build
 	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends lammps; }
 	reports/bench/run_bench.sh $(BUILD) reports
 
-# The study through the pipeline (issue 5): every density x test, reusing finished results.
+# The studies through the pipeline, reusing finished results: the paper's (issue 5: every density
+# x test), then error against run time and the stability matrix (issue 7).
 study: build
 	$(BUILD)/bin/pipeline pipeline/studies/paper.yaml --profile paper -j $(JOBS)
+	$(BUILD)/bin/pipeline pipeline/studies/convergence.yaml --profile paper -j $(JOBS)
+	$(BUILD)/bin/pipeline pipeline/studies/stability.yaml --profile paper -j $(JOBS)
 
 # The same with the quick profile (1,000 spheres, at most 2 cycles per repeat block), validated
 # and drawn into build/quick-report (reports/ is kept for the full study).
@@ -81,11 +86,14 @@ quick: build
 	reports/make_figures.sh $(BUILD)/bin/dem results/study/quick $(BUILD)/quick-report/figures
 	reports/make_report.sh $(BUILD)/bin/dem results/study/quick $(BUILD)/quick-report
 
-# Validation table, figures and reports/index.md from the results of the full study.
+# Validation table, figures, the convergence and stability sections and reports/index.md from the
+# results of the full studies (a section whose study has not run says so).
 report: build
 	-$(BUILD)/bin/validate --results $(RESULTS) --references reference_data/paper.yaml --out reports
 	reports/make_figures.sh $(BUILD)/bin/dem $(RESULTS) reports/figures
 	SAMPLE=%s_prepare.h5 LATTICE=$(BUILD)/lattice.h5 reports/samples/figures.sh $(BUILD)/bin/dem $(RESULTS) reports/figures
+	-reports/convergence/make_section.sh $(BUILD)/bin $(CONVERGENCE) reports/convergence
+	-reports/stability/make_section.sh $(BUILD)/bin $(STABILITY) reports/stability
 	reports/make_report.sh $(BUILD)/bin/dem $(RESULTS) reports
 
 # The three preparation scenes of SPEC section 2, full size (8,000 spheres), seed 1; then the table.

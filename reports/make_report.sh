@@ -83,6 +83,37 @@ mkdir -p "$report"
     echo "${note:-*No comparison with the paper written for this figure yet.*}"
   done
   echo
+  echo "## Convergence: error against run time"
+  echo
+  if [ -f "$report/convergence/table.md" ]; then
+    echo "\`pipeline/studies/convergence.yaml\` (issue 7): the loose sample and Test 1 (2 cycles) at the paper's settings"
+    echo "(8,000 spheres, Δt = 1 µs, 2 MPa/s) as the reference, and variants that change the time step (with their own"
+    echo "preparation), the stress rate (test only) or the particle count, alone and together. Errors are relative to the"
+    echo "reference; wall times are those of this machine while the study ran (\`reports/convergence/errors.dat\`)."
+    echo
+    cat "$report/convergence/table.md"
+    if [ -f "$report/convergence/error_vs_time.png" ]; then
+      echo
+      echo "![error against wall time](convergence/error_vs_time.png)"
+    fi
+  else
+    echo "Not run yet (\`make study\` runs it, \`make report\` draws it)."
+  fi
+  echo
+  echo "## Stability"
+  echo
+  if [ -f "$report/stability/table.md" ]; then
+    echo "\`pipeline/studies/stability.yaml\` (issue 7): 216 spheres (\`scenes/stability/base.yaml\`: fast isotropic compression"
+    echo "to 100 kPa, then A → TC1 → A) with one setting pushed per case. A case either runs to the end (finite values; the"
+    echo "energy closure error is the largest over the rows once 1 % of the energy has come in, limit 1 %) or stops early"
+    echo "with the engine's message; a time step above 0.2 × critical runs once as written (refused) and once with"
+    echo "\`numerics.max_time_step_fraction\` raised to 2 on purpose."
+    echo
+    cat "$report/stability/table.md"
+  else
+    echo "Not run yet (\`make study\` runs it, \`make report\` writes the table)."
+  fi
+  echo
   echo "## Performance"
   echo
   if [ -f "$report/bench.md" ]; then

@@ -115,7 +115,7 @@ int main(int argc, char** argv) {
   }
   if (mode == "stability") {
     std::ofstream md(fs::path(out) / "table.md");
-    md << "| case | settings | outcome | steps | energy closure error | message |\n|---|---|---|---|---|---|\n";
+    md << "| case | settings | outcome | steps (last row written) | energy closure error | message |\n|---|---|---|---|---|---|\n";
     int bad = 0;
     for (const std::string& v : order) {
       for (const ManifestLine& l : by_variant[v]) {

@@ -63,7 +63,11 @@ std::string describe(const Variant& v) {
   auto add = [&](const std::string& what, const Overrides& o) {
     if (o.empty()) return;
     out += (out.empty() ? "" : "; ") + what;
-    for (std::size_t i = 0; i < o.size(); ++i) out += (i ? ", " : "") + o[i].first + " = " + o[i].second;
+    for (std::size_t i = 0; i < o.size(); ++i) {
+      // Long values (a whole list of stages) would drown the table: the study file has them.
+      const std::string& value = o[i].second;
+      out += (i ? ", " : "") + o[i].first + " = " + (value.size() > 48 ? value.substr(0, 45) + "..." : value);
+    }
   };
   add("", v.set);
   add("preparation: ", v.prepare);

@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# The convergence study's tables and figure (issue 7, part 2) from its results.
+# Usage: reports/convergence/make_section.sh [BIN_DIR] [RESULTS_DIR] [OUT_DIR]
+#   BIN_DIR      holds compare-runs (default: build/bin of this repository)
+#   RESULTS_DIR  the study's results with the pipeline's runs.tsv (default: results/convergence/paper)
+#   OUT_DIR      receives table.md, errors.dat, front.dat, error_vs_time.gp and error_vs_time.png
+#                (default: reports/convergence)
+set -euo pipefail
+here=$(cd "$(dirname "$0")/../.." && pwd)
+bin=${1:-$here/build/bin}
+results=${2:-$here/results/convergence/paper}
+out=${3:-$here/reports/convergence}
+mkdir -p "$out"
+"$bin/compare-runs" convergence "$results" "$out"
+command -v gnuplot > /dev/null || { echo "error: gnuplot not found" >&2; exit 2; }
+# The Pareto front in order of wall time, and the reference (error 0: off a log axis) on its own.
+awk -F'\t' '!/^#/ && $4 == 1 && $3 > 0' "$out/errors.dat" | sort -t$'\t' -k2,2g > "$out/front.dat"
+ref_wall=$(awk -F'\t' '$1 == "reference" { print $2 }' "$out/errors.dat")
+cat > "$out/error_vs_time.gp" << GP
+set terminal pngcairo size 1100,800 font ",11" enhanced
+set output "$out/error_vs_time.png"
+set grid lc rgb "#dddddd"
+set logscale xy
+set key top right box opaque font ",10"
+set title "Convergence (loose sample, Test 1, 2 cycles): largest relative error against the reference\nover e0, coordination number, ε_v and ε_d at each cycle end and the q/p–F^s_d/F^s_m slope" font ",12"
+set xlabel "wall time of the variant's preparation + test (s)"
+set ylabel "largest relative error (%)"
+set arrow 1 from ${ref_wall:-1}, graph 0 to ${ref_wall:-1}, graph 1 nohead dt 2 lc rgb "#777777"
+set label 1 "reference (error 0)" at ${ref_wall:-1}, graph 0.95 right offset -0.5,0 tc rgb "#555555"
+set label 2 "1 %" at graph 0.01, first 1 offset 0,0.6 tc rgb "#2ca02c"
+set label 3 "5 %" at graph 0.01, first 5 offset 0,0.6 tc rgb "#ff7f0e"
+set label 4 "10 %" at graph 0.01, first 10 offset 0,0.6 tc rgb "#d62728"
+set offsets graph 0.05, graph 0.15, graph 0.1, graph 0.1
+plot 1 w l dt 3 lc rgb "#2ca02c" notitle, 5 w l dt 3 lc rgb "#ff7f0e" notitle, 10 w l dt 3 lc rgb "#d62728" notitle, \\
+  "$out/front.dat" u 2:(100*\$3) w l lw 2 lc rgb "#1f77b4" t "Pareto front", \\
+  "$out/errors.dat" u 2:(\$3 > 0 ? 100*\$3 : NaN) w p pt 7 ps 1.2 lc rgb "#000000" t "variant", \\
+  "$out/errors.dat" u 2:(\$3 > 0 ? 100*\$3 : NaN):1 w labels offset char 0.8,0.6 left font ",9" notitle
+GP
+gnuplot "$out/error_vs_time.gp"
+echo "convergence section written to $out" >&2
