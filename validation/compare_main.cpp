@@ -6,8 +6,10 @@
 //       what became of each case: OUT_DIR/table.md (case, outcome, steps, closure error, message)
 // Exit status: 0; 1 if a stability case is not acceptable (see compare.hpp) or the reference is
 // missing; 2 on bad arguments or an unreadable manifest.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -85,6 +87,29 @@ std::string percent(double e) {
   char buf[32];
   std::snprintf(buf, sizeof buf, e < 0.001 ? "%.2g %%" : "%.2f %%", 100 * e);
   return buf;
+}
+
+// The quantities in reading order: e0, coordination number, then εv, εd by cycle, then the slope.
+std::vector<std::string> reading_order(const std::map<std::string, double>& q) {
+  auto rank = [](const std::string& n) {
+    const int group = n.rfind("e0", 0) == 0 ? 0 : n.rfind("coordination", 0) == 0 ? 1 : n.rfind("ev_", 0) == 0 ? 2
+                      : n.rfind("ed_", 0) == 0 ? 3 : 4;
+    const auto at = n.find("cycle");
+    const int cycle = at == std::string::npos ? 0 : std::atoi(n.c_str() + at + 5);
+    return std::pair{group, cycle};
+  };
+  std::vector<std::string> names;
+  for (const auto& [name, v] : q) names.push_back(name);
+  std::stable_sort(names.begin(), names.end(), [&](const std::string& a, const std::string& b) { return rank(a) < rank(b); });
+  return names;
+}
+
+// Column heading of a quantity: "ev_cycle2" -> "εv 2", "qp_slope" -> "q/p slope".
+std::string heading(std::string n) {
+  for (const auto& [from, to] : {std::pair{"ev_cycle", "εv "}, std::pair{"ed_cycle", "εd "}, std::pair{"coordination", "CN"},
+                                 std::pair{"qp_slope", "q/p slope"}})
+    if (n.rfind(from, 0) == 0) n = to + n.substr(std::string(from).size());
+  return n;
 }
 
 }  // namespace
@@ -215,7 +240,7 @@ int main(int argc, char** argv) {
         "as measured in this study):\n\n| within | cheapest variant | settings | wall time (s) | largest error | wall time / reference |\n|---|---|---|---|---|---|\n";
   for (double tol : {0.01, 0.05, 0.10}) {
     const int best = validation::cheapest_within(points, tol);
-    md << "| " << percent(tol) << " | ";
+    md << "| " << static_cast<int>(std::lround(100 * tol)) << " % | ";
     if (best < 0) { md << "none | | | | |\n"; continue; }
     const Row& r = rows[point_row[static_cast<std::size_t>(best)]];
     char ratio[32];
@@ -226,7 +251,8 @@ int main(int argc, char** argv) {
   md << "\nEvery variant: relative error against the reference of each quantity (e0 and coordination number after "
         "the preparation; εv and εd, paper Eq. 4, at the end of each cycle; slope of q/p against F^s_d/F^s_m), "
         "★ on the Pareto front of wall time against the largest error.\n\n| variant | settings | wall time (s) |";
-  for (const auto& [name, v] : ref_q) md << " " << name << " |";
+  const std::vector<std::string> names = reading_order(ref_q);
+  for (const std::string& name : names) md << " " << heading(name) << " |";
   md << " largest |\n|---|---|---|";
   for (std::size_t k = 0; k < ref_q.size() + 1; ++k) md << "---|";
   md << "\n";
@@ -243,11 +269,11 @@ int main(int argc, char** argv) {
       continue;
     }
     md << static_cast<long>(std::lround(r.wall)) << " |";
-    for (const auto& [name, v] : ref_q) md << " " << percent(r.errors.at(name)) << " |";
+    for (const std::string& name : names) md << " " << percent(r.errors.at(name)) << " |";
     md << " " << percent(r.largest) << " |\n";
   }
   md << "\nReference values: ";
-  for (const auto& [name, v] : ref_q) md << name << " = " << v << "; ";
+  for (const std::string& name : names) md << heading(name) << " = " << ref_q.at(name) << "; ";
   md << "\n";
   std::printf("convergence: %zu variants, %zu finished -> %s\n", rows.size(), points.size(), (fs::path(out) / "table.md").c_str());
   return 0;

@@ -2,6 +2,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
@@ -233,9 +234,14 @@ void write_manifest(const std::vector<PlannedRun>& runs, const Study& study, con
   for (const Variant& v : study.variants) settings[v.name] = describe(v);
   std::ostringstream text;
   text << "# variant\tdensity\ttest\trun\tresult\tstarts_from\tmay_fail\tsettings\n";
-  for (const PlannedRun& r : runs)
-    for (const std::string& v : r.variants)
-      text << (v.empty() ? "-" : v) << '\t' << r.density << '\t' << (r.test.empty() ? "-" : r.test) << '\t' << r.name
+  // Grouped by variant in the study's order (the order of the report's tables).
+  std::vector<std::string> order;
+  for (const Variant& v : study.variants) order.push_back(v.name);
+  if (order.empty()) order.push_back("");
+  for (const std::string& v : order)
+    for (const PlannedRun& r : runs)
+      if (std::find(r.variants.begin(), r.variants.end(), v) != r.variants.end())
+        text << (v.empty() ? "-" : v) << '\t' << r.density << '\t' << (r.test.empty() ? "-" : r.test) << '\t' << r.name
            << '\t' << r.result << '\t'
            << (r.depends_on >= 0 ? runs[static_cast<std::size_t>(r.depends_on)].name : std::string("-")) << '\t'
            << (r.may_fail ? 1 : 0) << '\t' << (settings.count(v) ? settings[v] : "as written") << '\n';

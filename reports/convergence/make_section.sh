@@ -27,12 +27,16 @@ set xlabel "wall time of the variant's preparation + test (s)"
 set ylabel "largest relative error (%)"
 set arrow 1 from ${ref_wall:-1}, graph 0 to ${ref_wall:-1}, graph 1 nohead dt 2 lc rgb "#777777"
 set label 1 "reference (error 0)" at ${ref_wall:-1}, graph 0.95 right offset -0.5,0 tc rgb "#555555"
+# the tolerances of the table: 1, 5 and 10 %
+set arrow 2 from graph 0, first 1 to graph 1, first 1 nohead dt 3 lc rgb "#2ca02c"
+set arrow 3 from graph 0, first 5 to graph 1, first 5 nohead dt 3 lc rgb "#ff7f0e"
+set arrow 4 from graph 0, first 10 to graph 1, first 10 nohead dt 3 lc rgb "#d62728"
 set label 2 "1 %" at graph 0.01, first 1 offset 0,0.6 tc rgb "#2ca02c"
 set label 3 "5 %" at graph 0.01, first 5 offset 0,0.6 tc rgb "#ff7f0e"
 set label 4 "10 %" at graph 0.01, first 10 offset 0,0.6 tc rgb "#d62728"
-set offsets graph 0.05, graph 0.15, graph 0.1, graph 0.1
-plot 1 w l dt 3 lc rgb "#2ca02c" notitle, 5 w l dt 3 lc rgb "#ff7f0e" notitle, 10 w l dt 3 lc rgb "#d62728" notitle, \\
-  "$out/front.dat" u 2:(100*\$3) w l lw 2 lc rgb "#1f77b4" t "Pareto front", \\
+set yrange [0.1:*]
+set offsets graph 0.1, graph 0.3, graph 0.1, graph 0.1
+plot "$out/front.dat" u 2:(100*\$3) w l lw 2 lc rgb "#1f77b4" t "Pareto front", \\
   "$out/errors.dat" u 2:(\$3 > 0 ? 100*\$3 : NaN) w p pt 7 ps 1.2 lc rgb "#000000" t "variant", \\
   "$out/errors.dat" u 2:(\$3 > 0 ? 100*\$3 : NaN):1 w labels offset char 0.8,0.6 left font ",9" notitle
 GP
