@@ -87,9 +87,10 @@ bool all_finite(const Columns& c) {
 std::optional<double> largest_closure_error(const Columns& c) {
   const auto err = c.find("energy_closure_error");
   if (err == c.end() || err->second.empty()) return std::nullopt;
+  // Energy in, as the engine defines it: stored (elastic + the balance's time-centred kinetic
+  // energy) at the start, plus the cell's work so far.
   std::vector<double> in(err->second.size(), 1.0);
-  const char* stored[] = {"elastic_energy_normal", "elastic_energy_tangential", "kinetic_energy_translational",
-                          "kinetic_energy_rotational"};
+  const char* stored[] = {"elastic_energy_normal", "elastic_energy_tangential", "kinetic_energy_centred"};
   if (c.count("work_by_cell") && std::all_of(std::begin(stored), std::end(stored), [&](const char* k) { return c.count(k) > 0; })) {
     double stored0 = 0;
     for (const char* k : stored) stored0 += c.at(k).front();

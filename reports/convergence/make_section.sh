@@ -11,6 +11,7 @@ bin=${1:-$here/build/bin}
 results=${2:-$here/results/convergence/paper}
 out=${3:-$here/reports/convergence}
 mkdir -p "$out"
+out=$(cd "$out" && pwd)
 "$bin/compare-runs" convergence "$results" "$out"
 command -v gnuplot > /dev/null || { echo "error: gnuplot not found" >&2; exit 2; }
 # The Pareto front in order of wall time, and the reference (error 0: off a log axis) on its own.
