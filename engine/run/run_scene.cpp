@@ -261,6 +261,7 @@ RunSummary run_scene(const SceneConfig& scene, const std::string& out_path, bool
   Simulation sim = build_simulation(scene);  // all input checks happen before the output file exists
   ResultWriter out(out_path, scene);
   if (!input_hash.empty()) out.set_attribute("input_hash", input_hash);
+  out.append_frame(sim);  // particle frames: the start and the end of the run
   auto last_print = start;
   int stage_seen = -1;          // for the ETA: the stage being timed and when it started
   double stage_start_wall = 0;  // [s since the run started]
@@ -305,6 +306,7 @@ RunSummary run_scene(const SceneConfig& scene, const std::string& out_path, bool
     };
   try {
     for (int i = 0; i < static_cast<int>(scene.stages.size()); ++i) run_stage(sim, scene, i, hooks);
+    out.append_frame(sim);
     out.write_state(sim);
     const double wall = std::chrono::duration<double>(clock::now() - start).count();
     out.complete(wall);
