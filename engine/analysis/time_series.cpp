@@ -69,6 +69,15 @@ const std::vector<SeriesColumn>& series_columns() {
       {"strain_rate_2", "1/s", ""},
       {"strain_rate_3", "1/s", ""},
       {"neighbour_list_builds", "1", "Verlet list rebuilds so far"},
+      // The energy balance (dynamics/simulation.hpp, EnergyBalance): at the last force evaluation,
+      // one step before `step`; cumulative values count from the run's first step.
+      {"elastic_energy_normal", "J", "sum 1/2 kn overlap^2"},
+      {"elastic_energy_tangential", "J", "sum 1/2 ks |u_s|^2"},
+      {"kinetic_energy_centred", "J", "translational + rotational, 1/2 m v(n-1/2).v(n+1/2): the kinetic energy of the balance"},
+      {"work_by_cell", "J", "integral of V sigma:d(eps) since the run started, compression positive"},
+      {"dissipated_by_damping", "J", "since the run started"},
+      {"dissipated_by_friction", "J", "by sliding contacts since the run started"},
+      {"energy_closure_error", "1", "|E_in - (E_stored + E_dissipated)| / E_in, E_in = stored energy at the start + work by the cell"},
   };
   return columns;
 }
@@ -84,6 +93,7 @@ std::vector<double> measure_row(const Simulation& sim, const RowContext& where) 
   const Vec3& L = cell.lengths();
   const Vec3& r = sim.strain_rate();
   const std::size_t n = sim.particles().size();
+  const EnergyBalance& e = sim.energy();
   const double volumetric = 1.0 - cell.volume() / cell.reference_lengths().prod();
   const double p = mean_stress(s), q = deviator_stress(s);
   const Eigen::Vector2d pi_s = p > 0 ? Eigen::Vector2d(pi_plane(s.diagonal()) / p) : Eigen::Vector2d::Zero();
@@ -126,7 +136,14 @@ std::vector<double> measure_row(const Simulation& sim, const RowContext& where) 
           rotational_kinetic_energy(sim.particles()),
           inertial_number(sim, p),
           r[0], r[1], r[2],
-          static_cast<double>(sim.verlet_list().builds())};
+          static_cast<double>(sim.verlet_list().builds()),
+          sim.sums().elastic_normal_J,
+          sim.sums().elastic_tangential_J,
+          e.kinetic,
+          e.work_by_cell,
+          e.dissipated_damping,
+          e.dissipated_friction,
+          e.closure_error()};
 }
 
 }  // namespace dem

@@ -194,7 +194,8 @@ std::string emit_resolved(const SceneConfig& c) {
       << YAML::EndMap;
   out << YAML::Key << "numerics" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "time_step"
       << YAML::Value << c.time_step_s << YAML::Key << "max_time_step_fraction" << YAML::Value
-      << c.max_time_step_fraction << YAML::Key << "verlet_skin" << YAML::Value << c.verlet_skin_m << YAML::EndMap;
+      << c.max_time_step_fraction << YAML::Key << "max_energy_error" << YAML::Value << c.max_energy_error
+      << YAML::Key << "verlet_skin" << YAML::Value << c.verlet_skin_m << YAML::EndMap;
   out << YAML::Key << "servo" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "gain" << YAML::Value
       << c.servo.gain << YAML::Key << "adapt_window" << YAML::Value << c.servo.adapt_window_steps << YAML::Key
       << "min_stiffness_ratio" << YAML::Value << c.servo.min_stiffness_ratio << YAML::EndMap;
@@ -262,6 +263,8 @@ static SceneConfig parse_scene(Section root, const std::string& file) {
   c.time_step_s = n.number("time_step", "s", {0, 1, true}, std::nullopt, "fixed time step");
   c.max_time_step_fraction = n.number("max_time_step_fraction", "", {0, 10, true}, 0.2,
                                       "largest allowed time_step / critical step 2 sqrt(m_min/kn); raise only on purpose");
+  c.max_energy_error = n.number("max_energy_error", "", {0, 1e6, true}, 0.05,
+                                "a run stops when its energy closure error exceeds this (checked at output rows)");
   c.verlet_skin_m = n.number("verlet_skin", "m", {0, 1, true}, 2e-4, "Verlet list skin distance");
   n.finish();
 
@@ -302,7 +305,7 @@ std::string scene_key_reference() {
   // Declarations are recorded as keys are read: read one example of each variant.
   const char* common = "material: {kn: 1.0e6, ks: 1.0e6, friction: 0.5, density: 2650}\n"
                        "damping: {form: viscous, translational: 0.05, rotational: 0.05}\n"
-                       "numerics: {time_step: 1.0e-6, max_time_step_fraction: 0.2, verlet_skin: 2.0e-4}\n"
+                       "numerics: {time_step: 1.0e-6, max_time_step_fraction: 0.2, max_energy_error: 0.05, verlet_skin: 2.0e-4}\n"
                        "servo: {gain: 1.0e-3}\noutput: {interval: 1000, flush_rows: 20}\n";
   scene_from_text(std::string("name: a\nparticles:\n  lattice: {n: [2, 2, 2], spacing: 0.005, seed: 1}\n"
                               "  grading: {diameters: [0.003, 0.0045], percent_finer: [0, 100]}\n") + common +

@@ -62,6 +62,7 @@ struct SceneConfig {
   Damping damping;
   double time_step_s = 1e-6;
   double max_time_step_fraction = 0.2;  // largest allowed dt / critical dt
+  double max_energy_error = 0.05;       // a run stops when its energy closure error exceeds this
   double verlet_skin_m = 2e-4;
   ServoSettings servo;
   OutputConfig output;

@@ -63,7 +63,13 @@ Section::Section(YAML::Node node, std::string file, std::string path)
   }
   std::set<std::string> seen;
   for (const auto& kv : node_) {
-    const std::string key = kv.first.as<std::string>();
+    if (!kv.first.IsScalar()) {  // e.g. `? [a, b]` or `? ?`: YAML allows it, a scene never means it
+      std::ostringstream msg;
+      msg << file_ << ": " << (path_.empty() ? "top level" : path_) << ": a key must be a plain name, got "
+          << scalar_text(kv.first) << where(kv.first);
+      throw ConfigError(msg.str());
+    }
+    const std::string key = kv.first.Scalar();
     if (!seen.insert(key).second) fail(key, "duplicate key" + where(kv.first));
   }
 }
@@ -152,7 +158,7 @@ void Section::fail(const std::string& key, const std::string& what) const {
 void Section::fail_missing(const std::string& key, const std::string& what) const {
   std::string msg = "missing (" + what + ")";
   for (const auto& kv : node_) {  // a present key that nobody reads and that looks like this one
-    const std::string k = kv.first.as<std::string>();
+    const std::string k = kv.first.Scalar();
     if (!used_.count(k) && k != key && edit_distance(k, key) <= 2) {
       msg += "; found '" + k + "'" + where(kv.first) + ": did you mean '" + key + "'?";
       break;
@@ -299,7 +305,13 @@ std::vector<Section> Section::list(const std::string& key, const std::string& do
 
 void Section::finish() const {
   for (const auto& kv : node_) {
-    const std::string key = kv.first.as<std::string>();
+    if (!kv.first.IsScalar()) {  // e.g. `? [a, b]` or `? ?`: YAML allows it, a scene never means it
+      std::ostringstream msg;
+      msg << file_ << ": " << (path_.empty() ? "top level" : path_) << ": a key must be a plain name, got "
+          << scalar_text(kv.first) << where(kv.first);
+      throw ConfigError(msg.str());
+    }
+    const std::string key = kv.first.Scalar();
     if (used_.count(key)) continue;
     std::string best;
     std::size_t best_d = 3;  // suggest only close matches

@@ -26,7 +26,14 @@ struct Coulomb {
   // Advances the elastic tangential displacement `spring` [m] of one contact by the tangential
   // relative velocity v_t [m/s] over dt, and returns the tangential force on particle j [N].
   // `sliding` is set when the Coulomb cap is active.
-  Vec3 tangential(Vec3& spring, const Vec3& n, const Vec3& v_t, double dt_s, double fn_N, bool& sliding) const {
+  //
+  // `dissipated_J` receives the energy the cap took in this step (0 when sticking): the work the
+  // particles did on the spring over the increment du, with the force taken as the mean of its
+  // values before and after (the trapezoidal rule the leapfrog energy balance uses), minus the
+  // change of the stored energy 1/2 ks |u|^2:  1/2 ks [(u_old + u_new).du - (|u_new|^2 - |u_old|^2)].
+  // When a contact slides steadily at the cap this is mu f_n |du|, Coulomb's work on the slip.
+  Vec3 tangential(Vec3& spring, const Vec3& n, const Vec3& v_t, double dt_s, double fn_N, bool& sliding,
+                  double& dissipated_J) const {
     // Rotate the old displacement into the current tangent plane, keeping its magnitude.
     const double old_norm2 = spring.squaredNorm();
     if (old_norm2 > 0) {
@@ -34,13 +41,17 @@ struct Coulomb {
       const double new_norm2 = spring.squaredNorm();
       if (new_norm2 > 0) spring *= std::sqrt(old_norm2 / new_norm2);
     }
-    spring += v_t * dt_s;
+    const Vec3 du = v_t * dt_s;
+    const Vec3 u_old = spring;
+    spring += du;
     const double limit = mu * fn_N;  // largest |f_t| [N]
     const double ft2 = ks * ks * spring.squaredNorm();
     sliding = ft2 >= limit * limit;
+    dissipated_J = 0;
     if (sliding) {
       const double norm = std::sqrt(spring.squaredNorm());
       spring *= norm > 0 ? limit / (ks * norm) : 0.0;
+      dissipated_J = 0.5 * ks * ((u_old + spring).dot(du) - (spring.squaredNorm() - u_old.squaredNorm()));
     }
     return -ks * spring;
   }

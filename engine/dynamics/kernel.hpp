@@ -20,12 +20,21 @@ namespace dem {
 inline constexpr std::ptrdiff_t chunk_size = 512;
 inline std::ptrdiff_t chunk_count(std::size_t n) { return (static_cast<std::ptrdiff_t>(n) + chunk_size - 1) / chunk_size; }
 
+// What `integrate` sums over the particles [J].
+struct MotionSums {
+  double kinetic_half_step = 0;  // translational, 1/2 m |v(n+1/2)|^2
+  double kinetic_centred = 0;    // translational + rotational, 1/2 m v(n-1/2).v(n+1/2) (+ the same with I, w)
+  double damping_loss = 0;       // sum of dt F.v_mid - (change of 1/2 m v^2), translational + rotational
+};
+
 // Forces of one evaluation, per pair, gathered per particle by `integrate` (no scattered writes,
-// so pairs can be processed in parallel).
+// so pairs can be processed in parallel), and the per-chunk partial sums of both loops. Kept
+// between steps so that a step allocates nothing.
 struct PairForces {
   std::vector<Vec3> force;              // force on `second` [N]; -force acts on `first`
   std::vector<Vec3> torque_i, torque_j;  // torques on `first` and `second` [N m] (frictional only)
-  std::vector<StepSums> chunk_sums;
+  std::vector<StepSums> chunk_sums;       // per chunk of pairs; every chunk writes its own entry
+  std::vector<MotionSums> motion_sums;    // per chunk of particles
 };
 
 // Contact forces at the current positions. Velocities are those of the previous half step; the
@@ -41,7 +50,7 @@ void compute_forces(const LinearSpring<Friction>& law, const Particles& p, const
     out.torque_j.resize(n_pairs);
   }
   const std::ptrdiff_t chunks = chunk_count(n_pairs);
-  out.chunk_sums.assign(static_cast<std::size_t>(chunks), StepSums{});
+  out.chunk_sums.resize(static_cast<std::size_t>(chunks));
   const double kn = law.kn;
   // Raw pointers: the arrays do not alias, and the compiler keeps them in registers.
   const std::uint32_t* __restrict first = pairs.first.data();
@@ -60,7 +69,7 @@ void compute_forces(const LinearSpring<Friction>& law, const Particles& p, const
     Mat3 stress = Mat3::Zero();
     Vec3 stiffness = Vec3::Zero();
     std::size_t contacts = 0;
-    double sum_fn = 0;
+    double sum_fn = 0, elastic_n = 0, elastic_t = 0, friction_loss = 0;
     const std::size_t end = std::min(n_pairs, static_cast<std::size_t>((c + 1) * chunk_size));
     for (std::size_t k = static_cast<std::size_t>(c * chunk_size); k < end; ++k) {
       const std::uint32_t i = first[k], j = second[k];
@@ -72,6 +81,9 @@ void compute_forces(const LinearSpring<Friction>& law, const Particles& p, const
         if constexpr (Friction::has_tangential) {
           torque_i[k].setZero();
           torque_j[k].setZero();
+          // A contact that opens loses what is left in its spring (at most (mu fn)^2 / 2 ks with
+          // the fn of its last step in contact): counted as dissipated by friction.
+          friction_loss += 0.5 * law.friction.ks * spring[k].squaredNorm();
           spring[k].setZero();
           sliding_flag[k] = 0;
         }
@@ -88,8 +100,11 @@ void compute_forces(const LinearSpring<Friction>& law, const Particles& p, const
             v[j] - v[i] - strain_rate.cwiseProduct(l) - (arm_i * omega[i] + arm_j * omega[j]).cross(nrm);
         const Vec3 v_t = v_rel - nrm.dot(v_rel) * nrm;
         bool sliding = false;
-        const Vec3 ft = law.friction.tangential(spring[k], nrm, v_t, dt, fn, sliding);
+        double lost = 0;
+        const Vec3 ft = law.friction.tangential(spring[k], nrm, v_t, dt, fn, sliding, lost);
         sliding_flag[k] = sliding;
+        friction_loss += lost;
+        elastic_t += 0.5 * ft.squaredNorm() / law.friction.ks;
         f += ft;
         const Vec3 nxft = nrm.cross(ft);
         torque_i[k] = arm_i * nxft;  // both torques are -arm n x f_t
@@ -105,24 +120,25 @@ void compute_forces(const LinearSpring<Friction>& law, const Particles& p, const
       stiffness += kn * nl.cwiseProduct(nl);
       ++contacts;
       sum_fn += fn;
+      elastic_n += 0.5 * fn * overlap;
     }
-    out.chunk_sums[static_cast<std::size_t>(c)] = {stress, stiffness, contacts, sum_fn};
+    out.chunk_sums[static_cast<std::size_t>(c)] = {stress, stiffness, contacts, sum_fn, elastic_n, elastic_t, friction_loss};
   }
-  Mat3 stress = Mat3::Zero();
-  Vec3 stiffness = Vec3::Zero();
-  std::size_t contacts = 0;
-  double sum_fn = 0;
+  StepSums total;
   for (const StepSums& chunk : out.chunk_sums) {
-    stress += chunk.stress_Pa;
-    stiffness += chunk.stiffness_Pa;
-    contacts += chunk.contacts;
-    sum_fn += chunk.sum_normal_force_N;
+    total.stress_Pa += chunk.stress_Pa;
+    total.stiffness_Pa += chunk.stiffness_Pa;
+    total.contacts += chunk.contacts;
+    total.sum_normal_force_N += chunk.sum_normal_force_N;
+    total.elastic_normal_J += chunk.elastic_normal_J;
+    total.elastic_tangential_J += chunk.elastic_tangential_J;
+    total.friction_loss_J += chunk.friction_loss_J;
   }
   const double inv_volume = 1.0 / cell.volume();
-  sums.stress_Pa = 0.5 * (stress + stress.transpose()) * inv_volume;
-  sums.stiffness_Pa = stiffness * inv_volume;
-  sums.contacts = contacts;
-  sums.sum_normal_force_N = sum_fn;
+  const Mat3 stress = total.stress_Pa;  // a copy: (A + A^T) assigned to A would alias
+  total.stress_Pa = 0.5 * (stress + stress.transpose()) * inv_volume;
+  total.stiffness_Pa *= inv_volume;
+  sums = total;
 }
 
 // Viscous body damping, integrated semi-implicitly (exact for the damping term alone):
@@ -165,17 +181,23 @@ struct LocalDamping {
 
 // Leapfrog update of velocities and fractional positions, with the net force and torque of each
 // particle gathered from the pair forces in pair order (the order a serial scatter would use).
-// `force` receives the net forces. Returns the translational kinetic energy of the fluctuating
-// motion at the new half step [J], or NaN if a particle moved by more than a cell in one step (the
-// run is unstable; positions can no longer be trusted).
+// `force` receives the net forces. Returns the kinetic energies and the energy the damping took
+// in this step (see MotionSums); kinetic_half_step is NaN if a particle moved by more than a cell
+// in one step (the run is unstable; positions can no longer be trusted).
+//
+// The damping loss needs no knowledge of the damping form: over one step a particle's kinetic
+// energy changes by exactly dt (F + F_damping).v_mid with v_mid = (v_old + v_new) / 2 (the
+// leapfrog update is m (v_new - v_old) = dt (F + F_damping)), so the damping took
+// dt F.v_mid - (1/2 m v_new^2 - 1/2 m v_old^2).
 template <bool Rotate, class DampingPolicy>
-double integrate(const DampingPolicy& damping, Particles& p, const PeriodicCell& cell, const PairIndex& index,
-                 const PairForces& pf, std::vector<Vec3>& force, double dt) {
+MotionSums integrate(const DampingPolicy& damping, Particles& p, const PeriodicCell& cell, const PairIndex& index,
+                     PairForces& pf, std::vector<Vec3>& force, double dt) {
   const Vec3 dt_over_L = dt * cell.inverse_lengths();
   const std::size_t n = p.size();
   force.resize(n);
   const std::ptrdiff_t chunks = chunk_count(n);
-  std::vector<double> twice_ke(static_cast<std::size_t>(chunks), 0.0);
+  pf.motion_sums.resize(static_cast<std::size_t>(chunks));
+  MotionSums* __restrict motion_sums = pf.motion_sums.data();
   int wrapped = 1;
   // Raw pointers: the arrays do not alias, and the compiler keeps them in registers.
   const std::uint32_t* __restrict first_begin = index.first_begin.data();
@@ -185,13 +207,14 @@ double integrate(const DampingPolicy& damping, Particles& p, const PeriodicCell&
   const Vec3* __restrict torque_i = pf.torque_i.data();
   const Vec3* __restrict torque_j = pf.torque_j.data();
   const double* __restrict mass = p.mass.data();
+  const double* __restrict inertia = p.inertia.data();
   Vec3* __restrict v = p.v.data();
   Vec3* __restrict s = p.s.data();
   Vec3* __restrict omega = p.omega.data();
   Vec3* __restrict net = force.data();
 #pragma omp parallel for schedule(static) reduction(&& : wrapped)
   for (std::ptrdiff_t c = 0; c < chunks; ++c) {
-    double chunk_ke = 0;
+    MotionSums chunk;
     bool chunk_ok = true;
     const std::size_t end = std::min(n, static_cast<std::size_t>((c + 1) * chunk_size));
     for (std::size_t i = static_cast<std::size_t>(c * chunk_size); i < end; ++i) {
@@ -206,18 +229,35 @@ double integrate(const DampingPolicy& damping, Particles& p, const PeriodicCell&
         if constexpr (Rotate) t -= torque_i[k];
       }
       net[i] = f;
+      const Vec3 v_old = v[i];
       damping.velocity(i, v[i], f);
       s[i] += v[i].cwiseProduct(dt_over_L);
       chunk_ok &= PeriodicCell::wrap(s[i]);
-      chunk_ke += mass[i] * v[i].squaredNorm();
-      if constexpr (Rotate) damping.spin(i, omega[i], t);
+      const double m = mass[i], twice_ke_new = m * v[i].squaredNorm();
+      chunk.kinetic_half_step += twice_ke_new;
+      chunk.kinetic_centred += m * v_old.dot(v[i]);
+      chunk.damping_loss += dt * f.dot(v_old + v[i]) - (twice_ke_new - m * v_old.squaredNorm());
+      if constexpr (Rotate) {
+        const Vec3 w_old = omega[i];
+        damping.spin(i, omega[i], t);
+        const double I = inertia[i], twice_rot_new = I * omega[i].squaredNorm();
+        chunk.kinetic_centred += I * w_old.dot(omega[i]);
+        chunk.damping_loss += dt * t.dot(w_old + omega[i]) - (twice_rot_new - I * w_old.squaredNorm());
+      }
     }
-    twice_ke[static_cast<std::size_t>(c)] = chunk_ke;
+    motion_sums[c] = chunk;  // sums of twice the energies; halved below
     wrapped = wrapped && chunk_ok;
   }
-  double sum = 0;
-  for (double x : twice_ke) sum += x;
-  return wrapped ? 0.5 * sum : std::nan("");
+  MotionSums total;
+  for (const MotionSums& chunk : pf.motion_sums) {
+    total.kinetic_half_step += chunk.kinetic_half_step;
+    total.kinetic_centred += chunk.kinetic_centred;
+    total.damping_loss += chunk.damping_loss;
+  }
+  total.kinetic_half_step = wrapped ? 0.5 * total.kinetic_half_step : std::nan("");
+  total.kinetic_centred *= 0.5;
+  total.damping_loss *= 0.5;
+  return total;
 }
 
 }  // namespace dem

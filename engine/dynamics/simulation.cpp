@@ -17,7 +17,7 @@ double critical_time_step(const Particles& p, double kn_N_per_m) {
 struct Simulation::Kernel {
   virtual ~Kernel() = default;
   virtual void forces(Simulation& sim) = 0;
-  virtual double integrate(Simulation& sim) = 0;
+  virtual MotionSums integrate(Simulation& sim) = 0;
 };
 
 template <class Friction, class DampingPolicy>
@@ -28,7 +28,7 @@ struct KernelImpl final : Simulation::Kernel {
   void forces(Simulation& s) override {
     compute_forces(law, s.particles_, s.cell_, s.list_.pairs(), s.strain_rate_, s.dt_, *s.pair_forces_, s.sums_);
   }
-  double integrate(Simulation& s) override {
+  MotionSums integrate(Simulation& s) override {
     return dem::integrate<Friction::has_tangential>(damping, s.particles_, s.cell_, s.list_.index(), *s.pair_forces_,
                                                     s.force_, s.dt_);
   }
@@ -86,8 +86,19 @@ void Simulation::advance(const std::function<Vec3()>& strain_rates) {
     msg << "non-finite contact stress at step " << step_ << " (time " << time() << " s)";
     throw NonFiniteError(msg.str());
   }
+  // The cell's work over the last step, trapezoidal in V sigma (the rate is the one applied since
+  // the previous evaluation).
+  const Vec3 virial = sums_.stress_Pa.diagonal() * cell_.volume();
+  if (energy_.started) energy_.work_by_cell += 0.5 * dt_ * strain_rate_.dot(virial + energy_.virial);
+  energy_.virial = virial;
+  energy_.elastic = sums_.elastic_normal_J + sums_.elastic_tangential_J;
+  energy_.dissipated_friction += sums_.friction_loss_J;
   strain_rate_ = strain_rates();
-  kinetic_energy_ = kernel_->integrate(*this);
+  const MotionSums motion = kernel_->integrate(*this);
+  kinetic_energy_ = motion.kinetic_half_step;
+  energy_.kinetic = motion.kinetic_centred;
+  energy_.dissipated_damping += motion.damping_loss;
+  if (!energy_.started) energy_.stored_at_start = energy_.stored(), energy_.started = true;
   if (!std::isfinite(kinetic_energy_)) {
     std::ostringstream msg;
     msg << "non-finite kinetic energy or a particle moving more than a cell in one step at step " << step_ << " (time "

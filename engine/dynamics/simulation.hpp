@@ -11,6 +11,7 @@
 //
 // The contact law (friction or not) and the damping form are chosen once, when the simulation is
 // built; the per-step loop is a monomorphic template (see dynamics/kernel.hpp).
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -57,6 +58,32 @@ struct StepSums {          // by-products of the last force evaluation
   Vec3 stiffness_Pa = Vec3::Zero();    // servo stiffness K_k
   std::size_t contacts = 0;            // pairs in contact
   double sum_normal_force_N = 0;
+  double elastic_normal_J = 0;         // sum 1/2 kn overlap^2
+  double elastic_tangential_J = 0;     // sum 1/2 ks |u_s|^2 (after the Coulomb cap)
+  double friction_loss_J = 0;          // spring energy removed by the Coulomb cap (and by contacts opening) in this evaluation
+};
+
+// The energy balance of a run [J], accumulated step by step from the first step of this
+// Simulation (or of its restore). Energies are those of the last force evaluation, time t_n:
+// kinetic energy is the time-centred 1/2 m v(n-1/2).v(n+1/2), which with elastic energy at x_n
+// makes the leapfrog energy error O(dt^2) (exactly conserved for linear springs); the cell's work
+// is the trapezoidal sum of V sigma_kk rate_k dt between force evaluations.
+struct EnergyBalance {
+  double work_by_cell = 0;         // integral of V sigma : d(eps), compression positive
+  double dissipated_damping = 0;   // taken by the damping (translational + rotational)
+  double dissipated_friction = 0;  // taken by sliding contacts
+  double kinetic = 0;              // time-centred, translational + rotational
+  double elastic = 0;              // normal + tangential springs
+  double stored_at_start = 0;      // kinetic + elastic at the first step
+  Vec3 virial = Vec3::Zero();      // V sigma_kk at the last evaluation [J]
+  bool started = false;
+  double stored() const { return kinetic + elastic; }
+  double energy_in() const { return stored_at_start + work_by_cell; }
+  // |energy in - (stored + dissipated)| / energy in; 0 while nothing has been put in.
+  double closure_error() const {
+    const double in = energy_in();
+    return in > 0 ? std::abs(in - stored() - dissipated_damping - dissipated_friction) / in : 0.0;
+  }
 };
 
 class Simulation {
@@ -85,6 +112,7 @@ class Simulation {
   const StepSums& sums() const { return sums_; }
   const std::vector<Vec3>& net_force() const { return force_; }  // from the last force evaluation [N]
   double kinetic_energy() const { return kinetic_energy_; }      // translational, fluctuating, after the last step [J]
+  const EnergyBalance& energy() const { return energy_; }
 
   // Restores the dynamic state saved by a previous run (for a bit-for-bit continuation).
   void restore(std::int64_t step, const Vec3& strain_rate, PairList contacts);
@@ -109,6 +137,7 @@ class Simulation {
   std::unique_ptr<PairForces> pair_forces_;  // per-pair forces of the last evaluation
   std::vector<Vec3> force_;
   double kinetic_energy_ = 0;
+  EnergyBalance energy_;
   std::unique_ptr<Kernel> kernel_;
 };
 

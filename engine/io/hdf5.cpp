@@ -1,6 +1,9 @@
 #include "io/hdf5.hpp"
 
+#include <algorithm>
 #include <filesystem>
+#include <functional>
+#include <numeric>
 
 namespace dem::h5 {
 
@@ -109,6 +112,29 @@ static void set_numeric_attribute(hid_t obj, const std::string& name, T value) {
 void set_attribute(hid_t obj, const std::string& name, double value) { set_numeric_attribute(obj, name, value); }
 void set_attribute(hid_t obj, const std::string& name, std::int64_t value) { set_numeric_attribute(obj, name, value); }
 
+void set_attribute(hid_t obj, const std::string& name, const std::vector<std::int64_t>& values) {
+  if (H5Aexists(obj, name.c_str()) > 0) check(H5Adelete(obj, name.c_str()), "deleting attribute " + name);
+  const hsize_t dims[1] = {values.size()};
+  Handle space(H5Screate_simple(1, dims, nullptr));
+  Handle attr(checked(H5Acreate2(obj, name.c_str(), H5T_NATIVE_INT64, space, H5P_DEFAULT, H5P_DEFAULT), "attribute " + name));
+  check(H5Awrite(attr, H5T_NATIVE_INT64, values.data()), "writing attribute " + name);
+}
+
+void set_attribute(hid_t obj, const std::string& name, const std::vector<std::string>& values) {
+  if (H5Aexists(obj, name.c_str()) > 0) check(H5Adelete(obj, name.c_str()), "deleting attribute " + name);
+  std::size_t width = 1;
+  for (const std::string& v : values) width = std::max(width, v.size());
+  std::string packed(width * values.size(), '\0');  // fixed-length, NUL-padded strings side by side
+  for (std::size_t k = 0; k < values.size(); ++k) packed.replace(k * width, values[k].size(), values[k]);
+  Handle type(H5Tcopy(H5T_C_S1));
+  check(H5Tset_size(type, width), "string type");
+  check(H5Tset_strpad(type, H5T_STR_NULLPAD), "string padding");
+  const hsize_t dims[1] = {values.size()};
+  Handle space(H5Screate_simple(1, dims, nullptr));
+  Handle attr(checked(H5Acreate2(obj, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT), "attribute " + name));
+  check(H5Awrite(attr, type, packed.data()), "writing attribute " + name);
+}
+
 bool has_attribute(hid_t obj, const std::string& name) { return H5Aexists(obj, name.c_str()) > 0; }
 
 std::string get_string_attribute(hid_t obj, const std::string& name) {
@@ -138,13 +164,14 @@ double get_double_attribute(hid_t obj, const std::string& name) { return get_num
 std::int64_t get_int_attribute(hid_t obj, const std::string& name) { return get_numeric_attribute<std::int64_t>(obj, name); }
 
 template <class T>
-void write(hid_t parent, const std::string& name, const std::vector<T>& data, std::size_t cols, const std::string& units) {
+void write(hid_t parent, const std::string& name, const std::vector<T>& data, std::size_t cols, const std::string& units,
+           const std::string& unit_key) {
   const hsize_t dims[2] = {cols ? data.size() / cols : 0, cols};
   Handle space(H5Screate_simple(cols == 1 ? 1 : 2, dims, nullptr));
   Handle ds(checked(H5Dcreate2(parent, name.c_str(), native_type<T>(), space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
                     "creating dataset " + name));
   if (!data.empty()) check(H5Dwrite(ds, native_type<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), "writing " + name);
-  set_attribute(ds, "units", units);
+  set_attribute(ds, unit_key, units);
 }
 
 template <class T>
@@ -162,10 +189,10 @@ std::vector<T> read(hid_t parent, const std::string& name, std::size_t& cols) {
   return out;
 }
 
-template void write(hid_t, const std::string&, const std::vector<double>&, std::size_t, const std::string&);
-template void write(hid_t, const std::string&, const std::vector<std::uint32_t>&, std::size_t, const std::string&);
-template void write(hid_t, const std::string&, const std::vector<std::uint8_t>&, std::size_t, const std::string&);
-template void write(hid_t, const std::string&, const std::vector<std::int64_t>&, std::size_t, const std::string&);
+template void write(hid_t, const std::string&, const std::vector<double>&, std::size_t, const std::string&, const std::string&);
+template void write(hid_t, const std::string&, const std::vector<std::uint32_t>&, std::size_t, const std::string&, const std::string&);
+template void write(hid_t, const std::string&, const std::vector<std::uint8_t>&, std::size_t, const std::string&, const std::string&);
+template void write(hid_t, const std::string&, const std::vector<std::int64_t>&, std::size_t, const std::string&, const std::string&);
 template std::vector<double> read(hid_t, const std::string&, std::size_t&);
 template std::vector<std::uint32_t> read(hid_t, const std::string&, std::size_t&);
 template std::vector<std::uint8_t> read(hid_t, const std::string&, std::size_t&);
@@ -199,6 +226,47 @@ void Column::append(const std::vector<double>& values) {
   Handle mem_space(H5Screate_simple(1, count, nullptr));
   check(H5Dwrite(dataset_, H5T_NATIVE_DOUBLE, mem_space, file_space, H5P_DEFAULT, values.data()), "appending rows");
   size_ += values.size();
+}
+
+template <class T>
+FrameSeries<T>::FrameSeries(hid_t parent, const std::string& name, std::vector<hsize_t> frame_shape)
+    : frame_shape_(std::move(frame_shape)) {
+  std::vector<hsize_t> dims = {0}, max_dims = {H5S_UNLIMITED}, chunk = {1};
+  for (hsize_t d : frame_shape_) dims.push_back(d), max_dims.push_back(d), chunk.push_back(d);
+  // A frame of particles is one chunk (written and read whole); scalars per frame are batched.
+  if (frame_shape_.empty()) chunk[0] = 64;
+  Handle space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), max_dims.data()));
+  Handle props(H5Pcreate(H5P_DATASET_CREATE));
+  check(H5Pset_chunk(props, static_cast<int>(chunk.size()), chunk.data()), "chunking " + name);
+  dataset_ = Handle(checked(H5Dcreate2(parent, name.c_str(), native_type<T>(), space, H5P_DEFAULT, props, H5P_DEFAULT),
+                            "creating dataset " + name));
+}
+
+template <class T>
+void FrameSeries<T>::append(const std::vector<T>& frame) {
+  const hsize_t per_frame = std::accumulate(frame_shape_.begin(), frame_shape_.end(), hsize_t{1}, std::multiplies<>());
+  if (frame.size() != per_frame) throw Error("HDF5: a frame of " + std::to_string(frame.size()) + " values, expected " +
+                                             std::to_string(per_frame));
+  std::vector<hsize_t> size = {frames_ + 1}, start = {frames_}, count = {1};
+  for (hsize_t d : frame_shape_) size.push_back(d), start.push_back(0), count.push_back(d);
+  check(H5Dset_extent(dataset_, size.data()), "extending dataset");
+  Handle file_space(H5Dget_space(dataset_));
+  check(H5Sselect_hyperslab(file_space, H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr), "selecting a frame");
+  Handle mem_space(H5Screate_simple(static_cast<int>(count.size()), count.data(), nullptr));
+  check(H5Dwrite(dataset_, native_type<T>(), mem_space, file_space, H5P_DEFAULT, frame.data()), "appending a frame");
+  ++frames_;
+}
+
+template class FrameSeries<double>;
+template class FrameSeries<std::int64_t>;
+
+std::vector<hsize_t> shape(hid_t parent, const std::string& name) {
+  if (!exists(parent, name)) throw Error("HDF5: dataset '" + name + "' is missing");
+  Handle ds(checked(H5Dopen2(parent, name.c_str(), H5P_DEFAULT), "opening dataset " + name));
+  Handle space(H5Dget_space(ds));
+  std::vector<hsize_t> dims(static_cast<std::size_t>(std::max(0, H5Sget_simple_extent_ndims(space))));
+  H5Sget_simple_extent_dims(space, dims.data(), nullptr);
+  return dims;
 }
 
 }  // namespace dem::h5

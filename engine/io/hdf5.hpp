@@ -1,6 +1,6 @@
 #pragma once
 // A thin RAII layer over the HDF5 C API: handles, attributes, whole datasets and extendable
-// columns. Every dataset written here carries a `units` attribute.
+// columns. Every dataset written here carries a unit attribute (`units`, or H5MD's `unit`).
 #include <hdf5.h>
 
 #include <cstdint>
@@ -45,14 +45,18 @@ bool exists(hid_t parent, const std::string& path);
 void set_attribute(hid_t obj, const std::string& name, const std::string& value);
 void set_attribute(hid_t obj, const std::string& name, double value);
 void set_attribute(hid_t obj, const std::string& name, std::int64_t value);
+void set_attribute(hid_t obj, const std::string& name, const std::vector<std::int64_t>& values);  // 1-D array
+void set_attribute(hid_t obj, const std::string& name, const std::vector<std::string>& values);   // 1-D, fixed length
 std::string get_string_attribute(hid_t obj, const std::string& name);
 double get_double_attribute(hid_t obj, const std::string& name);
 std::int64_t get_int_attribute(hid_t obj, const std::string& name);
 bool has_attribute(hid_t obj, const std::string& name);
 
-// A whole dataset of rows x cols values (cols = 1 writes a 1-D dataset).
+// A whole dataset of rows x cols values (cols = 1 writes a 1-D dataset). The unit goes into the
+// attribute `unit_key`: `units` in our own groups, `unit` in H5MD ones.
 template <class T>
-void write(hid_t parent, const std::string& name, const std::vector<T>& data, std::size_t cols, const std::string& units);
+void write(hid_t parent, const std::string& name, const std::vector<T>& data, std::size_t cols, const std::string& units,
+           const std::string& unit_key = "units");
 // Reads a dataset written by write(); `cols` receives the second dimension (1 for 1-D).
 template <class T>
 std::vector<T> read(hid_t parent, const std::string& name, std::size_t& cols);
@@ -71,5 +75,25 @@ class Column {
   Handle dataset_;
   std::size_t size_ = 0;
 };
+
+// A dataset that grows along its first dimension one frame at a time, each frame holding
+// `frame_shape` values (empty: one value per frame). Chunked, unlimited; T is double or int64.
+template <class T>
+class FrameSeries {
+ public:
+  FrameSeries() = default;
+  FrameSeries(hid_t parent, const std::string& name, std::vector<hsize_t> frame_shape);
+  void append(const std::vector<T>& frame);
+  std::size_t frames() const { return frames_; }
+  hid_t id() const { return dataset_; }
+
+ private:
+  Handle dataset_;
+  std::vector<hsize_t> frame_shape_;
+  std::size_t frames_ = 0;
+};
+
+// The extent of a dataset, outermost dimension first.
+std::vector<hsize_t> shape(hid_t parent, const std::string& name);
 
 }  // namespace dem::h5

@@ -1,8 +1,10 @@
 #include "io/result_writer.hpp"
 
+#include <cstdio>
 #include <filesystem>
 
 #include "io/state_io.hpp"
+#include "io/xdmf.hpp"
 #include "run/run_scene.hpp"
 #include "version.hpp"
 
@@ -69,7 +71,14 @@ void ResultWriter::write_state(const Simulation& sim) {
   dem::write_state(g, sim);
 }
 
+void ResultWriter::append_frame(const Simulation& sim) {
+  if (!frames_) frames_ = std::make_unique<H5mdWriter>(file_, sim);
+  frames_->append_frame(sim);
+  H5Fflush(file_, H5F_SCOPE_GLOBAL);
+}
+
 void ResultWriter::close() {
+  frames_.reset();
   tables_.clear();
   file_.reset();
 }
@@ -78,9 +87,21 @@ void ResultWriter::complete(double wall_time_s) {
   flush();
   h5::set_attribute(file_, "wall_time_s", wall_time_s);
   h5::set_attribute(file_, "status", std::string("complete"));
+  const bool has_frames = frames_ && frames_->frames() > 0;
   close();  // the file is closed before it gets its final name
+  // An XDMF left by an earlier result at this path would describe the wrong frames: it goes first.
+  const std::string xdmf = xdmf_path_for(out_);
+  std::filesystem::remove(xdmf);
   std::filesystem::rename(partial_, out_);
   done_ = true;
+  // The XDMF is a convenience view of a result that is already complete: failing to write it is
+  // reported but does not fail the run.
+  if (!has_frames) return;
+  try {
+    write_xdmf(out_);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "warning: %s: no XDMF file written: %s\n", xdmf.c_str(), e.what());
+  }
 }
 
 void ResultWriter::fail(const std::string& reason) noexcept {

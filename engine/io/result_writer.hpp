@@ -3,11 +3,16 @@
 // run that finishes is renamed to <out> with status "complete", so a half-written file can never
 // be mistaken for a finished one. A run that fails keeps "<out>.partial" with status
 // "failed: <reason>"; a killed run leaves it at "running".
+//
+// Particle frames go to /particles after H5MD (io/h5md.hpp); a complete result also gets
+// "<out minus .h5>.xdmf" beside it (io/xdmf.hpp), written only after the rename.
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "analysis/time_series.hpp"
 #include "config/scene_config.hpp"
+#include "io/h5md.hpp"
 #include "io/hdf5.hpp"
 
 namespace dem {
@@ -37,6 +42,9 @@ class ResultWriter {
   void set_attribute(const std::string& name, const std::string& value);  // a root attribute
   void flush();
   void write_state(const class Simulation& sim);
+  // One H5MD particle frame at the simulation's current step (the first call creates /h5md
+  // and /particles, taking radius and mass from `sim`).
+  void append_frame(const Simulation& sim);
   // Marks the file complete and moves it to its final name.
   void complete(double wall_time_s);
   // Marks the partial file failed (best effort; never throws).
@@ -49,6 +57,7 @@ class ResultWriter {
   std::size_t flush_rows_;
   h5::Handle file_;
   std::vector<ColumnTable> tables_;  // [0] time series, [1] legs
+  std::unique_ptr<H5mdWriter> frames_;  // created by the first frame
   std::string warnings_;
   bool done_ = false;
 };

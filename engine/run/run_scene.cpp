@@ -261,11 +261,25 @@ RunSummary run_scene(const SceneConfig& scene, const std::string& out_path, bool
   Simulation sim = build_simulation(scene);  // all input checks happen before the output file exists
   ResultWriter out(out_path, scene);
   if (!input_hash.empty()) out.set_attribute("input_hash", input_hash);
+  out.append_frame(sim);  // particle frames: the start and the end of the run
   auto last_print = start;
   int stage_seen = -1;          // for the ETA: the stage being timed and when it started
   double stage_start_wall = 0;  // [s since the run started]
   StageHooks hooks;
-  hooks.row = [&](const Simulation& s, const RowContext& where) { out.append_row(measure_row(s, where)); };
+  // Rows are where the energy balance is looked at: a run whose balance no longer closes (an
+  // unstable or too coarse time step) stops, after the row that shows it is written.
+  hooks.row = [&](const Simulation& s, const RowContext& where) {
+    out.append_row(measure_row(s, where));
+    const double error = s.energy().closure_error();
+    if (error > scene.max_energy_error) {
+      std::ostringstream msg;
+      msg << "the energy balance no longer closes at step " << s.step_count() << " (time " << s.time()
+          << " s): closure error " << error << " > numerics.max_energy_error = " << scene.max_energy_error
+          << "; the time step (" << s.time_step() << " s = " << s.time_step() / critical_time_step(s.particles(), s.material().kn_N_per_m)
+          << " x critical) is too large for this stiffness and loading";
+      throw StageError(msg.str());
+    }
+  };
   hooks.leg = [&](const LegRecord& r) { out.append_leg(leg_row(r)); };
   hooks.warning = [&](const std::string& w) {
     if (show_progress) std::fprintf(stderr, "\n");
@@ -292,6 +306,7 @@ RunSummary run_scene(const SceneConfig& scene, const std::string& out_path, bool
     };
   try {
     for (int i = 0; i < static_cast<int>(scene.stages.size()); ++i) run_stage(sim, scene, i, hooks);
+    out.append_frame(sim);
     out.write_state(sim);
     const double wall = std::chrono::duration<double>(clock::now() - start).count();
     out.complete(wall);

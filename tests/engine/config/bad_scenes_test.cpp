@@ -119,6 +119,12 @@ std::vector<BadScene> catalogue() {
        {"bad.yaml: material.kn: duplicate key (line 5)"}},
       {"duplicate top-level section numerics", Yaml{.extra = "numerics: {time_step: 2.0e-6}\n"}.text(), C,
        {"bad.yaml: numerics: duplicate key (line 9)"}},
+      // Found by fuzz_scene (tests/fuzz/findings/scene_nonscalar_key.yaml): YAML allows any node as
+      // a key; yaml-cpp's conversion error used to escape without the file or the line.
+      {"non-scalar key (a list)", Yaml{.extra = "? [a, b]\n: 1\n"}.text(), C,
+       {"bad.yaml: top level: a key must be a plain name, got a list (line 9)"}},
+      {"null key in material", Yaml{.material = "{? , kn: 1.0e6}"}.text(), C,
+       {"bad.yaml: material: a key must be a plain name, got nothing (line 5)"}},
       // --- missing required keys (declared without default) ------------------------------------
       {"missing material.kn", Yaml{.material = "{ks: 1.0e6, friction: 0.5}"}.text(), C,
        {"bad.yaml: material.kn: missing (a number in (0, 1e+12] N/m)"}},

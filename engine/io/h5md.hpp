@@ -1,0 +1,35 @@
+#pragma once
+// Particle frames in the result file after the H5MD 1.1 convention (https://www.nongnu.org/h5md/),
+// so that generic readers find positions, velocities and the cell over time without knowing our
+// own layout. Frames are a *view*: the continuation state stays in /state (io/state_io.hpp).
+//
+//   /h5md                       version = [1, 1]; author/name, creator/{name, version}
+//   /particles/all/position     step [F], time [F] (s), value [F x N x 3] (m), x = L o s
+//   /particles/all/velocity     value [F x N x 3] (m s-1), the *fluctuating* velocity v
+//   /particles/all/angular_velocity  value [F x N x 3] (rad s-1)
+//   /particles/all/box          dimension = 3, boundary = periodic x 3; edges/value [F x 3] (m)
+//   /particles/all/radius, mass [N] (m, kg), time-independent
+//
+// The step and time datasets live in position/ and are hard-linked into the other elements, as
+// H5MD allows: one append extends them for all, so the elements can never disagree on frames.
+#include <cstdint>
+
+#include "dynamics/simulation.hpp"
+#include "io/hdf5.hpp"
+
+namespace dem {
+
+class H5mdWriter {
+ public:
+  // Creates /h5md and /particles/all in `file`, with the (fixed) radius and mass of `sim`.
+  H5mdWriter(hid_t file, const Simulation& sim);
+  // Appends the current positions, velocities and cell edges as one frame at sim's step.
+  void append_frame(const Simulation& sim);
+  std::size_t frames() const { return step_.frames(); }
+
+ private:
+  h5::FrameSeries<std::int64_t> step_;
+  h5::FrameSeries<double> time_, position_, velocity_, angular_velocity_, edges_;
+};
+
+}  // namespace dem
