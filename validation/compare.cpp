@@ -87,15 +87,17 @@ bool all_finite(const Columns& c) {
 std::optional<double> largest_closure_error(const Columns& c) {
   const auto err = c.find("energy_closure_error");
   if (err == c.end() || err->second.empty()) return std::nullopt;
-  // Energy in, as the engine defines it: stored (elastic + the balance's time-centred kinetic
-  // energy) at the start, plus the cell's work so far.
+  // The energy that has come in, row by row: what is stored plus what was dissipated (equal to
+  // the engine's energy in up to the closure gap itself; the first row, before any force
+  // evaluation, holds zeros, so the stored energy at the start cannot be read from it).
   std::vector<double> in(err->second.size(), 1.0);
-  const char* stored[] = {"elastic_energy_normal", "elastic_energy_tangential", "kinetic_energy_centred"};
-  if (c.count("work_by_cell") && std::all_of(std::begin(stored), std::end(stored), [&](const char* k) { return c.count(k) > 0; })) {
-    double stored0 = 0;
-    for (const char* k : stored) stored0 += c.at(k).front();
-    for (std::size_t i = 0; i < in.size(); ++i) in[i] = stored0 + c.at("work_by_cell")[i];
-  }
+  const char* terms[] = {"elastic_energy_normal", "elastic_energy_tangential", "kinetic_energy_centred",
+                         "dissipated_by_damping", "dissipated_by_friction"};
+  if (std::all_of(std::begin(terms), std::end(terms), [&](const char* k) { return c.count(k) > 0; }))
+    for (std::size_t i = 0; i < in.size(); ++i) {
+      in[i] = 0;
+      for (const char* k : terms) in[i] += c.at(k)[i];
+    }
   const double top = *std::max_element(in.begin(), in.end());
   double worst = 0;
   for (std::size_t i = 0; i < in.size(); ++i)
