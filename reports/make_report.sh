@@ -106,8 +106,9 @@ mkdir -p "$report"
     echo "\`pipeline/studies/stability.yaml\` (issue 7): 216 spheres (\`scenes/stability/base.yaml\`: fast isotropic compression"
     echo "to 100 kPa, then A → TC1 → A) with one setting pushed per case. A case either runs to the end (finite values; the"
     echo "energy closure error is the largest over the rows once 1 % of the energy has come in, limit 1 %) or stops early"
-    echo "with the engine's message; a time step above 0.2 × critical runs once as written (refused) and once with"
-    echo "\`numerics.max_time_step_fraction\` raised to 2 on purpose."
+    echo "with the engine's message (its own energy guard stops a run above \`numerics.max_energy_error\` = 5 %); a time step"
+    echo "above 0.2 × critical runs once as written (refused) and once with \`numerics.max_time_step_fraction\` raised to 2 on"
+    echo "purpose. ⚠ marks a case that does neither (\`reports/stability/table.md\`, \`build/bin/compare-runs stability\`)."
     echo
     cat "$report/stability/table.md"
   else

@@ -155,7 +155,10 @@ int main(int argc, char** argv) {
           }
         }
         if (!run.complete) read_stop(l.result, run);
-        const validation::CaseOutcome o = validation::classify_case(run);
+        validation::CaseOutcome o = validation::classify_case(run);
+        // The engine names the resolved scene first; the case column already says which it is.
+        if (const auto at = o.message.find(".yaml: "); at != std::string::npos && o.message.rfind('/', at) != std::string::npos)
+          o.message = o.message.substr(at + 7);
         bad += !o.acceptable;
         const std::string name = l.test == "-" ? v : v + " " + l.test;
         md << "| " << cell(name) << " | " << cell(l.settings) << " | " << (o.acceptable ? "" : "⚠ ") << o.outcome << " | "
