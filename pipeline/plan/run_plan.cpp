@@ -70,10 +70,6 @@ double estimated_steps(const dem::SceneConfig& scene) {
   return steps;
 }
 
-}  // namespace
-
-namespace {
-
 // 17 significant digits: the time step read back is the same double, so a fraction of exactly
 // max_time_step_fraction is accepted by the engine's check rather than refused by round-off.
 std::string exact(double x) {
