@@ -90,15 +90,16 @@ dem::Particles lattice_particles(const dem::SceneConfig& scene) {
   return p;
 }
 
-// Errors in a variant's scenes name the study file and the variant, then the engine's message
-// (which names the scene key and what is allowed).
+// Errors in scenes with a study's overrides name the study file and where the overrides are
+// (`where`, e.g. "variants[2] (dt2)"), then the engine's message (which names the scene key and
+// what is allowed). Without overrides (`where` empty) the engine's message stands alone.
 template <class F>
-auto in_variant(const Study& study, std::size_t index, const Variant* v, F&& f) {
-  if (!v) return f();
+auto in_context(const Study& study, const std::string& where, F&& f) {
+  if (where.empty()) return f();
   try {
     return f();
   } catch (const dem::ConfigError& e) {
-    throw dem::ConfigError(study.file + ": variants[" + std::to_string(index) + "] (" + v->name + "): " + e.what());
+    throw dem::ConfigError(study.file + ": " + where + ": " + e.what());
   }
 }
 
@@ -122,7 +123,7 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
   };
   for (std::size_t vi = 0; vi < variants.size(); ++vi) {
     const Variant& v = variants[vi];
-    const Variant* where = named ? &v : nullptr;
+    const std::string where = named ? "variants[" + std::to_string(vi) + "] (" + v.name + ")" : "";
     const std::string prefix = named ? v.name + "_" : "";
     for (const Density& d : study.densities) {
       PlannedRun prep;
@@ -135,7 +136,7 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
       YAML::Node scene = load_yaml(study.preparation);
       const std::string n = std::to_string(profile.lattice);
       dem::Particles sample;  // only for time_step_fraction
-      in_variant(study, vi, where, [&] {
+      in_context(study, where, [&] {
         dem::apply_override(scene, study.preparation, "name", prep.name);
         std::ostringstream mu;
         mu << d.friction;
@@ -163,7 +164,7 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
       } else {
         prep.scene_text = emit(scene, header);
         const dem::SceneConfig parsed =
-            in_variant(study, vi, where, [&] { return dem::scene_from_text(prep.scene_text, prep.scene_file); });
+            in_context(study, where, [&] { return dem::scene_from_text(prep.scene_text, prep.scene_file); });
         prep.hash = content_hash(engine_version + "\n" + prep.scene_text);
         prep_index = static_cast<int>(runs.size());
         const auto& lat = parsed.particles.lattice;
@@ -175,7 +176,10 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
       }
       const PlannedRun from = runs[static_cast<std::size_t>(prep_index)];  // a copy: runs grows below
 
-      for (const TestCase& t : study.tests) {
+      for (std::size_t ti = 0; ti < study.tests.size(); ++ti) {
+        const TestCase& t = study.tests[ti];
+        const std::string test_where =
+            !where.empty() ? where : t.set.empty() ? "" : "tests[" + std::to_string(ti) + "] (" + t.name + ")";
         PlannedRun run;
         run.name = prefix + d.name + "_" + t.name;
         run.density = d.name;
@@ -184,7 +188,7 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
         run.may_fail = v.may_fail;
         paths(run);
         YAML::Node ts = load_yaml(t.scene);
-        in_variant(study, vi, where, [&] {
+        in_context(study, test_where, [&] {
           dem::apply_override(ts, t.scene, "name", run.name);
           dem::apply_override(ts, t.scene, "particles", "{state: " + fs::absolute(from.result).string() + "}");
           for (const auto& [key, value] : t.set) dem::apply_override(ts, t.scene, key, value);
@@ -199,7 +203,7 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
           return 0;
         });
         run.scene_text = emit(ts, header);
-        const dem::SceneConfig tp = in_variant(study, vi, where, [&] { return dem::scene_from_text(run.scene_text, run.scene_file); });
+        const dem::SceneConfig tp = in_context(study, test_where, [&] { return dem::scene_from_text(run.scene_text, run.scene_file); });
         run.hash = content_hash(engine_version + "\n" + run.scene_text + "\nfrom " + from.hash);
         run.depends_on = prep_index;
         run.cost = particles[prep_index] * estimated_steps(tp);

@@ -153,6 +153,20 @@ TEST_CASE("a variant's override of an unknown scene key is refused naming the st
   }
 }
 
+TEST_CASE("a test's override of an unknown scene key is refused naming the study and the test", "[pipeline][variants][input]") {
+  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "variants_badtestkey";
+  fs::remove_all(dir);
+  write_scenes(dir);
+  std::ofstream(dir / "study.yaml") << "name: v\noutput: out\npreparation: prep.yaml\n"
+                                       "densities: [{name: loose, friction: 0.5}]\n"
+                                       "tests: [{name: test1, scene: test.yaml, set: {\"stages[0].durration\": 1.0e-4}}]\n"
+                                       "profiles: {paper: {lattice: 2}, quick: {lattice: 2}}\n";
+  const pipeline::Study study = pipeline::load_study((dir / "study.yaml").string());
+  CHECK_THROWS_WITH(pipeline::plan_study(study, study.profile("quick"), (dir / "out").string(), "engine-A"),
+                    Catch::Matchers::Contains((dir / "study.yaml").string() + ": tests[0] (test1)") &&
+                        Catch::Matchers::Contains("durration") && Catch::Matchers::Contains("did you mean 'duration'"));
+}
+
 TEST_CASE("pipeline: a may_fail run that stops is recorded, not a failure, and reused while unchanged", "[pipeline][variants][scheduler]") {
   const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "variants_may_fail";
   fs::remove_all(dir);
