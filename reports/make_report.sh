@@ -73,7 +73,7 @@ mkdir -p "$report"
   # One sentence per figure comparing it with the paper's text, written by a person who looked at
   # both: reports/figure_notes.tsv (file<TAB>sentence). A figure without one says so.
   notes=$report/figure_notes.tsv
-  for png in "$report"/figures/*.png; do
+  for png in "$report"/figures/fig[0-9]*.png; do
     name=$(basename "$png")
     note=""
     if [ -f "$notes" ]; then note=$(awk -F'\t' -v f="$name" '$1 == f { print $2 }' "$notes"); fi
@@ -82,6 +82,16 @@ mkdir -p "$report"
     echo
     echo "${note:-*No comparison with the paper written for this figure yet.*}"
   done
+  echo
+  echo "## Energy balance"
+  echo
+  echo "Every run books the work the cell does on the sample against the energy stored in the springs and in"
+  echo "motion and the energy the damping and the sliding contacts took (engine/README.md, \`Energy balance\`)."
+  echo
+  "$here/reports/energy/energy.sh" "$dem" "$results" "$report" > /dev/null
+  cat "$report/energy.md"
+  echo
+  echo "![energy balance](figures/fig_energy.png)"
   echo
   echo "## Convergence: error against run time"
   echo
