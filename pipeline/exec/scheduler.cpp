@@ -18,17 +18,23 @@
 
 namespace pipeline {
 
-bool up_to_date(const std::string& result, const std::string& hash) {
+std::string reuse_problem(const std::string& result, const std::string& hash) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(result, ec)) return false;
+  if (!std::filesystem::exists(result, ec)) return "not run yet";
+  if (!std::filesystem::is_regular_file(result, ec)) return "not a regular file";
   try {
     dem::h5::Handle f = dem::h5::open_file_read(result);
-    return dem::h5::has_attribute(f, "status") && dem::h5::get_string_attribute(f, "status") == "complete" &&
-           dem::h5::has_attribute(f, "input_hash") && dem::h5::get_string_attribute(f, "input_hash") == hash;
-  } catch (const std::exception&) {
-    return false;  // unreadable or truncated: run it again
+    const std::string status = dem::h5::has_attribute(f, "status") ? dem::h5::get_string_attribute(f, "status") : "";
+    if (status != "complete") return "not marked complete (status '" + status + "')";
+    if (!dem::h5::has_attribute(f, "input_hash") || dem::h5::get_string_attribute(f, "input_hash") != hash)
+      return "written for other inputs";
+    return "";
+  } catch (const std::exception& e) {
+    return std::string("unreadable, truncated or corrupt (") + e.what() + ")";
   }
 }
+
+bool up_to_date(const std::string& result, const std::string& hash) { return reuse_problem(result, hash).empty(); }
 
 std::string outcome_file(const std::string& result) { return result + ".outcome"; }
 
@@ -126,7 +132,8 @@ Outcome execute(const std::vector<PlannedRun>& runs, const std::string& dem, int
   Outcome out;
   double cost_done = 0, busy_wall = 0, cost_left = 0;
   for (std::size_t i = 0; i < runs.size(); ++i) {
-    if (up_to_date(runs[i].result, runs[i].hash)) {
+    const std::string problem = reuse_problem(runs[i].result, runs[i].hash);
+    if (problem.empty()) {
       state[i] = State::Done;
       ++out.reused;
     } else if (runs[i].may_fail && recorded_stop(runs[i].result, runs[i].hash)) {
@@ -134,6 +141,10 @@ Outcome execute(const std::vector<PlannedRun>& runs, const std::string& dem, int
       ++out.reused;
     } else {
       cost_left += runs[i].cost;
+      // Say why an existing result is not reused (a missing one is simply run).
+      if (problem != "not run yet")
+        std::printf("[pipeline] %s: the existing %s is %s: run again\n", runs[i].name.c_str(), runs[i].result.c_str(),
+                    problem.c_str());
     }
   }
   std::printf("[pipeline] %zu runs: %d reused, %zu to run, %d at a time, %d thread%s each\n", runs.size(),

@@ -21,6 +21,9 @@ struct Outcome {
 
 // True if `result` is a complete result whose `input_hash` attribute equals `hash`.
 bool up_to_date(const std::string& result, const std::string& hash);
+// Why `result` cannot be reused for `hash`: "" if it can, else "not run yet", "not marked complete
+// (status '...')", "written for other inputs" or "unreadable, truncated or corrupt (...)".
+std::string reuse_problem(const std::string& result, const std::string& hash);
 
 // A may_fail run's recorded stop: <result>.outcome, written atomically when it stopped.
 struct Stop {

@@ -76,6 +76,10 @@ TEST_CASE("a result counts as up to date only if complete with the same input ha
   const std::string garbage = out + "/garbage.h5";
   { std::ofstream(garbage) << "not an HDF5 file"; }
   CHECK_FALSE(pipeline::up_to_date(garbage, "x"));  // a truncated or corrupt file is run again
+  // ... and the pipeline says why it does not reuse a file that is there.
+  CHECK(pipeline::reuse_problem(missing, "x") == "not run yet");
+  CHECK(pipeline::reuse_problem(garbage, "x").rfind("unreadable, truncated or corrupt (", 0) == 0);
+  CHECK(pipeline::reuse_problem(out, "x") == "not a regular file");
 }
 
 TEST_CASE("a study with an unknown profile or a missing scene is refused naming the key", "[pipeline]") {

@@ -59,6 +59,7 @@ TEST_CASE("pipeline: runs once, then reuses, reruns what is missing or corrupt",
   o = run(dir);  // a second run does no work
   CHECK(o.ran == 0);
   CHECK(o.reused == 4);
+  CHECK(pipeline::reuse_problem((dir / "out" / "loose_prepare.h5").string(), "another hash") == "written for other inputs");
   fs::remove(dir / "out" / "dense_test1.h5");  // an interrupted study continues where it stopped
   { std::ofstream(dir / "out" / "loose_test1.h5", std::ios::trunc) << "truncated"; }  // a corrupt result
   o = run(dir);
