@@ -68,7 +68,7 @@ const std::string four_variants =
 
 }  // namespace
 
-TEST_CASE("variants expand into runs with their overrides; test-only variants share the preparation", "[pipeline][variants]") {
+TEST_CASE("variants expand into runs with their overrides, and test-only variants share the preparation", "[pipeline][variants]") {
   const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "variants_plan";
   fs::remove_all(dir);
   write_scenes(dir);

@@ -186,7 +186,7 @@ TEST_CASE("the XDMF of a result is named after it", "[io][h5md]") {
   CHECK(xdmf_path_for(".h5") == ".h5.xdmf");
 }
 
-TEST_CASE("a complete run replaces the XDMF of an earlier result; a failed one leaves it with its result", "[io][h5md]") {
+TEST_CASE("a complete run replaces the XDMF of an earlier result, a failed one leaves it with its result", "[io][h5md]") {
   const std::string dir = test::scratch_dir("h5md_replace");
   const std::string stale = "<!-- an earlier result's XDMF -->\n";
   test::write_text(dir + "/r.h5", "an earlier result\n");
