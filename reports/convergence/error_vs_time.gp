@@ -1,0 +1,26 @@
+set terminal pngcairo size 1100,800 font ",11" enhanced
+set output "/work/main/reports/convergence/error_vs_time.png"
+set grid lc rgb "#dddddd"
+set logscale xy
+set key bottom left box opaque font ",10"
+set title "Convergence (loose sample, Test 1, 2 cycles): largest relative error against the reference\nover e0, coordination number, ε_v and ε_d at each cycle end and the q/p–F^s_d/F^s_m slope" font ",12"
+set xlabel "wall time of the variant's preparation + test (s)"
+set ylabel "largest relative error (%)"
+set arrow 1 from 552.302, graph 0 to 552.302, graph 1 nohead dt 2 lc rgb "#777777"
+set label 1 "reference (error 0)" at 552.302, graph 0.95 right offset -0.5,0 tc rgb "#555555"
+# the tolerances of the table: 1, 5 and 10 %
+set arrow 2 from graph 0, first 1 to graph 1, first 1 nohead dt 3 lc rgb "#2ca02c"
+set arrow 3 from graph 0, first 5 to graph 1, first 5 nohead dt 3 lc rgb "#ff7f0e"
+set arrow 4 from graph 0, first 10 to graph 1, first 10 nohead dt 3 lc rgb "#d62728"
+set label 2 "1 %" at graph 0.01, first 1 offset 0,0.6 tc rgb "#2ca02c"
+set label 3 "5 %" at graph 0.01, first 5 offset 0,0.6 tc rgb "#ff7f0e"
+set label 4 "10 %" at graph 0.01, first 10 offset 0,0.6 tc rgb "#d62728"
+set yrange [0.01:*]
+set offsets graph 0.1, graph 0.3, graph 0.1, graph 0.1
+# columns of errors.dat: 5 coordination, 6 e0, 11 qp_slope (the quantities two samples agree on
+# within 10 %; see the seed2 row of table.md)
+max3(a, b, c) = (a > b ? (a > c ? a : c) : (b > c ? b : c))
+plot "/work/main/reports/convergence/front.dat" u 2:(100*$3) w l lw 2 lc rgb "#1f77b4" t "Pareto front (all quantities)", \
+  "/work/main/reports/convergence/errors.dat" u 2:($3 > 0 ? 100*$3 : NaN) w p pt 7 ps 1.2 lc rgb "#000000" t "largest error, all quantities", \
+  "/work/main/reports/convergence/errors.dat" u 2:($3 > 0 ? 100*$3 : NaN):1 w labels offset char 0.8,0.6 left font ",9" noenhanced notitle, \
+  "/work/main/reports/convergence/errors.dat" u 2:($3 > 0 ? 100*max3($5, $6, $11) : NaN) w p pt 6 ps 1.4 lc rgb "#d62728" t "largest error on e0, CN and the q/p slope"
