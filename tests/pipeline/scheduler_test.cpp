@@ -10,6 +10,7 @@
 #include "config/study_config.hpp"
 #include "exec/scheduler.hpp"
 #include "plan/run_plan.hpp"
+#include "pipeline/tiny_scenes.hpp"
 
 namespace fs = std::filesystem;
 
@@ -19,20 +20,7 @@ const std::string dem = std::string(DEM_BINARY_DIR) + "/bin/dem";
 
 // 27 spheres, 200 steps per run: the study takes well under a second.
 void write_study(const fs::path& dir, const std::string& test_duration) {
-  fs::create_directories(dir);
-  std::ofstream(dir / "prep.yaml") << R"(name: prep
-particles:
-  lattice: {n: [3, 3, 3], spacing: 5.0e-3, seed: 1}
-  grading: {diameters: [3.0e-3, 4.5e-3], percent_finer: [0, 100]}
-material: {density: 2650, kn: 1.0e6, ks: 1.0e6, friction: 0.5}
-numerics: {time_step: 1.0e-6}
-stages: [{name: squeeze, type: strain_rate, strain_rate: [1, 1, 1], duration: 2.0e-4}]
-)";
-  std::ofstream(dir / "test.yaml") << "name: t\nparticles: {state: nowhere.h5}\n"
-                                      "material: {density: 2650, kn: 1.0e6, ks: 1.0e6, friction: 0.5}\n"
-                                      "numerics: {time_step: 1.0e-6}\n"
-                                      "stages: [{name: shear, type: strain_rate, strain_rate: [1, 0, -1], duration: " +
-                                          test_duration + "}]\n";
+  pipeline::test::write_tiny_scenes(dir, "2.0e-4", test_duration);
   std::ofstream(dir / "study.yaml") << "name: tiny\noutput: out\npreparation: prep.yaml\n"
                                        "densities: [{name: loose, friction: 0.5}, {name: dense, friction: 0}]\n"
                                        "tests: [{name: test1, scene: test.yaml}]\n"

@@ -16,6 +16,7 @@
 #include "exec/scheduler.hpp"
 #include "generate/grading.hpp"
 #include "plan/run_plan.hpp"
+#include "pipeline/tiny_scenes.hpp"
 #include "run/run_scene.hpp"
 
 namespace fs = std::filesystem;
@@ -25,21 +26,7 @@ namespace {
 const std::string dem_binary = std::string(DEM_BINARY_DIR) + "/bin/dem";
 
 // 8 spheres (lattice 2 from the profile), 100 steps per run: the whole study takes a fraction of a second.
-void write_scenes(const fs::path& dir) {
-  fs::create_directories(dir);
-  std::ofstream(dir / "prep.yaml") << R"(name: prep
-particles:
-  lattice: {n: [3, 3, 3], spacing: 5.0e-3, seed: 1}
-  grading: {diameters: [3.0e-3, 4.5e-3], percent_finer: [0, 100]}
-material: {density: 2650, kn: 1.0e6, ks: 1.0e6, friction: 0.5}
-numerics: {time_step: 1.0e-6}
-stages: [{name: squeeze, type: strain_rate, strain_rate: [1, 1, 1], duration: 1.0e-4}]
-)";
-  std::ofstream(dir / "test.yaml") << "name: t\nparticles: {state: nowhere.h5}\n"
-                                      "material: {density: 2650, kn: 1.0e6, ks: 1.0e6, friction: 0.5}\n"
-                                      "numerics: {time_step: 1.0e-6}\n"
-                                      "stages: [{name: shear, type: strain_rate, strain_rate: [1, 0, -1], duration: 1.0e-4}]\n";
-}
+void write_scenes(const fs::path& dir) { pipeline::test::write_tiny_scenes(dir, "1.0e-4", "1.0e-4"); }
 
 const std::string study_head =
     "name: v\noutput: out\npreparation: prep.yaml\n"
