@@ -8,7 +8,7 @@ RESULTS  ?= results/study/paper
 CONVERGENCE ?= results/convergence/paper
 STABILITY   ?= results/stability/paper
 
-.PHONY: all deps build test sanitize fuzz bench quick study report samples samples-study cyclic-tests clean
+.PHONY: all deps build test kill-test sanitize fuzz bench quick study report samples samples-study cyclic-tests clean
 
 # Everything: install, build, test, run the full study (reusing finished runs), validate it, draw
 # the figures and write reports/index.md. Fails at the end if a must-pass validation row fails.
@@ -39,6 +39,13 @@ test: build
 	  --out $(BUILD)/smoke/validation --profile quick
 	$(BUILD)/bin/pipeline pipeline/studies/stability.yaml --profile quick --out $(BUILD)/smoke-stability -j $(JOBS)
 	$(BUILD)/bin/compare-runs stability $(BUILD)/smoke-stability $(BUILD)/smoke-stability/report
+
+# The long kill tests (issue 8): a run killed 20 times and a study killed 5 times at random
+# moments, resumed from checkpoints and compared bit for bit with uninterrupted ones.
+KILLS ?= 20
+kill-test: build
+	tests/kill/kill_test.sh $(BUILD)/bin/dem $(KILLS) $(BUILD)/kill-test/run-long
+	tests/kill/study_kill_test.sh $(BUILD)/bin 5 $(BUILD)/kill-test/study-long
 
 # The input readers (scene, study, CSV, HDF5 state) and the rest of the unit tests that read input,
 # built with AddressSanitizer and UndefinedBehaviorSanitizer; any finding fails (CI runs this).

@@ -2,7 +2,9 @@
 //   dem run SCENE.yaml --out RESULT.h5     run a scene, write its result
 //   dem keys                               the reference of every scene key
 //   dem --help
+#include <fcntl.h>
 #include <omp.h>
+#include <sys/file.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -29,11 +31,16 @@ namespace {
 const char* usage =
     "usage:\n"
     "  dem run SCENE.yaml --out RESULT.h5 [--set KEY=VALUE ...] [--threads N] [--quiet]\n"
+    "                                   [--resume | --no-resume]\n"
     "                                                 run a scene and write its result (HDF5); --set\n"
     "                                                 overrides a key, e.g. --set particles.lattice.seed=2;\n"
     "                                                 --threads: threads inside the run (default 1; the\n"
     "                                                 result is bit for bit the same for any count);\n"
-    "                                                 --input-hash H is recorded in the result (pipeline)\n"
+    "                                                 --input-hash H is recorded in the result (pipeline);\n"
+    "                                                 --resume: continue from RESULT.h5.checkpoint, which\n"
+    "                                                 must exist and match (exit 2 otherwise); --no-resume:\n"
+    "                                                 start over; default: resume if a matching checkpoint\n"
+    "                                                 exists (output.checkpoint_interval/_wall_time)\n"
     "  dem keys                                       list every scene key with unit, range, default\n"
     "  dem table RESULT.h5 [--legs] [COLUMN ...]      print time-series (or per-leg) columns as\n"
     "                                                 tab-separated text\n"
@@ -43,7 +50,8 @@ const char* usage =
     "  dem --version | --source-hash | --help\n"
     "\n"
     "The result is written to RESULT.h5.partial while the run goes on and renamed to RESULT.h5\n"
-    "(status 'complete') only when it finishes. Exit status: 0 success, 1 run failed, 2 bad input.\n";
+    "(status 'complete') only when it finishes; RESULT.h5.checkpoint holds the newest checkpoint\n"
+    "until then. Exit status: 0 success, 1 run failed, 2 bad input.\n";
 
 int run(int argc, char** argv) {
   std::string scene_file, out;
@@ -51,10 +59,13 @@ int run(int argc, char** argv) {
   std::vector<std::pair<std::string, std::string>> overrides;
   std::string input_hash;
   int threads = 1;
+  dem::Resume resume = dem::Resume::IfValid;
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--out" && i + 1 < argc) out = argv[++i];
     else if (a == "--quiet") quiet = true;
+    else if (a == "--resume") resume = dem::Resume::Always;
+    else if (a == "--no-resume") resume = dem::Resume::Never;
     else if (a == "--input-hash" && i + 1 < argc) input_hash = argv[++i];
     else if (a == "--threads" && i + 1 < argc) {
       const std::string t = argv[++i];
@@ -80,6 +91,18 @@ int run(int argc, char** argv) {
     std::fprintf(stderr, "dem run: need a scene file and --out RESULT.h5\n%s", usage);
     return 2;
   }
+  {  // where the result goes must be a file name in an existing, writable folder
+    namespace fs = std::filesystem;
+    const fs::path folder = fs::path(out).parent_path().empty() ? fs::path(".") : fs::path(out).parent_path();
+    const char* problem = fs::is_directory(out)            ? "is a directory, not a file name"
+                          : !fs::is_directory(folder)      ? "is in a folder that does not exist"
+                          : access(folder.c_str(), W_OK) != 0 ? "is in a folder this user cannot write to"
+                                                              : nullptr;
+    if (problem) {
+      std::fprintf(stderr, "error: --out %s %s; nothing was run\n", out.c_str(), problem);
+      return 2;
+    }
+  }
   dem::SceneConfig scene;
   try {
     scene = dem::load_scene(scene_file, overrides);
@@ -87,12 +110,23 @@ int run(int argc, char** argv) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;
   }
+  // One writer per result: a second `dem run` to the same --out refuses instead of writing into
+  // the same partial file and checkpoint. The lock goes with the process, however it ends.
+  const std::string lock_path = out + ".lock";
+  const int lock = open(lock_path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (lock < 0 || flock(lock, LOCK_EX | LOCK_NB) != 0) {
+    std::fprintf(stderr, "error: --out %s: %s; nothing was run\n", out.c_str(),
+                 lock < 0 ? ("cannot create the lock file " + lock_path).c_str()
+                          : ("another dem run is writing this result (it holds " + lock_path + ")").c_str());
+    return 2;
+  }
   omp_set_num_threads(threads);
   try {
     const bool progress = !quiet && isatty(STDERR_FILENO);
-    const dem::RunSummary s = dem::run_scene(scene, out, progress, input_hash);
+    const dem::RunSummary s = dem::run_scene(scene, out, progress, input_hash, resume);
     std::fprintf(stderr, "%s: %lld steps in %.1f s (%.3g steps/s) -> %s\n", scene.name.c_str(),
                  static_cast<long long>(s.steps), s.wall_time_s, static_cast<double>(s.steps) / s.wall_time_s, out.c_str());
+    unlink(lock_path.c_str());  // still held: a run waiting for it would find the result complete
     return 0;
   } catch (const dem::ConfigError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());

@@ -281,6 +281,10 @@ static SceneConfig parse_scene(Section root, const std::string& file) {
     Section o = root.optional_child("output", "time-series output");
     c.output.interval_steps = o.integer("interval", 1, 1000000000, 1000, "steps between time-series rows");
     c.output.flush_rows = o.integer("flush_rows", 1, 1000000, 20, "rows between flushes of the result file to disk");
+    c.output.checkpoint_interval_steps = o.integer("checkpoint_interval", 0, 1000000000, 0,
+        "steps between checkpoints (RESULT.h5.checkpoint, for dem run --resume; 0: none by steps)");
+    c.output.checkpoint_wall_time_s = o.number("checkpoint_wall_time", "s", {0, 1e7}, 600,
+        "seconds of wall time between checkpoints (0: none by time)");
     o.finish();
   }
   for (Section& s : root.list("stages", "the stages, run in order")) c.stages.push_back(read_stage(s));

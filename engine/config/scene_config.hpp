@@ -52,6 +52,10 @@ struct StageConfig {
 struct OutputConfig {
   std::int64_t interval_steps = 1000;  // time-series row every N steps (and at every stage end)
   std::int64_t flush_rows = 20;        // the file is flushed to disk every N rows
+  // Checkpoints (run/checkpoint.hpp): every N steps (0: not by steps) and every S seconds of wall
+  // time (0: not by time). They do not change the result, so they are not in resolved_yaml.
+  std::int64_t checkpoint_interval_steps = 0;
+  double checkpoint_wall_time_s = 600;
 };
 
 struct SceneConfig {

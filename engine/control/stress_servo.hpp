@@ -48,6 +48,13 @@ class AdaptiveServo {
   explicit AdaptiveServo(const ServoSettings& settings) : settings_(settings) {}
   Vec3 rates(const CellTargets& targets, const Mat3& stress_Pa, const Vec3& stiffness_Pa, double dt_s);
   const Vec3& stiffness_ratio() const { return kappa_; }
+  // What the servo has learnt so far (saved in checkpoints).
+  struct State {
+    Vec3 kappa = Vec3::Ones(), predicted = Vec3::Zero(), window_start = Vec3::Zero();
+    int steps = -1;
+  };
+  State state() const { return {kappa_, predicted_, window_start_, steps_}; }
+  void restore(const State& s) { kappa_ = s.kappa, predicted_ = s.predicted, window_start_ = s.window_start, steps_ = s.steps; }
 
  private:
   ServoSettings settings_;

@@ -70,6 +70,14 @@ void Simulation::restore(std::int64_t step, const Vec3& strain_rate, PairList co
   list_.restore(std::move(contacts));
 }
 
+void Simulation::restore_checkpoint(std::int64_t step, const Vec3& strain_rate, VerletList::Saved list,
+                                    const EnergyBalance& energy) {
+  step_ = step;
+  strain_rate_ = strain_rate;
+  list_.restore_exact(std::move(list), particles_);
+  energy_ = energy;
+}
+
 void Simulation::step(const CellTargets& targets, const ServoSettings& servo) {
   advance([&] { return servo_strain_rates(targets, sums_.stress_Pa, sums_.stiffness_Pa, servo, dt_); });
 }

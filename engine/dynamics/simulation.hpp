@@ -116,6 +116,9 @@ class Simulation {
 
   // Restores the dynamic state saved by a previous run (for a bit-for-bit continuation).
   void restore(std::int64_t step, const Vec3& strain_rate, PairList contacts);
+  // Restores a checkpoint of this same run (run/checkpoint.hpp): also the whole Verlet list and
+  // the energy balance, so that rows, rebuilds and sums continue exactly as without the stop.
+  void restore_checkpoint(std::int64_t step, const Vec3& strain_rate, VerletList::Saved list, const EnergyBalance& energy);
 
   // Internal: the per-step kernel, chosen once from the material and damping.
   struct Kernel;

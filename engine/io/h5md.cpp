@@ -1,5 +1,6 @@
 #include "io/h5md.hpp"
 
+#include "io/state_io.hpp"  // flatten
 #include "version.hpp"
 
 namespace dem {
@@ -9,13 +10,6 @@ namespace {
 void link(hid_t from_group, const std::string& target, hid_t to_group, const std::string& name) {
   if (H5Lcreate_hard(from_group, target.c_str(), to_group, name.c_str(), H5P_DEFAULT, H5P_DEFAULT) < 0)
     throw h5::Error("HDF5: linking " + name + " to " + target + " failed");
-}
-
-std::vector<double> flatten(const std::vector<Vec3>& v) {
-  std::vector<double> out;
-  out.reserve(3 * v.size());
-  for (const Vec3& x : v) out.insert(out.end(), {x[0], x[1], x[2]});
-  return out;
 }
 
 }  // namespace
@@ -73,6 +67,17 @@ H5mdWriter::H5mdWriter(hid_t file, const Simulation& sim) {
 
   h5::write(all, "radius", p.radius, 1, "m", "unit");
   h5::write(all, "mass", p.mass, 1, "kg", "unit");
+}
+
+H5mdWriter::H5mdWriter(hid_t file) {
+  h5::Handle all = h5::open_group(file, "particles/all");
+  h5::Handle position = h5::open_group(all, "position");
+  step_ = h5::FrameSeries<std::int64_t>(position, "step");
+  time_ = h5::FrameSeries<double>(position, "time");
+  position_ = h5::FrameSeries<double>(position, "value");
+  velocity_ = h5::FrameSeries<double>(all, "velocity/value");
+  angular_velocity_ = h5::FrameSeries<double>(all, "angular_velocity/value");
+  edges_ = h5::FrameSeries<double>(all, "box/edges/value");
 }
 
 void H5mdWriter::append_frame(const Simulation& sim) {

@@ -23,6 +23,8 @@ class H5mdWriter {
  public:
   // Creates /h5md and /particles/all in `file`, with the (fixed) radius and mass of `sim`.
   H5mdWriter(hid_t file, const Simulation& sim);
+  // Reopens the frames of `file` (written by the constructor above) for appending.
+  explicit H5mdWriter(hid_t file);
   // Appends the current positions, velocities and cell edges as one frame at sim's step.
   void append_frame(const Simulation& sim);
   std::size_t frames() const { return step_.frames(); }

@@ -243,6 +243,16 @@ FrameSeries<T>::FrameSeries(hid_t parent, const std::string& name, std::vector<h
 }
 
 template <class T>
+FrameSeries<T>::FrameSeries(hid_t parent, const std::string& name) {
+  dataset_ = Handle(checked(H5Dopen2(parent, name.c_str(), H5P_DEFAULT), "opening dataset " + name));
+  Handle space(H5Dget_space(dataset_));
+  std::vector<hsize_t> dims(static_cast<std::size_t>(std::max(1, H5Sget_simple_extent_ndims(space))), 0);
+  H5Sget_simple_extent_dims(space, dims.data(), nullptr);
+  frames_ = static_cast<std::size_t>(dims[0]);
+  frame_shape_.assign(dims.begin() + 1, dims.end());
+}
+
+template <class T>
 void FrameSeries<T>::append(const std::vector<T>& frame) {
   const hsize_t per_frame = std::accumulate(frame_shape_.begin(), frame_shape_.end(), hsize_t{1}, std::multiplies<>());
   if (frame.size() != per_frame) throw Error("HDF5: a frame of " + std::to_string(frame.size()) + " values, expected " +

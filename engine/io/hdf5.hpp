@@ -83,6 +83,8 @@ class FrameSeries {
  public:
   FrameSeries() = default;
   FrameSeries(hid_t parent, const std::string& name, std::vector<hsize_t> frame_shape);
+  // Reopens an existing series for appending.
+  FrameSeries(hid_t parent, const std::string& name);
   void append(const std::vector<T>& frame);
   std::size_t frames() const { return frames_; }
   hid_t id() const { return dataset_; }

@@ -18,6 +18,11 @@ ColumnTable::ColumnTable(hid_t file, const std::string& group, const std::vector
   }
 }
 
+ColumnTable::ColumnTable(hid_t file, const std::string& group, const std::vector<SeriesColumn>& columns, Reopen)
+    : group_(h5::open_group(file, group)), pending_(columns.size()) {
+  for (const SeriesColumn& c : columns) columns_.emplace_back(group_, c.name);
+}
+
 void ColumnTable::append(const std::vector<double>& row) {
   for (std::size_t c = 0; c < columns_.size(); ++c) pending_[c].push_back(row[c]);
 }
@@ -40,6 +45,18 @@ ResultWriter::ResultWriter(std::string out_path, const SceneConfig& scene)
   h5::set_attribute(file_, "damping_form", std::string(scene.damping.form == Damping::Form::Viscous ? "viscous" : "local"));
   tables_.emplace_back(file_, "timeseries", series_columns());
   tables_.emplace_back(file_, "legs", leg_columns());
+  H5Fflush(file_, H5F_SCOPE_GLOBAL);
+}
+
+ResultWriter::ResultWriter(std::string out_path, const SceneConfig& scene, const std::string& checkpoint_file)
+    : out_(std::move(out_path)), partial_(out_ + ".partial"), flush_rows_(static_cast<std::size_t>(scene.output.flush_rows)) {
+  std::filesystem::copy_file(checkpoint_file, partial_, std::filesystem::copy_options::overwrite_existing);
+  file_ = h5::open_file_write(partial_);
+  if (H5Ldelete(file_, "checkpoint", H5P_DEFAULT) < 0) throw h5::Error(partial_ + ": cannot remove /checkpoint");
+  tables_.emplace_back(file_, "timeseries", series_columns(), ColumnTable::Reopen{});
+  tables_.emplace_back(file_, "legs", leg_columns(), ColumnTable::Reopen{});
+  if (h5::exists(file_, "particles/all")) frames_ = std::make_unique<H5mdWriter>(file_);
+  if (h5::has_attribute(file_, "warnings")) warnings_ = h5::get_string_attribute(file_, "warnings");
   H5Fflush(file_, H5F_SCOPE_GLOBAL);
 }
 

@@ -21,6 +21,8 @@ namespace dem {
 class ColumnTable {
  public:
   ColumnTable(hid_t file, const std::string& group, const std::vector<SeriesColumn>& columns);
+  struct Reopen {};
+  ColumnTable(hid_t file, const std::string& group, const std::vector<SeriesColumn>& columns, Reopen);
   void append(const std::vector<double>& row);
   std::size_t pending_rows() const { return pending_.empty() ? 0 : pending_[0].size(); }
   void flush();  // writes pending rows (the caller flushes the file)
@@ -34,13 +36,16 @@ class ColumnTable {
 class ResultWriter {
  public:
   ResultWriter(std::string out_path, const SceneConfig& scene);
+  // Continues from a checkpoint (run/checkpoint.hpp): <out>.partial becomes a copy of it, without
+  // its /checkpoint group, and the run appends to its rows and frames.
+  ResultWriter(std::string out_path, const SceneConfig& scene, const std::string& checkpoint_file);
   ~ResultWriter();
 
   void append_row(const std::vector<double>& row);  // /timeseries; flushed every `flush_rows` rows
   void append_leg(const std::vector<double>& row);  // /legs (stress-path stages)
   void add_warning(const std::string& warning);     // kept in the `warnings` attribute
   void set_attribute(const std::string& name, const std::string& value);  // a root attribute
-  void flush();
+  void flush();  // everything so far is on disk when it returns
   void write_state(const class Simulation& sim);
   // One H5MD particle frame at the simulation's current step (the first call creates /h5md
   // and /particles, taking radius and mass from `sim`).

@@ -5,8 +5,6 @@
 
 namespace dem {
 
-namespace {
-
 std::vector<double> flatten(const std::vector<Vec3>& v) {
   std::vector<double> out;
   out.reserve(3 * v.size());
@@ -14,17 +12,18 @@ std::vector<double> flatten(const std::vector<Vec3>& v) {
   return out;
 }
 
-// Reads an N x 3 dataset of /state into vectors.
 std::vector<Vec3> read_vec3(hid_t group, const std::string& file, const std::string& name) {
   std::size_t cols = 0;
   const std::vector<double> d = h5::read<double>(group, name, cols);
-  if (cols != 3) throw h5::Error(file + ": /state/" + name + " must have 3 columns, has " + std::to_string(cols));
+  if (cols != 3) {
+    char group_path[256] = "";
+    H5Iget_name(group, group_path, sizeof group_path);
+    throw h5::Error(file + ": " + group_path + "/" + name + " must have 3 columns, has " + std::to_string(cols));
+  }
   std::vector<Vec3> out(d.size() / 3);
   for (std::size_t i = 0; i < out.size(); ++i) out[i] = Vec3(d[3 * i], d[3 * i + 1], d[3 * i + 2]);
   return out;
 }
-
-}  // namespace
 
 void write_state(hid_t group, const Simulation& sim) {
   const Particles& p = sim.particles();
@@ -73,25 +72,42 @@ void write_state(hid_t group, const Simulation& sim) {
   h5::set_attribute(group, "time_step", sim.time_step());
 }
 
-static SavedState read_state_unchecked(const std::string& file);
+namespace {
 
-SavedState read_state(const std::string& file) {
+// Every message names the file.
+template <class F>
+auto naming_file(const std::string& file, F read) {
   try {
-    return read_state_unchecked(file);
-  } catch (const h5::Error& e) {  // every message names the file
+    return read();
+  } catch (const h5::Error& e) {
     const std::string what = e.what();
     if (what.rfind(file, 0) == 0) throw;
     throw h5::Error(file + ": " + what);
   }
 }
 
-static SavedState read_state_unchecked(const std::string& file) {
-  h5::Handle f = h5::open_file_read(file);
-  if (!h5::has_attribute(f, "status") || h5::get_string_attribute(f, "status") != "complete")
-    throw h5::Error(file + ": not a complete result (status '" +
-                    (h5::has_attribute(f, "status") ? h5::get_string_attribute(f, "status") : std::string("missing")) +
-                    "'); only a finished run's state can be loaded");
-  h5::Handle g = h5::open_group(f, "state");
+SavedState read_state_unchecked(hid_t g, const std::string& file);
+
+}  // namespace
+
+SavedState read_state(const std::string& file) {
+  return naming_file(file, [&] {
+    h5::Handle f = h5::open_file_read(file);
+    if (!h5::has_attribute(f, "status") || h5::get_string_attribute(f, "status") != "complete")
+      throw h5::Error(file + ": not a complete result (status '" +
+                      (h5::has_attribute(f, "status") ? h5::get_string_attribute(f, "status") : std::string("missing")) +
+                      "'); only a finished run's state can be loaded");
+    return read_state_unchecked(h5::open_group(f, "state"), file);
+  });
+}
+
+SavedState read_state(hid_t group, const std::string& file) {
+  return naming_file(file, [&] { return read_state_unchecked(group, file); });
+}
+
+namespace {
+
+SavedState read_state_unchecked(hid_t g, const std::string& file) {
   SavedState st;
   std::size_t cols = 0;
   Particles& p = st.particles;
@@ -138,5 +154,7 @@ static SavedState read_state_unchecked(const std::string& file) {
   st.time_step_s = h5::get_double_attribute(g, "time_step");
   return st;
 }
+
+}  // namespace
 
 }  // namespace dem

@@ -17,8 +17,14 @@ struct SavedState {
   double time_step_s = 0;
 };
 
+// N x 3 datasets of vectors.
+std::vector<double> flatten(const std::vector<Vec3>& v);
+std::vector<Vec3> read_vec3(hid_t group, const std::string& file, const std::string& name);
+
 void write_state(hid_t group, const Simulation& sim);
 // Reads the /state group of a *complete* result file; throws naming the file otherwise.
 SavedState read_state(const std::string& file);
+// Reads a group written by write_state (`file` only names it in messages); checks every value.
+SavedState read_state(hid_t group, const std::string& file);
 
 }  // namespace dem

@@ -92,6 +92,16 @@ void VerletList::collect_pairs(const Particles& p, const PeriodicCell& cell, Pai
   }
 }
 
+void VerletList::restore_exact(Saved saved, const Particles& p) {
+  pairs_ = std::move(saved.pairs);
+  s_at_build_ = std::move(saved.s_at_build);
+  lengths_at_build_ = saved.lengths_at_build;
+  builds_ = saved.builds;
+  built_ = saved.built;
+  max_radius_ = p.size() ? *std::max_element(p.radius.begin(), p.radius.end()) : 0.0;
+  index_.build(pairs_, p.size());
+}
+
 void VerletList::build(const Particles& p, const PeriodicCell& cell) {
   max_radius_ = p.size() ? *std::max_element(p.radius.begin(), p.radius.end()) : 0.0;
   const double range = 2 * max_radius_ + skin_;

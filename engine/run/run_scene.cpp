@@ -3,6 +3,9 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <optional>
 #include <sstream>
 
 #include "analysis/measurements.hpp"
@@ -12,6 +15,7 @@
 #include "io/particle_csv.hpp"
 #include "io/result_writer.hpp"
 #include "io/state_io.hpp"
+#include "run/checkpoint.hpp"
 
 namespace dem {
 
@@ -66,10 +70,6 @@ Simulation build_simulation(const SceneConfig& scene) {
   return sim;
 }
 
-namespace {
-
-}  // namespace
-
 HoldStatus hold_status(const Simulation& sim, const StageConfig& st) {
   const Mat3& s = sim.sums().stress_Pa;
   HoldStatus h;
@@ -96,12 +96,25 @@ bool output_due(const Simulation& sim, const SceneConfig& scene) {
 
 constexpr std::int64_t progress_every = 256;
 
-void run_strain_rate_stage(Simulation& sim, const SceneConfig& scene, int index, const StageHooks& hooks) {
+StageCursor cursor_at(int stage, std::int64_t i) {
+  StageCursor c;
+  c.stage = stage;
+  c.i = i;
+  return c;
+}
+
+bool checkpoint_due(const StageHooks& hooks, const Simulation& sim) {
+  return hooks.checkpoint_due && hooks.checkpoint_due(sim);
+}
+
+void run_strain_rate_stage(Simulation& sim, const SceneConfig& scene, int index, const StageHooks& hooks,
+                           const StageCursor* resume) {
   const StageConfig& st = scene.stages[static_cast<std::size_t>(index)];
   CellTargets targets;
   for (int k = 0; k < 3; ++k) targets[static_cast<std::size_t>(k)] = {AxisTarget::Mode::StrainRate, st.strain_rate_per_s[k], 0, 0};
   const std::int64_t n = steps_for(st.duration_s, sim.time_step());
-  for (std::int64_t i = 0; i < n; ++i) {
+  for (std::int64_t i = resume ? resume->i : 0; i < n; ++i) {
+    if (i > 0 && checkpoint_due(hooks, sim)) hooks.checkpoint(sim, cursor_at(index, i));
     sim.step(targets, scene.servo);
     if (hooks.row && output_due(sim, scene)) hooks.row(sim, {index});
     if (hooks.progress && i % progress_every == 0)
@@ -109,22 +122,26 @@ void run_strain_rate_stage(Simulation& sim, const SceneConfig& scene, int index,
   }
 }
 
-void run_stress_stage(Simulation& sim, const SceneConfig& scene, int index, const StageHooks& hooks) {
+void run_stress_stage(Simulation& sim, const SceneConfig& scene, int index, const StageHooks& hooks,
+                      const StageCursor* resume) {
   const StageConfig& st = scene.stages[static_cast<std::size_t>(index)];
   const double dt = sim.time_step();
-  const Mat3 start_stress = count_contacts(sim).stress_Pa;
   // Each axis ramps linearly from its stress at the stage start to its target at the stage rate.
-  Vec3 from, ramp_time;
-  for (int k = 0; k < 3; ++k) {
-    from[k] = start_stress(k, k);
-    ramp_time[k] = std::abs(st.target_Pa[k] - from[k]) / st.stress_rate_Pa_per_s;
-  }
+  const Vec3 from = resume ? resume->from_Pa : Vec3(count_contacts(sim).stress_Pa.diagonal());
+  Vec3 ramp_time;
+  for (int k = 0; k < 3; ++k) ramp_time[k] = std::abs(st.target_Pa[k] - from[k]) / st.stress_rate_Pa_per_s;
   const double ramp_end = ramp_time.maxCoeff();
   const std::int64_t max_steps = steps_for(st.hold.max_duration_s, dt);
   AdaptiveServo servo = stage_servo(scene, st);
   CellTargets targets;
   double stress_error = 0, unbalanced = 1;
-  for (std::int64_t i = 0;; ++i) {
+  if (resume) servo.restore(resume->servo), stress_error = resume->stress_error, unbalanced = resume->unbalanced;
+  for (std::int64_t i = resume ? resume->i : 0;; ++i) {
+    if (i > 0 && checkpoint_due(hooks, sim)) {
+      StageCursor here = cursor_at(index, i);
+      here.from_Pa = from, here.stress_error = stress_error, here.unbalanced = unbalanced, here.servo = servo.state();
+      hooks.checkpoint(sim, here);
+    }
     const double t = static_cast<double>(i) * dt;
     for (int k = 0; k < 3; ++k) {
       const double sign = st.target_Pa[k] >= from[k] ? 1.0 : -1.0;
@@ -164,7 +181,8 @@ void run_stress_stage(Simulation& sim, const SceneConfig& scene, int index, cons
 // the targets linearly so that the principal stress changing most moves at the stage rate; the
 // servo gets the leg's stress rates as feed-forward. Records each leg's tracking error and
 // largest inertial number.
-void run_stress_path_stage(Simulation& sim, const SceneConfig& scene, int index, const StageHooks& hooks) {
+void run_stress_path_stage(Simulation& sim, const SceneConfig& scene, int index, const StageHooks& hooks,
+                           const StageCursor* resume) {
   const StageConfig& st = scene.stages[static_cast<std::size_t>(index)];
   const double dt = sim.time_step();
   const double p = st.mean_stress_Pa;
@@ -173,14 +191,24 @@ void run_stress_path_stage(Simulation& sim, const SceneConfig& scene, int index,
   const double inertia_scale = mean_diameter(sim.particles()) * std::sqrt(sim.material().density_kg_per_m3);
   std::int64_t total_steps = 0, done_steps = 0;
   for (const PathLeg& leg : legs) total_steps += std::max<std::int64_t>(1, steps_for(leg.duration_s, dt));
-  Vec3 strain_at_leg_start = sim.cell().strain();
+  Vec3 strain_at_leg_start = resume ? resume->strain_at_leg_start : sim.cell().strain();
+  if (resume) servo.restore(resume->servo), done_steps = resume->done_steps;
   CellTargets targets;
-  for (const PathLeg& leg : legs) {
+  for (std::size_t leg_index = resume ? static_cast<std::size_t>(resume->leg) : 0; leg_index < legs.size(); ++leg_index) {
+    const PathLeg& leg = legs[leg_index];
     const std::int64_t n = std::max<std::int64_t>(1, steps_for(leg.duration_s, dt));
     const Vec3 rate = (leg.to_Pa - leg.from_Pa) / (static_cast<double>(n) * dt);
-    LegRecord rec{index, leg.index, leg.cycle, leg.ends_cycle, leg.to_Pa, static_cast<double>(n) * dt, n, 0, Vec3::Zero(), 0};
-    Vec3 sum_sq = Vec3::Zero();
-    for (std::int64_t i = 0; i < n; ++i) {
+    const bool resumed_leg = resume && leg_index == static_cast<std::size_t>(resume->leg);
+    LegRecord rec{index, leg.index, leg.cycle, leg.ends_cycle, leg.to_Pa, static_cast<double>(n) * dt, n, 0, Vec3::Zero(),
+                  resumed_leg ? resume->max_inertial_number : 0.0};
+    Vec3 sum_sq = resumed_leg ? resume->sum_sq : Vec3::Zero();
+    for (std::int64_t i = resumed_leg ? resume->i : 0; i < n; ++i) {
+      if (i > 0 && checkpoint_due(hooks, sim)) {
+        StageCursor here = cursor_at(index, i);
+        here.servo = servo.state(), here.leg = static_cast<int>(leg_index), here.done_steps = done_steps;
+        here.sum_sq = sum_sq, here.max_inertial_number = rec.max_inertial_number, here.strain_at_leg_start = strain_at_leg_start;
+        hooks.checkpoint(sim, here);
+      }
       const Vec3 target = leg.from_Pa + (leg.to_Pa - leg.from_Pa) * (static_cast<double>(i) / static_cast<double>(n));
       for (int k = 0; k < 3; ++k)
         targets[static_cast<std::size_t>(k)] = {AxisTarget::Mode::Stress, 0, target[k], rate[k]};
@@ -242,26 +270,68 @@ std::vector<double> leg_row(const LegRecord& r) {
           static_cast<double>(r.end_step), r.rms_error[0], r.rms_error[1], r.rms_error[2], r.max_inertial_number};
 }
 
-void run_stage(Simulation& sim, const SceneConfig& scene, int index, const StageHooks& hooks) {
+void run_stage(Simulation& sim, const SceneConfig& scene, int index, const StageHooks& hooks, const StageCursor* resume) {
   const StageConfig& st = scene.stages[static_cast<std::size_t>(index)];
-  if (st.reset_strain) sim.cell().set_reference_lengths(sim.cell().lengths());
-  if (hooks.row) hooks.row(sim, {index});  // every stage starts and ends with a row
+  if (!resume) {  // a resumed stage has had its start
+    if (st.reset_strain) sim.cell().set_reference_lengths(sim.cell().lengths());
+    if (hooks.row) hooks.row(sim, {index});  // every stage starts and ends with a row
+  }
   switch (st.type) {
-    case StageConfig::Type::StrainRate: run_strain_rate_stage(sim, scene, index, hooks); break;
-    case StageConfig::Type::Stress: run_stress_stage(sim, scene, index, hooks); break;
-    case StageConfig::Type::StressPath: run_stress_path_stage(sim, scene, index, hooks); return;  // rows at every leg end
+    case StageConfig::Type::StrainRate: run_strain_rate_stage(sim, scene, index, hooks, resume); break;
+    case StageConfig::Type::Stress: run_stress_stage(sim, scene, index, hooks, resume); break;
+    case StageConfig::Type::StressPath: run_stress_path_stage(sim, scene, index, hooks, resume); return;  // rows at every leg end
   }
   if (hooks.row && !output_due(sim, scene)) hooks.row(sim, {index});  // the stage end is always recorded
 }
 
+namespace {
+
+// The checkpoint this run continues from, if any (see Resume).
+std::optional<Checkpoint> checkpoint_to_resume(const SceneConfig& scene, const std::string& out_path,
+                                               const std::string& identity, Resume resume) {
+  const std::string path = checkpoint_path(out_path);
+  if (resume == Resume::Never) return std::nullopt;
+  if (!std::filesystem::exists(path)) {
+    if (resume == Resume::Always) throw ConfigError(path + ": no checkpoint to resume from");
+    return std::nullopt;
+  }
+  try {
+    Checkpoint c = read_checkpoint(path);
+    if (c.identity != identity)
+      throw h5::Error(path + ": written by a run of other inputs (identity " + c.identity + ", this run " + identity +
+                      "): the scene, its particle file or the engine changed");
+    if (c.cursor.stage >= static_cast<int>(scene.stages.size()))
+      throw h5::Error(path + ": stage " + std::to_string(c.cursor.stage) + " does not exist in the scene");
+    return c;
+  } catch (const h5::Error& e) {
+    if (resume == Resume::Always) throw ConfigError(std::string("cannot resume: ") + e.what());
+    std::fprintf(stderr, "warning: not resuming: %s; starting from the beginning\n", e.what());
+    return std::nullopt;
+  }
+}
+
+}  // namespace
+
 RunSummary run_scene(const SceneConfig& scene, const std::string& out_path, bool show_progress,
-                     const std::string& input_hash) {
+                     const std::string& input_hash, Resume resume) {
   using clock = std::chrono::steady_clock;
-  const auto start = clock::now();
+  auto start = clock::now();
   Simulation sim = build_simulation(scene);  // all input checks happen before the output file exists
-  ResultWriter out(out_path, scene);
-  if (!input_hash.empty()) out.set_attribute("input_hash", input_hash);
-  out.append_frame(sim);  // particle frames: the start and the end of the run
+  const std::string identity = run_identity(scene, input_hash);
+  std::optional<Checkpoint> from = checkpoint_to_resume(scene, out_path, identity, resume);
+  std::unique_ptr<ResultWriter> writer;
+  if (from) {
+    writer = std::make_unique<ResultWriter>(out_path, scene, checkpoint_path(out_path));
+    sim = restore_simulation(scene, *from);
+    start -= std::chrono::duration_cast<clock::duration>(std::chrono::duration<double>(from->wall_time_s));
+    std::fprintf(stderr, "%s: resuming from %s at step %lld\n", scene.name.c_str(), checkpoint_path(out_path).c_str(),
+                 static_cast<long long>(sim.step_count()));
+  } else {
+    writer = std::make_unique<ResultWriter>(out_path, scene);
+    if (!input_hash.empty()) writer->set_attribute("input_hash", input_hash);
+    writer->append_frame(sim);  // particle frames: the start, each checkpoint and the end of the run
+  }
+  ResultWriter& out = *writer;
   auto last_print = start;
   int stage_seen = -1;          // for the ETA: the stage being timed and when it started
   double stage_start_wall = 0;  // [s since the run started]
@@ -281,6 +351,25 @@ RunSummary run_scene(const SceneConfig& scene, const std::string& out_path, bool
     }
   };
   hooks.leg = [&](const LegRecord& r) { out.append_leg(leg_row(r)); };
+  // Checkpoints by steps and by wall time (the clock is read every 256 steps); never twice at
+  // one step, so a resumed run does not write again the checkpoint it started from.
+  std::int64_t last_checkpoint_step = sim.step_count();
+  auto last_checkpoint_wall = clock::now();
+  hooks.checkpoint_due = [&](const Simulation& s) {
+    const std::int64_t step = s.step_count();
+    if (step == last_checkpoint_step) return false;
+    if (scene.output.checkpoint_interval_steps > 0 && step % scene.output.checkpoint_interval_steps == 0) return true;
+    return scene.output.checkpoint_wall_time_s > 0 && step % 256 == 0 &&
+           std::chrono::duration<double>(clock::now() - last_checkpoint_wall).count() >= scene.output.checkpoint_wall_time_s;
+  };
+  hooks.checkpoint = [&](const Simulation& s, const StageCursor& where) {
+    out.append_frame(s);
+    out.flush();
+    write_checkpoint(out.partial_path(), out_path, identity, std::chrono::duration<double>(clock::now() - start).count(), s,
+                     where);
+    last_checkpoint_step = s.step_count();
+    last_checkpoint_wall = clock::now();
+  };
   hooks.warning = [&](const std::string& w) {
     if (show_progress) std::fprintf(stderr, "\n");
     std::fprintf(stderr, "warning: %s\n", w.c_str());
@@ -305,11 +394,14 @@ RunSummary run_scene(const SceneConfig& scene, const std::string& out_path, bool
       std::fflush(stderr);
     };
   try {
-    for (int i = 0; i < static_cast<int>(scene.stages.size()); ++i) run_stage(sim, scene, i, hooks);
+    const int first = from ? from->cursor.stage : 0;
+    for (int i = first; i < static_cast<int>(scene.stages.size()); ++i)
+      run_stage(sim, scene, i, hooks, from && i == first ? &from->cursor : nullptr);
     out.append_frame(sim);
     out.write_state(sim);
     const double wall = std::chrono::duration<double>(clock::now() - start).count();
     out.complete(wall);
+    std::filesystem::remove(checkpoint_path(out_path));  // the result supersedes it
     if (show_progress) std::fprintf(stderr, "\r\033[K");
     return {sim.step_count(), wall};
   } catch (const std::exception& e) {

@@ -32,11 +32,32 @@ struct LegRecord {
 const std::vector<SeriesColumn>& leg_columns();
 std::vector<double> leg_row(const LegRecord& r);
 
+// Where a run is inside a stage, with what the stage's loop carries from one step to the next:
+// enough to continue the stage from the middle, bit for bit (run/checkpoint.hpp saves it).
+struct StageCursor {
+  int stage = 0;
+  std::int64_t i = 0;  // the next iteration of the stage's loop (of the leg's loop on a stress path)
+  // stress stages
+  Vec3 from_Pa = Vec3::Zero();  // each axis' stress at the stage start, where its ramp begins
+  double stress_error = 0, unbalanced = 1;
+  AdaptiveServo::State servo;  // stress stages and paths
+  // stress paths
+  int leg = 0;
+  std::int64_t done_steps = 0;
+  Vec3 sum_sq = Vec3::Zero();  // of the leg so far
+  double max_inertial_number = 0;
+  Vec3 strain_at_leg_start = Vec3::Zero();
+};
+
 struct StageHooks {
   std::function<void(const Simulation&, const RowContext&)> row;          // at output steps and stage/leg ends
   std::function<void(const Simulation&, const StageProgress&)> progress;  // every few hundred steps
   std::function<void(const LegRecord&)> leg;                              // at each leg end of a stress path
   std::function<void(const std::string&)> warning;                        // e.g. inertial number above 1e-3
+  // Asked between two steps of a stage (never at its first step): if checkpoint_due says yes,
+  // checkpoint gets where the stage is. The next thing the stage does is a step.
+  std::function<bool(const Simulation&)> checkpoint_due;
+  std::function<void(const Simulation&, const StageCursor&)> checkpoint;
 };
 
 // Thrown when a stage cannot reach its goal (e.g. equilibrium not reached in max_duration).
@@ -55,17 +76,29 @@ struct HoldStatus {
 };
 HoldStatus hold_status(const Simulation& sim, const StageConfig& stage);
 
-// Runs stage `index` of the scene to its end.
-void run_stage(Simulation& sim, const SceneConfig& scene, int index, const StageHooks& hooks);
+// Runs stage `index` of the scene to its end; with `resume`, from the middle where a checkpoint
+// left it (sim restored from the same checkpoint).
+void run_stage(Simulation& sim, const SceneConfig& scene, int index, const StageHooks& hooks,
+               const StageCursor* resume = nullptr);
 
 struct RunSummary {
   std::int64_t steps = 0;
   double wall_time_s = 0;
 };
 
-// Runs a whole scene and writes the result file (see io/result_writer.hpp for the guarantees).
-// `input_hash` (if not empty) is recorded in the result's `input_hash` attribute.
+// What run_scene does with a checkpoint left at <out>.checkpoint by an earlier, killed run of
+// the same scene (run/checkpoint.hpp).
+enum class Resume {
+  IfValid,  // resume from it if it is whole and has this run's identity; otherwise say why and start over
+  Always,   // resume from it; no checkpoint, a damaged one or one of other inputs is an error (ConfigError)
+  Never,    // start over (the checkpoint is replaced by this run's first one)
+};
+
+// Runs a whole scene and writes the result file (see io/result_writer.hpp for the guarantees),
+// with checkpoints as output.checkpoint_* ask. `input_hash` (if not empty) is recorded in the
+// result's `input_hash` attribute and is part of the checkpoint identity. Messages about the
+// checkpoint go to stderr. On success the checkpoint is removed.
 RunSummary run_scene(const SceneConfig& scene, const std::string& out_path, bool show_progress,
-                     const std::string& input_hash = "");
+                     const std::string& input_hash = "", Resume resume = Resume::IfValid);
 
 }  // namespace dem

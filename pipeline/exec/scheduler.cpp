@@ -1,7 +1,9 @@
 #include "exec/scheduler.hpp"
 
 #include <fcntl.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
+#include <csignal>
 #include <unistd.h>
 
 #include <algorithm>
@@ -93,9 +95,14 @@ std::string stop_message(const PlannedRun& r) {
 }
 
 pid_t spawn(const std::string& dem, const PlannedRun& r, int threads) {
+  const pid_t parent = getpid();
   const pid_t pid = fork();
   if (pid < 0) throw std::runtime_error("fork failed");
   if (pid == 0) {  // child: output to the run's log, then exec dem
+    // A killed pipeline takes its runs with it: they resume from their checkpoints when the
+    // pipeline is started again, instead of racing a new pipeline for the same result.
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (getppid() != parent) _exit(127);  // the pipeline died before prctl
     const int fd = open(r.log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (fd >= 0) {
       dup2(fd, STDOUT_FILENO);

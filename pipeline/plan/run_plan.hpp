@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "config/study_config.hpp"
+#include "core/content_hash.hpp"
 
 namespace pipeline {
 
@@ -34,7 +35,6 @@ void write_scenes(const std::vector<PlannedRun>& runs);
 // settings (what build/bin/compare-runs reads).
 void write_manifest(const std::vector<PlannedRun>& runs, const Study& study, const std::string& out_dir);
 
-// FNV-1a, 64 bit, as 16 hex digits: stable across platforms and compilers.
-std::string content_hash(const std::string& text);
+using dem::content_hash;  // core/content_hash.hpp
 
 }  // namespace pipeline

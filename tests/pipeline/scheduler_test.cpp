@@ -16,7 +16,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::string dem = std::string(DEM_BINARY_DIR) + "/bin/dem";
+const std::string dem_binary = std::string(DEM_BINARY_DIR) + "/bin/dem";
 
 // 27 spheres, 200 steps per run: the study takes well under a second.
 void write_study(const fs::path& dir, const std::string& test_duration) {
@@ -31,7 +31,7 @@ pipeline::Outcome run(const fs::path& dir) {
   const pipeline::Study study = pipeline::load_study((dir / "study.yaml").string());
   const auto runs = pipeline::plan_study(study, study.profile("quick"), (dir / "out").string(), "test-engine");
   pipeline::write_scenes(runs);
-  return pipeline::execute(runs, dem, 2);
+  return pipeline::execute(runs, dem_binary, 2);
 }
 
 }  // namespace
@@ -70,7 +70,7 @@ TEST_CASE("pipeline: a failed run is reported and blocks only the runs that need
       r.scene_text.replace(pos, 17, "time_step: 1.0e-4");
     }
   pipeline::write_scenes(runs);
-  const pipeline::Outcome o = pipeline::execute(runs, dem, 2);
+  const pipeline::Outcome o = pipeline::execute(runs, dem_binary, 2);
   CHECK(o.failed == 1);   // dense_prepare
   CHECK(o.blocked == 1);  // dense_test1 needs it
   CHECK(o.ran == 2);      // the loose runs are independent and finish
@@ -86,7 +86,7 @@ TEST_CASE("pipeline: every preparation runs before any test (longest chain first
   const pipeline::Study study = pipeline::load_study((dir / "study.yaml").string());
   const auto runs = pipeline::plan_study(study, study.profile("quick"), (dir / "out").string(), "test-engine");
   pipeline::write_scenes(runs);
-  REQUIRE(pipeline::execute(runs, dem, 1).ran == 4);  // one at a time: the order is the start order
+  REQUIRE(pipeline::execute(runs, dem_binary, 1).ran == 4);  // one at a time: the order is the start order
   // Listed order is loose_prepare, loose_test1, dense_prepare, dense_test1; the dense sample must
   // be finished before the first test (a result is renamed into place when it is complete).
   const auto finished = [&](const std::string& name) { return fs::last_write_time(dir / "out" / (name + ".h5")); };

@@ -1,0 +1,227 @@
+#include "run/checkpoint.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "core/content_hash.hpp"
+#include "source_hash.hpp"
+#include "version.hpp"
+
+namespace dem {
+
+namespace {
+
+void write_vec3(hid_t g, const std::string& name, const Vec3& v, const std::string& units) {
+  h5::write(g, name, std::vector<double>{v[0], v[1], v[2]}, 1, units);
+}
+
+Vec3 read_one_vec3(hid_t g, const std::string& file, const std::string& name) {
+  std::size_t cols = 0;
+  const std::vector<double> d = h5::read<double>(g, name, cols);
+  if (d.size() != 3 || !std::isfinite(d[0]) || !std::isfinite(d[1]) || !std::isfinite(d[2]))
+    throw h5::Error(file + ": /checkpoint: " + name + " must be 3 finite values");
+  return {d[0], d[1], d[2]};
+}
+
+double finite_attribute(hid_t g, const std::string& file, const std::string& name) {
+  const double v = h5::get_double_attribute(g, name);
+  if (!std::isfinite(v)) throw h5::Error(file + ": /checkpoint: attribute " + name + " is not finite");
+  return v;
+}
+
+std::int64_t int_attribute(hid_t g, const std::string& file, const std::string& name, std::int64_t min, std::int64_t max) {
+  const std::int64_t v = h5::get_int_attribute(g, name);
+  if (v < min || v > max)
+    throw h5::Error(file + ": /checkpoint: attribute " + name + " = " + std::to_string(v) + " is outside [" +
+                    std::to_string(min) + ", " + std::to_string(max) + "]");
+  return v;
+}
+
+void write_list(hid_t g, const VerletList::Saved& list) {
+  h5::write(g, "verlet_first", list.pairs.first, 1, "1");
+  h5::write(g, "verlet_second", list.pairs.second, 1, "1");
+  if (!list.pairs.spring.empty()) {
+    h5::write(g, "verlet_tangential_spring", flatten(list.pairs.spring), 3, "m");
+    h5::write(g, "verlet_sliding", list.pairs.sliding, 1, "1");
+  }
+  h5::write(g, "verlet_position_fractional_at_build", flatten(list.s_at_build), 3, "1");
+  write_vec3(g, "verlet_cell_lengths_at_build", list.lengths_at_build, "m");
+  h5::set_attribute(g, "verlet_builds", static_cast<std::int64_t>(list.builds));
+  h5::set_attribute(g, "verlet_built", static_cast<std::int64_t>(list.built));
+}
+
+VerletList::Saved read_list(hid_t g, const std::string& file, std::size_t n) {
+  VerletList::Saved list;
+  std::size_t cols = 0;
+  list.pairs.first = h5::read<std::uint32_t>(g, "verlet_first", cols);
+  list.pairs.second = h5::read<std::uint32_t>(g, "verlet_second", cols);
+  if (h5::exists(g, "verlet_tangential_spring")) {
+    list.pairs.spring = read_vec3(g, file, "verlet_tangential_spring");
+    list.pairs.sliding = h5::read<std::uint8_t>(g, "verlet_sliding", cols);
+  }
+  const std::size_t np = list.pairs.first.size();
+  if (list.pairs.second.size() != np ||
+      (h5::exists(g, "verlet_tangential_spring") && (list.pairs.spring.size() != np || list.pairs.sliding.size() != np)))
+    throw h5::Error(file + ": /checkpoint/state: verlet datasets have different lengths");
+  for (std::size_t k = 0; k < np; ++k) {
+    const auto key = std::make_pair(list.pairs.first[k], list.pairs.second[k]);
+    if (key.first >= key.second || key.second >= n ||
+        (k > 0 && std::make_pair(list.pairs.first[k - 1], list.pairs.second[k - 1]) >= key) ||
+        (!list.pairs.spring.empty() && (!list.pairs.spring[k].allFinite() || list.pairs.sliding[k] > 1)))
+      throw h5::Error(file + ": /checkpoint/state: Verlet pair " + std::to_string(k) + " is invalid");
+  }
+  list.s_at_build = read_vec3(g, file, "verlet_position_fractional_at_build");
+  list.lengths_at_build = read_one_vec3(g, file, "verlet_cell_lengths_at_build");
+  list.builds = static_cast<std::size_t>(int_attribute(g, file, "verlet_builds", 0, INT64_MAX));
+  list.built = int_attribute(g, file, "verlet_built", 0, 1) == 1;
+  if (list.built && list.s_at_build.size() != n)
+    throw h5::Error(file + ": /checkpoint/state: verlet_position_fractional_at_build has " +
+                    std::to_string(list.s_at_build.size()) + " rows for " + std::to_string(n) + " particles");
+  for (const Vec3& s : list.s_at_build)
+    if (!s.allFinite()) throw h5::Error(file + ": /checkpoint/state: a non-finite position at the last list build");
+  return list;
+}
+
+// The energy balance: one attribute per accumulated quantity.
+void write_energy(hid_t g, const EnergyBalance& e) {
+  h5::set_attribute(g, "energy_work_by_cell", e.work_by_cell);
+  h5::set_attribute(g, "energy_dissipated_damping", e.dissipated_damping);
+  h5::set_attribute(g, "energy_dissipated_friction", e.dissipated_friction);
+  h5::set_attribute(g, "energy_kinetic", e.kinetic);
+  h5::set_attribute(g, "energy_elastic", e.elastic);
+  h5::set_attribute(g, "energy_stored_at_start", e.stored_at_start);
+  h5::set_attribute(g, "energy_started", static_cast<std::int64_t>(e.started));
+  write_vec3(g, "energy_virial", e.virial, "J");
+}
+
+EnergyBalance read_energy(hid_t g, const std::string& file) {
+  EnergyBalance e;
+  e.work_by_cell = finite_attribute(g, file, "energy_work_by_cell");
+  e.dissipated_damping = finite_attribute(g, file, "energy_dissipated_damping");
+  e.dissipated_friction = finite_attribute(g, file, "energy_dissipated_friction");
+  e.kinetic = finite_attribute(g, file, "energy_kinetic");
+  e.elastic = finite_attribute(g, file, "energy_elastic");
+  e.stored_at_start = finite_attribute(g, file, "energy_stored_at_start");
+  e.started = int_attribute(g, file, "energy_started", 0, 1) == 1;
+  e.virial = read_one_vec3(g, file, "energy_virial");
+  return e;
+}
+
+void write_cursor(hid_t g, const StageCursor& c) {
+  h5::set_attribute(g, "stage", static_cast<std::int64_t>(c.stage));
+  h5::set_attribute(g, "iteration", c.i);
+  h5::set_attribute(g, "leg", static_cast<std::int64_t>(c.leg));
+  h5::set_attribute(g, "done_steps", c.done_steps);
+  h5::set_attribute(g, "stress_error", c.stress_error);
+  h5::set_attribute(g, "unbalanced", c.unbalanced);
+  h5::set_attribute(g, "max_inertial_number", c.max_inertial_number);
+  h5::set_attribute(g, "servo_steps", static_cast<std::int64_t>(c.servo.steps));
+  write_vec3(g, "from", c.from_Pa, "Pa");
+  write_vec3(g, "sum_sq", c.sum_sq, "Pa^2");
+  write_vec3(g, "strain_at_leg_start", c.strain_at_leg_start, "1");
+  write_vec3(g, "servo_kappa", c.servo.kappa, "1");
+  write_vec3(g, "servo_predicted", c.servo.predicted, "Pa");
+  write_vec3(g, "servo_window_start", c.servo.window_start, "Pa");
+}
+
+StageCursor read_cursor(hid_t g, const std::string& file) {
+  StageCursor c;
+  c.stage = static_cast<int>(int_attribute(g, file, "stage", 0, 1 << 30));
+  c.i = int_attribute(g, file, "iteration", 1, INT64_MAX);
+  c.leg = static_cast<int>(int_attribute(g, file, "leg", 0, 1 << 30));
+  c.done_steps = int_attribute(g, file, "done_steps", 0, INT64_MAX);
+  c.stress_error = finite_attribute(g, file, "stress_error");
+  c.unbalanced = finite_attribute(g, file, "unbalanced");
+  c.max_inertial_number = finite_attribute(g, file, "max_inertial_number");
+  c.servo.steps = static_cast<int>(int_attribute(g, file, "servo_steps", -1, 1 << 30));
+  c.from_Pa = read_one_vec3(g, file, "from");
+  c.sum_sq = read_one_vec3(g, file, "sum_sq");
+  c.strain_at_leg_start = read_one_vec3(g, file, "strain_at_leg_start");
+  c.servo.kappa = read_one_vec3(g, file, "servo_kappa");
+  c.servo.predicted = read_one_vec3(g, file, "servo_predicted");
+  c.servo.window_start = read_one_vec3(g, file, "servo_window_start");
+  return c;
+}
+
+void sync_to_disk(const std::string& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY);
+  if (fd < 0) throw h5::Error(path + ": cannot open to flush it to disk");
+  const int rc = ::fsync(fd);
+  ::close(fd);
+  if (rc != 0) throw h5::Error(path + ": flushing to disk failed");
+}
+
+}  // namespace
+
+std::string checkpoint_path(const std::string& out_path) { return out_path + ".checkpoint"; }
+
+std::string run_identity(const SceneConfig& scene, const std::string& input_hash) {
+  std::ostringstream text;
+  text << engine_source_hash << " schema " << schema_version << "\n" << input_hash << "\n" << scene.resolved_yaml;
+  if (scene.particles.kind != ParticleSource::Kind::Lattice) {
+    std::ifstream in(scene.particles.path, std::ios::binary);
+    text << "\n" << in.rdbuf();
+  }
+  return content_hash(text.str());
+}
+
+void write_checkpoint(const std::string& partial_path, const std::string& out_path, const std::string& identity,
+                      double wall_time_s, const Simulation& sim, const StageCursor& cursor) {
+  const std::string final_path = checkpoint_path(out_path), tmp = final_path + ".tmp";
+  std::filesystem::copy_file(partial_path, tmp, std::filesystem::copy_options::overwrite_existing);
+  {
+    h5::Handle f = h5::open_file_write(tmp);
+    h5::Handle g = h5::create_group(f, "checkpoint");
+    h5::set_attribute(g, "identity", identity);
+    h5::set_attribute(g, "step", static_cast<std::int64_t>(sim.step_count()));
+    h5::set_attribute(g, "time", sim.time());
+    h5::set_attribute(g, "wall_time_s", wall_time_s);
+    h5::Handle state = h5::create_group(g, "state");
+    write_state(state, sim);
+    write_list(state, sim.verlet_list().saved());
+    write_energy(state, sim.energy());
+    write_cursor(h5::create_group(g, "cursor"), cursor);
+  }
+  sync_to_disk(tmp);
+  std::filesystem::rename(tmp, final_path);
+}
+
+Checkpoint read_checkpoint(const std::string& file) {
+  try {
+    h5::Handle f = h5::open_file_read(file);
+    if (!h5::exists(f, "checkpoint")) throw h5::Error(file + ": not a checkpoint (no /checkpoint group)");
+    h5::Handle g = h5::open_group(f, "checkpoint");
+    Checkpoint c;
+    c.identity = h5::get_string_attribute(g, "identity");
+    c.wall_time_s = finite_attribute(g, file, "wall_time_s");
+    h5::Handle state = h5::open_group(g, "state");
+    c.state = read_state(state, file);
+    c.list = read_list(state, file, c.state.particles.size());
+    c.energy = read_energy(state, file);
+    c.cursor = read_cursor(h5::open_group(g, "cursor"), file);
+    return c;
+  } catch (const h5::Error& e) {  // every message names the file
+    const std::string what = e.what();
+    if (what.rfind(file, 0) == 0) throw;
+    throw h5::Error(file + ": " + what);
+  }
+}
+
+Simulation restore_simulation(const SceneConfig& scene, Checkpoint& c) {
+  if (c.cursor.stage >= static_cast<int>(scene.stages.size()))
+    throw h5::Error("checkpoint: stage " + std::to_string(c.cursor.stage) + " does not exist in the scene");
+  if (c.state.time_step_s != scene.time_step_s)
+    throw h5::Error("checkpoint: written with time step " + std::to_string(c.state.time_step_s) + " s, the scene has " +
+                    std::to_string(scene.time_step_s) + " s");
+  Simulation sim(std::move(c.state.particles), c.state.cell, scene.material, scene.damping, scene.time_step_s,
+                 scene.verlet_skin_m);
+  sim.restore_checkpoint(c.state.step, c.state.strain_rate_per_s, std::move(c.list), c.energy);
+  return sim;
+}
+
+}  // namespace dem

@@ -1,0 +1,51 @@
+#pragma once
+// Checkpoints: a run's whole state at a moment between two steps, so that a killed run resumes
+// and ends with exactly the result of an uninterrupted one (SPEC: everything needed to continue
+// bit for bit).
+//
+// The checkpoint of RESULT.h5 is RESULT.h5.checkpoint: a copy of RESULT.h5.partial at that moment
+// (time series, legs, particle frames and warnings so far, all flushed) plus one group:
+//
+//   /checkpoint             attributes identity, step, time, wall_time_s (of the run so far)
+//     state/                particles, cell and strain rate as in a result's /state, plus the
+//                           whole Verlet list (verlet_*) and the energy balance (energy_*)
+//     cursor/               where the stage loop is (run/run_scene.hpp, StageCursor)
+//
+// It is written to RESULT.h5.checkpoint.tmp, flushed to disk (fsync) and renamed over the
+// previous one, so RESULT.h5.checkpoint is always one whole checkpoint. Resuming copies it back
+// to RESULT.h5.partial without /checkpoint and goes on: rows the killed run wrote after the
+// checkpoint are dropped and written again, with the same values.
+//
+// A checkpoint resumes only the run that wrote it: its identity hashes the engine source, the
+// resolved scene, the pipeline's input hash and the bytes of the particle source file.
+#include <string>
+
+#include "io/state_io.hpp"
+#include "run/run_scene.hpp"
+
+namespace dem {
+
+struct Checkpoint {
+  std::string identity;
+  double wall_time_s = 0;  // of the run up to the checkpoint, over all its lives
+  StageCursor cursor;
+  SavedState state;  // particles, cell, strain rate, step
+  VerletList::Saved list;
+  EnergyBalance energy;
+};
+
+std::string checkpoint_path(const std::string& out_path);  // out_path + ".checkpoint"
+std::string run_identity(const SceneConfig& scene, const std::string& input_hash);
+
+// Writes the checkpoint of `out_path` from its partial file (which the caller has flushed).
+void write_checkpoint(const std::string& partial_path, const std::string& out_path, const std::string& identity,
+                      double wall_time_s, const Simulation& sim, const StageCursor& cursor);
+
+// Reads and checks a checkpoint; throws h5::Error naming the file (truncated, not a checkpoint,
+// a value out of range).
+Checkpoint read_checkpoint(const std::string& file);
+
+// The simulation of a checkpoint of `scene`: its particles, cell, list and energy balance.
+Simulation restore_simulation(const SceneConfig& scene, Checkpoint& checkpoint);
+
+}  // namespace dem

@@ -1,0 +1,162 @@
+// Checkpoints and resuming (engine/run/checkpoint.hpp), through the `dem` command. The kill tests
+// (tests/kill/*.sh, in ctest) kill real runs at random moments; these cases pin down what happens
+// around them: a run that stops keeps its checkpoint, resuming from it repeats the rest of the run
+// exactly, and a checkpoint of other inputs or a damaged one is never resumed.
+#include <catch2/catch.hpp>
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <string>
+
+#include "engine/io/io_test_support.hpp"
+#include "analysis/time_series.hpp"
+#include "io/hdf5.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string dem_exe = std::string(DEM_BINARY_DIR) + "/bin/dem";
+
+dem::test::CommandResult dem_stderr(const std::string& args) {
+  return dem::test::run_command("'" + dem_exe + "' " + args + " 2>&1 >/dev/null");
+}
+
+// 27 spheres squeezed for 600 steps, then a stress stage that cannot reach equilibrium in 200
+// steps: the run stops (exit 1) after checkpoints at steps 100 ... 700, and keeps the last.
+std::string stopping_scene() {
+  return dem::test::tiny_scene(
+      "  - {name: squeeze, type: strain_rate, strain_rate: [2, 2, 2], duration: 6.0e-4}\n"
+      "  - {name: hold, type: stress, target: [1.0e5, 1.0e5, 1.0e5], rate: 1.0e9, hold: {max_duration: 2.0e-4}}\n",
+      "{kn: 1.0e6, ks: 1.0e6, friction: 0.5}", "output: {interval: 50, checkpoint_interval: 100}\n");
+}
+
+std::vector<double> column(const std::string& file, const std::string& name) {
+  dem::h5::Handle f = dem::h5::open_file_read(file);
+  std::size_t cols = 0;
+  return dem::h5::read<double>(f, "timeseries/" + name, cols);
+}
+
+std::int64_t checkpoint_step(const std::string& file) {
+  dem::h5::Handle f = dem::h5::open_file_read(file);
+  return dem::h5::get_int_attribute(dem::h5::open_group(f, "checkpoint"), "step");
+}
+
+}  // namespace
+
+TEST_CASE("a stopped run keeps its checkpoint, and resuming repeats the rest exactly", "[run][checkpoint]") {
+  const std::string dir = dem::test::scratch_dir("checkpoint_resume");
+  dem::test::write_text(dir + "/s.yaml", stopping_scene());
+  const std::string out = dir + "/r.h5";
+  REQUIRE(dem_stderr("run '" + dir + "/s.yaml' --out '" + out + "'").exit_code == 1);
+  REQUIRE(fs::exists(out + ".checkpoint"));
+  CHECK(checkpoint_step(out + ".checkpoint") == 700);  // the last between two steps before the stop at 800
+  fs::copy_file(out + ".partial", dir + "/first.h5");
+
+  const auto again = dem_stderr("run '" + dir + "/s.yaml' --out '" + out + "' --resume");
+  CHECK(again.exit_code == 1);
+  CHECK_THAT(again.out, Catch::Matchers::Contains("resuming from " + out + ".checkpoint at step 700"));
+  // Rows up to the checkpoint come from it, the rest are computed again: all equal, none twice.
+  for (const dem::SeriesColumn& c : dem::series_columns()) {
+    INFO(c.name);
+    CHECK(column(out + ".partial", c.name) == column(dir + "/first.h5", c.name));
+  }
+  CHECK(column(out + ".partial", "step").size() == 13 + 5);  // squeeze: steps 0, 50 ... 600; hold: 600, 650 ... 800
+}
+
+TEST_CASE("a checkpoint of other inputs or a damaged one is not resumed", "[run][checkpoint][input]") {
+  const std::string dir = dem::test::scratch_dir("checkpoint_refused");
+  dem::test::write_text(dir + "/s.yaml", stopping_scene());
+  const std::string out = dir + "/r.h5", run = "run '" + dir + "/s.yaml' --out '" + out + "'";
+  REQUIRE(dem_stderr(run).exit_code == 1);
+  const std::string good = dir + "/good.checkpoint";
+  fs::copy_file(out + ".checkpoint", good);
+
+  SECTION("--resume without a checkpoint is bad input") {
+    fs::remove(out + ".checkpoint");
+    const auto r = dem_stderr(run + " --resume");
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.out, Catch::Matchers::Contains(out + ".checkpoint: no checkpoint to resume from"));
+  }
+  SECTION("other inputs: by default a warning and a fresh start; --resume refuses") {
+    const std::string other = run + " --set material.kn=1.1e6";
+    const auto refused = dem_stderr(other + " --resume");
+    CHECK(refused.exit_code == 2);
+    CHECK_THAT(refused.out, Catch::Matchers::Contains("cannot resume: " + out + ".checkpoint: written by a run of other inputs"));
+    const auto fresh = dem_stderr(other);
+    CHECK(fresh.exit_code == 1);  // the same stop, from the beginning
+    CHECK_THAT(fresh.out, Catch::Matchers::Contains("warning: not resuming: " + out + ".checkpoint: written by a run of other inputs"));
+    CHECK_THAT(fresh.out, !Catch::Matchers::Contains("resuming from"));
+  }
+  SECTION("a truncated checkpoint") {
+    fs::resize_file(out + ".checkpoint", fs::file_size(out + ".checkpoint") / 2);
+    const auto refused = dem_stderr(run + " --resume");
+    CHECK(refused.exit_code == 2);
+    CHECK_THAT(refused.out, Catch::Matchers::Contains("cannot resume: " + out + ".checkpoint"));
+    const auto fresh = dem_stderr(run);
+    CHECK(fresh.exit_code == 1);
+    CHECK_THAT(fresh.out, Catch::Matchers::Contains("warning: not resuming: " + out + ".checkpoint"));
+  }
+  SECTION("a result file is not a checkpoint") {
+    fs::copy_file(out + ".partial", out + ".checkpoint", fs::copy_options::overwrite_existing);
+    const auto refused = dem_stderr(run + " --resume");
+    CHECK(refused.exit_code == 2);
+    CHECK_THAT(refused.out, Catch::Matchers::Contains("not a checkpoint (no /checkpoint group)"));
+  }
+  SECTION("a checkpoint with a value out of range") {
+    {
+      dem::h5::Handle f = dem::h5::open_file_write(out + ".checkpoint");
+      dem::h5::Handle g = dem::h5::open_group(f, "checkpoint/state");
+      H5Adelete(g, "verlet_built");
+      dem::h5::set_attribute(g, "verlet_built", std::int64_t{7});
+    }
+    const auto refused = dem_stderr(run + " --resume");
+    CHECK(refused.exit_code == 2);
+    CHECK_THAT(refused.out, Catch::Matchers::Contains("attribute verlet_built = 7 is outside [0, 1]"));
+  }
+}
+
+TEST_CASE("a finished run removes its checkpoint; --no-resume starts over", "[run][checkpoint]") {
+  const std::string dir = dem::test::scratch_dir("checkpoint_done");
+  dem::test::write_text(dir + "/s.yaml",
+                        dem::test::tiny_scene("  - {name: squeeze, type: strain_rate, strain_rate: [2, 2, 2], duration: 6.0e-4}\n",
+                                              "{kn: 1.0e6, ks: 1.0e6, friction: 0.5}",
+                                              "output: {interval: 50, checkpoint_interval: 100}\n"));
+  const std::string out = dir + "/r.h5";
+  dem::test::write_text(out + ".checkpoint", "left by someone else\n");
+  const auto r = dem_stderr("run '" + dir + "/s.yaml' --out '" + out + "' --no-resume");
+  CHECK(r.exit_code == 0);
+  CHECK_THAT(r.out, !Catch::Matchers::Contains("resuming"));
+  CHECK(fs::exists(out));
+  CHECK_FALSE(fs::exists(out + ".checkpoint"));
+  CHECK_FALSE(fs::exists(out + ".lock"));
+}
+
+TEST_CASE("dem run refuses an --out that is a folder, in a missing folder, or being written by another run",
+          "[run][cli][input]") {
+  const std::string dir = dem::test::scratch_dir("checkpoint_out");
+  dem::test::write_text(dir + "/s.yaml", stopping_scene());
+  fs::create_directories(dir + "/folder.h5");
+  auto r = dem_stderr("run '" + dir + "/s.yaml' --out '" + dir + "/folder.h5'");
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.out, Catch::Matchers::Contains("--out " + dir + "/folder.h5 is a directory, not a file name; nothing was run"));
+  r = dem_stderr("run '" + dir + "/s.yaml' --out '" + dir + "/missing/r.h5'");
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.out, Catch::Matchers::Contains("is in a folder that does not exist"));
+  CHECK_FALSE(fs::exists(dir + "/missing"));
+
+  // Another writer holds the lock: nothing of its result is touched.
+  const std::string out = dir + "/r.h5";
+  dem::test::write_text(out + ".partial", "another run's partial result\n");
+  const int fd = open((out + ".lock").c_str(), O_RDWR | O_CREAT, 0644);
+  REQUIRE(fd >= 0);
+  REQUIRE(flock(fd, LOCK_EX | LOCK_NB) == 0);
+  r = dem_stderr("run '" + dir + "/s.yaml' --out '" + out + "'");
+  close(fd);
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.out, Catch::Matchers::Contains("another dem run is writing this result"));
+  CHECK(dem::test::read_bytes(out + ".partial") == "another run's partial result\n");
+}
