@@ -12,17 +12,55 @@ std::vector<double> flatten(const std::vector<Vec3>& v) {
   return out;
 }
 
+namespace {
+
+std::string path_of(hid_t group) {
+  char path[256] = "";
+  H5Iget_name(group, path, sizeof path);
+  return path;
+}
+
+}  // namespace
+
 std::vector<Vec3> read_vec3(hid_t group, const std::string& file, const std::string& name) {
   std::size_t cols = 0;
   const std::vector<double> d = h5::read<double>(group, name, cols);
-  if (cols != 3) {
-    char group_path[256] = "";
-    H5Iget_name(group, group_path, sizeof group_path);
-    throw h5::Error(file + ": " + group_path + "/" + name + " must have 3 columns, has " + std::to_string(cols));
-  }
+  if (cols != 3) throw h5::Error(file + ": " + path_of(group) + "/" + name + " must have 3 columns, has " + std::to_string(cols));
   std::vector<Vec3> out(d.size() / 3);
   for (std::size_t i = 0; i < out.size(); ++i) out[i] = Vec3(d[3 * i], d[3 * i + 1], d[3 * i + 2]);
   return out;
+}
+
+void write_pairs(hid_t group, const std::string& prefix, const PairList& pairs, bool with_history) {
+  h5::write(group, prefix + "_first", pairs.first, 1, "1");
+  h5::write(group, prefix + "_second", pairs.second, 1, "1");
+  if (with_history) {
+    h5::write(group, prefix + "_tangential_spring", flatten(pairs.spring), 3, "m");
+    h5::write(group, prefix + "_sliding", pairs.sliding, 1, "1");
+  }
+}
+
+PairList read_pairs(hid_t group, const std::string& file, const std::string& prefix, std::size_t particles) {
+  PairList pairs;
+  std::size_t cols = 0;
+  pairs.first = h5::read<std::uint32_t>(group, prefix + "_first", cols);
+  pairs.second = h5::read<std::uint32_t>(group, prefix + "_second", cols);
+  const bool history = h5::exists(group, prefix + "_tangential_spring");
+  if (history) {
+    pairs.spring = read_vec3(group, file, prefix + "_tangential_spring");
+    pairs.sliding = h5::read<std::uint8_t>(group, prefix + "_sliding", cols);
+  }
+  const std::size_t n = pairs.first.size();
+  if (pairs.second.size() != n || (history && (pairs.spring.size() != n || pairs.sliding.size() != n)))
+    throw h5::Error(file + ": " + path_of(group) + " " + prefix + " datasets have different lengths");
+  for (std::size_t k = 0; k < n; ++k)
+    if (pairs.first[k] >= pairs.second[k] || pairs.second[k] >= particles ||
+        (k > 0 && std::make_pair(pairs.first[k - 1], pairs.second[k - 1]) >= std::make_pair(pairs.first[k], pairs.second[k])))
+      throw h5::Error(file + ": " + path_of(group) + " " + prefix + " " + std::to_string(k) + " names invalid particles");
+    else if (history && (!pairs.spring[k].allFinite() || pairs.sliding[k] > 1))
+      throw h5::Error(file + ": " + path_of(group) + " " + prefix + " " + std::to_string(k) +
+                      " has a non-finite spring or a sliding flag other than 0 or 1");
+  return pairs;
 }
 
 void write_state(hid_t group, const Simulation& sim) {
@@ -47,26 +85,19 @@ void write_state(hid_t group, const Simulation& sim) {
   // Contacts: the pairs whose spheres overlap, with their history.
   const PairList& pairs = sim.pairs();
   const bool frictional = sim.material().friction > 0;
-  std::vector<std::uint32_t> first, second;
-  std::vector<Vec3> spring;
-  std::vector<std::uint8_t> sliding;
+  PairList contacts;
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     const auto i = pairs.first[k], j = pairs.second[k];
     const double rsum = p.radius[i] + p.radius[j];
     if (cell.branch(p.s[i], p.s[j]).squaredNorm() >= rsum * rsum) continue;
-    first.push_back(i);
-    second.push_back(j);
+    contacts.first.push_back(i);
+    contacts.second.push_back(j);
     if (frictional) {
-      spring.push_back(pairs.spring[k]);
-      sliding.push_back(pairs.sliding[k]);
+      contacts.spring.push_back(pairs.spring[k]);
+      contacts.sliding.push_back(pairs.sliding[k]);
     }
   }
-  h5::write(group, "contact_first", first, 1, "1");
-  h5::write(group, "contact_second", second, 1, "1");
-  if (frictional) {
-    h5::write(group, "contact_tangential_spring", flatten(spring), 3, "m");
-    h5::write(group, "contact_sliding", sliding, 1, "1");
-  }
+  write_pairs(group, "contact", contacts, frictional);
   h5::set_attribute(group, "step", static_cast<std::int64_t>(sim.step_count()));
   h5::set_attribute(group, "time", sim.time());
   h5::set_attribute(group, "time_step", sim.time_step());
@@ -136,20 +167,7 @@ SavedState read_state_unchecked(hid_t g, const std::string& file) {
   st.cell = PeriodicCell(Vec3(L[0], L[1], L[2]));
   st.cell.set_reference_lengths(Vec3(L0[0], L0[1], L0[2]));
   st.strain_rate_per_s = Vec3(r[0], r[1], r[2]);
-  st.contacts.first = h5::read<std::uint32_t>(g, "contact_first", cols);
-  st.contacts.second = h5::read<std::uint32_t>(g, "contact_second", cols);
-  if (h5::exists(g, "contact_tangential_spring")) {
-    st.contacts.spring = read_vec3(g, file, "contact_tangential_spring");
-    st.contacts.sliding = h5::read<std::uint8_t>(g, "contact_sliding", cols);
-  }
-  const std::size_t nc = st.contacts.first.size();
-  if (st.contacts.second.size() != nc || (!st.contacts.spring.empty() && (st.contacts.spring.size() != nc || st.contacts.sliding.size() != nc)))
-    throw h5::Error(file + ": /state contact datasets have different lengths");
-  for (std::size_t k = 0; k < nc; ++k)
-    if (st.contacts.first[k] >= st.contacts.second[k] || st.contacts.second[k] >= n ||
-        (k > 0 && std::make_pair(st.contacts.first[k - 1], st.contacts.second[k - 1]) >=
-                      std::make_pair(st.contacts.first[k], st.contacts.second[k])))
-      throw h5::Error(file + ": /state contact " + std::to_string(k) + " names invalid particles");
+  st.contacts = read_pairs(g, file, "contact", n);
   st.step = h5::get_int_attribute(g, "step");
   st.time_step_s = h5::get_double_attribute(g, "time_step");
   return st;

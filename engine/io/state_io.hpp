@@ -21,6 +21,11 @@ struct SavedState {
 std::vector<double> flatten(const std::vector<Vec3>& v);
 std::vector<Vec3> read_vec3(hid_t group, const std::string& file, const std::string& name);
 
+// A pair list as <prefix>_first, <prefix>_second and, with history, <prefix>_tangential_spring and
+// <prefix>_sliding; reading checks the lengths, the order (i < j, sorted) and the values.
+void write_pairs(hid_t group, const std::string& prefix, const PairList& pairs, bool with_history);
+PairList read_pairs(hid_t group, const std::string& file, const std::string& prefix, std::size_t particles);
+
 void write_state(hid_t group, const Simulation& sim);
 // Reads the /state group of a *complete* result file; throws naming the file otherwise.
 SavedState read_state(const std::string& file);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "core/content_hash.hpp"
@@ -43,12 +44,7 @@ std::int64_t int_attribute(hid_t g, const std::string& file, const std::string& 
 }
 
 void write_list(hid_t g, const VerletList::Saved& list) {
-  h5::write(g, "verlet_first", list.pairs.first, 1, "1");
-  h5::write(g, "verlet_second", list.pairs.second, 1, "1");
-  if (!list.pairs.spring.empty()) {
-    h5::write(g, "verlet_tangential_spring", flatten(list.pairs.spring), 3, "m");
-    h5::write(g, "verlet_sliding", list.pairs.sliding, 1, "1");
-  }
+  write_pairs(g, "verlet", list.pairs, !list.pairs.spring.empty());
   h5::write(g, "verlet_position_fractional_at_build", flatten(list.s_at_build), 3, "1");
   write_vec3(g, "verlet_cell_lengths_at_build", list.lengths_at_build, "m");
   h5::set_attribute(g, "verlet_builds", static_cast<std::int64_t>(list.builds));
@@ -57,27 +53,10 @@ void write_list(hid_t g, const VerletList::Saved& list) {
 
 VerletList::Saved read_list(hid_t g, const std::string& file, std::size_t n) {
   VerletList::Saved list;
-  std::size_t cols = 0;
-  list.pairs.first = h5::read<std::uint32_t>(g, "verlet_first", cols);
-  list.pairs.second = h5::read<std::uint32_t>(g, "verlet_second", cols);
-  if (h5::exists(g, "verlet_tangential_spring")) {
-    list.pairs.spring = read_vec3(g, file, "verlet_tangential_spring");
-    list.pairs.sliding = h5::read<std::uint8_t>(g, "verlet_sliding", cols);
-  }
-  const std::size_t np = list.pairs.first.size();
-  if (list.pairs.second.size() != np ||
-      (h5::exists(g, "verlet_tangential_spring") && (list.pairs.spring.size() != np || list.pairs.sliding.size() != np)))
-    throw h5::Error(file + ": /checkpoint/state: verlet datasets have different lengths");
-  for (std::size_t k = 0; k < np; ++k) {
-    const auto key = std::make_pair(list.pairs.first[k], list.pairs.second[k]);
-    if (key.first >= key.second || key.second >= n ||
-        (k > 0 && std::make_pair(list.pairs.first[k - 1], list.pairs.second[k - 1]) >= key) ||
-        (!list.pairs.spring.empty() && (!list.pairs.spring[k].allFinite() || list.pairs.sliding[k] > 1)))
-      throw h5::Error(file + ": /checkpoint/state: Verlet pair " + std::to_string(k) + " is invalid");
-  }
+  list.pairs = read_pairs(g, file, "verlet", n);
   list.s_at_build = read_vec3(g, file, "verlet_position_fractional_at_build");
   list.lengths_at_build = read_one_vec3(g, file, "verlet_cell_lengths_at_build");
-  list.builds = static_cast<std::size_t>(int_attribute(g, file, "verlet_builds", 0, INT64_MAX));
+  list.builds = static_cast<std::size_t>(int_attribute(g, file, "verlet_builds", 0, std::numeric_limits<std::int64_t>::max()));
   list.built = int_attribute(g, file, "verlet_built", 0, 1) == 1;
   if (list.built && list.s_at_build.size() != n)
     throw h5::Error(file + ": /checkpoint/state: verlet_position_fractional_at_build has " +
@@ -132,9 +111,9 @@ void write_cursor(hid_t g, const StageCursor& c) {
 StageCursor read_cursor(hid_t g, const std::string& file) {
   StageCursor c;
   c.stage = static_cast<int>(int_attribute(g, file, "stage", 0, 1 << 30));
-  c.i = int_attribute(g, file, "iteration", 1, INT64_MAX);
+  c.i = int_attribute(g, file, "iteration", 1, std::numeric_limits<std::int64_t>::max());
   c.leg = static_cast<int>(int_attribute(g, file, "leg", 0, 1 << 30));
-  c.done_steps = int_attribute(g, file, "done_steps", 0, INT64_MAX);
+  c.done_steps = int_attribute(g, file, "done_steps", 0, std::numeric_limits<std::int64_t>::max());
   c.stress_error = finite_attribute(g, file, "stress_error");
   c.unbalanced = finite_attribute(g, file, "unbalanced");
   c.max_inertial_number = finite_attribute(g, file, "max_inertial_number");

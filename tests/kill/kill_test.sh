@@ -5,9 +5,9 @@
 #
 #   tests/kill/kill_test.sh DEM KILLS WORKDIR [SEED]
 #
-# Each life of the run is killed after a random 0.1 ... 0.8 s; the scene (tests/kill/scene.yaml)
-# checkpoints every 5,000 steps, so lives make progress and kills land in both kinds of stage
-# loop, in checkpoint writes and in the final rename. `make test` runs 3 kills, `make kill-test` 20.
+# The scene (tests/kill/scene.yaml) checkpoints every 5,000 steps; each life is killed at a random
+# moment after its first checkpoint, so kills land in both kinds of stage loop. `make test` runs
+# 3 kills, `make kill-test` 20.
 set -u
 dem=$1 kills=$2 work=$3 seed=${4:-1}
 scene=$(dirname "$0")/scene.yaml
@@ -16,28 +16,36 @@ rm -rf "$work" && mkdir -p "$work" || exit 1
 "$dem" run "$scene" --out "$work/reference.h5" --no-resume --quiet 2> "$work/reference.log" ||
   { echo "kill test: the uninterrupted run failed:"; cat "$work/reference.log"; exit 1; }
 
-done_kills=0 lives=0
+checkpoint_step() { h5dump -a /checkpoint/step "$work/killed.h5.checkpoint" 2> /dev/null | awk '/\(0\)/ {print $2}'; }
+done_kills=0 lives=0 last=0
 while [ "$done_kills" -lt "$kills" ]; do
   "$dem" run "$scene" --out "$work/killed.h5" --quiet 2>> "$work/killed.log" &
   pid=$!
   lives=$((lives + 1))
-  sleep "0.$((RANDOM % 8 + 1))"
+  # Each life is killed a random 0 ... 0.3 s after it has written a checkpoint of its own, so
+  # that every life makes progress however loaded the machine is, and the kill lands anywhere:
+  # in a step, a row, the next checkpoint's write or the final rename.
+  while kill -0 "$pid" 2> /dev/null && [ "$(checkpoint_step)" = "${last:-0}" ]; do sleep 0.02; done
+  sleep "0.$((RANDOM % 4))$((RANDOM % 10))"
   if kill -9 "$pid" 2> /dev/null; then
     wait "$pid" 2> /dev/null
     done_kills=$((done_kills + 1))
-    step=$(h5dump -a /checkpoint/step "$work/killed.h5.checkpoint" 2> /dev/null | awk '/\(0\)/ {print $2}')
-    echo "kill $done_kills: checkpoint at step ${step:-none}"
+    last=$(checkpoint_step)
+    echo "kill $done_kills: checkpoint at step ${last:-none}"
   else  # it finished before the kill: start again from nothing for the kills still to do
     wait "$pid"
     echo "life $lives finished before its kill; starting over"
     rm -f "$work"/killed.*
+    last=0
   fi
 done
 "$dem" run "$scene" --out "$work/killed.h5" --quiet 2>> "$work/killed.log" ||
   { echo "kill test: the last life failed:"; cat "$work/killed.log"; exit 1; }
-echo "$(grep -c resuming "$work/killed.log") resumes from a checkpoint in $lives lives plus the last"
+resumes=$(grep -c resuming "$work/killed.log")
+echo "$resumes resumes from a checkpoint in $lives lives plus the last"
 
 status=0
+[ "$resumes" -ge "$kills" ] || { echo "kill test: only $resumes resumes for $kills kills"; status=1; }
 for group in /timeseries /legs /state /particles; do
   if ! h5diff -r "$work/reference.h5" "$work/killed.h5" "$group" > "$work/diff${group//\//_}.txt" 2>&1; then
     echo "kill test: $group differs from the uninterrupted run:"; head -20 "$work/diff${group//\//_}.txt"; status=1

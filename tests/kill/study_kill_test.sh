@@ -14,10 +14,17 @@ rm -rf "$work" && mkdir -p "$work" || exit 1
 "$bin/pipeline" "$study" --profile quick --out "$work/reference" -j 2 --dem "$bin/dem" > "$work/reference.log" 2>&1 ||
   { echo "study kill test: the uninterrupted study failed:"; tail -20 "$work/reference.log"; exit 1; }
 
+mkdir -p "$work/killed"
 for k in $(seq "$kills"); do
+  touch "$work/life-start"
   "$bin/pipeline" "$study" --profile quick --out "$work/killed" -j 2 --dem "$bin/dem" >> "$work/killed.log" 2>&1 &
   pid=$!
-  sleep "$((RANDOM % 6 + 1)).$((RANDOM % 10))"
+  # Killed a random 0 ... 2 s after one of its runs wrote a checkpoint in this life, so that every
+  # life makes progress however loaded the machine is.
+  while kill -0 "$pid" 2> /dev/null && [ -z "$(find "$work/killed" -name '*.checkpoint' -newer "$work/life-start")" ]; do
+    sleep 0.05
+  done
+  sleep "$((RANDOM % 2)).$((RANDOM % 10))"
   kill -9 "$pid" 2> /dev/null
   wait "$pid" 2> /dev/null
   sleep 0.2  # the runs die with the pipeline (PR_SET_PDEATHSIG)
