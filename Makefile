@@ -47,13 +47,13 @@ kill-test: build
 	tests/kill/kill_test.sh $(BUILD)/bin/dem $(KILLS) $(BUILD)/kill-test/run-long
 	tests/kill/study_kill_test.sh $(BUILD)/bin 5 $(BUILD)/kill-test/study-long
 
-# The input readers (scene, study, CSV, HDF5 state) and the rest of the unit tests that read input,
+# The input readers (scene, study, CSV, HDF5 state, checkpoints) and the rest of the unit tests that read input,
 # built with AddressSanitizer and UndefinedBehaviorSanitizer; any finding fails (CI runs this).
 sanitize: deps
 	cmake -S . -B $(BUILD)-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDEM_SANITIZE=ON >/dev/null
 	cmake --build $(BUILD)-sanitize -j $(JOBS) --target dem_tests
 	ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 OMP_NUM_THREADS=1 \
-	  $(BUILD)-sanitize/bin/dem_tests "[config],[csv],[state],[input],[io],[result]"
+	  $(BUILD)-sanitize/bin/dem_tests "[config],[csv],[state],[input],[io],[result],[checkpoint]"
 
 # libFuzzer on the scene YAML, study YAML and particle CSV readers (clang), FUZZ_SECONDS each;
 # crashes are written to build-fuzz/crashes. Corpora start from the project's own files.
