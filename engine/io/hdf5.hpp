@@ -98,4 +98,16 @@ class FrameSeries {
 // The extent of a dataset, outermost dimension first.
 std::vector<hsize_t> shape(hid_t parent, const std::string& name);
 
+// Runs `read` and makes every h5::Error it throws start with `file` (readers of whole files).
+template <class F>
+auto naming_file(const std::string& file, F read) {
+  try {
+    return read();
+  } catch (const Error& e) {
+    const std::string what = e.what();
+    if (what.rfind(file, 0) == 0) throw;
+    throw Error(file + ": " + what);
+  }
+}
+
 }  // namespace dem::h5

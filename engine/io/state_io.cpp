@@ -105,24 +105,12 @@ void write_state(hid_t group, const Simulation& sim) {
 
 namespace {
 
-// Every message names the file.
-template <class F>
-auto naming_file(const std::string& file, F read) {
-  try {
-    return read();
-  } catch (const h5::Error& e) {
-    const std::string what = e.what();
-    if (what.rfind(file, 0) == 0) throw;
-    throw h5::Error(file + ": " + what);
-  }
-}
-
 SavedState read_state_unchecked(hid_t g, const std::string& file);
 
 }  // namespace
 
 SavedState read_state(const std::string& file) {
-  return naming_file(file, [&] {
+  return h5::naming_file(file, [&] {
     h5::Handle f = h5::open_file_read(file);
     if (!h5::has_attribute(f, "status") || h5::get_string_attribute(f, "status") != "complete")
       throw h5::Error(file + ": not a complete result (status '" +
@@ -133,7 +121,7 @@ SavedState read_state(const std::string& file) {
 }
 
 SavedState read_state(hid_t group, const std::string& file) {
-  return naming_file(file, [&] { return read_state_unchecked(group, file); });
+  return h5::naming_file(file, [&] { return read_state_unchecked(group, file); });
 }
 
 namespace {

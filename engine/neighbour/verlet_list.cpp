@@ -92,18 +92,24 @@ void VerletList::collect_pairs(const Particles& p, const PeriodicCell& cell, Pai
   }
 }
 
+namespace {
+double largest_radius(const Particles& p) {
+  return p.size() ? *std::max_element(p.radius.begin(), p.radius.end()) : 0.0;
+}
+}  // namespace
+
 void VerletList::restore_exact(Saved saved, const Particles& p) {
   pairs_ = std::move(saved.pairs);
   s_at_build_ = std::move(saved.s_at_build);
   lengths_at_build_ = saved.lengths_at_build;
   builds_ = saved.builds;
-  built_ = saved.built;
-  max_radius_ = p.size() ? *std::max_element(p.radius.begin(), p.radius.end()) : 0.0;
+  built_ = true;
+  max_radius_ = largest_radius(p);
   index_.build(pairs_, p.size());
 }
 
 void VerletList::build(const Particles& p, const PeriodicCell& cell) {
-  max_radius_ = p.size() ? *std::max_element(p.radius.begin(), p.radius.end()) : 0.0;
+  max_radius_ = largest_radius(p);
   const double range = 2 * max_radius_ + skin_;
   for (int k = 0; k < 3; ++k) {
     if (cell.lengths()[k] <= 2 * range) {

@@ -65,14 +65,14 @@ class VerletList {
   // Everything a checkpoint needs to continue bit for bit: the whole list (pairs out of contact
   // too, since forces are summed in fixed-size chunks of the list) and what the rebuild criterion
   // compares with, so that the list is rebuilt at the same steps as in an uninterrupted run.
+  // Checkpoints are taken after a step, so the saved list is always a built one.
   struct Saved {
     PairList pairs;
     std::vector<Vec3> s_at_build;
     Vec3 lengths_at_build = Vec3::Ones();
     std::size_t builds = 0;
-    bool built = false;
   };
-  Saved saved() const { return {pairs_, s_at_build_, lengths_at_build_, builds_, built_}; }
+  Saved saved() const { return {pairs_, s_at_build_, lengths_at_build_, builds_}; }
   void restore_exact(Saved saved, const Particles& p);
 
  private:

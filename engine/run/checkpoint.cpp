@@ -48,7 +48,6 @@ void write_list(hid_t g, const VerletList::Saved& list) {
   h5::write(g, "verlet_position_fractional_at_build", flatten(list.s_at_build), 3, "1");
   write_vec3(g, "verlet_cell_lengths_at_build", list.lengths_at_build, "m");
   h5::set_attribute(g, "verlet_builds", static_cast<std::int64_t>(list.builds));
-  h5::set_attribute(g, "verlet_built", static_cast<std::int64_t>(list.built));
 }
 
 VerletList::Saved read_list(hid_t g, const std::string& file, std::size_t n) {
@@ -57,8 +56,7 @@ VerletList::Saved read_list(hid_t g, const std::string& file, std::size_t n) {
   list.s_at_build = read_vec3(g, file, "verlet_position_fractional_at_build");
   list.lengths_at_build = read_one_vec3(g, file, "verlet_cell_lengths_at_build");
   list.builds = static_cast<std::size_t>(int_attribute(g, file, "verlet_builds", 0, std::numeric_limits<std::int64_t>::max()));
-  list.built = int_attribute(g, file, "verlet_built", 0, 1) == 1;
-  if (list.built && list.s_at_build.size() != n)
+  if (list.s_at_build.size() != n)
     throw h5::Error(file + ": /checkpoint/state: verlet_position_fractional_at_build has " +
                     std::to_string(list.s_at_build.size()) + " rows for " + std::to_string(n) + " particles");
   for (const Vec3& s : list.s_at_build)
@@ -171,7 +169,7 @@ void write_checkpoint(const std::string& partial_path, const std::string& out_pa
 }
 
 Checkpoint read_checkpoint(const std::string& file) {
-  try {
+  return h5::naming_file(file, [&] {
     h5::Handle f = h5::open_file_read(file);
     if (!h5::exists(f, "checkpoint")) throw h5::Error(file + ": not a checkpoint (no /checkpoint group)");
     h5::Handle g = h5::open_group(f, "checkpoint");
@@ -184,19 +182,11 @@ Checkpoint read_checkpoint(const std::string& file) {
     c.energy = read_energy(state, file);
     c.cursor = read_cursor(h5::open_group(g, "cursor"), file);
     return c;
-  } catch (const h5::Error& e) {  // every message names the file
-    const std::string what = e.what();
-    if (what.rfind(file, 0) == 0) throw;
-    throw h5::Error(file + ": " + what);
-  }
+  });
 }
 
+// The identity (scene, engine, particle file) and the stage were checked by the caller.
 Simulation restore_simulation(const SceneConfig& scene, Checkpoint& c) {
-  if (c.cursor.stage >= static_cast<int>(scene.stages.size()))
-    throw h5::Error("checkpoint: stage " + std::to_string(c.cursor.stage) + " does not exist in the scene");
-  if (c.state.time_step_s != scene.time_step_s)
-    throw h5::Error("checkpoint: written with time step " + std::to_string(c.state.time_step_s) + " s, the scene has " +
-                    std::to_string(scene.time_step_s) + " s");
   Simulation sim(std::move(c.state.particles), c.state.cell, scene.material, scene.damping, scene.time_step_s,
                  scene.verlet_skin_m);
   sim.restore_checkpoint(c.state.step, c.state.strain_rate_per_s, std::move(c.list), c.energy);

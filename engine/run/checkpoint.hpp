@@ -45,7 +45,8 @@ void write_checkpoint(const std::string& partial_path, const std::string& out_pa
 // a value out of range).
 Checkpoint read_checkpoint(const std::string& file);
 
-// The simulation of a checkpoint of `scene`: its particles, cell, list and energy balance.
+// The simulation of a checkpoint of `scene` (one read_checkpoint accepted for this run's identity):
+// its particles, cell, list and energy balance.
 Simulation restore_simulation(const SceneConfig& scene, Checkpoint& checkpoint);
 
 }  // namespace dem

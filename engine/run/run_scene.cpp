@@ -355,7 +355,8 @@ RunSummary run_scene(const SceneConfig& scene, const std::string& out_path, bool
   // one step, so a resumed run does not write again the checkpoint it started from.
   std::int64_t last_checkpoint_step = sim.step_count();
   auto last_checkpoint_wall = clock::now();
-  hooks.checkpoint_due = [&](const Simulation& s) {
+  const bool checkpoints = scene.output.checkpoint_interval_steps > 0 || scene.output.checkpoint_wall_time_s > 0;
+  if (checkpoints) hooks.checkpoint_due = [&](const Simulation& s) {
     const std::int64_t step = s.step_count();
     if (step == last_checkpoint_step) return false;
     if (scene.output.checkpoint_interval_steps > 0 && step % scene.output.checkpoint_interval_steps == 0) return true;

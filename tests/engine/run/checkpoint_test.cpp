@@ -110,12 +110,12 @@ TEST_CASE("a checkpoint of other inputs or a damaged one is not resumed", "[run]
     {
       dem::h5::Handle f = dem::h5::open_file_write(out + ".checkpoint");
       dem::h5::Handle g = dem::h5::open_group(f, "checkpoint/state");
-      H5Adelete(g, "verlet_built");
-      dem::h5::set_attribute(g, "verlet_built", std::int64_t{7});
+      H5Adelete(g, "energy_started");
+      dem::h5::set_attribute(g, "energy_started", std::int64_t{7});
     }
     const auto refused = dem_stderr(run + " --resume");
     CHECK(refused.exit_code == 2);
-    CHECK_THAT(refused.out, Catch::Matchers::Contains("attribute verlet_built = 7 is outside [0, 1]"));
+    CHECK_THAT(refused.out, Catch::Matchers::Contains("attribute energy_started = 7 is outside [0, 1]"));
   }
 }
 
