@@ -37,108 +37,128 @@ struct PairForces {
   std::vector<MotionSums> motion_sums;    // per chunk of particles
 };
 
+// The per-pair work of `compute_forces`, on raw pointers (the arrays do not alias, and the
+// compiler keeps them in registers). `pair(k, sums)` evaluates pair k and adds its share to the
+// chunk sums `sums` (stress not yet divided by the volume, not yet symmetrised). The vectorised
+// kernel (dynamics/kernel_simd.cpp) does the same arithmetic four pairs at a time and uses this
+// for the pairs left over at the end of the list.
+template <class Friction>
+struct PairLoop {
+  LinearSpring<Friction> law;
+  PeriodicCell cell;
+  Vec3 strain_rate;
+  double dt;
+  std::size_t n_pairs;
+  const std::uint32_t* __restrict first;
+  const std::uint32_t* __restrict second;
+  const Vec3* __restrict s;
+  const Vec3* __restrict v;
+  const Vec3* __restrict omega;
+  const double* __restrict radius;
+  Vec3* __restrict spring;
+  std::uint8_t* __restrict sliding_flag;
+  Vec3* __restrict pair_force;
+  Vec3* __restrict torque_i;
+  Vec3* __restrict torque_j;
+
+  // Sizes the outputs and points at them.
+  PairLoop(const LinearSpring<Friction>& law_, const Particles& p, const PeriodicCell& cell_, PairList& pairs,
+           const Vec3& strain_rate_, double dt_, PairForces& out)
+      : law(law_), cell(cell_), strain_rate(strain_rate_), dt(dt_), n_pairs(pairs.size()) {
+    out.force.resize(n_pairs);
+    if constexpr (Friction::has_tangential) {
+      out.torque_i.resize(n_pairs);
+      out.torque_j.resize(n_pairs);
+    }
+    out.chunk_sums.resize(static_cast<std::size_t>(chunk_count(n_pairs)));
+    first = pairs.first.data();
+    second = pairs.second.data();
+    s = p.s.data();
+    v = p.v.data();
+    omega = p.omega.data();
+    radius = p.radius.data();
+    spring = pairs.spring.data();
+    sliding_flag = pairs.sliding.data();
+    pair_force = out.force.data();
+    torque_i = out.torque_i.data();
+    torque_j = out.torque_j.data();
+  }
+
+  void pair(std::size_t k, StepSums& sums) const {
+    const double kn = law.kn;
+    const std::uint32_t i = first[k], j = second[k];
+    const Vec3 l = cell.branch(s[i], s[j]);  // centre of i to centre of j
+    const double dist2 = l.squaredNorm();
+    const double rsum = radius[i] + radius[j];
+    if (dist2 >= rsum * rsum) {
+      pair_force[k].setZero();
+      if constexpr (Friction::has_tangential) {
+        torque_i[k].setZero();
+        torque_j[k].setZero();
+        // A contact that opens loses what is left in its spring (at most (mu fn)^2 / 2 ks with
+        // the fn of its last step in contact): counted as dissipated by friction.
+        sums.friction_loss_J += 0.5 * law.friction.ks * spring[k].squaredNorm();
+        spring[k].setZero();
+        sliding_flag[k] = 0;
+      }
+      return;
+    }
+    const double dist = std::sqrt(dist2);
+    const Vec3 nrm = l / dist;
+    const double overlap = rsum - dist;
+    const double fn = kn * overlap;
+    Vec3 f = fn * nrm;  // force on j; -f acts on i
+    if constexpr (Friction::has_tangential) {
+      const double arm_i = radius[i] - 0.5 * overlap, arm_j = radius[j] - 0.5 * overlap;
+      const Vec3 v_rel =
+          v[j] - v[i] - strain_rate.cwiseProduct(l) - (arm_i * omega[i] + arm_j * omega[j]).cross(nrm);
+      const Vec3 v_t = v_rel - nrm.dot(v_rel) * nrm;
+      bool sliding = false;
+      double lost = 0;
+      const Vec3 ft = law.friction.tangential(spring[k], nrm, v_t, dt, fn, sliding, lost);
+      sliding_flag[k] = sliding;
+      sums.friction_loss_J += lost;
+      sums.elastic_tangential_J += 0.5 * ft.squaredNorm() / law.friction.ks;
+      f += ft;
+      const Vec3 nxft = nrm.cross(ft);
+      torque_i[k] = arm_i * nxft;  // both torques are -arm n x f_t
+      torque_j[k] = arm_j * nxft;
+    }
+    pair_force[k] = f;
+    sums.stress_Pa.noalias() += f * l.transpose();
+    // Servo stiffness: d(sigma_kk)/d(eps_k) of the normal springs if the contact followed the
+    // cell, kn (n_k l_k)^2. (Adding the sticking tangential springs, ks (l_k^2 - (n_k l_k)^2),
+    // over-estimates the relaxed stiffness: on a 1,000-sphere packing ramped at 2 MPa/s the
+    // stress then lagged its target by 0.7 % of p, against a 0.3 % lead with kn alone.)
+    const Vec3 nl = nrm.cwiseProduct(l);
+    sums.stiffness_Pa += kn * nl.cwiseProduct(nl);
+    ++sums.contacts;
+    sums.sum_normal_force_N += fn;
+    sums.elastic_normal_J += 0.5 * fn * overlap;
+  }
+};
+
+// Adds the chunk sums in chunk order, divides the stress and stiffness by the volume and
+// symmetrises the stress.
+StepSums total_of_chunks(const std::vector<StepSums>& chunk_sums, const PeriodicCell& cell);
+
 // Contact forces at the current positions. Velocities are those of the previous half step; the
 // relative velocity at a contact includes the affine part -rate (.) l of the deforming cell.
 // `sums` receives the contact stress and the servo stiffness.
 template <class Friction>
 void compute_forces(const LinearSpring<Friction>& law, const Particles& p, const PeriodicCell& cell, PairList& pairs,
                     const Vec3& strain_rate, double dt, PairForces& out, StepSums& sums) {
-  const std::size_t n_pairs = pairs.size();
-  out.force.resize(n_pairs);
-  if constexpr (Friction::has_tangential) {
-    out.torque_i.resize(n_pairs);
-    out.torque_j.resize(n_pairs);
-  }
-  const std::ptrdiff_t chunks = chunk_count(n_pairs);
-  out.chunk_sums.resize(static_cast<std::size_t>(chunks));
-  const double kn = law.kn;
-  // Raw pointers: the arrays do not alias, and the compiler keeps them in registers.
-  const std::uint32_t* __restrict first = pairs.first.data();
-  const std::uint32_t* __restrict second = pairs.second.data();
-  const Vec3* __restrict s = p.s.data();
-  const Vec3* __restrict v = p.v.data();
-  const Vec3* __restrict omega = p.omega.data();
-  const double* __restrict radius = p.radius.data();
-  Vec3* __restrict spring = pairs.spring.data();
-  std::uint8_t* __restrict sliding_flag = pairs.sliding.data();
-  Vec3* __restrict pair_force = out.force.data();
-  Vec3* __restrict torque_i = out.torque_i.data();
-  Vec3* __restrict torque_j = out.torque_j.data();
+  const PairLoop<Friction> loop(law, p, cell, pairs, strain_rate, dt, out);
+  const std::ptrdiff_t chunks = chunk_count(loop.n_pairs);
+  StepSums* chunk_sums = out.chunk_sums.data();
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t c = 0; c < chunks; ++c) {
-    Mat3 stress = Mat3::Zero();
-    Vec3 stiffness = Vec3::Zero();
-    std::size_t contacts = 0;
-    double sum_fn = 0, elastic_n = 0, elastic_t = 0, friction_loss = 0;
-    const std::size_t end = std::min(n_pairs, static_cast<std::size_t>((c + 1) * chunk_size));
-    for (std::size_t k = static_cast<std::size_t>(c * chunk_size); k < end; ++k) {
-      const std::uint32_t i = first[k], j = second[k];
-      const Vec3 l = cell.branch(s[i], s[j]);  // centre of i to centre of j
-      const double dist2 = l.squaredNorm();
-      const double rsum = radius[i] + radius[j];
-      if (dist2 >= rsum * rsum) {
-        pair_force[k].setZero();
-        if constexpr (Friction::has_tangential) {
-          torque_i[k].setZero();
-          torque_j[k].setZero();
-          // A contact that opens loses what is left in its spring (at most (mu fn)^2 / 2 ks with
-          // the fn of its last step in contact): counted as dissipated by friction.
-          friction_loss += 0.5 * law.friction.ks * spring[k].squaredNorm();
-          spring[k].setZero();
-          sliding_flag[k] = 0;
-        }
-        continue;
-      }
-      const double dist = std::sqrt(dist2);
-      const Vec3 nrm = l / dist;
-      const double overlap = rsum - dist;
-      const double fn = kn * overlap;
-      Vec3 f = fn * nrm;  // force on j; -f acts on i
-      if constexpr (Friction::has_tangential) {
-        const double arm_i = radius[i] - 0.5 * overlap, arm_j = radius[j] - 0.5 * overlap;
-        const Vec3 v_rel =
-            v[j] - v[i] - strain_rate.cwiseProduct(l) - (arm_i * omega[i] + arm_j * omega[j]).cross(nrm);
-        const Vec3 v_t = v_rel - nrm.dot(v_rel) * nrm;
-        bool sliding = false;
-        double lost = 0;
-        const Vec3 ft = law.friction.tangential(spring[k], nrm, v_t, dt, fn, sliding, lost);
-        sliding_flag[k] = sliding;
-        friction_loss += lost;
-        elastic_t += 0.5 * ft.squaredNorm() / law.friction.ks;
-        f += ft;
-        const Vec3 nxft = nrm.cross(ft);
-        torque_i[k] = arm_i * nxft;  // both torques are -arm n x f_t
-        torque_j[k] = arm_j * nxft;
-      }
-      pair_force[k] = f;
-      stress.noalias() += f * l.transpose();
-      // Servo stiffness: d(sigma_kk)/d(eps_k) of the normal springs if the contact followed the
-      // cell, kn (n_k l_k)^2. (Adding the sticking tangential springs, ks (l_k^2 - (n_k l_k)^2),
-      // over-estimates the relaxed stiffness: on a 1,000-sphere packing ramped at 2 MPa/s the
-      // stress then lagged its target by 0.7 % of p, against a 0.3 % lead with kn alone.)
-      const Vec3 nl = nrm.cwiseProduct(l);
-      stiffness += kn * nl.cwiseProduct(nl);
-      ++contacts;
-      sum_fn += fn;
-      elastic_n += 0.5 * fn * overlap;
-    }
-    out.chunk_sums[static_cast<std::size_t>(c)] = {stress, stiffness, contacts, sum_fn, elastic_n, elastic_t, friction_loss};
+    StepSums chunk;
+    const std::size_t end = std::min(loop.n_pairs, static_cast<std::size_t>((c + 1) * chunk_size));
+    for (std::size_t k = static_cast<std::size_t>(c * chunk_size); k < end; ++k) loop.pair(k, chunk);
+    chunk_sums[c] = chunk;
   }
-  StepSums total;
-  for (const StepSums& chunk : out.chunk_sums) {
-    total.stress_Pa += chunk.stress_Pa;
-    total.stiffness_Pa += chunk.stiffness_Pa;
-    total.contacts += chunk.contacts;
-    total.sum_normal_force_N += chunk.sum_normal_force_N;
-    total.elastic_normal_J += chunk.elastic_normal_J;
-    total.elastic_tangential_J += chunk.elastic_tangential_J;
-    total.friction_loss_J += chunk.friction_loss_J;
-  }
-  const double inv_volume = 1.0 / cell.volume();
-  const Mat3 stress = total.stress_Pa;  // a copy: (A + A^T) assigned to A would alias
-  total.stress_Pa = 0.5 * (stress + stress.transpose()) * inv_volume;
-  total.stiffness_Pa *= inv_volume;
-  sums = total;
+  sums = total_of_chunks(out.chunk_sums, cell);
 }
 
 // Viscous body damping, integrated semi-implicitly (exact for the damping term alone):

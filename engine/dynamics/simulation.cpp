@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "dynamics/kernel.hpp"
+#include "dynamics/kernel_simd.hpp"
 
 namespace dem {
 
@@ -12,6 +13,24 @@ double critical_time_step(const Particles& p, double kn_N_per_m) {
   if (p.size() == 0) throw std::invalid_argument("critical_time_step: no particles");
   const double m_min = *std::min_element(p.mass.begin(), p.mass.end());
   return 2.0 * std::sqrt(m_min / kn_N_per_m);
+}
+
+StepSums total_of_chunks(const std::vector<StepSums>& chunk_sums, const PeriodicCell& cell) {
+  StepSums total;
+  for (const StepSums& chunk : chunk_sums) {
+    total.stress_Pa += chunk.stress_Pa;
+    total.stiffness_Pa += chunk.stiffness_Pa;
+    total.contacts += chunk.contacts;
+    total.sum_normal_force_N += chunk.sum_normal_force_N;
+    total.elastic_normal_J += chunk.elastic_normal_J;
+    total.elastic_tangential_J += chunk.elastic_tangential_J;
+    total.friction_loss_J += chunk.friction_loss_J;
+  }
+  const double inv_volume = 1.0 / cell.volume();
+  const Mat3 stress = total.stress_Pa;  // a copy: (A + A^T) assigned to A would alias
+  total.stress_Pa = 0.5 * (stress + stress.transpose()) * inv_volume;
+  total.stiffness_Pa *= inv_volume;
+  return total;
 }
 
 struct Simulation::Kernel {
@@ -24,9 +43,13 @@ template <class Friction, class DampingPolicy>
 struct KernelImpl final : Simulation::Kernel {
   LinearSpring<Friction> law;
   DampingPolicy damping;
+  bool simd = simd_forces_enabled();  // the same result either way; the vectorised loop is faster
   KernelImpl(LinearSpring<Friction> l, DampingPolicy d) : law(l), damping(std::move(d)) {}
   void forces(Simulation& s) override {
-    compute_forces(law, s.particles_, s.cell_, s.list_.pairs(), s.strain_rate_, s.dt_, *s.pair_forces_, s.sums_);
+    if (simd)
+      compute_forces_simd(law, s.particles_, s.cell_, s.list_.pairs(), s.strain_rate_, s.dt_, *s.pair_forces_, s.sums_);
+    else
+      compute_forces(law, s.particles_, s.cell_, s.list_.pairs(), s.strain_rate_, s.dt_, *s.pair_forces_, s.sums_);
   }
   MotionSums integrate(Simulation& s) override {
     return dem::integrate<Friction::has_tangential>(damping, s.particles_, s.cell_, s.list_.index(), *s.pair_forces_,
