@@ -84,7 +84,7 @@ struct PairLoop {
     torque_j = out.torque_j.data();
   }
 
-  void pair(std::size_t k, StepSums& sums) const {
+  [[gnu::always_inline]] void pair(std::size_t k, StepSums& sums) const {
     const double kn = law.kn;
     const std::uint32_t i = first[k], j = second[k];
     const Vec3 l = cell.branch(s[i], s[j]);  // centre of i to centre of j
@@ -154,8 +154,9 @@ void compute_forces(const LinearSpring<Friction>& law, const Particles& p, const
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t c = 0; c < chunks; ++c) {
     StepSums chunk;
+    const PairLoop<Friction> local = loop;  // a local copy: its pointers stay in registers
     const std::size_t end = std::min(loop.n_pairs, static_cast<std::size_t>((c + 1) * chunk_size));
-    for (std::size_t k = static_cast<std::size_t>(c * chunk_size); k < end; ++k) loop.pair(k, chunk);
+    for (std::size_t k = static_cast<std::size_t>(c * chunk_size); k < end; ++k) local.pair(k, chunk);
     chunk_sums[c] = chunk;
   }
   sums = total_of_chunks(out.chunk_sums, cell);
@@ -199,6 +200,88 @@ struct LocalDamping {
   void spin(std::size_t i, Vec3& w, const Vec3& t) const { w += dt_over_I[i] * damped(t, w, alpha_rot); }
 };
 
+// The per-particle work of `integrate`, on raw pointers: `gather` sums a particle's pair forces
+// and torques, `update` moves it. The vectorised version (dynamics/kernel_simd.cpp) updates four
+// particles at a time and uses these for the gathers and the particles left over.
+template <bool Rotate, class DampingPolicy>
+struct ParticleLoop {
+  const DampingPolicy& damping;
+  Vec3 dt_over_L;
+  double dt;
+  std::size_t n;
+  const std::uint32_t* __restrict first_begin;
+  const std::uint32_t* __restrict second_begin;
+  const std::uint32_t* __restrict second_pairs;
+  const Vec3* __restrict pair_force;
+  const Vec3* __restrict torque_i;
+  const Vec3* __restrict torque_j;
+  const double* __restrict mass;
+  const double* __restrict inertia;
+  Vec3* __restrict v;
+  Vec3* __restrict s;
+  Vec3* __restrict omega;
+  Vec3* __restrict net;
+
+  // Sizes the outputs and points at them.
+  ParticleLoop(const DampingPolicy& damping_, Particles& p, const PeriodicCell& cell, const PairIndex& index,
+               PairForces& pf, std::vector<Vec3>& force, double dt_)
+      : damping(damping_), dt_over_L(dt_ * cell.inverse_lengths()), dt(dt_), n(p.size()) {
+    force.resize(n);
+    pf.motion_sums.resize(static_cast<std::size_t>(chunk_count(n)));
+    first_begin = index.first_begin.data();
+    second_begin = index.second_begin.data();
+    second_pairs = index.second_pairs.data();
+    pair_force = pf.force.data();
+    torque_i = pf.torque_i.data();
+    torque_j = pf.torque_j.data();
+    mass = p.mass.data();
+    inertia = p.inertia.data();
+    v = p.v.data();
+    s = p.s.data();
+    omega = p.omega.data();
+    net = force.data();
+  }
+
+  // Net force and torque of particle i, gathered in pair order.
+  void gather(std::size_t i, Vec3& f, Vec3& t) const {
+    f.setZero(), t.setZero();
+    for (std::uint32_t m = second_begin[i]; m < second_begin[i + 1]; ++m) {
+      const std::uint32_t k = second_pairs[m];
+      f += pair_force[k];
+      if constexpr (Rotate) t -= torque_j[k];
+    }
+    for (std::uint32_t k = first_begin[i]; k < first_begin[i + 1]; ++k) {
+      f -= pair_force[k];
+      if constexpr (Rotate) t -= torque_i[k];
+    }
+  }
+
+  // Leapfrog update of particle i under net force f (stored in net[i]) and torque t; adds to `sums`
+  // (twice the energies). Returns false if the particle cannot be wrapped back into the cell.
+  bool update(std::size_t i, const Vec3& f, const Vec3& t, MotionSums& sums) const {
+    net[i] = f;
+    const Vec3 v_old = v[i];
+    damping.velocity(i, v[i], f);
+    s[i] += v[i].cwiseProduct(dt_over_L);
+    const bool ok = PeriodicCell::wrap(s[i]);
+    const double m = mass[i], twice_ke_new = m * v[i].squaredNorm();
+    sums.kinetic_half_step += twice_ke_new;
+    sums.kinetic_centred += m * v_old.dot(v[i]);
+    sums.damping_loss += dt * f.dot(v_old + v[i]) - (twice_ke_new - m * v_old.squaredNorm());
+    if constexpr (Rotate) {
+      const Vec3 w_old = omega[i];
+      damping.spin(i, omega[i], t);
+      const double I = inertia[i], twice_rot_new = I * omega[i].squaredNorm();
+      sums.kinetic_centred += I * w_old.dot(omega[i]);
+      sums.damping_loss += dt * t.dot(w_old + omega[i]) - (twice_rot_new - I * w_old.squaredNorm());
+    }
+    return ok;
+  }
+};
+
+// Adds the chunk sums in chunk order and halves them; kinetic_half_step is NaN if not `wrapped`.
+MotionSums total_of_chunks(const std::vector<MotionSums>& chunk_sums, bool wrapped);
+
 // Leapfrog update of velocities and fractional positions, with the net force and torque of each
 // particle gathered from the pair forces in pair order (the order a serial scatter would use).
 // `force` receives the net forces. Returns the kinetic energies and the energy the damping took
@@ -212,72 +295,25 @@ struct LocalDamping {
 template <bool Rotate, class DampingPolicy>
 MotionSums integrate(const DampingPolicy& damping, Particles& p, const PeriodicCell& cell, const PairIndex& index,
                      PairForces& pf, std::vector<Vec3>& force, double dt) {
-  const Vec3 dt_over_L = dt * cell.inverse_lengths();
-  const std::size_t n = p.size();
-  force.resize(n);
-  const std::ptrdiff_t chunks = chunk_count(n);
-  pf.motion_sums.resize(static_cast<std::size_t>(chunks));
-  MotionSums* __restrict motion_sums = pf.motion_sums.data();
+  const ParticleLoop<Rotate, DampingPolicy> loop(damping, p, cell, index, pf, force, dt);
+  const std::ptrdiff_t chunks = chunk_count(loop.n);
+  MotionSums* motion_sums = pf.motion_sums.data();
   int wrapped = 1;
-  // Raw pointers: the arrays do not alias, and the compiler keeps them in registers.
-  const std::uint32_t* __restrict first_begin = index.first_begin.data();
-  const std::uint32_t* __restrict second_begin = index.second_begin.data();
-  const std::uint32_t* __restrict second_pairs = index.second_pairs.data();
-  const Vec3* __restrict pair_force = pf.force.data();
-  const Vec3* __restrict torque_i = pf.torque_i.data();
-  const Vec3* __restrict torque_j = pf.torque_j.data();
-  const double* __restrict mass = p.mass.data();
-  const double* __restrict inertia = p.inertia.data();
-  Vec3* __restrict v = p.v.data();
-  Vec3* __restrict s = p.s.data();
-  Vec3* __restrict omega = p.omega.data();
-  Vec3* __restrict net = force.data();
 #pragma omp parallel for schedule(static) reduction(&& : wrapped)
   for (std::ptrdiff_t c = 0; c < chunks; ++c) {
     MotionSums chunk;
     bool chunk_ok = true;
-    const std::size_t end = std::min(n, static_cast<std::size_t>((c + 1) * chunk_size));
+    const std::size_t end = std::min(loop.n, static_cast<std::size_t>((c + 1) * chunk_size));
+    const ParticleLoop<Rotate, DampingPolicy> local = loop;  // a local copy: its pointers stay in registers
     for (std::size_t i = static_cast<std::size_t>(c * chunk_size); i < end; ++i) {
-      Vec3 f = Vec3::Zero(), t = Vec3::Zero();
-      for (std::uint32_t m = second_begin[i]; m < second_begin[i + 1]; ++m) {
-        const std::uint32_t k = second_pairs[m];
-        f += pair_force[k];
-        if constexpr (Rotate) t -= torque_j[k];
-      }
-      for (std::uint32_t k = first_begin[i]; k < first_begin[i + 1]; ++k) {
-        f -= pair_force[k];
-        if constexpr (Rotate) t -= torque_i[k];
-      }
-      net[i] = f;
-      const Vec3 v_old = v[i];
-      damping.velocity(i, v[i], f);
-      s[i] += v[i].cwiseProduct(dt_over_L);
-      chunk_ok &= PeriodicCell::wrap(s[i]);
-      const double m = mass[i], twice_ke_new = m * v[i].squaredNorm();
-      chunk.kinetic_half_step += twice_ke_new;
-      chunk.kinetic_centred += m * v_old.dot(v[i]);
-      chunk.damping_loss += dt * f.dot(v_old + v[i]) - (twice_ke_new - m * v_old.squaredNorm());
-      if constexpr (Rotate) {
-        const Vec3 w_old = omega[i];
-        damping.spin(i, omega[i], t);
-        const double I = inertia[i], twice_rot_new = I * omega[i].squaredNorm();
-        chunk.kinetic_centred += I * w_old.dot(omega[i]);
-        chunk.damping_loss += dt * t.dot(w_old + omega[i]) - (twice_rot_new - I * w_old.squaredNorm());
-      }
+      Vec3 f, t;
+      local.gather(i, f, t);
+      chunk_ok &= local.update(i, f, t, chunk);
     }
     motion_sums[c] = chunk;  // sums of twice the energies; halved below
     wrapped = wrapped && chunk_ok;
   }
-  MotionSums total;
-  for (const MotionSums& chunk : pf.motion_sums) {
-    total.kinetic_half_step += chunk.kinetic_half_step;
-    total.kinetic_centred += chunk.kinetic_centred;
-    total.damping_loss += chunk.damping_loss;
-  }
-  total.kinetic_half_step = wrapped ? 0.5 * total.kinetic_half_step : std::nan("");
-  total.kinetic_centred *= 0.5;
-  total.damping_loss *= 0.5;
-  return total;
+  return total_of_chunks(pf.motion_sums, wrapped);
 }
 
 }  // namespace dem

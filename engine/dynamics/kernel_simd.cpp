@@ -97,6 +97,18 @@ AVX2 inline V gather(const double* base, const std::uint32_t* index) {
   return _mm256_setr_pd(base[index[0]], base[index[1]], base[index[2]], base[index[3]]);
 }
 
+// A 4 x 4 transpose: given four components c[0..3] of four items (lane p = item p), the four
+// items' rows (row[p] lane q = component q of item p).
+struct Rows {
+  V row[4];
+};
+AVX2 inline Rows transpose(V c0, V c1, V c2, V c3) {
+  const V t0 = _mm256_unpacklo_pd(c0, c1), t1 = _mm256_unpackhi_pd(c0, c1);
+  const V t2 = _mm256_unpacklo_pd(c2, c3), t3 = _mm256_unpackhi_pd(c2, c3);
+  return {{_mm256_permute2f128_pd(t0, t2, 0x20), _mm256_permute2f128_pd(t1, t3, 0x20),
+           _mm256_permute2f128_pd(t0, t2, 0x31), _mm256_permute2f128_pd(t1, t3, 0x31)}};
+}
+
 // The 16 chunk sums as four vectors, component c in acc[c / 4], lane c % 4: the stress
 // column-major (f_a l_b at a + 3 b), the servo stiffness, then sum fn, normal and tangential
 // elastic energy, friction loss. Each pair's 16 values are added in pair order.
@@ -127,16 +139,11 @@ struct Accumulator {
     return s;
   }
   // Adds four pairs' values, given per component (comp[c] holds the four pairs' values of
-  // component c), pair by pair. `groups` = 1 adds only the last group (the others are zero).
+  // component c), pair by pair. Groups before `first_group` are zero and skipped.
   AVX2 void add(const V (&comp)[16], int first_group = 0) {
-    for (int g = first_group; g < 4; ++g) {  // transpose 4 x 4: row[p] = pair p's 4 components of group g
-      const V t0 = _mm256_unpacklo_pd(comp[4 * g], comp[4 * g + 1]);
-      const V t1 = _mm256_unpackhi_pd(comp[4 * g], comp[4 * g + 1]);
-      const V t2 = _mm256_unpacklo_pd(comp[4 * g + 2], comp[4 * g + 3]);
-      const V t3 = _mm256_unpackhi_pd(comp[4 * g + 2], comp[4 * g + 3]);
-      const V row0 = _mm256_permute2f128_pd(t0, t2, 0x20), row1 = _mm256_permute2f128_pd(t1, t3, 0x20);
-      const V row2 = _mm256_permute2f128_pd(t0, t2, 0x31), row3 = _mm256_permute2f128_pd(t1, t3, 0x31);
-      acc[g] = (((acc[g] + row0) + row1) + row2) + row3;
+    for (int g = first_group; g < 4; ++g) {
+      const Rows r = transpose(comp[4 * g], comp[4 * g + 1], comp[4 * g + 2], comp[4 * g + 3]);
+      acc[g] = (((acc[g] + r.row[0]) + r.row[1]) + r.row[2]) + r.row[3];
     }
   }
 };
@@ -290,7 +297,101 @@ AVX2 void chunk(const PairLoop<Friction>& loop, std::size_t begin, std::size_t e
   for (; k < end; ++k) loop.pair(k, out);  // the last pairs of the list, one by one
 }
 
+// PeriodicCell::wrap, one axis of four particles; clears the lanes of `inside` that stay outside.
+AVX2 inline V wrap(V x, V& inside) {
+  const V one = splat(1.0);
+  x = x + keep(_mm256_cmp_pd(x, zero(), _CMP_LT_OQ), one);
+  x = x - keep(_mm256_cmp_pd(x, one, _CMP_GE_OQ), one);
+  inside = _mm256_and_pd(inside, _mm256_and_pd(_mm256_cmp_pd(x, zero(), _CMP_GE_OQ), _mm256_cmp_pd(x, one, _CMP_LT_OQ)));
+  return x;
+}
+
+// The particles [begin, end) of one chunk under viscous damping: ParticleLoop::update four
+// particles at a time. In batches of up to 16 blocks of four: the net forces and torques are
+// gathered one particle at a time (pair order), then the blocks are moved. `ok` is cleared if a
+// particle cannot be wrapped back into the cell.
+template <bool Rotate>
+AVX2 void particle_chunk(const ParticleLoop<Rotate, ViscousDamping>& loop, std::size_t begin, std::size_t end,
+                         MotionSums& out, bool& ok) {
+  constexpr std::size_t batch = 16;  // blocks
+  Vec3 torque[4 * batch];
+  V acc = zero();  // twice: kinetic_half_step, kinetic_centred, damping_loss; 0
+  V inside = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
+  const ViscousDamping& damping = loop.damping;
+  const V dt = splat(loop.dt);
+  const V dtLx = splat(loop.dt_over_L[0]), dtLy = splat(loop.dt_over_L[1]), dtLz = splat(loop.dt_over_L[2]);
+  std::size_t i = begin;
+  while (i + 4 <= end) {
+    const std::size_t n_blocks = std::min(batch, (end - i) / 4);
+    for (std::size_t q = 0; q < 4 * n_blocks; ++q) {
+      Vec3 f, t;
+      loop.gather(i + q, f, t);
+      loop.net[i + q] = f;
+      torque[q] = t;
+    }
+    for (std::size_t b = 0; b < n_blocks; ++b) {
+      const std::size_t ib = i + 4 * b;
+      const V3 f = load4(loop.net + ib), v_old = load4(loop.v + ib);
+      const V a = _mm256_loadu_pd(damping.a.data() + ib), c = _mm256_loadu_pd(damping.b.data() + ib);
+      const V3 v_new = a * v_old + c * f;
+      store4(loop.v + ib, v_new);
+      const V3 s = load4(loop.s + ib);
+      store4(loop.s + ib, {wrap(s.x + v_new.x * dtLx, inside), wrap(s.y + v_new.y * dtLy, inside),
+                           wrap(s.z + v_new.z * dtLz, inside)});
+      const V m = _mm256_loadu_pd(loop.mass + ib);
+      const V twice_ke_new = m * dot(v_new, v_new);
+      const Rows moved = transpose(twice_ke_new, m * dot(v_old, v_new),
+                                   dt * dot(f, v_old + v_new) - (twice_ke_new - m * dot(v_old, v_old)), zero());
+      if constexpr (Rotate) {
+        const V3 t = load4(torque + 4 * b), w_old = load4(loop.omega + ib);
+        const V a_rot = _mm256_loadu_pd(damping.a_rot.data() + ib), c_rot = _mm256_loadu_pd(damping.b_rot.data() + ib);
+        const V3 w_new = a_rot * w_old + c_rot * t;
+        store4(loop.omega + ib, w_new);
+        const V I = _mm256_loadu_pd(loop.inertia + ib);
+        const V twice_rot_new = I * dot(w_new, w_new);
+        const Rows spun = transpose(zero(), I * dot(w_old, w_new),
+                                    dt * dot(t, w_old + w_new) - (twice_rot_new - I * dot(w_old, w_old)), zero());
+        for (int p = 0; p < 4; ++p) acc = (acc + moved.row[p]) + spun.row[p];
+      } else {
+        for (int p = 0; p < 4; ++p) acc = acc + moved.row[p];
+      }
+    }
+    i += 4 * n_blocks;
+  }
+  alignas(32) double sums[4];
+  _mm256_store_pd(sums, acc);
+  out = {sums[0], sums[1], sums[2]};
+  ok = _mm256_movemask_pd(inside) == 0xF;
+  for (; i < end; ++i) {  // the last particles, one by one
+    Vec3 f, t;
+    loop.gather(i, f, t);
+    ok &= loop.update(i, f, t, out);
+  }
+}
+
 }  // namespace
+
+template <bool Rotate>
+MotionSums integrate_simd(const ViscousDamping& damping, Particles& p, const PeriodicCell& cell, const PairIndex& index,
+                          PairForces& pf, std::vector<Vec3>& force, double dt) {
+  const ParticleLoop<Rotate, ViscousDamping> loop(damping, p, cell, index, pf, force, dt);
+  const std::ptrdiff_t chunks = chunk_count(loop.n);
+  MotionSums* motion_sums = pf.motion_sums.data();
+  int wrapped = 1;
+#pragma omp parallel for schedule(static) reduction(&& : wrapped)
+  for (std::ptrdiff_t c = 0; c < chunks; ++c) {
+    const std::size_t begin = static_cast<std::size_t>(c * chunk_size);
+    bool ok = true;
+    particle_chunk(loop, begin, std::min(loop.n, begin + static_cast<std::size_t>(chunk_size)), motion_sums[c], ok);
+    wrapped = wrapped && ok;
+  }
+  return total_of_chunks(pf.motion_sums, wrapped);
+}
+
+template MotionSums integrate_simd<true>(const ViscousDamping&, Particles&, const PeriodicCell&, const PairIndex&,
+                                         PairForces&, std::vector<Vec3>&, double);
+template MotionSums integrate_simd<false>(const ViscousDamping&, Particles&, const PeriodicCell&, const PairIndex&,
+                                          PairForces&, std::vector<Vec3>&, double);
 
 template <class Friction>
 void compute_forces_simd(const LinearSpring<Friction>& law, const Particles& p, const PeriodicCell& cell,

@@ -22,4 +22,10 @@ template <class Friction>
 void compute_forces_simd(const LinearSpring<Friction>& law, const Particles& p, const PeriodicCell& cell,
                          PairList& pairs, const Vec3& strain_rate, double dt, PairForces& out, StepSums& sums);
 
+// As `integrate` with viscous damping (the vectorised leapfrog update, four particles at a time);
+// call only if simd_forces_available().
+template <bool Rotate>
+MotionSums integrate_simd(const ViscousDamping& damping, Particles& p, const PeriodicCell& cell, const PairIndex& index,
+                          PairForces& pf, std::vector<Vec3>& force, double dt);
+
 }  // namespace dem

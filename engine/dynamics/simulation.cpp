@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <type_traits>
 
 #include "dynamics/kernel.hpp"
 #include "dynamics/kernel_simd.hpp"
@@ -33,6 +34,19 @@ StepSums total_of_chunks(const std::vector<StepSums>& chunk_sums, const Periodic
   return total;
 }
 
+MotionSums total_of_chunks(const std::vector<MotionSums>& chunk_sums, bool wrapped) {
+  MotionSums total;
+  for (const MotionSums& chunk : chunk_sums) {
+    total.kinetic_half_step += chunk.kinetic_half_step;
+    total.kinetic_centred += chunk.kinetic_centred;
+    total.damping_loss += chunk.damping_loss;
+  }
+  total.kinetic_half_step = wrapped ? 0.5 * total.kinetic_half_step : std::nan("");
+  total.kinetic_centred *= 0.5;
+  total.damping_loss *= 0.5;
+  return total;
+}
+
 struct Simulation::Kernel {
   virtual ~Kernel() = default;
   virtual void forces(Simulation& sim) = 0;
@@ -52,6 +66,10 @@ struct KernelImpl final : Simulation::Kernel {
       compute_forces(law, s.particles_, s.cell_, s.list_.pairs(), s.strain_rate_, s.dt_, *s.pair_forces_, s.sums_);
   }
   MotionSums integrate(Simulation& s) override {
+    if constexpr (std::is_same_v<DampingPolicy, ViscousDamping>)
+      if (simd)
+        return integrate_simd<Friction::has_tangential>(damping, s.particles_, s.cell_, s.list_.index(),
+                                                        *s.pair_forces_, s.force_, s.dt_);
     return dem::integrate<Friction::has_tangential>(damping, s.particles_, s.cell_, s.list_.index(), *s.pair_forces_,
                                                     s.force_, s.dt_);
   }

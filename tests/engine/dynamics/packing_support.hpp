@@ -12,13 +12,14 @@
 
 namespace dem::test {
 
-// 1,000 spheres (3.0-4.5 mm) on a 10x10x10 lattice of spacing 4.6 mm, compressed to 100 kPa
-// with the adaptive stress servo for `steps` steps: contacts form, slide and break.
-inline Simulation compressed(double friction, int threads, int steps) {
+// 1,000 spheres (3.0-4.5 mm) on a 10x10x10 lattice of spacing 4.6 mm (or side^3 spheres), compressed
+// to 100 kPa with the adaptive stress servo for `steps` steps: contacts form, slide and break.
+inline Simulation compressed(double friction, int threads, int steps, int side = 10) {
+  const std::string n = std::to_string(side);
   const std::string text =
       "name: threads\n"
       "particles:\n"
-      "  lattice: {n: [10, 10, 10], spacing: 4.6e-3, seed: 5}\n"
+      "  lattice: {n: [" + n + ", " + n + ", " + n + "], spacing: 4.6e-3, seed: 5}\n"
       "  grading: {diameters: [3.0e-3, 4.5e-3], percent_finer: [0, 100]}\n"
       "material: {density: 2650, kn: 1.0e6, ks: 1.0e6, friction: " + std::to_string(friction) + "}\n"
       "numerics: {time_step: 1.0e-6}\n"
