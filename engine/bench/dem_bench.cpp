@@ -5,9 +5,10 @@
 //    mu = 0 (a frictionless packing unjams at the mu = 0.5 packing's volume, so each friction is
 //    timed on a packing jammed with it; the mu = 0 one has more contacts).
 // 2. Loads each and times the step loop at constant stress (the servo holding 100 kPa) on 1 and
-//    on 2 threads, median of several repetitions, and checks that both thread counts end in the
-//    same state bit for bit.
-// Prints a table and writes BENCH_DIR/bench.json.
+//    on 2 threads, and as two runs at once with one thread each (the pipeline's -j 2), median of
+//    several repetitions, and checks that every way ends in the same state bit for bit.
+// Prints a table and writes BENCH_DIR/bench.json. STEPS = 0 builds the packings only (timing
+// right after building them in the same process was up to 27 % slower, mu = 0.5, one thread).
 //   dem-bench [BENCH_DIR] [STEPS] [REPETITIONS]
 #include <omp.h>
 #include <sys/resource.h>
@@ -59,6 +60,13 @@ struct Result {
   double speedup;  // median rate / the 1-thread median of the same friction
 };
 
+struct TwoRuns {  // two runs at once, one thread each
+  double friction;
+  double median_rate, min_rate, max_rate;  // both runs together
+  bool same_as_one_thread;
+  double speedup;  // over the 1-thread median of one run
+};
+
 // Builds the packing for `friction` once (cached) and returns its path.
 std::string packing_for(const std::string& dir, double friction) {
   namespace fs = std::filesystem;
@@ -82,7 +90,12 @@ int main(int argc, char** argv) {
   const long steps = argc > 2 ? std::stol(argv[2]) : 4000;
   const int reps = argc > 3 ? std::stoi(argv[3]) : 5;
   fs::create_directories(dir);
+  if (steps == 0) {  // build the packings only: timing in a fresh process gives steadier numbers
+    for (double mu : {0.5, 0.0}) packing_for(dir, mu);
+    return 0;
+  }
   std::vector<Result> results;
+  std::vector<TwoRuns> pairs;
   for (double mu : {0.5, 0.0}) {
     const std::string packing = packing_for(dir, mu);
     const dem::SceneConfig scene = dem::scene_from_text(timing_scene(packing, mu, 1000000000L), dir + "/bench.yaml");
@@ -112,6 +125,31 @@ int main(int argc, char** argv) {
       if (threads == 1) one_thread_rate = median;
       results.push_back({mu, threads, median, rates.front(), rates.back(), z, same, median / one_thread_rate});
     }
+    // Two runs at once, one thread each (what the pipeline does with -j 2): the total rate.
+    std::vector<double> rates;
+    bool same = true;
+    for (int r = 0; r < reps; ++r) {
+      double wall = 0;
+      std::vector<dem::Vec3> ends[2];
+#pragma omp parallel num_threads(2) reduction(max : wall)
+      {  // nested regions are inactive: each run's loops run on its own thread only
+        dem::Simulation sim = dem::build_simulation(scene);
+        dem::CellTargets targets;
+        for (auto& t : targets) t = {dem::AxisTarget::Mode::Stress, 0, 1e5, 0};
+        const dem::ServoSettings servo{scene.servo.gain, 1.0};
+        for (int i = 0; i < 200; ++i) sim.step(targets, servo);
+#pragma omp barrier
+        const auto t0 = std::chrono::steady_clock::now();
+        for (long i = 0; i < steps; ++i) sim.step(targets, servo);
+        wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        ends[omp_get_thread_num()] = sim.particles().s;
+      }
+      rates.push_back(2.0 * static_cast<double>(steps) * static_cast<double>(ends[0].size()) / wall);
+      same = same && ends[0] == one_thread_positions && ends[1] == one_thread_positions;
+    }
+    std::sort(rates.begin(), rates.end());
+    const double median = rates[rates.size() / 2];
+    pairs.push_back({mu, median, rates.front(), rates.back(), same, median / one_thread_rate});
   }
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
@@ -124,6 +162,9 @@ int main(int argc, char** argv) {
     std::printf("%-9.2f %-8d %-22.3e %.3e .. %.3e  %-8.2f %-10.2f %s\n", r.friction, r.threads, r.median_rate, r.min_rate,
                 r.max_rate, r.contacts_per_particle, r.speedup, r.same_as_one_thread ? "yes" : "NO");
   }
+  for (const auto& r : pairs)
+    std::printf("%-9.2f %-8s %-22.3e %.3e .. %.3e  %-8s %-10.2f %s\n", r.friction, "2 runs", r.median_rate, r.min_rate,
+                r.max_rate, "", r.speedup, r.same_as_one_thread ? "yes" : "NO");
   std::printf("peak memory (max RSS): %.1f MB\n", peak_mb);
   std::ofstream json(dir + "/bench.json");
   json << "{\n  \"code\": \"cyclic-triax dem\",\n  \"version\": \"" << dem::software_version
@@ -135,8 +176,17 @@ int main(int argc, char** argv) {
          << ", \"max\": " << results[i].max_rate << ", \"coordination_number\": " << results[i].contacts_per_particle
          << ", \"same_bits_as_1_thread\": " << (results[i].same_as_one_thread ? "true" : "false") << "}"
          << (i + 1 < results.size() ? "," : "") << "\n";
+  json << "  ],\n  \"two_runs_at_once\": [\n";
+  for (std::size_t i = 0; i < pairs.size(); ++i)
+    json << "    {\"friction\": " << pairs[i].friction << ", \"runs\": 2, \"threads_per_run\": 1"
+         << ", \"total_particle_steps_per_s_median\": " << pairs[i].median_rate << ", \"min\": " << pairs[i].min_rate
+         << ", \"max\": " << pairs[i].max_rate
+         << ", \"same_bits_as_1_thread\": " << (pairs[i].same_as_one_thread ? "true" : "false") << "}"
+         << (i + 1 < pairs.size() ? "," : "") << "\n";
   json << "  ]\n}\n";
   for (const auto& r : results)
+    if (!r.same_as_one_thread) return 1;
+  for (const auto& r : pairs)
     if (!r.same_as_one_thread) return 1;
   return 0;
 }
