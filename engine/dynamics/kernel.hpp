@@ -20,6 +20,20 @@ namespace dem {
 inline constexpr std::ptrdiff_t chunk_size = 512;
 inline std::ptrdiff_t chunk_count(std::size_t n) { return (static_cast<std::ptrdiff_t>(n) + chunk_size - 1) / chunk_size; }
 
+// Calls body(c, begin, end) for every chunk c = [begin, end) of n items, chunks in parallel;
+// returns whether every call returned true.
+template <class Body>
+bool for_each_chunk(std::size_t n, const Body& body) {
+  const std::ptrdiff_t chunks = chunk_count(n);
+  int all = 1;
+#pragma omp parallel for schedule(static) reduction(&& : all)
+  for (std::ptrdiff_t c = 0; c < chunks; ++c) {
+    const std::size_t begin = static_cast<std::size_t>(c * chunk_size);
+    all = body(static_cast<std::size_t>(c), begin, std::min(n, begin + static_cast<std::size_t>(chunk_size))) && all;
+  }
+  return all;
+}
+
 // What `integrate` sums over the particles [J].
 struct MotionSums {
   double kinetic_half_step = 0;  // translational, 1/2 m |v(n+1/2)|^2
@@ -149,16 +163,13 @@ template <class Friction>
 void compute_forces(const LinearSpring<Friction>& law, const Particles& p, const PeriodicCell& cell, PairList& pairs,
                     const Vec3& strain_rate, double dt, PairForces& out, StepSums& sums) {
   const PairLoop<Friction> loop(law, p, cell, pairs, strain_rate, dt, out);
-  const std::ptrdiff_t chunks = chunk_count(loop.n_pairs);
-  StepSums* chunk_sums = out.chunk_sums.data();
-#pragma omp parallel for schedule(static)
-  for (std::ptrdiff_t c = 0; c < chunks; ++c) {
+  for_each_chunk(loop.n_pairs, [&](std::size_t c, std::size_t begin, std::size_t end) {
     StepSums chunk;
     const PairLoop<Friction> local = loop;  // a local copy: its pointers stay in registers
-    const std::size_t end = std::min(loop.n_pairs, static_cast<std::size_t>((c + 1) * chunk_size));
-    for (std::size_t k = static_cast<std::size_t>(c * chunk_size); k < end; ++k) local.pair(k, chunk);
-    chunk_sums[c] = chunk;
-  }
+    for (std::size_t k = begin; k < end; ++k) local.pair(k, chunk);
+    out.chunk_sums[c] = chunk;
+    return true;
+  });
   sums = total_of_chunks(out.chunk_sums, cell);
 }
 
@@ -296,23 +307,18 @@ template <bool Rotate, class DampingPolicy>
 MotionSums integrate(const DampingPolicy& damping, Particles& p, const PeriodicCell& cell, const PairIndex& index,
                      PairForces& pf, std::vector<Vec3>& force, double dt) {
   const ParticleLoop<Rotate, DampingPolicy> loop(damping, p, cell, index, pf, force, dt);
-  const std::ptrdiff_t chunks = chunk_count(loop.n);
-  MotionSums* motion_sums = pf.motion_sums.data();
-  int wrapped = 1;
-#pragma omp parallel for schedule(static) reduction(&& : wrapped)
-  for (std::ptrdiff_t c = 0; c < chunks; ++c) {
-    MotionSums chunk;
-    bool chunk_ok = true;
-    const std::size_t end = std::min(loop.n, static_cast<std::size_t>((c + 1) * chunk_size));
+  const bool wrapped = for_each_chunk(loop.n, [&](std::size_t c, std::size_t begin, std::size_t end) {
+    MotionSums chunk;  // sums of twice the energies; halved by total_of_chunks
+    bool ok = true;
     const ParticleLoop<Rotate, DampingPolicy> local = loop;  // a local copy: its pointers stay in registers
-    for (std::size_t i = static_cast<std::size_t>(c * chunk_size); i < end; ++i) {
+    for (std::size_t i = begin; i < end; ++i) {
       Vec3 f, t;
       local.gather(i, f, t);
-      chunk_ok &= local.update(i, f, t, chunk);
+      ok &= local.update(i, f, t, chunk);
     }
-    motion_sums[c] = chunk;  // sums of twice the energies; halved below
-    wrapped = wrapped && chunk_ok;
-  }
+    pf.motion_sums[c] = chunk;
+    return ok;
+  });
   return total_of_chunks(pf.motion_sums, wrapped);
 }
 

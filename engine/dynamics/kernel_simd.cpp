@@ -375,16 +375,11 @@ template <bool Rotate>
 MotionSums integrate_simd(const ViscousDamping& damping, Particles& p, const PeriodicCell& cell, const PairIndex& index,
                           PairForces& pf, std::vector<Vec3>& force, double dt) {
   const ParticleLoop<Rotate, ViscousDamping> loop(damping, p, cell, index, pf, force, dt);
-  const std::ptrdiff_t chunks = chunk_count(loop.n);
-  MotionSums* motion_sums = pf.motion_sums.data();
-  int wrapped = 1;
-#pragma omp parallel for schedule(static) reduction(&& : wrapped)
-  for (std::ptrdiff_t c = 0; c < chunks; ++c) {
-    const std::size_t begin = static_cast<std::size_t>(c * chunk_size);
+  const bool wrapped = for_each_chunk(loop.n, [&](std::size_t c, std::size_t begin, std::size_t end) {
     bool ok = true;
-    particle_chunk(loop, begin, std::min(loop.n, begin + static_cast<std::size_t>(chunk_size)), motion_sums[c], ok);
-    wrapped = wrapped && ok;
-  }
+    particle_chunk(loop, begin, end, pf.motion_sums[c], ok);
+    return ok;
+  });
   return total_of_chunks(pf.motion_sums, wrapped);
 }
 
@@ -397,13 +392,10 @@ template <class Friction>
 void compute_forces_simd(const LinearSpring<Friction>& law, const Particles& p, const PeriodicCell& cell,
                          PairList& pairs, const Vec3& strain_rate, double dt, PairForces& out, StepSums& sums) {
   const PairLoop<Friction> loop(law, p, cell, pairs, strain_rate, dt, out);
-  const std::ptrdiff_t chunks = chunk_count(loop.n_pairs);
-  StepSums* chunk_sums = out.chunk_sums.data();
-#pragma omp parallel for schedule(static)
-  for (std::ptrdiff_t c = 0; c < chunks; ++c) {
-    const std::size_t begin = static_cast<std::size_t>(c * chunk_size);
-    chunk(loop, begin, std::min(loop.n_pairs, begin + static_cast<std::size_t>(chunk_size)), chunk_sums[c]);
-  }
+  for_each_chunk(loop.n_pairs, [&](std::size_t c, std::size_t begin, std::size_t end) {
+    chunk(loop, begin, end, out.chunk_sums[c]);
+    return true;
+  });
   sums = total_of_chunks(out.chunk_sums, cell);
 }
 
