@@ -74,7 +74,8 @@ fuzz: deps
 	  tail -n 14 $(BUILD)-fuzz/$$t.log; [ $$rc = 0 ] || { echo "fuzz_$$t found a bug: $(BUILD)-fuzz/$$t.log"; exit 1; }; \
 	done
 
-# Speed of the engine (1 and 2 threads) and of LAMMPS on the same packings -> reports/bench.{json,md}.
+# Speed of the engine (1 and 2 threads, and two runs at once) and of LAMMPS on the same packings
+# -> reports/bench.{json,md}.
 bench: build
 	@dpkg -s lammps >/dev/null 2>&1 || { echo "installing: lammps (for the side-by-side benchmark)"; \
 	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get update -qq && \
