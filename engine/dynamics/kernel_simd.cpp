@@ -13,7 +13,7 @@
 
 namespace dem {
 
-bool simd_forces_available() {
+bool simd_available() {
   static const bool available = __builtin_cpu_supports("avx2");
   return available;
 }
@@ -28,12 +28,12 @@ bool& simd_switch() {
 }
 }  // namespace
 
-bool simd_forces_enabled() { return simd_forces_available() && simd_switch(); }
-void enable_simd_forces(bool on) { simd_switch() = on; }
+bool simd_enabled() { return simd_available() && simd_switch(); }
+void enable_simd(bool on) { simd_switch() = on; }
 
 namespace {
 
-using V = __m256d;  // four lanes: four consecutive pairs
+using V = __m256d;  // four lanes: four consecutive pairs, or four consecutive particles
 
 struct V3 {
   V x, y, z;
@@ -97,7 +97,7 @@ AVX2 inline V gather(const double* base, const std::uint32_t* index) {
   return _mm256_setr_pd(base[index[0]], base[index[1]], base[index[2]], base[index[3]]);
 }
 
-// A 4 x 4 transpose: given four components c[0..3] of four items (lane p = item p), the four
+// A 4 x 4 transpose: given four components c0..c3 of four items (lane p = item p), the four
 // items' rows (row[p] lane q = component q of item p).
 struct Rows {
   V row[4];
@@ -116,15 +116,8 @@ struct Accumulator {
   V acc[4];
   std::size_t contacts = 0;
 
-  AVX2 explicit Accumulator(const StepSums& s) {
-    const Mat3& m = s.stress_Pa;
-    const Vec3& k = s.stiffness_Pa;
-    acc[0] = _mm256_setr_pd(m(0, 0), m(1, 0), m(2, 0), m(0, 1));
-    acc[1] = _mm256_setr_pd(m(1, 1), m(2, 1), m(0, 2), m(1, 2));
-    acc[2] = _mm256_setr_pd(m(2, 2), k[0], k[1], k[2]);
-    acc[3] = _mm256_setr_pd(s.sum_normal_force_N, s.elastic_normal_J, s.elastic_tangential_J, s.friction_loss_J);
-    contacts = s.contacts;
-  }
+  AVX2 Accumulator() : acc{zero(), zero(), zero(), zero()} {}
+
   AVX2 StepSums sums() const {
     alignas(32) double a[16];
     for (int g = 0; g < 4; ++g) _mm256_store_pd(a + 4 * g, acc[g]);
@@ -170,7 +163,7 @@ AVX2 void chunk(const PairLoop<Friction>& loop, std::size_t begin, std::size_t e
   constexpr bool frictional = Friction::has_tangential;
   constexpr std::size_t batch = 16;  // blocks
   Block blocks[batch];
-  Accumulator acc{StepSums{}};
+  Accumulator acc;
   const Vec3& L = loop.cell.lengths();
   const V Lx = splat(L[0]), Ly = splat(L[1]), Lz = splat(L[2]);
   const V kn = splat(loop.law.kn), half = splat(0.5);

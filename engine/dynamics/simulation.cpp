@@ -57,7 +57,7 @@ template <class Friction, class DampingPolicy>
 struct KernelImpl final : Simulation::Kernel {
   LinearSpring<Friction> law;
   DampingPolicy damping;
-  bool simd = simd_forces_enabled();  // the same result either way; the vectorised loop is faster
+  bool simd = simd_enabled();  // the same result either way; the vectorised loop is faster
   KernelImpl(LinearSpring<Friction> l, DampingPolicy d) : law(l), damping(std::move(d)) {}
   void forces(Simulation& s) override {
     if (simd)

@@ -19,17 +19,17 @@ using namespace dem::test;
 namespace {
 
 Simulation compressed_with(bool simd, double friction, int steps = 12000, int side = 10) {
-  const bool saved = simd_forces_enabled();
-  enable_simd_forces(simd);
+  const bool saved = simd_enabled();
+  enable_simd(simd);
   Simulation sim = compressed(friction, 1, steps, side);
-  enable_simd_forces(saved);
+  enable_simd(saved);
   return sim;
 }
 
 }  // namespace
 
 TEST_CASE("the vectorised loops give the scalar loops' run bit for bit", "[simd]") {
-  if (!simd_forces_available()) {
+  if (!simd_available()) {
     WARN("this CPU has no AVX2: only the scalar loop runs, nothing to compare");
     return;
   }
