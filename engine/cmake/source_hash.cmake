@@ -1,7 +1,7 @@
 # Writes OUT with a hash of every engine source file (run at each build; the file is rewritten only
 # when the hash changes). The pipeline keys its reuse of results on this hash, so a change to
 # documentation or to the pipeline does not invalidate finished runs, but any engine change does.
-file(GLOB_RECURSE sources ${ENGINE_DIR}/*.cpp ${ENGINE_DIR}/*.hpp ${ENGINE_DIR}/*.in)
+file(GLOB_RECURSE sources ${ENGINE_DIR}/*.cpp ${ENGINE_DIR}/*.hpp ${ENGINE_DIR}/*.inc ${ENGINE_DIR}/*.in)
 list(FILTER sources EXCLUDE REGEX "/bench/")  # the benchmark does not change any result
 list(SORT sources)
 set(all "")

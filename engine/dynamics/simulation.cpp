@@ -57,11 +57,11 @@ template <class Friction, class DampingPolicy>
 struct KernelImpl final : Simulation::Kernel {
   LinearSpring<Friction> law;
   DampingPolicy damping;
-  bool simd = simd_enabled();  // the same result either way; the vectorised loop is faster
+  int simd = simd_width();  // the same result at any width; wider is faster
   KernelImpl(LinearSpring<Friction> l, DampingPolicy d) : law(l), damping(std::move(d)) {}
   void forces(Simulation& s) override {
     if (simd)
-      compute_forces_simd(law, s.particles_, s.cell_, s.list_.pairs(), s.strain_rate_, s.dt_, *s.pair_forces_, s.sums_);
+      compute_forces_simd(simd, law, s.particles_, s.cell_, s.list_.pairs(), s.strain_rate_, s.dt_, *s.pair_forces_, s.sums_);
     else
       compute_forces(law, s.particles_, s.cell_, s.list_.pairs(), s.strain_rate_, s.dt_, *s.pair_forces_, s.sums_);
   }

@@ -1,5 +1,6 @@
-// The vectorised force loop (four pairs per AVX2 operation) and leapfrog update (four particles)
-// must give the scalar loops' result bit for bit.
+// The vectorised force loops (eight pairs per AVX-512 operation, four per AVX2 operation) and
+// leapfrog update (four particles) must give the scalar loops' result bit for bit, at every width
+// this CPU has.
 //
 // Why exact equality is the right expectation: each lane performs the scalar code's operations in
 // the same order, and IEEE 754 makes every one of them (+, -, *, /, sqrt) correctly rounded, so a
@@ -10,6 +11,8 @@
 // compressing packing, where contacts form, stick, slide and open.
 #include <catch2/catch.hpp>
 
+#include <vector>
+
 #include "dynamics/kernel_simd.hpp"
 #include "engine/dynamics/packing_support.hpp"
 
@@ -18,42 +21,58 @@ using namespace dem::test;
 
 namespace {
 
-Simulation compressed_with(bool simd, double friction, int steps = 12000, int side = 10) {
-  const bool saved = simd_enabled();
-  enable_simd(simd);
+Simulation compressed_with(int width, double friction, int steps = 12000, int side = 10) {
+  const int saved = simd_width();
+  cap_simd_width(width);
+  REQUIRE(simd_width() == width);
   Simulation sim = compressed(friction, 1, steps, side);
-  enable_simd(saved);
+  cap_simd_width(saved);
   return sim;
+}
+
+// The vector widths this CPU can run.
+std::vector<int> widths() {
+  std::vector<int> out;
+  for (int w : {4, 8})
+    if (w <= simd_width_available()) out.push_back(w);
+  return out;
 }
 
 }  // namespace
 
 TEST_CASE("the vectorised loops give the scalar loops' run bit for bit", "[simd]") {
-  if (!simd_available()) {
+  if (widths().empty()) {
     WARN("this CPU has no AVX2: only the scalar loop runs, nothing to compare");
     return;
   }
+  if (simd_width_available() < 8) WARN("this CPU has no AVX-512: only the four-lane loops are compared");
   SECTION("frictional") {
     // 729 spheres: the last chunk of 217 particles ends with one moved by the scalar code.
-    const Simulation scalar = compressed_with(false, 0.5, 12000, 9);
-    const Simulation simd = compressed_with(true, 0.5, 12000, 9);
+    const Simulation scalar = compressed_with(0, 0.5, 12000, 9);
     std::size_t sliding = 0;
     for (auto f : scalar.pairs().sliding) sliding += f;
     REQUIRE(sliding > 0);  // the Coulomb cap ran
-    // Pairs left after the last block of four go through the scalar code: make sure both paths ran.
-    REQUIRE(scalar.pairs().size() % 4 != 0);
-    require_identical(scalar, simd);
-    REQUIRE(scalar.energy().dissipated_friction == simd.energy().dissipated_friction);
-    REQUIRE(scalar.energy().dissipated_damping == simd.energy().dissipated_damping);
-    REQUIRE(scalar.energy().kinetic == simd.energy().kinetic);
-    REQUIRE(scalar.sums().elastic_tangential_J == simd.sums().elastic_tangential_J);
-    REQUIRE(scalar.sums().stiffness_Pa == simd.sums().stiffness_Pa);
+    // Pairs left after the last full block go through the scalar code: make sure both paths ran.
+    REQUIRE(scalar.pairs().size() % 8 % 4 != 0);
+    for (int w : widths()) {
+      INFO("vector width " << w);
+      const Simulation simd = compressed_with(w, 0.5, 12000, 9);
+      require_identical(scalar, simd);
+      REQUIRE(scalar.energy().dissipated_friction == simd.energy().dissipated_friction);
+      REQUIRE(scalar.energy().dissipated_damping == simd.energy().dissipated_damping);
+      REQUIRE(scalar.energy().kinetic == simd.energy().kinetic);
+      REQUIRE(scalar.sums().elastic_tangential_J == simd.sums().elastic_tangential_J);
+      REQUIRE(scalar.sums().stiffness_Pa == simd.sums().stiffness_Pa);
+    }
   }
   SECTION("frictionless") {
-    const Simulation scalar = compressed_with(false, 0.0);
-    const Simulation simd = compressed_with(true, 0.0);
-    require_identical(scalar, simd);
-    REQUIRE(scalar.sums().elastic_normal_J == simd.sums().elastic_normal_J);
-    REQUIRE(scalar.sums().stiffness_Pa == simd.sums().stiffness_Pa);
+    const Simulation scalar = compressed_with(0, 0.0);
+    for (int w : widths()) {
+      INFO("vector width " << w);
+      const Simulation simd = compressed_with(w, 0.0);
+      require_identical(scalar, simd);
+      REQUIRE(scalar.sums().elastic_normal_J == simd.sums().elastic_normal_J);
+      REQUIRE(scalar.sums().stiffness_Pa == simd.sums().stiffness_Pa);
+    }
   }
 }
