@@ -1,5 +1,5 @@
 // pipeline: runs a study (every density x test) with the dem engine, reusing finished results.
-//   pipeline STUDY.yaml [--profile paper|quick] [--out DIR] [-j N] [--threads T] [--dem PATH] [--plan]
+//   pipeline STUDY.yaml... [--profile paper|quick] [--out DIR] [-j N] [--threads T] [--dem PATH] [--plan]
 #include <unistd.h>
 
 #include <algorithm>
@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "config/study_config.hpp"
 #include "config/yaml_section.hpp"
@@ -16,13 +17,15 @@
 namespace {
 
 const char* usage =
-    "usage: pipeline STUDY.yaml [--profile paper|quick] [--out DIR] [-j N] [--threads T] [--dem PATH] [--plan]\n"
-    "  --profile  study size (default paper)        --out  results folder (default: the study's output/PROFILE)\n"
+    "usage: pipeline STUDY.yaml... [--profile paper|quick] [--out DIR] [-j N] [--threads T] [--dem PATH] [--plan]\n"
+    "  --profile  study size (default paper)        --out  results folder (default: the study's output/PROFILE;\n"
+    "                                                      with one study file only)\n"
     "  -j         runs at once (default: cores)     --dem  the engine (default: dem beside this program)\n"
     "  --threads  threads inside each run (default: cores / runs at once, at least 1; results do not depend on it)\n"
     "  --plan     write the resolved scenes and list the runs, run nothing\n"
     "A run whose result is complete with the same input hash (resolved scene, engine version and the\n"
-    "sample it starts from) is reused, so an interrupted study continues where it stopped.\n";
+    "sample it starts from) is reused, so an interrupted study continues where it stopped. Several\n"
+    "study files share the -j slots: one study's runs fill the cores while another's last runs finish.\n";
 
 // The engine's source hash and result schema: what a result's reuse depends on.
 std::string engine_version(const std::string& dem) {
@@ -42,7 +45,8 @@ std::string engine_version(const std::string& dem) {
 
 int main(int argc, char** argv) {
   namespace fs = std::filesystem;
-  std::string study_file, profile = "paper", out, dem;
+  std::vector<std::string> study_files;
+  std::string profile = "paper", out, dem;
   const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   int jobs = cores;
   int threads = 0;  // 0: cores / jobs
@@ -60,22 +64,35 @@ int main(int argc, char** argv) {
       try { threads = std::stoi(argv[++i]); } catch (const std::exception&) { threads = 0; }
       if (threads < 1 || threads > 256) { std::fprintf(stderr, "pipeline: --threads must be an integer in [1, 256]\n"); return 2; }
     } else if (a == "--plan") plan_only = true;
-    else if (!a.empty() && a[0] != '-' && study_file.empty()) study_file = a;
+    else if (!a.empty() && a[0] != '-') study_files.push_back(a);
     else { std::fprintf(stderr, "pipeline: unexpected argument '%s'\n%s", a.c_str(), usage); return 2; }
   }
   if (threads == 0) threads = std::max(1, cores / jobs);
-  if (study_file.empty()) { std::fprintf(stderr, "pipeline: need a study file\n%s", usage); return 2; }
+  if (study_files.empty()) { std::fprintf(stderr, "pipeline: need a study file\n%s", usage); return 2; }
+  if (study_files.size() > 1 && !out.empty()) {
+    std::fprintf(stderr, "pipeline: --out names the results folder of one study; give one study file with it\n");
+    return 2;
+  }
   if (dem.empty()) dem = (fs::canonical("/proc/self/exe").parent_path() / "dem").string();
   const std::string version = engine_version(dem);
   if (version.empty()) { std::fprintf(stderr, "pipeline: cannot run the engine '%s --source-hash'\n", dem.c_str()); return 2; }
   try {
-    const pipeline::Study study = pipeline::load_study(study_file);
-    const pipeline::Profile& prof = study.profile(profile);
-    if (out.empty()) out = (fs::path(study.output) / profile).string();
-    out = fs::absolute(out).lexically_normal().string();
-    const auto runs = pipeline::plan_study(study, prof, out, version);
-    pipeline::write_scenes(runs);
-    pipeline::write_manifest(runs, study, out);
+    // Every study is planned (and its scenes checked) before anything runs. With several, run names
+    // get the study's name in front (paper/loose_prepare).
+    std::vector<pipeline::StudyPlan> plans;
+    for (const std::string& study_file : study_files) {
+      const pipeline::Study study = pipeline::load_study(study_file);
+      const pipeline::Profile& prof = study.profile(profile);
+      std::string study_out = out.empty() ? (fs::path(study.output) / profile).string() : out;
+      study_out = fs::absolute(study_out).lexically_normal().string();
+      plans.push_back({study.name, pipeline::plan_study(study, prof, study_out, version)});
+      pipeline::write_scenes(plans.back().runs);
+      pipeline::write_manifest(plans.back().runs, study, study_out);
+      if (!plan_only)
+        std::printf("[pipeline] study '%s', profile %s, engine %s, results in %s\n", study.name.c_str(), profile.c_str(),
+                    version.c_str(), study_out.c_str());
+    }
+    const std::vector<pipeline::PlannedRun> runs = pipeline::join_studies(std::move(plans));
     if (plan_only) {
       for (const auto& r : runs)
         std::printf("%-24s %-9s %.3g particle-steps  %s\n", r.name.c_str(),
@@ -85,8 +102,6 @@ int main(int argc, char** argv) {
                     r.cost, r.scene_file.c_str());
       return 0;
     }
-    std::printf("[pipeline] study '%s', profile %s, engine %s, results in %s\n", study.name.c_str(), profile.c_str(),
-                version.c_str(), out.c_str());
     const pipeline::Outcome o = pipeline::execute(runs, dem, jobs, threads);
     std::printf("[pipeline] done in %.1f min: %d ran, %d reused, %d failed, %d blocked", o.wall_time_s / 60, o.ran,
                 o.reused, o.failed, o.blocked);

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 
 #include "config/scene_config.hpp"
 #include "config/yaml_section.hpp"
@@ -198,6 +199,24 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
         run.cost = particles[prep_index] * estimated_steps(tp);
         runs.push_back(run);
       }
+    }
+  }
+  return runs;
+}
+
+std::vector<PlannedRun> join_studies(std::vector<StudyPlan> plans) {
+  std::vector<PlannedRun> runs;
+  std::map<std::string, std::string> writer;  // result file -> run
+  for (StudyPlan& plan : plans) {
+    const int offset = static_cast<int>(runs.size());
+    for (PlannedRun& r : plan.runs) {
+      if (r.depends_on >= 0) r.depends_on += offset;
+      if (plans.size() > 1) r.name = plan.name + "/" + r.name;
+      const auto [it, added] = writer.emplace(r.result, r.name);
+      if (!added)
+        throw std::runtime_error("runs " + it->second + " and " + r.name + " would both write " + r.result +
+                                 ": give each study once, each with its own output folder");
+      runs.push_back(std::move(r));
     }
   }
   return runs;

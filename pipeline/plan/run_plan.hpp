@@ -28,6 +28,17 @@ struct PlannedRun {
 std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, const std::string& out_dir,
                                    const std::string& engine_version);
 
+// One planned study among several run together.
+struct StudyPlan {
+  std::string name;
+  std::vector<PlannedRun> runs;
+};
+
+// Joins the runs of several studies into one list for `execute`, so that they share its slots:
+// dependencies renumbered and, with more than one study, each name prefixed with its study's
+// ("paper/loose_prepare"). Throws std::runtime_error if two runs would write the same result.
+std::vector<PlannedRun> join_studies(std::vector<StudyPlan> plans);
+
 // Writes the resolved scenes (only where the text changed, so file times stay meaningful).
 void write_scenes(const std::vector<PlannedRun>& runs);
 

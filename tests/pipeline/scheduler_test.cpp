@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "config/study_config.hpp"
 #include "exec/scheduler.hpp"
@@ -92,4 +93,37 @@ TEST_CASE("pipeline: every preparation runs before any test (longest chain first
   const auto finished = [&](const std::string& name) { return fs::last_write_time(dir / "out" / (name + ".h5")); };
   CHECK(finished("dense_prepare") < finished("loose_test1"));
   CHECK(finished("loose_prepare") < finished("dense_prepare"));
+}
+
+TEST_CASE("pipeline: several studies share one list of runs, each test after its own study's sample", "[pipeline][scheduler]") {
+  const fs::path root = fs::path(DEM_BINARY_DIR) / "test_tmp" / "scheduler_joined";
+  fs::remove_all(root);
+  std::vector<pipeline::StudyPlan> plans;
+  for (const std::string name : {"first", "second"}) {
+    write_study(root / name, "2.0e-4");
+    const pipeline::Study study = pipeline::load_study((root / name / "study.yaml").string());
+    plans.push_back({name, pipeline::plan_study(study, study.profile("quick"), (root / name / "out").string(), "test-engine")});
+    pipeline::write_scenes(plans.back().runs);
+  }
+  SECTION("joined") {
+    const auto runs = pipeline::join_studies(plans);
+    REQUIRE(runs.size() == 8);
+    for (const auto& r : runs) {
+      const std::string study = r.name.substr(0, r.name.find('/'));
+      CHECK((study == "first" || study == "second"));
+      if (r.depends_on < 0) continue;  // a test: it starts from its own study's preparation of its density
+      const auto& sample = runs[static_cast<std::size_t>(r.depends_on)];
+      CHECK(sample.name == study + "/" + r.density + "_prepare");
+      CHECK(fs::path(sample.result).parent_path() == fs::path(r.result).parent_path());
+    }
+    const pipeline::Outcome o = pipeline::execute(runs, dem_binary, 2);
+    CHECK(o.ran == 8);
+    CHECK(o.failed == 0);
+    CHECK(fs::exists(root / "first" / "out" / "dense_test1.h5"));
+    CHECK(fs::exists(root / "second" / "out" / "dense_test1.h5"));
+  }
+  SECTION("a study given twice would write its results twice: refused") {
+    plans[1] = plans[0];
+    CHECK_THROWS_WITH(pipeline::join_studies(plans), Catch::Matchers::Contains("would both write"));
+  }
 }
