@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "config/scene_config.hpp"
+#include "dynamics/kernel_simd.hpp"
 #include "run/run_scene.hpp"
 #include "version.hpp"
 
@@ -154,8 +155,8 @@ int main(int argc, char** argv) {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   const double peak_mb = static_cast<double>(usage.ru_maxrss) / 1024.0;
-  std::printf("dem-bench %s: 8,000 spheres, dt = 1e-6 s, %ld steps x %d repetitions\n", dem::software_version, steps,
-              reps);
+  std::printf("dem-bench %s: 8,000 spheres, dt = 1e-6 s, %ld steps x %d repetitions, vector loops %d lanes\n",
+              dem::software_version, steps, reps, dem::simd_width());
   std::printf("%-9s %-8s %-22s %-24s %-8s %-10s %s\n", "friction", "threads", "particle-steps/s (med)", "min .. max",
               "2Nc/Np", "speed-up", "same bits as 1 thread");
   for (const auto& r : results) {
@@ -168,7 +169,7 @@ int main(int argc, char** argv) {
   std::printf("peak memory (max RSS): %.1f MB\n", peak_mb);
   std::ofstream json(dir + "/bench.json");
   json << "{\n  \"code\": \"cyclic-triax dem\",\n  \"version\": \"" << dem::software_version
-       << "\",\n  \"particles\": 8000,\n  \"steps\": " << steps << ",\n  \"repetitions\": " << reps
+       << "\",\n  \"vector_lanes\": " << dem::simd_width() << ",\n  \"particles\": 8000,\n  \"steps\": " << steps << ",\n  \"repetitions\": " << reps
        << ",\n  \"peak_rss_MB\": " << peak_mb << ",\n  \"runs\": [\n";
   for (std::size_t i = 0; i < results.size(); ++i)
     json << "    {\"friction\": " << results[i].friction << ", \"threads\": " << results[i].threads

@@ -67,7 +67,8 @@ lammps_z_end() { grep '"coordination_number_end"' "$work/lammps_$1.json" | sed '
   done
   echo
   echo "Particle-steps per second, medians of $reps repetitions of $steps steps (dt = 1 µs, 8,000 spheres),"
-  echo "measured by \`make bench\` on $(nproc) cores ($(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'))."
+  echo "measured by \`make bench\` on $(nproc) cores ($(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')),"
+  echo "force loop $(grep vector_lanes "$work/bench.json" | sed 's/.*: \([0-9]*\).*/\1/') pairs per vector operation (8: AVX-512, 4: AVX2, 0: scalar)."
   echo "Peak memory of dem-bench: $(grep peak_rss_MB "$work/bench.json" | sed 's/.*: \([0-9.]*\).*/\1/') MB."
   echo "LAMMPS runs in a fixed cell without our stress servo and starts without tangential springs; where"
   echo "its 2Nc/N falls during the run (→ end), it times a loosening packing, not a like-for-like one."
