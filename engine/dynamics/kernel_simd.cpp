@@ -216,9 +216,10 @@ void particle_chunk(const ParticleLoop<Rotate, ViscousDamping>& loop, std::size_
 #pragma GCC push_options
 #pragma GCC target("avx512f")
 // GCC 12's AVX-512 intrinsics fill unused lanes from _mm512_undefined_pd(), which it then reports
-// as maybe uninitialised.
+// as (maybe) uninitialised.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#pragma GCC diagnostic ignored "-Wuninitialized"
 namespace avx512 {
 namespace {
 
