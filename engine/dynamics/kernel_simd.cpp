@@ -33,6 +33,20 @@ int& simd_cap() {
 int simd_width() { return std::min(simd_width_available(), simd_cap()); }
 void cap_simd_width(int lanes) { simd_cap() = lanes; }
 
+namespace {
+// The chunk sums from the accumulators' 16 components (see avx2::Accumulator).
+StepSums step_sums(const double (&a)[16]) {
+  StepSums s;
+  for (int c = 0; c < 9; ++c) s.stress_Pa(c % 3, c / 3) = a[c];
+  s.stiffness_Pa = Vec3(a[9], a[10], a[11]);
+  s.sum_normal_force_N = a[12];
+  s.elastic_normal_J = a[13];
+  s.elastic_tangential_J = a[14];
+  s.friction_loss_J = a[15];
+  return s;
+}
+}  // namespace
+
 #pragma GCC push_options
 #pragma GCC target("avx2")
 namespace avx2 {
@@ -115,14 +129,7 @@ struct Accumulator {
   StepSums sums() const {
     alignas(32) double a[16];
     for (int g = 0; g < 4; ++g) _mm256_store_pd(a + 4 * g, acc[g]);
-    StepSums s;
-    for (int c = 0; c < 9; ++c) s.stress_Pa(c % 3, c / 3) = a[c];
-    s.stiffness_Pa = Vec3(a[9], a[10], a[11]);
-    s.sum_normal_force_N = a[12];
-    s.elastic_normal_J = a[13];
-    s.elastic_tangential_J = a[14];
-    s.friction_loss_J = a[15];
-    return s;
+    return step_sums(a);
   }
   // Adds four pairs' values, given per component (comp[c] holds the four pairs' values of
   // component c), pair by pair. Groups before `first_group` are zero and skipped.
@@ -262,15 +269,52 @@ inline V gather(const double* base, const std::uint32_t* index) {
   return join(avx2::gather(base, index), avx2::gather(base, index + 4));
 }
 
-// The four-lane accumulator, given pairs 0-3 and then pairs 4-7: still pair by pair in pair order.
+// An 8 x 8 transpose: given eight components c[0..7] of eight pairs (lane p = pair p), the pairs'
+// rows (row[p] lane k = component k of pair p).
+struct Rows8 {
+  V row[8];
+};
+inline Rows8 transpose(const V* c) {
+  const __m512i even = _mm512_setr_epi64(0, 1, 8, 9, 4, 5, 12, 13), odd = _mm512_setr_epi64(2, 3, 10, 11, 6, 7, 14, 15);
+  V t[8], u[8];
+  for (int k = 0; k < 8; k += 2) t[k] = _mm512_unpacklo_pd(c[k], c[k + 1]), t[k + 1] = _mm512_unpackhi_pd(c[k], c[k + 1]);
+  for (int k = 0; k < 8; k += 4) {  // u[k]: pairs 0 4, u[k+1]: 2 6, u[k+2]: 1 5, u[k+3]: 3 7 of components k..k+3
+    u[k] = _mm512_permutex2var_pd(t[k], even, t[k + 2]), u[k + 1] = _mm512_permutex2var_pd(t[k], odd, t[k + 2]);
+    u[k + 2] = _mm512_permutex2var_pd(t[k + 1], even, t[k + 3]), u[k + 3] = _mm512_permutex2var_pd(t[k + 1], odd, t[k + 3]);
+  }
+  Rows8 r;
+  const int pair_of[4] = {0, 2, 1, 3};  // u[j] holds pairs pair_of[j] and pair_of[j] + 4
+  for (int j = 0; j < 4; ++j) {
+    r.row[pair_of[j]] = _mm512_shuffle_f64x2(u[j], u[j + 4], 0x44);
+    r.row[pair_of[j] + 4] = _mm512_shuffle_f64x2(u[j], u[j + 4], 0xEE);
+  }
+  return r;
+}
+
+// The 16 chunk sums as two vectors, component c in acc[c / 8], lane c % 8 (the components of
+// avx2::Accumulator); each pair's values are added in pair order.
 struct Accumulator {
-  avx2::Accumulator four;
-  StepSums sums() const { return four.sums(); }
+  V acc[2];
+
+  Accumulator() : acc{zero(), zero()} {}
+
+  StepSums sums() const {
+    alignas(64) double a[16];
+    _mm512_store_pd(a, acc[0]);
+    _mm512_store_pd(a + 8, acc[1]);
+    return step_sums(a);
+  }
+  // As avx2::Accumulator::add, eight pairs. `first_group` counts groups of four components: with
+  // 3, components 0-11 are zero and need not be set.
   void add(const V (&comp)[16], int first_group = 0) {
-    __m256d lo[16], hi[16];
-    for (int c = 0; c < 16; ++c) lo[c] = low(comp[c]), hi[c] = high(comp[c]);
-    four.add(lo, first_group);
-    four.add(hi, first_group);
+    for (int g = first_group / 2; g < 2; ++g) {
+      V c[8];
+      for (int k = 0; k < 8; ++k) c[k] = 8 * g + k < 4 * first_group ? zero() : comp[8 * g + k];
+      const Rows8 r = transpose(c);
+      V a = acc[g];
+      for (int p = 0; p < 8; ++p) a = a + r.row[p];
+      acc[g] = a;
+    }
   }
 };
 
