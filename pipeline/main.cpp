@@ -77,22 +77,25 @@ int main(int argc, char** argv) {
   const std::string version = engine_version(dem);
   if (version.empty()) { std::fprintf(stderr, "pipeline: cannot run the engine '%s --source-hash'\n", dem.c_str()); return 2; }
   try {
-    // Every study is planned (and its scenes checked) before anything runs. With several, run names
-    // get the study's name in front (paper/loose_prepare).
+    // Every study is planned (its scenes checked) and the studies joined (no two runs writing one
+    // result) before anything is written or run.
+    std::vector<pipeline::Study> studies;
+    std::vector<std::string> outs;
     std::vector<pipeline::StudyPlan> plans;
     for (const std::string& study_file : study_files) {
-      const pipeline::Study study = pipeline::load_study(study_file);
-      const pipeline::Profile& prof = study.profile(profile);
-      std::string study_out = out.empty() ? (fs::path(study.output) / profile).string() : out;
-      study_out = fs::absolute(study_out).lexically_normal().string();
-      plans.push_back({study.name, pipeline::plan_study(study, prof, study_out, version)});
-      pipeline::write_scenes(plans.back().runs);
-      pipeline::write_manifest(plans.back().runs, study, study_out);
-      if (!plan_only)
-        std::printf("[pipeline] study '%s', profile %s, engine %s, results in %s\n", study.name.c_str(), profile.c_str(),
-                    version.c_str(), study_out.c_str());
+      const pipeline::Study& study = studies.emplace_back(pipeline::load_study(study_file));
+      const std::string& study_out = outs.emplace_back(
+          fs::absolute(out.empty() ? fs::path(study.output) / profile : fs::path(out)).lexically_normal().string());
+      plans.push_back({study.name, pipeline::plan_study(study, study.profile(profile), study_out, version)});
     }
-    const std::vector<pipeline::PlannedRun> runs = pipeline::join_studies(std::move(plans));
+    const std::vector<pipeline::PlannedRun> runs = pipeline::join_studies(plans);
+    for (std::size_t i = 0; i < plans.size(); ++i) {
+      pipeline::write_scenes(plans[i].runs);
+      pipeline::write_manifest(plans[i].runs, studies[i], outs[i]);
+      if (!plan_only)
+        std::printf("[pipeline] study '%s', profile %s, engine %s, results in %s\n", studies[i].name.c_str(),
+                    profile.c_str(), version.c_str(), outs[i].c_str());
+    }
     if (plan_only) {
       for (const auto& r : runs)
         std::printf("%-24s %-9s %.3g particle-steps  %s\n", r.name.c_str(),

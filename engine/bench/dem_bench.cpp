@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "config/scene_config.hpp"
@@ -54,19 +55,34 @@ std::string timing_scene(const std::string& packing, double friction, long steps
 
 struct Result {
   double friction;
-  int threads;
-  double median_rate, min_rate, max_rate;
+  int threads;  // threads in one run; 0: two runs at once, one thread each
+  double median_rate, min_rate, max_rate;  // particle-steps/s (two runs at once: both together)
   double contacts_per_particle;
   bool same_as_one_thread;
   double speedup;  // median rate / the 1-thread median of the same friction
 };
 
-struct TwoRuns {  // two runs at once, one thread each
-  double friction;
-  double median_rate, min_rate, max_rate;  // both runs together
-  bool same_as_one_thread;
-  double speedup;  // over the 1-thread median of one run
+// One timed run: the scene's simulation, 200 warm-up steps (list built, caches filled), then
+// `steps` timed steps at constant stress. Inside a parallel region every thread starts timing
+// together.
+struct Timed {
+  double wall_s;
+  std::vector<dem::Vec3> positions;  // at the end
+  double contacts_per_particle;
 };
+Timed time_run(const dem::SceneConfig& scene, long steps) {
+  dem::Simulation sim = dem::build_simulation(scene);
+  dem::CellTargets targets;
+  for (auto& t : targets) t = {dem::AxisTarget::Mode::Stress, 0, 1e5, 0};
+  const dem::ServoSettings servo{scene.servo.gain, 1.0};
+  for (int i = 0; i < 200; ++i) sim.step(targets, servo);
+#pragma omp barrier
+  const auto t0 = std::chrono::steady_clock::now();
+  for (long i = 0; i < steps; ++i) sim.step(targets, servo);
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const auto n = static_cast<double>(sim.particles().size());
+  return {wall, sim.particles().s, 2.0 * static_cast<double>(sim.sums().contacts) / n};
+}
 
 // Builds the packing for `friction` once (cached) and returns its path.
 std::string packing_for(const std::string& dir, double friction) {
@@ -96,61 +112,40 @@ int main(int argc, char** argv) {
     return 0;
   }
   std::vector<Result> results;
-  std::vector<TwoRuns> pairs;
   for (double mu : {0.5, 0.0}) {
     const std::string packing = packing_for(dir, mu);
     const dem::SceneConfig scene = dem::scene_from_text(timing_scene(packing, mu, 1000000000L), dir + "/bench.yaml");
     std::vector<dem::Vec3> one_thread_positions;
     double one_thread_rate = 0;
-    for (int threads : {1, 2}) {
-      omp_set_num_threads(threads);
+    const auto particle_steps = static_cast<double>(steps) * 8000.0;
+    // 1 and 2 threads in one run, then two runs at once with one thread each (the pipeline's -j 2).
+    for (int threads : {1, 2, 0}) {
       std::vector<double> rates;
       double z = 0;
       bool same = true;
       for (int r = 0; r < reps; ++r) {
-        dem::Simulation sim = dem::build_simulation(scene);
-        dem::CellTargets targets;
-        for (auto& t : targets) t = {dem::AxisTarget::Mode::Stress, 0, 1e5, 0};
-        const dem::ServoSettings servo{scene.servo.gain, 1.0};
-        for (int i = 0; i < 200; ++i) sim.step(targets, servo);  // warm-up: list built, caches filled
-        const auto t0 = std::chrono::steady_clock::now();
-        for (long i = 0; i < steps; ++i) sim.step(targets, servo);
-        const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        rates.push_back(static_cast<double>(steps) * static_cast<double>(sim.particles().size()) / wall);
-        z = 2.0 * static_cast<double>(sim.sums().contacts) / static_cast<double>(sim.particles().size());
-        if (threads == 1 && r == 0) one_thread_positions = sim.particles().s;
-        same = same && sim.particles().s == one_thread_positions;
+        std::vector<Timed> runs(threads > 0 ? 1 : 2);
+        if (threads > 0) {
+          omp_set_num_threads(threads);
+          runs[0] = time_run(scene, steps);
+        } else {
+#pragma omp parallel num_threads(2)
+          runs[static_cast<std::size_t>(omp_get_thread_num())] = time_run(scene, steps);  // nested regions are inactive
+        }
+        if (threads == 1 && r == 0) one_thread_positions = runs[0].positions;
+        double wall = 0;
+        for (const Timed& t : runs) {
+          wall = std::max(wall, t.wall_s);
+          same = same && t.positions == one_thread_positions;
+        }
+        rates.push_back(static_cast<double>(runs.size()) * particle_steps / wall);
+        z = runs[0].contacts_per_particle;
       }
       std::sort(rates.begin(), rates.end());
       const double median = rates[rates.size() / 2];
       if (threads == 1) one_thread_rate = median;
       results.push_back({mu, threads, median, rates.front(), rates.back(), z, same, median / one_thread_rate});
     }
-    // Two runs at once, one thread each (what the pipeline does with -j 2): the total rate.
-    std::vector<double> rates;
-    bool same = true;
-    for (int r = 0; r < reps; ++r) {
-      double wall = 0;
-      std::vector<dem::Vec3> ends[2];
-#pragma omp parallel num_threads(2) reduction(max : wall)
-      {  // nested regions are inactive: each run's loops run on its own thread only
-        dem::Simulation sim = dem::build_simulation(scene);
-        dem::CellTargets targets;
-        for (auto& t : targets) t = {dem::AxisTarget::Mode::Stress, 0, 1e5, 0};
-        const dem::ServoSettings servo{scene.servo.gain, 1.0};
-        for (int i = 0; i < 200; ++i) sim.step(targets, servo);
-#pragma omp barrier
-        const auto t0 = std::chrono::steady_clock::now();
-        for (long i = 0; i < steps; ++i) sim.step(targets, servo);
-        wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        ends[omp_get_thread_num()] = sim.particles().s;
-      }
-      rates.push_back(2.0 * static_cast<double>(steps) * static_cast<double>(ends[0].size()) / wall);
-      same = same && ends[0] == one_thread_positions && ends[1] == one_thread_positions;
-    }
-    std::sort(rates.begin(), rates.end());
-    const double median = rates[rates.size() / 2];
-    pairs.push_back({mu, median, rates.front(), rates.back(), same, median / one_thread_rate});
   }
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
@@ -160,34 +155,38 @@ int main(int argc, char** argv) {
   std::printf("%-9s %-8s %-22s %-24s %-8s %-10s %s\n", "friction", "threads", "particle-steps/s (med)", "min .. max",
               "2Nc/Np", "speed-up", "same bits as 1 thread");
   for (const auto& r : results) {
-    std::printf("%-9.2f %-8d %-22.3e %.3e .. %.3e  %-8.2f %-10.2f %s\n", r.friction, r.threads, r.median_rate, r.min_rate,
-                r.max_rate, r.contacts_per_particle, r.speedup, r.same_as_one_thread ? "yes" : "NO");
+    const bool two_runs = r.threads == 0;
+    std::printf("%-9.2f %-8s %-22.3e %.3e .. %.3e  ", r.friction, two_runs ? "2 runs" : std::to_string(r.threads).c_str(),
+                r.median_rate, r.min_rate, r.max_rate);
+    if (two_runs)
+      std::printf("%-8s ", "");
+    else
+      std::printf("%-8.2f ", r.contacts_per_particle);
+    std::printf("%-10.2f %s\n", r.speedup, r.same_as_one_thread ? "yes" : "NO");
   }
-  for (const auto& r : pairs)
-    std::printf("%-9.2f %-8s %-22.3e %.3e .. %.3e  %-8s %-10.2f %s\n", r.friction, "2 runs", r.median_rate, r.min_rate,
-                r.max_rate, "", r.speedup, r.same_as_one_thread ? "yes" : "NO");
   std::printf("peak memory (max RSS): %.1f MB\n", peak_mb);
   std::ofstream json(dir + "/bench.json");
   json << "{\n  \"code\": \"cyclic-triax dem\",\n  \"version\": \"" << dem::software_version
        << "\",\n  \"vector_lanes\": " << dem::simd_width() << ",\n  \"particles\": 8000,\n  \"steps\": " << steps << ",\n  \"repetitions\": " << reps
-       << ",\n  \"peak_rss_MB\": " << peak_mb << ",\n  \"runs\": [\n";
-  for (std::size_t i = 0; i < results.size(); ++i)
-    json << "    {\"friction\": " << results[i].friction << ", \"threads\": " << results[i].threads
-         << ", \"particle_steps_per_s_median\": " << results[i].median_rate << ", \"min\": " << results[i].min_rate
-         << ", \"max\": " << results[i].max_rate << ", \"coordination_number\": " << results[i].contacts_per_particle
-         << ", \"same_bits_as_1_thread\": " << (results[i].same_as_one_thread ? "true" : "false") << "}"
-         << (i + 1 < results.size() ? "," : "") << "\n";
-  json << "  ],\n  \"two_runs_at_once\": [\n";
-  for (std::size_t i = 0; i < pairs.size(); ++i)
-    json << "    {\"friction\": " << pairs[i].friction << ", \"runs\": 2, \"threads_per_run\": 1"
-         << ", \"total_particle_steps_per_s_median\": " << pairs[i].median_rate << ", \"min\": " << pairs[i].min_rate
-         << ", \"max\": " << pairs[i].max_rate
-         << ", \"same_bits_as_1_thread\": " << (pairs[i].same_as_one_thread ? "true" : "false") << "}"
-         << (i + 1 < pairs.size() ? "," : "") << "\n";
-  json << "  ]\n}\n";
+       << ",\n  \"peak_rss_MB\": " << peak_mb << ",\n  \"runs\": [";
+  // One list for the runs of one process, one for two runs at once (their rate is both runs').
+  const char* sep = "\n";
   for (const auto& r : results)
-    if (!r.same_as_one_thread) return 1;
-  for (const auto& r : pairs)
+    if (r.threads > 0)
+      json << std::exchange(sep, ",\n") << "    {\"friction\": " << r.friction << ", \"threads\": " << r.threads
+           << ", \"particle_steps_per_s_median\": " << r.median_rate << ", \"min\": " << r.min_rate
+           << ", \"max\": " << r.max_rate << ", \"coordination_number\": " << r.contacts_per_particle
+           << ", \"same_bits_as_1_thread\": " << (r.same_as_one_thread ? "true" : "false") << "}";
+  json << "\n  ],\n  \"two_runs_at_once\": [";
+  sep = "\n";
+  for (const auto& r : results)
+    if (r.threads == 0)
+      json << std::exchange(sep, ",\n") << "    {\"friction\": " << r.friction << ", \"runs\": 2, \"threads_per_run\": 1"
+           << ", \"total_particle_steps_per_s_median\": " << r.median_rate << ", \"min\": " << r.min_rate
+           << ", \"max\": " << r.max_rate << ", \"same_bits_as_1_thread\": " << (r.same_as_one_thread ? "true" : "false")
+           << "}";
+  json << "\n  ]\n}\n";
+  for (const auto& r : results)
     if (!r.same_as_one_thread) return 1;
   return 0;
 }

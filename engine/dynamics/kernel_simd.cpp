@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cstdio>
 #include <cstdlib>
 #include <string_view>
 
@@ -23,8 +24,10 @@ namespace {
 int& simd_cap() {
   static int cap = [] {
     const char* env = std::getenv("DEM_SIMD");
-    const std::string_view v = env ? env : "";
-    return v == "0" ? 0 : v == "4" ? 4 : 8;
+    const std::string_view v = env ? env : "8";
+    if (v == "0" || v == "4" || v == "8") return v[0] - '0';
+    std::fprintf(stderr, "DEM_SIMD=%s ignored: 0 (scalar loops), 4 (at most AVX2) or 8 (at most AVX-512)\n", env);
+    return 8;
   }();
   return cap;
 }
@@ -69,6 +72,7 @@ inline unsigned bits(Mask m) { return static_cast<unsigned>(_mm256_movemask_pd(m
 inline Mask not_ge(V a, V b) { return _mm256_cmp_pd(a, b, _CMP_NGE_UQ); }
 inline Mask greater(V a, V b) { return _mm256_cmp_pd(a, b, _CMP_GT_OQ); }
 inline Mask greater_equal(V a, V b) { return _mm256_cmp_pd(a, b, _CMP_GE_OQ); }
+inline Mask less(V a, V b) { return _mm256_cmp_pd(a, b, _CMP_LT_OQ); }
 inline V sqrt_of(V a) { return _mm256_sqrt_pd(a); }
 
 // Four consecutive Vec3 (12 doubles, x0 y0 z0 x1 | y1 z1 x2 y2 | z2 x3 y3 z3) to and from lanes.
@@ -141,15 +145,14 @@ struct Accumulator {
   }
 };
 
-
 #include "dynamics/kernel_simd_pairs.inc"
 
 // PeriodicCell::wrap, one axis of four particles; clears the lanes of `inside` that stay outside.
 inline V wrap(V x, V& inside) {
   const V one = splat(1.0);
-  x = x + keep(_mm256_cmp_pd(x, zero(), _CMP_LT_OQ), one);
-  x = x - keep(_mm256_cmp_pd(x, one, _CMP_GE_OQ), one);
-  inside = _mm256_and_pd(inside, _mm256_and_pd(_mm256_cmp_pd(x, zero(), _CMP_GE_OQ), _mm256_cmp_pd(x, one, _CMP_LT_OQ)));
+  x = x + keep(less(x, zero()), one);
+  x = x - keep(greater_equal(x, one), one);
+  inside = both(inside, both(greater_equal(x, zero()), less(x, one)));
   return x;
 }
 
@@ -230,9 +233,10 @@ void particle_chunk(const ParticleLoop<Rotate, ViscousDamping>& loop, std::size_
 namespace avx512 {
 namespace {
 
-// Eight lanes, built on the four-lane primitives for what moves data (loads, stores, gathers,
-// the sums): on this AMD EPYC (Zen 5) a 512-bit divide or square root costs what a 256-bit one
-// does (1.15 ns and 2.3 ns per instruction either way), and those dominate the force loop.
+// Eight lanes, built on the four-lane primitives for loads, stores and gathers. On this AMD EPYC
+// (Zen 5) a 512-bit divide or square root costs what a 256-bit one does (1.15 ns and 2.3 ns per
+// instruction either way): 4,000 steps of shear of the 8,000-sphere packing, one thread, took
+// 1.70 s instead of 1.84 s (mu = 0.5) and 0.99 s instead of 1.12 s (mu = 0).
 using V = __m512d;
 using Mask = __mmask8;  // bit p: lane p
 struct V3 {

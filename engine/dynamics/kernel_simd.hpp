@@ -16,7 +16,7 @@ namespace dem {
 int simd_width_available();
 // The width new Simulations use: the available one, capped by cap_simd_width() or by the
 // environment variable DEM_SIMD (0: the scalar loops; 4: at most AVX2), to compare the loops or to
-// rule one out.
+// rule one out. `lanes`: 0, 4 or 8.
 int simd_width();
 void cap_simd_width(int lanes);
 

@@ -204,12 +204,12 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
   return runs;
 }
 
-std::vector<PlannedRun> join_studies(std::vector<StudyPlan> plans) {
+std::vector<PlannedRun> join_studies(const std::vector<StudyPlan>& plans) {
   std::vector<PlannedRun> runs;
   std::map<std::string, std::string> writer;  // result file -> run
-  for (StudyPlan& plan : plans) {
+  for (const StudyPlan& plan : plans) {
     const int offset = static_cast<int>(runs.size());
-    for (PlannedRun& r : plan.runs) {
+    for (PlannedRun r : plan.runs) {
       if (r.depends_on >= 0) r.depends_on += offset;
       if (plans.size() > 1) r.name = plan.name + "/" + r.name;
       const auto [it, added] = writer.emplace(r.result, r.name);

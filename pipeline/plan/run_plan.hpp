@@ -37,7 +37,7 @@ struct StudyPlan {
 // Joins the runs of several studies into one list for `execute`, so that they share its slots:
 // dependencies renumbered and, with more than one study, each name prefixed with its study's
 // ("paper/loose_prepare"). Throws std::runtime_error if two runs would write the same result.
-std::vector<PlannedRun> join_studies(std::vector<StudyPlan> plans);
+std::vector<PlannedRun> join_studies(const std::vector<StudyPlan>& plans);
 
 // Writes the resolved scenes (only where the text changed, so file times stay meaningful).
 void write_scenes(const std::vector<PlannedRun>& runs);
