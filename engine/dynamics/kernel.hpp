@@ -17,6 +17,12 @@ namespace dem {
 // Work is split into chunks of a fixed size, independent of the number of threads; sums are
 // formed per chunk in index order and the chunk sums are added in chunk order. Every result is
 // therefore bit-for-bit the same on 1 or N threads.
+//
+// Pairs are chunked by particle: pair chunk c holds the pairs whose `first` particle is in
+// particle chunk c. Which pairs out of contact the list holds (it depends on the Verlet skin and
+// on when it was rebuilt) then changes no sum: they add exact zeros (+0.0 to a sum that is never
+// -0.0), and the contacts of each chunk are the same whatever the skin. A run is bit for bit the
+// same with any skin.
 inline constexpr std::ptrdiff_t chunk_size = 512;
 inline std::ptrdiff_t chunk_count(std::size_t n) { return (static_cast<std::ptrdiff_t>(n) + chunk_size - 1) / chunk_size; }
 
@@ -34,6 +40,15 @@ bool for_each_chunk(std::size_t n, const Body& body) {
   return all;
 }
 
+// Calls body(c, begin, end) for every pair chunk c = pairs [begin, end) (see above), in parallel.
+template <class Body>
+void for_each_pair_chunk(const PairIndex& index, const Body& body) {
+  const std::size_t particles = index.first_begin.size() - 1;
+  for_each_chunk(particles, [&](std::size_t c, std::size_t first, std::size_t last) {
+    return body(c, std::size_t{index.first_begin[first]}, std::size_t{index.first_begin[last]});
+  });
+}
+
 // What `integrate` sums over the particles [J].
 struct MotionSums {
   double kinetic_half_step = 0;  // translational, 1/2 m |v(n+1/2)|^2
@@ -47,7 +62,7 @@ struct MotionSums {
 struct PairForces {
   std::vector<Vec3> force;              // force on `second` [N]; -force acts on `first`
   std::vector<Vec3> torque_i, torque_j;  // torques on `first` and `second` [N m] (frictional only)
-  std::vector<StepSums> chunk_sums;       // per chunk of pairs; every chunk writes its own entry
+  std::vector<StepSums> chunk_sums;       // per pair chunk; every chunk writes its own entry
   std::vector<MotionSums> motion_sums;    // per chunk of particles
 };
 
@@ -84,7 +99,7 @@ struct PairLoop {
       out.torque_i.resize(n_pairs);
       out.torque_j.resize(n_pairs);
     }
-    out.chunk_sums.resize(static_cast<std::size_t>(chunk_count(n_pairs)));
+    out.chunk_sums.resize(static_cast<std::size_t>(chunk_count(p.size())));
     first = pairs.first.data();
     second = pairs.second.data();
     s = p.s.data();
@@ -161,9 +176,9 @@ StepSums total_of_chunks(const std::vector<StepSums>& chunk_sums, const Periodic
 // `sums` receives the contact stress and the servo stiffness.
 template <class Friction>
 void compute_forces(const LinearSpring<Friction>& law, const Particles& p, const PeriodicCell& cell, PairList& pairs,
-                    const Vec3& strain_rate, double dt, PairForces& out, StepSums& sums) {
+                    const PairIndex& index, const Vec3& strain_rate, double dt, PairForces& out, StepSums& sums) {
   const PairLoop<Friction> loop(law, p, cell, pairs, strain_rate, dt, out);
-  for_each_chunk(loop.n_pairs, [&](std::size_t c, std::size_t begin, std::size_t end) {
+  for_each_pair_chunk(index, [&](std::size_t c, std::size_t begin, std::size_t end) {
     StepSums chunk;
     const PairLoop<Friction> local = loop;  // a local copy: its pointers stay in registers
     for (std::size_t k = begin; k < end; ++k) local.pair(k, chunk);

@@ -348,9 +348,10 @@ template MotionSums integrate_simd<false>(const ViscousDamping&, Particles&, con
 
 template <class Friction>
 void compute_forces_simd(int width, const LinearSpring<Friction>& law, const Particles& p, const PeriodicCell& cell,
-                         PairList& pairs, const Vec3& strain_rate, double dt, PairForces& out, StepSums& sums) {
+                         PairList& pairs, const PairIndex& index, const Vec3& strain_rate, double dt, PairForces& out,
+                         StepSums& sums) {
   const PairLoop<Friction> loop(law, p, cell, pairs, strain_rate, dt, out);
-  for_each_chunk(loop.n_pairs, [&](std::size_t c, std::size_t begin, std::size_t end) {
+  for_each_pair_chunk(index, [&](std::size_t c, std::size_t begin, std::size_t end) {
     if (width == 8)
       avx512::chunk(loop, begin, end, out.chunk_sums[c]);
     else
@@ -361,8 +362,8 @@ void compute_forces_simd(int width, const LinearSpring<Friction>& law, const Par
 }
 
 template void compute_forces_simd<NoFriction>(int, const LinearSpring<NoFriction>&, const Particles&, const PeriodicCell&,
-                                              PairList&, const Vec3&, double, PairForces&, StepSums&);
+                                              PairList&, const PairIndex&, const Vec3&, double, PairForces&, StepSums&);
 template void compute_forces_simd<Coulomb>(int, const LinearSpring<Coulomb>&, const Particles&, const PeriodicCell&,
-                                           PairList&, const Vec3&, double, PairForces&, StepSums&);
+                                           PairList&, const PairIndex&, const Vec3&, double, PairForces&, StepSums&);
 
 }  // namespace dem

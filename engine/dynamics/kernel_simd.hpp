@@ -23,7 +23,8 @@ void cap_simd_width(int lanes);
 // As `compute_forces`, `width` (4 or 8) pairs at a time; call only with simd_width() >= width.
 template <class Friction>
 void compute_forces_simd(int width, const LinearSpring<Friction>& law, const Particles& p, const PeriodicCell& cell,
-                         PairList& pairs, const Vec3& strain_rate, double dt, PairForces& out, StepSums& sums);
+                         PairList& pairs, const PairIndex& index, const Vec3& strain_rate, double dt, PairForces& out,
+                         StepSums& sums);
 
 // As `integrate` with viscous damping (the vectorised leapfrog update, four particles at a time);
 // call only if simd_width() >= 4.

@@ -61,9 +61,11 @@ struct KernelImpl final : Simulation::Kernel {
   KernelImpl(LinearSpring<Friction> l, DampingPolicy d) : law(l), damping(std::move(d)) {}
   void forces(Simulation& s) override {
     if (simd)
-      compute_forces_simd(simd, law, s.particles_, s.cell_, s.list_.pairs(), s.strain_rate_, s.dt_, *s.pair_forces_, s.sums_);
+      compute_forces_simd(simd, law, s.particles_, s.cell_, s.list_.pairs(), s.list_.index(), s.strain_rate_, s.dt_,
+                          *s.pair_forces_, s.sums_);
     else
-      compute_forces(law, s.particles_, s.cell_, s.list_.pairs(), s.strain_rate_, s.dt_, *s.pair_forces_, s.sums_);
+      compute_forces(law, s.particles_, s.cell_, s.list_.pairs(), s.list_.index(), s.strain_rate_, s.dt_,
+                     *s.pair_forces_, s.sums_);
   }
   MotionSums integrate(Simulation& s) override {
     if constexpr (std::is_same_v<DampingPolicy, ViscousDamping>)

@@ -2,7 +2,8 @@
 // Candidate contact pairs: a Verlet list with a skin, built from bins in fractional coordinates.
 //
 // The list holds every pair (i < j) whose surfaces were closer than `skin` at build time, sorted by
-// (i, j). Forces are summed in that order, so results do not depend on when the list was rebuilt.
+// (i, j). Forces are summed in that order, in chunks by particle (dynamics/kernel.hpp), so results
+// do not depend, to the last bit, on when the list was rebuilt or on the skin (tests/.../skin_test).
 // Each pair owns its contact history (tangential spring, sliding flag); a rebuild carries the
 // history of surviving pairs over.
 //
@@ -63,8 +64,9 @@ class VerletList {
   void build(const Particles& p, const PeriodicCell& cell);
 
   // Everything a checkpoint needs to continue bit for bit: the whole list (pairs out of contact
-  // too, since forces are summed in fixed-size chunks of the list) and what the rebuild criterion
-  // compares with, so that the list is rebuilt at the same steps as in an uninterrupted run.
+  // too: the rebuild criterion relies on every pair within the skin at the last build being
+  // listed) and what that criterion compares with, so that the list is rebuilt at the same steps
+  // as in an uninterrupted run.
   // Checkpoints are taken after a step, so the saved list is always a built one.
   struct Saved {
     PairList pairs;

@@ -7,10 +7,9 @@
 // Why exact equality is the right expectation: a step is a deterministic function of the
 // positions, velocities, spins, cell, applied strain rate and contact springs, all stored as
 // doubles (HDF5 native double, no conversion); forces are summed over pairs sorted by (i, j) in
-// chunks of 512 pairs, and these scenes have fewer pairs than one chunk, so the Verlet list the
-// continuation builds (with other non-contact pairs) does not change any sum. With more pairs
-// this holds only when the new list holds the same pairs (engine/README.md, /state); checkpoints
-// store the whole list (tests/engine/run/checkpoint_test.cpp, tests/kill/).
+// chunks by particle, so the Verlet list the continuation builds (with other non-contact pairs)
+// does not change any sum (tests/engine/dynamics/skin_test.cpp). Checkpoints store the whole list
+// (tests/engine/run/checkpoint_test.cpp, tests/kill/).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
