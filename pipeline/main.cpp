@@ -101,6 +101,7 @@ int main(int argc, char** argv) {
         std::printf("%-24s %-9s %.3g particle-steps  %s\n", r.name.c_str(),
                     pipeline::up_to_date(r.result, r.hash)                       ? "reuse"
                     : r.may_fail && pipeline::recorded_stop(r.result, r.hash) ? "stopped"
+                    : r.copy_of >= 0                                             ? "copy"
                                                                                 : "run",
                     r.cost, r.scene_file.c_str());
       return 0;
@@ -108,6 +109,7 @@ int main(int argc, char** argv) {
     const pipeline::Outcome o = pipeline::execute(runs, dem, jobs, threads);
     std::printf("[pipeline] done in %.1f min: %d ran, %d reused, %d failed, %d blocked", o.wall_time_s / 60, o.ran,
                 o.reused, o.failed, o.blocked);
+    if (o.copied > 0) std::printf(", %d copied (the same inputs as another run)", o.copied);
     if (o.stopped + o.skipped > 0)  // may_fail runs: outcomes, not failures
       std::printf("; %d stopped with a message and %d skipped, as allowed (may_fail)", o.stopped, o.skipped);
     std::printf("\n");

@@ -17,6 +17,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "io/hdf5.hpp"
+#include "io/xdmf.hpp"
 
 namespace pipeline {
 
@@ -121,6 +122,23 @@ pid_t spawn(const std::string& dem, const PlannedRun& r, int threads) {
   return pid;
 }
 
+// The result of `from` as the result of `to`, which computes the same (PlannedRun::copy_of): the
+// file copied with `to`'s input hash and scene, renamed into place complete, with its XDMF.
+void copy_result(const PlannedRun& from, const PlannedRun& to) {
+  const std::string partial = to.result + ".partial";
+  std::filesystem::copy_file(from.result, partial, std::filesystem::copy_options::overwrite_existing);
+  {
+    dem::h5::Handle f = dem::h5::open_file_write(partial);
+    dem::h5::set_attribute(f, "input_hash", to.hash);
+    dem::h5::set_attribute(f, "scene_file", to.scene_file);
+    dem::h5::set_attribute(f, "scene_yaml", to.scene_text);
+    dem::h5::set_attribute(f, "copied_from", from.result);
+  }
+  std::filesystem::rename(partial, to.result);
+  dem::write_xdmf(to.result);
+  std::ofstream(to.log) << "copy of " << from.result << " (" << from.name << "): the same scene but for its name\n";
+}
+
 std::string minutes(double s) {
   char buf[32];
   if (s < 90) std::snprintf(buf, sizeof buf, "%.0f s", s);
@@ -176,10 +194,11 @@ Outcome execute(const std::vector<PlannedRun>& runs, const std::string& dem, int
   std::vector<std::size_t> order(runs.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return priority[a] > priority[b]; });
-  while (true) {
-    // Start what can start.
+  // Starts what can start, in priority order; returns true if it copied a result (PlannedRun::copy_of),
+  // which may let other runs start.
+  auto start_ready = [&] {
+    bool copied = false;
     for (std::size_t i : order) {
-      if (static_cast<int>(running.size()) >= jobs) break;
       if (state[i] != State::Waiting) continue;
       const int dep = runs[i].depends_on;
       if (dep >= 0 && (state[static_cast<std::size_t>(dep)] == State::Failed ||
@@ -192,12 +211,34 @@ Outcome execute(const std::vector<PlannedRun>& runs, const std::string& dem, int
         continue;
       }
       if (dep >= 0 && state[static_cast<std::size_t>(dep)] != State::Done) continue;
+      if (runs[i].copy_of >= 0) {
+        const PlannedRun& original = runs[static_cast<std::size_t>(runs[i].copy_of)];
+        cost_left -= runs[i].cost;
+        try {
+          copy_result(original, runs[i]);
+          state[i] = State::Done;
+          ++out.copied;
+          copied = true;
+          report("copied " + original.name + " as " + runs[i].name);
+        } catch (const std::exception& e) {
+          state[i] = State::Failed;
+          ++out.failed;
+          report("FAILED " + runs[i].name + " (copying " + original.result + ": " + e.what() + ")");
+        }
+        continue;
+      }
+      if (static_cast<int>(running.size()) >= jobs) continue;
       std::error_code ec;
       std::filesystem::remove(outcome_file(runs[i].result), ec);  // a stale outcome must not outlive a new run
       running[spawn(dem, runs[i], threads)] = i;
       state[i] = State::Running;
       started[i] = clock::now();
       report("started " + runs[i].name);
+    }
+    return copied;
+  };
+  while (true) {
+    while (start_ready()) {
     }
     if (running.empty()) break;
     int status = 0;

@@ -1,6 +1,6 @@
 #pragma once
 // Runs planned runs as `dem run` subprocesses, at most `jobs` at once, each after the run it
-// depends on. A run whose result is complete and carries the same input hash is reused; a failed
+// depends on; a copy (PlannedRun::copy_of) gets its original's result with its own input hash. A run whose result is complete and carries the same input hash is reused; a failed
 // run is reported with its log and blocks only the runs that need it. A run marked may_fail that
 // stops with a message (refused input, exit 2; or a failed run, exit 1) is an outcome: recorded in
 // <result>.outcome with its input hash, reused like a result, and not a failure of the study.
@@ -16,6 +16,7 @@ struct Outcome {
   int ran = 0, reused = 0, failed = 0, blocked = 0;
   int stopped = 0;  // may_fail runs that stopped with a message this time (reused ones count as reused)
   int skipped = 0;  // may_fail runs not run because the run they need stopped
+  int copied = 0;   // runs whose result is a copy of another's (PlannedRun::copy_of)
   double wall_time_s = 0;
 };
 

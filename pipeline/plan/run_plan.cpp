@@ -204,9 +204,21 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
   return runs;
 }
 
+namespace {
+// A resolved scene without its header comment and its name: what the run computes.
+std::string inputs_of(const PlannedRun& r) {
+  std::istringstream in(r.scene_text);
+  std::string line, out;
+  while (std::getline(in, line))
+    if (line.rfind('#', 0) != 0 && line.rfind("name:", 0) != 0) out += line + '\n';
+  return out;
+}
+}  // namespace
+
 std::vector<PlannedRun> join_studies(const std::vector<StudyPlan>& plans) {
   std::vector<PlannedRun> runs;
   std::map<std::string, std::string> writer;  // result file -> run
+  std::map<std::string, int> computed;        // inputs_of -> the first run that computes them
   for (const StudyPlan& plan : plans) {
     const int offset = static_cast<int>(runs.size());
     for (PlannedRun r : plan.runs) {
@@ -216,6 +228,11 @@ std::vector<PlannedRun> join_studies(const std::vector<StudyPlan>& plans) {
       if (!added)
         throw std::runtime_error("runs " + it->second + " and " + r.name + " would both write " + r.result +
                                  ": give each study once, each with its own output folder");
+      if (!r.may_fail) {
+        const int index = static_cast<int>(runs.size());
+        const auto [first, is_new] = computed.emplace(inputs_of(r), index);
+        if (!is_new) r.copy_of = r.depends_on = first->second, r.cost = 0;
+      }
       runs.push_back(std::move(r));
     }
   }

@@ -21,6 +21,7 @@ struct PlannedRun {
   std::string density, test;  // test: empty for a preparation
   std::vector<std::string> variants;  // the variants whose results this run is (a shared preparation: several)
   bool may_fail = false;    // stopping with a message is an outcome (the scheduler records it)
+  int copy_of = -1;         // a run that computes exactly this (see join_studies): its result is copied
 };
 
 // Plans every run; validates each resolved scene with the engine's own parser (ConfigError on
@@ -36,7 +37,10 @@ struct StudyPlan {
 
 // Joins the runs of several studies into one list for `execute`, so that they share its slots:
 // dependencies renumbered and, with more than one study, each name prefixed with its study's
-// ("paper/loose_prepare"). Throws std::runtime_error if two runs would write the same result.
+// ("paper/loose_prepare"). A run whose resolved scene is an earlier run's but for its name and
+// header (the same inputs, so the same result bit for bit), neither of them may_fail, becomes a
+// copy of it (copy_of, and depends_on it): the convergence study's reference sample is the
+// paper's loose sample. Throws std::runtime_error if two runs would write the same result.
 std::vector<PlannedRun> join_studies(const std::vector<StudyPlan>& plans);
 
 // Writes the resolved scenes (only where the text changed, so file times stay meaningful).

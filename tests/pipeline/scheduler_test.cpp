@@ -108,19 +108,33 @@ TEST_CASE("pipeline: several studies share one list of runs, each test after its
   SECTION("joined") {
     const auto runs = pipeline::join_studies(plans);
     REQUIRE(runs.size() == 8);
+    int copies = 0;
     for (const auto& r : runs) {
       const std::string study = r.name.substr(0, r.name.find('/'));
       CHECK((study == "first" || study == "second"));
+      if (r.copy_of >= 0) {  // the second study's samples are the first's (same scenes but for the header)
+        ++copies;
+        CHECK(r.depends_on == r.copy_of);
+        CHECK(runs[static_cast<std::size_t>(r.copy_of)].name == "first/" + r.density + "_prepare");
+        CHECK(r.name == "second/" + r.density + "_prepare");
+        continue;
+      }
       if (r.depends_on < 0) continue;  // a test: it starts from its own study's preparation of its density
       const auto& sample = runs[static_cast<std::size_t>(r.depends_on)];
       CHECK(sample.name == study + "/" + r.density + "_prepare");
       CHECK(fs::path(sample.result).parent_path() == fs::path(r.result).parent_path());
     }
-    const pipeline::Outcome o = pipeline::execute(runs, dem_binary, 2);
-    CHECK(o.ran == 8);
+    CHECK(copies == 2);
+    pipeline::Outcome o = pipeline::execute(runs, dem_binary, 2);
+    CHECK(o.ran == 6);
+    CHECK(o.copied == 2);
     CHECK(o.failed == 0);
     CHECK(fs::exists(root / "first" / "out" / "dense_test1.h5"));
     CHECK(fs::exists(root / "second" / "out" / "dense_test1.h5"));
+    for (const auto& r : runs) CHECK(pipeline::up_to_date(r.result, r.hash));  // a copy carries its own input hash
+    o = pipeline::execute(runs, dem_binary, 2);  // and is reused like any result
+    CHECK(o.reused == 8);
+    CHECK(o.ran + o.copied == 0);
   }
   SECTION("a study given twice would write its results twice: refused") {
     plans[1] = plans[0];
