@@ -32,11 +32,11 @@ plot '/work/main/reports/figures/fig03_test3_target.dat' u 1:2:3:4 w vectors noh
   '/work/main/reports/figures/fig09_loose_test3_cycle1.dat' u 1:2:($3*100):($4*100) w vectors head filled size graph 0.03,20 lw 2.2 lc rgb "#000000" t "strain increment of a leg", \
   '/work/main/reports/figures/fig09_loose_test3_cycle1.dat' u ($1+$3*100):($2+$4*100):6 w labels offset char 0.6,0.6 font ",9" tc rgb "#000000" t ""
 unset label 99
-set title "loose, Test 4, cycle 1\narrows: Δε × 200  (0.1 on the axes = 0.05 % strain)" font ",11"
+set title "loose, Test 4, cycle 1\narrows: Δε × 100  (0.1 on the axes = 0.1 % strain)" font ",11"
 plot '/work/main/reports/figures/fig03_test4_target.dat' u 1:2:3:4 w vectors nohead lw 3 lc rgb "#dddddd" t "target path", \
   '/work/main/reports/figures/fig09_loose_test4_cycle1_path.dat' u 1:2 w l lw 1 lc rgb "#d62728" t "measured stress", \
-  '/work/main/reports/figures/fig09_loose_test4_cycle1.dat' u 1:2:($3*200):($4*200) w vectors head filled size graph 0.03,20 lw 2.2 lc rgb "#000000" t "strain increment of a leg", \
-  '/work/main/reports/figures/fig09_loose_test4_cycle1.dat' u ($1+$3*200):($2+$4*200):6 w labels offset char 0.6,0.6 font ",9" tc rgb "#000000" t ""
+  '/work/main/reports/figures/fig09_loose_test4_cycle1.dat' u 1:2:($3*100):($4*100) w vectors head filled size graph 0.03,20 lw 2.2 lc rgb "#000000" t "strain increment of a leg", \
+  '/work/main/reports/figures/fig09_loose_test4_cycle1.dat' u ($1+$3*100):($2+$4*100):6 w labels offset char 0.6,0.6 font ",9" tc rgb "#000000" t ""
 unset label 99
 set title "loose, Test 5, cycle 1\narrows: Δε × 100  (0.1 on the axes = 0.1 % strain)" font ",11"
 plot '/work/main/reports/figures/fig03_test5_target.dat' u 1:2:3:4 w vectors nohead lw 3 lc rgb "#dddddd" t "target path", \
@@ -62,11 +62,11 @@ plot '/work/main/reports/figures/fig03_test3_target.dat' u 1:2:3:4 w vectors noh
   '/work/main/reports/figures/fig09_loose_test3_cycle5.dat' u 1:2:($3*100):($4*100) w vectors head filled size graph 0.03,20 lw 2.2 lc rgb "#000000" t "strain increment of a leg", \
   '/work/main/reports/figures/fig09_loose_test3_cycle5.dat' u ($1+$3*100):($2+$4*100):6 w labels offset char 0.6,0.6 font ",9" tc rgb "#000000" t ""
 unset label 99
-set title "loose, Test 4, cycle 5\narrows: Δε × 200  (0.1 on the axes = 0.05 % strain)" font ",11"
+set title "loose, Test 4, cycle 5\narrows: Δε × 100  (0.1 on the axes = 0.1 % strain)" font ",11"
 plot '/work/main/reports/figures/fig03_test4_target.dat' u 1:2:3:4 w vectors nohead lw 3 lc rgb "#dddddd" t "target path", \
   '/work/main/reports/figures/fig09_loose_test4_cycle5_path.dat' u 1:2 w l lw 1 lc rgb "#d62728" t "measured stress", \
-  '/work/main/reports/figures/fig09_loose_test4_cycle5.dat' u 1:2:($3*200):($4*200) w vectors head filled size graph 0.03,20 lw 2.2 lc rgb "#000000" t "strain increment of a leg", \
-  '/work/main/reports/figures/fig09_loose_test4_cycle5.dat' u ($1+$3*200):($2+$4*200):6 w labels offset char 0.6,0.6 font ",9" tc rgb "#000000" t ""
+  '/work/main/reports/figures/fig09_loose_test4_cycle5.dat' u 1:2:($3*100):($4*100) w vectors head filled size graph 0.03,20 lw 2.2 lc rgb "#000000" t "strain increment of a leg", \
+  '/work/main/reports/figures/fig09_loose_test4_cycle5.dat' u ($1+$3*100):($2+$4*100):6 w labels offset char 0.6,0.6 font ",9" tc rgb "#000000" t ""
 unset label 99
 set title "loose, Test 5, cycle 5\narrows: Δε × 100  (0.1 on the axes = 0.1 % strain)" font ",11"
 plot '/work/main/reports/figures/fig03_test5_target.dat' u 1:2:3:4 w vectors nohead lw 3 lc rgb "#dddddd" t "target path", \
