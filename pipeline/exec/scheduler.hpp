@@ -1,7 +1,8 @@
 #pragma once
 // Runs planned runs as `dem run` subprocesses, at most `jobs` at once, each after the run it
-// depends on; a copy (PlannedRun::copy_of) gets its original's result with its own input hash. A run whose result is complete and carries the same input hash is reused; a failed
-// run is reported with its log and blocks only the runs that need it. A run marked may_fail that
+// depends on; a copy (PlannedRun::copy_of) gets its original's result with its own input hash.
+// A run whose result is complete and carries the same input hash is reused; a failed run is
+// reported with its log and blocks only the runs that need it. A run marked may_fail that
 // stops with a message (refused input, exit 2; or a failed run, exit 1) is an outcome: recorded in
 // <result>.outcome with its input hash, reused like a result, and not a failure of the study.
 #include <optional>
