@@ -77,7 +77,6 @@ struct PairLoop {
   PeriodicCell cell;
   Vec3 strain_rate;
   double dt;
-  std::size_t n_pairs;
   const std::uint32_t* __restrict first;
   const std::uint32_t* __restrict second;
   const Vec3* __restrict s;
@@ -93,11 +92,11 @@ struct PairLoop {
   // Sizes the outputs and points at them.
   PairLoop(const LinearSpring<Friction>& law_, const Particles& p, const PeriodicCell& cell_, PairList& pairs,
            const Vec3& strain_rate_, double dt_, PairForces& out)
-      : law(law_), cell(cell_), strain_rate(strain_rate_), dt(dt_), n_pairs(pairs.size()) {
-    out.force.resize(n_pairs);
+      : law(law_), cell(cell_), strain_rate(strain_rate_), dt(dt_) {
+    out.force.resize(pairs.size());
     if constexpr (Friction::has_tangential) {
-      out.torque_i.resize(n_pairs);
-      out.torque_j.resize(n_pairs);
+      out.torque_i.resize(pairs.size());
+      out.torque_j.resize(pairs.size());
     }
     out.chunk_sums.resize(static_cast<std::size_t>(chunk_count(p.size())));
     first = pairs.first.data();

@@ -233,10 +233,9 @@ void particle_chunk(const ParticleLoop<Rotate, ViscousDamping>& loop, std::size_
 namespace avx512 {
 namespace {
 
-// Eight lanes, built on the four-lane primitives for loads, stores and gathers. On this AMD EPYC
-// (Zen 5) a 512-bit divide or square root costs what a 256-bit one does (1.15 ns and 2.3 ns per
-// instruction either way): 4,000 steps of shear of the 8,000-sphere packing, one thread, took
-// 1.70 s instead of 1.84 s (mu = 0.5) and 0.99 s instead of 1.12 s (mu = 0).
+// Eight lanes, built on the four-lane primitives for loads, stores and gathers: 4,000 steps of
+// shear of the 8,000-sphere bench packing, one thread, six interleaved runs each, minimum user
+// time 1.42 s instead of 1.70 s with four lanes (mu = 0.5), 0.88 s instead of 1.04 s (mu = 0).
 using V = __m512d;
 using Mask = __mmask8;  // bit p: lane p
 struct V3 {

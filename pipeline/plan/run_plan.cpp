@@ -47,6 +47,14 @@ std::string emit(const YAML::Node& n, const std::string& header) {
   return header + out.c_str() + "\n";
 }
 
+// What a resolved scene computes: the scene without its header comment and with an empty name.
+// Two runs with the same text here give the same result bit for bit.
+std::string unnamed(const YAML::Node& scene) {
+  YAML::Node copy = YAML::Clone(scene);
+  copy["name"] = "";
+  return emit(copy, "");
+}
+
 double estimated_steps(const dem::SceneConfig& scene) {
   double steps = 0;
   for (const dem::StageConfig& st : scene.stages) {
@@ -143,9 +151,7 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
         return 0;
       });
       // Variants that change only the tests share one preparation: same scene but for its name.
-      YAML::Node unnamed = YAML::Clone(scene);
-      unnamed["name"] = "";
-      const std::string unnamed_text = emit(unnamed, "");
+      const std::string unnamed_text = unnamed(scene);
       int prep_index = -1;
       if (const auto it = preparations.find(unnamed_text); it != preparations.end()) {
         prep_index = it->second;
@@ -204,21 +210,10 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
   return runs;
 }
 
-namespace {
-// A resolved scene without its header comment and its name: what the run computes.
-std::string inputs_of(const PlannedRun& r) {
-  std::istringstream in(r.scene_text);
-  std::string line, out;
-  while (std::getline(in, line))
-    if (line.rfind('#', 0) != 0 && line.rfind("name:", 0) != 0) out += line + '\n';
-  return out;
-}
-}  // namespace
-
 std::vector<PlannedRun> join_studies(const std::vector<StudyPlan>& plans) {
   std::vector<PlannedRun> runs;
   std::map<std::string, std::string> writer;  // result file -> run
-  std::map<std::string, int> computed;        // inputs_of -> the first run that computes them
+  std::map<std::string, int> computed;        // unnamed scene -> the first run that computes it
   for (const StudyPlan& plan : plans) {
     const int offset = static_cast<int>(runs.size());
     for (PlannedRun r : plan.runs) {
@@ -230,7 +225,7 @@ std::vector<PlannedRun> join_studies(const std::vector<StudyPlan>& plans) {
                                  ": give each study once, each with its own output folder");
       if (!r.may_fail) {
         const int index = static_cast<int>(runs.size());
-        const auto [first, is_new] = computed.emplace(inputs_of(r), index);
+        const auto [first, is_new] = computed.emplace(unnamed(YAML::Load(r.scene_text)), index);
         if (!is_new) r.copy_of = r.depends_on = first->second, r.cost = 0;
       }
       runs.push_back(std::move(r));

@@ -5,7 +5,10 @@
 
 #include <omp.h>
 
+#include <cstdint>
 #include <string>
+#include <tuple>
+#include <vector>
 
 #include "config/scene_config.hpp"
 #include "run/run_scene.hpp"
@@ -39,6 +42,23 @@ inline Simulation compressed(double friction, int threads, int steps, int side =
   for (int i = 0; i < steps; ++i) sim.step(targets, servo);
   omp_set_num_threads(saved);
   return sim;
+}
+
+// A contact at the current positions with its history: (i, j, spring, sliding).
+using Contact = std::tuple<std::uint32_t, std::uint32_t, Vec3, int>;
+// The pairs of the list in contact at the current positions, in list order, with their history.
+inline std::vector<Contact> touching(const Simulation& sim) {
+  std::vector<Contact> out;
+  const Particles& p = sim.particles();
+  const PairList& pairs = sim.pairs();
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    const auto i = pairs.first[k], j = pairs.second[k];
+    const double rsum = p.radius[i] + p.radius[j];
+    if (sim.cell().branch(p.s[i], p.s[j]).squaredNorm() >= rsum * rsum) continue;
+    out.emplace_back(i, j, pairs.spring.empty() ? Vec3::Zero() : pairs.spring[k],
+                     pairs.sliding.empty() ? 0 : int(pairs.sliding[k]));
+  }
+  return out;
 }
 
 // The same particles, cell, forces and sums (the pair lists may differ).

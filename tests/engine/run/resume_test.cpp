@@ -22,12 +22,14 @@
 
 #include "analysis/measurements.hpp"
 #include "config/scene_config.hpp"
+#include "engine/dynamics/packing_support.hpp"
 #include "engine/io/io_test_support.hpp"
 #include "io/hdf5.hpp"
 #include "io/state_io.hpp"
 #include "run/run_scene.hpp"
 
 using namespace dem;
+using dem::test::touching;
 
 namespace {
 
@@ -59,21 +61,6 @@ const std::string lattice =
     "  lattice: {n: [4, 4, 4], spacing: 4.5e-3, seed: 3}\n"
     "  grading: {diameters: [4.0e-3, 4.5e-3], percent_finer: [0, 100]}\n";
 
-// A contact at the current positions with its history: (i, j, spring, sliding).
-using Contact = std::tuple<std::uint32_t, std::uint32_t, Vec3, int>;
-std::vector<Contact> touching(const Simulation& sim) {
-  std::vector<Contact> out;
-  const Particles& p = sim.particles();
-  const PairList& pairs = sim.pairs();
-  for (std::size_t k = 0; k < pairs.size(); ++k) {
-    const auto i = pairs.first[k], j = pairs.second[k];
-    const double rsum = p.radius[i] + p.radius[j];
-    if (sim.cell().branch(p.s[i], p.s[j]).squaredNorm() >= rsum * rsum) continue;
-    out.emplace_back(i, j, pairs.spring.empty() ? Vec3::Zero() : pairs.spring[k],
-                     pairs.sliding.empty() ? 0 : int(pairs.sliding[k]));
-  }
-  return out;
-}
 
 // Every difference between two states, compared with == (empty: identical bit for bit, up to
 // the sign of zero).
