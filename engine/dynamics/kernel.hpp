@@ -54,6 +54,7 @@ struct MotionSums {
   double kinetic_half_step = 0;  // translational, 1/2 m |v(n+1/2)|^2
   double kinetic_centred = 0;    // translational + rotational, 1/2 m v(n-1/2).v(n+1/2) (+ the same with I, w)
   double damping_loss = 0;       // sum of dt F.v_mid - (change of 1/2 m v^2), translational + rotational
+  double max_speed2 = 0;         // largest |v(n+1/2)|^2 [m^2/s^2], for the Verlet list's displacement bound
 };
 
 // Forces of one evaluation, per pair, gathered per particle by `integrate` (no scattered writes,
@@ -289,7 +290,8 @@ struct ParticleLoop {
     damping.velocity(i, v[i], f);
     s[i] += v[i].cwiseProduct(dt_over_L);
     const bool ok = PeriodicCell::wrap(s[i]);
-    const double m = mass[i], twice_ke_new = m * v[i].squaredNorm();
+    const double speed2 = v[i].squaredNorm(), m = mass[i], twice_ke_new = m * speed2;
+    sums.max_speed2 = std::max(sums.max_speed2, speed2);
     sums.kinetic_half_step += twice_ke_new;
     sums.kinetic_centred += m * v_old.dot(v[i]);
     sums.damping_loss += dt * f.dot(v_old + v[i]) - (twice_ke_new - m * v_old.squaredNorm());

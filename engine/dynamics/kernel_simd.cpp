@@ -166,6 +166,7 @@ void particle_chunk(const ParticleLoop<Rotate, ViscousDamping>& loop, std::size_
   constexpr std::size_t batch = 16;  // blocks
   Vec3 torque[4 * batch];
   V acc = zero();  // twice: kinetic_half_step, kinetic_centred, damping_loss; 0
+  V speed2_max = zero();
   V inside = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
   const ViscousDamping& damping = loop.damping;
   const V dt = splat(loop.dt);
@@ -189,7 +190,8 @@ void particle_chunk(const ParticleLoop<Rotate, ViscousDamping>& loop, std::size_
       store(loop.s + ib, {wrap(s.x + v_new.x * dtLx, inside), wrap(s.y + v_new.y * dtLy, inside),
                            wrap(s.z + v_new.z * dtLz, inside)});
       const V m = _mm256_loadu_pd(loop.mass + ib);
-      const V twice_ke_new = m * dot(v_new, v_new);
+      const V speed2 = dot(v_new, v_new), twice_ke_new = m * speed2;
+      speed2_max = _mm256_max_pd(speed2_max, speed2);
       const Rows moved = transpose(twice_ke_new, m * dot(v_old, v_new),
                                    dt * dot(f, v_old + v_new) - (twice_ke_new - m * dot(v_old, v_old)), zero());
       if constexpr (Rotate) {
@@ -208,9 +210,10 @@ void particle_chunk(const ParticleLoop<Rotate, ViscousDamping>& loop, std::size_
     }
     i += 4 * n_blocks;
   }
-  alignas(32) double sums[4];
+  alignas(32) double sums[4], speeds[4];
   _mm256_store_pd(sums, acc);
-  out = {sums[0], sums[1], sums[2]};
+  _mm256_store_pd(speeds, speed2_max);
+  out = {sums[0], sums[1], sums[2], std::max(std::max(speeds[0], speeds[1]), std::max(speeds[2], speeds[3]))};
   ok = _mm256_movemask_pd(inside) == 0xF;
   for (; i < end; ++i) {  // the last particles, one by one
     Vec3 f, t;

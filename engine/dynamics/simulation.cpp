@@ -40,6 +40,7 @@ MotionSums total_of_chunks(const std::vector<MotionSums>& chunk_sums, bool wrapp
     total.kinetic_half_step += chunk.kinetic_half_step;
     total.kinetic_centred += chunk.kinetic_centred;
     total.damping_loss += chunk.damping_loss;
+    total.max_speed2 = std::max(total.max_speed2, chunk.max_speed2);
   }
   total.kinetic_half_step = wrapped ? 0.5 * total.kinetic_half_step : std::nan("");
   total.kinetic_centred *= 0.5;
@@ -130,7 +131,7 @@ void Simulation::step(const CellTargets& targets, AdaptiveServo& servo) {
 }
 
 void Simulation::advance(const std::function<Vec3()>& strain_rates) {
-  if (list_.needs_rebuild(particles_, cell_)) list_.build(particles_, cell_);
+  if (list_.rebuild_due(particles_, cell_)) list_.build(particles_, cell_);
   kernel_->forces(*this);
   if (!sums_.stress_Pa.allFinite()) {
     std::ostringstream msg;
@@ -146,6 +147,7 @@ void Simulation::advance(const std::function<Vec3()>& strain_rates) {
   energy_.dissipated_friction += sums_.friction_loss_J;
   strain_rate_ = strain_rates();
   const MotionSums motion = kernel_->integrate(*this);
+  list_.add_motion(dt_ * std::sqrt(motion.max_speed2));
   kinetic_energy_ = motion.kinetic_half_step;
   energy_.kinetic = motion.kinetic_centred;
   energy_.dissipated_damping += motion.damping_loss;

@@ -23,8 +23,7 @@ void PairIndex::build(const PairList& pairs, std::size_t particles) {
   for (std::size_t k = 0; k < pairs.size(); ++k) second_pairs[fill[pairs.second[k]]++] = static_cast<std::uint32_t>(k);
 }
 
-bool VerletList::needs_rebuild(const Particles& p, const PeriodicCell& cell) const {
-  if (!built_ || p.size() != s_at_build_.size()) return true;
+double VerletList::max_displacement(const Particles& p, const PeriodicCell& cell) const {
   const Vec3& L = cell.lengths();
   double max_disp2 = 0;  // a maximum: the same whatever the order or the number of threads
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(p.size());
@@ -33,9 +32,32 @@ bool VerletList::needs_rebuild(const Particles& p, const PeriodicCell& cell) con
     const Vec3 ds = PeriodicCell::min_image(p.s[i] - s_at_build_[i]);
     max_disp2 = std::max(max_disp2, ds.cwiseProduct(L).squaredNorm());
   }
-  const double lambda_min = L.cwiseQuotient(lengths_at_build_).minCoeff();
-  const double affine_closing = (2 * max_radius_ + skin_) * std::max(0.0, 1.0 - lambda_min);
-  return 2 * std::sqrt(max_disp2) + affine_closing > skin_;
+  return std::sqrt(max_disp2);
+}
+
+double VerletList::affine_closing(const PeriodicCell& cell) const {
+  const double lambda_min = cell.lengths().cwiseQuotient(lengths_at_build_).minCoeff();
+  return (2 * max_radius_ + skin_) * std::max(0.0, 1.0 - lambda_min);
+}
+
+bool VerletList::needs_rebuild(const Particles& p, const PeriodicCell& cell) const {
+  if (!built_ || p.size() != s_at_build_.size()) return true;
+  return 2 * max_displacement(p, cell) + affine_closing(cell) > skin_;
+}
+
+bool VerletList::rebuild_due(const Particles& p, const PeriodicCell& cell) {
+  if (!built_ || p.size() != s_at_build_.size()) return true;
+  // A particle's displacement relative to the cell, measured with today's sides, is at most the
+  // motion since the last measurement times the largest L / L_min; the 0.1 % margins cover round-off.
+  const Vec3& L = cell.lengths();
+  lengths_min_ = lengths_min_.cwiseMin(L);
+  const double stretch = L.cwiseQuotient(lengths_min_).maxCoeff();
+  const double affine = affine_closing(cell);
+  if (2 * 1.001 * stretch * drift_m_ + affine <= 0.999 * skin_) return false;  // false for a NaN bound too
+  ++exact_checks_;
+  const double d_max = max_displacement(p, cell);
+  drift_m_ = d_max, lengths_min_ = L;
+  return 2 * d_max + affine > skin_;
 }
 
 void VerletList::collect_pairs(const Particles& p, const PeriodicCell& cell, PairList& out) const {
@@ -104,6 +126,7 @@ void VerletList::restore_exact(Saved saved, const Particles& p) {
   lengths_at_build_ = saved.lengths_at_build;
   builds_ = saved.builds;
   built_ = true;
+  drift_m_ = std::numeric_limits<double>::infinity();  // measured at the next check
   max_radius_ = largest_radius(p);
   index_.build(pairs_, p.size());
 }
@@ -138,6 +161,7 @@ void VerletList::build(const Particles& p, const PeriodicCell& cell) {
   index_.build(pairs_, p.size());
   s_at_build_ = p.s;
   lengths_at_build_ = cell.lengths();
+  drift_m_ = 0, lengths_min_ = cell.lengths();
   built_ = true;
   ++builds_;
 }

@@ -93,6 +93,45 @@ TEST_CASE("Verlet list: never misses a contact in a compressing random gas", "[n
   REQUIRE(sim.cell().lengths().x() == Approx(0.015 * std::exp(-150 * 3000 * 5e-7)).epsilon(1e-12));
 }
 
+TEST_CASE("Verlet list: the displacement bound rebuilds at the exact criterion's steps and skips its passes",
+          "[neighbour][verlet]") {
+  // The step decides with rebuild_due (a bound on the displacement first, the exact pass only when
+  // the bound cannot rule a rebuild out). Slow spheres (~2 cm/s) in a cell strained at 40/s: over
+  // 20,000 steps the exact criterion, evaluated before every step, must fire at exactly the steps
+  // where the list is rebuilt, while the step itself ran the exact pass at a minority of steps.
+  std::mt19937_64 rng(5);
+  const PeriodicCell cell(Vec3(0.015, 0.015, 0.015));
+  Particles p;
+  std::normal_distribution<double> g(0.0, 0.02);
+  while (p.size() < 120) {
+    const double r = 1e-3 * (0.8 + 0.4 * uniform01(rng));
+    const Vec3 s(uniform01(rng), uniform01(rng), uniform01(rng));
+    bool free = true;
+    for (std::size_t j = 0; j < p.size() && free; ++j) free = cell.branch(s, p.s[j]).norm() > r + p.radius[j];
+    if (free) {
+      p.add(s, r, 2650);
+      p.v.back() = Vec3(g(rng), g(rng), g(rng));
+    }
+  }
+  Simulation sim(p, cell, test::material(1e5), test::no_damping(), 1e-6, 5e-5);
+  CellTargets targets;
+  targets[0].strain_rate_per_s = 40;
+  targets[1].strain_rate_per_s = -20;
+  const int steps = 20000;
+  int exact_due = 0;
+  for (int n = 0; n < steps; ++n) {
+    const bool due = sim.verlet_list().needs_rebuild(sim.particles(), sim.cell());
+    const std::size_t builds = sim.verlet_list().builds();
+    sim.step(targets, ServoSettings{});
+    INFO("step " << n);
+    REQUIRE(sim.verlet_list().builds() == builds + (due ? 1 : 0));
+    exact_due += due;
+  }
+  INFO("builds " << sim.verlet_list().builds() << ", exact passes " << sim.verlet_list().exact_checks());
+  REQUIRE(exact_due >= 5);  // the list was rebuilt during the run, not only at the start
+  REQUIRE(sim.verlet_list().exact_checks() < static_cast<std::size_t>(steps / 4));
+}
+
 TEST_CASE("Verlet list: the affine term of the criterion catches gaps closed by the cell alone", "[neighbour][verlet]") {
   // Two spheres at rest in fractional coordinates (no fluctuating motion, d_max = 0), initially 150 um
   // apart with a 100 um skin, so not in the list. Compressing x at 100/s closes the gap only through
