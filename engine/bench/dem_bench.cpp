@@ -14,7 +14,9 @@
 //    with friction; the mu = 0.5 packing, read without its springs, unjams in LAMMPS's fixed box.
 // Prints a table and writes BENCH_DIR/bench.json. STEPS = 0 builds the packings only (timing
 // right after building them in the same process was up to 27 % slower, mu = 0.5, one thread).
-//   dem-bench [BENCH_DIR] [STEPS] [REPETITIONS]
+// The Verlet skin of the timed runs is SKIN (default 2.5e-5 m, the skin of the study's cyclic
+// tests; the packings are built with 2e-4 m).
+//   dem-bench [BENCH_DIR] [STEPS] [REPETITIONS] [SKIN]
 #include <omp.h>
 #include <sys/resource.h>
 
@@ -48,11 +50,11 @@ stages:
      hold: {stress_tolerance: 0.01, unbalanced_force_ratio: 1.0e-2, check_interval: 100, max_duration: 3.0}}
 )";
 
-std::string timing_scene(const std::string& packing, double friction, long steps) {
+std::string timing_scene(const std::string& packing, double friction, double skin, long steps) {
   return "name: bench\nparticles: {state: " + packing + "}\nmaterial: {density: 2650, kn: 1.0e6, ks: 1.0e6, friction: " +
          std::to_string(friction) +
          "}\ndamping: {form: viscous, translational: 0.05, rotational: 0.05}\n"
-         "numerics: {time_step: 1.0e-6, verlet_skin: 2.0e-4}\n"
+         "numerics: {time_step: 1.0e-6, verlet_skin: " + std::to_string(skin) + "}\n"
          "stages:\n  - {name: hold, type: stress, target: [1.0e5, 1.0e5, 1.0e5], rate: 1.0e6, max_strain_rate: 1.0,\n"
          "     hold: {stress_tolerance: 1.0e-9, unbalanced_force_ratio: 1.0e-12, check_interval: 1000000000, max_duration: " +
          std::to_string(static_cast<double>(steps) * 1e-6) + "}}\n";
@@ -114,6 +116,7 @@ int main(int argc, char** argv) {
   const std::string dir = argc > 1 ? argv[1] : "build/bench";
   const long steps = argc > 2 ? std::stol(argv[2]) : 4000;
   const int reps = argc > 3 ? std::stoi(argv[3]) : 5;
+  const double skin = argc > 4 ? std::stod(argv[4]) : 2.5e-5;  // the study's shearing scenes' skin
   fs::create_directories(dir);
   if (steps == 0) {  // build the packings only: timing in a fresh process gives steadier numbers
     for (double mu : {0.5, 0.0}) packing_for(dir, mu);
@@ -123,7 +126,7 @@ int main(int argc, char** argv) {
   const std::pair<double, double> cases[] = {{0.5, 0.5}, {0.0, 0.0}, {0.0, 0.5}};  // (packing's friction, friction)
   for (const auto& [packing_mu, mu] : cases) {
     const std::string packing = packing_for(dir, packing_mu);
-    const dem::SceneConfig scene = dem::scene_from_text(timing_scene(packing, mu, 1000000000L), dir + "/bench.yaml");
+    const dem::SceneConfig scene = dem::scene_from_text(timing_scene(packing, mu, skin, 1000000000L), dir + "/bench.yaml");
     std::vector<dem::Vec3> one_thread_positions;
     double one_thread_rate = 0;
     const auto particle_steps = static_cast<double>(steps) * 8000.0;
@@ -159,8 +162,8 @@ int main(int argc, char** argv) {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   const double peak_mb = static_cast<double>(usage.ru_maxrss) / 1024.0;
-  std::printf("dem-bench %s: 8,000 spheres, dt = 1e-6 s, %ld steps x %d repetitions, vector loops %d lanes\n",
-              dem::software_version, steps, reps, dem::simd_width());
+  std::printf("dem-bench %s: 8,000 spheres, dt = 1e-6 s, skin %g m, %ld steps x %d repetitions, vector loops %d lanes\n",
+              dem::software_version, skin, steps, reps, dem::simd_width());
   std::printf("%-8s %-9s %-8s %-22s %-24s %-8s %-10s %s\n", "packing", "friction", "threads", "particle-steps/s (med)", "min .. max",
               "2Nc/Np", "speed-up", "same bits as 1 thread");
   for (const auto& r : results) {
@@ -176,7 +179,7 @@ int main(int argc, char** argv) {
   std::printf("peak memory (max RSS): %.1f MB\n", peak_mb);
   std::ofstream json(dir + "/bench.json");
   json << "{\n  \"code\": \"cyclic-triax dem\",\n  \"version\": \"" << dem::software_version
-       << "\",\n  \"vector_lanes\": " << dem::simd_width() << ",\n  \"particles\": 8000,\n  \"steps\": " << steps << ",\n  \"repetitions\": " << reps
+       << "\",\n  \"vector_lanes\": " << dem::simd_width() << ",\n  \"particles\": 8000,\n  \"verlet_skin_m\": " << skin << ",\n  \"steps\": " << steps << ",\n  \"repetitions\": " << reps
        << ",\n  \"peak_rss_MB\": " << peak_mb << ",\n  \"runs\": [";
   // One list for the runs of one process, one for two runs at once (their rate is both runs').
   const char* sep = "\n";

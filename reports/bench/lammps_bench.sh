@@ -7,7 +7,7 @@
 # PARTICLES.txt: "x y z radius" (m), one sphere per line, '#' comment lines (`dem state R.h5`).
 # LX LY LZ: periodic box 0..L (m). Settings as in dem-bench: SI units, density 2650 kg/m^3, Hookean
 # contacts kn = kt = 1e6 N/m with tangential history and Coulomb friction mu, dt = 1e-6 s, neighbour
-# skin 2e-4 m checked every step. Serial, one core (OMP_NUM_THREADS=1), mu = 0.5 then mu = 0
+# skin $SKIN m (default 2e-4) checked every step. Serial, one core (OMP_NUM_THREADS=1), mu = 0.5 then mu = 0
 # (FRICTIONS="0.5" or "0" times one only, e.g. each on the packing jammed with that friction).
 #
 # Like dem-bench, every repetition starts again from the packing: read it, `run 200` (warm-up), then
@@ -34,7 +34,7 @@ LMP=${LMP:-lmp}
 command -v "${LMP%% *}" >/dev/null || die "'${LMP%% *}' not found: install the Debian package lammps (apt-get install -y lammps)"
 export OMP_NUM_THREADS=1
 
-density=2650 kn=1.0e6 kt=1.0e6 zeta=0.05 dt=1.0e-6 skin=2.0e-4 warmup=200
+density=2650 kn=1.0e6 kt=1.0e6 zeta=0.05 dt=1.0e-6 skin=${SKIN:-2.0e-4} warmup=200
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
