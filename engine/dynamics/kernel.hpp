@@ -94,10 +94,15 @@ struct PairLoop {
   PairLoop(const LinearSpring<Friction>& law_, const Particles& p, const PeriodicCell& cell_, PairList& pairs,
            const Vec3& strain_rate_, double dt_, PairForces& out)
       : law(law_), cell(cell_), strain_rate(strain_rate_), dt(dt_) {
-    out.force.resize(pairs.size());
+    // One spare entry, zero: the vectorised update reads each entry as four doubles (the fourth
+    // is the next entry's first, and is dropped), so the last pair's read stays inside the array.
+    out.force.resize(pairs.size() + 1);
+    out.force.back().setZero();
     if constexpr (Friction::has_tangential) {
-      out.torque_i.resize(pairs.size());
-      out.torque_j.resize(pairs.size());
+      out.torque_i.resize(pairs.size() + 1);
+      out.torque_j.resize(pairs.size() + 1);
+      out.torque_i.back().setZero();
+      out.torque_j.back().setZero();
     }
     out.chunk_sums.resize(static_cast<std::size_t>(chunk_count(p.size())));
     first = pairs.first.data();
