@@ -27,13 +27,18 @@ inline constexpr std::ptrdiff_t chunk_size = 512;
 inline std::ptrdiff_t chunk_count(std::size_t n) { return (static_cast<std::ptrdiff_t>(n) + chunk_size - 1) / chunk_size; }
 
 // Calls body(c, begin, end) for every chunk c = [begin, end) of n items, chunks in parallel;
-// returns whether every call returned true.
+// returns whether every call returned true. Threads take equal runs of chunks starting from
+// chunk 1, the first chunk going last, with the partial last chunk: the lowest-numbered
+// particles are `first` in the pairs across the wrap of a spatially sorted order, so chunk 0 has
+// the most pairs (on the 8,000-sphere dense packing 2,390 against about 1,690, and 506 in the
+// last chunk of 320 particles).
 template <class Body>
 bool for_each_chunk(std::size_t n, const Body& body) {
   const std::ptrdiff_t chunks = chunk_count(n);
   int all = 1;
 #pragma omp parallel for schedule(static) reduction(&& : all)
-  for (std::ptrdiff_t c = 0; c < chunks; ++c) {
+  for (std::ptrdiff_t rotated = 0; rotated < chunks; ++rotated) {
+    const std::ptrdiff_t c = (rotated + 1) % chunks;
     const std::size_t begin = static_cast<std::size_t>(c * chunk_size);
     all = body(static_cast<std::size_t>(c), begin, std::min(n, begin + static_cast<std::size_t>(chunk_size))) && all;
   }
