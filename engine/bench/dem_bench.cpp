@@ -6,7 +6,7 @@
 //    timed on a packing jammed with it; the mu = 0 one has more contacts).
 // 2. Loads each and times the step loop at constant stress (the servo holding 100 kPa) on 1 and
 //    on 2 threads, and as two runs at once with one thread each (the pipeline's -j 2), median of
-//    several repetitions, and checks that every way ends in the same state bit for bit. Three
+//    several repetitions of the three ways interleaved, and checks that every way ends in the same state bit for bit. Three
 //    cases: mu = 0.5 on its own packing, mu = 0 on its own, and mu = 0.5 on the mu = 0 packing.
 //    The last is the like-for-like comparison with LAMMPS (reports/bench/run_bench.sh): that
 //    packing is in equilibrium without tangential forces, so starting without tangential springs,
@@ -128,14 +128,17 @@ int main(int argc, char** argv) {
     const std::string packing = packing_for(dir, packing_mu);
     const dem::SceneConfig scene = dem::scene_from_text(timing_scene(packing, mu, skin, 1000000000L), dir + "/bench.yaml");
     std::vector<dem::Vec3> one_thread_positions;
-    double one_thread_rate = 0;
     const auto particle_steps = static_cast<double>(steps) * 8000.0;
-    // 1 and 2 threads in one run, then two runs at once with one thread each (the pipeline's -j 2).
-    for (int threads : {1, 2, 0}) {
-      std::vector<double> rates;
-      double z = 0;
-      bool same = true;
-      for (int r = 0; r < reps; ++r) {
+    // The three ways, interleaved repetition by repetition (so that a slow spell of the machine
+    // falls on all of them, not on the repetitions of one): 1 and 2 threads in one run, then two
+    // runs at once with one thread each (the pipeline's -j 2).
+    const int ways[] = {1, 2, 0};
+    std::vector<double> rates[3];
+    double z[3] = {0, 0, 0};
+    bool same[3] = {true, true, true};
+    for (int r = 0; r < reps; ++r)
+      for (int w = 0; w < 3; ++w) {
+        const int threads = ways[w];
         std::vector<Timed> runs(threads > 0 ? 1 : 2);
         if (threads > 0) {
           omp_set_num_threads(threads);
@@ -148,15 +151,18 @@ int main(int argc, char** argv) {
         double wall = 0;
         for (const Timed& t : runs) {
           wall = std::max(wall, t.wall_s);
-          same = same && t.positions == one_thread_positions;
+          same[w] = same[w] && t.positions == one_thread_positions;
         }
-        rates.push_back(static_cast<double>(runs.size()) * particle_steps / wall);
-        z = runs[0].contacts_per_particle;
+        rates[w].push_back(static_cast<double>(runs.size()) * particle_steps / wall);
+        z[w] = runs[0].contacts_per_particle;
       }
-      std::sort(rates.begin(), rates.end());
-      const double median = rates[rates.size() / 2];
-      if (threads == 1) one_thread_rate = median;
-      results.push_back({packing_tag(packing_mu), mu, threads, median, rates.front(), rates.back(), z, same, median / one_thread_rate});
+    double one_thread_rate = 0;
+    for (int w = 0; w < 3; ++w) {
+      std::sort(rates[w].begin(), rates[w].end());
+      const double median = rates[w][rates[w].size() / 2];
+      if (ways[w] == 1) one_thread_rate = median;
+      results.push_back({packing_tag(packing_mu), mu, ways[w], median, rates[w].front(), rates[w].back(), z[w], same[w],
+                         median / one_thread_rate});
     }
   }
   rusage usage{};
