@@ -35,19 +35,13 @@ PairVec list_pairs(const PairList& l) {
   return out;
 }
 
-}  // namespace
-
-TEST_CASE("Verlet list: never misses a contact in a compressing random gas", "[neighbour][verlet]") {
-  // 150 spheres (d = 1.6 to 2.4 mm) in a 15 mm cell with random velocities of ~5 m/s, compressed on
-  // x and y and stretched on z. Before every step we check the invariant the force loop relies on:
-  // if the rebuild criterion does not fire, every pair in contact is in the list (brute force). If
-  // it fires, the rebuilt list must equal the brute-force set of pairs with gap < skin. The check is
-  // exact (set comparison), no tolerance.
-  std::mt19937_64 rng(11);
-  const PeriodicCell cell(Vec3(0.015, 0.015, 0.015));
+// `count` non-overlapping spheres (d = 1.6 to 2.4 mm) at random places in `cell`, each velocity
+// component normal with standard deviation `speed` [m/s].
+Particles random_gas(const PeriodicCell& cell, std::size_t count, double speed, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> g(0.0, speed);
   Particles p;
-  std::normal_distribution<double> g(0.0, 5.0);
-  while (p.size() < 150) {
+  while (p.size() < count) {
     const double r = 1e-3 * (0.8 + 0.4 * uniform01(rng));
     const Vec3 s(uniform01(rng), uniform01(rng), uniform01(rng));
     bool free = true;
@@ -57,6 +51,19 @@ TEST_CASE("Verlet list: never misses a contact in a compressing random gas", "[n
       p.v.back() = Vec3(g(rng), g(rng), g(rng));
     }
   }
+  return p;
+}
+
+}  // namespace
+
+TEST_CASE("Verlet list: never misses a contact in a compressing random gas", "[neighbour][verlet]") {
+  // 150 spheres (d = 1.6 to 2.4 mm) in a 15 mm cell with random velocities of ~5 m/s, compressed on
+  // x and y and stretched on z. Before every step we check the invariant the force loop relies on:
+  // if the rebuild criterion does not fire, every pair in contact is in the list (brute force). If
+  // it fires, the rebuilt list must equal the brute-force set of pairs with gap < skin. The check is
+  // exact (set comparison), no tolerance.
+  const PeriodicCell cell(Vec3(0.015, 0.015, 0.015));
+  const Particles p = random_gas(cell, 150, 5.0, 11);
   const double skin = 1e-4;
   Simulation sim(p, cell, test::material(1e5), test::no_damping(), 5e-7, skin);
   CellTargets targets;
@@ -99,20 +106,8 @@ TEST_CASE("Verlet list: the displacement bound rebuilds at the exact criterion's
   // the bound cannot rule a rebuild out). Slow spheres (~2 cm/s) in a cell strained at 40/s: over
   // 20,000 steps the exact criterion, evaluated before every step, must fire at exactly the steps
   // where the list is rebuilt, while the step itself ran the exact pass at a minority of steps.
-  std::mt19937_64 rng(5);
   const PeriodicCell cell(Vec3(0.015, 0.015, 0.015));
-  Particles p;
-  std::normal_distribution<double> g(0.0, 0.02);
-  while (p.size() < 120) {
-    const double r = 1e-3 * (0.8 + 0.4 * uniform01(rng));
-    const Vec3 s(uniform01(rng), uniform01(rng), uniform01(rng));
-    bool free = true;
-    for (std::size_t j = 0; j < p.size() && free; ++j) free = cell.branch(s, p.s[j]).norm() > r + p.radius[j];
-    if (free) {
-      p.add(s, r, 2650);
-      p.v.back() = Vec3(g(rng), g(rng), g(rng));
-    }
-  }
+  const Particles p = random_gas(cell, 120, 0.02, 5);
   Simulation sim(p, cell, test::material(1e5), test::no_damping(), 1e-6, 5e-5);
   CellTargets targets;
   targets[0].strain_rate_per_s = 40;
