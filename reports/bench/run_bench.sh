@@ -39,7 +39,7 @@ echo "== LAMMPS, same packings =="
 cases="mu05:0.5 mu0:0 mu0:0.5"   # packing:friction, the engine's order
 for c in $cases; do
   name=${c%%:*} mu=${c##*:}
-  [ -f "$work/packing_$name.txt" ] || "$build/bin/dem" state "$work/packing_$name.h5" >"$work/packing_$name.txt"
+  "$build/bin/dem" state "$work/packing_$name.h5" >"$work/packing_$name.txt"
   read -r lx ly lz < <("$build/bin/dem" table "$work/packing_$name.h5" cell_length_1 cell_length_2 cell_length_3 | tail -n 1)
   FRICTIONS=$mu "$here/lammps_bench.sh" "$work/packing_$name.txt" "$lx" "$ly" "$lz" "$steps" "$reps" "$work/lammps_${name}_$mu.json"
 done
