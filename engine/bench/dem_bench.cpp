@@ -6,8 +6,9 @@
 //    timed on a packing jammed with it; the mu = 0 one has more contacts).
 // 2. Loads each and times the step loop at constant stress (the servo holding 100 kPa) on 1 and
 //    on 2 threads, and as two runs at once with one thread each (the pipeline's -j 2), median of
-//    several repetitions of the three ways interleaved, and checks that every way ends in the same state bit for bit. Three
-//    cases: mu = 0.5 on its own packing, mu = 0 on its own, and mu = 0.5 on the mu = 0 packing.
+//    several repetitions of the three ways interleaved, and checks that every way ends in the
+//    same state bit for bit. Three cases: mu = 0.5 on its own packing, mu = 0 on its own, and
+//    mu = 0.5 on the mu = 0 packing.
 //    The last is the like-for-like comparison with LAMMPS (reports/bench/run_bench.sh): that
 //    packing is in equilibrium without tangential forces, so starting without tangential springs,
 //    as LAMMPS must (it reads bare positions), loses nothing and both codes time a jammed packing

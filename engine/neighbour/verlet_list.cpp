@@ -42,7 +42,7 @@ double VerletList::affine_closing(const PeriodicCell& cell) const {
 
 bool VerletList::needs_rebuild(const Particles& p, const PeriodicCell& cell) const {
   if (!built_ || p.size() != s_at_build_.size()) return true;
-  return 2 * max_displacement(p, cell) + affine_closing(cell) > skin_;
+  return beyond_skin(max_displacement(p, cell), affine_closing(cell));
 }
 
 bool VerletList::rebuild_due(const Particles& p, const PeriodicCell& cell) {
@@ -57,7 +57,7 @@ bool VerletList::rebuild_due(const Particles& p, const PeriodicCell& cell) {
   ++exact_checks_;
   const double d_max = max_displacement(p, cell);
   drift_m_ = d_max, lengths_min_ = L;
-  return 2 * d_max + affine > skin_;
+  return beyond_skin(d_max, affine);
 }
 
 void VerletList::collect_pairs(const Particles& p, const PeriodicCell& cell, PairList& out) const {
@@ -70,6 +70,7 @@ void VerletList::collect_pairs(const Particles& p, const PeriodicCell& cell, Pai
     const double cut = p.radius[i] + p.radius[j] + skin_;
     return cell.branch(p.s[i], p.s[j]).squaredNorm() < cut * cut;
   };
+  std::vector<std::uint32_t> js;
   if (std::min({nb[0], nb[1], nb[2]}) < 3) {  // too few bins for a 27-bin stencil: all pairs
     for (std::size_t i = 0; i < n; ++i)
       for (std::size_t j = i + 1; j < n; ++j)
@@ -92,37 +93,24 @@ void VerletList::collect_pairs(const Particles& p, const PeriodicCell& cell, Pai
   std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
   for (std::size_t i = 0; i < n; ++i) members[fill[bin[i]]++] = static_cast<std::uint32_t>(i);
 
-  // Each particle's partners j > i, in parallel over blocks of particles; the blocks' lists are
-  // joined in block order, so the list is the same whatever the number of threads.
-  const std::ptrdiff_t blocks = static_cast<std::ptrdiff_t>((n + 255) / 256);
-  std::vector<PairList> part(static_cast<std::size_t>(blocks));
-#pragma omp parallel for schedule(dynamic)
-  for (std::ptrdiff_t blk = 0; blk < blocks; ++blk) {
-    PairList& out_b = part[static_cast<std::size_t>(blk)];
-    std::vector<std::uint32_t> js;
-    for (std::size_t i = static_cast<std::size_t>(blk) * 256; i < std::min(n, static_cast<std::size_t>(blk + 1) * 256); ++i) {
-      const int b0 = bin_of(p.s[i], 0), b1 = bin_of(p.s[i], 1), b2 = bin_of(p.s[i], 2);
-      js.clear();
-      for (int d0 = -1; d0 <= 1; ++d0)
-        for (int d1 = -1; d1 <= 1; ++d1)
-          for (int d2 = -1; d2 <= 1; ++d2) {
-            const int c0 = (b0 + d0 + nb[0]) % nb[0], c1 = (b1 + d1 + nb[1]) % nb[1], c2 = (b2 + d2 + nb[2]) % nb[2];
-            const std::size_t c = (static_cast<std::size_t>(c0) * nb[1] + c1) * nb[2] + c2;
-            for (std::uint32_t m = start[c]; m < start[c + 1]; ++m) {
-              const std::uint32_t j = members[m];
-              if (j > i && within(i, j)) js.push_back(j);
-            }
+  for (std::size_t i = 0; i < n; ++i) {
+    const int b0 = bin_of(p.s[i], 0), b1 = bin_of(p.s[i], 1), b2 = bin_of(p.s[i], 2);
+    js.clear();
+    for (int d0 = -1; d0 <= 1; ++d0)
+      for (int d1 = -1; d1 <= 1; ++d1)
+        for (int d2 = -1; d2 <= 1; ++d2) {
+          const int c0 = (b0 + d0 + nb[0]) % nb[0], c1 = (b1 + d1 + nb[1]) % nb[1], c2 = (b2 + d2 + nb[2]) % nb[2];
+          const std::size_t c = (static_cast<std::size_t>(c0) * nb[1] + c1) * nb[2] + c2;
+          for (std::uint32_t m = start[c]; m < start[c + 1]; ++m) {
+            const std::uint32_t j = members[m];
+            if (j > i && within(i, j)) js.push_back(j);
           }
-      std::sort(js.begin(), js.end());
-      for (std::uint32_t j : js) {
-        out_b.first.push_back(static_cast<std::uint32_t>(i));
-        out_b.second.push_back(j);
-      }
+        }
+    std::sort(js.begin(), js.end());
+    for (std::uint32_t j : js) {
+      out.first.push_back(static_cast<std::uint32_t>(i));
+      out.second.push_back(j);
     }
-  }
-  for (const PairList& b : part) {
-    out.first.insert(out.first.end(), b.first.begin(), b.first.end());
-    out.second.insert(out.second.end(), b.second.begin(), b.second.end());
   }
 }
 

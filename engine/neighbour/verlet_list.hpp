@@ -97,6 +97,8 @@ class VerletList {
   void collect_pairs(const Particles& p, const PeriodicCell& cell, PairList& out) const;
   double max_displacement(const Particles& p, const PeriodicCell& cell) const;  // d_max [m]
   double affine_closing(const PeriodicCell& cell) const;                         // [m]
+  // The exact criterion, shared by needs_rebuild and rebuild_due so that both decide alike.
+  bool beyond_skin(double d_max, double affine) const { return 2 * d_max + affine > skin_; }
 
   double skin_ = 0;
   bool keep_history_ = false;
