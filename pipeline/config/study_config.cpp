@@ -56,6 +56,37 @@ Overrides read_overrides(dem::Section& s, const std::string& key, bool for_test,
   return out;
 }
 
+// `seeds: N` (the seeds 1..N) or `seeds: [a, b, ...]` (distinct); the samples of an ensemble.
+std::vector<std::int64_t> read_seeds(dem::Section& s, const std::vector<std::int64_t>& def) {
+  const std::string doc = "the samples: N (seeds 1..N) or a list of distinct seeds of the diameter sampler";
+  if (!s.has("seeds")) {
+    s.optional_child("seeds", doc);  // declared all the same, for did-you-mean
+    return def;
+  }
+  const YAML::Node n = s.raw("seeds", "an integer in [1, 1000] or a list of distinct integers >= 0", doc);
+  std::vector<std::int64_t> out;
+  try {
+    if (n.IsScalar()) {
+      const long long count = n.as<long long>();
+      if (count < 1 || count > 1000) s.fail("seeds", "must be in [1, 1000], got " + n.Scalar());
+      for (long long i = 1; i <= count; ++i) out.push_back(i);
+    } else if (n.IsSequence() && n.size() > 0) {
+      std::set<std::int64_t> seen;
+      for (const YAML::Node& e : n) {
+        const long long seed = e.as<long long>();
+        if (seed < 0) s.fail("seeds", "seeds must be >= 0, got " + e.Scalar());
+        if (!seen.insert(seed).second) s.fail("seeds", "seed " + e.Scalar() + " is listed twice");
+        out.push_back(seed);
+      }
+    } else {
+      s.fail("seeds", "must be an integer in [1, 1000] or a non-empty list of seeds");
+    }
+  } catch (const YAML::Exception&) {
+    s.fail("seeds", "must be an integer in [1, 1000] or a list of integers >= 0");
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string describe(const Variant& v) {
@@ -120,6 +151,7 @@ Study load_study(const std::string& file) {
     if (!names.insert(tc.name).second) t.fail("name", "duplicate name '" + tc.name + "'");
     st.tests.push_back(tc);
   }
+  const std::vector<std::int64_t> seeds = read_seeds(root, {});
   dem::Section profiles = root.child("profiles", "named sizes of the study (paper, quick)");
   for (const char* name : {"paper", "quick"}) {
     if (!profiles.has(name)) profiles.fail(name, "missing (every study defines the paper and quick profiles)");
@@ -128,6 +160,7 @@ Study load_study(const std::string& file) {
     pr.name = name;
     pr.lattice = static_cast<int>(p.integer("lattice", 2, 100, 20, "lattice sites per axis of the preparation"));
     pr.max_repeat = static_cast<int>(p.integer("max_repeat", 0, 1000000, 0, "cap on each repeat block's cycles (0: none)"));
+    pr.seeds = read_seeds(p, seeds);
     p.finish();
     st.profiles.push_back(pr);
   }
@@ -147,6 +180,12 @@ Study load_study(const std::string& file) {
       for (const auto& o : var.set)
         if (o.first.rfind("particles", 0) == 0 && !st.tests.empty())
           v.fail("set." + o.first, "would change where the tests' particles come from; put it under prepare:");
+      const bool ensemble = !seeds.empty() || !st.profiles[0].seeds.empty() || !st.profiles[1].seeds.empty();
+      for (const Overrides* o : {&var.set, &var.prepare})
+        for (const auto& kv : *o)
+          if (ensemble && kv.first.rfind("particles.lattice.seed", 0) == 0)
+            v.fail(std::string(o == &var.set ? "set." : "prepare.") + kv.first,
+                   "the study's seeds choose the samples; a variant cannot set the seed of an ensemble");
       if (v.has("time_step_fraction")) {
         var.time_step_fraction = v.number("time_step_fraction", "", {0, 10, true}, std::nullopt,
                                           "numerics.time_step as a fraction of the sample's critical step 2 sqrt(m_min/kn)");

@@ -1,6 +1,8 @@
 #pragma once
 // A study: every density x test combination of the paper, read from YAML into typed structs; a
-// study may also list variants (convergence, stability), each a set of scene overrides.
+// study may also list variants (convergence, stability), each a set of scene overrides, and
+// seeds: an ensemble of samples, every density x test x variant run on each seed's own sample.
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <utility>
@@ -37,6 +39,7 @@ struct Profile {
   std::string name;
   int lattice = 20;     // lattice sites per axis of the preparation (20 -> 8,000 spheres)
   int max_repeat = 0;   // > 0: each repeat block of a test runs at most this many cycles
+  std::vector<std::int64_t> seeds;  // the samples (seeds of the diameter sampler); empty: the template's one sample
 };
 
 struct Study {

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -114,20 +115,30 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
   const bool named = !study.variants.empty();
   std::map<std::string, int> preparations;  // resolved preparation (without its name) -> run index
   std::map<int, double> particles;          // preparation run index -> its number of spheres
+  // An ensemble: every run once per seed, in <out_dir>/seed<N>/, on that seed's own sample.
+  struct Sample {
+    std::optional<std::int64_t> seed;
+    std::string folder;  // "" or "seed<N>/"
+  };
+  std::vector<Sample> samples;
+  for (const std::int64_t s : profile.seeds) samples.push_back({s, "seed" + std::to_string(s) + "/"});
+  if (samples.empty()) samples.push_back({});
   auto paths = [&](PlannedRun& r) {
     r.scene_file = (fs::path(out_dir) / "scenes" / (r.name + ".yaml")).string();
     r.result = (fs::path(out_dir) / (r.name + ".h5")).string();
     r.log = (fs::path(out_dir) / "logs" / (r.name + ".log")).string();
   };
+  for (const Sample& sample_of : samples)
   for (std::size_t vi = 0; vi < variants.size(); ++vi) {
     const Variant& v = variants[vi];
     const std::string where = named ? "variants[" + std::to_string(vi) + "] (" + v.name + ")" : "";
-    const std::string prefix = named ? v.name + "_" : "";
+    const std::string prefix = sample_of.folder + (named ? v.name + "_" : "");
     for (const Density& d : study.densities) {
       PlannedRun prep;
       // A study of cases (variants, one sample, no tests): each run is its case.
       const bool case_only = named && study.tests.empty() && study.densities.size() == 1;
-      prep.name = case_only ? v.name : prefix + d.name + "_prepare";
+      prep.name = case_only ? sample_of.folder + v.name : prefix + d.name + "_prepare";
+      prep.seed = sample_of.seed;
       prep.density = d.name;
       prep.may_fail = v.may_fail;
       paths(prep);
@@ -140,6 +151,8 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
         mu << d.friction;
         dem::apply_override(scene, study.preparation, "material.friction", mu.str());
         dem::apply_override(scene, study.preparation, "particles.lattice.n", "[" + n + ", " + n + ", " + n + "]");
+        if (sample_of.seed)
+          dem::apply_override(scene, study.preparation, "particles.lattice.seed", std::to_string(*sample_of.seed));
         for (const auto& [key, value] : v.set) dem::apply_override(scene, study.preparation, key, value);
         for (const auto& [key, value] : v.prepare) dem::apply_override(scene, study.preparation, key, value);
         if (v.time_step_fraction) {
@@ -180,6 +193,7 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
         run.name = prefix + d.name + "_" + t.name;
         run.density = d.name;
         run.test = t.name;
+        run.seed = sample_of.seed;
         run.variants = {v.name};
         run.may_fail = v.may_fail;
         paths(run);
@@ -238,6 +252,7 @@ void write_scenes(const std::vector<PlannedRun>& runs) {
   for (const PlannedRun& r : runs) {
     fs::create_directories(fs::path(r.scene_file).parent_path());
     fs::create_directories(fs::path(r.log).parent_path());
+    fs::create_directories(fs::path(r.result).parent_path());  // seed<N>/ of an ensemble
     std::ifstream in(r.scene_file);
     std::stringstream old;
     old << in.rdbuf();
@@ -253,7 +268,7 @@ void write_manifest(const std::vector<PlannedRun>& runs, const Study& study, con
   std::map<std::string, std::string> settings;
   for (const Variant& v : study.variants) settings[v.name] = describe(v);
   std::ostringstream text;
-  text << "# variant\tdensity\ttest\trun\tresult\tstarts_from\tmay_fail\tsettings\n";
+  text << "# variant\tdensity\ttest\trun\tresult\tstarts_from\tmay_fail\tsettings\tseed\n";
   // Grouped by variant in the study's order (the order of the report's tables).
   std::vector<std::string> order;
   for (const Variant& v : study.variants) order.push_back(v.name);
@@ -264,7 +279,8 @@ void write_manifest(const std::vector<PlannedRun>& runs, const Study& study, con
         text << (v.empty() ? "-" : v) << '\t' << r.density << '\t' << (r.test.empty() ? "-" : r.test) << '\t' << r.name
            << '\t' << r.result << '\t'
            << (r.depends_on >= 0 ? runs[static_cast<std::size_t>(r.depends_on)].name : std::string("-")) << '\t'
-           << (r.may_fail ? 1 : 0) << '\t' << (settings.count(v) ? settings[v] : "as written") << '\n';
+           << (r.may_fail ? 1 : 0) << '\t' << (settings.count(v) ? settings[v] : "as written") << '\t'
+             << (r.seed ? std::to_string(*r.seed) : std::string("-")) << '\n';
   const fs::path file = fs::path(out_dir) / "runs.tsv", tmp = fs::path(out_dir) / "runs.tsv.tmp";
   std::ofstream(tmp) << text.str();
   fs::rename(tmp, file);  // atomic: a reader never sees half a manifest

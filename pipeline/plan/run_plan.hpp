@@ -2,6 +2,8 @@
 // The runs of a study: one preparation per density, then every test from that density's sample.
 // Each run gets a resolved scene file (every override applied), written where `dem run` can read
 // it, and an input hash over that scene, the engine version and the hashes of the runs it needs.
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +21,7 @@ struct PlannedRun {
   int depends_on = -1;      // index of the run whose result this one starts from
   double cost = 0;          // estimated particle-steps, for the ETA
   std::string density, test;  // test: empty for a preparation
+  std::optional<std::int64_t> seed;  // the sample's seed in an ensemble (study key seeds)
   std::vector<std::string> variants;  // the variants whose results this run is (a shared preparation: several)
   bool may_fail = false;    // stopping with a message is an outcome (the scheduler records it)
   int copy_of = -1;         // a run that computes exactly this (see join_studies): its result is copied
