@@ -1,7 +1,7 @@
 # cyclic-triax: the two commands a user needs are `make all` and `make test`.
 BUILD    ?= build
 JOBS     ?= $(shell nproc 2>/dev/null || echo 2)
-PACKAGES := g++ cmake make libeigen3-dev libhdf5-dev libyaml-cpp-dev catch2 gnuplot-nox hdf5-tools
+PACKAGES := g++ cmake make libeigen3-dev libhdf5-dev libyaml-cpp-dev catch2 gnuplot-nox hdf5-tools libboost-math-dev
 SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 RESULTS  ?= results/study/paper

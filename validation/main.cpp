@@ -1,64 +1,24 @@
-// validate: compares a study's results with the stored references (reference_data/paper.yaml),
-// writes validation.json and validation.md, and exits 1 if a must-pass row fails.
-//   validate --results DIR --references FILE --out DIR
+// validate: judges a study's results against the stored references (reference_data/paper.yaml),
+// writes validation.json and validation.md, and exits 1 if a must-pass row is inconsistent.
+//   validate --results DIR --references FILE --out DIR [--profile paper|quick]
+// DIR is a study's results: an ensemble (DIR/seed<N>/, one folder per sample) or one sample.
+// Every row is computed per sample; its verdict compares the paper's value, widened by the row's
+// tolerance, with the 95 % prediction interval of a single sample of the ensemble (rows.hpp).
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
 
-#include "config/yaml_section.hpp"
-#include "quantities.hpp"
-#include "results.hpp"
+#include "atomic_file.hpp"
+#include "rows.hpp"
 
 namespace {
-
-struct Row {
-  std::string name, quantity, density, check, reason, source;
-  double reference = 0, tolerance = 0;
-  int cycle = 0, from_cycle = 0, to_cycle = 0;
-  bool must_pass = false;
-};
-
-// Rows of the reference file; with profile "quick" only rows that have a `quick` entry, with its
-// tolerance and must_pass (the quick profile's samples are smaller and its tests shorter).
-std::vector<Row> load_references(const std::string& file, const std::string& profile) {
-  dem::Section root = dem::Section::load_file(file);
-  root.text("source", std::nullopt, "where the reference values come from");
-  std::vector<Row> rows;
-  for (dem::Section& s : root.list("rows", "the checked statements")) {
-    Row r;
-    r.name = s.text("name", std::nullopt, "row name");
-    r.quantity = s.text("quantity", std::nullopt, "what is computed");
-    if (!validation::known_quantity(r.quantity)) s.fail("quantity", "unknown quantity '" + r.quantity + "'");
-    r.density = s.choice("density", {"loose", "medium", "dense"}, std::nullopt, "which sample");
-    r.reference = s.number("reference", "", {-1e9, 1e9}, std::nullopt, "reference value");
-    r.check = s.choice("check", {"within", "at_least", "at_most"}, std::nullopt, "how measured and reference compare");
-    r.tolerance = s.number("tolerance", "", {0, 1e9}, 0.0, "allowed |measured - reference| for check: within");
-    r.must_pass = s.boolean("must_pass", false, "a failure fails the validation");
-    r.reason = s.text("reason", std::nullopt, "why this tolerance");
-    r.source = s.text("source", std::nullopt, "table, figure or section of the paper");
-    r.cycle = static_cast<int>(s.integer("cycle", 0, 1000, 0, "cycle for per-cycle quantities"));
-    r.from_cycle = static_cast<int>(s.integer("from_cycle", 0, 1000, 0, "first cycle of a change"));
-    r.to_cycle = static_cast<int>(s.integer("to_cycle", 0, 1000, 0, "last cycle of a change"));
-    bool keep = profile == "paper";
-    if (s.has("quick")) {
-      dem::Section q = s.child("quick", "tolerance and must_pass of the row for the quick profile");
-      const double tol = q.number("tolerance", "", {0, 1e9}, r.tolerance, "tolerance at the quick size");
-      const bool must = q.boolean("must_pass", false, "must pass at the quick size");
-      const std::string why = q.text("reason", std::nullopt, "why the quick tolerance differs");
-      q.finish();
-      if (profile == "quick") r.tolerance = tol, r.must_pass = must, r.reason = why, keep = true;
-    }
-    s.finish();
-    if (keep) rows.push_back(r);
-  }
-  root.finish();
-  return rows;
-}
 
 std::string json_string(const std::string& s) {
   std::string out = "\"";
@@ -88,10 +48,21 @@ std::string number(double x) {
   return s.str();
 }
 
+std::string number_or_dash(const std::optional<double>& x) { return x ? number(*x) : "—"; }
+
+// The paper's statement as a region: "0.73 ± 0.02", "≥ 0.05", "≤ 0".
+std::string statement(const validation::Row& r) {
+  if (r.check == "within") return number(r.reference) + (r.tolerance > 0 ? " ± " + number(r.tolerance) : "");
+  return (r.check == "at_least" ? "≥ " : "≤ ") + number(r.reference);
+}
+
+std::string json_number(const std::optional<double>& x) { return x ? number(*x) : "null"; }
+
 }  // namespace
 
 int main(int argc, char** argv) {
   namespace fs = std::filesystem;
+  using validation::Verdict;
   std::string results, references, out, profile = "paper";
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
@@ -105,54 +76,69 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: validate --results DIR --references reference_data/paper.yaml --out DIR [--profile paper|quick]\n");
     return 2;
   }
-  std::vector<Row> rows;
+  std::vector<validation::Row> rows;
   try {
     if (profile != "paper" && profile != "quick") throw std::runtime_error("--profile must be paper or quick");
-    rows = load_references(references, profile);
+    rows = validation::load_references(references, profile);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;
   }
   std::vector<std::string> missing;
-  const auto all = validation::load_results(results, {"loose", "medium", "dense"}, missing);
+  const auto samples = validation::load_samples(results, {"loose", "medium", "dense"}, missing);
   fs::create_directories(out);
-  std::ofstream json(fs::path(out) / "validation.json"), md(fs::path(out) / "validation.md");
-  json << "{\n  \"profile\": " << json_string(profile) << ",\n  \"results\": " << json_string(fs::absolute(results).string()) << ",\n  \"references\": "
-       << json_string(references) << ",\n  \"missing_results\": [";
-  for (std::size_t i = 0; i < missing.size(); ++i) json << (i ? ", " : "") << json_string(missing[i]);
+  std::ostringstream json, md;
+  json << "{\n  \"profile\": " << json_string(profile) << ",\n  \"references\": " << json_string(references)
+       << ",\n  \"rule\": " << json_string("consistent: the paper's value, widened by the row's tolerance, overlaps the 95 % prediction interval of one sample (mean -/+ t(0.975, n-1) sd sqrt(1 + 1/n)); not judged with fewer than 2 samples")
+       << ",\n  \"samples\": [";
+  for (std::size_t i = 0; i < samples.size(); ++i) json << (i ? ", " : "") << json_string(samples[i].name);
+  json << "],\n  \"missing_results\": [";
+  for (std::size_t i = 0; i < missing.size(); ++i) json << (i ? ", " : "") << json_string(fs::relative(missing[i], results).string());
   json << "],\n  \"rows\": [\n";
-  md << "| check | measured | reference | tolerance | difference | pass | must pass | source | reason | note |\n"
+  md << "| check | paper | per sample | mean ± sd (n) | 95 % interval of one sample | holds in | verdict | must pass | source | reason |\n"
      << "|---|---|---|---|---|---|---|---|---|---|\n";
-  int failed_must = 0, passed = 0;
+  std::map<Verdict, int> count;
+  int failed_must = 0;
   for (std::size_t i = 0; i < rows.size(); ++i) {
-    const Row& r = rows[i];
-    const validation::Measured m =
-        validation::compute({r.quantity, r.density, r.cycle, r.from_cycle, r.to_cycle}, all.at(r.density));
-    bool pass = false;
-    if (m.value) {
-      const double v = *m.value;
-      pass = r.check == "within" ? std::abs(v - r.reference) <= r.tolerance + 1e-12
-             : r.check == "at_least" ? v >= r.reference
-                                     : v <= r.reference;
+    const validation::Row& r = rows[i];
+    const validation::RowResult e = validation::evaluate(r, samples);
+    ++count[e.verdict];
+    if (e.verdict == Verdict::Inconsistent && r.must_pass) ++failed_must;
+    std::string values, notes;
+    json << "    {\"name\": " << json_string(r.name) << ", \"group\": " << json_string(r.group) << ", \"quantity\": "
+         << json_string(r.quantity) << ", \"density\": " << json_string(r.density) << ", \"reference\": " << number(r.reference)
+         << ", \"check\": " << json_string(r.check) << ", \"tolerance\": " << number(r.tolerance) << ",\n     \"per_sample\": [";
+    for (std::size_t k = 0; k < e.samples.size(); ++k) {
+      const auto& ps = e.samples[k];
+      json << (k ? ", " : "") << "{\"sample\": " << json_string(ps.sample) << ", \"value\": " << json_number(ps.measured.value)
+           << ", \"note\": " << json_string(ps.measured.note) << "}";
+      values += (k ? ", " : "") + number_or_dash(ps.measured.value);
     }
-    passed += pass;
-    if (!pass && r.must_pass) ++failed_must;
-    const std::string tol = r.check == "within" ? "± " + number(r.tolerance) : (r.check == "at_least" ? "≥ reference" : "≤ reference");
-    json << "    {\"name\": " << json_string(r.name) << ", \"quantity\": " << json_string(r.quantity)
-         << ", \"density\": " << json_string(r.density) << ", \"measured\": " << (m.value ? number(*m.value) : "null")
-         << ", \"reference\": " << number(r.reference) << ", \"check\": " << json_string(r.check)
-         << ", \"tolerance\": " << number(r.tolerance) << ", \"pass\": " << (pass ? "true" : "false")
+    json << "],\n     \"n\": " << e.valued << ", \"mean\": " << (e.valued ? number(e.spread.mean) : "null")
+         << ", \"sd\": " << (e.valued > 1 ? number(e.spread.sd) : "null") << ", \"prediction_interval\": ["
+         << json_number(e.spread.low) << ", " << json_number(e.spread.high) << "], \"holds_in\": " << e.holds
+         << ", \"verdict\": " << json_string(validation::to_string(e.verdict))
          << ", \"must_pass\": " << (r.must_pass ? "true" : "false") << ", \"source\": " << json_string(r.source)
-         << ", \"reason\": " << json_string(r.reason) << ", \"note\": " << json_string(m.note) << "}"
-         << (i + 1 < rows.size() ? "," : "") << "\n";
-    md << "| " << cell(r.name) << " | " << (m.value ? number(*m.value) : "—") << " | " << number(r.reference) << " | " << tol
-       << " | " << (m.value && r.check == "within" ? number(*m.value - r.reference) : "") << " | "
-       << (pass ? "✅ pass" : "❌ fail") << " | " << (r.must_pass ? "yes" : "no") << " | " << cell(r.source) << " | "
-       << cell(r.reason) << " | " << cell(m.note) << " |\n";
+         << ", \"reason\": " << json_string(r.reason) << "}" << (i + 1 < rows.size() ? "," : "") << "\n";
+    const char* mark = e.verdict == Verdict::Consistent ? "✅ consistent" : e.verdict == Verdict::Inconsistent ? "❌ inconsistent" : "— not judged";
+    md << "| " << cell(r.name) << " | " << statement(r) << " | " << values << " | "
+       << (e.valued ? number(e.spread.mean) + (e.valued > 1 ? " ± " + number(e.spread.sd) : "") + " (" + std::to_string(e.valued) + ")" : "—")
+       << " | " << (e.spread.low ? "[" + number(*e.spread.low) + ", " + number(*e.spread.high) + "]" : "—") << " | "
+       << e.holds << " of " << e.valued << " | " << mark << " | " << (r.must_pass ? "yes" : "no") << " | " << cell(r.source)
+       << " | " << cell(r.reason) << " |\n";
   }
-  json << "  ],\n  \"passed\": " << passed << ",\n  \"total\": " << rows.size() << ",\n  \"must_pass_failed\": "
-       << failed_must << "\n}\n";
-  std::printf("validation: %d of %zu rows pass, %d must-pass rows fail; %zu result files missing -> %s\n", passed,
-              rows.size(), failed_must, missing.size(), (fs::path(out) / "validation.json").c_str());
+  json << "  ],\n  \"consistent\": " << count[Verdict::Consistent] << ",\n  \"inconsistent\": " << count[Verdict::Inconsistent]
+       << ",\n  \"not_judged\": " << count[Verdict::NotJudged] << ",\n  \"total\": " << rows.size()
+       << ",\n  \"must_pass_inconsistent\": " << failed_must << "\n}\n";
+  try {
+    validation::write_file_atomically((fs::path(out) / "validation.json").string(), json.str());
+    validation::write_file_atomically((fs::path(out) / "validation.md").string(), md.str());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
+  }
+  std::printf("validation of %zu sample%s: %d consistent, %d inconsistent, %d not judged of %zu rows; %d must-pass rows inconsistent; %zu result files missing -> %s\n",
+              samples.size(), samples.size() == 1 ? "" : "s", count[Verdict::Consistent], count[Verdict::Inconsistent],
+              count[Verdict::NotJudged], rows.size(), failed_must, missing.size(), (fs::path(out) / "validation.json").c_str());
   return failed_must > 0 ? 1 : 0;
 }

@@ -92,6 +92,21 @@ Measured extreme_test(const DensityResults& r, int c, bool largest) {
   return {static_cast<double>(best), note.str()};
 }
 
+// How far test `n`'s εv after cycle c leads (lead: εv_n - max over the other tests) or lags
+// (εv of the least compacted other test - εv_n): positive when the ordering the paper states holds.
+Measured ev_margin(const DensityResults& r, int n, int c, bool lead) {
+  std::optional<double> own, other;
+  std::ostringstream note;
+  for (const TestResult& t : r.tests)
+    if (const auto v = ev_at(t, c)) {
+      note << "test " << t.number << ": " << *v << " %; ";
+      if (t.number == n) own = *v;
+      else if (!other || (lead ? *v > *other : *v < *other)) other = *v;
+    }
+  if (!own || !other) return {std::nullopt, "test " + std::to_string(n) + " or every other test lacks cycle " + std::to_string(c)};
+  return {lead ? *own - *other : *other - *own, note.str()};
+}
+
 using Fn = std::function<Measured(const QuantityRequest&, const DensityResults&)>;
 
 const std::map<std::string, Fn>& registry() {
@@ -148,6 +163,8 @@ const std::map<std::string, Fn>& registry() {
        }},
       {"test_with_largest_ev", [](const QuantityRequest& q, const DensityResults& r) { return extreme_test(r, q.cycle, true); }},
       {"test_with_smallest_ev", [](const QuantityRequest& q, const DensityResults& r) { return extreme_test(r, q.cycle, false); }},
+      {"ev_lead", [](const QuantityRequest& q, const DensityResults& r) { return ev_margin(r, q.test, q.cycle, true); }},
+      {"ev_lag", [](const QuantityRequest& q, const DensityResults& r) { return ev_margin(r, q.test, q.cycle, false); }},
       {"strain_increment_alignment_gain",
        [](const QuantityRequest& q, const DensityResults& r) {
          return mean_over_tests(r, [&](const TestResult& t) -> std::optional<double> {

@@ -10,6 +10,7 @@ namespace validation {
 struct QuantityRequest {
   std::string quantity, density;
   int cycle = 0, from_cycle = 0, to_cycle = 0;
+  int test = 0;  // the test an ordering row is about (ev_lead, ev_lag)
 };
 
 struct Measured {

@@ -1,5 +1,6 @@
 #include "results.hpp"
 
+#include <algorithm>
 #include <filesystem>
 
 #include "io/hdf5.hpp"
@@ -42,34 +43,65 @@ bool is_complete(const std::string& file) {
   }
 }
 
+DensityResults load_density(const std::string& preparation, const std::map<int, std::string>& tests,
+                            std::vector<std::string>& missing) {
+  DensityResults r;
+  try {
+    dem::h5::Handle f = dem::h5::open_file_read(preparation);
+    if (!complete(f)) throw std::runtime_error("not complete");
+    for (const auto& [name, values] : read_group(f, "timeseries"))
+      if (!values.empty()) r.sample[name] = values.back();
+    r.prepared = true;
+  } catch (const std::exception&) {
+    missing.push_back(preparation);
+  }
+  for (const auto& [n, file] : tests) {
+    try {
+      dem::h5::Handle f = dem::h5::open_file_read(file);
+      if (!complete(f)) throw std::runtime_error("not complete");
+      r.tests.push_back({n, read_group(f, "timeseries"), read_group(f, "legs")});
+    } catch (const std::exception&) {
+      missing.push_back(file);
+    }
+  }
+  return r;
+}
+
 std::map<std::string, DensityResults> load_results(const std::string& dir, const std::vector<std::string>& densities,
                                                    std::vector<std::string>& missing) {
   namespace fs = std::filesystem;
   std::map<std::string, DensityResults> all;
   for (const std::string& d : densities) {
-    DensityResults& r = all[d];
-    const std::string prep = (fs::path(dir) / (d + "_prepare.h5")).string();
-    try {
-      dem::h5::Handle f = dem::h5::open_file_read(prep);
-      if (!complete(f)) throw std::runtime_error("not complete");
-      for (const auto& [name, values] : read_group(f, "timeseries"))
-        if (!values.empty()) r.sample[name] = values.back();
-      r.prepared = true;
-    } catch (const std::exception&) {
-      missing.push_back(prep);
-    }
-    for (int n = 1; n <= 5; ++n) {
-      const std::string file = (fs::path(dir) / (d + "_test" + std::to_string(n) + ".h5")).string();
-      try {
-        dem::h5::Handle f = dem::h5::open_file_read(file);
-        if (!complete(f)) throw std::runtime_error("not complete");
-        r.tests.push_back({n, read_group(f, "timeseries"), read_group(f, "legs")});
-      } catch (const std::exception&) {
-        missing.push_back(file);
-      }
-    }
+    std::map<int, std::string> tests;
+    for (int n = 1; n <= 5; ++n) tests[n] = (fs::path(dir) / (d + "_test" + std::to_string(n) + ".h5")).string();
+    all[d] = load_density((fs::path(dir) / (d + "_prepare.h5")).string(), tests, missing);
   }
   return all;
+}
+
+std::vector<std::pair<std::string, std::string>> sample_dirs(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::vector<std::pair<long long, std::string>> seeds;
+  std::error_code ec;
+  for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
+    const std::string name = e.path().filename().string();
+    if (!e.is_directory() || name.size() < 5 || name.compare(0, 4, "seed") != 0) continue;
+    const std::string digits = name.substr(4);
+    if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 18) continue;
+    seeds.emplace_back(std::stoll(digits), name);
+  }
+  std::sort(seeds.begin(), seeds.end());
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const auto& [seed, name] : seeds) out.emplace_back(name, (fs::path(dir) / name).string());
+  if (out.empty()) out.emplace_back("", dir);
+  return out;
+}
+
+std::vector<Sample> load_samples(const std::string& dir, const std::vector<std::string>& densities,
+                                 std::vector<std::string>& missing) {
+  std::vector<Sample> out;
+  for (const auto& [name, folder] : sample_dirs(dir)) out.push_back({name, folder, load_results(folder, densities, missing)});
+  return out;
 }
 
 }  // namespace validation

@@ -27,9 +27,29 @@ Columns read_columns(const std::string& file, const std::string& group);
 // True if the file is a complete result.
 bool is_complete(const std::string& file);
 
+// A density's results from its preparation's result and its tests' (test number -> result file);
+// files that are missing or not complete are left out and listed in `missing`.
+DensityResults load_density(const std::string& preparation, const std::map<int, std::string>& tests,
+                            std::vector<std::string>& missing);
+
 // Reads DIR/<density>_prepare.h5 and DIR/<density>_test<N>.h5 (N = 1..5) for each density; files
 // that are missing or not complete are left out and listed in `missing`.
 std::map<std::string, DensityResults> load_results(const std::string& dir, const std::vector<std::string>& densities,
                                                    std::vector<std::string>& missing);
+
+// One sample of an ensemble: a seed's results.
+struct Sample {
+  std::string name;  // seed1, seed2, ... ("" for a study of one sample)
+  std::string dir;
+  std::map<std::string, DensityResults> densities;
+};
+
+// The folders of an ensemble's samples: DIR/seed<N>/ in the order of N, or DIR itself when it has
+// none (a study of one sample).
+std::vector<std::pair<std::string, std::string>> sample_dirs(const std::string& dir);
+
+// load_results of every sample folder.
+std::vector<Sample> load_samples(const std::string& dir, const std::vector<std::string>& densities,
+                                 std::vector<std::string>& missing);
 
 }  // namespace validation

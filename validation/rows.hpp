@@ -1,0 +1,45 @@
+#pragma once
+// The rows of reference_data/paper.yaml and their evaluation on an ensemble of samples: each
+// row's value per sample, the spread, and the verdict against the paper's statement.
+#include <string>
+#include <vector>
+
+#include "ensemble.hpp"
+#include "quantities.hpp"
+#include "results.hpp"
+
+namespace validation {
+
+struct Row {
+  std::string name, quantity, density, check, reason, source;
+  double reference = 0, tolerance = 0;
+  int cycle = 0, from_cycle = 0, to_cycle = 0, test = 0;
+  bool must_pass = false;
+  std::string group;  // the report groups rows (and draws one tornado chart per group)
+};
+
+// Rows of the reference file; with profile "quick" only rows that have a `quick` entry, with its
+// tolerance and must_pass (the quick profile's samples are smaller and its tests shorter).
+// Throws dem::ConfigError naming the key on bad input.
+std::vector<Row> load_references(const std::string& file, const std::string& profile);
+
+struct RowResult {
+  struct PerSample {
+    std::string sample;
+    Measured measured;
+  };
+  std::vector<PerSample> samples;
+  Spread spread;              // over the samples that have a value
+  Region paper;               // the values that agree with the paper's statement
+  Verdict verdict = Verdict::NotJudged;
+  int holds = 0;              // samples whose own value lies in the paper's region
+  int valued = 0;             // samples with a value
+};
+
+// `densities` of each sample: the sample's name and its results for the row's density.
+RowResult evaluate(const Row& row, const std::vector<std::pair<std::string, const DensityResults*>>& samples);
+
+// evaluate() on every sample of an ensemble.
+RowResult evaluate(const Row& row, const std::vector<Sample>& samples);
+
+}  // namespace validation
