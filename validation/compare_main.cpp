@@ -20,7 +20,10 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "atomic_file.hpp"
 #include "compare.hpp"
+#include "decisions.hpp"
+#include "format.hpp"
 #include "io/hdf5.hpp"
 #include "results.hpp"
 
@@ -28,9 +31,15 @@ namespace fs = std::filesystem;
 
 namespace {
 
+using validation::cell;
+using validation::file_safe;
+using validation::json_string;
+using validation::number;
+
 struct ManifestLine {
   std::string variant, density, test, run, result, starts_from, settings;
   bool may_fail = false;
+  std::string seed = "-";  // the sample of an ensemble ("-": a study of one sample)
 };
 
 std::vector<ManifestLine> read_manifest(const std::string& dir) {
@@ -46,7 +55,7 @@ std::vector<ManifestLine> read_manifest(const std::string& dir) {
     std::string cell;
     while (std::getline(ss, cell, '\t')) f.push_back(cell);
     if (f.size() < 8) throw std::runtime_error(file.string() + ": a line with " + std::to_string(f.size()) + " fields, 8 expected");
-    lines.push_back({f[0], f[1], f[2], f[3], f[4], f[5], f[7], f[6] == "1"});
+    lines.push_back({f[0], f[1], f[2], f[3], f[4], f[5], f[7], f[6] == "1", f.size() > 8 ? f[8] : "-"});
   }
   return lines;
 }
@@ -69,17 +78,6 @@ void read_stop(const std::string& result, validation::CaseRun& run) {
     run.message = n["message"].as<std::string>();
   } catch (const std::exception&) {
   }
-}
-
-// A Markdown table cell: '|' would end the cell.
-std::string cell(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '|') out += '\\';
-    if (c == '\n') { out += ' '; continue; }
-    out += c;
-  }
-  return out;
 }
 
 std::string percent(double e) {
@@ -112,17 +110,165 @@ std::string heading(std::string n) {
   return n;
 }
 
+std::string signed_fixed(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%+.2f", x);
+  return buf;
+}
+
+// The decisions study (SPEC section 7): every validation row on every reading's ensemble, the
+// shift of the mean in baseline standard deviations, a tornado chart per group of rows, and the
+// reading that explains each inconsistent row. Writes table.md, decisions.json and, per group,
+// tornado_<group>.dat and .gp (gnuplot draws them into tornado_<group>.png).
+int decisions(const std::vector<ManifestLine>& manifest, const std::vector<std::string>& order, const std::string& references,
+              const std::string& baseline, const std::string& out) {
+  std::vector<validation::Row> rows;
+  try {
+    rows = validation::load_references(references, "paper");
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 2;
+  }
+  // reading -> seed -> density -> (preparation, test number -> result)
+  struct Files {
+    std::string preparation;
+    std::map<int, std::string> tests;
+  };
+  std::map<std::string, std::map<std::string, std::map<std::string, Files>>> files;
+  std::map<std::string, std::string> settings;
+  for (const ManifestLine& l : manifest) {
+    Files& f = files[l.variant][l.seed][l.density];
+    settings[l.variant] = l.settings;
+    if (l.test == "-") f.preparation = l.result;
+    else if (l.test.rfind("test", 0) == 0) f.tests[std::atoi(l.test.c_str() + 4)] = l.result;
+  }
+  std::map<std::string, validation::ReadingResults> readings;
+  std::vector<std::string> missing;
+  for (const auto& [reading, seeds] : files)
+    for (const auto& [seed, densities] : seeds) {
+      std::map<std::string, validation::DensityResults> of_seed;
+      for (const auto& [density, f] : densities) of_seed[density] = validation::load_density(f.preparation, f.tests, missing);
+      readings[reading].emplace_back("seed" + seed, std::move(of_seed));
+    }
+  std::vector<validation::RowDecision> decided;
+  try {
+    decided = validation::decide(rows, readings, order, baseline);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "compare-runs: %s\n", e.what());
+    return 1;
+  }
+  std::vector<std::string> others;
+  for (const std::string& r : order)
+    if (r != baseline) others.push_back(r);
+  std::vector<std::string> groups;
+  for (const validation::Row& r : rows)
+    if (std::find(groups.begin(), groups.end(), r.group) == groups.end()) groups.push_back(r.group);
+  const auto verdict_mark = [](validation::Verdict v) {
+    return v == validation::Verdict::Consistent ? "✅" : v == validation::Verdict::Inconsistent ? "❌" : "—";
+  };
+  std::ostringstream md;
+  md << "Readings (each one change from the baseline, `pipeline/studies/decisions.yaml`):\n\n| reading | settings |\n|---|---|\n";
+  for (const std::string& r : order) md << "| " << cell(r) << " | " << cell(settings[r]) << " |\n";
+  md << "\nEach cell: the shift of the ensemble mean from the baseline's, in baseline standard deviations, and the verdict "
+        "under that reading (✅ consistent, ❌ inconsistent, — not judged).\n";
+  for (const std::string& g : groups) {
+    md << "\n### " << g << "\n\n![tornado chart: " << g << "](tornado_" << file_safe(g) << ".png)\n\n| row | baseline: mean ± sd | ";
+    for (const std::string& r : others) md << cell(r) << " | ";
+    md << "explanation |\n|---|---|";
+    for (std::size_t k = 0; k < others.size(); ++k) md << "---|";
+    md << "---|\n";
+    // Tornado data: rows of the group, largest shift first.
+    std::vector<const validation::RowDecision*> of_group;
+    for (const validation::RowDecision& d : decided)
+      if (d.row.group == g) of_group.push_back(&d);
+    const auto largest = [](const validation::RowDecision* d) {
+      double m = 0;
+      for (const auto& e : d->readings)
+        if (e.shift_sd && std::isfinite(*e.shift_sd)) m = std::max(m, std::abs(*e.shift_sd));
+      return m;
+    };
+    std::stable_sort(of_group.begin(), of_group.end(), [&](auto* a, auto* b) { return largest(a) < largest(b); });
+    std::ofstream dat(fs::path(out) / ("tornado_" + file_safe(g) + ".dat"));
+    dat << "# row_index\treading_index\tshift_sd\trow\treading\n";
+    for (std::size_t i = 0; i < of_group.size(); ++i)
+      for (std::size_t k = 0; k < of_group[i]->readings.size(); ++k) {
+        const auto& e = of_group[i]->readings[k];
+        if (e.shift_sd && std::isfinite(*e.shift_sd))
+          dat << i << '\t' << k << '\t' << *e.shift_sd << "\t\"" << of_group[i]->row.name << "\"\t" << e.reading << "\n";
+      }
+    std::ofstream gp(fs::path(out) / ("tornado_" + file_safe(g) + ".gp"));
+    const double h = 0.8 / static_cast<double>(std::max<std::size_t>(others.size(), 1));
+    gp << "# Tornado chart of the group '" << g << "' (written by compare-runs decisions)\n"
+       << "set terminal pngcairo size 1400," << 220 + 34 * of_group.size() * std::max<std::size_t>(1, others.size() / 3)
+       << " font 'Sans,10'\nset output 'tornado_" << file_safe(g) << ".png'\n"
+       << "set title \"" << g << ": shift of the ensemble mean by each reading (baseline standard deviations)\"\n"
+       << "set xlabel 'shift of the mean / baseline standard deviation'\nset grid xtics\nset key outside right\n"
+       << "set yrange [-0.6:" << of_group.size() - 0.4 << "]\nset ytics (";
+    for (std::size_t i = 0; i < of_group.size(); ++i) {
+      std::string label = of_group[i]->row.name;
+      std::string escaped;  // a tic label is a format: '%' must be doubled
+      for (char c : label) escaped += c == '"' ? std::string("'") : c == '%' ? std::string("%%") : std::string(1, c);
+      label = escaped;
+      gp << (i ? ", " : "") << "\"" << label << "\" " << i;
+    }
+    gp << ")\nset style fill solid 0.8 noborder\nset arrow from 0, graph 0 to 0, graph 1 nohead lc rgb 'black'\nplot ";
+    for (std::size_t k = 0; k < others.size(); ++k)
+      gp << (k ? ", \\\n     " : "") << "'tornado_" << file_safe(g) << ".dat' using ($2 == " << k << " ? $3 / 2 : 1/0):($1 + "
+         << (static_cast<double>(k) - (static_cast<double>(others.size()) - 1) / 2) * h << "):(abs($3) / 2):(" << h / 2
+         << ") with boxxyerror lc " << k + 1 << " title '" << others[k] << "'";
+    gp << "\n";
+    for (auto it = of_group.rbegin(); it != of_group.rend(); ++it) {
+      const validation::RowDecision& d = **it;
+      md << "| " << cell(d.row.name) << " | "
+         << (d.baseline.valued ? number(d.baseline.spread.mean) + (d.baseline.valued > 1 ? " ± " + number(d.baseline.spread.sd) : "") : "—")
+         << " " << verdict_mark(d.baseline.verdict) << " | ";
+      for (const auto& e : d.readings)
+        md << (e.shift_sd && std::isfinite(*e.shift_sd) ? signed_fixed(*e.shift_sd) : "—") << " " << verdict_mark(e.result.verdict) << " | ";
+      md << cell(d.explanation) << " |\n";
+    }
+  }
+  std::ostringstream json;
+  json << "{\n  \"baseline\": \"" << baseline << "\",\n  \"rows\": [\n";
+  for (std::size_t i = 0; i < decided.size(); ++i) {
+    const validation::RowDecision& d = decided[i];
+    json << "    {\"name\": " << json_string(d.row.name) << ", \"group\": " << json_string(d.row.group) << ", \"baseline_mean\": "
+         << (d.baseline.valued ? number(d.baseline.spread.mean) : "null") << ", \"baseline_sd\": "
+         << (d.baseline.valued > 1 ? number(d.baseline.spread.sd) : "null") << ", \"baseline_verdict\": \""
+         << validation::to_string(d.baseline.verdict) << "\", \"readings\": {";
+    for (std::size_t k = 0; k < d.readings.size(); ++k) {
+      const auto& e = d.readings[k];
+      json << (k ? ", " : "") << "\"" << e.reading << "\": {\"mean\": " << (e.result.valued ? number(e.result.spread.mean) : "null")
+           << ", \"shift_sd\": " << (e.shift_sd && std::isfinite(*e.shift_sd) ? number(*e.shift_sd) : "null") << ", \"verdict\": \""
+           << validation::to_string(e.result.verdict) << "\"}";
+    }
+    json << "}, \"explanation\": " << json_string(d.explanation) << "}" << (i + 1 < decided.size() ? "," : "") << "\n";
+  }
+  json << "  ],\n  \"missing_results\": " << missing.size() << "\n}\n";
+  try {
+    validation::write_file_atomically((fs::path(out) / "table.md").string(), md.str());
+    validation::write_file_atomically((fs::path(out) / "decisions.json").string(), json.str());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
+  }
+  std::printf("decisions: %zu readings, %zu rows, %zu result files missing -> %s\n", order.size(), rows.size(), missing.size(),
+              (fs::path(out) / "table.md").c_str());
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   if (argc < 4) {
-    std::fprintf(stderr, "usage: compare-runs convergence|stability RESULTS_DIR OUT_DIR [--reference NAME]\n");
+    std::fprintf(stderr, "usage: compare-runs convergence|stability|decisions RESULTS_DIR OUT_DIR [--reference NAME] [--references FILE]\n");
     return 2;
   }
   const std::string mode = argv[1], results = argv[2], out = argv[3];
-  std::string reference = "reference";
-  for (int i = 4; i + 1 < argc; i += 2)
+  std::string reference = "reference", references = "reference_data/paper.yaml";
+  for (int i = 4; i + 1 < argc; i += 2) {
     if (std::string(argv[i]) == "--reference") reference = argv[i + 1];
+    else if (std::string(argv[i]) == "--references") references = argv[i + 1];
+  }
   std::vector<ManifestLine> manifest;
   try {
     manifest = read_manifest(results);
@@ -168,8 +314,9 @@ int main(int argc, char** argv) {
     std::printf("stability: %zu cases, %d not acceptable -> %s\n", order.size(), bad, (fs::path(out) / "table.md").c_str());
     return bad > 0 ? 1 : 0;
   }
+  if (mode == "decisions") return decisions(manifest, order, references, reference == "reference" ? "baseline" : reference, out);
   if (mode != "convergence") {
-    std::fprintf(stderr, "compare-runs: unknown mode '%s' (convergence or stability)\n", mode.c_str());
+    std::fprintf(stderr, "compare-runs: unknown mode '%s' (convergence, stability or decisions)\n", mode.c_str());
     return 2;
   }
   struct Row {

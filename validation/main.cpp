@@ -16,37 +16,14 @@
 #include <string>
 
 #include "atomic_file.hpp"
+#include "format.hpp"
 #include "rows.hpp"
 
 namespace {
 
-std::string json_string(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\', out += c;
-    else if (c == '\n') out += "\\n";
-    else if (static_cast<unsigned char>(c) < 0x20) out += ' ';
-    else out += c;
-  }
-  return out + "\"";
-}
-
-// A Markdown table cell: '|' would end the cell.
-std::string cell(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '|') out += '\\';
-    out += c;
-  }
-  return out;
-}
-
-std::string number(double x) {
-  std::ostringstream s;
-  s.precision(6);
-  s << x;
-  return s.str();
-}
+using validation::cell;
+using validation::json_string;
+using validation::number;
 
 std::string number_or_dash(const std::optional<double>& x) { return x ? number(*x) : "—"; }
 

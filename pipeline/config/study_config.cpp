@@ -1,5 +1,6 @@
 #include "config/study_config.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <regex>
 #include <set>
@@ -103,6 +104,8 @@ std::string describe(const Variant& v) {
   add("", v.set);
   add("preparation: ", v.prepare);
   add("test: ", v.test);
+  for (const auto& [test, o] : v.per_test) add(test + ": ", o);
+  if (v.shear_with_preparation_friction) out += (out.empty() ? "" : "; ") + std::string("shearing friction = the preparation's");
   if (v.time_step_fraction) {
     std::ostringstream f;
     f << *v.time_step_fraction;
@@ -177,6 +180,29 @@ Study load_study(const std::string& file) {
       var.set = read_overrides(v, "set", false, "scene overrides of the preparation and the tests");
       var.prepare = read_overrides(v, "prepare", false, "scene overrides of the preparation");
       var.test = read_overrides(v, "test", true, "scene overrides of the tests");
+      if (v.has("per_test")) {
+        const YAML::Node pt = v.raw("per_test", "a mapping of test names to scene overrides",
+                                    "scene overrides of single tests, by test name (e.g. {test3: {stages[0].path: [...]}})");
+        if (!pt.IsMap() || pt.size() == 0) v.fail("per_test", "must be a non-empty mapping of test names to scene overrides");
+        dem::Section per(pt, v.file(), v.key_path("per_test"));
+        for (const auto& kv : pt) {
+          const std::string test = kv.first.IsScalar() ? kv.first.Scalar() : "";
+          if (std::none_of(st.tests.begin(), st.tests.end(), [&](const TestCase& t) { return t.name == test; })) {
+            std::string known;
+            for (const TestCase& t : st.tests) known += (known.empty() ? "" : ", ") + t.name;
+            v.fail("per_test." + test, "is not a test of this study (tests: " + known + ")");
+          }
+          var.per_test.emplace_back(test, read_overrides(per, test, true, "scene overrides of this test"));
+        }
+        per.finish();
+      } else {
+        v.optional_child("per_test", "scene overrides of single tests, by test name");
+      }
+      var.shear_with_preparation_friction =
+          v.boolean("shear_with_preparation_friction", false,
+                    "the tests shear with the density's preparation friction instead of their scenes' material.friction");
+      if (var.shear_with_preparation_friction && st.tests.empty())
+        v.fail("shear_with_preparation_friction", "needs tests to shear (this study has none)");
       for (const auto& o : var.set)
         if (o.first.rfind("particles", 0) == 0 && !st.tests.empty())
           v.fail("set." + o.first, "would change where the tests' particles come from; put it under prepare:");

@@ -204,6 +204,14 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
           for (const auto& [key, value] : t.set) dem::apply_override(ts, t.scene, key, value);
           for (const auto& [key, value] : v.set) dem::apply_override(ts, t.scene, key, value);
           for (const auto& [key, value] : v.test) dem::apply_override(ts, t.scene, key, value);
+          for (const auto& [test, overrides] : v.per_test)
+            if (test == t.name)
+              for (const auto& [key, value] : overrides) dem::apply_override(ts, t.scene, key, value);
+          if (v.shear_with_preparation_friction) {
+            std::ostringstream mu;
+            mu << d.friction;
+            dem::apply_override(ts, t.scene, "material.friction", mu.str());
+          }
           cap_repeats(ts, profile.max_repeat);
           if (v.time_step_fraction) {  // the test's spheres are the sample's; its kn may differ
             const dem::SceneConfig parsed = dem::scene_from_text(emit(ts, header), run.scene_file);

@@ -8,6 +8,7 @@
 #include <random>
 
 #include "ensemble.hpp"
+#include "decisions.hpp"
 #include "rows.hpp"
 
 using validation::Verdict;
@@ -122,4 +123,50 @@ TEST_CASE("a row evaluated on an ensemble of samples", "[ensemble]") {
   CHECK(r.holds == 0);
   row.reference = 0.71, row.tolerance = 0.005;
   CHECK(validation::evaluate(row, samples).holds == 1);
+}
+
+TEST_CASE("decisions: shifts in baseline standard deviations and the reading that explains a row", "[ensemble]") {
+  // A row on the loose sample's void ratio, paper 0.73 +/- 0.005. Baseline samples 0.70, 0.71,
+  // 0.72 (mean 0.71, sd 0.01, interval [0.660, 0.760]: consistent); "looser" adds 0.02 to each
+  // (shift +2 sd); "denser" takes 0.06 off (mean 0.65, interval [0.600, 0.700]: inconsistent).
+  auto reading = [](double offset) {
+    validation::ReadingResults r;
+    for (int i = 0; i < 3; ++i) {
+      validation::DensityResults d;
+      d.prepared = true;
+      d.sample["void_ratio"] = 0.70 + 0.01 * i + offset;
+      r.push_back({"seed" + std::to_string(i + 1), {{"loose", d}}});
+    }
+    return r;
+  };
+  validation::Row row;
+  row.name = "e0, loose";
+  row.quantity = "void_ratio_after_preparation";
+  row.density = "loose";
+  row.check = "within";
+  row.reference = 0.73;
+  row.tolerance = 0.005;
+  const std::map<std::string, validation::ReadingResults> readings = {
+      {"baseline", reading(0)}, {"looser", reading(0.02)}, {"denser", reading(-0.06)}};
+  auto d = validation::decide({row}, readings, {"baseline", "looser", "denser"}, "baseline");
+  REQUIRE(d.size() == 1);
+  REQUIRE(d[0].readings.size() == 2);
+  CHECK(d[0].readings[0].reading == "looser");
+  CHECK(*d[0].readings[0].shift_sd == Approx(2.0));
+  CHECK(*d[0].readings[1].shift_sd == Approx(-6.0));
+  CHECK(d[0].baseline.verdict == Verdict::Consistent);
+  CHECK(d[0].readings[1].result.verdict == Verdict::Inconsistent);
+  CHECK(d[0].explanation.rfind("consistent at the baseline", 0) == 0);
+  // With "denser" as the baseline the row is inconsistent, and the two other readings explain it.
+  d = validation::decide({row}, readings, {"denser", "baseline", "looser"}, "denser");
+  CHECK(d[0].baseline.verdict == Verdict::Inconsistent);
+  CHECK(d[0].made_consistent_by == std::vector<std::string>{"baseline", "looser"});
+  CHECK(d[0].explanation == "consistent under baseline, looser");
+  // A paper value no reading reaches: unexplained, naming the reading that comes closest.
+  row.reference = 0.90;
+  d = validation::decide({row}, readings, {"denser", "baseline", "looser"}, "denser");
+  CHECK(d[0].made_consistent_by.empty());
+  CHECK(d[0].explanation.find("unexplained") == 0);
+  CHECK(d[0].explanation.find("closest: looser") != std::string::npos);
+  CHECK_THROWS(validation::decide({row}, readings, {"x"}, "x"));
 }

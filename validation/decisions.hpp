@@ -1,0 +1,39 @@
+#pragma once
+// What the paper's open choices change (SPEC section 7): every validation row evaluated on the
+// ensemble of each reading, the shift of its mean from the baseline's in units of the baseline's
+// standard deviation, and which readings, if any, make a row consistent with the paper.
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rows.hpp"
+
+namespace validation {
+
+// The results of one reading: per sample (seed), per density.
+using ReadingResults = std::vector<std::pair<std::string, std::map<std::string, DensityResults>>>;
+
+struct ReadingEffect {
+  std::string reading;
+  RowResult result;
+  std::optional<double> shift_sd;  // (mean - baseline mean) / baseline sd; none without both
+};
+
+struct RowDecision {
+  Row row;
+  RowResult baseline;
+  std::vector<ReadingEffect> readings;  // every reading but the baseline, in the study's order
+  std::vector<std::string> made_consistent_by;  // readings under which an inconsistent row is consistent
+  std::string explanation;
+};
+
+// Evaluates every row on every reading; `order` lists the readings, the baseline among them.
+std::vector<RowDecision> decide(const std::vector<Row>& rows, const std::map<std::string, ReadingResults>& readings,
+                                const std::vector<std::string>& order, const std::string& baseline);
+
+// The sentence that explains a row: consistent at the baseline; consistent under some readings;
+// or unexplained, with the reading that moves it most towards the paper and by how much.
+std::string explain(const RowDecision& d);
+
+}  // namespace validation
