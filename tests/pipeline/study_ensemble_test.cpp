@@ -1,0 +1,122 @@
+// Ensembles of samples (study key seeds) and the decisions study's variant keys: every run once
+// per seed in its own folder, on that seed's sample; per_test changes one test; shearing with the
+// preparation friction follows the density; bad input names the key.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+
+#include "config/scene_config.hpp"
+#include "config/study_config.hpp"
+#include "config/yaml_section.hpp"
+#include "plan/run_plan.hpp"
+#include "pipeline/tiny_scenes.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string two_densities =
+    "name: e\noutput: out\npreparation: prep.yaml\n"
+    "densities: [{name: loose, friction: 0.5}, {name: dense, friction: 0.0}]\n"
+    "tests: [{name: test1, scene: test.yaml}, {name: test2, scene: test.yaml}]\n";
+
+fs::path fresh(const std::string& name) {
+  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / name;
+  fs::remove_all(dir);
+  pipeline::test::write_tiny_scenes(dir, "1.0e-4", "1.0e-4");
+  return dir;
+}
+
+pipeline::Study load(const fs::path& dir, const std::string& text) {
+  std::ofstream(dir / "study.yaml") << text;
+  return pipeline::load_study((dir / "study.yaml").string());
+}
+
+std::map<std::string, pipeline::PlannedRun> plan(const fs::path& dir, const std::string& text, const std::string& profile = "quick") {
+  const pipeline::Study study = load(dir, text);
+  std::map<std::string, pipeline::PlannedRun> m;
+  for (const auto& r : pipeline::plan_study(study, study.profile(profile), (dir / "out").string(), "engine-A")) m[r.name] = r;
+  return m;
+}
+
+dem::SceneConfig scene(const pipeline::PlannedRun& r) { return dem::scene_from_text(r.scene_text, r.scene_file); }
+
+}  // namespace
+
+TEST_CASE("seeds: every run once per sample, in the sample's folder, on the sample's own grains", "[pipeline][ensemble]") {
+  const fs::path dir = fresh("ensemble_seeds");
+  const auto r = plan(dir, two_densities + "profiles: {paper: {lattice: 2}, quick: {lattice: 2, seeds: [7, 3]}}\n");
+  REQUIRE(r.size() == 12);  // 2 seeds x 2 densities x (preparation + 2 tests)
+  for (const char* seed : {"seed7", "seed3"})
+    for (const char* run : {"loose_prepare", "loose_test1", "loose_test2", "dense_prepare", "dense_test1", "dense_test2"}) {
+      const std::string name = std::string(seed) + "/" + run;
+      REQUIRE(r.count(name) == 1);
+      CHECK(r.at(name).result == (dir / "out" / seed / (std::string(run) + ".h5")).string());
+    }
+  CHECK(scene(r.at("seed7/loose_prepare")).particles.lattice.seed == 7);
+  CHECK(scene(r.at("seed3/dense_prepare")).particles.lattice.seed == 3);
+  CHECK(*r.at("seed7/dense_test2").seed == 7);
+  // A test starts from its own seed's sample, and its hash follows that sample's.
+  CHECK(scene(r.at("seed3/loose_test1")).particles.path == fs::absolute(r.at("seed3/loose_prepare").result).string());
+  CHECK(r.at("seed3/loose_test1").hash != r.at("seed7/loose_test1").hash);
+  // The profile's seeds override the study's; `seeds: N` means 1..N; without seeds, one sample as before.
+  const auto paper = plan(dir, two_densities + "seeds: 2\nprofiles: {paper: {lattice: 2}, quick: {lattice: 2, seeds: [5]}}\n", "paper");
+  CHECK(paper.count("seed1/loose_prepare") == 1);
+  CHECK(paper.count("seed2/dense_test2") == 1);
+  CHECK(paper.size() == 12);
+  const auto single = plan(dir, two_densities + "profiles: {paper: {lattice: 2}, quick: {lattice: 2}}\n");
+  CHECK(single.count("loose_prepare") == 1);
+  CHECK_FALSE(single.at("loose_prepare").seed);
+  CHECK(scene(single.at("loose_prepare")).particles.lattice.seed == 1);  // the template's
+}
+
+TEST_CASE("seeds: bad input names the key", "[pipeline][ensemble]") {
+  const fs::path dir = fresh("ensemble_bad");
+  const std::string profiles = "profiles: {paper: {lattice: 2}, quick: {lattice: 2}}\n";
+  const auto message = [&](const std::string& text) {
+    try {
+      load(dir, text);
+    } catch (const dem::ConfigError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  CHECK_THAT(message(two_densities + "seeds: 0\n" + profiles), Catch::Contains("seeds") && Catch::Contains("[1, 1000]"));
+  CHECK_THAT(message(two_densities + "seeds: [1, 2, 1]\n" + profiles), Catch::Contains("listed twice"));
+  CHECK_THAT(message(two_densities + "seeds: [-1]\n" + profiles), Catch::Contains(">= 0"));
+  CHECK_THAT(message(two_densities + "seeds: many\n" + profiles), Catch::Contains("seeds"));
+  CHECK_THAT(message(two_densities + "seeds: 2\n" + profiles + "variants: [{name: a, prepare: {particles.lattice.seed: 4}}]\n"),
+             Catch::Contains("prepare.particles.lattice.seed") && Catch::Contains("seeds choose the samples"));
+  CHECK_THAT(message(two_densities + profiles + "variants: [{name: a, per_test: {test9: {numerics.time_step: 1.0e-6}}}]\n"),
+             Catch::Contains("per_test.test9") && Catch::Contains("test1, test2"));
+}
+
+TEST_CASE("per_test changes one test; shearing with the preparation friction follows the density", "[pipeline][ensemble]") {
+  const fs::path dir = fresh("ensemble_variants");
+  const auto r = plan(dir, two_densities + "profiles: {paper: {lattice: 2}, quick: {lattice: 2}}\n"
+                                           "variants:\n"
+                                           "  - {name: base}\n"
+                                           "  - {name: slow2, per_test: {test2: {\"stages[0].duration\": 2.0e-4}}}\n"
+                                           "  - {name: prepmu, shear_with_preparation_friction: true}\n");
+  CHECK(scene(r.at("slow2_loose_test2")).stages[0].duration_s == 2e-4);
+  CHECK(scene(r.at("slow2_loose_test1")).stages[0].duration_s == 1e-4);  // the other test as written ...
+  CHECK(r.at("slow2_loose_test1").hash != r.at("base_loose_test1").hash);  // (its own name; join_studies copies it)
+  CHECK(scene(r.at("prepmu_dense_test1")).material.friction == 0.0);  // the dense sample's preparation friction
+  CHECK(scene(r.at("prepmu_loose_test1")).material.friction == 0.5);
+  CHECK(scene(r.at("base_dense_test1")).material.friction == 0.5);   // the test scene's shearing friction
+  // join_studies: a test whose resolved scene is the baseline's but for its name is a copy of it.
+  const pipeline::Study study = load(dir, two_densities + "profiles: {paper: {lattice: 2}, quick: {lattice: 2}}\n"
+                                                          "variants: [{name: base}, {name: slow2, per_test: {test2: {\"stages[0].duration\": 2.0e-4}}}]\n");
+  const auto joined = pipeline::join_studies({{"e", pipeline::plan_study(study, study.profile("quick"), (dir / "out").string(), "engine-A")}});
+  std::map<std::string, std::string> copy_of;
+  for (const auto& run : joined)
+    if (run.copy_of >= 0) copy_of[run.name] = joined[static_cast<std::size_t>(run.copy_of)].name;
+  // slow2's test1 of each density; and, since the tiny study's two tests are one scene, each test2 of base.
+  CHECK(copy_of == std::map<std::string, std::string>{{"slow2_loose_test1", "base_loose_test1"},
+                                                      {"slow2_dense_test1", "base_dense_test1"},
+                                                      {"base_loose_test2", "base_loose_test1"},
+                                                      {"base_dense_test2", "base_dense_test1"}});
+}
