@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
 # Figures 3-14 of the paper from the cyclic-test results (SPEC sections 3 and 4).
-# Usage: reports/make_figures.sh [DEM] RESULTS_DIR FIG_DIR
+# Usage: [ENSEMBLE=DIR] reports/make_figures.sh [DEM] RESULTS_DIR FIG_DIR
 #   DEM          the engine binary (default: build/bin/dem of this repository)
-#   RESULTS_DIR  holds <density>_test<N>.h5, density in {loose, medium, dense}, N in 1..5
+#   RESULTS_DIR  holds <density>_test<N>.h5, density in {loose, medium, dense}, N in 1..5: one sample
+#                (of an ensemble, the sample the figures of single runs show)
+#   ENSEMBLE     optional: the per-cycle statistics of an ensemble (build/bin/ensemble-cycles);
+#                Figures 7, 10 and 11 then show the ensemble mean with a band of one standard deviation
 #   FIG_DIR      receives figNN_*.png, the data file of every curve (figNN_<density>_test<N>.dat ...)
 #                and the gnuplot script of every figure (figNN_*.gp)
 # Missing results (not run yet, or still running as .h5.partial) are noted on stderr; their curves are
@@ -221,6 +224,7 @@ fig_by_density() {
       echo "set title \"(${letters[$i]}) $d\" font \",12\""
       panel_reset
       for t in "${tests[@]}"; do
+        [ -z "${BAND:-}" ] || add_notitle "$figs/${name}_${d}_test$t.dat" '1:($2-$3):($2+$3)' "w filledcurves fs transparent solid 0.12 noborder lc rgb \"${tcol[$t]}\""
         add "$figs/${name}_${d}_test$t.dat" '1:2' "$style lc rgb \"${tcol[$t]}\"" "Test $t"
       done
       for r in "${REFS[@]}"; do if [ -n "$r" ]; then add_raw "$r"; fi; done
@@ -289,14 +293,33 @@ done; done
 } > "$figs/fig06_epsv.gp"
 run_gp fig06_epsv
 
+# Figs. 7, 10, 11 of an ensemble: its per-cycle mean and standard deviation (ensemble-cycles) as the
+# curve and its band; the title says how many samples.
+ensemble_note=""
+if [ -n "${ENSEMBLE:-}" ]; then
+  n=$(awk 'FNR > 2 { if ($4 > m) m = $4 } END { print m + 0 }' "$ENSEMBLE"/epsv_percent_*.dat 2>/dev/null || echo 0)
+  ensemble_note=" — mean of $n samples, band ± 1 standard deviation"
+fi
+BAND=""   # set to draw bands (columns mean, sd) in fig_by_density
+ensemble_data() {   # ensemble_data QUANTITY FIGNAME: copies the ensemble's files, or returns 1
+  [ -n "${ENSEMBLE:-}" ] || return 1
+  local d t
+  for d in "${densities[@]}"; do for t in "${tests[@]}"; do
+    [ -f "$ENSEMBLE/${1}_${d}_test$t.dat" ] && cp "$ENSEMBLE/${1}_${d}_test$t.dat" "$figs/${2}_${d}_test$t.dat"
+  done; done
+  return 0
+}
+
 # Fig. 7: εv at the end of every cycle; cycle 0 = start of shearing (εv = 0 by definition).
-for d in "${densities[@]}"; do for t in "${tests[@]}"; do
+ensemble_data epsv_percent fig07_epsv_cycles || for d in "${densities[@]}"; do for t in "${tests[@]}"; do
   [ -n "${have[$d$t]:-}" ] || continue
   { echo "# cycle eps_v_percent (cycle 0: first row, then cycle_end rows)"; pick "$d$t" ts 'NR == 2 || cycle_end == 1' 'NR == 2 ? 0 : cycle' '100*volumetric_strain'; } > "$figs/fig07_epsv_cycles_${d}_test$t.dat"
 done; done
+BAND=${ENSEMBLE:+1}
 fig_by_density fig07_epsv_cycles "loose medium dense" "cycle number (0 = start of shearing)" "ε_v (%) at the end of the cycle" \
-  "[0:*]" "[*:*]" "Fig. 7  Volumetric strain ε_v (compression +) at the end of each cycle, all tests (every cycle run; the caption mentions 5)" \
+  "[0:*]" "[*:*]" "Fig. 7  Volumetric strain ε_v (compression +) at the end of each cycle, all tests$ensemble_note" \
   "top left" "set offsets 0, 0.3, graph 0.25, 0" "w lp lw 1.4 pt 7 ps 0.7"
+BAND=""
 
 # Fig. 8: Test 5, εv against σ1/σ3 over all its cycles, coloured by block (axis of the loaded leg).
 # Block of a cycle: a new block starts whenever the loaded axis (largest target) changes.
@@ -421,7 +444,7 @@ done
 
 # ---------------------------------------------------------------------------------------------
 # Figs. 10, 11: coordination number and sliding fraction at the end of every cycle (Fig. 10: cycle 0 = start).
-for d in "${densities[@]}"; do for t in "${tests[@]}"; do
+ensemble_data coordination fig10_coordination && ensemble_data sliding_percent fig11_sliding || for d in "${densities[@]}"; do for t in "${tests[@]}"; do
   [ -n "${have[$d$t]:-}" ] || continue
   { echo "# cycle coordination_number (cycle 0: first row, then cycle_end rows)"; pick "$d$t" ts 'NR == 2 || cycle_end == 1' 'NR == 2 ? 0 : cycle' coordination_number; } > "$figs/fig10_coordination_${d}_test$t.dat"
   # no cycle 0 here: the first row's sliding flags come from the saved sample (its preparation
@@ -430,13 +453,15 @@ for d in "${densities[@]}"; do for t in "${tests[@]}"; do
 done; done
 # Fig. 10: each panel also shows the paper's value before shearing for its density.
 for d in "${densities[@]}"; do DREF[$d]="${cn_paper[$d]} w l dt 2 lw 1.5 lc rgb '#777777' t 'paper, before shearing (${cn_paper[$d]})'"; done
+BAND=${ENSEMBLE:+1}
 fig_by_density fig10_coordination "${densities[*]}" "cycle number (0 = start of shearing)" "coordination number" \
-  "[0:*]" "[*:*]" "Fig. 10  Coordination number 2N_c/N_p (rattlers included) at the end of each cycle, all tests" "top right" \
+  "[0:*]" "[*:*]" "Fig. 10  Coordination number 2N_c/N_p (rattlers included) at the end of each cycle, all tests$ensemble_note" "top right" \
   "set offsets 0, 0.3, graph 0.4, graph 0.05" "w lp lw 1.4 pt 7 ps 0.7"
 DREF=()
 REFS=("")
 fig_by_density fig11_sliding "loose medium dense" "cycle number" "sliding contact fraction N_s/N_c (%)" \
-  "[0:*]" "[0:*]" "Fig. 11  Sliding contact fraction N_s/N_c × 100 % (|f_t| ≥ μ f_n) at the end of each cycle, all tests" "top right" "set offsets 0, 0.3, graph 0.4, 0" "w lp lw 1.4 pt 7 ps 0.7"
+  "[0:*]" "[0:*]" "Fig. 11  Sliding contact fraction N_s/N_c × 100 % (|f_t| ≥ μ f_n) at the end of each cycle, all tests$ensemble_note" "top right" "set offsets 0, 0.3, graph 0.4, 0" "w lp lw 1.4 pt 7 ps 0.7"
+BAND=""
 
 # ---------------------------------------------------------------------------------------------
 # Figs. 12-14: q/p against the fabric ratios, first 5 cycles, with the 1:1 line; square axes.

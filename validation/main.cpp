@@ -15,6 +15,8 @@
 #include <sstream>
 #include <string>
 
+#include <yaml-cpp/yaml.h>
+
 #include "atomic_file.hpp"
 #include "format.hpp"
 #include "rows.hpp"
@@ -40,17 +42,18 @@ std::string json_number(const std::optional<double>& x) { return x ? number(*x) 
 int main(int argc, char** argv) {
   namespace fs = std::filesystem;
   using validation::Verdict;
-  std::string results, references, out, profile = "paper";
+  std::string results, references, out, profile = "paper", decisions_file;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
     if (a == "--results") results = argv[i + 1];
     else if (a == "--references") references = argv[i + 1];
     else if (a == "--out") out = argv[i + 1];
     else if (a == "--profile") profile = argv[i + 1];
+    else if (a == "--decisions") decisions_file = argv[i + 1];
     else { std::fprintf(stderr, "validate: unknown option '%s'\n", a.c_str()); return 2; }
   }
   if (results.empty() || references.empty() || out.empty()) {
-    std::fprintf(stderr, "usage: validate --results DIR --references reference_data/paper.yaml --out DIR [--profile paper|quick]\n");
+    std::fprintf(stderr, "usage: validate --results DIR --references reference_data/paper.yaml --out DIR [--profile paper|quick] [--decisions decisions.json]\n");
     return 2;
   }
   std::vector<validation::Row> rows;
@@ -60,6 +63,17 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;
+  }
+  // The decisions study's explanation of each row (compare-runs decisions), if it has run.
+  std::map<std::string, std::string> cause;
+  if (!decisions_file.empty() && fs::exists(decisions_file)) {
+    try {
+      for (const YAML::Node& row : YAML::LoadFile(decisions_file)["rows"])
+        cause[row["name"].as<std::string>()] = row["explanation"].as<std::string>();
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "error: %s: %s\n", decisions_file.c_str(), e.what());
+      return 2;
+    }
   }
   std::vector<std::string> missing;
   const auto samples = validation::load_samples(results, {"loose", "medium", "dense"}, missing);
@@ -76,6 +90,7 @@ int main(int argc, char** argv) {
      << "|---|---|---|---|---|---|---|---|---|---|\n";
   std::map<Verdict, int> count;
   int failed_must = 0;
+  std::ostringstream misses;  // the rows not consistent, with what the decisions study says of them
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const validation::Row& r = rows[i];
     const validation::RowResult e = validation::evaluate(r, samples);
@@ -103,11 +118,30 @@ int main(int argc, char** argv) {
        << " | " << (e.spread.low ? "[" + number(*e.spread.low) + ", " + number(*e.spread.high) + "]" : "—") << " | "
        << e.holds << " of " << e.valued << " | " << mark << " | " << (r.must_pass ? "yes" : "no") << " | " << cell(r.source)
        << " | " << cell(r.reason) << " |\n";
+    if (e.verdict != Verdict::Consistent) {
+      const auto c = cause.find(r.name);
+      misses << "| " << cell(r.name) << " | " << mark << " | " << statement(r) << " | "
+             << (e.spread.low ? "[" + number(*e.spread.low) + ", " + number(*e.spread.high) + "]" : "—") << " | " << e.holds
+             << " of " << e.valued << " | "
+             << cell(c != cause.end() ? c->second : decisions_file.empty() ? "—" : "the decisions study has not judged this row")
+             << " |\n";
+    }
   }
   json << "  ],\n  \"consistent\": " << count[Verdict::Consistent] << ",\n  \"inconsistent\": " << count[Verdict::Inconsistent]
        << ",\n  \"not_judged\": " << count[Verdict::NotJudged] << ",\n  \"total\": " << rows.size()
        << ",\n  \"must_pass_inconsistent\": " << failed_must << "\n}\n";
+  std::ostringstream verdicts;
+  verdicts << "Of " << rows.size() << " rows, **" << count[Verdict::Consistent] << " consistent**, **" << count[Verdict::Inconsistent]
+           << " inconsistent**, " << count[Verdict::NotJudged] << " not judged, over " << samples.size() << " sample"
+           << (samples.size() == 1 ? "" : "s") << " per density. A row is consistent when the paper's value, widened by the "
+           << "row's reading tolerance, overlaps the 95 % prediction interval of one sample of ours (mean ± t(0.975, n−1) · sd · "
+              "√(1 + 1/n)); with fewer than two samples it is not judged.\n";
+  if (!misses.str().empty())
+    verdicts << "\nThe rows that are not consistent, and what the decisions study found for each (its own ensemble, "
+                "`make decisions`):\n\n| row | verdict | paper | interval of one sample | holds in | cause |\n|---|---|---|---|---|---|\n"
+             << misses.str();
   try {
+    validation::write_file_atomically((fs::path(out) / "verdicts.md").string(), verdicts.str());
     validation::write_file_atomically((fs::path(out) / "validation.json").string(), json.str());
     validation::write_file_atomically((fs::path(out) / "validation.md").string(), md.str());
   } catch (const std::exception& e) {

@@ -124,8 +124,14 @@ const std::map<std::string, Fn>& registry() {
       {"cell_side_cm_after_preparation",
        [](const QuantityRequest&, const DensityResults& r) -> Measured {
          if (!r.prepared) return {std::nullopt, "no prepared sample"};
+         // The paper's cell holds 8,000 spheres: a sample of N spheres is scaled to that count by
+         // (8,000 / N)^(1/3), so that smaller samples (the decisions study's) compare too.
          const double v = r.sample.at("cell_length_1") * r.sample.at("cell_length_2") * r.sample.at("cell_length_3");
-         return {100 * std::cbrt(v), "cube root of the cell volume"};
+         const auto n = r.sample.find("particles");
+         if (n == r.sample.end() || n->second <= 0) return {100 * std::cbrt(v), "cube root of the cell volume (sphere count unknown)"};
+         if (n->second == 8000) return {100 * std::cbrt(v), "cube root of the cell volume"};
+         return {100 * std::cbrt(v * 8000 / n->second), "cube root of the cell volume, scaled to 8,000 spheres from " +
+                                                        std::to_string(static_cast<long>(n->second))};
        }},
       {"qp_strong_fabric_slope",
        [](const QuantityRequest&, const DensityResults& r) -> Measured {

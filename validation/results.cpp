@@ -51,6 +51,11 @@ DensityResults load_density(const std::string& preparation, const std::map<int, 
     if (!complete(f)) throw std::runtime_error("not complete");
     for (const auto& [name, values] : read_group(f, "timeseries"))
       if (!values.empty()) r.sample[name] = values.back();
+    // The number of spheres, from the particle frames (frames x particles x 3).
+    if (dem::h5::exists(f, "particles/all/position/value")) {
+      const std::vector<hsize_t> shape = dem::h5::shape(f, "particles/all/position/value");
+      if (shape.size() == 3) r.sample["particles"] = static_cast<double>(shape[1]);
+    }
     r.prepared = true;
   } catch (const std::exception&) {
     missing.push_back(preparation);
