@@ -118,7 +118,7 @@ report: tools
 	SAMPLE=%s_prepare.h5 LATTICE=$(BUILD)/lattice.h5 reports/samples/figures.sh $(BUILD)/bin/dem $(RESULTS)/$(strip $(SAMPLE)) reports/figures
 	-$(MAKE) --no-print-directory decisions-report
 	-reports/convergence/make_section.sh $(BUILD)/bin $(CONVERGENCE) reports/convergence
-	-reports/stability/make_section.sh $(BUILD)/bin $(STABILITY) reports/stability
+	reports/stability/make_section.sh $(BUILD)/bin $(STABILITY) reports/stability
 	reports/make_report.sh $(BUILD)/bin/dem $(RESULTS) reports
 
 # The paper's open choices (SPEC section 7): each reading one at a time from the baseline, 3

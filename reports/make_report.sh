@@ -14,50 +14,90 @@ mkdir -p "$report"
   echo
   echo "Generated on $(date -u +%Y-%m-%d) from \`$(realpath --relative-to="$here" "$results")\`${REPORT_NOTE:+ — $REPORT_NOTE}."
   echo "Source: commit \`$(git -C "$here" rev-parse --short=12 HEAD 2>/dev/null || echo unknown)\`$(git -C "$here" diff --quiet HEAD -- . ':!reports' 2>/dev/null || echo ' (with uncommitted changes)'); engine: \`$("$dem" --version)\`."
-  engines=$(for f in "$results"/*.h5; do [ -f "$f" ] || continue; h5dump -a software_version "$f" 2>/dev/null | sed -n 's/.*(0): "\(.*\)".*/\1/p'; done | sort | uniq -c | awk '{printf "%s%s (%d runs)", (NR > 1 ? ", " : ""), $2, $1}')
+  shopt -s globstar
+  engines=$(for f in "$results"/**/*.h5; do [ -f "$f" ] || continue; h5dump -a software_version "$f" 2>/dev/null | sed -n 's/.*(0): "\(.*\)".*/\1/p'; done | sort | uniq -c | awk '{printf "%s%s (%d runs)", (NR > 1 ? ", " : ""), $2, $1}')
   echo "The results were written by: ${engines:-unknown}."
+  # The samples of the ensemble: results/.../seed<N>/ (or the folder itself for one sample).
+  samples=()
+  for d in "$results"/seed*/; do [ -d "$d" ] && samples+=("${d%/}"); done
+  [ ${#samples[@]} -gt 0 ] || samples=("$results")
+  mapfile -t samples < <(printf '%s\n' "${samples[@]}" | sort -V)
+  first=${samples[0]}
+  scene() { echo "$first/../scenes/$(basename "$first")/$1.yaml"; }   # a resolved scene of the first sample
+  [ "$first" = "$results" ] && scene() { echo "$results/scenes/$1.yaml"; }
+  value() { sed -n "s/.*$1: *\([^,}]*\).*/\1/p" "$2" 2>/dev/null | head -1; }
+  echo
+  echo "## Verdicts"
+  echo
+  if [ -f "$report/verdicts.md" ]; then cat "$report/verdicts.md"; else echo "No validation output yet (\`build/bin/validate\`)."; fi
+  echo
+  echo "Readings of the paper's open choices used (SPEC §7; read from the resolved scenes of the first sample):"
+  echo "grading read by $( [ "$(value basis "$(scene loose_prepare)")" = mass ] && echo mass || echo count );"
+  echo "damping $(value form "$(scene loose_prepare)"), translational $(value translational "$(scene loose_prepare)");"
+  echo "hold until the unbalanced force ratio is below $(value unbalanced_force_ratio "$(scene loose_prepare)") and every principal stress within $(value stress_tolerance "$(scene loose_prepare)") of the target;"
+  echo "strain-rate cap while compressing $(value max_strain_rate "$(scene loose_prepare)") s⁻¹;"
+  echo "shearing friction $(for d in loose medium dense; do printf '%s %s, ' "$d" "$(value friction "$(scene ${d}_test1)")"; done | sed 's/, $//');"
+  echo "vertices at p = $(value mean_stress "$(scene loose_test1)") Pa with R = $(value stress_ratio "$(scene loose_test1)");"
+  echo "Test 3 visits $(sed -n 's/.*path: \[\(TC1, A, [A-Z0-9]*, A, [A-Z0-9]*\).*/\1/p' "$(scene loose_test3)" | head -1), …;"
+  echo "the cell is kept orthorhombic (its shear stresses are not controlled)."
+  echo
+  echo "## What the paper's open choices change"
+  echo
+  if [ -f "$report/decisions/table.md" ]; then
+    echo "\`make decisions\` (\`pipeline/studies/decisions.yaml\`): each alternative reading of SPEC §7, one at a time from the"
+    echo "baseline, each on its own ensemble ($(awk -F'\t' '$1 == "baseline" && $3 == "-" { n[$9] = 1 } END { print length(n) }' "$here/results/decisions/paper/runs.tsv" 2>/dev/null || echo '?') samples"
+    echo "of 1,000 spheres; the cell side is scaled to 8,000 spheres). Every validation row is judged by the same rule as above."
+    echo
+    sed 's#](\(tornado[^)]*\))#](decisions/\1)#g' "$report/decisions/table.md"
+  else
+    echo "Not run yet (\`make decisions\`)."
+  fi
   echo
   echo "## What was run"
   echo
-  echo "Three samples (SPEC §2: isotropic compression of the 20×20×20 lattice to 100 kPa with μ = 0.5 / 0.2 / 0),"
-  echo "then the five cyclic true-triaxial tests (SPEC §3) on each, sheared with μ = 0.5 at p = 100 kPa,"
-  echo "R = 1.24, 2 MPa/s, Δt = 1 µs, viscous damping C_t = C_r = 0.05 (SPEC §5, reading (a))."
-  echo "Decided values used: grading read by mass, hold criteria 0.5 % and unbalanced force ratio 10⁻³,"
-  echo "strain-rate cap 1 s⁻¹, shearing friction 0.5, Test 3 order TC1, A, TE1, A, TC2, …"
+  echo "${#samples[@]} sample(s) per density (seeds of the diameter sampler); each sample is prepared (SPEC §2: isotropic"
+  echo "compression of the 20×20×20 lattice to 100 kPa with the density's friction, 0.5 / 0.2 / 0) and sheared along the five"
+  echo "cyclic true-triaxial paths (SPEC §3). Per sample:"
   echo
-  echo "| run | steps | simulated time (s) | wall time (s) |"
+  echo "| sample | runs | steps | wall time of the runs (s) |"
   echo "|---|---|---|---|"
   total=0
-  for f in "$results"/*.h5; do
-    line=$("$dem" summary "$f" 2>/dev/null | awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i } NR == 2 { printf "%d\t%.4f\t%.0f", $c["step"], $c["time"], $2 }') || continue
-    [ -n "$line" ] || continue
-    IFS=$'\t' read -r steps t wall <<< "$line"
-    echo "| $(basename "$f" .h5) | $steps | $t | $wall |"
-    total=$((total + ${wall%.*}))
+  for dir in "${samples[@]}"; do
+    runs=0; steps=0; wall=0
+    for f in "$dir"/*.h5; do
+      line=$("$dem" summary "$f" 2>/dev/null | awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i } NR == 2 { printf "%d\t%.0f", $c["step"], $2 }') || continue
+      [ -n "$line" ] || continue
+      IFS=$'\t' read -r st w <<< "$line"
+      runs=$((runs + 1)); steps=$((steps + st)); wall=$((wall + ${w%.*}))
+    done
+    echo "| $(basename "$dir") | $runs | $steps | $wall |"
+    total=$((total + wall))
   done
   echo
-  echo "Total wall time of the runs: $total s (runs in parallel overlap)."
+  echo "Total wall time of the runs: $total s of one core (runs in parallel overlap)."
   echo
   echo "## The samples before shearing"
   echo
   echo "| sample | e0 (paper) | cell side, cm (paper) | coordination number (paper) | without rattlers | sliding % | unbalanced force ratio |"
   echo "|---|---|---|---|---|---|---|"
-  for d in loose medium dense; do
-    f=$results/${d}_prepare.h5
-    [ -f "$f" ] || { echo "| $d | not run | | | | | |"; continue; }
-    "$dem" summary "$f" | awk -F'\t' -v d="$d" '
+  for dir in "${samples[@]}"; do for d in loose medium dense; do
+    f=$dir/${d}_prepare.h5
+    label="$d, $(basename "$dir")"
+    [ -f "$f" ] || { echo "| $label | not run | | | | | |"; continue; }
+    "$dem" summary "$f" | awk -F'\t' -v d="$d" -v label="$label" '
       NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i }
       NR == 2 { e["loose"] = 0.73; e["medium"] = 0.67; e["dense"] = 0.57; L["loose"] = 7.3; L["medium"] = 7.2; L["dense"] = 7.1
                 z["loose"] = 4.09; z["medium"] = 4.88; z["dense"] = 5.94
                 side = 100 * ($c["cell_length_1"] * $c["cell_length_2"] * $c["cell_length_3"]) ^ (1 / 3)
-                printf "| %s | %.3f (%.2f) | %.2f (%.1f) | %.2f (%.2f) | %.2f | %.1f | %.1e |\n", d, $c["void_ratio"], e[d], side, L[d],
+                printf "| %s | %.3f (%.2f) | %.2f (%.1f) | %.2f (%.2f) | %.2f | %.1f | %.1e |\n", label, $c["void_ratio"], e[d], side, L[d],
                   $c["coordination_number"], z[d], $c["coordination_number_mechanical"], 100 * $c["sliding_fraction"], $c["unbalanced_force_ratio"] }'
-  done
+  done; done
   echo
   echo "## Validation against the paper"
   echo
   if [ -f "$report/validation.md" ]; then
-    echo "Every row of SPEC §6 (\`reference_data/paper.yaml\`: value, tolerance, reason, source); machine-readable in"
+    echo "Every row of SPEC §6 (\`reference_data/paper.yaml\`: value, tolerance, reason, source), per sample of the ensemble,"
+    echo "with the mean, standard deviation, the 95 % prediction interval of one sample and the verdict; machine-readable in"
     echo "\`reports/validation.json\`."
     echo
     cat "$report/validation.md"
@@ -66,6 +106,9 @@ mkdir -p "$report"
   fi
   echo
   echo "## Figures"
+  echo
+  echo "Figures 7, 10 and 11 show the mean of the ensemble with a band of one standard deviation; the others show the runs of"
+  echo "one stated sample, $(basename "$first"); the slope of Figures 13–14 of every sample is in the validation table above."
   echo
   if [ -f "$report/figures/README.md" ]; then
     sed -e 's#](\(fig[^)]*\))#](figures/\1)#g' "$report/figures/README.md" | sed '1{/^# /d}'
@@ -88,7 +131,7 @@ mkdir -p "$report"
   echo "Every run books the work the cell does on the sample against the energy stored in the springs and in"
   echo "motion and the energy the damping and the sliding contacts took (engine/README.md, \`Energy balance\`)."
   echo
-  "$here/reports/energy/energy.sh" "$dem" "$results" "$report" > /dev/null
+  "$here/reports/energy/energy.sh" "$dem" "$first" "$report" > /dev/null
   cat "$report/energy.md"
   echo
   echo "![energy balance](figures/fig_energy.png)"

@@ -80,6 +80,14 @@ void read_stop(const std::string& result, validation::CaseRun& run) {
   }
 }
 
+// Paths under the working folder (the repository, when make runs it) without that folder, so that
+// committed tables do not carry the machine's absolute paths.
+std::string relative_paths(std::string s) {
+  const std::string root = fs::current_path().string() + "/";
+  for (std::size_t at; (at = s.find(root)) != std::string::npos;) s.erase(at, root.size());
+  return s;
+}
+
 std::string percent(double e) {
   if (!std::isfinite(e)) return "—";
   char buf[32];
@@ -260,14 +268,21 @@ int decisions(const std::vector<ManifestLine>& manifest, const std::vector<std::
 
 int main(int argc, char** argv) {
   if (argc < 4) {
-    std::fprintf(stderr, "usage: compare-runs convergence|stability|decisions RESULTS_DIR OUT_DIR [--reference NAME] [--references FILE]\n");
+    std::fprintf(stderr, "usage: compare-runs convergence|stability|decisions RESULTS_DIR OUT_DIR [--reference NAME] [--references FILE] [--report-only]\n");
     return 2;
   }
   const std::string mode = argv[1], results = argv[2], out = argv[3];
   std::string reference = "reference", references = "reference_data/paper.yaml";
-  for (int i = 4; i + 1 < argc; i += 2) {
-    if (std::string(argv[i]) == "--reference") reference = argv[i + 1];
-    else if (std::string(argv[i]) == "--references") references = argv[i + 1];
+  bool report_only = false;  // stability: a case that is not acceptable is marked in the table, not an exit status
+  for (int i = 4; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--report-only") report_only = true;
+    else if (a == "--reference" && i + 1 < argc) reference = argv[++i];
+    else if (a == "--references" && i + 1 < argc) references = argv[++i];
+    else {
+      std::fprintf(stderr, "compare-runs: unknown option '%s'\n", a.c_str());
+      return 2;
+    }
   }
   std::vector<ManifestLine> manifest;
   try {
@@ -307,12 +322,12 @@ int main(int argc, char** argv) {
           o.message = o.message.substr(at + 7);
         bad += !o.acceptable;
         const std::string name = l.test == "-" ? v : v + " " + l.test;
-        md << "| " << cell(name) << " | " << cell(l.settings) << " | " << (o.acceptable ? "" : "⚠ ") << o.outcome << " | "
+        md << "| " << cell(name) << " | " << cell(relative_paths(l.settings)) << " | " << (o.acceptable ? "" : "⚠ ") << o.outcome << " | "
            << o.steps << " | " << (o.closure ? percent(*o.closure) : "—") << " | " << cell(o.message) << " |\n";
       }
     }
     std::printf("stability: %zu cases, %d not acceptable -> %s\n", order.size(), bad, (fs::path(out) / "table.md").c_str());
-    return bad > 0 ? 1 : 0;
+    return bad > 0 && !report_only ? 1 : 0;
   }
   if (mode == "decisions") return decisions(manifest, order, references, reference == "reference" ? "baseline" : reference, out);
   if (mode != "convergence") {

@@ -10,4 +10,4 @@ bin=${1:-$here/build/bin}
 results=${2:-$here/results/stability/paper}
 out=${3:-$here/reports/stability}
 mkdir -p "$out"
-"$bin/compare-runs" stability "$results" "$out"
+"$bin/compare-runs" stability "$results" "$out" --report-only   # ⚠ cases are marked in the table
