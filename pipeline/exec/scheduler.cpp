@@ -155,7 +155,6 @@ Outcome execute(const std::vector<PlannedRun>& runs, const std::string& dem, int
   std::vector<clock::time_point> started(runs.size());
   std::map<pid_t, std::size_t> running;
   Outcome out;
-  double cost_done = 0, busy_wall = 0, cost_left = 0;
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const std::string problem = reuse_problem(runs[i].result, runs[i].hash);
     if (problem.empty()) {
@@ -165,7 +164,6 @@ Outcome execute(const std::vector<PlannedRun>& runs, const std::string& dem, int
       state[i] = State::Failed;  // stopped before with these inputs: its outcome stands
       ++out.reused;
     } else {
-      cost_left += runs[i].cost;
       // Say why an existing result is not reused (a missing one is simply run).
       if (problem != "not run yet")
         std::printf("[pipeline] %s: the existing %s is %s: run again\n", runs[i].name.c_str(), runs[i].result.c_str(),
@@ -174,15 +172,39 @@ Outcome execute(const std::vector<PlannedRun>& runs, const std::string& dem, int
   }
   std::printf("[pipeline] %zu runs: %d reused, %zu to run, %d at a time, %d thread%s each\n", runs.size(),
               out.reused, runs.size() - static_cast<std::size_t>(out.reused), jobs, threads, threads > 1 ? "s" : "");
+  // ETA: the work left, in seconds of one worker, shared by the workers that can still be busy.
+  // Each run's seconds are its estimated particle-steps over the throughput learnt from the finished
+  // runs of its kind (preparations, whose hold has no known length, and tests are learnt apart);
+  // a running run counts only what is left of it. Before any run of a kind has finished, the other
+  // kind's throughput is used, or 2.5e7 particle-steps/s (this 2-core machine's paper study, two
+  // runs at a time).
+  struct Learnt {
+    double cost = 0, wall = 0;
+  };
+  Learnt learnt[2];  // [0] preparations, [1] tests
+  auto kind = [&](std::size_t i) { return runs[i].test.empty() ? 0 : 1; };
+  auto rate = [&](int k) {
+    if (learnt[k].wall > 0) return learnt[k].cost / learnt[k].wall;
+    if (learnt[1 - k].wall > 0) return learnt[1 - k].cost / learnt[1 - k].wall;
+    return 2.5e7;
+  };
+  auto eta = [&] {
+    double seconds = 0;
+    int left = 0;
+    const auto now = clock::now();
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+      if (runs[i].copy_of >= 0 || (state[i] != State::Waiting && state[i] != State::Running)) continue;
+      double t = runs[i].cost / rate(kind(i));
+      if (state[i] == State::Running) t = std::max(0.0, t - std::chrono::duration<double>(now - started[i]).count());
+      seconds += t;
+      ++left;
+    }
+    return seconds / std::max(1, std::min(jobs, left));
+  };
   auto report = [&](const std::string& what) {
-    // ETA from the throughput of the runs finished so far (particle-steps per second per worker),
-    // or 2.5e7 per worker before any has finished (the paper study's runs, two at a time on this
-    // 2-core machine: 5.5e10 particle-steps in 2,189 s of runs, make all of 48406a7).
-    const double rate = busy_wall > 0 ? cost_done / busy_wall : 2.5e7;
-    const double workers = std::max(1.0, std::min<double>(jobs, static_cast<double>(running.size())));
     const double elapsed = std::chrono::duration<double>(clock::now() - start).count();
     std::printf("[pipeline %s] %s; %d ran, %d reused, %d failed, %zu running; ETA %s\n", minutes(elapsed).c_str(),
-                what.c_str(), out.ran, out.reused, out.failed, running.size(), minutes(std::max(0.0, cost_left) / rate / workers).c_str());
+                what.c_str(), out.ran, out.reused, out.failed, running.size(), minutes(eta()).c_str());
     std::fflush(stdout);
   };
   // Longest chain first: a run's priority is its own cost plus that of the runs waiting for it, so
@@ -206,7 +228,6 @@ Outcome execute(const std::vector<PlannedRun>& runs, const std::string& dem, int
                        state[static_cast<std::size_t>(dep)] == State::Blocked)) {
         state[i] = State::Blocked;
         ++(runs[i].may_fail ? out.skipped : out.blocked);
-        cost_left -= runs[i].cost;
         std::printf("[pipeline] %s %s: %s did not finish\n", runs[i].name.c_str(), runs[i].may_fail ? "skipped" : "blocked",
                     runs[static_cast<std::size_t>(dep)].name.c_str());
         continue;
@@ -214,7 +235,6 @@ Outcome execute(const std::vector<PlannedRun>& runs, const std::string& dem, int
       if (dep >= 0 && state[static_cast<std::size_t>(dep)] != State::Done) continue;
       if (runs[i].copy_of >= 0) {
         const PlannedRun& original = runs[static_cast<std::size_t>(runs[i].copy_of)];
-        cost_left -= runs[i].cost;
         try {
           copy_result(original, runs[i]);
           state[i] = State::Done;
@@ -250,12 +270,11 @@ Outcome execute(const std::vector<PlannedRun>& runs, const std::string& dem, int
     const std::size_t i = it->second;
     running.erase(it);
     const double wall = std::chrono::duration<double>(clock::now() - started[i]).count();
-    cost_left -= runs[i].cost;
     if (WIFEXITED(status) && WEXITSTATUS(status) == 0 && up_to_date(runs[i].result, runs[i].hash)) {
       state[i] = State::Done;
       ++out.ran;
-      cost_done += runs[i].cost;
-      busy_wall += wall;
+      learnt[kind(i)].cost += runs[i].cost;
+      learnt[kind(i)].wall += wall;
       report("finished " + runs[i].name + " in " + minutes(wall));
     } else if (runs[i].may_fail && WIFEXITED(status) && (WEXITSTATUS(status) == 1 || WEXITSTATUS(status) == 2)) {
       // An expected kind of end: the engine refused the input or stopped the run, with a message.

@@ -25,7 +25,10 @@ TEST_CASE("content_hash is FNV-1a 64", "[pipeline]") {
 TEST_CASE("the paper study plans a preparation per density and every test after it", "[pipeline]") {
   const pipeline::Study study = pipeline::load_study(study_file);
   const auto runs = pipeline::plan_study(study, study.profile("quick"), out, "engine-A");
-  REQUIRE(runs.size() == 3 * (1 + 5));
+  const std::size_t samples = study.profile("quick").seeds.size();
+  CHECK(samples == 3);                    // the quick profile's ensemble
+  CHECK(study.profile("paper").seeds.size() == 5);
+  REQUIRE(runs.size() == samples * 3 * (1 + 5));
   std::set<std::string> names;
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const auto& r = runs[i];
@@ -39,7 +42,7 @@ TEST_CASE("the paper study plans a preparation per density and every test after 
     } else {
       REQUIRE(r.depends_on >= 0);
       const auto& p = runs[static_cast<std::size_t>(r.depends_on)];
-      CHECK(p.name.substr(0, p.name.find('_')) == r.name.substr(0, r.name.find('_')));  // same density
+      CHECK(p.name.substr(0, p.name.find('_')) == r.name.substr(0, r.name.find('_')));  // same sample and density
       CHECK(static_cast<std::size_t>(r.depends_on) < i);                             // planned before
       const dem::SceneConfig s = dem::scene_from_text(r.scene_text, r.scene_file);
       CHECK(s.particles.path == std::filesystem::absolute(p.result).string());
