@@ -102,6 +102,18 @@ auto in_context(const Study& study, const std::string& where, F&& f) {
   }
 }
 
+// The bytes of the files a preparation reads (a particle CSV or a saved state), by content: an
+// edited file changes the input hash, so its result is not reused. "" when it reads none (the
+// lattice), so the hashes of such runs are what they were before files were hashed.
+std::string read_files(const dem::SceneConfig& scene) {
+  if (scene.particles.kind == dem::ParticleSource::Kind::Lattice) return "";
+  std::ifstream in(scene.particles.path, std::ios::binary);
+  std::stringstream bytes;
+  bytes << in.rdbuf();
+  if (!in) throw dem::ConfigError(scene.file + ": particles: cannot read " + scene.particles.path);
+  return "\nreads " + scene.particles.path + " " + content_hash(bytes.str());
+}
+
 }  // namespace
 
 std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, const std::string& out_dir,
@@ -174,7 +186,7 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
         prep.scene_text = emit(scene, header);
         const dem::SceneConfig parsed =
             in_context(study, where, [&] { return dem::scene_from_text(prep.scene_text, prep.scene_file); });
-        prep.hash = content_hash(engine_version + "\n" + prep.scene_text);
+        prep.hash = content_hash(engine_version + "\n" + prep.scene_text + read_files(parsed));
         prep_index = static_cast<int>(runs.size());
         const auto& lat = parsed.particles.lattice;
         particles[prep_index] = static_cast<double>(lat.n[0]) * lat.n[1] * lat.n[2];

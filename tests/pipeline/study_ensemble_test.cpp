@@ -120,3 +120,26 @@ TEST_CASE("per_test changes one test; shearing with the preparation friction fol
                                                       {"base_loose_test2", "base_loose_test1"},
                                                       {"base_dense_test2", "base_dense_test1"}});
 }
+
+TEST_CASE("the input hash covers the bytes of the particle file a preparation reads", "[pipeline][inputs]") {
+  const fs::path dir = fresh("inputs_csv");
+  const auto write_csv = [&](const std::string& second_radius) {
+    std::ofstream(dir / "parts.csv") << "x,y,z,radius\n0.005,0.005,0.005,0.002\n0.015,0.005,0.005," << second_radius << "\n";
+  };
+  const std::string study = two_densities + "profiles: {paper: {lattice: 2}, quick: {lattice: 2}}\n"
+                            "variants:\n"
+                            "  - {name: lattice}\n"
+                            "  - {name: csv, prepare: {particles: {csv: parts.csv, cell: [0.02, 0.02, 0.02]}}}\n";
+  write_csv("0.0018");
+  const auto a = plan(dir, study);
+  const auto same = plan(dir, study);
+  write_csv("0.0017");  // the same file name, other bytes
+  const auto b = plan(dir, study);
+  CHECK(a.at("csv_loose_prepare").hash == same.at("csv_loose_prepare").hash);
+  CHECK(a.at("csv_loose_prepare").hash != b.at("csv_loose_prepare").hash);
+  CHECK(a.at("csv_dense_test1").hash != b.at("csv_dense_test1").hash);        // a test follows its sample
+  CHECK(a.at("lattice_loose_prepare").hash == b.at("lattice_loose_prepare").hash);  // runs that do not read it stay
+  CHECK(a.at("lattice_dense_test2").hash == b.at("lattice_dense_test2").hash);
+  fs::remove(dir / "parts.csv");
+  CHECK_THROWS_AS(plan(dir, study), dem::ConfigError);
+}
