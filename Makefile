@@ -131,7 +131,7 @@ decisions: tools
 # The decisions section from the decisions study's results (a study not run yet is said so).
 decisions-report: tools
 	@if [ -f $(DECISIONS)/runs.tsv ]; then \
-	  $(BUILD)/bin/compare-runs decisions $(DECISIONS) reports/decisions --references reference_data/paper.yaml && \
+	  $(BUILD)/bin/compare-runs decisions $(DECISIONS) reports/decisions --references reference_data/paper.yaml --ensemble $(RESULTS) && \
 	  (cd reports/decisions && for g in tornado_*.gp; do gnuplot $$g || exit 1; done); \
 	else echo "decisions: no results in $(DECISIONS) yet (make decisions)"; fi
 

@@ -129,7 +129,7 @@ std::string signed_fixed(double x) {
 // reading that explains each inconsistent row. Writes table.md, decisions.json and, per group,
 // tornado_<group>.dat and .gp (gnuplot draws them into tornado_<group>.png).
 int decisions(const std::vector<ManifestLine>& manifest, const std::vector<std::string>& order, const std::string& references,
-              const std::string& baseline, const std::string& out) {
+              const std::string& baseline, const std::string& ensemble, const std::string& out) {
   std::vector<validation::Row> rows;
   try {
     rows = validation::load_references(references, "paper");
@@ -235,6 +235,28 @@ int decisions(const std::vector<ManifestLine>& manifest, const std::vector<std::
       md << cell(d.explanation) << " |\n";
     }
   }
+  // The size check: the baseline of this study against the paper study's ensemble (its own
+  // sample size), row by row, in units of the paper ensemble's standard deviation.
+  if (!ensemble.empty()) {
+    std::vector<std::string> missing_ensemble;
+    const auto samples = validation::load_samples(ensemble, {"loose", "medium", "dense"}, missing_ensemble);
+    md << "\n### Size check: this study's baseline against the paper study's ensemble\n\n"
+       << "The same rows on the paper study's samples (" << samples.size() << " per density, its size) and on this study's "
+       << "baseline; the difference of the means in units of the paper ensemble's standard deviation, and both verdicts. "
+       << "A reading's shift is trusted at this study's size where the two agree.\n\n"
+       << "| row | paper study: mean ± sd | this study's baseline: mean ± sd | difference / sd | verdicts |\n|---|---|---|---|---|\n";
+    for (const validation::RowDecision& d : decided) {
+      const validation::RowResult big = validation::evaluate(d.row, samples);
+      const auto ms = [](const validation::RowResult& r) {
+        return r.valued ? number(r.spread.mean) + (r.valued > 1 ? " ± " + number(r.spread.sd) : "") : std::string("—");
+      };
+      std::string diff = "—";
+      if (big.valued > 1 && big.spread.sd > 0 && d.baseline.valued > 0)
+        diff = signed_fixed((d.baseline.spread.mean - big.spread.mean) / big.spread.sd);
+      md << "| " << cell(d.row.name) << " | " << ms(big) << " | " << ms(d.baseline) << " | " << diff << " | "
+         << verdict_mark(big.verdict) << " / " << verdict_mark(d.baseline.verdict) << " |\n";
+    }
+  }
   std::ostringstream json;
   json << "{\n  \"baseline\": \"" << baseline << "\",\n  \"rows\": [\n";
   for (std::size_t i = 0; i < decided.size(); ++i) {
@@ -268,17 +290,18 @@ int decisions(const std::vector<ManifestLine>& manifest, const std::vector<std::
 
 int main(int argc, char** argv) {
   if (argc < 4) {
-    std::fprintf(stderr, "usage: compare-runs convergence|stability|decisions RESULTS_DIR OUT_DIR [--reference NAME] [--references FILE] [--report-only]\n");
+    std::fprintf(stderr, "usage: compare-runs convergence|stability|decisions RESULTS_DIR OUT_DIR [--reference NAME] [--references FILE] [--report-only] [--ensemble PAPER_RESULTS]\n");
     return 2;
   }
   const std::string mode = argv[1], results = argv[2], out = argv[3];
-  std::string reference = "reference", references = "reference_data/paper.yaml";
+  std::string reference = "reference", references = "reference_data/paper.yaml", ensemble;
   bool report_only = false;  // stability: a case that is not acceptable is marked in the table, not an exit status
   for (int i = 4; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--report-only") report_only = true;
     else if (a == "--reference" && i + 1 < argc) reference = argv[++i];
     else if (a == "--references" && i + 1 < argc) references = argv[++i];
+    else if (a == "--ensemble" && i + 1 < argc) ensemble = argv[++i];
     else {
       std::fprintf(stderr, "compare-runs: unknown option '%s'\n", a.c_str());
       return 2;
@@ -329,7 +352,8 @@ int main(int argc, char** argv) {
     std::printf("stability: %zu cases, %d not acceptable -> %s\n", order.size(), bad, (fs::path(out) / "table.md").c_str());
     return bad > 0 && !report_only ? 1 : 0;
   }
-  if (mode == "decisions") return decisions(manifest, order, references, reference == "reference" ? "baseline" : reference, out);
+  if (mode == "decisions")
+    return decisions(manifest, order, references, reference == "reference" ? "baseline" : reference, ensemble, out);
   if (mode != "convergence") {
     std::fprintf(stderr, "compare-runs: unknown mode '%s' (convergence, stability or decisions)\n", mode.c_str());
     return 2;
