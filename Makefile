@@ -106,17 +106,20 @@ quick: build
 	$(BUILD)/bin/pipeline pipeline/studies/paper.yaml --profile quick -j $(JOBS)
 	-$(BUILD)/bin/validate --results results/study/quick --references reference_data/paper.yaml \
 	  --out $(BUILD)/quick-report --profile quick
-	reports/make_figures.sh $(BUILD)/bin/dem results/study/quick $(BUILD)/quick-report/figures
+	$(BUILD)/bin/ensemble-cycles results/study/quick $(BUILD)/quick-report/figures/ensemble
+	ENSEMBLE=$(BUILD)/quick-report/figures/ensemble reports/make_figures.sh $(BUILD)/bin/dem \
+	  results/study/quick/$(strip $(SAMPLE)) $(BUILD)/quick-report/figures
 	reports/make_report.sh $(BUILD)/bin/dem results/study/quick $(BUILD)/quick-report
 
 # Validation table, figures, the convergence and stability sections and reports/index.md from the
 # results of the full studies (a section whose study has not run says so).
 report: tools
-	-$(BUILD)/bin/validate --results $(RESULTS) --references reference_data/paper.yaml --out reports
+	-$(MAKE) --no-print-directory decisions-report
+	-$(BUILD)/bin/validate --results $(RESULTS) --references reference_data/paper.yaml --out reports \
+	  --decisions reports/decisions/decisions.json
 	$(BUILD)/bin/ensemble-cycles $(RESULTS) reports/figures/ensemble
 	ENSEMBLE=reports/figures/ensemble reports/make_figures.sh $(BUILD)/bin/dem $(RESULTS)/$(strip $(SAMPLE)) reports/figures
 	SAMPLE=%s_prepare.h5 LATTICE=$(BUILD)/lattice.h5 reports/samples/figures.sh $(BUILD)/bin/dem $(RESULTS)/$(strip $(SAMPLE)) reports/figures
-	-$(MAKE) --no-print-directory decisions-report
 	-reports/convergence/make_section.sh $(BUILD)/bin $(CONVERGENCE) reports/convergence
 	reports/stability/make_section.sh $(BUILD)/bin $(STABILITY) reports/stability
 	reports/make_report.sh $(BUILD)/bin/dem $(RESULTS) reports
@@ -125,8 +128,7 @@ report: tools
 # samples of 1,000 spheres (pipeline/studies/decisions.yaml), then the report's section on them.
 decisions: tools
 	$(BUILD)/bin/pipeline pipeline/studies/decisions.yaml --profile paper -j $(JOBS)
-	$(MAKE) --no-print-directory decisions-report
-	reports/make_report.sh $(BUILD)/bin/dem $(RESULTS) reports
+	$(MAKE) --no-print-directory report
 
 # The decisions section from the decisions study's results (a study not run yet is said so).
 decisions-report: tools
