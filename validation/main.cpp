@@ -80,14 +80,16 @@ int main(int argc, char** argv) {
   fs::create_directories(out);
   std::ostringstream json, md;
   json << "{\n  \"profile\": " << json_string(profile) << ",\n  \"references\": " << json_string(references)
-       << ",\n  \"rule\": " << json_string("consistent: the paper's value, widened by the row's tolerance, overlaps the 95 % prediction interval of one sample (mean -/+ t(0.975, n-1) sd sqrt(1 + 1/n)); not judged with fewer than 2 samples")
+       << ",\n  \"rules\": {\"interval\": " << json_string("consistent: the paper's value, widened by the row's tolerance, overlaps the 95 % prediction interval of one sample (mean -/+ t(0.975, n-1) sd sqrt(1 + 1/n))")
+       << ", \"majority\": " << json_string("consistent: the paper's statement holds in more than half of the samples")
+       << ", \"both\": " << json_string("not judged with fewer than 2 samples with a value") << "}"
        << ",\n  \"samples\": [";
   for (std::size_t i = 0; i < samples.size(); ++i) json << (i ? ", " : "") << json_string(samples[i].name);
   json << "],\n  \"missing_results\": [";
   for (std::size_t i = 0; i < missing.size(); ++i) json << (i ? ", " : "") << json_string(fs::relative(missing[i], results).string());
   json << "],\n  \"rows\": [\n";
-  md << "| check | paper | per sample | mean ± sd (n) | 95 % interval of one sample | holds in | verdict | must pass | source | reason |\n"
-     << "|---|---|---|---|---|---|---|---|---|---|\n";
+  md << "| check | paper | per sample | mean ± sd (n) | 95 % interval of one sample | holds in | rule | verdict | must pass | source | reason |\n"
+     << "|---|---|---|---|---|---|---|---|---|---|---|\n";
   std::map<Verdict, int> count;
   int failed_must = 0;
   std::ostringstream misses;  // the rows not consistent, with what the decisions study says of them
@@ -109,14 +111,15 @@ int main(int argc, char** argv) {
     json << "],\n     \"n\": " << e.valued << ", \"mean\": " << (e.valued ? number(e.spread.mean) : "null")
          << ", \"sd\": " << (e.valued > 1 ? number(e.spread.sd) : "null") << ", \"prediction_interval\": ["
          << json_number(e.spread.low) << ", " << json_number(e.spread.high) << "], \"holds_in\": " << e.holds
-         << ", \"verdict\": " << json_string(validation::to_string(e.verdict))
+         << ", \"rule\": " << json_string(r.rule) << ", \"verdict\": " << json_string(validation::to_string(e.verdict))
          << ", \"must_pass\": " << (r.must_pass ? "true" : "false") << ", \"source\": " << json_string(r.source)
          << ", \"reason\": " << json_string(r.reason) << "}" << (i + 1 < rows.size() ? "," : "") << "\n";
     const char* mark = e.verdict == Verdict::Consistent ? "✅ consistent" : e.verdict == Verdict::Inconsistent ? "❌ inconsistent" : "— not judged";
     md << "| " << cell(r.name) << " | " << statement(r) << " | " << values << " | "
        << (e.valued ? number(e.spread.mean) + (e.valued > 1 ? " ± " + number(e.spread.sd) : "") + " (" + std::to_string(e.valued) + ")" : "—")
        << " | " << (e.spread.low ? "[" + number(*e.spread.low) + ", " + number(*e.spread.high) + "]" : "—") << " | "
-       << e.holds << " of " << e.valued << " | " << mark << " | " << (r.must_pass ? "yes" : "no") << " | " << cell(r.source)
+       << e.holds << " of " << e.valued << " | " << (r.rule == "majority" ? "holds in > half" : "interval") << " | " << mark
+       << " | " << (r.must_pass ? "yes" : "no") << " | " << cell(r.source)
        << " | " << cell(r.reason) << " |\n";
     if (e.verdict != Verdict::Consistent) {
       const auto c = cause.find(r.name);
@@ -133,9 +136,10 @@ int main(int argc, char** argv) {
   std::ostringstream verdicts;
   verdicts << "Of " << rows.size() << " rows, **" << count[Verdict::Consistent] << " consistent**, **" << count[Verdict::Inconsistent]
            << " inconsistent**, " << count[Verdict::NotJudged] << " not judged, over " << samples.size() << " sample"
-           << (samples.size() == 1 ? "" : "s") << " per density. A row is consistent when the paper's value, widened by the "
-           << "row's reading tolerance, overlaps the 95 % prediction interval of one sample of ours (mean ± t(0.975, n−1) · sd · "
-              "√(1 + 1/n)); with fewer than two samples it is not judged.\n";
+           << (samples.size() == 1 ? "" : "s") << " per density. A value read from the paper (rule *interval*) is consistent "
+           << "when it, widened by the row's reading tolerance, overlaps the 95 % prediction interval of one sample of ours (mean "
+              "± t(0.975, n−1) · sd · √(1 + 1/n)); a trend or an ordering (rule *holds in > half*) is consistent when it holds in "
+              "more than half of our samples. With fewer than two samples a row is not judged.\n";
   if (!misses.str().empty())
     verdicts << "\nThe rows that are not consistent, and what the decisions study found for each (its own ensemble, "
                 "`make decisions`):\n\n| row | verdict | paper | interval of one sample | holds in | cause |\n|---|---|---|---|---|---|\n"

@@ -21,6 +21,9 @@ std::vector<Row> load_references(const std::string& file, const std::string& pro
     r.reason = s.text("reason", std::nullopt, "why this tolerance");
     r.source = s.text("source", std::nullopt, "table, figure or section of the paper");
     r.group = s.text("group", std::string("other"), "the report's group of rows (one tornado chart each)");
+    r.rule = s.choice("rule", {"interval", "majority"}, std::string("interval"),
+                      "interval: the paper's region overlaps the 95 % prediction interval of one sample; "
+                      "majority: the statement holds in more than half of the samples (trends, orderings)");
     r.cycle = static_cast<int>(s.integer("cycle", 0, 1000, 0, "cycle for per-cycle quantities"));
     r.from_cycle = static_cast<int>(s.integer("from_cycle", 0, 1000, 0, "first cycle of a change"));
     r.to_cycle = static_cast<int>(s.integer("to_cycle", 0, 1000, 0, "last cycle of a change"));
@@ -56,7 +59,10 @@ RowResult evaluate(const Row& row, const std::vector<std::pair<std::string, cons
   }
   out.valued = static_cast<int>(values.size());
   out.spread = spread(values);
-  out.verdict = judge(out.spread, out.paper);
+  if (row.rule == "majority")
+    out.verdict = out.valued < 2 ? Verdict::NotJudged : 2 * out.holds > out.valued ? Verdict::Consistent : Verdict::Inconsistent;
+  else
+    out.verdict = judge(out.spread, out.paper);
   return out;
 }
 

@@ -16,6 +16,10 @@ struct Row {
   int cycle = 0, from_cycle = 0, to_cycle = 0, test = 0;
   bool must_pass = false;
   std::string group;  // the report groups rows (and draws one tornado chart per group)
+  // How the row is judged: "interval" (a value read from the paper: consistent when the paper's
+  // region overlaps the 95 % prediction interval of one sample) or "majority" (a trend or an
+  // ordering: consistent when the statement holds in more than half of the samples).
+  std::string rule = "interval";
 };
 
 // Rows of the reference file; with profile "quick" only rows that have a `quick` entry, with its

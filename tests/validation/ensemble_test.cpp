@@ -170,3 +170,39 @@ TEST_CASE("decisions: shifts in baseline standard deviations and the reading tha
   CHECK(d[0].explanation.find("closest: looser") != std::string::npos);
   CHECK_THROWS(validation::decide({row}, readings, {"x"}, "x"));
 }
+
+TEST_CASE("a trend judged by the majority rule: it must hold in more than half of the samples", "[ensemble]") {
+  // εv growth of three samples 0.02, 0.06, 0.30 % against "at least 0.05 %": holds in 2 of 3.
+  std::vector<validation::DensityResults> results(3);
+  const double growth[] = {0.02, 0.06, 0.30};
+  std::vector<std::pair<std::string, const validation::DensityResults*>> samples;
+  for (int i = 0; i < 3; ++i) {
+    validation::TestResult t;
+    t.number = 1;
+    t.series["cycle"] = {1, 5};
+    t.series["cycle_end"] = {1, 1};
+    t.series["volumetric_strain"] = {0.0, growth[i] / 100};
+    results[static_cast<std::size_t>(i)].tests.push_back(t);
+    samples.emplace_back("seed" + std::to_string(i + 1), &results[static_cast<std::size_t>(i)]);
+  }
+  validation::Row row;
+  row.quantity = "ev_growth";
+  row.density = "loose";
+  row.check = "at_least";
+  row.reference = 0.05;
+  row.from_cycle = 1;
+  row.to_cycle = 5;
+  row.rule = "majority";
+  validation::RowResult r = validation::evaluate(row, samples);
+  CHECK(r.valued == 3);
+  CHECK(r.holds == 2);
+  CHECK(r.verdict == Verdict::Consistent);
+  row.reference = 0.10;  // now it holds in 1 of 3: inconsistent, though the interval reaches 0.10
+  r = validation::evaluate(row, samples);
+  CHECK(r.holds == 1);
+  CHECK(r.verdict == Verdict::Inconsistent);
+  row.rule = "interval";
+  CHECK(validation::evaluate(row, samples).verdict == Verdict::Consistent);
+  row.rule = "majority";  // one sample: not judged
+  CHECK(validation::evaluate(row, {samples[0]}).verdict == Verdict::NotJudged);
+}
