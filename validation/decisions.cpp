@@ -69,6 +69,18 @@ std::string explain(const RowDecision& d) {
     for (std::size_t i = 0; i < d.made_consistent_by.size(); ++i) s += (i ? ", " : "") + d.made_consistent_by[i];
     return s;
   }
+  if (d.row.rule == "majority") {  // a trend: which reading makes it hold in the most samples
+    const ReadingEffect* best = nullptr;
+    auto share = [](const RowResult& r) { return r.valued ? static_cast<double>(r.holds) / r.valued : 0.0; };
+    for (const ReadingEffect& e : d.readings)
+      if (e.result.valued > 0 && (!best || share(e.result) > share(best->result))) best = &e;
+    std::string s = "unexplained: no reading makes it hold in more than half of the samples; at the baseline it holds in " +
+                    std::to_string(d.baseline.holds) + " of " + std::to_string(d.baseline.valued);
+    if (best)
+      s += "; most: " + best->reading + " (" + std::to_string(best->result.holds) + " of " + std::to_string(best->result.valued) +
+           (best->shift_sd ? ", mean shifted " + fixed(*best->shift_sd) + " sd" : std::string()) + ")";
+    return s;
+  }
   // Unexplained: say which reading closes most of the gap between our interval and the paper.
   const double base_gap = gap(d.baseline);
   const ReadingEffect* best = nullptr;
