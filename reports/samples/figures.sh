@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Figures 1 and 2 of the paper from the prepared samples (data files are written beside the PNGs).
-#   Fig. 1: grading curve, target (SPEC section 1) and realised in the samples (by mass and by count).
+#   Fig. 1: grading curve, target (SPEC section 1) and realised in the dense sample (by count and by mass).
 #   Fig. 2: (A) the lattice before compression, (B-D) the loose, medium and dense samples, in 3-D.
 # Usage: reports/samples/figures.sh [DEM] [SAMPLES_DIR] [FIG_DIR]
 # SAMPLE: the file name of a sample in SAMPLES_DIR, %s standing for loose/medium/dense (default
@@ -21,19 +21,19 @@ realised() {
     awk '{ d[NR] = $1; m[NR] = $2; total += $2 } END { for (i = 1; i <= NR; i++) { c += m[i]; print d[i], 100 * c / total, 100 * i / NR } }'
 }
 printf '3.0 0\n3.7 50\n4.5 100\n' > "$figs/fig01_grading_target.dat"
-realised "$(sample dense)" > "$figs/fig01_grading_mass_basis.dat"
-number_sample=$here/results/sweep/dense_number.h5
-[ -f "$number_sample" ] && realised "$number_sample" > "$figs/fig01_grading_number_basis.dat"
+rm -f "$figs/fig01_grading_mass_basis.dat" "$figs/fig01_grading_number_basis.dat"   # the names of an earlier reading
+realised "$(sample dense)" > "$figs/fig01_grading_sample.dat"
+basis=$(h5dump -a scene_yaml "$(sample dense)" 2>/dev/null | grep -o 'basis: [a-z]*' | head -1 | cut -d' ' -f2)
+[ "$basis" = mass ] && read_by="mass" || read_by="count"
 gnuplot <<GP
 set terminal pngcairo size 900,650 font ",12"
 set output "$figs/fig01_grading.png"
 set title "Fig. 1  Grain size distribution (d_{min} = 3 mm, d_{50} = 3.7 mm, d_{max} = 4.5 mm)"
 set xlabel "diameter d (mm)"; set ylabel "percent finer (%)"
 set xrange [2.9:4.6]; set yrange [0:105]; set grid; set key left top Left reverse box opaque font ",10"
-plot "$figs/fig01_grading_target.dat" w lp lw 3 pt 7 ps 1.5 lc rgb "black" t "target curve (SPEC: percent finer by mass)", \
-     "$figs/fig01_grading_mass_basis.dat" u 1:2 w l lw 2 lc rgb "#1f77b4" t "realised by mass, 8,000 spheres sampled by mass (default)", \
-     "$figs/fig01_grading_mass_basis.dat" u 1:3 w l lw 2 dt 2 lc rgb "#1f77b4" t "   same sample, percent finer by count"$( [ -f "$figs/fig01_grading_number_basis.dat" ] && printf '%s' ", \\
-     \"$figs/fig01_grading_number_basis.dat\" u 1:3 w l lw 2 lc rgb \"#d62728\" t \"1,000 spheres sampled by count (grading.basis: number), by count\"" )
+plot "$figs/fig01_grading_target.dat" w lp lw 3 pt 7 ps 1.5 lc rgb "black" t "target curve (SPEC, read by $read_by)", \
+     "$figs/fig01_grading_sample.dat" u 1:3 w l lw 2 lc rgb "#d62728" t "dense sample $(basename "$samples"), percent finer by count", \
+     "$figs/fig01_grading_sample.dat" u 1:2 w l lw 2 dt 2 lc rgb "#1f77b4" t "the same sample, percent finer by mass"
 GP
 
 # Fig. 2: the lattice (a one-step run of the preparation scene) and the three samples.
