@@ -488,8 +488,10 @@ class Executor {
         squeue_failing = true;
         continue;
       }
+      // Index order: a sample is judged before its tests, and a test whose sample failed is left
+      // to settle() to block (the cluster may have cancelled its job already: not a failure of its own).
       for (std::size_t i = 0; i < runs_.size(); ++i)
-        if (tracker_.state(i) == RunState::Running && !job_[i].empty()) look_at(i);
+        if (tracker_.state(i) == RunState::Running && !job_[i].empty() && !sample_failed(i)) look_at(i);
       workers = std::max(workers, tracker_.running() - queued_count());
       tracker_.set_workers(workers);  // as many at once as the cluster has given us so far
       std::vector<std::string> ids;
@@ -502,6 +504,13 @@ class Executor {
       cancel(ids);  // their sample failed: they would never start
       submit_ready(false);
     }
+  }
+
+  bool sample_failed(std::size_t i) const {
+    const int dep = runs_[i].depends_on;
+    if (dep < 0) return false;
+    const RunState s = tracker_.state(static_cast<std::size_t>(dep));
+    return s == RunState::Failed || s == RunState::Blocked;
   }
 
   int queued_count() const {
