@@ -61,7 +61,8 @@ kill-test: build
 # The pipeline's SLURM executor against a real one-node SLURM that tests/slurm/start_cluster.sh
 # starts on this machine (installing munge and SLURM's daemons if missing) and stops afterwards:
 # results bit for bit the local executor's, a cancelled job resumed from its checkpoint, jobs
-# adopted by a restarted pipeline, Ctrl-C cancelling them (about 35 s; also part of make test).
+# adopted by a restarted pipeline, Ctrl-C cancelling them, a requeued job resumed (about 50 s; also
+# part of make test, run alone).
 slurm-test: build
 	tests/slurm/slurm_test.sh $(BUILD)/bin $(BUILD)/slurm-test
 

@@ -8,7 +8,8 @@
 #  4. a SLURM pipeline killed with -9 right after submitting: the next one adopts its jobs, submits
 #     nothing twice and finishes;
 #  5. a SLURM pipeline sent SIGINT (Ctrl-C) mid-run: it cancels its jobs and exits 130;
-#  then every result of 3 and 4 equals the reference bit for bit (h5diff of /timeseries /legs
+#  6. a job requeued mid-run (scontrol requeue): the pipeline follows it and it resumes;
+#  then every result of 3, 4 and 6 equals the reference bit for bit (h5diff of /timeseries /legs
 #  /state /particles).
 #
 #   tests/slurm/slurm_test.sh BUILD_BIN WORKDIR
@@ -93,11 +94,34 @@ grep -q "cancelling" "$work/interrupted.log" || fail "no cancelling message"
 ls "$stop"/*.job > /dev/null 2>&1 && fail "job records left behind after Ctrl-C"
 echo "5. Ctrl-C: pipeline exited $rc, $(grep -o 'cancelling [0-9]* jobs\?' "$work/interrupted.log"), $left left in the queue, after $(elapsed)"
 
+# 6. a job requeued mid-run (as after a node failure or preemption): it starts again and resumes
+requeue=$work/requeued
+"${run[@]}" --out "$requeue" > "$work/requeued.log" 2>&1 &
+pid=$!
+# Requeued once the pipeline has seen it running and it has written a checkpoint.
+while kill -0 "$pid" 2> /dev/null &&
+  ! { grep -q "running loose_prepare" "$work/requeued.log" && [ -f "$requeue/loose_prepare.h5.checkpoint" ]; }; do
+  sleep 0.05
+done
+job=$(awk -F'"' '/job_id/ {print $2}' "$requeue/loose_prepare.h5.job" 2> /dev/null)
+[ -n "$job" ] && scontrol requeue "$job"
+# SLURM holds a requeued job 2 min before it may start again; the test lets it start at once, which
+# it can once the job is back to PENDING (reason BeginTime).
+for _ in $(seq 200); do
+  [ "$(squeue --noheader --jobs="$job" --format='%T %r' 2> /dev/null)" = "PENDING BeginTime" ] &&
+    { scontrol update JobId="$job" StartTime=now; break; }
+  sleep 0.05
+done
+wait "$pid" || fail "the pipeline whose job was requeued failed: $(tail -5 "$work/requeued.log")"
+grep -q "requeued loose_prepare (job $job" "$work/requeued.log" || fail "the requeue of job $job was not reported"
+grep -q resuming "$requeue/logs/loose_prepare.log" || fail "the requeued loose_prepare did not resume from its checkpoint"
+echo "6. job $job (loose_prepare) requeued: $(grep -o 'resuming.*step [0-9]*' "$requeue/logs/loose_prepare.log" | sed 's/from .* at/at/'), after $(elapsed)"
+
 # bit for bit
 compared=0
 for ref in "$work"/local/*.h5; do
   name=$(basename "$ref")
-  for dir in "$out" "$adopt"; do
+  for dir in "$out" "$adopt" "$requeue"; do
     for group in /timeseries /legs /state /particles; do
       h5diff -r "$ref" "$dir/$name" "$group" > "$work/diff.txt" 2>&1 ||
         { fail "$dir/$name $group differs from the local executor's:"; head -5 "$work/diff.txt"; }
@@ -105,6 +129,6 @@ for ref in "$work"/local/*.h5; do
     compared=$((compared + 1))
   done
 done
-[ "$compared" = 8 ] || fail "compared $compared results, not 8"
+[ "$compared" = 12 ] || fail "compared $compared results, not 12"
 [ "$status" = 0 ] && echo "slurm test: passed in $(elapsed): $compared results identical bit for bit to the local executor's"
 exit $status
