@@ -400,7 +400,7 @@ class Executor {
       for (const std::string& a : sbatch_command(longest, options_[i], "")) argv.push_back(a);
       const CommandResult r = run_command(argv, job_script(runs_[i], dem_, options_[i].cpus_per_run));
       if (r.status != 0)
-        throw Error("sbatch refuses the jobs of " + runs_[i].name + " (its study's slurm: options; nothing was submitted): " +
+        throw Error("sbatch --test-only refuses the job of " + runs_[i].name + " with its study's slurm: options (nothing was submitted): " +
                     trimmed(r.err.empty() ? r.out : r.err));
     }
   }
