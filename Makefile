@@ -9,8 +9,9 @@ SAMPLE   ?= seed1                       # the sample whose runs the single-run f
 CONVERGENCE ?= results/convergence/paper
 STABILITY   ?= results/stability/paper
 DECISIONS   ?= results/decisions/paper
+EXECUTOR    ?=                          # local or slurm (pipeline --executor); empty: the study files' executor key, else local
 
-.PHONY: all deps build tools test kill-test sanitize fuzz bench quick study report decisions decisions-report samples samples-study cyclic-tests clean
+.PHONY: all deps build tools test kill-test slurm-test sanitize fuzz bench quick study report decisions decisions-report samples samples-study cyclic-tests clean
 
 # Everything: install, build the tools, run the full study (an ensemble of 5 samples per density,
 # reusing finished runs), validate it, draw the figures and write reports/index.md (the tests are
@@ -57,6 +58,14 @@ kill-test: build
 	tests/kill/kill_test.sh $(BUILD)/bin/dem $(KILLS) $(BUILD)/kill-test/run-long
 	tests/kill/study_kill_test.sh $(BUILD)/bin 5 $(BUILD)/kill-test/study-long
 
+# The pipeline's SLURM executor against a real one-node SLURM that tests/slurm/start_cluster.sh
+# starts on this machine (installing munge and SLURM's daemons if missing) and stops afterwards:
+# results bit for bit the local executor's, a cancelled job resumed from its checkpoint, jobs
+# adopted by a restarted pipeline, Ctrl-C cancelling them, a requeued job resumed (about 50 s; also
+# part of make test, run alone).
+slurm-test: build
+	tests/slurm/slurm_test.sh $(BUILD)/bin $(BUILD)/slurm-test
+
 # The input readers (scene, study, CSV, HDF5 state, checkpoints) and the rest of the unit tests that read input,
 # built with AddressSanitizer and UndefinedBehaviorSanitizer; any finding fails (CI runs this).
 sanitize: deps
@@ -98,7 +107,7 @@ bench: build
 # share the cores (one study's runs fill them while another's last runs finish).
 study: tools
 	$(BUILD)/bin/pipeline pipeline/studies/paper.yaml pipeline/studies/convergence.yaml \
-	  pipeline/studies/stability.yaml --profile paper -j $(JOBS)
+	  pipeline/studies/stability.yaml --profile paper -j $(JOBS) $(if $(strip $(EXECUTOR)),--executor $(strip $(EXECUTOR)))
 
 # The same with the quick profile (1,000 spheres, at most 2 cycles per repeat block), validated
 # and drawn into build/quick-report (reports/ is kept for the full study).
@@ -127,7 +136,7 @@ report: tools
 # The paper's open choices (SPEC section 7): each reading one at a time from the baseline, 3
 # samples of 1,000 spheres (pipeline/studies/decisions.yaml), then the report's section on them.
 decisions: tools
-	$(BUILD)/bin/pipeline pipeline/studies/decisions.yaml --profile paper -j $(JOBS)
+	$(BUILD)/bin/pipeline pipeline/studies/decisions.yaml --profile paper -j $(JOBS) $(if $(strip $(EXECUTOR)),--executor $(strip $(EXECUTOR)))
 	$(MAKE) --no-print-directory report
 
 # The decisions section from the decisions study's results (a study not run yet is said so).

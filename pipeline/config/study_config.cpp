@@ -88,7 +88,66 @@ std::vector<std::int64_t> read_seeds(dem::Section& s, const std::vector<std::int
   return out;
 }
 
+// Options of sbatch that the pipeline sets itself for each job (or that would change what a job
+// is): refused in slurm.sbatch_args, naming the study key that sets them instead.
+const std::vector<std::pair<std::vector<std::string>, std::string>>& pipeline_sbatch_options() {
+  static const std::vector<std::pair<std::vector<std::string>, std::string>> options = {
+      {{"--partition", "-p"}, "slurm.partition"},
+      {{"--account", "-A"}, "slurm.account"},
+      {{"--time", "-t"}, "slurm.time_factor, time_floor and time_ceiling"},
+      {{"--cpus-per-task", "-c"}, "slurm.cpus_per_run"},
+      {{"--dependency", "-d", "--kill-on-invalid-dep"}, "the pipeline (a test waits for its sample's job)"},
+      {{"--job-name", "-J", "--output", "-o", "--error", "-e", "--open-mode", "--chdir", "-D", "--parsable"},
+       "the pipeline (job names, logs and folders are the local executor's)"},
+      {{"--array", "-a", "--wrap", "--test-only", "--ntasks", "-n", "--nodes", "-N"}, "the pipeline (one run per job, one task)"},
+  };
+  return options;
+}
+
+SlurmOptions read_slurm(dem::Section& root) {
+  SlurmOptions o;
+  dem::Section s = root.optional_child("slurm", "options of the SLURM executor (pipeline --executor slurm)");
+  o.partition = s.text("partition", "", "sbatch --partition (default: the cluster's)");
+  o.account = s.text("account", "", "sbatch --account (default: the user's)");
+  o.cpus_per_run = static_cast<int>(s.integer("cpus_per_run", 1, 256, 1, "sbatch --cpus-per-task; the run's dem --threads"));
+  o.throughput = s.number("throughput", "particle-steps/s", {0, 1e12, true}, 2.5e7,
+                          "speed of one run, for the estimated run time behind each job's time limit");
+  o.time_factor = s.number("time_factor", "", {1, 1000}, 3, "time limit = this x the estimated run time");
+  o.time_floor = s.number("time_floor", "min", {1, 525600}, 10, "the least time limit of a job");
+  o.time_ceiling = s.number("time_ceiling", "min", {0, 525600}, 0,
+                            "the largest time limit of a job (0: none); a run cut short resumes from its checkpoint");
+  if (o.time_ceiling > 0 && o.time_ceiling < o.time_floor)
+    s.fail("time_ceiling", "is below time_floor (" + std::to_string(o.time_floor) + " min)");
+  o.poll_interval = s.number("poll_interval", "s", {0.2, 3600}, 10, "seconds between two looks at the queue (squeue)");
+  if (s.has("sbatch_args")) {
+    const YAML::Node n = s.raw("sbatch_args", "a list of sbatch options, e.g. [--qos=normal, --mem=4G]",
+                               "further sbatch options of every job");
+    if (!n.IsSequence()) s.fail("sbatch_args", "must be a list of sbatch options, e.g. [--qos=normal, --mem=4G]");
+    for (const YAML::Node& a : n) {
+      const std::string arg = a.IsScalar() ? a.Scalar() : "";
+      if (arg.size() < 2 || arg[0] != '-')
+        s.fail("sbatch_args", "'" + arg + "' is not an sbatch option (write each as one item, e.g. --mem=4G)");
+      const std::string option = arg.rfind("--", 0) == 0 ? arg.substr(0, arg.find('=')) : arg.substr(0, 2);
+      for (const auto& [names, owner] : pipeline_sbatch_options())
+        if (std::find(names.begin(), names.end(), option) != names.end())
+          s.fail("sbatch_args", "'" + arg + "' is set by " + owner +
+                                    "; allowed: other sbatch options (--qos, --mem, --constraint, --gres, ...)");
+      o.sbatch_args.push_back(arg);
+    }
+  } else {
+    s.optional_child("sbatch_args", "further sbatch options of every job");  // declared for did-you-mean
+  }
+  s.finish();
+  return o;
+}
+
 }  // namespace
+
+bool SlurmOptions::operator==(const SlurmOptions& o) const {
+  return partition == o.partition && account == o.account && cpus_per_run == o.cpus_per_run &&
+         throughput == o.throughput && time_factor == o.time_factor && time_floor == o.time_floor &&
+         time_ceiling == o.time_ceiling && sbatch_args == o.sbatch_args && poll_interval == o.poll_interval;
+}
 
 std::string describe(const Variant& v) {
   std::string out;
@@ -225,6 +284,12 @@ Study load_study(const std::string& file) {
       st.variants.push_back(var);
     }
   }
+  // Where the runs are computed: not part of any input hash (the plan never reads these).
+  if (root.has("executor"))
+    st.executor = root.choice("executor", {"local", "slurm"}, std::nullopt, "where the runs are computed (pipeline --executor wins)");
+  else
+    root.choice("executor", {"local", "slurm"}, "local", "where the runs are computed (pipeline --executor wins)");
+  st.slurm = read_slurm(root);
   root.finish();
   return st;
 }

@@ -44,6 +44,24 @@ struct Profile {
   std::vector<std::int64_t> seeds;  // the samples (seeds of the diameter sampler); empty: the template's one sample
 };
 
+// How the SLURM executor submits this study's runs (study key `slurm:`; pipeline/README.md). None of
+// it is part of any input hash: where a run is computed does not change its result.
+struct SlurmOptions {
+  std::string partition;    // sbatch --partition (empty: the cluster's default)
+  std::string account;      // sbatch --account (empty: the user's default)
+  int cpus_per_run = 1;     // sbatch --cpus-per-task, and the run's dem --threads
+  // Each job's time limit: time_factor x the run's estimated particle-steps / throughput, at least
+  // time_floor minutes and, if time_ceiling > 0, at most time_ceiling minutes (a run cut short by
+  // its limit resumes from its checkpoint when the pipeline is started again).
+  double throughput = 2.5e7;  // particle-steps per second of one run
+  double time_factor = 3;
+  double time_floor = 10;     // minutes
+  double time_ceiling = 0;    // minutes; 0: none
+  std::vector<std::string> sbatch_args;  // further sbatch options, e.g. --qos=normal, --mem=4G
+  double poll_interval = 10;  // seconds between two looks at the queue (squeue)
+  bool operator==(const SlurmOptions& o) const;
+};
+
 struct Study {
   std::string file;         // the study YAML
   std::string name;
@@ -53,6 +71,8 @@ struct Study {
   std::vector<TestCase> tests;      // may be empty when the study has variants (preparations only)
   std::vector<Profile> profiles;
   std::vector<Variant> variants;    // empty: the paper study's form, runs named <density>_<test>
+  std::optional<std::string> executor;  // "local" or "slurm" if the study names one (pipeline --executor wins)
+  SlurmOptions slurm;
   const Profile& profile(const std::string& name) const;  // throws naming the known profiles
 };
 

@@ -5,6 +5,7 @@
 // reported with its log and blocks only the runs that need it. A run marked may_fail that
 // stops with a message (refused input, exit 2; or a failed run, exit 1) is an outcome: recorded in
 // <result>.outcome with its input hash, reused like a result, and not a failure of the study.
+// What the SLURM executor (exec/slurm.hpp) shares with it is in exec/tracker.hpp.
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@ struct Outcome {
   int stopped = 0;  // may_fail runs that stopped with a message this time (reused ones count as reused)
   int skipped = 0;  // may_fail runs not run because the run they need stopped
   int copied = 0;   // runs whose result is a copy of another's (PlannedRun::copy_of)
+  bool interrupted = false;  // SIGINT/SIGTERM stopped the SLURM executor (it cancelled its jobs)
   double wall_time_s = 0;
 };
 

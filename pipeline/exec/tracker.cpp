@@ -1,0 +1,223 @@
+#include "exec/tracker.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "io/hdf5.hpp"
+#include "io/xdmf.hpp"
+
+namespace pipeline {
+
+namespace {
+
+// Why a run stopped: the failed status of its .partial result (a run that started), else the last
+// "error: " line of its log (input refused before any step).
+std::string stop_message(const PlannedRun& r) {
+  try {
+    dem::h5::Handle f = dem::h5::open_file_read(r.result + ".partial");
+    const std::string status = dem::h5::get_string_attribute(f, "status");
+    if (status.rfind("failed: ", 0) == 0) return status.substr(8);
+  } catch (const std::exception&) {
+  }
+  std::ifstream log(r.log);
+  std::string line, last;
+  while (std::getline(log, line))
+    if (line.rfind("error: ", 0) == 0) last = line.substr(7);
+  return last;
+}
+
+// The result of `from` as the result of `to`, which computes the same (PlannedRun::copy_of): the
+// file copied with `to`'s input hash and scene, renamed into place complete, with its XDMF.
+void copy_result(const PlannedRun& from, const PlannedRun& to) {
+  const std::string partial = to.result + ".partial";
+  std::filesystem::copy_file(from.result, partial, std::filesystem::copy_options::overwrite_existing);
+  {
+    dem::h5::Handle f = dem::h5::open_file_write(partial);
+    dem::h5::set_attribute(f, "input_hash", to.hash);
+    dem::h5::set_attribute(f, "scene_file", to.scene_file);
+    dem::h5::set_attribute(f, "scene_yaml", to.scene_text);
+    dem::h5::set_attribute(f, "copied_from", from.result);
+  }
+  std::filesystem::rename(partial, to.result);
+  dem::write_xdmf(to.result);
+  std::ofstream(to.log) << "copy of " << from.result << " (" << from.name << "): the same scene but for its name\n";
+}
+
+std::string minutes(double s) {
+  char buf[32];
+  if (s < 90) std::snprintf(buf, sizeof buf, "%.0f s", s);
+  else std::snprintf(buf, sizeof buf, "%.1f min", s / 60);
+  return buf;
+}
+
+}  // namespace
+
+std::vector<std::string> dem_command(const std::string& dem, const PlannedRun& r, int threads) {
+  return {dem, "run", r.scene_file, "--out", r.result, "--quiet", "--input-hash", r.hash, "--threads", std::to_string(threads)};
+}
+
+Tracker::Tracker(const std::vector<PlannedRun>& runs)
+    : runs_(runs), state_(runs.size(), RunState::Waiting), started_(runs.size()), queued_(runs.size(), false), order_(runs.size()) {
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const std::string problem = reuse_problem(runs[i].result, runs[i].hash);
+    if (problem.empty()) {
+      state_[i] = RunState::Done;
+      ++out_.reused;
+    } else if (runs[i].may_fail && recorded_stop(runs[i].result, runs[i].hash)) {
+      state_[i] = RunState::Failed;  // stopped before with these inputs: its outcome stands
+      ++out_.reused;
+    } else if (problem != "not run yet") {  // say why an existing result is not reused (a missing one is simply run)
+      std::printf("[pipeline] %s: the existing %s is %s: run again\n", runs[i].name.c_str(), runs[i].result.c_str(),
+                  problem.c_str());
+    }
+  }
+  std::vector<double> priority(runs.size());
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    priority[i] += runs[i].cost;
+    if (runs[i].depends_on >= 0) priority[static_cast<std::size_t>(runs[i].depends_on)] += runs[i].cost;
+  }
+  for (std::size_t i = 0; i < order_.size(); ++i) order_[i] = i;
+  std::stable_sort(order_.begin(), order_.end(), [&](std::size_t a, std::size_t b) { return priority[a] > priority[b]; });
+}
+
+void Tracker::announce(const std::string& how) const {
+  std::printf("[pipeline] %zu runs: %d reused, %zu to run, %s\n", runs_.size(), out_.reused,
+              runs_.size() - static_cast<std::size_t>(out_.reused), how.c_str());
+  std::fflush(stdout);
+}
+
+std::vector<std::size_t> Tracker::settle() {
+  std::vector<std::size_t> blocked;
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (std::size_t i : order_) {
+      // A queued SLURM job waits for its dependency's job like a waiting run for its dependency.
+      const bool waiting = state_[i] == RunState::Waiting || (state_[i] == RunState::Running && queued_[i]);
+      if (!waiting || runs_[i].depends_on < 0) continue;
+      const auto dep = static_cast<std::size_t>(runs_[i].depends_on);
+      if (state_[dep] == RunState::Failed || state_[dep] == RunState::Blocked) {
+        state_[i] = RunState::Blocked;
+        queued_[i] = false;
+        ++(runs_[i].may_fail ? out_.skipped : out_.blocked);
+        std::printf("[pipeline] %s %s: %s did not finish\n", runs_[i].name.c_str(),
+                    runs_[i].may_fail ? "skipped" : "blocked", runs_[dep].name.c_str());
+        blocked.push_back(i);
+        changed = true;
+      } else if (state_[i] == RunState::Waiting && runs_[i].copy_of >= 0 && state_[dep] == RunState::Done) {
+        const PlannedRun& original = runs_[static_cast<std::size_t>(runs_[i].copy_of)];
+        try {
+          copy_result(original, runs_[i]);
+          state_[i] = RunState::Done;
+          ++out_.copied;
+          report("copied " + original.name + " as " + runs_[i].name);
+        } catch (const std::exception& e) {
+          state_[i] = RunState::Failed;
+          ++out_.failed;
+          report("FAILED " + runs_[i].name + " (copying " + original.result + ": " + e.what() + ")");
+        }
+        changed = true;
+      }
+    }
+  }
+  std::fflush(stdout);
+  return blocked;
+}
+
+bool Tracker::ready(std::size_t i) const {
+  if (state_[i] != RunState::Waiting || runs_[i].copy_of >= 0) return false;
+  return runs_[i].depends_on < 0 || state_[static_cast<std::size_t>(runs_[i].depends_on)] == RunState::Done;
+}
+
+void Tracker::adopt(std::size_t i) {
+  state_[i] = RunState::Running;
+  started_[i] = clock::now();
+}
+
+void Tracker::set_queued(std::size_t i, bool queued) {
+  if (queued_[i] && !queued) started_[i] = clock::now();
+  queued_[i] = queued;
+}
+
+void Tracker::start(std::size_t i, const std::string& what, bool queued) {
+  std::error_code ec;
+  std::filesystem::remove(outcome_file(runs_[i].result), ec);  // a stale outcome must not outlive a new run
+  adopt(i);
+  queued_[i] = queued;
+  report(what.empty() ? "started " + runs_[i].name : what);
+}
+
+void Tracker::end(std::size_t i, const Ending& e) {
+  const PlannedRun& r = runs_[i];
+  queued_[i] = false;
+  const double wall = std::chrono::duration<double>(clock::now() - started_[i]).count();
+  if (e.exited && e.code == 0 && up_to_date(r.result, r.hash)) {
+    state_[i] = RunState::Done;
+    ++out_.ran;
+    learnt_[kind(i)].cost += r.cost;
+    learnt_[kind(i)].wall += wall;
+    report("finished " + r.name + " in " + minutes(wall));
+  } else if (r.may_fail && e.exited && (e.code == 1 || e.code == 2)) {
+    // An expected kind of end: the engine refused the input or stopped the run, with a message.
+    state_[i] = RunState::Failed;
+    ++out_.stopped;
+    const Stop stop{r.hash, e.code, stop_message(r)};
+    write_stop(r.result, stop);
+    report("stopped " + r.name + " (allowed: " + stop.message + ")");
+  } else {
+    state_[i] = RunState::Failed;
+    ++out_.failed;
+    report("FAILED " + r.name + " (" + (e.note.empty() ? "" : e.note + "; ") + "see " + r.log + ")");
+  }
+}
+
+int Tracker::running() const { return static_cast<int>(std::count(state_.begin(), state_.end(), RunState::Running)); }
+
+bool Tracker::busy() const {
+  return std::any_of(state_.begin(), state_.end(),
+                     [](RunState s) { return s == RunState::Waiting || s == RunState::Running; });
+}
+
+Outcome Tracker::outcome() const {
+  Outcome o = out_;
+  o.wall_time_s = std::chrono::duration<double>(clock::now() - start_).count();
+  return o;
+}
+
+// Each run's seconds are its estimated particle-steps over the throughput learnt from the finished
+// runs of its kind (preparations, whose hold has no known length, and tests are learnt apart).
+// Before any run of a kind has finished, the other kind's throughput is used, or 2.5e7
+// particle-steps/s (this 2-core machine's paper study, two runs at a time).
+double Tracker::rate(int k) const {
+  if (learnt_[k].wall > 0) return learnt_[k].cost / learnt_[k].wall;
+  if (learnt_[1 - k].wall > 0) return learnt_[1 - k].cost / learnt_[1 - k].wall;
+  return 2.5e7;
+}
+
+// The work left, in seconds of one worker, shared by the workers that can still be busy; a
+// running run counts only what is left of it.
+double Tracker::eta_seconds() const {
+  double seconds = 0;
+  int left = 0;
+  const auto now = clock::now();
+  for (std::size_t i = 0; i < runs_.size(); ++i) {
+    if (runs_[i].copy_of >= 0 || (state_[i] != RunState::Waiting && state_[i] != RunState::Running)) continue;
+    double t = runs_[i].cost / rate(kind(i));
+    if (state_[i] == RunState::Running && !queued_[i]) t = std::max(0.0, t - std::chrono::duration<double>(now - started_[i]).count());
+    seconds += t;
+    ++left;
+  }
+  return seconds / std::max(1, std::min(workers_, left));
+}
+
+void Tracker::report(const std::string& what) const {
+  const double elapsed = std::chrono::duration<double>(clock::now() - start_).count();
+  const int queued = static_cast<int>(std::count(queued_.begin(), queued_.end(), true));
+  std::printf("[pipeline %s] %s; %d ran, %d reused, %d failed, %d running", minutes(elapsed).c_str(), what.c_str(),
+              out_.ran, out_.reused, out_.failed, running() - queued);
+  if (queued > 0) std::printf(", %d queued", queued);
+  std::printf("; ETA %s\n", minutes(eta_seconds()).c_str());
+  std::fflush(stdout);
+}
+
+}  // namespace pipeline
