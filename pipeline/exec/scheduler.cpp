@@ -110,8 +110,9 @@ pid_t spawn(const std::string& dem, const PlannedRun& r, int threads) {
       dup2(fd, STDERR_FILENO);
       close(fd);
     }
+    // --force: a result of this run's earlier inputs is the pipeline's own, replaced by design.
     std::vector<std::string> args = {dem, "run", r.scene_file, "--out", r.result, "--quiet", "--input-hash", r.hash,
-                                     "--threads", std::to_string(threads)};
+                                     "--threads", std::to_string(threads), "--force"};
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
