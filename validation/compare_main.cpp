@@ -20,7 +20,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "atomic_file.hpp"
+#include "io/atomic_file.hpp"
 #include "compare.hpp"
 #include "decisions.hpp"
 #include "format.hpp"
@@ -275,8 +275,8 @@ int decisions(const std::vector<ManifestLine>& manifest, const std::vector<std::
   }
   json << "  ],\n  \"missing_results\": " << missing.size() << "\n}\n";
   try {
-    validation::write_file_atomically((fs::path(out) / "table.md").string(), md.str());
-    validation::write_file_atomically((fs::path(out) / "decisions.json").string(), json.str());
+    dem::write_file_atomically((fs::path(out) / "table.md").string(), md.str());
+    dem::write_file_atomically((fs::path(out) / "decisions.json").string(), json.str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 1;

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "atomic_file.hpp"
+#include "io/atomic_file.hpp"
 #include "ensemble.hpp"
 #include "quantities.hpp"
 #include "results.hpp"
@@ -64,7 +64,7 @@ int main(int argc, char** argv) {
             text << c << '\t' << s.mean << '\t' << s.sd << '\t' << s.n << '\t' << *std::min_element(values.begin(), values.end())
                  << '\t' << *std::max_element(values.begin(), values.end()) << '\n';
           }
-          validation::write_file_atomically(
+          dem::write_file_atomically(
               (fs::path(out) / (std::string(q.name) + "_" + density + "_test" + std::to_string(test) + ".dat")).string(), text.str());
           ++files;
         }

@@ -17,7 +17,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "atomic_file.hpp"
+#include "io/atomic_file.hpp"
 #include "format.hpp"
 #include "rows.hpp"
 
@@ -145,9 +145,9 @@ int main(int argc, char** argv) {
                 "`make decisions`):\n\n| row | verdict | paper | interval of one sample | holds in | cause |\n|---|---|---|---|---|---|\n"
              << misses.str();
   try {
-    validation::write_file_atomically((fs::path(out) / "verdicts.md").string(), verdicts.str());
-    validation::write_file_atomically((fs::path(out) / "validation.json").string(), json.str());
-    validation::write_file_atomically((fs::path(out) / "validation.md").string(), md.str());
+    dem::write_file_atomically((fs::path(out) / "verdicts.md").string(), verdicts.str());
+    dem::write_file_atomically((fs::path(out) / "validation.json").string(), json.str());
+    dem::write_file_atomically((fs::path(out) / "validation.md").string(), md.str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 1;

@@ -7,6 +7,7 @@
 #include <sys/file.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -21,7 +22,9 @@
 #include "config/yaml_section.hpp"
 #include "analysis/time_series.hpp"
 #include "io/hdf5.hpp"
+#include "io/result_writer.hpp"  // describe_failure
 #include "io/state_io.hpp"
+#include "run/output_path.hpp"
 #include "run/run_scene.hpp"  // leg_columns
 #include "source_hash.hpp"
 #include "version.hpp"
@@ -31,7 +34,7 @@ namespace {
 const char* usage =
     "usage:\n"
     "  dem run SCENE.yaml --out RESULT.h5 [--set KEY=VALUE ...] [--threads N] [--quiet]\n"
-    "                                   [--resume | --no-resume]\n"
+    "                                   [--resume | --no-resume] [--force]\n"
     "                                                 run a scene and write its result (HDF5); --set\n"
     "                                                 overrides a key, e.g. --set particles.lattice.seed=2;\n"
     "                                                 --threads: threads inside the run (default 1; the\n"
@@ -40,7 +43,10 @@ const char* usage =
     "                                                 --resume: continue from RESULT.h5.checkpoint, which\n"
     "                                                 must exist and match (exit 2 otherwise); --no-resume:\n"
     "                                                 start over; default: resume if a matching checkpoint\n"
-    "                                                 exists (output.checkpoint_interval/_wall_time)\n"
+    "                                                 exists (output.checkpoint_interval/_wall_time);\n"
+    "                                                 --force: replace an existing RESULT.h5 that is not a\n"
+    "                                                 complete result of this scene (scene text and input\n"
+    "                                                 hash); without it such a file is refused (exit 2)\n"
     "  dem keys                                       list every scene key with unit, range, default\n"
     "  dem table RESULT.h5 [--legs] [COLUMN ...]      print time-series (or per-leg) columns as\n"
     "                                                 tab-separated text\n"
@@ -50,8 +56,11 @@ const char* usage =
     "  dem --version | --source-hash | --help\n"
     "\n"
     "The result is written to RESULT.h5.partial while the run goes on and renamed to RESULT.h5\n"
-    "(status 'complete') only when it finishes; RESULT.h5.checkpoint holds the newest checkpoint\n"
-    "until then. Exit status: 0 success, 1 run failed, 2 bad input.\n";
+    "(status 'complete') only when it finishes and is on the disk; RESULT.h5.checkpoint holds the\n"
+    "newest checkpoint until then. --out may not end in .partial, .checkpoint, .lock, .outcome,\n"
+    ".tmp or .xdmf, nor name a non-regular file (device, folder, FIFO, link) or a file the scene\n"
+    "reads. Exit status: 0 success, 1 run failed (the reason on stderr and in the status of\n"
+    "RESULT.h5.partial), 2 bad input (nothing written).\n";
 
 int run(int argc, char** argv) {
   std::string scene_file, out;
@@ -59,6 +68,7 @@ int run(int argc, char** argv) {
   std::vector<std::pair<std::string, std::string>> overrides;
   std::string input_hash;
   int threads = 1;
+  bool force = false;
   dem::Resume resume = dem::Resume::IfValid;
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
@@ -66,6 +76,7 @@ int run(int argc, char** argv) {
     else if (a == "--quiet") quiet = true;
     else if (a == "--resume") resume = dem::Resume::Always;
     else if (a == "--no-resume") resume = dem::Resume::Never;
+    else if (a == "--force") force = true;
     else if (a == "--input-hash" && i + 1 < argc) input_hash = argv[++i];
     else if (a == "--threads" && i + 1 < argc) {
       const std::string t = argv[++i];
@@ -91,34 +102,44 @@ int run(int argc, char** argv) {
     std::fprintf(stderr, "dem run: need a scene file and --out RESULT.h5\n%s", usage);
     return 2;
   }
-  {  // where the result goes must be a file name in an existing, writable folder
-    namespace fs = std::filesystem;
-    const fs::path folder = fs::path(out).parent_path().empty() ? fs::path(".") : fs::path(out).parent_path();
-    const char* problem = fs::is_directory(out)            ? "is a directory, not a file name"
-                          : !fs::is_directory(folder)      ? "is in a folder that does not exist"
-                          : access(folder.c_str(), W_OK) != 0 ? "is in a folder this user cannot write to"
-                                                              : nullptr;
-    if (problem) {
-      std::fprintf(stderr, "error: --out %s %s; nothing was run\n", out.c_str(), problem);
-      return 2;
-    }
+  // Where the result goes (run/output_path.hpp): its name and folder first, then what the scene
+  // reads, then, under the lock, what is there now.
+  const auto refused = [&](const std::exception& e) {
+    std::fprintf(stderr, "error: %s; nothing was run\n", e.what());
+    return 2;
+  };
+  try {
+    dem::check_output_name(out);
+  } catch (const dem::OutputPathError& e) {
+    return refused(e);
   }
   dem::SceneConfig scene;
   try {
     scene = dem::load_scene(scene_file, overrides);
+    dem::check_output_not_input(out, scene);
+  } catch (const dem::OutputPathError& e) {
+    return refused(e);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;
   }
   // One writer per result: a second `dem run` to the same --out refuses instead of writing into
-  // the same partial file and checkpoint. The lock goes with the process, however it ends.
+  // the same partial file and checkpoint. The lock goes with the process, however it ends; names
+  // another result's files use (.partial, ...) are refused above, so it covers the whole family.
   const std::string lock_path = out + ".lock";
-  const int lock = open(lock_path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  const int lock = open(lock_path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
+  const int lock_errno = errno;
   if (lock < 0 || flock(lock, LOCK_EX | LOCK_NB) != 0) {
     std::fprintf(stderr, "error: --out %s: %s; nothing was run\n", out.c_str(),
-                 lock < 0 ? ("cannot create the lock file " + lock_path).c_str()
+                 lock < 0 ? ("cannot create the lock file " + lock_path + ": " + std::strerror(lock_errno)).c_str()
                           : ("another dem run is writing this result (it holds " + lock_path + ")").c_str());
     return 2;
+  }
+  try {
+    dem::check_output_replaceable(out, scene, input_hash, force);
+  } catch (const dem::OutputPathError& e) {
+    unlink(lock_path.c_str());  // held: nothing of this run is left
+    return refused(e);
   }
   omp_set_num_threads(threads);
   try {
@@ -132,7 +153,7 @@ int run(int argc, char** argv) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "error: %s: %s\n", scene_file.c_str(), e.what());
+    std::fprintf(stderr, "error: %s: %s\n", scene_file.c_str(), dem::describe_failure(e).c_str());
     if (std::filesystem::exists(out + ".partial")) std::fprintf(stderr, "(partial result kept in %s.partial)\n", out.c_str());
     return 1;
   }
@@ -217,6 +238,10 @@ int summary(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // HDF5 must not close files itself at exit: one whose close failed (a full disk) would crash
+  // the library there (HDF5 1.10), after the error was reported. Every file dem opens is closed
+  // by its handle before main returns.
+  H5dont_atexit();
   if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) {
     std::fputs(usage, argc < 2 ? stderr : stdout);
     return argc < 2 ? 2 : 0;

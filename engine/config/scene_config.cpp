@@ -13,12 +13,6 @@ namespace {
 
 constexpr double inf = std::numeric_limits<double>::infinity();
 
-std::string resolve_path(const std::string& scene_file, const std::string& p) {
-  namespace fs = std::filesystem;
-  if (fs::path(p).is_absolute()) return p;
-  return (fs::path(scene_file).parent_path() / p).lexically_normal().string();
-}
-
 Vec3 vec3(const std::vector<double>& v) { return Vec3(v[0], v[1], v[2]); }
 
 ParticleSource read_particles(Section s) {
@@ -50,11 +44,11 @@ ParticleSource read_particles(Section s) {
     g.finish();
   } else if (s.has("csv")) {
     src.kind = ParticleSource::Kind::Csv;
-    src.path = resolve_path(s.file(), s.text("csv", std::nullopt, "CSV file with header x,y,z,radius (m)"));
+    src.path = s.file_path("csv", "CSV file with header x,y,z,radius (m)");
     src.cell_m = vec3(s.numbers("cell", "m", {0, 1e3, true}, 3, 3, "cell lengths L1, L2, L3 for a CSV file"));
   } else {
     src.kind = ParticleSource::Kind::State;
-    src.path = resolve_path(s.file(), s.text("state", std::nullopt, "result file (HDF5) whose final state to start from"));
+    src.path = s.file_path("state", "result file (HDF5) whose final state to start from");
   }
   s.finish();
   return src;
@@ -231,7 +225,54 @@ std::string emit_resolved(const SceneConfig& c) {
   return out.c_str();
 }
 
+std::string fmt(double x) {
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
+
+// Every stretch of time a stage turns into a step count must give 1 ... max_scene_steps steps
+// (a tiny time step overflowed the count: 0 steps and a "complete" result), and so must their
+// sum. Checked on the scene, before any particle exists; the messages name the keys.
+void check_step_counts(const SceneConfig& c) {
+  const double dt = c.time_step_s, max = static_cast<double>(max_scene_steps);
+  const std::string at_dt = " at numerics.time_step = " + fmt(dt) + " s";
+  const auto too_many = [&](const std::string& key, const std::string& what, double steps) {
+    throw ConfigError(c.file + ": " + key + ": " + what + at_dt + " is " + fmt(steps) + " steps, more than the " +
+                      fmt(max) + " a run may take; raise numerics.time_step or shorten the stage");
+  };
+  double total = 0;
+  for (std::size_t i = 0; i < c.stages.size(); ++i) {
+    const StageConfig& st = c.stages[i];
+    const std::string key = "stages[" + std::to_string(i) + "]";
+    if (st.type == StageConfig::Type::StressPath) {
+      const std::vector<PathLeg> legs = expand_path(st.path, named_state("A", st.mean_stress_Pa, st.stress_ratio),
+                                                    st.stress_rate_Pa_per_s);
+      double steps = 0;  // each leg runs at least one step
+      for (const PathLeg& leg : legs) steps += std::max(1.0, leg.duration_s / dt);
+      if (!(steps <= max))
+        too_many(key + ".path", "the path (" + std::to_string(legs.size()) + " legs at rate = " + fmt(st.stress_rate_Pa_per_s) +
+                                    " Pa/s)", steps);
+      total += steps;
+      continue;
+    }
+    const bool hold = st.type == StageConfig::Type::Stress;
+    const double duration = hold ? st.hold.max_duration_s : st.duration_s, steps = duration / dt;
+    const std::string dkey = key + (hold ? ".hold.max_duration" : ".duration");
+    if (!(steps >= 0.5))
+      throw ConfigError(c.file + ": " + dkey + ": " + fmt(duration) + " s is less than half of numerics.time_step = " +
+                        fmt(dt) + " s: the stage would get 0 steps; lengthen it or lower the time step");
+    if (!(steps <= max)) too_many(dkey, fmt(duration) + " s", steps);
+    total += steps;
+  }
+  if (!(total <= max))
+    throw ConfigError(c.file + ": stages: together up to " + fmt(total) + " steps" + at_dt + ", more than the " + fmt(max) +
+                      " a run may take; raise numerics.time_step or shorten the stages");
+}
+
 }  // namespace
+
+std::int64_t steps_in(double duration_s, double dt_s) { return std::llround(duration_s / dt_s); }
 
 static SceneConfig parse_scene(Section root, const std::string& file) {
   SceneConfig c;
@@ -293,6 +334,10 @@ static SceneConfig parse_scene(Section root, const std::string& file) {
       if (c.stages[i].name == c.stages[j].name)
         throw ConfigError(file + ": stages[" + std::to_string(i) + "].name: duplicate stage name '" + c.stages[i].name + "'");
   root.finish();
+  check_step_counts(c);
+  c.input_files.push_back({"the scene file", file});
+  if (c.particles.kind != ParticleSource::Kind::Lattice)
+    c.input_files.push_back({c.particles.kind == ParticleSource::Kind::Csv ? "particles.csv" : "particles.state", c.particles.path});
   c.resolved_yaml = emit_resolved(c);
   return c;
 }

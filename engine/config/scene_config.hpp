@@ -58,6 +58,12 @@ struct OutputConfig {
   double checkpoint_wall_time_s = 600;
 };
 
+// A file a run reads: `key` is the scene key naming it ("particles.csv", "particles.state") or
+// "the scene file"; `path` is resolved against the scene's folder.
+struct InputFile {
+  std::string key, path;
+};
+
 struct SceneConfig {
   std::string file;           // the YAML file it came from
   std::string name;
@@ -72,7 +78,18 @@ struct SceneConfig {
   OutputConfig output;
   std::vector<StageConfig> stages;
   std::string resolved_yaml;  // every key with its value after defaults, recorded in the result
+  std::vector<InputFile> input_files;  // the scene file and every file a key names (Section::file_path)
 };
+
+// The steps a stage runs for `duration_s` at time step `dt_s` (the nearest whole number): a
+// strain-rate stage's duration, a stress stage's hold.max_duration, a stress-path leg (at least 1).
+std::int64_t steps_in(double duration_s, double dt_s);
+// The most steps a scene may ask for, per stage and in all: 1e12. Far more than any run can do
+// (at the 2.9e5 steps/s of 64 spheres on one core, 40 days; an 8,000-sphere sample is ~100 times
+// slower), and far below 2^53 (9.0e15), so every step number and step x time_step converts to a
+// double exactly, and sums of counts cannot overflow an int64. load_scene refuses a scene whose
+// stages would run 0 steps or more than this, naming the keys.
+inline constexpr std::int64_t max_scene_steps = 1'000'000'000'000;
 
 // Reads and validates a scene file; throws ConfigError naming file, key path and allowed values.
 // `overrides`: (key path, YAML value) pairs applied before validation (`dem run --set`).

@@ -246,6 +246,16 @@ std::string Section::text(const std::string& key, std::optional<std::string> def
   return n.Scalar();
 }
 
+std::string Section::file_path(const std::string& key, const std::string& doc) {
+  declare(key, "", file_path_allowed, "required", doc);
+  const YAML::Node n = get(key);
+  if (!n) fail_missing(key, file_path_allowed);
+  if (!n.IsScalar() || n.Scalar().empty()) fail(key, "must be a file path, got " + scalar_text(n) + where(n));
+  const std::filesystem::path p(n.Scalar());
+  if (p.is_absolute()) return p.string();
+  return (std::filesystem::path(file_).parent_path() / p).lexically_normal().string();
+}
+
 std::vector<double> Section::numbers(const std::string& key, const std::string& unit, Range range,
                                      std::size_t min_count, std::size_t max_count, const std::string& doc) {
   const std::string count = min_count == max_count ? std::to_string(min_count)

@@ -54,6 +54,11 @@ class Section {
   std::string choice(const std::string& key, const std::vector<std::string>& allowed, std::optional<std::string> def,
                      const std::string& doc);
   std::string text(const std::string& key, std::optional<std::string> def, const std::string& doc);
+  // A required key naming a file: returned resolved against the folder of the scene file when
+  // relative. `dem keys` shows its type as file_path_allowed; every such key is an input of the
+  // run (SceneConfig::input_files), which `dem run --out` may never name.
+  std::string file_path(const std::string& key, const std::string& doc);
+  static constexpr const char* file_path_allowed = "path of a file (relative: to the scene's folder)";
   std::vector<double> numbers(const std::string& key, const std::string& unit, Range range, std::size_t min_count,
                               std::size_t max_count, const std::string& doc);
   Section child(const std::string& key, const std::string& doc);

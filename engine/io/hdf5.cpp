@@ -1,6 +1,8 @@
 #include "io/hdf5.hpp"
 
 #include <algorithm>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <functional>
 #include <numeric>
@@ -9,12 +11,17 @@ namespace dem::h5 {
 
 namespace {
 
+std::string failed(const std::string& what) {
+  const std::string why = last_error();
+  return "HDF5: " + what + " failed" + (why.empty() ? "" : ": " + why);
+}
+
 void check(herr_t status, const std::string& what) {
-  if (status < 0) throw Error("HDF5: " + what + " failed");
+  if (status < 0) throw Error(failed(what));
 }
 
 hid_t checked(hid_t id, const std::string& what) {
-  if (id < 0) throw Error("HDF5: " + what + " failed");
+  if (id < 0) throw Error(failed(what));
   return id;
 }
 
@@ -32,6 +39,38 @@ struct SilenceOnce {
 void silence() { static SilenceOnce once; }
 
 }  // namespace
+
+std::string last_error() {
+  struct Found {
+    std::string innermost;
+    int sys_errno = 0;
+    bool memory = false;
+  } found;
+  H5Ewalk2(H5E_DEFAULT, H5E_WALK_UPWARD, [](unsigned n, const H5E_error2_t* e, void* data) -> herr_t {
+    Found& f = *static_cast<Found*>(data);
+    const std::string desc = e->desc ? e->desc : "";
+    if (n == 0) f.innermost = desc;
+    // The file drivers put the system's errno into the description of a failed read or write.
+    const std::size_t at = desc.find("errno = ");
+    if (at != std::string::npos && f.sys_errno == 0) f.sys_errno = std::atoi(desc.c_str() + at + 8);
+    if (e->min_num == H5E_NOSPACE || desc.find("memory allocation failed") != std::string::npos)
+      f.memory = true;
+    return 0;
+  }, &found);
+  if (found.sys_errno > 0) return std::strerror(found.sys_errno);
+  if (found.memory) return "out of memory (" + found.innermost + ")";
+  return found.innermost;
+}
+
+void flush_file(hid_t file, const std::string& path) {
+  if (H5Fflush(file, H5F_SCOPE_GLOBAL) < 0) throw Error(path + ": " + failed("writing the file"));
+}
+
+void close_file(Handle& file, const std::string& path) {
+  const hid_t id = file.id();
+  file.release();
+  if (id >= 0 && H5Fclose(id) < 0) throw Error(path + ": " + failed("closing the file"));
+}
 
 void Handle::reset() {
   if (id_ < 0) return;

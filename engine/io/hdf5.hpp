@@ -29,15 +29,30 @@ class Handle {
   Handle& operator=(const Handle&) = delete;
   hid_t id() const { return id_; }
   operator hid_t() const { return id_; }
-  void reset();
+  void reset();  // closes, ignoring errors (see close_file for a file whose close must be checked)
+  // Forgets the identifier without closing it (after a close that failed: HDF5 must not see it again).
+  void release() { id_ = -1; }
 
  private:
   hid_t id_ = -1;
 };
 
+// Why the last HDF5 call failed, from the library's error stack: the system's message when a read
+// or write failed (e.g. "No space left on device", "File too large"), "out of memory" when an
+// allocation failed, else HDF5's innermost description ("" if the stack is empty).
+std::string last_error();
+
 Handle create_file(const std::string& path);     // truncates
 Handle open_file_read(const std::string& path);  // throws h5::Error naming the file if it cannot be opened
 Handle open_file_write(const std::string& path);
+// Writes everything HDF5 holds in memory for `file` (data, metadata) to the file; throws h5::Error
+// naming `path` and the reason. It does not fsync: see io/atomic_file.hpp.
+void flush_file(hid_t file, const std::string& path);
+// Closes a file whose other objects are closed, checked: a failed close (a full disk) throws
+// h5::Error naming `path` and the reason. Either way `file` is empty afterwards: HDF5 1.10 cannot
+// close a file whose close failed, and touching it again (or at exit) crashes the library; `dem`
+// therefore calls H5dont_atexit, and such a file is left to the operating system.
+void close_file(Handle& file, const std::string& path);
 Handle create_group(hid_t parent, const std::string& name);
 Handle open_group(hid_t parent, const std::string& name);
 bool exists(hid_t parent, const std::string& path);

@@ -2,7 +2,9 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <new>
 
+#include "io/atomic_file.hpp"
 #include "io/state_io.hpp"
 #include "io/xdmf.hpp"
 #include "run/run_scene.hpp"
@@ -34,33 +36,50 @@ void ColumnTable::flush() {
   }
 }
 
+std::string describe_failure(const std::exception& e) {
+  if (dynamic_cast<const std::bad_alloc*>(&e)) return std::string("out of memory (") + e.what() + ")";
+  return e.what();
+}
+
 ResultWriter::ResultWriter(std::string out_path, const SceneConfig& scene)
     : out_(std::move(out_path)), partial_(out_ + ".partial"), flush_rows_(static_cast<std::size_t>(scene.output.flush_rows)) {
   file_ = h5::create_file(partial_);
-  h5::set_attribute(file_, "status", std::string("running"));
-  h5::set_attribute(file_, "software_version", std::string(software_version));
-  h5::set_attribute(file_, "schema_version", static_cast<std::int64_t>(schema_version));
-  h5::set_attribute(file_, "scene_file", scene.file);
-  h5::set_attribute(file_, "scene_yaml", scene.resolved_yaml);
-  h5::set_attribute(file_, "damping_form", std::string(scene.damping.form == Damping::Form::Viscous ? "viscous" : "local"));
-  tables_.emplace_back(file_, "timeseries", series_columns());
-  tables_.emplace_back(file_, "legs", leg_columns());
-  H5Fflush(file_, H5F_SCOPE_GLOBAL);
+  try {  // the file exists from here on: a failure goes into its status
+    h5::set_attribute(file_, "status", std::string("running"));
+    h5::set_attribute(file_, "software_version", std::string(software_version));
+    h5::set_attribute(file_, "schema_version", static_cast<std::int64_t>(schema_version));
+    h5::set_attribute(file_, "scene_file", scene.file);
+    h5::set_attribute(file_, "scene_yaml", scene.resolved_yaml);
+    h5::set_attribute(file_, "damping_form", std::string(scene.damping.form == Damping::Form::Viscous ? "viscous" : "local"));
+    tables_.emplace_back(file_, "timeseries", series_columns());
+    tables_.emplace_back(file_, "legs", leg_columns());
+    h5::flush_file(file_, partial_);
+  } catch (const std::exception& e) {
+    fail(describe_failure(e));
+    throw;
+  }
 }
 
 ResultWriter::ResultWriter(std::string out_path, const SceneConfig& scene, const std::string& checkpoint_file)
     : out_(std::move(out_path)), partial_(out_ + ".partial"), flush_rows_(static_cast<std::size_t>(scene.output.flush_rows)) {
-  std::filesystem::copy_file(checkpoint_file, partial_, std::filesystem::copy_options::overwrite_existing);
+  copy_file_contents(checkpoint_file, partial_);
   file_ = h5::open_file_write(partial_);
-  if (H5Ldelete(file_, "checkpoint", H5P_DEFAULT) < 0) throw h5::Error(partial_ + ": cannot remove /checkpoint");
-  tables_.emplace_back(file_, "timeseries", series_columns(), ColumnTable::Reopen{});
-  tables_.emplace_back(file_, "legs", leg_columns(), ColumnTable::Reopen{});
-  if (h5::exists(file_, "particles/all")) frames_ = std::make_unique<H5mdWriter>(file_);
-  if (h5::has_attribute(file_, "warnings")) warnings_ = h5::get_string_attribute(file_, "warnings");
-  H5Fflush(file_, H5F_SCOPE_GLOBAL);
+  try {
+    if (H5Ldelete(file_, "checkpoint", H5P_DEFAULT) < 0) throw h5::Error(partial_ + ": cannot remove /checkpoint");
+    tables_.emplace_back(file_, "timeseries", series_columns(), ColumnTable::Reopen{});
+    tables_.emplace_back(file_, "legs", leg_columns(), ColumnTable::Reopen{});
+    if (h5::exists(file_, "particles/all")) frames_ = std::make_unique<H5mdWriter>(file_);
+    if (h5::has_attribute(file_, "warnings")) warnings_ = h5::get_string_attribute(file_, "warnings");
+    h5::flush_file(file_, partial_);
+  } catch (const std::exception& e) {
+    fail(describe_failure(e));
+    throw;
+  }
 }
 
 ResultWriter::~ResultWriter() {
+  // run_scene writes every std::exception's reason (out of memory included) before this; only a
+  // writer dropped without complete() or fail() gets here.
   if (!done_) fail("the run was interrupted");
 }
 
@@ -77,10 +96,14 @@ void ResultWriter::set_attribute(const std::string& name, const std::string& val
 
 void ResultWriter::add_warning(const std::string& warning) { warnings_ += warning + "\n"; }
 
-void ResultWriter::flush() {
+void ResultWriter::write_pending() {
   for (ColumnTable& t : tables_) t.flush();
   if (!warnings_.empty()) h5::set_attribute(file_, "warnings", warnings_);
-  H5Fflush(file_, H5F_SCOPE_GLOBAL);
+}
+
+void ResultWriter::flush() {
+  write_pending();
+  h5::flush_file(file_, partial_);
 }
 
 void ResultWriter::write_state(const Simulation& sim) {
@@ -91,25 +114,37 @@ void ResultWriter::write_state(const Simulation& sim) {
 void ResultWriter::append_frame(const Simulation& sim) {
   if (!frames_) frames_ = std::make_unique<H5mdWriter>(file_, sim);
   frames_->append_frame(sim);
-  H5Fflush(file_, H5F_SCOPE_GLOBAL);
+  h5::flush_file(file_, partial_);
 }
 
 void ResultWriter::close() {
+  // Everything is written first (checked), so that closing datasets and groups, whose errors
+  // HDF5 would not report, has nothing left to write; then the file's own close is checked.
+  if (file_.id() >= 0) h5::flush_file(file_, partial_);
   frames_.reset();
   tables_.clear();
-  file_.reset();
+  h5::close_file(file_, partial_);
+  closed_cleanly_ = true;
 }
 
 void ResultWriter::complete(double wall_time_s) {
-  flush();
+  write_pending();
   h5::set_attribute(file_, "wall_time_s", wall_time_s);
   h5::set_attribute(file_, "status", std::string("complete"));
   const bool has_frames = frames_ && frames_->frames() > 0;
   close();  // the file is closed before it gets its final name
+  sync_file(partial_);  // and on the disk
   // An XDMF left by an earlier result at this path would describe the wrong frames: it goes first.
   const std::string xdmf = xdmf_path_for(out_);
   std::filesystem::remove(xdmf);
   std::filesystem::rename(partial_, out_);
+  try {
+    sync_folder_of(out_);  // the new name on the disk too
+  } catch (...) {
+    std::error_code back;  // not known to be on the disk: not complete
+    std::filesystem::rename(out_, partial_, back);
+    throw;
+  }
   done_ = true;
   // The XDMF is a convenience view of a result that is already complete: failing to write it is
   // reported but does not fail the run.
@@ -124,9 +159,22 @@ void ResultWriter::complete(double wall_time_s) {
 void ResultWriter::fail(const std::string& reason) noexcept {
   if (done_) return;
   done_ = true;
+  // Each step on its own: on a full disk the rows may not fit while the status still does.
   try {
-    flush();
+    if (file_.id() < 0 && closed_cleanly_ && std::filesystem::is_regular_file(partial_))
+      file_ = h5::open_file_write(partial_);  // closed, then complete() failed (fsync, rename)
+  } catch (...) {
+  }
+  if (file_.id() < 0) return;  // never opened, or its close failed: HDF5 cannot touch it again
+  try {
+    write_pending();
+  } catch (...) {
+  }
+  try {
     h5::set_attribute(file_, "status", std::string("failed: ") + reason);
+  } catch (...) {
+  }
+  try {
     close();
   } catch (...) {
   }

@@ -1,8 +1,11 @@
 #pragma once
 // Writes one run's result file. The run writes into "<out>.partial" with status "running"; only a
 // run that finishes is renamed to <out> with status "complete", so a half-written file can never
-// be mistaken for a finished one. A run that fails keeps "<out>.partial" with status
-// "failed: <reason>"; a killed run leaves it at "running".
+// be mistaken for a finished one. The rename comes only after every write, flush and close
+// succeeded and the file reached the disk (fsync of the file; fsync of the folder after the
+// rename); any failure on the way (a full disk, say) throws with its reason and leaves
+// "<out>.partial". A run that fails keeps "<out>.partial" with status "failed: <reason>" when the
+// file can still take the attribute; a killed run leaves it at "running".
 //
 // Particle frames go to /particles after H5MD (io/h5md.hpp); a complete result also gets
 // "<out minus .h5>.xdmf" beside it (io/xdmf.hpp), written only after the rename.
@@ -16,6 +19,10 @@
 #include "io/hdf5.hpp"
 
 namespace dem {
+
+// The reason a run stopped, as the status "failed: <reason>" and `dem` say it: the exception's
+// message, and "out of memory (std::bad_alloc)" for a failed allocation.
+std::string describe_failure(const std::exception& e);
 
 // A group of equally long, extendable columns, filled row by row and flushed in batches.
 class ColumnTable {
@@ -45,19 +52,21 @@ class ResultWriter {
   void append_leg(const std::vector<double>& row);  // /legs (stress-path stages)
   void add_warning(const std::string& warning);     // kept in the `warnings` attribute
   void set_attribute(const std::string& name, const std::string& value);  // a root attribute
-  void flush();  // everything so far is on disk when it returns
+  void flush();  // everything so far is written to the file (checked; not fsync'd) when it returns
   void write_state(const class Simulation& sim);
   // One H5MD particle frame at the simulation's current step (the first call creates /h5md
   // and /particles, taking radius and mass from `sim`).
   void append_frame(const Simulation& sim);
-  // Marks the file complete and moves it to its final name.
+  // Marks the file complete, closes it, fsyncs it and moves it to its final name; throws
+  // (h5::Error, std::runtime_error) with the reason if any of that fails, leaving <out>.partial.
   void complete(double wall_time_s);
-  // Marks the partial file failed (best effort; never throws).
+  // Marks the partial file "failed: <reason>" (best effort; never throws).
   void fail(const std::string& reason) noexcept;
   const std::string& partial_path() const { return partial_; }
 
  private:
-  void close();
+  void write_pending();  // rows and warnings into the file
+  void close();          // checked; file_ is empty afterwards either way
   std::string out_, partial_;
   std::size_t flush_rows_;
   h5::Handle file_;
@@ -65,6 +74,7 @@ class ResultWriter {
   std::unique_ptr<H5mdWriter> frames_;  // created by the first frame
   std::string warnings_;
   bool done_ = false;
+  bool closed_cleanly_ = false;  // the file was closed without error (fail() may reopen it)
 };
 
 }  // namespace dem

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "io/atomic_file.hpp"
 #include "io/hdf5.hpp"
 
 namespace dem {
@@ -77,14 +78,7 @@ void write_xdmf(const std::string& result_path) {
   }
   x << "    </Grid>\n  </Domain>\n</Xdmf>\n";
 
-  const std::string path = xdmf_path_for(result_path), partial = path + ".partial";
-  {
-    std::ofstream out(partial, std::ios::binary | std::ios::trunc);
-    out << x.str();
-    out.close();
-    if (!out) throw std::runtime_error(partial + ": cannot write the XDMF file");
-  }
-  fs::rename(partial, path);
+  write_file_atomically(xdmf_path_for(result_path), x.str());
 }
 
 }  // namespace dem

@@ -11,7 +11,7 @@ namespace dem {
 std::string xdmf_path_for(const std::string& result_path);
 
 // Writes xdmf_path_for(result_path) from the frames found in the (closed, complete) result,
-// through a temporary name and a rename, so that the file is either whole or absent.
+// through <xdmf>.tmp, fsync and a rename (io/atomic_file.hpp), so that it is either whole or absent.
 void write_xdmf(const std::string& result_path);
 
 }  // namespace dem

@@ -1,8 +1,5 @@
 #include "run/checkpoint.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -10,6 +7,7 @@
 #include <sstream>
 
 #include "core/content_hash.hpp"
+#include "io/atomic_file.hpp"
 #include "source_hash.hpp"
 #include "version.hpp"
 
@@ -125,14 +123,6 @@ StageCursor read_cursor(hid_t g, const std::string& file) {
   return c;
 }
 
-void sync_to_disk(const std::string& path) {
-  const int fd = ::open(path.c_str(), O_RDONLY);
-  if (fd < 0) throw h5::Error(path + ": cannot open to flush it to disk");
-  const int rc = ::fsync(fd);
-  ::close(fd);
-  if (rc != 0) throw h5::Error(path + ": flushing to disk failed");
-}
-
 }  // namespace
 
 std::string checkpoint_path(const std::string& out_path) { return out_path + ".checkpoint"; }
@@ -150,22 +140,31 @@ std::string run_identity(const SceneConfig& scene, const std::string& input_hash
 void write_checkpoint(const std::string& partial_path, const std::string& out_path, const std::string& identity,
                       double wall_time_s, const Simulation& sim, const StageCursor& cursor) {
   const std::string final_path = checkpoint_path(out_path), tmp = final_path + ".tmp";
-  std::filesystem::copy_file(partial_path, tmp, std::filesystem::copy_options::overwrite_existing);
-  {
+  try {
+    copy_file_contents(partial_path, tmp);
     h5::Handle f = h5::open_file_write(tmp);
-    h5::Handle g = h5::create_group(f, "checkpoint");
-    h5::set_attribute(g, "identity", identity);
-    h5::set_attribute(g, "step", static_cast<std::int64_t>(sim.step_count()));
-    h5::set_attribute(g, "time", sim.time());
-    h5::set_attribute(g, "wall_time_s", wall_time_s);
-    h5::Handle state = h5::create_group(g, "state");
-    write_state(state, sim);
-    write_list(state, sim.verlet_list().saved());
-    write_energy(state, sim.energy());
-    write_cursor(h5::create_group(g, "cursor"), cursor);
+    {
+      h5::Handle g = h5::create_group(f, "checkpoint");
+      h5::set_attribute(g, "identity", identity);
+      h5::set_attribute(g, "step", static_cast<std::int64_t>(sim.step_count()));
+      h5::set_attribute(g, "time", sim.time());
+      h5::set_attribute(g, "wall_time_s", wall_time_s);
+      h5::Handle state = h5::create_group(g, "state");
+      write_state(state, sim);
+      write_list(state, sim.verlet_list().saved());
+      write_energy(state, sim.energy());
+      write_cursor(h5::create_group(g, "cursor"), cursor);
+      h5::flush_file(f, tmp);  // checked while the groups are open: closing them then writes nothing
+    }
+    h5::close_file(f, tmp);
+    sync_file(tmp);
+    rename_durably(tmp, final_path);  // only a whole checkpoint, on the disk, replaces the previous one
+  } catch (const std::exception& e) {
+    std::error_code ec;
+    std::filesystem::remove(tmp, ec);
+    throw std::runtime_error("checkpoint at step " + std::to_string(sim.step_count()) + " not written: " + e.what() +
+                             (std::filesystem::exists(final_path, ec) ? "; " + final_path + " keeps the previous one" : ""));
   }
-  sync_to_disk(tmp);
-  std::filesystem::rename(tmp, final_path);
 }
 
 Checkpoint read_checkpoint(const std::string& file) {

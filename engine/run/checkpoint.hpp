@@ -11,8 +11,10 @@
 //                           whole Verlet list (verlet_*) and the energy balance (energy_*)
 //     cursor/               where the stage loop is (run/run_scene.hpp, StageCursor)
 //
-// It is written to RESULT.h5.checkpoint.tmp, flushed to disk (fsync) and renamed over the
-// previous one, so RESULT.h5.checkpoint is always one whole checkpoint. Resuming copies it back
+// It is written to RESULT.h5.checkpoint.tmp, every write, flush and close checked, flushed to disk
+// (fsync) and renamed over the previous one (fsync of the folder), so RESULT.h5.checkpoint is
+// always one whole checkpoint: one that fails (a full disk) throws with its reason, removes the
+// .tmp and leaves the previous checkpoint as it was. Resuming copies it back
 // to RESULT.h5.partial without /checkpoint and goes on: rows the killed run wrote after the
 // checkpoint are dropped and written again, with the same values.
 //
@@ -37,7 +39,8 @@ struct Checkpoint {
 std::string checkpoint_path(const std::string& out_path);  // out_path + ".checkpoint"
 std::string run_identity(const SceneConfig& scene, const std::string& input_hash);
 
-// Writes the checkpoint of `out_path` from its partial file (which the caller has flushed).
+// Writes the checkpoint of `out_path` from its partial file (which the caller has flushed); throws
+// std::runtime_error "checkpoint at step N not written: <reason>" (see above).
 void write_checkpoint(const std::string& partial_path, const std::string& out_path, const std::string& identity,
                       double wall_time_s, const Simulation& sim, const StageCursor& cursor);
 

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <new>
 #include <optional>
 #include <sstream>
 
@@ -40,6 +41,8 @@ Simulation build_simulation(const SceneConfig& scene) {
         cell = saved.cell;
         break;
     }
+  } catch (const std::bad_alloc&) {
+    throw;  // not bad input: the run failed (exit 1), "out of memory"
   } catch (const std::exception& e) {
     const char* key = src.kind == ParticleSource::Kind::Lattice ? "particles.lattice/grading"
                       : src.kind == ParticleSource::Kind::Csv   ? "particles.csv"
@@ -88,8 +91,6 @@ AdaptiveServo stage_servo(const SceneConfig& scene, const StageConfig& st) {
   return AdaptiveServo(settings);
 }
 
-std::int64_t steps_for(double duration_s, double dt_s) { return std::llround(duration_s / dt_s); }
-
 bool output_due(const Simulation& sim, const SceneConfig& scene) {
   return sim.step_count() % scene.output.interval_steps == 0;
 }
@@ -112,7 +113,7 @@ void run_strain_rate_stage(Simulation& sim, const SceneConfig& scene, int index,
   const StageConfig& st = scene.stages[static_cast<std::size_t>(index)];
   CellTargets targets;
   for (int k = 0; k < 3; ++k) targets[static_cast<std::size_t>(k)] = {AxisTarget::Mode::StrainRate, st.strain_rate_per_s[k], 0, 0};
-  const std::int64_t n = steps_for(st.duration_s, sim.time_step());
+  const std::int64_t n = steps_in(st.duration_s, sim.time_step());
   for (std::int64_t i = resume ? resume->i : 0; i < n; ++i) {
     if (i > 0 && checkpoint_due(hooks, sim)) hooks.checkpoint(sim, cursor_at(index, i));
     sim.step(targets, scene.servo);
@@ -131,7 +132,7 @@ void run_stress_stage(Simulation& sim, const SceneConfig& scene, int index, cons
   Vec3 ramp_time;
   for (int k = 0; k < 3; ++k) ramp_time[k] = std::abs(st.target_Pa[k] - from[k]) / st.stress_rate_Pa_per_s;
   const double ramp_end = ramp_time.maxCoeff();
-  const std::int64_t max_steps = steps_for(st.hold.max_duration_s, dt);
+  const std::int64_t max_steps = steps_in(st.hold.max_duration_s, dt);
   AdaptiveServo servo = stage_servo(scene, st);
   CellTargets targets;
   double stress_error = 0, unbalanced = 1;
@@ -190,13 +191,13 @@ void run_stress_path_stage(Simulation& sim, const SceneConfig& scene, int index,
   AdaptiveServo servo = stage_servo(scene, st);
   const double inertia_scale = mean_diameter(sim.particles()) * std::sqrt(sim.material().density_kg_per_m3);
   std::int64_t total_steps = 0, done_steps = 0;
-  for (const PathLeg& leg : legs) total_steps += std::max<std::int64_t>(1, steps_for(leg.duration_s, dt));
+  for (const PathLeg& leg : legs) total_steps += std::max<std::int64_t>(1, steps_in(leg.duration_s, dt));
   Vec3 strain_at_leg_start = resume ? resume->strain_at_leg_start : sim.cell().strain();
   if (resume) servo.restore(resume->servo), done_steps = resume->done_steps;
   CellTargets targets;
   for (std::size_t leg_index = resume ? static_cast<std::size_t>(resume->leg) : 0; leg_index < legs.size(); ++leg_index) {
     const PathLeg& leg = legs[leg_index];
-    const std::int64_t n = std::max<std::int64_t>(1, steps_for(leg.duration_s, dt));
+    const std::int64_t n = std::max<std::int64_t>(1, steps_in(leg.duration_s, dt));
     const Vec3 rate = (leg.to_Pa - leg.from_Pa) / (static_cast<double>(n) * dt);
     const bool resumed_leg = resume && leg_index == static_cast<std::size_t>(resume->leg);
     LegRecord rec{index, leg.index, leg.cycle, leg.ends_cycle, leg.to_Pa, static_cast<double>(n) * dt, n, 0, Vec3::Zero(),
@@ -310,28 +311,12 @@ std::optional<Checkpoint> checkpoint_to_resume(const SceneConfig& scene, const s
   }
 }
 
-}  // namespace
-
-RunSummary run_scene(const SceneConfig& scene, const std::string& out_path, bool show_progress,
-                     const std::string& input_hash, Resume resume) {
+// The stages of a run whose result file `out` is open, from the start or from checkpoint `from`;
+// completes the result. Throws whatever stops the run (the caller marks the result failed).
+RunSummary run_stages(Simulation& sim, const SceneConfig& scene, const Checkpoint* from, const std::string& out_path,
+                      const std::string& identity, bool show_progress, std::chrono::steady_clock::time_point start,
+                      ResultWriter& out) {
   using clock = std::chrono::steady_clock;
-  auto start = clock::now();
-  Simulation sim = build_simulation(scene);  // all input checks happen before the output file exists
-  const std::string identity = run_identity(scene, input_hash);
-  std::optional<Checkpoint> from = checkpoint_to_resume(scene, out_path, identity, resume);
-  std::unique_ptr<ResultWriter> writer;
-  if (from) {
-    writer = std::make_unique<ResultWriter>(out_path, scene, checkpoint_path(out_path));
-    sim = restore_simulation(scene, *from);
-    start -= std::chrono::duration_cast<clock::duration>(std::chrono::duration<double>(from->wall_time_s));
-    std::fprintf(stderr, "%s: resuming from %s at step %lld\n", scene.name.c_str(), checkpoint_path(out_path).c_str(),
-                 static_cast<long long>(sim.step_count()));
-  } else {
-    writer = std::make_unique<ResultWriter>(out_path, scene);
-    if (!input_hash.empty()) writer->set_attribute("input_hash", input_hash);
-    writer->append_frame(sim);  // particle frames: the start, each checkpoint and the end of the run
-  }
-  ResultWriter& out = *writer;
   auto last_print = start;
   int stage_seen = -1;          // for the ETA: the stage being timed and when it started
   double stage_start_wall = 0;  // [s since the run started]
@@ -394,20 +379,48 @@ RunSummary run_scene(const SceneConfig& scene, const std::string& out_path, bool
       if (!pr.status.empty()) std::fprintf(stderr, ", %s", pr.status.c_str());
       std::fflush(stderr);
     };
+  const int first = from ? from->cursor.stage : 0;
+  for (int i = first; i < static_cast<int>(scene.stages.size()); ++i)
+    run_stage(sim, scene, i, hooks, from && i == first ? &from->cursor : nullptr);
+  out.append_frame(sim);
+  out.write_state(sim);
+  const double wall = std::chrono::duration<double>(clock::now() - start).count();
+  out.complete(wall);
+  std::error_code gone;  // the result supersedes the checkpoint (a stale one would only be resumed to the same end)
+  if (std::filesystem::remove(checkpoint_path(out_path), gone); gone)
+    std::fprintf(stderr, "warning: %s: not removed: %s\n", checkpoint_path(out_path).c_str(), gone.message().c_str());
+  if (show_progress) std::fprintf(stderr, "\r\033[K");
+  return {sim.step_count(), wall};
+}
+
+}  // namespace
+
+RunSummary run_scene(const SceneConfig& scene, const std::string& out_path, bool show_progress,
+                     const std::string& input_hash, Resume resume) {
+  using clock = std::chrono::steady_clock;
+  auto start = clock::now();
+  Simulation sim = build_simulation(scene);  // all input checks happen before the output file exists
+  const std::string identity = run_identity(scene, input_hash);
+  std::optional<Checkpoint> from = checkpoint_to_resume(scene, out_path, identity, resume);
+  std::unique_ptr<ResultWriter> writer;
+  // From here on every failure, whatever it is (a stage, a full disk, memory), is written into the
+  // partial result's status with its reason before it goes on to the caller.
   try {
-    const int first = from ? from->cursor.stage : 0;
-    for (int i = first; i < static_cast<int>(scene.stages.size()); ++i)
-      run_stage(sim, scene, i, hooks, from && i == first ? &from->cursor : nullptr);
-    out.append_frame(sim);
-    out.write_state(sim);
-    const double wall = std::chrono::duration<double>(clock::now() - start).count();
-    out.complete(wall);
-    std::filesystem::remove(checkpoint_path(out_path));  // the result supersedes it
-    if (show_progress) std::fprintf(stderr, "\r\033[K");
-    return {sim.step_count(), wall};
+    if (from) {
+      writer = std::make_unique<ResultWriter>(out_path, scene, checkpoint_path(out_path));
+      sim = restore_simulation(scene, *from);
+      start -= std::chrono::duration_cast<clock::duration>(std::chrono::duration<double>(from->wall_time_s));
+      std::fprintf(stderr, "%s: resuming from %s at step %lld\n", scene.name.c_str(), checkpoint_path(out_path).c_str(),
+                   static_cast<long long>(sim.step_count()));
+    } else {
+      writer = std::make_unique<ResultWriter>(out_path, scene);
+      if (!input_hash.empty()) writer->set_attribute("input_hash", input_hash);
+      writer->append_frame(sim);  // particle frames: the start, each checkpoint and the end of the run
+    }
+    return run_stages(sim, scene, from ? &*from : nullptr, out_path, identity, show_progress, start, *writer);
   } catch (const std::exception& e) {
     if (show_progress) std::fprintf(stderr, "\n");
-    out.fail(e.what());
+    if (writer) writer->fail(describe_failure(e));
     throw;
   }
 }

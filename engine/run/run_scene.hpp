@@ -99,7 +99,10 @@ enum class Resume {
 // with checkpoints as output.checkpoint_* ask. `input_hash` (if not empty) is recorded in the
 // result's `input_hash` attribute and is part of the checkpoint identity. Messages about the
 // checkpoint go to stderr. On success the checkpoint is removed.
+// Any failure after the result file exists is written into <out>.partial's status as
+// "failed: " + describe_failure(e) (io/result_writer.hpp) before the exception goes on.
 RunSummary run_scene(const SceneConfig& scene, const std::string& out_path, bool show_progress,
                      const std::string& input_hash = "", Resume resume = Resume::IfValid);
+
 
 }  // namespace dem

@@ -56,6 +56,25 @@ TEST_CASE("pipeline: runs once, then reuses, reruns what is missing or corrupt",
   CHECK(o.reused == 2);
 }
 
+TEST_CASE("pipeline: a changed input reruns over the earlier result, which dem replaces only with --force", "[pipeline][scheduler]") {
+  // `dem run` refuses to replace a complete result of another scene without --force (issue 24);
+  // the pipeline's results are its own, so it passes --force: a changed test scene reruns the
+  // tests in place, and a corrupt result is replaced too.
+  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "scheduler_force";
+  fs::remove_all(dir);
+  write_study(dir, "2.0e-4");
+  REQUIRE(run(dir).ran == 4);
+  write_study(dir, "3.0e-4");  // the tests' duration changes: their input hash and scene text too
+  pipeline::Outcome o = run(dir);
+  CHECK(o.ran == 2);
+  CHECK(o.reused == 2);
+  CHECK(o.failed == 0);
+  { std::ofstream(dir / "out" / "dense_test1.h5", std::ios::trunc) << "not a result"; }
+  o = run(dir);
+  CHECK(o.ran == 1);
+  CHECK(o.failed == 0);
+}
+
 TEST_CASE("pipeline: a failed run is reported and blocks only the runs that need it", "[pipeline][scheduler]") {
   const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "scheduler_fail";
   fs::remove_all(dir);

@@ -237,6 +237,21 @@ std::vector<BadScene> catalogue() {
        {"bad.yaml: numerics.time_step: must be in (0, 1] s, got .inf (line 6)"}},
       {"NaN in a list", Yaml{.stages = "\n  - {name: a, type: strain_rate, strain_rate: [0.1, .nan, 0.1], duration: 1.0e-4}"}.text(), C,
        {"bad.yaml: stages[0].strain_rate[1]: must be in [-1000, 1000] 1/s, got .nan (line 8)"}},
+      // --- step counts (issue 24): every duration a stage turns into steps gives 1 ... 1e12 ---------
+      // numerics.time_step = 1e-21 with a 0.01 s stage overflowed the count: 0 steps, exit 0.
+      {"a time step so small that the steps overflow", Yaml{.numerics = "{time_step: 1.0e-21}",
+       .stages = "\n  - {name: a, type: strain_rate, strain_rate: [0.1, 0.1, 0.1], duration: 0.01}"}.text(), C,
+       {"bad.yaml: stages[0].duration: 0.01 s at numerics.time_step = 1e-21 s is 1e+19 steps, more than the 1e+12 a run may take"}},
+      {"a stage shorter than half a time step", Yaml{.stages = "\n  - {name: a, type: strain_rate, strain_rate: [0.1, 0.1, 0.1], duration: 4.0e-7}"}.text(), C,
+       {"bad.yaml: stages[0].duration: 4e-07 s is less than half of numerics.time_step = 1e-06 s: the stage would get 0 steps"}},
+      // The smallest positive double: duration / time_step is infinite.
+      {"a denormal time step", Yaml{.numerics = "{time_step: 4.9e-324}"}.text(), C,
+       {"bad.yaml: stages[0].duration: 0.0001 s at numerics.time_step = 4.94066e-324 s is inf steps"}},
+      // Stages of 6e11 steps each are allowed one by one, not together.
+      {"stages that together take more than 1e12 steps",
+       Yaml{.stages = "\n  - {name: a, type: strain_rate, strain_rate: [0, 0, 0], duration: 6.0e5}"
+                      "\n  - {name: b, type: strain_rate, strain_rate: [0, 0, 0], duration: 6.0e5}"}.text(), C,
+       {"bad.yaml: stages: together up to 1.2e+12 steps at numerics.time_step = 1e-06 s, more than the 1e+12 a run may take"}},
   };
 }
 
@@ -263,6 +278,54 @@ TEST_CASE("bad scenes are refused with a message naming file, key path and what 
     if (c.kind == Kind::Config) CHECK(o.message.rfind("bad.yaml: ", 0) == 0);
     for (const std::string& e : c.expected) CHECK_THAT(o.message, Catch::Matchers::Contains(e));
   }
+}
+
+TEST_CASE("every stage type's step counts are range-checked, naming the keys", "[config][steps]") {
+  // Each duration a stage turns into a step count (engine/run/run_scene.cpp: steps_in): a
+  // strain-rate stage's duration, a stress stage's hold.max_duration, a stress path's legs (from
+  // rate and the path's states). Each must give at least one step and at most max_scene_steps, at
+  // any time step: a stage type added without its check fails here. Refused by scene_from_text,
+  // before any particle exists.
+  struct Stage {
+    std::string yaml, key;  // one stage; the key the message names for it
+    bool can_be_empty;      // a duration can be below one step (path legs run at least one step)
+  };
+  const std::vector<Stage> stages = {
+      {"{name: a, type: strain_rate, strain_rate: [0.1, 0.1, 0.1], duration: 0.01}", "stages[0].duration", true},
+      {"{name: a, type: stress, target: [1.0e5, 1.0e5, 1.0e5], rate: 1.0e6, hold: {max_duration: 0.01}}", "stages[0].hold.max_duration", true},
+      {"{name: a, type: stress_path, rate: 2.0e6, path: [TC1, {repeat: 3, path: [TC2, TC1]}]}", "stages[0].path", false},
+  };
+  REQUIRE(stages.size() == 3);  // StageConfig::Type has three values
+  for (const Stage& st : stages) {
+    INFO(st.yaml);
+    CHECK_NOTHROW(scene_from_text(Yaml{.stages = "\n  - " + st.yaml}.text(), "bad.yaml"));
+    for (const char* dt : {"1.0e-21", "1.0e-100", "4.9e-324"}) {  // 1e19 steps and more, up to infinity
+      INFO("time_step " << dt);
+      const Outcome o = refuse(Yaml{.numerics = std::string("{time_step: ") + dt + "}", .stages = "\n  - " + st.yaml}.text());
+      CHECK(o.threw);
+      CHECK_THAT(o.message, Catch::Matchers::StartsWith("bad.yaml: " + st.key + ": ") &&
+                                Catch::Matchers::Contains("at numerics.time_step = ") &&
+                                Catch::Matchers::Contains("more than the 1e+12 a run may take"));
+    }
+    if (!st.can_be_empty) continue;
+    // A duration of 0.4 time steps rounds to 0 steps.
+    std::string shortened = st.yaml;
+    shortened.replace(shortened.find("0.01}"), 4, "4.0e-7");
+    const Outcome o = refuse(Yaml{.stages = "\n  - " + shortened}.text());
+    CHECK(o.threw);
+    CHECK_THAT(o.message, Catch::Matchers::StartsWith("bad.yaml: " + st.key + ": 4e-07 s is less than half of numerics.time_step") &&
+                              Catch::Matchers::Contains("the stage would get 0 steps"));
+  }
+  // The bound itself: exactly 1e12 steps are allowed, 1e12 + 1 are not (integer-valued doubles).
+  CHECK(max_scene_steps == 1'000'000'000'000);
+  CHECK_NOTHROW(scene_from_text(Yaml{.numerics = "{time_step: 1.0e-6}",
+                                     .stages = "\n  - {name: a, type: strain_rate, strain_rate: [0, 0, 0], duration: 1.0e6}"}.text(), "bad.yaml"));
+  CHECK_THROWS_AS(scene_from_text(Yaml{.numerics = "{time_step: 0.999999999999e-6}",
+                                       .stages = "\n  - {name: a, type: strain_rate, strain_rate: [0, 0, 0], duration: 1.0e6}"}.text(), "bad.yaml"),
+                  ConfigError);
+  // The count the run uses is the one checked (nearest whole step).
+  CHECK(steps_in(1.0e-4, 1.0e-6) == 100);
+  CHECK(steps_in(5.0e-7, 1.0e-6) == 1);
 }
 
 TEST_CASE("scene files that cannot be read are refused naming the file", "[config]") {

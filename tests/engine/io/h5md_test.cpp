@@ -151,7 +151,7 @@ TEST_CASE("a result holds H5MD particle frames at the start and end of the run, 
   }
   SECTION("the XDMF names the datasets by relative path, one Polyvertex grid per frame") {
     REQUIRE(fs::exists(dir + "/r.xdmf"));
-    CHECK_FALSE(fs::exists(dir + "/r.xdmf.partial"));
+    CHECK_FALSE(fs::exists(dir + "/r.xdmf.tmp"));  // written through r.xdmf.tmp (io/atomic_file.hpp)
     const std::string xml = test::read_bytes(dir + "/r.xdmf");
     CHECK(count(xml, "CollectionType=\"Temporal\"") == 1);
     CHECK(count(xml, "TopologyType=\"Polyvertex\" NodesPerElement=\"27\"") == 2);
@@ -173,7 +173,7 @@ TEST_CASE("a failed run leaves no XDMF, and its partial result holds only the fr
   const SceneConfig bad = scene_from_text(test::tiny_scene(stage), dir + "/bad.yaml");
   CHECK_THROWS_AS(run_scene(bad, dir + "/r.h5", false), StageError);
   CHECK_FALSE(fs::exists(dir + "/r.xdmf"));
-  CHECK_FALSE(fs::exists(dir + "/r.xdmf.partial"));
+  CHECK_FALSE(fs::exists(dir + "/r.xdmf.tmp"));
   h5::Handle f = h5::open_file_read(dir + "/r.h5.partial");
   std::size_t cols = 0;
   CHECK(h5::read<std::int64_t>(f, "particles/all/position/step", cols) == std::vector<std::int64_t>{0});

@@ -2,11 +2,22 @@
 // 1 run failed, 2 bad input", and errors go to stderr.
 #include <catch2/catch.hpp>
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <filesystem>
+#include <set>
+#include <sstream>
 #include <string>
+#include <vector>
 
+#include "config/yaml_section.hpp"
 #include "engine/io/io_test_support.hpp"
+#include "run/checkpoint.hpp"
+#include "run/output_path.hpp"
 #include "version.hpp"
 
 namespace fs = std::filesystem;
@@ -150,4 +161,338 @@ TEST_CASE("dem run exits 2 (bad input) for a bad grading curve, lattice, particl
   dem::test::write_text(dir + "/s.yaml", "name: s\nparticles: {state: not_a_result.h5}\nmaterial: {kn: 1.0e6, ks: 1.0e6, friction: 0.5}\n"
                                           "numerics: {time_step: 1.0e-6}\nstages:\n" + tiny_stage);
   refused(dir + "/s.yaml", "particles.state: " + dir + "/not_a_result.h5: not a readable HDF5 file");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Result integrity (issue 24): nothing lost, nothing stale. Each case below is written to catch
+// the next case of its class: every point at which a disk can fill up, every file a run keeps
+// beside its result, every file key of a scene, every kind of non-regular file.
+
+namespace {
+
+// Runs `dem args` from a bash script that first runs `limits` (e.g. "ulimit -f 40"); returns the
+// exit status of dem (a crash shows as 128 + signal) and its stderr.
+dem::test::CommandResult dem_limited(const std::string& dir, const std::string& limits, const std::string& args) {
+  dem::test::write_text(dir + "/limited.sh", limits + "\nexec '" + dem_exe + "' " + args + " 2>&1 >/dev/null\n");
+  return dem::test::run_command("bash '" + dir + "/limited.sh'");
+}
+
+std::vector<double> series(const std::string& file, const std::string& column) {
+  dem::h5::Handle f = dem::h5::open_file_read(file);
+  std::size_t cols = 0;
+  return dem::h5::read<double>(dem::h5::open_group(f, "timeseries"), column, cols);
+}
+
+// The names of the files in a folder.
+std::set<std::string> listing(const std::string& dir) {
+  std::set<std::string> names;
+  for (const auto& e : fs::directory_iterator(dir)) names.insert(e.path().filename().string());
+  return names;
+}
+
+// 27 spheres, 2,000 steps, a row every step, a checkpoint every 500: a result that grows in every
+// way a result grows (rows, frames, checkpoints), to 1.3 MB, by ~300 KB between checkpoints.
+std::string growing_scene() {
+  return dem::test::tiny_scene("  - {name: squeeze, type: strain_rate, strain_rate: [2, 2, 2], duration: 2.0e-3}\n",
+                               "{kn: 1.0e6, ks: 1.0e6, friction: 0.5}",
+                               "output: {interval: 1, flush_rows: 5, checkpoint_interval: 500, checkpoint_wall_time: 0}\n");
+}
+
+}  // namespace
+
+TEST_CASE("dem run: a disk that fills up at any moment of a run loses nothing and never crashes", "[run][cli][disk]") {
+  // A file size limit (ulimit -f, SIGXFSZ ignored) makes every write past it fail with EFBIG, as
+  // a full disk makes it fail with ENOSPC, without root. The limit is swept from 1 KiB to above
+  // the result's size, so that writes fail in the first attribute, in rows, in frames, in each
+  // checkpoint, at the final flush and close, and the run finally succeeds. (The same with a real
+  // full disk, a 200 KiB tmpfs, is tests/integrity/full_disk_test.sh, which needs root.)
+  if (!have_dem() || !dem::test::have_program("bash")) return;
+  const std::string dir = dem::test::scratch_dir("cli_full_disk");
+  dem::test::write_text(dir + "/s.yaml", growing_scene());
+  REQUIRE(dem_stderr("run '" + dir + "/s.yaml' --out '" + dir + "/reference.h5' --quiet").exit_code == 0);
+  const auto reference = series(dir + "/reference.h5", "p");
+  const std::uintmax_t kib = fs::file_size(dir + "/reference.h5") / 1024;
+  const std::uintmax_t stride = std::max<std::uintmax_t>(1, kib / 40);
+  int failed = 0, failed_status = 0, kept_checkpoint = 0, completed = 0;
+  std::string resumable;  // a folder whose run failed on a checkpoint and kept the previous one
+  for (std::uintmax_t limit = 1; limit <= 2 * kib && completed == 0; limit += stride) {
+    const std::string sub = dir + "/limit" + std::to_string(limit), out = sub + "/r.h5";
+    fs::create_directories(sub);
+    const auto r = dem_limited(sub, "trap '' XFSZ\nulimit -f " + std::to_string(limit),
+                               "run '" + dir + "/s.yaml' --out '" + out + "' --quiet");
+    INFO("limit " << limit << " KiB: exit " << r.exit_code << "\n" << r.out);
+    REQUIRE((r.exit_code == 0 || r.exit_code == 1));  // never a crash (it was 139 at the close)
+    CHECK_FALSE(fs::exists(out + ".checkpoint.tmp"));
+    if (fs::exists(out + ".checkpoint")) CHECK_NOTHROW(dem::read_checkpoint(out + ".checkpoint"));  // whole, or absent
+    if (r.exit_code == 0) {
+      ++completed;
+      CHECK(dem::test::h5_status(out) == "complete");
+      CHECK_FALSE(fs::exists(out + ".partial"));
+      CHECK(series(out, "p") == reference);
+      continue;
+    }
+    ++failed;
+    CHECK_FALSE(fs::exists(out));  // never renamed: only a complete, flushed, closed file is
+    CHECK(fs::exists(out + ".partial"));
+    CHECK_THAT(r.out, Catch::Matchers::Contains("error: ") && Catch::Matchers::Contains("File too large") &&
+                          Catch::Matchers::Contains("(partial result kept in " + out + ".partial)"));
+    const std::string status = dem::test::h5_status(out + ".partial");
+    CHECK(status != "complete");
+    if (status.rfind("failed: ", 0) == 0) {
+      ++failed_status;
+      CHECK_THAT(status, Catch::Matchers::Contains("File too large"));
+    }
+    if (r.out.find(out + ".checkpoint keeps the previous one") != std::string::npos) {
+      ++kept_checkpoint;
+      REQUIRE(fs::exists(out + ".checkpoint"));
+      if (resumable.empty()) resumable = sub;
+    }
+  }
+  CHECK(failed >= 10);
+  CHECK(failed_status > 0);    // the status took the reason whenever the file could still take it
+  CHECK(kept_checkpoint > 0);  // a failed checkpoint did not replace the good one
+  CHECK(completed == 1);
+  // Nothing lost: with the space back, the run resumes from the checkpoint it kept and ends with
+  // the reference's time series, bit for bit.
+  REQUIRE_FALSE(resumable.empty());
+  const auto again = dem_stderr("run '" + dir + "/s.yaml' --out '" + resumable + "/r.h5' --quiet");
+  INFO(again.out);
+  CHECK(again.exit_code == 0);
+  CHECK_THAT(again.out, Catch::Matchers::Contains("resuming from " + resumable + "/r.h5.checkpoint"));
+  CHECK(series(resumable + "/r.h5", "p") == reference);
+}
+
+TEST_CASE("dem run: a run out of memory says so, in its exit status, on stderr and in its partial result", "[run][cli][memory]") {
+  // An address-space limit (ulimit -v) makes allocations fail, in the engine (std::bad_alloc) or in
+  // HDF5. 27,000 spheres with a Verlet skin of 7 cm have ~1.8e8 neighbour pairs: the first list
+  // build needs more than 1 GiB. Swept from 32 MiB, the limit stops the run while the particles
+  // are made, while the result file is created, in the first frame and in the list build.
+  // Out of memory is a failed run (exit 1), never bad input (exit 2), and the partial result's
+  // status gives the reason, never "interrupted".
+  if (!have_dem() || !dem::test::have_program("bash")) return;
+  const std::string dir = dem::test::scratch_dir("cli_memory");
+  dem::test::write_text(dir + "/small.yaml", dem::test::tiny_scene(tiny_stage));
+  std::string big = dem::test::tiny_scene("  - {name: squeeze, type: strain_rate, strain_rate: [0.1, 0.1, 0.1], duration: 1.0e-5}\n");
+  big.replace(big.find("n: [3, 3, 3]"), 12, "n: [30, 30, 30]");
+  big.replace(big.find("time_step: 1.0e-6}"), 18, "time_step: 1.0e-6, verlet_skin: 0.07}");
+  dem::test::write_text(dir + "/big.yaml", big);
+  // A build whose address space cannot be limited this way (e.g. with AddressSanitizer) is skipped.
+  if (dem_limited(dir, "ulimit -v 1048576", "run '" + dir + "/small.yaml' --out '" + dir + "/small.h5' --quiet").exit_code != 0) {
+    WARN("dem does not run under ulimit -v 1 GiB: skipped");
+    return;
+  }
+  int out_of_memory_status = 0;
+  for (const int mib : {32, 34, 36, 40, 48, 64, 128, 256, 1024}) {
+    const std::string sub = dir + "/mib" + std::to_string(mib), out = sub + "/r.h5";
+    fs::create_directories(sub);
+    const auto r = dem_limited(sub, "ulimit -v " + std::to_string(mib * 1024), "run '" + dir + "/big.yaml' --out '" + out + "' --quiet");
+    INFO(mib << " MiB: exit " << r.exit_code << "\n" << r.out);
+    if (r.exit_code == 127) continue;  // too little even to load the shared libraries
+    CHECK(r.exit_code == 1);
+    CHECK_THAT(r.out, Catch::Matchers::Contains("out of memory"));
+    CHECK_FALSE(fs::exists(out));
+    if (!fs::exists(out + ".partial")) continue;  // stopped before the result file existed
+    const std::string status = dem::test::h5_status(out + ".partial");
+    CHECK_THAT(status, Catch::Matchers::StartsWith("failed: ") && Catch::Matchers::Contains("out of memory") &&
+                           !Catch::Matchers::Contains("interrupted"));
+    if (status == "failed: out of memory (std::bad_alloc)") ++out_of_memory_status;
+  }
+  CHECK(out_of_memory_status > 0);
+}
+
+TEST_CASE("dem run refuses a step count of 0 or above 1e12, with the keys, before anything is written", "[run][cli][input]") {
+  // numerics.time_step = 1e-21 with a 0.01 s stage overflowed the step count: 0 steps and a
+  // "complete" result with exit 0. (Every stage type and key: bad_scenes_test.cpp.)
+  if (!have_dem()) return;
+  const std::string dir = dem::test::scratch_dir("cli_step_count");
+  dem::test::write_text(dir + "/s.yaml",
+                        dem::test::tiny_scene("  - {name: squeeze, type: strain_rate, strain_rate: [0.1, 0.1, 0.1], duration: 0.01}\n"));
+  for (const auto& [set, expected] : std::vector<std::pair<std::string, std::string>>{
+           {"numerics.time_step=1e-21", "stages[0].duration: 0.01 s at numerics.time_step = 1e-21 s is 1e+19 steps, more than the 1e+12"},
+           {"stages[0].duration=1e-7", "stages[0].duration: 1e-07 s is less than half of numerics.time_step = 1e-06 s: the stage would get 0 steps"}}) {
+    const auto r = dem_stderr("run '" + dir + "/s.yaml' --set " + set + " --out '" + dir + "/r.h5'");
+    INFO(r.out);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.out, Catch::Matchers::Contains("error: " + dir + "/s.yaml: " + expected));
+    CHECK(listing(dir) == std::set<std::string>{"s.yaml"});  // nothing written, not even the lock
+  }
+}
+
+TEST_CASE("dem run refuses an --out that names a file kept beside a result, even while that result is written",
+          "[run][cli][input]") {
+  // The lock is per --out name: `--out X.h5.partial` while a run writes X.h5 replaced that run's
+  // result by another scene's, both exiting 0. Refused: every name a run keeps beside a result,
+  // taken both from the engine's own list (result_family) and from the files real runs leave
+  // (a failed run with checkpoints, a complete run with frames), so a new kind of file is caught.
+  if (!have_dem()) return;
+  const std::string dir = dem::test::scratch_dir("cli_reserved");
+  dem::test::write_text(dir + "/s.yaml", growing_scene());
+  dem::test::write_text(dir + "/stops.yaml",
+                        dem::test::tiny_scene("  - {name: hold, type: stress, target: [1.0e5, 1.0e5, 1.0e5], rate: 1.0e9,"
+                                              " hold: {max_duration: 2.0e-4}}\n",
+                                              "{kn: 1.0e6, ks: 1.0e6, friction: 0.5}", "output: {checkpoint_interval: 50}\n"));
+  REQUIRE(dem_stderr("run '" + dir + "/s.yaml' --out '" + dir + "/r.h5' --quiet").exit_code == 0);
+  REQUIRE(dem_stderr("run '" + dir + "/stops.yaml' --out '" + dir + "/f.h5' --quiet").exit_code == 1);
+  std::set<std::string> kept;  // what the runs left beside their results, as names beside r.h5
+  for (const std::string& name : listing(dir)) {
+    if (name == "s.yaml" || name == "stops.yaml" || name == "r.h5" || name == "f.h5") continue;
+    kept.insert(name.rfind("f.h5", 0) == 0 ? "r.h5" + name.substr(4) : name.rfind("f.", 0) == 0 ? "r." + name.substr(2) : name);
+  }
+  CHECK(kept.count("r.h5.partial"));  // the runs did leave files beside their results
+  CHECK(kept.count("r.h5.checkpoint"));
+  CHECK(kept.count("r.xdmf"));
+  for (const dem::FamilyFile& f : dem::result_family(dir + "/r.h5"))
+    if (f.path != dir + "/r.h5") kept.insert(fs::path(f.path).filename().string());
+  for (const std::string& suffix : dem::reserved_suffixes()) kept.insert("r.h5" + suffix);
+  const std::set<std::string> before = listing(dir);
+  for (const std::string& name : kept) {
+    INFO(name);
+    const auto r = dem_stderr("run '" + dir + "/s.yaml' --out '" + dir + "/" + name + "' --quiet");
+    INFO(r.out);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.out, Catch::Matchers::Contains("error: --out " + dir + "/" + name + " ends in '") &&
+                          Catch::Matchers::Contains("nothing was run"));
+    CHECK(listing(dir) == before);
+  }
+  // While another run writes r.h5 (it holds r.h5.lock): its partial result is not touched.
+  dem::test::write_text(dir + "/r.h5.partial", "another run's partial result\n");
+  const int fd = open((dir + "/r.h5.lock").c_str(), O_RDWR | O_CREAT, 0644);
+  REQUIRE(fd >= 0);
+  REQUIRE(flock(fd, LOCK_EX | LOCK_NB) == 0);
+  const auto r = dem_stderr("run '" + dir + "/s.yaml' --out '" + dir + "/r.h5.partial' --force");
+  close(fd);
+  CHECK(r.exit_code == 2);
+  CHECK(dem::test::read_bytes(dir + "/r.h5.partial") == "another run's partial result\n");
+}
+
+TEST_CASE("dem run refuses an --out that is, or whose companion files are, a file the run reads", "[run][cli][input]") {
+  // `--out` equal to the scene's own state file silently overwrote the sample. Every file key of a
+  // scene is covered (the test fails if `dem keys` lists one it does not know), and the scene file
+  // itself; each by other spellings of the path (./, .., a linked folder, a hard link), and for every
+  // file a run keeps beside its result (an XDMF view named like the CSV would replace it).
+  if (!have_dem()) return;
+  const std::string dir = dem::test::scratch_dir("cli_out_is_input");
+  std::set<std::string> file_keys;
+  std::istringstream keys(dem_stdout("keys").out);
+  for (std::string line; std::getline(keys, line);)
+    if (line.find(std::string("; ") + dem::Section::file_path_allowed + ";") != std::string::npos)
+      file_keys.insert(line.substr(2, line.find(';') - 2));
+  CHECK(file_keys == std::set<std::string>{"particles.csv", "particles.state"});  // a new file key needs its case below
+
+  const std::string csv_folder = std::string(DEM_SOURCE_DIR) + "/tests/data/csv_scene";
+  fs::copy_file(csv_folder + "/particles.csv", dir + "/particles.csv");
+  dem::test::write_text(dir + "/csv.yaml", dem::test::read_bytes(csv_folder + "/scene.yaml"));
+  REQUIRE(dem_stderr("run '" + dir + "/csv.yaml' --out '" + dir + "/sample.h5' --quiet").exit_code == 0);
+  dem::test::write_text(dir + "/state.yaml", "name: s\nparticles: {state: sample.h5}\nmaterial: {kn: 1.0e6, ks: 1.0e6, friction: 0.5}\n"
+                                             "numerics: {time_step: 1.0e-6}\nstages:\n" + tiny_stage);
+  fs::create_directory_symlink(dir, dir + "/linked");
+  fs::create_hard_link(dir + "/sample.h5", dir + "/hard.h5");
+  const auto refused = [&](const std::string& scene, const std::string& out, const std::string& expected) {
+    INFO("scene " << scene << ", --out " << out);
+    const std::string input = dem::test::read_bytes(dir + "/particles.csv") + dem::test::read_bytes(dir + "/sample.h5") +
+                              dem::test::read_bytes(dir + "/" + scene);
+    for (const char* force : {"", " --force"}) {
+      const auto r = dem_stderr("run '" + dir + "/" + scene + "' --out '" + out + "'" + force);
+      INFO(r.out);
+      CHECK(r.exit_code == 2);
+      CHECK_THAT(r.out, Catch::Matchers::Contains("error: --out " + out) && Catch::Matchers::Contains(expected) &&
+                            Catch::Matchers::Contains("nothing was run"));
+    }
+    CHECK(dem::test::read_bytes(dir + "/particles.csv") + dem::test::read_bytes(dir + "/sample.h5") +
+              dem::test::read_bytes(dir + "/" + scene) == input);
+  };
+  for (const std::string& out : {dir + "/particles.csv", dir + "/./particles.csv", dir + "/linked/particles.csv"})
+    refused("csv.yaml", out, "is particles.csv, a file this run reads");
+  fs::create_directory(dir + "/sub");
+  for (const std::string& out : {dir + "/sample.h5", dir + "/sub/../sample.h5", dir + "/linked/sample.h5", dir + "/hard.h5"})
+    refused("state.yaml", out, "is particles.state, a file this run reads");
+  refused("state.yaml", dir + "/state.yaml", "is the scene file");
+  refused("csv.yaml", dir + "/linked/csv.yaml", "is the scene file");
+  // Every file of --out's family (its partial result, checkpoint, lock, XDMF view, ...) named like
+  // the CSV the scene reads.
+  for (const dem::FamilyFile& f : dem::result_family(dir + "/x.h5")) {
+    if (f.path == dir + "/x.h5") continue;
+    const std::string name = fs::path(f.path).filename().string();
+    fs::copy_file(dir + "/particles.csv", f.path);
+    std::string text = dem::test::read_bytes(dir + "/csv.yaml");
+    text.replace(text.find("csv: particles.csv"), 18, "csv: " + name);
+    dem::test::write_text(dir + "/family.yaml", text);
+    refused("family.yaml", dir + "/x.h5", f.path + " (" + f.role + ") would replace particles.csv");
+    fs::remove(f.path);
+  }
+}
+
+TEST_CASE("dem run refuses an --out that is not a regular file, or whose companion files are not", "[run][cli][input]") {
+  // `--out /dev/null` replaced the device node with an HDF5 file (as root). Every kind of
+  // non-regular file is refused, for --out and for every file a run writes beside it (a FIFO
+  // blocks, a symbolic link would be written through).
+  if (!have_dem()) return;
+  const std::string dir = dem::test::scratch_dir("cli_out_kind");
+  dem::test::write_text(dir + "/s.yaml", dem::test::tiny_scene(tiny_stage));
+  dem::test::write_text(dir + "/victim.txt", "not to be touched\n");
+  fs::create_directory(dir + "/folder.h5");
+  REQUIRE(mkfifo((dir + "/fifo.h5").c_str(), 0644) == 0);
+  fs::create_symlink(dir + "/victim.txt", dir + "/link.h5");
+  fs::create_symlink(dir + "/nothing.txt", dir + "/dangling.h5");
+  const auto refused = [&](const std::string& out, const std::string& expected) {
+    const auto r = dem_stderr("run '" + dir + "/s.yaml' --out '" + out + "' --force");
+    INFO(r.out);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.out, Catch::Matchers::Contains("error: --out " + out) && Catch::Matchers::Contains(expected) &&
+                          Catch::Matchers::Contains("nothing was run"));
+  };
+  refused("/dev/null", "is a character device, not a regular file");
+  CHECK(fs::is_character_file("/dev/null"));
+  refused(dir + "/folder.h5", "is a directory, not a file name");
+  refused(dir + "/fifo.h5", "is a FIFO (named pipe), not a regular file");
+  refused(dir + "/link.h5", "is a symbolic link, not a regular file");
+  refused(dir + "/dangling.h5", "is a symbolic link, not a regular file");
+  CHECK_FALSE(fs::exists(dir + "/nothing.txt"));
+  for (const dem::FamilyFile& f : dem::result_family(dir + "/r.h5")) {
+    if (f.path == dir + "/r.h5") continue;
+    INFO(f.path);
+    REQUIRE(mkfifo(f.path.c_str(), 0644) == 0);
+    refused(dir + "/r.h5", f.path + " (" + f.role + ") is a FIFO (named pipe), not a regular file");
+    fs::remove(f.path);
+    fs::create_symlink(dir + "/victim.txt", f.path);
+    refused(dir + "/r.h5", f.path + " (" + f.role + ") is a symbolic link, not a regular file");
+    fs::remove(f.path);
+  }
+  CHECK(dem::test::read_bytes(dir + "/victim.txt") == "not to be touched\n");
+  CHECK_FALSE(fs::exists(dir + "/r.h5"));
+}
+
+TEST_CASE("dem run replaces an existing result of another scene, or any other file, only with --force", "[run][cli][input]") {
+  if (!have_dem()) return;
+  const std::string dir = dem::test::scratch_dir("cli_force");
+  dem::test::write_text(dir + "/s.yaml", dem::test::tiny_scene(tiny_stage));
+  const std::string out = dir + "/r.h5";
+  const auto run = [&](const std::string& args) { return dem_stderr("run '" + dir + "/s.yaml' --out '" + out + "' --quiet " + args); };
+  REQUIRE(run("").exit_code == 0);
+  CHECK(run("").exit_code == 0);  // the same scene again: no --force needed
+  const auto needs_force = [&](const std::string& args, const std::string& holds) {
+    const std::string before = dem::test::read_bytes(out);
+    const auto r = run(args);
+    INFO(args << "\n" << r.out);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.out, Catch::Matchers::Contains("error: --out " + out + " holds " + holds) &&
+                          Catch::Matchers::Contains("give --force to replace it"));
+    CHECK(dem::test::read_bytes(out) == before);
+    CHECK_FALSE(fs::exists(out + ".lock"));
+    CHECK(run(args + " --force").exit_code == 0);
+  };
+  needs_force("--set particles.lattice.seed=2", "the complete result of another scene (of " + dir + "/s.yaml, its resolved scene differs");
+  needs_force("", "the complete result of another scene");  // back from seed 2 to seed 1
+  needs_force("--input-hash abc", "the complete result of another scene (of " + dir + "/s.yaml, its input hash '' differs from this run's 'abc')");
+  CHECK(run("--input-hash abc").exit_code == 0);
+  dem::test::write_text(out, "my notes\n");
+  needs_force("", "a file that is not a dem result");
+  // A result at the final name that is not complete (a copy of a partial result, say).
+  REQUIRE(dem_stderr("run '" + dir + "/s.yaml' --out '" + dir + "/other.h5' --quiet").exit_code == 0);
+  {
+    dem::h5::Handle f = dem::h5::open_file_write(dir + "/other.h5");
+    dem::h5::set_attribute(f, "status", std::string("failed: a test"));
+  }
+  fs::copy_file(dir + "/other.h5", out, fs::copy_options::overwrite_existing);
+  needs_force("", "a result with status 'failed: a test'");
 }
