@@ -158,9 +158,17 @@ int decisions(const std::vector<ManifestLine>& manifest, const std::vector<std::
       for (const auto& [density, f] : densities) of_seed[density] = validation::load_density(f.preparation, f.tests, missing);
       readings[reading].emplace_back("seed" + seed, std::move(of_seed));
     }
+  // The paper study's ensemble (full size), if given: the verdicts and causes are judged on it.
+  std::vector<validation::Sample> full_samples;
+  std::map<std::string, validation::RowResult> full;
+  if (!ensemble.empty()) {
+    std::vector<std::string> missing_ensemble;
+    full_samples = validation::load_samples(ensemble, {"loose", "medium", "dense"}, missing_ensemble);
+    for (const validation::Row& r : rows) full[r.name] = validation::evaluate(r, full_samples);
+  }
   std::vector<validation::RowDecision> decided;
   try {
-    decided = validation::decide(rows, readings, order, baseline);
+    decided = validation::decide(rows, readings, order, baseline, full);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "compare-runs: %s\n", e.what());
     return 1;
@@ -178,7 +186,10 @@ int decisions(const std::vector<ManifestLine>& manifest, const std::vector<std::
   md << "Readings (each one change from the baseline, `pipeline/studies/decisions.yaml`):\n\n| reading | settings |\n|---|---|\n";
   for (const std::string& r : order) md << "| " << cell(r) << " | " << cell(settings[r]) << " |\n";
   md << "\nEach cell: the shift of the ensemble mean from the baseline's, in baseline standard deviations, and the verdict "
-        "under that reading (✅ consistent, ❌ inconsistent, — not judged).\n";
+        "under that reading (✅ consistent, ❌ inconsistent, — not judged)"
+     << (full.empty() ? std::string(".\n")
+                      : std::string(" of the paper study's full-size ensemble with that shift of the mean applied to each of its "
+                                    "samples; the baseline column gives this study's mean ± sd and the full-size ensemble's verdict.\n"));
   for (const std::string& g : groups) {
     md << "\n### " << g << "\n\n![tornado chart: " << g << "](tornado_" << file_safe(g) << ".png)\n\n| row | baseline: mean ± sd | ";
     for (const std::string& r : others) md << cell(r) << " | ";
@@ -229,24 +240,24 @@ int decisions(const std::vector<ManifestLine>& manifest, const std::vector<std::
       const validation::RowDecision& d = **it;
       md << "| " << cell(d.row.name) << " | "
          << (d.baseline.valued ? number(d.baseline.spread.mean) + (d.baseline.valued > 1 ? " ± " + number(d.baseline.spread.sd) : "") : "—")
-         << " " << verdict_mark(d.baseline.verdict) << " | ";
+         << " " << verdict_mark(d.full ? d.full->verdict : d.baseline.verdict) << " | ";
       for (const auto& e : d.readings)
-        md << (e.shift_sd && std::isfinite(*e.shift_sd) ? signed_fixed(*e.shift_sd) : "—") << " " << verdict_mark(e.result.verdict) << " | ";
+        md << (e.shift_sd && std::isfinite(*e.shift_sd) ? signed_fixed(*e.shift_sd) : "—") << " "
+           << verdict_mark(d.full ? (e.full ? e.full->verdict : validation::Verdict::NotJudged) : e.result.verdict) << " | ";
       md << cell(d.explanation) << " |\n";
     }
   }
   // The size check: the baseline of this study against the paper study's ensemble (its own
   // sample size), row by row, in units of the paper ensemble's standard deviation.
   if (!ensemble.empty()) {
-    std::vector<std::string> missing_ensemble;
-    const auto samples = validation::load_samples(ensemble, {"loose", "medium", "dense"}, missing_ensemble);
+    const auto& samples = full_samples;
     md << "\n### Size check: this study's baseline against the paper study's ensemble\n\n"
        << "The same rows on the paper study's samples (" << samples.size() << " per density, its size) and on this study's "
        << "baseline; the difference of the means in units of the paper ensemble's standard deviation, and both verdicts. "
        << "A reading's shift is trusted at this study's size where the two agree.\n\n"
        << "| row | paper study: mean ± sd | this study's baseline: mean ± sd | difference / sd | verdicts |\n|---|---|---|---|---|\n";
     for (const validation::RowDecision& d : decided) {
-      const validation::RowResult big = validation::evaluate(d.row, samples);
+      const validation::RowResult& big = *d.full;
       const auto ms = [](const validation::RowResult& r) {
         return r.valued ? number(r.spread.mean) + (r.valued > 1 ? " ± " + number(r.spread.sd) : "") : std::string("—");
       };

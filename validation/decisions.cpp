@@ -36,7 +36,8 @@ double gap(const RowResult& r) {
 }  // namespace
 
 std::vector<RowDecision> decide(const std::vector<Row>& rows, const std::map<std::string, ReadingResults>& readings,
-                                const std::vector<std::string>& order, const std::string& baseline) {
+                                const std::vector<std::string>& order, const std::string& baseline,
+                                const std::map<std::string, RowResult>& full) {
   const auto base = readings.find(baseline);
   if (base == readings.end()) throw std::runtime_error("no results of the baseline reading '" + baseline + "'");
   std::vector<RowDecision> out;
@@ -44,14 +45,18 @@ std::vector<RowDecision> decide(const std::vector<Row>& rows, const std::map<std
     RowDecision d;
     d.row = row;
     d.baseline = evaluate_on(row, base->second);
+    if (const auto f = full.find(row.name); f != full.end()) d.full = f->second;
+    const Verdict reference = d.full ? d.full->verdict : d.baseline.verdict;
     for (const std::string& name : order) {
       if (name == baseline) continue;
       const auto it = readings.find(name);
-      ReadingEffect e{name, it == readings.end() ? RowResult{} : evaluate_on(row, it->second), std::nullopt};
+      ReadingEffect e{name, it == readings.end() ? RowResult{} : evaluate_on(row, it->second), std::nullopt, std::nullopt};
       if (e.result.valued > 0 && d.baseline.valued > 1 && d.baseline.spread.sd > 0)
         e.shift_sd = (e.result.spread.mean - d.baseline.spread.mean) / d.baseline.spread.sd;
-      if (d.baseline.verdict == Verdict::Inconsistent && e.result.verdict == Verdict::Consistent)
-        d.made_consistent_by.push_back(name);
+      if (d.full && e.result.valued > 0 && d.baseline.valued > 0)
+        e.full = shifted(row, *d.full, e.result.spread.mean - d.baseline.spread.mean);
+      const Verdict under = d.full ? (e.full ? e.full->verdict : Verdict::NotJudged) : e.result.verdict;
+      if (reference == Verdict::Inconsistent && under == Verdict::Consistent) d.made_consistent_by.push_back(name);
       d.readings.push_back(std::move(e));
     }
     d.explanation = explain(d);
@@ -61,34 +66,42 @@ std::vector<RowDecision> decide(const std::vector<Row>& rows, const std::map<std
 }
 
 std::string explain(const RowDecision& d) {
-  if (d.baseline.verdict == Verdict::NotJudged) return "not judged: fewer than 2 samples with a value";
-  if (d.baseline.verdict == Verdict::Consistent)
-    return "consistent at the baseline: the paper's value lies within the scatter of one sample";
+  const RowResult& base = d.full ? *d.full : d.baseline;
+  const std::string where = d.full ? "the full-size ensemble" : "the baseline";
+  if (base.verdict == Verdict::NotJudged) return "not judged: fewer than 2 samples with a value";
+  if (base.verdict == Verdict::Consistent) return "consistent on " + where + " (within the scatter of one sample)";
   if (!d.made_consistent_by.empty()) {
     std::string s = "consistent under ";
-    for (std::size_t i = 0; i < d.made_consistent_by.size(); ++i) s += (i ? ", " : "") + d.made_consistent_by[i];
+    for (std::size_t i = 0; i < d.made_consistent_by.size(); ++i) {
+      s += (i ? ", " : "") + d.made_consistent_by[i];
+      for (const ReadingEffect& e : d.readings)
+        if (e.reading == d.made_consistent_by[i] && e.shift_sd) s += " (" + fixed(*e.shift_sd) + " sd)";
+    }
+    if (d.full) s += ", its shift of the mean applied to the full-size ensemble";
     return s;
   }
   if (d.row.rule == "majority") {  // a trend: which reading makes it hold in the most samples
     const ReadingEffect* best = nullptr;
     auto share = [](const RowResult& r) { return r.valued ? static_cast<double>(r.holds) / r.valued : 0.0; };
+    auto judged = [&](const ReadingEffect& e) -> const RowResult& { return d.full && e.full ? *e.full : e.result; };
     for (const ReadingEffect& e : d.readings)
-      if (e.result.valued > 0 && (!best || share(e.result) > share(best->result))) best = &e;
-    std::string s = "unexplained: no reading makes it hold in more than half of the samples; at the baseline it holds in " +
-                    std::to_string(d.baseline.holds) + " of " + std::to_string(d.baseline.valued);
+      if (e.result.valued > 0 && (!best || share(judged(e)) > share(judged(*best)))) best = &e;
+    std::string s = "unexplained: no reading makes it hold in more than half of the samples; on " + where + " it holds in " +
+                    std::to_string(base.holds) + " of " + std::to_string(base.valued);
     if (best)
-      s += "; most: " + best->reading + " (" + std::to_string(best->result.holds) + " of " + std::to_string(best->result.valued) +
+      s += "; most: " + best->reading + " (" + std::to_string(judged(*best).holds) + " of " + std::to_string(judged(*best).valued) +
            (best->shift_sd ? ", mean shifted " + fixed(*best->shift_sd) + " sd" : std::string()) + ")";
     return s;
   }
   // Unexplained: say which reading closes most of the gap between our interval and the paper.
-  const double base_gap = gap(d.baseline);
+  const double base_gap = gap(base);
+  auto judged = [&](const ReadingEffect& e) -> const RowResult& { return d.full && e.full ? *e.full : e.result; };
   const ReadingEffect* best = nullptr;
   for (const ReadingEffect& e : d.readings)
-    if (e.result.verdict != Verdict::NotJudged && (!best || gap(e.result) < gap(best->result))) best = &e;
-  std::string s = "unexplained: no reading makes it consistent; the baseline's interval misses the paper by " + fixed(base_gap, 3);
+    if (judged(e).verdict != Verdict::NotJudged && (!best || gap(judged(e)) < gap(judged(*best)))) best = &e;
+  std::string s = "unexplained: no reading makes it consistent; the interval of " + where + " misses the paper by " + fixed(base_gap, 3);
   if (best) {
-    s += "; closest: " + best->reading + " (misses by " + fixed(gap(best->result), 3);
+    s += "; closest: " + best->reading + " (misses by " + fixed(gap(judged(*best)), 3);
     if (best->shift_sd) s += ", mean shifted " + fixed(*best->shift_sd) + " sd";
     s += ")";
   }

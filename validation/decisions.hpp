@@ -18,19 +18,26 @@ struct ReadingEffect {
   std::string reading;
   RowResult result;
   std::optional<double> shift_sd;  // (mean - baseline mean) / baseline sd; none without both
+  std::optional<RowResult> full;   // the full-size ensemble with this reading's shift of the mean applied
 };
 
 struct RowDecision {
   Row row;
   RowResult baseline;
+  std::optional<RowResult> full;  // the row on the full-size ensemble (the paper study), if given
   std::vector<ReadingEffect> readings;  // every reading but the baseline, in the study's order
   std::vector<std::string> made_consistent_by;  // readings under which an inconsistent row is consistent
   std::string explanation;
 };
 
 // Evaluates every row on every reading; `order` lists the readings, the baseline among them.
+// With `full` (row name -> the row on the full-size ensemble of the paper study), a row's verdict
+// and its causes are those of that ensemble: each reading's shift of the mean, measured here, is
+// applied to its samples and the row judged again. The decisions study is smaller than the paper
+// study (its scatter is larger), so "consistent here" alone would excuse misses of the full size.
 std::vector<RowDecision> decide(const std::vector<Row>& rows, const std::map<std::string, ReadingResults>& readings,
-                                const std::vector<std::string>& order, const std::string& baseline);
+                                const std::vector<std::string>& order, const std::string& baseline,
+                                const std::map<std::string, RowResult>& full = {});
 
 // The sentence that explains a row: consistent at the baseline; consistent under some readings;
 // or unexplained, with the reading that moves it most towards the paper and by how much.

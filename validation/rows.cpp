@@ -44,19 +44,16 @@ std::vector<Row> load_references(const std::string& file, const std::string& pro
   return rows;
 }
 
-RowResult evaluate(const Row& row, const std::vector<std::pair<std::string, const DensityResults*>>& samples) {
+RowResult judge_values(const Row& row, std::vector<RowResult::PerSample> samples) {
   RowResult out;
   out.paper = paper_region(row.check, row.reference, row.tolerance);
   std::vector<double> values;
-  for (const auto& [name, results] : samples) {
-    Measured m = results ? compute({row.quantity, row.density, row.cycle, row.from_cycle, row.to_cycle, row.test}, *results)
-                         : Measured{std::nullopt, "no results"};
-    if (m.value) {
-      values.push_back(*m.value);
-      out.holds += out.paper.contains(*m.value);
+  for (const RowResult::PerSample& ps : samples)
+    if (ps.measured.value) {
+      values.push_back(*ps.measured.value);
+      out.holds += out.paper.contains(*ps.measured.value);
     }
-    out.samples.push_back({name, std::move(m)});
-  }
+  out.samples = std::move(samples);
   out.valued = static_cast<int>(values.size());
   out.spread = spread(values);
   if (row.rule == "majority")
@@ -64,6 +61,21 @@ RowResult evaluate(const Row& row, const std::vector<std::pair<std::string, cons
   else
     out.verdict = judge(out.spread, out.paper);
   return out;
+}
+
+RowResult shifted(const Row& row, const RowResult& r, double by) {
+  std::vector<RowResult::PerSample> samples = r.samples;
+  for (RowResult::PerSample& ps : samples)
+    if (ps.measured.value) *ps.measured.value += by;
+  return judge_values(row, std::move(samples));
+}
+
+RowResult evaluate(const Row& row, const std::vector<std::pair<std::string, const DensityResults*>>& samples) {
+  std::vector<RowResult::PerSample> values;
+  for (const auto& [name, results] : samples)
+    values.push_back({name, results ? compute({row.quantity, row.density, row.cycle, row.from_cycle, row.to_cycle, row.test}, *results)
+                                    : Measured{std::nullopt, "no results"}});
+  return judge_values(row, std::move(values));
 }
 
 RowResult evaluate(const Row& row, const std::vector<Sample>& samples) {

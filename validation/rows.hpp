@@ -40,6 +40,13 @@ struct RowResult {
   int valued = 0;             // samples with a value
 };
 
+// The spread, the samples that hold and the verdict of a row's per-sample values.
+RowResult judge_values(const Row& row, std::vector<RowResult::PerSample> samples);
+
+// `r` with every sample's value moved by `by`, judged again: what an ensemble would show if a
+// reading shifted each of its samples by the shift the reading caused in another ensemble.
+RowResult shifted(const Row& row, const RowResult& r, double by);
+
 // `densities` of each sample: the sample's name and its results for the row's density.
 RowResult evaluate(const Row& row, const std::vector<std::pair<std::string, const DensityResults*>>& samples);
 

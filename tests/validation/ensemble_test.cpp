@@ -156,12 +156,12 @@ TEST_CASE("decisions: shifts in baseline standard deviations and the reading tha
   CHECK(*d[0].readings[1].shift_sd == Approx(-6.0));
   CHECK(d[0].baseline.verdict == Verdict::Consistent);
   CHECK(d[0].readings[1].result.verdict == Verdict::Inconsistent);
-  CHECK(d[0].explanation.rfind("consistent at the baseline", 0) == 0);
+  CHECK(d[0].explanation.rfind("consistent on the baseline", 0) == 0);
   // With "denser" as the baseline the row is inconsistent, and the two other readings explain it.
   d = validation::decide({row}, readings, {"denser", "baseline", "looser"}, "denser");
   CHECK(d[0].baseline.verdict == Verdict::Inconsistent);
   CHECK(d[0].made_consistent_by == std::vector<std::string>{"baseline", "looser"});
-  CHECK(d[0].explanation == "consistent under baseline, looser");
+  CHECK(d[0].explanation == "consistent under baseline (6.00 sd), looser (8.00 sd)");
   // A paper value no reading reaches: unexplained, naming the reading that comes closest.
   row.reference = 0.90;
   d = validation::decide({row}, readings, {"denser", "baseline", "looser"}, "denser");
@@ -169,6 +169,26 @@ TEST_CASE("decisions: shifts in baseline standard deviations and the reading tha
   CHECK(d[0].explanation.find("unexplained") == 0);
   CHECK(d[0].explanation.find("closest: looser") != std::string::npos);
   CHECK_THROWS(validation::decide({row}, readings, {"x"}, "x"));
+
+  // Judged on a full-size ensemble: its samples 0.690, 0.691, 0.692 (sd 0.001, interval
+  // [0.686, 0.696]) miss 0.73 +/- 0.005 although this study's baseline is consistent (its scatter
+  // is larger); "looser" shifts the mean by +0.02 (to 0.711: still a miss), a reading of +0.04
+  // would reach it. The verdicts and causes are the full-size ensemble's.
+  row.reference = 0.73;
+  validation::RowResult big;
+  for (int i = 0; i < 3; ++i) big.samples.push_back({"seed" + std::to_string(i + 1), {0.690 + 0.001 * i, ""}});
+  big = validation::judge_values(row, big.samples);
+  REQUIRE(big.verdict == Verdict::Inconsistent);
+  std::map<std::string, validation::ReadingResults> more = readings;
+  more["loosest"] = reading(0.04);
+  d = validation::decide({row}, more, {"baseline", "looser", "loosest"}, "baseline", {{row.name, big}});
+  REQUIRE(d[0].full);
+  CHECK(d[0].baseline.verdict == Verdict::Consistent);  // this study's own baseline ...
+  CHECK(d[0].readings[0].full->verdict == Verdict::Inconsistent);  // ... but the full size is judged
+  CHECK(d[0].readings[0].full->spread.mean == Approx(0.711));
+  CHECK(d[0].readings[1].full->verdict == Verdict::Consistent);
+  CHECK(d[0].made_consistent_by == std::vector<std::string>{"loosest"});
+  CHECK(d[0].explanation.find("consistent under loosest (4.00 sd)") == 0);
 }
 
 TEST_CASE("a trend judged by the majority rule: it must hold in more than half of the samples", "[ensemble]") {
