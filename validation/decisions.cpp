@@ -4,6 +4,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "ensemble.hpp"
+
 namespace validation {
 
 namespace {
@@ -55,8 +57,17 @@ std::vector<RowDecision> decide(const std::vector<Row>& rows, const std::map<std
         e.shift_sd = (e.result.spread.mean - d.baseline.spread.mean) / d.baseline.spread.sd;
       if (d.full && e.result.valued > 0 && d.baseline.valued > 0)
         e.full = shifted(row, *d.full, e.result.spread.mean - d.baseline.spread.mean);
+      const Spread& b = d.baseline.spread;
+      const Spread& r = e.result.spread;
+      if (b.n > 1 && r.n > 1) {
+        const double se = std::sqrt(b.sd * b.sd / b.n + r.sd * r.sd / r.n);
+        const double diff = std::abs(r.mean - b.mean);
+        if (se > 0) e.t = diff / se;
+        e.resolved = se > 0 ? *e.t > t_quantile(0.95, b.n + r.n - 2) : diff > 0;
+      }
       const Verdict under = d.full ? (e.full ? e.full->verdict : Verdict::NotJudged) : e.result.verdict;
-      if (reference == Verdict::Inconsistent && under == Verdict::Consistent) d.made_consistent_by.push_back(name);
+      if (reference == Verdict::Inconsistent && under == Verdict::Consistent)
+        (e.resolved ? d.made_consistent_by : d.unresolved_by).push_back(name);
       d.readings.push_back(std::move(e));
     }
     d.explanation = explain(d);
@@ -75,10 +86,22 @@ std::string explain(const RowDecision& d) {
     for (std::size_t i = 0; i < d.made_consistent_by.size(); ++i) {
       s += (i ? ", " : "") + d.made_consistent_by[i];
       for (const ReadingEffect& e : d.readings)
-        if (e.reading == d.made_consistent_by[i] && e.shift_sd) s += " (" + fixed(*e.shift_sd) + " sd)";
+        if (e.reading == d.made_consistent_by[i] && e.shift_sd)
+          s += " (" + fixed(*e.shift_sd) + " sd" + (e.t ? ", t = " + fixed(*e.t) : std::string()) + ")";
     }
     if (d.full) s += ", its shift of the mean applied to the full-size ensemble";
     return s;
+  }
+  std::string unresolved;
+  if (!d.unresolved_by.empty()) {
+    unresolved = "; would be consistent under ";
+    for (std::size_t i = 0; i < d.unresolved_by.size(); ++i) {
+      unresolved += (i ? ", " : "") + d.unresolved_by[i];
+      for (const ReadingEffect& e : d.readings)
+        if (e.reading == d.unresolved_by[i] && e.shift_sd)
+          unresolved += " (" + fixed(*e.shift_sd) + " sd" + (e.t ? ", t = " + fixed(*e.t) : std::string()) + ")";
+    }
+    unresolved += ", but the shift is not resolved by the decisions study's samples (one-sided t test, 95 %)";
   }
   if (d.row.rule == "majority") {  // a trend: which reading makes it hold in the most samples
     const ReadingEffect* best = nullptr;
@@ -86,12 +109,17 @@ std::string explain(const RowDecision& d) {
     auto judged = [&](const ReadingEffect& e) -> const RowResult& { return d.full && e.full ? *e.full : e.result; };
     for (const ReadingEffect& e : d.readings)
       if (e.result.valued > 0 && (!best || share(judged(e)) > share(judged(*best)))) best = &e;
-    std::string s = "unexplained: no reading makes it hold in more than half of the samples; on " + where + " it holds in " +
-                    std::to_string(base.holds) + " of " + std::to_string(base.valued);
+    // Within scatter: the trend holds in too few samples, but the interval of one sample reaches
+    // the paper's region, so a single sample (the paper's) could show it.
+    const bool scatter = judge(base.spread, base.paper) == Verdict::Consistent;
+    std::string s = std::string(scatter ? "no reading does: within scatter (the interval of one sample reaches the paper's "
+                                          "region, so one sample can show it)"
+                                        : "unexplained: no reading makes it hold in more than half of the samples") +
+                    "; on " + where + " it holds in " + std::to_string(base.holds) + " of " + std::to_string(base.valued);
     if (best)
       s += "; most: " + best->reading + " (" + std::to_string(judged(*best).holds) + " of " + std::to_string(judged(*best).valued) +
            (best->shift_sd ? ", mean shifted " + fixed(*best->shift_sd) + " sd" : std::string()) + ")";
-    return s;
+    return s + unresolved;
   }
   // Unexplained: say which reading closes most of the gap between our interval and the paper.
   const double base_gap = gap(base);
@@ -105,7 +133,7 @@ std::string explain(const RowDecision& d) {
     if (best->shift_sd) s += ", mean shifted " + fixed(*best->shift_sd) + " sd";
     s += ")";
   }
-  return s;
+  return s + unresolved;
 }
 
 }  // namespace validation

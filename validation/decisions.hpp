@@ -19,6 +19,12 @@ struct ReadingEffect {
   RowResult result;
   std::optional<double> shift_sd;  // (mean - baseline mean) / baseline sd; none without both
   std::optional<RowResult> full;   // the full-size ensemble with this reading's shift of the mean applied
+  // t = |mean - baseline mean| / sqrt(sd_b^2/n_b + sd_r^2/n_r); the shift is resolved when t
+  // exceeds the one-sided 95 % quantile t(0.95, n_b + n_r - 2) (the question asked of a reading is
+  // directional: does it move the row towards the paper?). A shift below that is within the
+  // scatter of the two ensembles and explains nothing.
+  std::optional<double> t;
+  bool resolved = false;
 };
 
 struct RowDecision {
@@ -26,7 +32,8 @@ struct RowDecision {
   RowResult baseline;
   std::optional<RowResult> full;  // the row on the full-size ensemble (the paper study), if given
   std::vector<ReadingEffect> readings;  // every reading but the baseline, in the study's order
-  std::vector<std::string> made_consistent_by;  // readings under which an inconsistent row is consistent
+  std::vector<std::string> made_consistent_by;  // readings with a resolved shift under which an inconsistent row is consistent
+  std::vector<std::string> unresolved_by;       // readings that would make it consistent, but whose shift is within the scatter
   std::string explanation;
 };
 

@@ -161,7 +161,8 @@ TEST_CASE("decisions: shifts in baseline standard deviations and the reading tha
   d = validation::decide({row}, readings, {"denser", "baseline", "looser"}, "denser");
   CHECK(d[0].baseline.verdict == Verdict::Inconsistent);
   CHECK(d[0].made_consistent_by == std::vector<std::string>{"baseline", "looser"});
-  CHECK(d[0].explanation == "consistent under baseline (6.00 sd), looser (8.00 sd)");
+  // t = 0.06 / sqrt(2 x 0.01^2 / 3) = 7.35 and 0.08 / 0.008165 = 9.80, both above t(0.95, 4) = 2.13.
+  CHECK(d[0].explanation == "consistent under baseline (6.00 sd, t = 7.35), looser (8.00 sd, t = 9.80)");
   // A paper value no reading reaches: unexplained, naming the reading that comes closest.
   row.reference = 0.90;
   d = validation::decide({row}, readings, {"denser", "baseline", "looser"}, "denser");
@@ -181,14 +182,23 @@ TEST_CASE("decisions: shifts in baseline standard deviations and the reading tha
   REQUIRE(big.verdict == Verdict::Inconsistent);
   std::map<std::string, validation::ReadingResults> more = readings;
   more["loosest"] = reading(0.04);
-  d = validation::decide({row}, more, {"baseline", "looser", "loosest"}, "baseline", {{row.name, big}});
+  // "noisy" shifts the mean by as much, but its samples (0.66, 0.75, 0.84) scatter by 0.09: t =
+  // 0.04 / sqrt(0.01^2/3 + 0.09^2/3) = 0.77, not resolved, so it explains nothing although it
+  // would reach the paper.
+  more["noisy"] = reading(0.04);
+  for (int i = 0; i < 3; ++i) more["noisy"][static_cast<std::size_t>(i)].second["loose"].sample["void_ratio"] += 0.08 * (i - 1);
+  d = validation::decide({row}, more, {"baseline", "looser", "loosest", "noisy"}, "baseline", {{row.name, big}});
+  REQUIRE(d[0].readings[2].t);
+  CHECK(*d[0].readings[2].t == Approx(0.04 / std::sqrt(0.0001 / 3 + 0.0081 / 3)).epsilon(1e-6));
+  CHECK_FALSE(d[0].readings[2].resolved);
+  CHECK(d[0].unresolved_by == std::vector<std::string>{"noisy"});
   REQUIRE(d[0].full);
   CHECK(d[0].baseline.verdict == Verdict::Consistent);  // this study's own baseline ...
   CHECK(d[0].readings[0].full->verdict == Verdict::Inconsistent);  // ... but the full size is judged
   CHECK(d[0].readings[0].full->spread.mean == Approx(0.711));
   CHECK(d[0].readings[1].full->verdict == Verdict::Consistent);
   CHECK(d[0].made_consistent_by == std::vector<std::string>{"loosest"});
-  CHECK(d[0].explanation.find("consistent under loosest (4.00 sd)") == 0);
+  CHECK(d[0].explanation.find("consistent under loosest (4.00 sd, t = 4.90)") == 0);
 }
 
 TEST_CASE("a trend judged by the majority rule: it must hold in more than half of the samples", "[ensemble]") {
