@@ -221,21 +221,30 @@ int decisions(const std::vector<ManifestLine>& manifest, const std::vector<std::
        << "set terminal pngcairo size 1400," << 220 + 34 * of_group.size() * std::max<std::size_t>(1, others.size() / 3)
        << " font 'Sans,10'\nset output 'tornado_" << file_safe(g) << ".png'\n"
        << "set title \"" << g << ": shift of the ensemble mean by each reading (baseline standard deviations)\"\n"
-       << "set xlabel 'shift of the mean / baseline standard deviation'\nset grid xtics\nset key outside right\n"
-       << "set yrange [-0.6:" << of_group.size() - 0.4 << "]\nset ytics (";
+       << "set termoption noenhanced\n"
+       << "set xlabel 'shift of the mean / baseline standard deviation (bars beyond ±10 are cut and labelled with their value)'\n"
+       << "set grid xtics\nset key outside right\nset xrange [-11:11]\nclip(x) = x > 10 ? 10 : x < -10 ? -10 : x\n"
+       << "set yrange [-0.6:" << of_group.size() - 0.4 << "]\n";
+    // The row names as labels, not tic labels: a tic label is a format (its '%' would need
+    // doubling, and gnuplot cut long ones short).
+    std::size_t longest = 0;
     for (std::size_t i = 0; i < of_group.size(); ++i) {
       std::string label = of_group[i]->row.name;
-      std::string escaped;  // a tic label is a format: '%' must be doubled
-      for (char c : label) escaped += c == '"' ? std::string("'") : c == '%' ? std::string("%%") : std::string(1, c);
-      label = escaped;
-      gp << (i ? ", " : "") << "\"" << label << "\" " << i;
+      for (char& c : label)
+        if (c == '"') c = '\'';
+      longest = std::max(longest, label.size());
+      gp << "set label " << i + 1 << " \"" << label << "\" at graph -0.01, first " << i << " right\n";
     }
+    gp << "set lmargin " << longest * 9 / 10 + 2 << "\nset ytics (";
+    for (std::size_t i = 0; i < of_group.size(); ++i) gp << (i ? ", " : "") << "\"\" " << i;
     gp << ")\nset style fill solid 0.8 noborder\nset arrow from 0, graph 0 to 0, graph 1 nohead lc rgb 'black'\nplot ";
     for (std::size_t k = 0; k < others.size(); ++k)
-      gp << (k ? ", \\\n     " : "") << "'tornado_" << file_safe(g) << ".dat' using ($2 == " << k << " ? $3 / 2 : 1/0):($1 + "
-         << (static_cast<double>(k) - (static_cast<double>(others.size()) - 1) / 2) * h << "):(abs($3) / 2):(" << h / 2
+      gp << (k ? ", \\\n     " : "") << "'tornado_" << file_safe(g) << ".dat' using ($2 == " << k << " ? clip($3) / 2 : 1/0):($1 + "
+         << (static_cast<double>(k) - (static_cast<double>(others.size()) - 1) / 2) * h << "):(abs(clip($3)) / 2):(" << h / 2
          << ") with boxxyerror lc " << k + 1 << " title '" << others[k] << "'";
-    gp << "\n";
+    // The value of a cut bar, written at its end.
+    gp << ", \\\n     'tornado_" << file_safe(g) << ".dat' using (abs($3) > 10 ? clip($3) * 0.93 : 1/0):($1 + "
+       << "($2 - " << (static_cast<double>(others.size()) - 1) / 2 << ") * " << h << "):(sprintf('%+.0f', $3)) with labels font ',8' notitle\n";
     for (auto it = of_group.rbegin(); it != of_group.rend(); ++it) {
       const validation::RowDecision& d = **it;
       md << "| " << cell(d.row.name) << " | "

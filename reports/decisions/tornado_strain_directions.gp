@@ -2,18 +2,25 @@
 set terminal pngcairo size 1400,356 font 'Sans,10'
 set output 'tornado_strain_directions.png'
 set title "strain directions: shift of the ensemble mean by each reading (baseline standard deviations)"
-set xlabel 'shift of the mean / baseline standard deviation'
+set termoption noenhanced
+set xlabel 'shift of the mean / baseline standard deviation (bars beyond ±10 are cut and labelled with their value)'
 set grid xtics
 set key outside right
+set xrange [-11:11]
+clip(x) = x > 10 ? 10 : x < -10 ? -10 : x
 set yrange [-0.6:1.6]
-set ytics ("loose: strain increments turn towards the path from cycle 1 to 5 (degrees)" 0, "dense: strain increment directions independent of cycles (absolute change, degrees)" 1)
+set label 1 "loose: strain increments turn towards the path from cycle 1 to 5 (degrees)" at graph -0.01, first 0 right
+set label 2 "dense: strain increment directions independent of cycles (absolute change, degrees)" at graph -0.01, first 1 right
+set lmargin 76
+set ytics ("" 0, "" 1)
 set style fill solid 0.8 noborder
 set arrow from 0, graph 0 to 0, graph 1 nohead lc rgb 'black'
-plot 'tornado_strain_directions.dat' using ($2 == 0 ? $3 / 2 : 1/0):($1 + -0.35):(abs($3) / 2):(0.05) with boxxyerror lc 1 title 'grading_by_mass', \
-     'tornado_strain_directions.dat' using ($2 == 1 ? $3 / 2 : 1/0):($1 + -0.25):(abs($3) / 2):(0.05) with boxxyerror lc 2 title 'damping_local', \
-     'tornado_strain_directions.dat' using ($2 == 2 ? $3 / 2 : 1/0):($1 + -0.15):(abs($3) / 2):(0.05) with boxxyerror lc 3 title 'shear_prep_friction', \
-     'tornado_strain_directions.dat' using ($2 == 3 ? $3 / 2 : 1/0):($1 + -0.05):(abs($3) / 2):(0.05) with boxxyerror lc 4 title 'hold_ufr_1e-2', \
-     'tornado_strain_directions.dat' using ($2 == 4 ? $3 / 2 : 1/0):($1 + 0.05):(abs($3) / 2):(0.05) with boxxyerror lc 5 title 'rate_cap_0_25', \
-     'tornado_strain_directions.dat' using ($2 == 5 ? $3 / 2 : 1/0):($1 + 0.15):(abs($3) / 2):(0.05) with boxxyerror lc 6 title 'rate_cap_4', \
-     'tornado_strain_directions.dat' using ($2 == 6 ? $3 / 2 : 1/0):($1 + 0.25):(abs($3) / 2):(0.05) with boxxyerror lc 7 title 'test3_directions', \
-     'tornado_strain_directions.dat' using ($2 == 7 ? $3 / 2 : 1/0):($1 + 0.35):(abs($3) / 2):(0.05) with boxxyerror lc 8 title 'vertices_printed'
+plot 'tornado_strain_directions.dat' using ($2 == 0 ? clip($3) / 2 : 1/0):($1 + -0.35):(abs(clip($3)) / 2):(0.05) with boxxyerror lc 1 title 'grading_by_mass', \
+     'tornado_strain_directions.dat' using ($2 == 1 ? clip($3) / 2 : 1/0):($1 + -0.25):(abs(clip($3)) / 2):(0.05) with boxxyerror lc 2 title 'damping_local', \
+     'tornado_strain_directions.dat' using ($2 == 2 ? clip($3) / 2 : 1/0):($1 + -0.15):(abs(clip($3)) / 2):(0.05) with boxxyerror lc 3 title 'shear_prep_friction', \
+     'tornado_strain_directions.dat' using ($2 == 3 ? clip($3) / 2 : 1/0):($1 + -0.05):(abs(clip($3)) / 2):(0.05) with boxxyerror lc 4 title 'hold_ufr_1e-2', \
+     'tornado_strain_directions.dat' using ($2 == 4 ? clip($3) / 2 : 1/0):($1 + 0.05):(abs(clip($3)) / 2):(0.05) with boxxyerror lc 5 title 'rate_cap_0_25', \
+     'tornado_strain_directions.dat' using ($2 == 5 ? clip($3) / 2 : 1/0):($1 + 0.15):(abs(clip($3)) / 2):(0.05) with boxxyerror lc 6 title 'rate_cap_4', \
+     'tornado_strain_directions.dat' using ($2 == 6 ? clip($3) / 2 : 1/0):($1 + 0.25):(abs(clip($3)) / 2):(0.05) with boxxyerror lc 7 title 'test3_directions', \
+     'tornado_strain_directions.dat' using ($2 == 7 ? clip($3) / 2 : 1/0):($1 + 0.35):(abs(clip($3)) / 2):(0.05) with boxxyerror lc 8 title 'vertices_printed', \
+     'tornado_strain_directions.dat' using (abs($3) > 10 ? clip($3) * 0.93 : 1/0):($1 + ($2 - 3.5) * 0.1):(sprintf('%+.0f', $3)) with labels font ',8' notitle
