@@ -132,7 +132,10 @@ GP
 }
 pi_axes_off() { echo "unset arrow 1; unset arrow 2; unset arrow 3; unset label 1; unset label 2; unset label 3; set size noratio"; }
 run_gp() {   # run_gp NAME : runs $figs/NAME.gp, reports failures without stopping the other figures
-  if ! gnuplot "$figs/$1.gp" 2> "$tmp/gp.err"; then
+  # Paths in the script relative to the figure folder (it runs there): nothing of the machine that
+  # drew it ends up in the committed scripts.
+  sed -i "s#$figs/##g" "$figs/$1.gp"
+  if ! (cd "$figs" && gnuplot "$1.gp") 2> "$tmp/gp.err"; then
     echo "error: gnuplot failed for $1:" >&2; cat "$tmp/gp.err" >&2; FAILED=1
   elif grep -v -e 'Skipping data file' -e '^$' -e 'warning: empty' "$tmp/gp.err" | grep -q .; then
     sed 's/^/  gnuplot: /' "$tmp/gp.err" >&2

@@ -1,5 +1,5 @@
 set terminal pngcairo size 1100,800 font ",11" enhanced
-set output "/work/main/reports/convergence/error_vs_time.png"
+set output "error_vs_time.png"
 set grid lc rgb "#dddddd"
 set logscale xy
 set key bottom left box opaque font ",10"
@@ -20,7 +20,7 @@ set offsets graph 0.1, graph 0.3, graph 0.1, graph 0.1
 # columns of errors.dat: 5 coordination, 6 e0, 11 qp_slope (the quantities two samples agree on
 # within 10 %; see the seed2 row of table.md)
 max3(a, b, c) = (a > b ? (a > c ? a : c) : (b > c ? b : c))
-plot "/work/main/reports/convergence/front.dat" u 2:(100*$3) w l lw 2 lc rgb "#1f77b4" t "Pareto front (all quantities)", \
-  "/work/main/reports/convergence/errors.dat" u 2:($3 > 0 ? 100*$3 : NaN) w p pt 7 ps 1.2 lc rgb "#000000" t "largest error, all quantities", \
-  "/work/main/reports/convergence/errors.dat" u 2:($3 > 0 ? 100*$3 : NaN):1 w labels offset char 0.8,0.6 left font ",9" noenhanced notitle, \
-  "/work/main/reports/convergence/errors.dat" u 2:($3 > 0 ? 100*max3($5, $6, $11) : NaN) w p pt 6 ps 1.4 lc rgb "#d62728" t "largest error on e0, CN and the q/p slope"
+plot "front.dat" u 2:(100*$3) w l lw 2 lc rgb "#1f77b4" t "Pareto front (all quantities)", \
+  "errors.dat" u 2:($3 > 0 ? 100*$3 : NaN) w p pt 7 ps 1.2 lc rgb "#000000" t "largest error, all quantities", \
+  "errors.dat" u 2:($3 > 0 ? 100*$3 : NaN):1 w labels offset char 0.8,0.6 left font ",9" noenhanced notitle, \
+  "errors.dat" u 2:($3 > 0 ? 100*max3($5, $6, $11) : NaN) w p pt 6 ps 1.4 lc rgb "#d62728" t "largest error on e0, CN and the q/p slope"

@@ -45,5 +45,6 @@ plot "$out/front.dat" u 2:(100*\$3) w l lw 2 lc rgb "#1f77b4" t "Pareto front (a
   "$out/errors.dat" u 2:(\$3 > 0 ? 100*\$3 : NaN):1 w labels offset char 0.8,0.6 left font ",9" noenhanced notitle, \\
   "$out/errors.dat" u 2:(\$3 > 0 ? 100*max3(\$5, \$6, \$11) : NaN) w p pt 6 ps 1.4 lc rgb "#d62728" t "largest error on e0, CN and the q/p slope"
 GP
-gnuplot "$out/error_vs_time.gp"
+sed -i "s#$out/##g" "$out/error_vs_time.gp"   # paths relative to the section folder, where it runs
+(cd "$out" && gnuplot error_vs_time.gp)
 echo "convergence section written to $out" >&2

@@ -76,4 +76,5 @@ GP
   done
   echo "unset multiplot"
 } > "$figs/fig_energy.gp"
-gnuplot "$figs/fig_energy.gp"
+sed -i "s#$figs/##g" "$figs/fig_energy.gp"   # paths relative to the figure folder, where it runs
+(cd "$figs" && gnuplot fig_energy.gp)

@@ -1,5 +1,5 @@
 set terminal pngcairo size 1800,620 font ",11" enhanced
-set output "/work/main/reports/figures/fig05_qp_epsd.png"
+set output "fig05_qp_epsd.png"
 set grid lc rgb "#dddddd"
 set key top left box opaque samplen 2 spacing 1.1 font ",10"
 set tics font ",10"
@@ -9,26 +9,26 @@ set xlabel "ε_d (%)  (paper Eq. 4)"; set ylabel "stress ratio q/p"; set key bot
 
 set xrange [0:*]; set yrange [0:0.3]
 set title "(A) loose" font ",12"
-plot '/work/main/reports/figures/fig05_qp_epsd_loose_test1.dat' u 1:2 w l lw 1.4 lc rgb "#000000" t "Test 1", \
-  '/work/main/reports/figures/fig05_qp_epsd_loose_test2.dat' u 1:2 w l lw 1.4 lc rgb "#ff7f0e" t "Test 2", \
-  '/work/main/reports/figures/fig05_qp_epsd_loose_test3.dat' u 1:2 w l lw 1.4 lc rgb "#9467bd" t "Test 3", \
-  '/work/main/reports/figures/fig05_qp_epsd_loose_test4.dat' u 1:2 w l lw 1.4 lc rgb "#17a2b8" t "Test 4", \
-  '/work/main/reports/figures/fig05_qp_epsd_loose_test5.dat' u 1:2 w l lw 1.4 lc rgb "#8c564b" t "Test 5"
+plot 'fig05_qp_epsd_loose_test1.dat' u 1:2 w l lw 1.4 lc rgb "#000000" t "Test 1", \
+  'fig05_qp_epsd_loose_test2.dat' u 1:2 w l lw 1.4 lc rgb "#ff7f0e" t "Test 2", \
+  'fig05_qp_epsd_loose_test3.dat' u 1:2 w l lw 1.4 lc rgb "#9467bd" t "Test 3", \
+  'fig05_qp_epsd_loose_test4.dat' u 1:2 w l lw 1.4 lc rgb "#17a2b8" t "Test 4", \
+  'fig05_qp_epsd_loose_test5.dat' u 1:2 w l lw 1.4 lc rgb "#8c564b" t "Test 5"
 unset label 99
 set xrange [0:*]; set yrange [0:0.3]
 set title "(B) medium" font ",12"
-plot '/work/main/reports/figures/fig05_qp_epsd_medium_test1.dat' u 1:2 w l lw 1.4 lc rgb "#000000" t "Test 1", \
-  '/work/main/reports/figures/fig05_qp_epsd_medium_test2.dat' u 1:2 w l lw 1.4 lc rgb "#ff7f0e" t "Test 2", \
-  '/work/main/reports/figures/fig05_qp_epsd_medium_test3.dat' u 1:2 w l lw 1.4 lc rgb "#9467bd" t "Test 3", \
-  '/work/main/reports/figures/fig05_qp_epsd_medium_test4.dat' u 1:2 w l lw 1.4 lc rgb "#17a2b8" t "Test 4", \
-  '/work/main/reports/figures/fig05_qp_epsd_medium_test5.dat' u 1:2 w l lw 1.4 lc rgb "#8c564b" t "Test 5"
+plot 'fig05_qp_epsd_medium_test1.dat' u 1:2 w l lw 1.4 lc rgb "#000000" t "Test 1", \
+  'fig05_qp_epsd_medium_test2.dat' u 1:2 w l lw 1.4 lc rgb "#ff7f0e" t "Test 2", \
+  'fig05_qp_epsd_medium_test3.dat' u 1:2 w l lw 1.4 lc rgb "#9467bd" t "Test 3", \
+  'fig05_qp_epsd_medium_test4.dat' u 1:2 w l lw 1.4 lc rgb "#17a2b8" t "Test 4", \
+  'fig05_qp_epsd_medium_test5.dat' u 1:2 w l lw 1.4 lc rgb "#8c564b" t "Test 5"
 unset label 99
 set xrange [0:*]; set yrange [0:0.3]
 set title "(C) dense" font ",12"
-plot '/work/main/reports/figures/fig05_qp_epsd_dense_test1.dat' u 1:2 w l lw 1.4 lc rgb "#000000" t "Test 1", \
-  '/work/main/reports/figures/fig05_qp_epsd_dense_test2.dat' u 1:2 w l lw 1.4 lc rgb "#ff7f0e" t "Test 2", \
-  '/work/main/reports/figures/fig05_qp_epsd_dense_test3.dat' u 1:2 w l lw 1.4 lc rgb "#9467bd" t "Test 3", \
-  '/work/main/reports/figures/fig05_qp_epsd_dense_test4.dat' u 1:2 w l lw 1.4 lc rgb "#17a2b8" t "Test 4", \
-  '/work/main/reports/figures/fig05_qp_epsd_dense_test5.dat' u 1:2 w l lw 1.4 lc rgb "#8c564b" t "Test 5"
+plot 'fig05_qp_epsd_dense_test1.dat' u 1:2 w l lw 1.4 lc rgb "#000000" t "Test 1", \
+  'fig05_qp_epsd_dense_test2.dat' u 1:2 w l lw 1.4 lc rgb "#ff7f0e" t "Test 2", \
+  'fig05_qp_epsd_dense_test3.dat' u 1:2 w l lw 1.4 lc rgb "#9467bd" t "Test 3", \
+  'fig05_qp_epsd_dense_test4.dat' u 1:2 w l lw 1.4 lc rgb "#17a2b8" t "Test 4", \
+  'fig05_qp_epsd_dense_test5.dat' u 1:2 w l lw 1.4 lc rgb "#8c564b" t "Test 5"
 unset label 99
 unset multiplot

@@ -1,5 +1,5 @@
 set terminal pngcairo size 2250,1000 font ",11" enhanced
-set output "/work/main/reports/figures/fig09_all_tests_dense.png"
+set output "fig09_all_tests_dense.png"
 set grid lc rgb "#dddddd"
 set key top left box opaque samplen 2 spacing 1.1 font ",10"
 set tics font ",10"
@@ -15,63 +15,63 @@ set label 1 "σ_1" at 0,0.9*0.33 center font ",12" tc rgb "#555555"
 set label 2 "σ_2" at -0.87*0.33*0.8660254,-0.93*0.33*0.5 right font ",12" tc rgb "#555555"
 set label 3 "σ_3" at 0.87*0.33*0.8660254,-0.93*0.33*0.5 left font ",12" tc rgb "#555555"
 set title "dense, Test 1, cycle 1\narrows: Δε × 500  (0.1 on the axes = 0.02 % strain)" font ",11"
-plot '/work/main/reports/figures/fig03_test1_target.dat' u 1:2:3:4 w vectors nohead lw 3 lc rgb "#dddddd" t "target path", \
-  '/work/main/reports/figures/fig09_dense_test1_cycle1_path.dat' u 1:2 w l lw 1 lc rgb "#1f77b4" t "measured stress", \
-  '/work/main/reports/figures/fig09_dense_test1_cycle1.dat' u 1:2:($3*500):($4*500) w vectors head filled size graph 0.03,20 lw 2.2 lc rgb "#000000" t "strain increment of a leg", \
-  '/work/main/reports/figures/fig09_dense_test1_cycle1.dat' u ($1+$3*500):($2+$4*500):6 w labels offset char 0.6,0.6 font ",9" tc rgb "#000000" t ""
+plot 'fig03_test1_target.dat' u 1:2:3:4 w vectors nohead lw 3 lc rgb "#dddddd" t "target path", \
+  'fig09_dense_test1_cycle1_path.dat' u 1:2 w l lw 1 lc rgb "#1f77b4" t "measured stress", \
+  'fig09_dense_test1_cycle1.dat' u 1:2:($3*500):($4*500) w vectors head filled size graph 0.03,20 lw 2.2 lc rgb "#000000" t "strain increment of a leg", \
+  'fig09_dense_test1_cycle1.dat' u ($1+$3*500):($2+$4*500):6 w labels offset char 0.6,0.6 font ",9" tc rgb "#000000" t ""
 unset label 99
 set title "dense, Test 2, cycle 1\narrows: Δε × 1000  (0.1 on the axes = 0.01 % strain)" font ",11"
-plot '/work/main/reports/figures/fig03_test2_target.dat' u 1:2:3:4 w vectors nohead lw 3 lc rgb "#dddddd" t "target path", \
-  '/work/main/reports/figures/fig09_dense_test2_cycle1_path.dat' u 1:2 w l lw 1 lc rgb "#1f77b4" t "measured stress", \
-  '/work/main/reports/figures/fig09_dense_test2_cycle1.dat' u 1:2:($3*1000):($4*1000) w vectors head filled size graph 0.03,20 lw 2.2 lc rgb "#000000" t "strain increment of a leg", \
-  '/work/main/reports/figures/fig09_dense_test2_cycle1.dat' u ($1+$3*1000):($2+$4*1000):6 w labels offset char 0.6,0.6 font ",9" tc rgb "#000000" t ""
+plot 'fig03_test2_target.dat' u 1:2:3:4 w vectors nohead lw 3 lc rgb "#dddddd" t "target path", \
+  'fig09_dense_test2_cycle1_path.dat' u 1:2 w l lw 1 lc rgb "#1f77b4" t "measured stress", \
+  'fig09_dense_test2_cycle1.dat' u 1:2:($3*1000):($4*1000) w vectors head filled size graph 0.03,20 lw 2.2 lc rgb "#000000" t "strain increment of a leg", \
+  'fig09_dense_test2_cycle1.dat' u ($1+$3*1000):($2+$4*1000):6 w labels offset char 0.6,0.6 font ",9" tc rgb "#000000" t ""
 unset label 99
 set title "dense, Test 3, cycle 1\narrows: Δε × 1000  (0.1 on the axes = 0.01 % strain)" font ",11"
-plot '/work/main/reports/figures/fig03_test3_target.dat' u 1:2:3:4 w vectors nohead lw 3 lc rgb "#dddddd" t "target path", \
-  '/work/main/reports/figures/fig09_dense_test3_cycle1_path.dat' u 1:2 w l lw 1 lc rgb "#1f77b4" t "measured stress", \
-  '/work/main/reports/figures/fig09_dense_test3_cycle1.dat' u 1:2:($3*1000):($4*1000) w vectors head filled size graph 0.03,20 lw 2.2 lc rgb "#000000" t "strain increment of a leg", \
-  '/work/main/reports/figures/fig09_dense_test3_cycle1.dat' u ($1+$3*1000):($2+$4*1000):6 w labels offset char 0.6,0.6 font ",9" tc rgb "#000000" t ""
+plot 'fig03_test3_target.dat' u 1:2:3:4 w vectors nohead lw 3 lc rgb "#dddddd" t "target path", \
+  'fig09_dense_test3_cycle1_path.dat' u 1:2 w l lw 1 lc rgb "#1f77b4" t "measured stress", \
+  'fig09_dense_test3_cycle1.dat' u 1:2:($3*1000):($4*1000) w vectors head filled size graph 0.03,20 lw 2.2 lc rgb "#000000" t "strain increment of a leg", \
+  'fig09_dense_test3_cycle1.dat' u ($1+$3*1000):($2+$4*1000):6 w labels offset char 0.6,0.6 font ",9" tc rgb "#000000" t ""
 unset label 99
 set title "dense, Test 4, cycle 1\narrows: Δε × 1000  (0.1 on the axes = 0.01 % strain)" font ",11"
-plot '/work/main/reports/figures/fig03_test4_target.dat' u 1:2:3:4 w vectors nohead lw 3 lc rgb "#dddddd" t "target path", \
-  '/work/main/reports/figures/fig09_dense_test4_cycle1_path.dat' u 1:2 w l lw 1 lc rgb "#1f77b4" t "measured stress", \
-  '/work/main/reports/figures/fig09_dense_test4_cycle1.dat' u 1:2:($3*1000):($4*1000) w vectors head filled size graph 0.03,20 lw 2.2 lc rgb "#000000" t "strain increment of a leg", \
-  '/work/main/reports/figures/fig09_dense_test4_cycle1.dat' u ($1+$3*1000):($2+$4*1000):6 w labels offset char 0.6,0.6 font ",9" tc rgb "#000000" t ""
+plot 'fig03_test4_target.dat' u 1:2:3:4 w vectors nohead lw 3 lc rgb "#dddddd" t "target path", \
+  'fig09_dense_test4_cycle1_path.dat' u 1:2 w l lw 1 lc rgb "#1f77b4" t "measured stress", \
+  'fig09_dense_test4_cycle1.dat' u 1:2:($3*1000):($4*1000) w vectors head filled size graph 0.03,20 lw 2.2 lc rgb "#000000" t "strain increment of a leg", \
+  'fig09_dense_test4_cycle1.dat' u ($1+$3*1000):($2+$4*1000):6 w labels offset char 0.6,0.6 font ",9" tc rgb "#000000" t ""
 unset label 99
 set title "dense, Test 5, cycle 1\narrows: Δε × 1000  (0.1 on the axes = 0.01 % strain)" font ",11"
-plot '/work/main/reports/figures/fig03_test5_target.dat' u 1:2:3:4 w vectors nohead lw 3 lc rgb "#dddddd" t "target path", \
-  '/work/main/reports/figures/fig09_dense_test5_cycle1_path.dat' u 1:2 w l lw 1 lc rgb "#1f77b4" t "measured stress", \
-  '/work/main/reports/figures/fig09_dense_test5_cycle1.dat' u 1:2:($3*1000):($4*1000) w vectors head filled size graph 0.03,20 lw 2.2 lc rgb "#000000" t "strain increment of a leg", \
-  '/work/main/reports/figures/fig09_dense_test5_cycle1.dat' u ($1+$3*1000):($2+$4*1000):6 w labels offset char 0.6,0.6 font ",9" tc rgb "#000000" t ""
+plot 'fig03_test5_target.dat' u 1:2:3:4 w vectors nohead lw 3 lc rgb "#dddddd" t "target path", \
+  'fig09_dense_test5_cycle1_path.dat' u 1:2 w l lw 1 lc rgb "#1f77b4" t "measured stress", \
+  'fig09_dense_test5_cycle1.dat' u 1:2:($3*1000):($4*1000) w vectors head filled size graph 0.03,20 lw 2.2 lc rgb "#000000" t "strain increment of a leg", \
+  'fig09_dense_test5_cycle1.dat' u ($1+$3*1000):($2+$4*1000):6 w labels offset char 0.6,0.6 font ",9" tc rgb "#000000" t ""
 unset label 99
 set title "dense, Test 1, cycle 5\narrows: Δε × 500  (0.1 on the axes = 0.02 % strain)" font ",11"
-plot '/work/main/reports/figures/fig03_test1_target.dat' u 1:2:3:4 w vectors nohead lw 3 lc rgb "#dddddd" t "target path", \
-  '/work/main/reports/figures/fig09_dense_test1_cycle5_path.dat' u 1:2 w l lw 1 lc rgb "#1f77b4" t "measured stress", \
-  '/work/main/reports/figures/fig09_dense_test1_cycle5.dat' u 1:2:($3*500):($4*500) w vectors head filled size graph 0.03,20 lw 2.2 lc rgb "#000000" t "strain increment of a leg", \
-  '/work/main/reports/figures/fig09_dense_test1_cycle5.dat' u ($1+$3*500):($2+$4*500):6 w labels offset char 0.6,0.6 font ",9" tc rgb "#000000" t ""
+plot 'fig03_test1_target.dat' u 1:2:3:4 w vectors nohead lw 3 lc rgb "#dddddd" t "target path", \
+  'fig09_dense_test1_cycle5_path.dat' u 1:2 w l lw 1 lc rgb "#1f77b4" t "measured stress", \
+  'fig09_dense_test1_cycle5.dat' u 1:2:($3*500):($4*500) w vectors head filled size graph 0.03,20 lw 2.2 lc rgb "#000000" t "strain increment of a leg", \
+  'fig09_dense_test1_cycle5.dat' u ($1+$3*500):($2+$4*500):6 w labels offset char 0.6,0.6 font ",9" tc rgb "#000000" t ""
 unset label 99
 set title "dense, Test 2, cycle 5\narrows: Δε × 1000  (0.1 on the axes = 0.01 % strain)" font ",11"
-plot '/work/main/reports/figures/fig03_test2_target.dat' u 1:2:3:4 w vectors nohead lw 3 lc rgb "#dddddd" t "target path", \
-  '/work/main/reports/figures/fig09_dense_test2_cycle5_path.dat' u 1:2 w l lw 1 lc rgb "#1f77b4" t "measured stress", \
-  '/work/main/reports/figures/fig09_dense_test2_cycle5.dat' u 1:2:($3*1000):($4*1000) w vectors head filled size graph 0.03,20 lw 2.2 lc rgb "#000000" t "strain increment of a leg", \
-  '/work/main/reports/figures/fig09_dense_test2_cycle5.dat' u ($1+$3*1000):($2+$4*1000):6 w labels offset char 0.6,0.6 font ",9" tc rgb "#000000" t ""
+plot 'fig03_test2_target.dat' u 1:2:3:4 w vectors nohead lw 3 lc rgb "#dddddd" t "target path", \
+  'fig09_dense_test2_cycle5_path.dat' u 1:2 w l lw 1 lc rgb "#1f77b4" t "measured stress", \
+  'fig09_dense_test2_cycle5.dat' u 1:2:($3*1000):($4*1000) w vectors head filled size graph 0.03,20 lw 2.2 lc rgb "#000000" t "strain increment of a leg", \
+  'fig09_dense_test2_cycle5.dat' u ($1+$3*1000):($2+$4*1000):6 w labels offset char 0.6,0.6 font ",9" tc rgb "#000000" t ""
 unset label 99
 set title "dense, Test 3, cycle 5\narrows: Δε × 1000  (0.1 on the axes = 0.01 % strain)" font ",11"
-plot '/work/main/reports/figures/fig03_test3_target.dat' u 1:2:3:4 w vectors nohead lw 3 lc rgb "#dddddd" t "target path", \
-  '/work/main/reports/figures/fig09_dense_test3_cycle5_path.dat' u 1:2 w l lw 1 lc rgb "#1f77b4" t "measured stress", \
-  '/work/main/reports/figures/fig09_dense_test3_cycle5.dat' u 1:2:($3*1000):($4*1000) w vectors head filled size graph 0.03,20 lw 2.2 lc rgb "#000000" t "strain increment of a leg", \
-  '/work/main/reports/figures/fig09_dense_test3_cycle5.dat' u ($1+$3*1000):($2+$4*1000):6 w labels offset char 0.6,0.6 font ",9" tc rgb "#000000" t ""
+plot 'fig03_test3_target.dat' u 1:2:3:4 w vectors nohead lw 3 lc rgb "#dddddd" t "target path", \
+  'fig09_dense_test3_cycle5_path.dat' u 1:2 w l lw 1 lc rgb "#1f77b4" t "measured stress", \
+  'fig09_dense_test3_cycle5.dat' u 1:2:($3*1000):($4*1000) w vectors head filled size graph 0.03,20 lw 2.2 lc rgb "#000000" t "strain increment of a leg", \
+  'fig09_dense_test3_cycle5.dat' u ($1+$3*1000):($2+$4*1000):6 w labels offset char 0.6,0.6 font ",9" tc rgb "#000000" t ""
 unset label 99
 set title "dense, Test 4, cycle 5\narrows: Δε × 1000  (0.1 on the axes = 0.01 % strain)" font ",11"
-plot '/work/main/reports/figures/fig03_test4_target.dat' u 1:2:3:4 w vectors nohead lw 3 lc rgb "#dddddd" t "target path", \
-  '/work/main/reports/figures/fig09_dense_test4_cycle5_path.dat' u 1:2 w l lw 1 lc rgb "#1f77b4" t "measured stress", \
-  '/work/main/reports/figures/fig09_dense_test4_cycle5.dat' u 1:2:($3*1000):($4*1000) w vectors head filled size graph 0.03,20 lw 2.2 lc rgb "#000000" t "strain increment of a leg", \
-  '/work/main/reports/figures/fig09_dense_test4_cycle5.dat' u ($1+$3*1000):($2+$4*1000):6 w labels offset char 0.6,0.6 font ",9" tc rgb "#000000" t ""
+plot 'fig03_test4_target.dat' u 1:2:3:4 w vectors nohead lw 3 lc rgb "#dddddd" t "target path", \
+  'fig09_dense_test4_cycle5_path.dat' u 1:2 w l lw 1 lc rgb "#1f77b4" t "measured stress", \
+  'fig09_dense_test4_cycle5.dat' u 1:2:($3*1000):($4*1000) w vectors head filled size graph 0.03,20 lw 2.2 lc rgb "#000000" t "strain increment of a leg", \
+  'fig09_dense_test4_cycle5.dat' u ($1+$3*1000):($2+$4*1000):6 w labels offset char 0.6,0.6 font ",9" tc rgb "#000000" t ""
 unset label 99
 set title "dense, Test 5, cycle 5\narrows: Δε × 1000  (0.1 on the axes = 0.01 % strain)" font ",11"
-plot '/work/main/reports/figures/fig03_test5_target.dat' u 1:2:3:4 w vectors nohead lw 3 lc rgb "#dddddd" t "target path", \
-  '/work/main/reports/figures/fig09_dense_test5_cycle5_path.dat' u 1:2 w l lw 1 lc rgb "#1f77b4" t "measured stress", \
-  '/work/main/reports/figures/fig09_dense_test5_cycle5.dat' u 1:2:($3*1000):($4*1000) w vectors head filled size graph 0.03,20 lw 2.2 lc rgb "#000000" t "strain increment of a leg", \
-  '/work/main/reports/figures/fig09_dense_test5_cycle5.dat' u ($1+$3*1000):($2+$4*1000):6 w labels offset char 0.6,0.6 font ",9" tc rgb "#000000" t ""
+plot 'fig03_test5_target.dat' u 1:2:3:4 w vectors nohead lw 3 lc rgb "#dddddd" t "target path", \
+  'fig09_dense_test5_cycle5_path.dat' u 1:2 w l lw 1 lc rgb "#1f77b4" t "measured stress", \
+  'fig09_dense_test5_cycle5.dat' u 1:2:($3*1000):($4*1000) w vectors head filled size graph 0.03,20 lw 2.2 lc rgb "#000000" t "strain increment of a leg", \
+  'fig09_dense_test5_cycle5.dat' u ($1+$3*1000):($2+$4*1000):6 w labels offset char 0.6,0.6 font ",9" tc rgb "#000000" t ""
 unset label 99
 unset multiplot

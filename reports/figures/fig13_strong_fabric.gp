@@ -1,5 +1,5 @@
 set terminal pngcairo size 1800,660 font ",11" enhanced
-set output "/work/main/reports/figures/fig13_strong_fabric.png"
+set output "fig13_strong_fabric.png"
 set grid lc rgb "#dddddd"
 set key top left box opaque samplen 2 spacing 1.1 font ",10"
 set tics font ",10"
@@ -7,27 +7,27 @@ set bars 0
 set multiplot layout 1,3 title "Fig. 13  Stress ratio q/p against the strong-contact fabric ratio F^s_d/F^s_m, first 5 cycles of all tests" font ",13"
 set xlabel "F^s_d/F^s_m (strong contacts, Eqs. 9–10)"; set ylabel "stress ratio q/p"; set key top left; set size ratio -1
 set xrange [0:0.30]; set yrange [0:0.30]; set title "(A) loose" font ",12"
-plot '/work/main/reports/figures/fig13_strong_fabric_loose_test1.dat' u 1:2 w l lw 1.2 lc rgb "#000000" t "Test 1", \
-  '/work/main/reports/figures/fig13_strong_fabric_loose_test2.dat' u 1:2 w l lw 1.2 lc rgb "#ff7f0e" t "Test 2", \
-  '/work/main/reports/figures/fig13_strong_fabric_loose_test3.dat' u 1:2 w l lw 1.2 lc rgb "#9467bd" t "Test 3", \
-  '/work/main/reports/figures/fig13_strong_fabric_loose_test4.dat' u 1:2 w l lw 1.2 lc rgb "#17a2b8" t "Test 4", \
-  '/work/main/reports/figures/fig13_strong_fabric_loose_test5.dat' u 1:2 w l lw 1.2 lc rgb "#8c564b" t "Test 5", \
+plot 'fig13_strong_fabric_loose_test1.dat' u 1:2 w l lw 1.2 lc rgb "#000000" t "Test 1", \
+  'fig13_strong_fabric_loose_test2.dat' u 1:2 w l lw 1.2 lc rgb "#ff7f0e" t "Test 2", \
+  'fig13_strong_fabric_loose_test3.dat' u 1:2 w l lw 1.2 lc rgb "#9467bd" t "Test 3", \
+  'fig13_strong_fabric_loose_test4.dat' u 1:2 w l lw 1.2 lc rgb "#17a2b8" t "Test 4", \
+  'fig13_strong_fabric_loose_test5.dat' u 1:2 w l lw 1.2 lc rgb "#8c564b" t "Test 5", \
   x w l dt 2 lw 1.5 lc rgb '#777777' t '1:1'
 unset label 99
 set xrange [0:0.30]; set yrange [0:0.30]; set title "(B) medium" font ",12"
-plot '/work/main/reports/figures/fig13_strong_fabric_medium_test1.dat' u 1:2 w l lw 1.2 lc rgb "#000000" t "Test 1", \
-  '/work/main/reports/figures/fig13_strong_fabric_medium_test2.dat' u 1:2 w l lw 1.2 lc rgb "#ff7f0e" t "Test 2", \
-  '/work/main/reports/figures/fig13_strong_fabric_medium_test3.dat' u 1:2 w l lw 1.2 lc rgb "#9467bd" t "Test 3", \
-  '/work/main/reports/figures/fig13_strong_fabric_medium_test4.dat' u 1:2 w l lw 1.2 lc rgb "#17a2b8" t "Test 4", \
-  '/work/main/reports/figures/fig13_strong_fabric_medium_test5.dat' u 1:2 w l lw 1.2 lc rgb "#8c564b" t "Test 5", \
+plot 'fig13_strong_fabric_medium_test1.dat' u 1:2 w l lw 1.2 lc rgb "#000000" t "Test 1", \
+  'fig13_strong_fabric_medium_test2.dat' u 1:2 w l lw 1.2 lc rgb "#ff7f0e" t "Test 2", \
+  'fig13_strong_fabric_medium_test3.dat' u 1:2 w l lw 1.2 lc rgb "#9467bd" t "Test 3", \
+  'fig13_strong_fabric_medium_test4.dat' u 1:2 w l lw 1.2 lc rgb "#17a2b8" t "Test 4", \
+  'fig13_strong_fabric_medium_test5.dat' u 1:2 w l lw 1.2 lc rgb "#8c564b" t "Test 5", \
   x w l dt 2 lw 1.5 lc rgb '#777777' t '1:1'
 unset label 99
 set xrange [0:0.30]; set yrange [0:0.30]; set title "(C) dense" font ",12"
-plot '/work/main/reports/figures/fig13_strong_fabric_dense_test1.dat' u 1:2 w l lw 1.2 lc rgb "#000000" t "Test 1", \
-  '/work/main/reports/figures/fig13_strong_fabric_dense_test2.dat' u 1:2 w l lw 1.2 lc rgb "#ff7f0e" t "Test 2", \
-  '/work/main/reports/figures/fig13_strong_fabric_dense_test3.dat' u 1:2 w l lw 1.2 lc rgb "#9467bd" t "Test 3", \
-  '/work/main/reports/figures/fig13_strong_fabric_dense_test4.dat' u 1:2 w l lw 1.2 lc rgb "#17a2b8" t "Test 4", \
-  '/work/main/reports/figures/fig13_strong_fabric_dense_test5.dat' u 1:2 w l lw 1.2 lc rgb "#8c564b" t "Test 5", \
+plot 'fig13_strong_fabric_dense_test1.dat' u 1:2 w l lw 1.2 lc rgb "#000000" t "Test 1", \
+  'fig13_strong_fabric_dense_test2.dat' u 1:2 w l lw 1.2 lc rgb "#ff7f0e" t "Test 2", \
+  'fig13_strong_fabric_dense_test3.dat' u 1:2 w l lw 1.2 lc rgb "#9467bd" t "Test 3", \
+  'fig13_strong_fabric_dense_test4.dat' u 1:2 w l lw 1.2 lc rgb "#17a2b8" t "Test 4", \
+  'fig13_strong_fabric_dense_test5.dat' u 1:2 w l lw 1.2 lc rgb "#8c564b" t "Test 5", \
   x w l dt 2 lw 1.5 lc rgb '#777777' t '1:1'
 unset label 99
 unset multiplot
