@@ -129,7 +129,8 @@ mkdir -p "$report"
   echo "## Energy balance"
   echo
   echo "Every run books the work the cell does on the sample against the energy stored in the springs and in"
-  echo "motion and the energy the damping and the sliding contacts took (engine/README.md, \`Energy balance\`)."
+  echo "motion and the energy the damping and the sliding contacts took (engine/README.md, \`Energy balance\`); below, the"
+  echo "runs of sample $(basename "$first")."
   echo
   "$here/reports/energy/energy.sh" "$dem" "$first" "$report" > /dev/null
   cat "$report/energy.md"
