@@ -156,7 +156,7 @@ int decisions(const std::vector<ManifestLine>& manifest, const std::vector<std::
     for (const auto& [seed, densities] : seeds) {
       std::map<std::string, validation::DensityResults> of_seed;
       for (const auto& [density, f] : densities) of_seed[density] = validation::load_density(f.preparation, f.tests, missing);
-      readings[reading].emplace_back("seed" + seed, std::move(of_seed));
+      readings[reading].push_back({"seed" + seed, "", std::move(of_seed)});
     }
   // The paper study's ensemble (full size), if given: the verdicts and causes are judged on it.
   std::vector<validation::Sample> full_samples;

@@ -10,15 +10,6 @@ namespace validation {
 
 namespace {
 
-RowResult evaluate_on(const Row& row, const ReadingResults& samples) {
-  std::vector<std::pair<std::string, const DensityResults*>> of_density;
-  for (const auto& [name, densities] : samples) {
-    const auto it = densities.find(row.density);
-    of_density.emplace_back(name, it == densities.end() ? nullptr : &it->second);
-  }
-  return evaluate(row, of_density);
-}
-
 std::string fixed(double x, int digits = 2) {
   std::ostringstream s;
   s.setf(std::ios::fixed);
@@ -35,6 +26,18 @@ double gap(const RowResult& r) {
   return 0;
 }
 
+// "a (1.00 sd, t = 2.50), b (...)": the readings named, with their shifts.
+std::string with_shifts(const RowDecision& d, const std::vector<std::string>& names) {
+  std::string s;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    s += (i ? ", " : "") + names[i];
+    for (const ReadingEffect& e : d.readings)
+      if (e.reading == names[i] && e.shift_sd)
+        s += " (" + fixed(*e.shift_sd) + " sd" + (e.t ? ", t = " + fixed(*e.t) : std::string()) + ")";
+  }
+  return s;
+}
+
 }  // namespace
 
 std::vector<RowDecision> decide(const std::vector<Row>& rows, const std::map<std::string, ReadingResults>& readings,
@@ -46,13 +49,13 @@ std::vector<RowDecision> decide(const std::vector<Row>& rows, const std::map<std
   for (const Row& row : rows) {
     RowDecision d;
     d.row = row;
-    d.baseline = evaluate_on(row, base->second);
+    d.baseline = evaluate(row, base->second);
     if (const auto f = full.find(row.name); f != full.end()) d.full = f->second;
     const Verdict reference = d.full ? d.full->verdict : d.baseline.verdict;
     for (const std::string& name : order) {
       if (name == baseline) continue;
       const auto it = readings.find(name);
-      ReadingEffect e{name, it == readings.end() ? RowResult{} : evaluate_on(row, it->second), std::nullopt, std::nullopt};
+      ReadingEffect e{name, it == readings.end() ? RowResult{} : evaluate(row, it->second), std::nullopt, std::nullopt};
       if (e.result.valued > 0 && d.baseline.valued > 1 && d.baseline.spread.sd > 0)
         e.shift_sd = (e.result.spread.mean - d.baseline.spread.mean) / d.baseline.spread.sd;
       if (d.full && e.result.valued > 0 && d.baseline.valued > 0)
@@ -82,31 +85,19 @@ std::string explain(const RowDecision& d) {
   if (base.verdict == Verdict::NotJudged) return "not judged: fewer than 2 samples with a value";
   if (base.verdict == Verdict::Consistent) return "consistent on " + where + " (within the scatter of one sample)";
   if (!d.made_consistent_by.empty()) {
-    std::string s = "consistent under ";
-    for (std::size_t i = 0; i < d.made_consistent_by.size(); ++i) {
-      s += (i ? ", " : "") + d.made_consistent_by[i];
-      for (const ReadingEffect& e : d.readings)
-        if (e.reading == d.made_consistent_by[i] && e.shift_sd)
-          s += " (" + fixed(*e.shift_sd) + " sd" + (e.t ? ", t = " + fixed(*e.t) : std::string()) + ")";
-    }
+    std::string s = "consistent under " + with_shifts(d, d.made_consistent_by);
     if (d.full) s += ", its shift of the mean applied to the full-size ensemble";
     return s;
   }
-  std::string unresolved;
-  if (!d.unresolved_by.empty()) {
-    unresolved = "; would be consistent under ";
-    for (std::size_t i = 0; i < d.unresolved_by.size(); ++i) {
-      unresolved += (i ? ", " : "") + d.unresolved_by[i];
-      for (const ReadingEffect& e : d.readings)
-        if (e.reading == d.unresolved_by[i] && e.shift_sd)
-          unresolved += " (" + fixed(*e.shift_sd) + " sd" + (e.t ? ", t = " + fixed(*e.t) : std::string()) + ")";
-    }
-    unresolved += ", but the shift is not resolved by the decisions study's samples (one-sided t test, 95 %)";
-  }
+  const std::string unresolved =
+      d.unresolved_by.empty() ? ""
+                              : "; would be consistent under " + with_shifts(d, d.unresolved_by) +
+                                    ", but the shift is not resolved by the decisions study's samples (one-sided t test, 95 %)";
+  // A reading's row as judged: on the full-size ensemble with its shift applied, or on its own samples.
+  auto judged = [&](const ReadingEffect& e) -> const RowResult& { return d.full && e.full ? *e.full : e.result; };
   if (d.row.rule == "majority") {  // a trend: which reading makes it hold in the most samples
     const ReadingEffect* best = nullptr;
     auto share = [](const RowResult& r) { return r.valued ? static_cast<double>(r.holds) / r.valued : 0.0; };
-    auto judged = [&](const ReadingEffect& e) -> const RowResult& { return d.full && e.full ? *e.full : e.result; };
     for (const ReadingEffect& e : d.readings)
       if (e.result.valued > 0 && (!best || share(judged(e)) > share(judged(*best)))) best = &e;
     // Within scatter: the trend holds in too few samples, but the interval of one sample reaches
@@ -123,7 +114,6 @@ std::string explain(const RowDecision& d) {
   }
   // Unexplained: say which reading closes most of the gap between our interval and the paper.
   const double base_gap = gap(base);
-  auto judged = [&](const ReadingEffect& e) -> const RowResult& { return d.full && e.full ? *e.full : e.result; };
   const ReadingEffect* best = nullptr;
   for (const ReadingEffect& e : d.readings)
     if (judged(e).verdict != Verdict::NotJudged && (!best || gap(judged(e)) < gap(judged(*best)))) best = &e;

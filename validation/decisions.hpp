@@ -11,8 +11,8 @@
 
 namespace validation {
 
-// The results of one reading: per sample (seed), per density.
-using ReadingResults = std::vector<std::pair<std::string, std::map<std::string, DensityResults>>>;
+// The results of one reading: its ensemble of samples.
+using ReadingResults = std::vector<Sample>;
 
 struct ReadingEffect {
   std::string reading;

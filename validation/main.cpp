@@ -98,7 +98,7 @@ int main(int argc, char** argv) {
     const validation::RowResult e = validation::evaluate(r, samples);
     ++count[e.verdict];
     if (e.verdict == Verdict::Inconsistent && r.must_pass) ++failed_must;
-    std::string values, notes;
+    std::string values;
     json << "    {\"name\": " << json_string(r.name) << ", \"group\": " << json_string(r.group) << ", \"quantity\": "
          << json_string(r.quantity) << ", \"density\": " << json_string(r.density) << ", \"reference\": " << number(r.reference)
          << ", \"check\": " << json_string(r.check) << ", \"tolerance\": " << number(r.tolerance) << ",\n     \"per_sample\": [";

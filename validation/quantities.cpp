@@ -79,19 +79,6 @@ std::optional<double> ev_at(const TestResult& t, int c) {
   return 100 * *v;
 }
 
-Measured extreme_test(const DensityResults& r, int c, bool largest) {
-  int best = 0;
-  double best_value = 0;
-  std::ostringstream note;
-  for (const TestResult& t : r.tests)
-    if (const auto v = ev_at(t, c)) {
-      note << "test " << t.number << ": " << *v << " %; ";
-      if (best == 0 || (largest ? *v > best_value : *v < best_value)) best = t.number, best_value = *v;
-    }
-  if (best == 0) return {std::nullopt, "no test reaches the cycle asked for"};
-  return {static_cast<double>(best), note.str()};
-}
-
 // How far test `n`'s εv after cycle c leads (lead: εv_n - max over the other tests) or lags
 // (εv of the least compacted other test - εv_n): positive when the ordering the paper states holds.
 Measured ev_margin(const DensityResults& r, int n, int c, bool lead) {
@@ -167,8 +154,6 @@ const std::map<std::string, Fn>& registry() {
        [](const QuantityRequest& q, const DensityResults& r) {
          return mean_over_tests(r, [&](const TestResult& t) { return change(t, "sliding_fraction", q.from_cycle, q.to_cycle, 100); });
        }},
-      {"test_with_largest_ev", [](const QuantityRequest& q, const DensityResults& r) { return extreme_test(r, q.cycle, true); }},
-      {"test_with_smallest_ev", [](const QuantityRequest& q, const DensityResults& r) { return extreme_test(r, q.cycle, false); }},
       {"ev_lead", [](const QuantityRequest& q, const DensityResults& r) { return ev_margin(r, q.test, q.cycle, true); }},
       {"ev_lag", [](const QuantityRequest& q, const DensityResults& r) { return ev_margin(r, q.test, q.cycle, false); }},
       {"strain_increment_alignment_gain",

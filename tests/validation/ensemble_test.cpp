@@ -135,7 +135,7 @@ TEST_CASE("decisions: shifts in baseline standard deviations and the reading tha
       validation::DensityResults d;
       d.prepared = true;
       d.sample["void_ratio"] = 0.70 + 0.01 * i + offset;
-      r.push_back({"seed" + std::to_string(i + 1), {{"loose", d}}});
+      r.push_back({"seed" + std::to_string(i + 1), "", {{"loose", d}}});
     }
     return r;
   };
@@ -186,7 +186,7 @@ TEST_CASE("decisions: shifts in baseline standard deviations and the reading tha
   // 0.04 / sqrt(0.01^2/3 + 0.09^2/3) = 0.77, not resolved, so it explains nothing although it
   // would reach the paper.
   more["noisy"] = reading(0.04);
-  for (int i = 0; i < 3; ++i) more["noisy"][static_cast<std::size_t>(i)].second["loose"].sample["void_ratio"] += 0.08 * (i - 1);
+  for (int i = 0; i < 3; ++i) more["noisy"][static_cast<std::size_t>(i)].densities["loose"].sample["void_ratio"] += 0.08 * (i - 1);
   d = validation::decide({row}, more, {"baseline", "looser", "loosest", "noisy"}, "baseline", {{row.name, big}});
   REQUIRE(d[0].readings[2].t);
   CHECK(*d[0].readings[2].t == Approx(0.04 / std::sqrt(0.0001 / 3 + 0.0081 / 3)).epsilon(1e-6));
