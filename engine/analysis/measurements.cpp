@@ -5,6 +5,8 @@
 #include <cmath>
 #include <vector>
 
+#include "contact/scalar_lanes.hpp"
+
 namespace dem {
 
 double void_ratio(const Particles& p, const PeriodicCell& cell) {
@@ -16,13 +18,16 @@ double coordination_number(std::size_t contacts, std::size_t particles) {
   return particles ? 2.0 * static_cast<double>(contacts) / static_cast<double>(particles) : 0.0;
 }
 
-ContactCounts count_contacts(const Simulation& sim, bool keep_normals) {
+namespace {
+
+template <class Law>
+ContactCounts count_with(const Law& law, const Simulation& sim, bool keep_normals) {
+  using O = scalar_lanes::Ops;
   const Particles& p = sim.particles();
   const PairList& pairs = sim.pairs();
+  const ContactHistory& history = sim.history();
   std::vector<unsigned> per_particle(p.size(), 0);
   ContactCounts c;
-  const bool frictional = !pairs.sliding.empty();
-  const double kn = sim.material().kn_N_per_m, ks = sim.material().ks_N_per_m;
   double sum_fn = 0;
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     const auto i = pairs.first[k], j = pairs.second[k];
@@ -31,11 +36,14 @@ ContactCounts count_contacts(const Simulation& sim, bool keep_normals) {
     const double dist2 = l.squaredNorm();
     if (dist2 >= rsum * rsum) continue;
     const double dist = std::sqrt(dist2);
-    const double fn = kn * (rsum - dist);
+    const double overlap = rsum - dist;
+    const double reduced_radius = Law::needs_reduced_radius ? (p.radius[i] * p.radius[j]) / rsum : 0.0;
+    const double fn = law.normal.template force<O>(overlap, reduced_radius);
     Vec3 f = fn / dist * l;
-    if (frictional) {
-      f -= ks * pairs.spring[k];
-      if (pairs.sliding[k]) ++c.sliding;
+    if constexpr (Law::has_tangential) {
+      f += scalar_lanes::vec3_of(
+          law.tangential.template force_of<O>(scalar_lanes::lanes_of(history.tangential[k]), overlap, reduced_radius));
+      if (history.sliding[k]) ++c.sliding;
     }
     c.stress_Pa += f * l.transpose();
     sum_fn += fn;
@@ -55,6 +63,12 @@ ContactCounts count_contacts(const Simulation& sim, bool keep_normals) {
     if (n == 1) ++c.particles_one_contact;
   }
   return c;
+}
+
+}  // namespace
+
+ContactCounts count_contacts(const Simulation& sim, bool keep_normals) {
+  return std::visit([&](const auto& law) { return count_with(law, sim, keep_normals); }, sim.material().law);
 }
 
 double mechanical_coordination_number(const ContactCounts& c, std::size_t particles) {

@@ -21,9 +21,10 @@ struct ContactCounts {
   std::vector<Vec3> normals;              // unit normal of each contact (filled if asked for)
   std::vector<double> normal_forces_N;    // f_n of each contact (filled if asked for)
 };
-// Surveys the contacts at the current positions: counts, and the stress from the normal springs
-// plus the stored tangential springs (f_t = -ks u_s). Recomputed from the state, so it can be
-// called at any time without touching the trajectory.
+// Surveys the contacts at the current positions: counts, and the stress from the contact law's
+// normal force plus the tangential force its stored history stands for. Evaluated at the state of
+// the row (one position update after the last force evaluation), by the law's own functions, so
+// it can be called at any time without touching the trajectory.
 ContactCounts count_contacts(const Simulation& sim, bool keep_normals = false);
 
 // Mechanical coordination number without rattlers (Thornton 2000): (2 Nc - N1) / (Np - N0 - N1).

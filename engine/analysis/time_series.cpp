@@ -71,13 +71,15 @@ const std::vector<SeriesColumn>& series_columns() {
       {"neighbour_list_builds", "1", "Verlet list rebuilds so far"},
       // The energy balance (dynamics/simulation.hpp, EnergyBalance): at the last force evaluation,
       // one step before `step`; cumulative values count from the run's first step.
-      {"elastic_energy_normal", "J", "sum 1/2 kn overlap^2"},
-      {"elastic_energy_tangential", "J", "sum 1/2 ks |u_s|^2"},
+      {"elastic_energy_normal", "J", "stored in the normal springs (linear: sum 1/2 kn overlap^2)"},
+      {"elastic_energy_tangential", "J", "stored in the tangential springs (linear: sum 1/2 ks |u_s|^2)"},
       {"kinetic_energy_centred", "J", "translational + rotational, 1/2 m v(n-1/2).v(n+1/2): the kinetic energy of the balance"},
       {"work_by_cell", "J", "integral of V sigma:d(eps) since the run started, compression positive"},
       {"dissipated_by_damping", "J", "since the run started"},
       {"dissipated_by_friction", "J", "by sliding contacts since the run started"},
       {"energy_closure_error", "1", "|E_in - (E_stored + E_dissipated)| / E_in, E_in = stored energy at the start + work by the cell"},
+      {"elastic_energy_rolling", "J", "stored in the rolling springs, sum 1/2 kr |u_r|^2 (0 without rolling resistance)"},
+      {"dissipated_by_rolling", "J", "by rolling resistance at its cap since the run started"},
   };
   return columns;
 }
@@ -143,7 +145,9 @@ std::vector<double> measure_row(const Simulation& sim, const RowContext& where) 
           e.work_by_cell,
           e.dissipated_damping,
           e.dissipated_friction,
-          e.closure_error()};
+          e.closure_error(),
+          sim.sums().elastic_rolling_J,
+          e.dissipated_rolling};
 }
 
 }  // namespace dem

@@ -5,6 +5,7 @@
 #include <limits>
 #include <sstream>
 
+#include "config/contact_keys.hpp"
 #include "config/yaml_section.hpp"
 
 namespace dem {
@@ -179,9 +180,9 @@ std::string emit_resolved(const SceneConfig& c) {
   }
   out << YAML::EndMap;
   out << YAML::Key << "material" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "density"
-      << YAML::Value << c.material.density_kg_per_m3 << YAML::Key << "kn" << YAML::Value << c.material.kn_N_per_m
-      << YAML::Key << "ks" << YAML::Value << c.material.ks_N_per_m << YAML::Key << "friction" << YAML::Value
-      << c.material.friction << YAML::EndMap;
+      << YAML::Value << c.material.density_kg_per_m3;
+  emit_contact_law(out, c.material.law);
+  out << YAML::EndMap;
   out << YAML::Key << "damping" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "form" << YAML::Value
       << (c.damping.form == Damping::Form::Viscous ? "viscous" : "local") << YAML::Key << "translational"
       << YAML::Value << c.damping.translational << YAML::Key << "rotational" << YAML::Value << c.damping.rotational
@@ -282,12 +283,8 @@ static SceneConfig parse_scene(Section root, const std::string& file) {
 
   Section m = root.child("material", "material constants");
   c.material.density_kg_per_m3 = m.number("density", "kg/m^3", {0, 1e5, true}, 2650.0, "solid density");
-  c.material.kn_N_per_m = m.number("kn", "N/m", {0, 1e12, true}, std::nullopt, "normal contact stiffness");
-  c.material.ks_N_per_m = m.number("ks", "N/m", {0, 1e12}, std::nullopt, "tangential contact stiffness");
-  c.material.friction = m.number("friction", "", {0, 10}, std::nullopt, "Coulomb friction coefficient mu; 0 = frictionless kernel");
+  c.material.law = read_contact_law(m);
   m.finish();
-  if (c.material.friction > 0 && c.material.ks_N_per_m <= 0)
-    m.fail("ks", "must be > 0 when friction > 0, got " + std::to_string(c.material.ks_N_per_m));
 
   {
     Section d = root.optional_child("damping", "damping of particle motion (SPEC section 5)");
@@ -297,6 +294,10 @@ static SceneConfig parse_scene(Section root, const std::string& file) {
                          : Damping::Form::Local;
     c.damping.translational = d.number("translational", "", {0, 1}, 0.05, "C_t (viscous) or alpha (local)");
     c.damping.rotational = d.number("rotational", "", {0, 1}, 0.05, "C_r (viscous) or alpha for spins (local)");
+    if (c.damping.form == Damping::Form::Viscous && !(damping_stiffness(c.material.law) > 0) &&
+        (c.damping.translational > 0 || c.damping.rotational > 0))
+      d.fail("form", "viscous (the default) scales the damping with a contact stiffness, and material.law " +
+                         std::string("hertz_mindlin has none: use damping: {form: local}"));
     d.finish();
   }
 
@@ -367,6 +368,12 @@ std::string scene_key_reference() {
   scene_from_text(std::string("particles: {state: s.h5}\n") + common +
                       "stages: [{name: s, type: stress_path, mean_stress: 1.0e5, stress_ratio: 1.24, rate: 2.0e6,\n"
                       "          max_strain_rate: 1, path: [TC1, {repeat: 5, path: [TC2, TC3, TC1]}]}]\n",
+                  "example");
+  scene_from_text(std::string("particles: {state: s.h5}\n") +
+                      "material: {law: hertz_mindlin, young_modulus: 7.0e10, poisson_ratio: 0.25, friction: 0.5,\n"
+                      "           rolling_friction: 0.1, rolling_stiffness: 1.0e6}\ndamping: {form: local}\n"
+                      "numerics: {time_step: 1.0e-7}\n"
+                      "stages: [{name: s, type: strain_rate, strain_rate: [0, 0, 0], duration: 1}]\n",
                   "example");
   key_docs()["name"].default_value = "the scene file's name without extension";
   std::ostringstream out;

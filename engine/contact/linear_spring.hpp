@@ -1,66 +1,71 @@
 #pragma once
-// Linear spring contact law with optional Coulomb friction (Cundall & Strack 1979).
-//
+// The linear spring contact law (Cundall & Strack 1979):
 //   normal:     f_n = kn * overlap, along the unit normal n (from particle i to particle j);
-//   tangential: an elastic tangential displacement u_s is accumulated incrementally,
-//               u_s += v_t dt, after rotating the previous u_s into the current tangent plane
+//   tangential: an elastic tangential displacement u_s (the history) is accumulated incrementally,
+//               u_s += v_t dt, after turning the previous u_s into the current tangent plane
 //               (magnitude kept); f_t = -ks u_s, capped at |f_t| <= mu f_n (the contact slides).
-//
-// Friction is a compile-time policy. NoFriction is the exemplar: a frictionless scene runs a
-// kernel that has no tangential spring, no history and no torque.
+// Each part is written once for any lanes `O` (contact/lane_ops.inc); contact/contact_law.hpp
+// says what a law provides.
 #include <cmath>
 
-#include "core/types.hpp"
+#include "contact/capped_spring.hpp"
 
 namespace dem {
 
-struct NoFriction {
-  static constexpr bool has_tangential = false;
+struct LinearNormal {
+  double kn = 0;  // normal stiffness [N/m]
+
+  static constexpr bool needs_reduced_radius = false;
+  template <class O>
+  [[gnu::always_inline]] inline typename O::Real force(typename O::Real overlap, typename O::Real /*reduced_radius*/) const {
+    return O::splat(kn) * overlap;
+  }
+  // d f_n / d overlap, for the servo [N/m].
+  template <class O>
+  [[gnu::always_inline]] inline typename O::Real stiffness(typename O::Real /*overlap*/, typename O::Real /*reduced_radius*/) const {
+    return O::splat(kn);
+  }
+  // Stored energy [J]: 1/2 kn overlap^2 = 1/2 f_n overlap.
+  template <class O>
+  [[gnu::always_inline]] inline typename O::Real energy(typename O::Real fn, typename O::Real overlap) const {
+    return (O::splat(0.5) * fn) * overlap;
+  }
+  // The leapfrog's stability limit on one spring for the lightest particle, 2 sqrt(m_min / kn).
+  double critical_time_step(double m_min_kg, double /*r_min_m*/, double /*density*/) const { return 2.0 * std::sqrt(m_min_kg / kn); }
+  const char* critical_time_step_formula() const { return "2 sqrt(m_min/kn)"; }
+  // The stiffness viscous damping scales with, c = 2 C sqrt(k m) [N/m].
+  double damping_stiffness() const { return kn; }
 };
 
-struct Coulomb {
+// Coulomb friction on a linear tangential spring. The history is the elastic displacement u_s [m].
+struct LinearCoulomb {
   static constexpr bool has_tangential = true;
+  static constexpr const char* history_name = "tangential_spring";
+  static constexpr const char* history_unit = "m";
+  static constexpr bool needs_reduced_radius = false;
   double ks = 0;  // tangential stiffness [N/m]
   double mu = 0;  // friction coefficient [-]
 
-  // Advances the elastic tangential displacement `spring` [m] of one contact by the tangential
-  // relative velocity v_t [m/s] over dt, and returns the tangential force on particle j [N].
-  // `sliding` is set when the Coulomb cap is active.
-  //
-  // `dissipated_J` receives the energy the cap took in this step (0 when sticking): the work the
-  // particles did on the spring over the increment du, with the force taken as the mean of its
-  // values before and after (the trapezoidal rule the leapfrog energy balance uses), minus the
-  // change of the stored energy 1/2 ks |u|^2:  1/2 ks [(u_old + u_new).du - (|u_new|^2 - |u_old|^2)].
-  // When a contact slides steadily at the cap this is mu f_n |du|, Coulomb's work on the slip.
-  Vec3 tangential(Vec3& spring, const Vec3& n, const Vec3& v_t, double dt_s, double fn_N, bool& sliding,
-                  double& dissipated_J) const {
-    // Rotate the old displacement into the current tangent plane, keeping its magnitude.
-    const double old_norm2 = spring.squaredNorm();
-    if (old_norm2 > 0) {
-      spring -= n.dot(spring) * n;
-      const double new_norm2 = spring.squaredNorm();
-      if (new_norm2 > 0) spring *= std::sqrt(old_norm2 / new_norm2);
-    }
-    const Vec3 du = v_t * dt_s;
-    const Vec3 u_old = spring;
-    spring += du;
-    const double limit = mu * fn_N;  // largest |f_t| [N]
-    const double ft2 = ks * ks * spring.squaredNorm();
-    sliding = ft2 >= limit * limit;
-    dissipated_J = 0;
-    if (sliding) {
-      const double norm = std::sqrt(spring.squaredNorm());
-      spring *= norm > 0 ? limit / (ks * norm) : 0.0;
-      dissipated_J = 0.5 * ks * ((u_old + spring).dot(du) - (spring.squaredNorm() - u_old.squaredNorm()));
-    }
-    return -ks * spring;
+  template <class O>
+  [[gnu::always_inline]] inline void update(HistoryStep<O>& s, typename O::Real fn, typename O::Real /*overlap*/, typename O::Real /*reduced_radius*/,
+              typename O::Bool touch) const {
+    capped_linear_spring<O>(ks, mu, s, fn, touch);
   }
-};
-
-template <class Friction>
-struct LinearSpring {
-  double kn = 0;  // normal stiffness [N/m]
-  Friction friction{};
+  // Stored energy 1/2 |f_t|^2 / ks [J].
+  template <class O>
+  [[gnu::always_inline]] inline typename O::Real energy(const typename O::Vec& ft, typename O::Real /*overlap*/, typename O::Real /*reduced_radius*/) const {
+    return (O::splat(0.5) * O::dot(ft, ft)) / O::splat(ks);
+  }
+  // A contact that opens loses what is left in its spring, 1/2 ks |u_s|^2 with |u_s|^2 = `history2`.
+  template <class O>
+  [[gnu::always_inline]] inline typename O::Real opening_loss(typename O::Real history2) const {
+    return O::splat(0.5 * ks) * history2;
+  }
+  // The tangential force a stored history stands for [N] (measurements between steps).
+  template <class O>
+  [[gnu::always_inline]] inline typename O::Vec force_of(const typename O::Vec& history, typename O::Real /*overlap*/, typename O::Real /*reduced_radius*/) const {
+    return O::splat(-ks) * history;
+  }
 };
 
 }  // namespace dem

@@ -7,7 +7,8 @@
 #include <vector>
 
 #include "cell/periodic_cell.hpp"
-#include "contact/linear_spring.hpp"
+#include "contact/contact_history.hpp"
+#include "contact/contact_law.hpp"
 #include "core/particles.hpp"
 #include "dynamics/simulation.hpp"
 #include "neighbour/verlet_list.hpp"
@@ -67,19 +68,18 @@ struct MotionSums {
 // between steps so that a step allocates nothing.
 struct PairForces {
   std::vector<Vec3> force;              // force on `second` [N]; -force acts on `first`
-  std::vector<Vec3> torque_i, torque_j;  // torques on `first` and `second` [N m] (frictional only)
+  std::vector<Vec3> torque_i, torque_j;  // minus the torques on `first` and `second` [N m] (laws that rotate only)
   std::vector<StepSums> chunk_sums;       // per pair chunk; every chunk writes its own entry
   std::vector<MotionSums> motion_sums;    // per chunk of particles
 };
 
-// The per-pair work of `compute_forces`, on raw pointers (the arrays do not alias, and the
-// compiler keeps them in registers). `pair(k, sums)` evaluates pair k and adds its share to the
-// chunk sums `sums` (stress not yet divided by the volume, not yet symmetrised). The vectorised
-// kernel (dynamics/kernel_simd.cpp) does the same arithmetic four pairs at a time and uses this
-// for the pairs left over at the end of the list.
-template <class Friction>
+// The inputs and outputs of `compute_forces`, as raw pointers (the arrays do not alias, and the
+// compiler keeps them in registers). The pair loop itself (dynamics/kernel_simd_pairs.inc) is
+// written once for any lanes and compiled for one lane, AVX2 and AVX-512; the contact law
+// (contact/contact_law.hpp) supplies every force, energy and history update.
+template <class Law>
 struct PairLoop {
-  LinearSpring<Friction> law;
+  Law law;
   PeriodicCell cell;
   Vec3 strain_rate;
   double dt;
@@ -89,21 +89,22 @@ struct PairLoop {
   const Vec3* __restrict v;
   const Vec3* __restrict omega;
   const double* __restrict radius;
-  Vec3* __restrict spring;
+  Vec3* __restrict tangential;  // the tangential law's history (frictional laws)
   std::uint8_t* __restrict sliding_flag;
+  Vec3* __restrict rolling;     // rolling springs (laws with rolling resistance)
   Vec3* __restrict pair_force;
   Vec3* __restrict torque_i;
   Vec3* __restrict torque_j;
 
   // Sizes the outputs and points at them.
-  PairLoop(const LinearSpring<Friction>& law_, const Particles& p, const PeriodicCell& cell_, PairList& pairs,
+  PairLoop(const Law& law_, const Particles& p, const PeriodicCell& cell_, const PairList& pairs, ContactHistory& history,
            const Vec3& strain_rate_, double dt_, PairForces& out)
       : law(law_), cell(cell_), strain_rate(strain_rate_), dt(dt_) {
     // One spare entry, zero: the vectorised update reads each entry as four doubles (the fourth
     // is the next entry's first, and is dropped), so the last pair's read stays inside the array.
     out.force.resize(pairs.size() + 1);
     out.force.back().setZero();
-    if constexpr (Friction::has_tangential) {
+    if constexpr (Law::rotates) {
       out.torque_i.resize(pairs.size() + 1);
       out.torque_j.resize(pairs.size() + 1);
       out.torque_i.back().setZero();
@@ -116,64 +117,12 @@ struct PairLoop {
     v = p.v.data();
     omega = p.omega.data();
     radius = p.radius.data();
-    spring = pairs.spring.data();
-    sliding_flag = pairs.sliding.data();
+    tangential = history.tangential.data();
+    sliding_flag = history.sliding.data();
+    rolling = history.rolling.data();
     pair_force = out.force.data();
     torque_i = out.torque_i.data();
     torque_j = out.torque_j.data();
-  }
-
-  [[gnu::always_inline]] void pair(std::size_t k, StepSums& sums) const {
-    const double kn = law.kn;
-    const std::uint32_t i = first[k], j = second[k];
-    const Vec3 l = cell.branch(s[i], s[j]);  // centre of i to centre of j
-    const double dist2 = l.squaredNorm();
-    const double rsum = radius[i] + radius[j];
-    if (dist2 >= rsum * rsum) {
-      pair_force[k].setZero();
-      if constexpr (Friction::has_tangential) {
-        torque_i[k].setZero();
-        torque_j[k].setZero();
-        // A contact that opens loses what is left in its spring (at most (mu fn)^2 / 2 ks with
-        // the fn of its last step in contact): counted as dissipated by friction.
-        sums.friction_loss_J += 0.5 * law.friction.ks * spring[k].squaredNorm();
-        spring[k].setZero();
-        sliding_flag[k] = 0;
-      }
-      return;
-    }
-    const double dist = std::sqrt(dist2);
-    const Vec3 nrm = l / dist;
-    const double overlap = rsum - dist;
-    const double fn = kn * overlap;
-    Vec3 f = fn * nrm;  // force on j; -f acts on i
-    if constexpr (Friction::has_tangential) {
-      const double arm_i = radius[i] - 0.5 * overlap, arm_j = radius[j] - 0.5 * overlap;
-      const Vec3 v_rel =
-          v[j] - v[i] - strain_rate.cwiseProduct(l) - (arm_i * omega[i] + arm_j * omega[j]).cross(nrm);
-      const Vec3 v_t = v_rel - nrm.dot(v_rel) * nrm;
-      bool sliding = false;
-      double lost = 0;
-      const Vec3 ft = law.friction.tangential(spring[k], nrm, v_t, dt, fn, sliding, lost);
-      sliding_flag[k] = sliding;
-      sums.friction_loss_J += lost;
-      sums.elastic_tangential_J += 0.5 * ft.squaredNorm() / law.friction.ks;
-      f += ft;
-      const Vec3 nxft = nrm.cross(ft);
-      torque_i[k] = arm_i * nxft;  // both torques are -arm n x f_t
-      torque_j[k] = arm_j * nxft;
-    }
-    pair_force[k] = f;
-    sums.stress_Pa.noalias() += f * l.transpose();
-    // Servo stiffness: d(sigma_kk)/d(eps_k) of the normal springs if the contact followed the
-    // cell, kn (n_k l_k)^2. (Adding the sticking tangential springs, ks (l_k^2 - (n_k l_k)^2),
-    // over-estimates the relaxed stiffness: on a 1,000-sphere packing ramped at 2 MPa/s the
-    // stress then lagged its target by 0.7 % of p, against a 0.3 % lead with kn alone.)
-    const Vec3 nl = nrm.cwiseProduct(l);
-    sums.stiffness_Pa += kn * nl.cwiseProduct(nl);
-    ++sums.contacts;
-    sums.sum_normal_force_N += fn;
-    sums.elastic_normal_J += 0.5 * fn * overlap;
   }
 };
 
@@ -181,28 +130,21 @@ struct PairLoop {
 // symmetrises the stress.
 StepSums total_of_chunks(const std::vector<StepSums>& chunk_sums, const PeriodicCell& cell);
 
-// Contact forces at the current positions. Velocities are those of the previous half step; the
-// relative velocity at a contact includes the affine part -rate (.) l of the deforming cell.
-// `sums` receives the contact stress and the servo stiffness.
-template <class Friction>
-void compute_forces(const LinearSpring<Friction>& law, const Particles& p, const PeriodicCell& cell, PairList& pairs,
-                    const PairIndex& index, const Vec3& strain_rate, double dt, PairForces& out, StepSums& sums) {
-  const PairLoop<Friction> loop(law, p, cell, pairs, strain_rate, dt, out);
-  for_each_pair_chunk(index, [&](std::size_t c, std::size_t begin, std::size_t end) {
-    StepSums chunk;
-    const PairLoop<Friction> local = loop;  // a local copy: its pointers stay in registers
-    for (std::size_t k = begin; k < end; ++k) local.pair(k, chunk);
-    out.chunk_sums[c] = chunk;
-    return true;
-  });
-  sums = total_of_chunks(out.chunk_sums, cell);
-}
+// Contact forces at the current positions, `simd_lanes` (0, 4 or 8; see dynamics/kernel_simd.hpp)
+// pairs at a time, the same result bit for bit at any width. Velocities are those of the previous
+// half step; the relative velocity at a contact includes the affine part -rate (.) l of the
+// deforming cell. `sums` receives the contact stress and the servo stiffness; `history` is
+// updated. Instantiated for every law of AnyContactLaw (dynamics/kernel_simd.cpp).
+template <class Law>
+void compute_forces(int simd_lanes, const Law& law, const Particles& p, const PeriodicCell& cell, const PairList& pairs,
+                    ContactHistory& history, const PairIndex& index, const Vec3& strain_rate, double dt, PairForces& out,
+                    StepSums& sums);
 
 // Viscous body damping, integrated semi-implicitly (exact for the damping term alone):
 // v <- ((1 - h) v + dt F / m) / (1 + h), h = c dt / (2 m).
 struct ViscousDamping {
   std::vector<double> a, b, a_rot, b_rot;  // per-particle update coefficients
-  ViscousDamping(const Particles& p, const Damping& d, double kn, double dt) {
+  ViscousDamping(const Particles& p, const Damping& d, double kn, double dt) {  // kn: the law's damping stiffness
     for (std::size_t i = 0; i < p.size(); ++i) {
       const double h = d.translational * dt * std::sqrt(kn / p.mass[i]);
       const double h_rot = d.rotational * dt * p.radius[i] * std::sqrt(kn / p.inertia[i]);

@@ -7,6 +7,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string_view>
+#include <tuple>
+#include <variant>
+
+#include "contact/scalar_lanes.hpp"
 
 // Each instruction set's loops are compiled for it alone (a `#pragma GCC target` region, not a
 // compiler flag), so the rest of the engine, Eigen included, is compiled as before and runs on
@@ -37,7 +41,17 @@ int simd_width() { return std::min(simd_width_available(), simd_cap()); }
 void cap_simd_width(int lanes) { simd_cap() = lanes; }
 
 namespace {
-// The chunk sums from the accumulators' 16 components (see avx2::Accumulator).
+// The 16 chunk sums as components: the stress column-major (f_a l_b at a + 3 b), the servo
+// stiffness, then sum fn, normal and tangential elastic energy, friction loss.
+void components_of(const StepSums& s, double (&a)[16]) {
+  for (int c = 0; c < 9; ++c) a[c] = s.stress_Pa(c % 3, c / 3);
+  for (int c = 0; c < 3; ++c) a[9 + c] = s.stiffness_Pa[c];
+  a[12] = s.sum_normal_force_N;
+  a[13] = s.elastic_normal_J;
+  a[14] = s.elastic_tangential_J;
+  a[15] = s.friction_loss_J;
+}
+// The chunk sums from the accumulators' 16 components.
 StepSums step_sums(const double (&a)[16]) {
   StepSums s;
   for (int c = 0; c < 9; ++c) s.stress_Pa(c % 3, c / 3) = a[c];
@@ -49,6 +63,26 @@ StepSums step_sums(const double (&a)[16]) {
   return s;
 }
 }  // namespace
+
+// One lane: the loop for machines without AVX2 (or DEM_SIMD=0) and for the pairs left over after
+// the last full block of a vector loop.
+namespace one_lane {
+namespace {
+using namespace scalar_lanes;
+
+struct Accumulator {
+  double acc[16];
+  explicit Accumulator(const StepSums& start) { components_of(start, acc); }
+  StepSums sums() const { return step_sums(acc); }
+  void add(const V (&comp)[16], int first_group = 0) {
+    for (int c = 4 * first_group; c < 16; ++c) acc[c] += comp[c];
+  }
+};
+
+#include "dynamics/kernel_simd_pairs.inc"
+
+}  // namespace
+}  // namespace one_lane
 
 #pragma GCC push_options
 #pragma GCC target("avx2")
@@ -74,6 +108,7 @@ inline Mask greater(V a, V b) { return _mm256_cmp_pd(a, b, _CMP_GT_OQ); }
 inline Mask greater_equal(V a, V b) { return _mm256_cmp_pd(a, b, _CMP_GE_OQ); }
 inline Mask less(V a, V b) { return _mm256_cmp_pd(a, b, _CMP_LT_OQ); }
 inline V sqrt_of(V a) { return _mm256_sqrt_pd(a); }
+inline void store_lanes(double* out, V a) { _mm256_storeu_pd(out, a); }
 
 // Four consecutive Vec3 (12 doubles, x0 y0 z0 x1 | y1 z1 x2 y2 | z2 x3 y3 z3) to and from lanes.
 inline V3 load(const Vec3* p) {
@@ -128,7 +163,11 @@ inline Rows transpose(V c0, V c1, V c2, V c3) {
 struct Accumulator {
   V acc[4];
 
-  Accumulator() : acc{zero(), zero(), zero(), zero()} {}
+  explicit Accumulator(const StepSums& start) {
+    alignas(32) double a[16];
+    components_of(start, a);
+    for (int g = 0; g < 4; ++g) acc[g] = _mm256_load_pd(a + 4 * g);
+  }
 
   StepSums sums() const {
     alignas(32) double a[16];
@@ -145,6 +184,7 @@ struct Accumulator {
   }
 };
 
+#include "contact/lane_ops.inc"
 #include "dynamics/kernel_simd_pairs.inc"
 
 // PeriodicCell::wrap, one axis of four particles; clears the lanes of `inside` that stay outside.
@@ -276,6 +316,7 @@ inline Mask not_ge(V a, V b) { return _mm512_cmp_pd_mask(a, b, _CMP_NGE_UQ); }
 inline Mask greater(V a, V b) { return _mm512_cmp_pd_mask(a, b, _CMP_GT_OQ); }
 inline Mask greater_equal(V a, V b) { return _mm512_cmp_pd_mask(a, b, _CMP_GE_OQ); }
 inline V sqrt_of(V a) { return _mm512_sqrt_pd(a); }
+inline void store_lanes(double* out, V a) { _mm512_storeu_pd(out, a); }
 
 inline __m256d low(V a) { return _mm512_castpd512_pd256(a); }
 inline __m256d high(V a) { return _mm512_extractf64x4_pd(a, 1); }
@@ -321,7 +362,11 @@ inline Rows8 transpose(const V* c) {
 struct Accumulator {
   V acc[2];
 
-  Accumulator() : acc{zero(), zero()} {}
+  explicit Accumulator(const StepSums& start) {
+    alignas(64) double a[16];
+    components_of(start, a);
+    acc[0] = _mm512_load_pd(a), acc[1] = _mm512_load_pd(a + 8);
+  }
 
   StepSums sums() const {
     alignas(64) double a[16];
@@ -343,6 +388,7 @@ struct Accumulator {
   }
 };
 
+#include "contact/lane_ops.inc"
 #include "dynamics/kernel_simd_pairs.inc"
 
 }  // namespace
@@ -367,24 +413,35 @@ template MotionSums integrate_simd<true>(const ViscousDamping&, Particles&, cons
 template MotionSums integrate_simd<false>(const ViscousDamping&, Particles&, const PeriodicCell&, const PairIndex&,
                                           PairForces&, std::vector<Vec3>&, double);
 
-template <class Friction>
-void compute_forces_simd(int width, const LinearSpring<Friction>& law, const Particles& p, const PeriodicCell& cell,
-                         PairList& pairs, const PairIndex& index, const Vec3& strain_rate, double dt, PairForces& out,
-                         StepSums& sums) {
-  const PairLoop<Friction> loop(law, p, cell, pairs, strain_rate, dt, out);
+template <class Law>
+void compute_forces(int simd_lanes, const Law& law, const Particles& p, const PeriodicCell& cell, const PairList& pairs,
+                    ContactHistory& history, const PairIndex& index, const Vec3& strain_rate, double dt, PairForces& out,
+                    StepSums& sums) {
+  const PairLoop<Law> loop(law, p, cell, pairs, history, strain_rate, dt, out);
   for_each_pair_chunk(index, [&](std::size_t c, std::size_t begin, std::size_t end) {
-    if (width == 8)
-      avx512::chunk(loop, begin, end, out.chunk_sums[c]);
-    else
-      avx2::chunk(loop, begin, end, out.chunk_sums[c]);
+    StepSums chunk;
+    std::size_t k = begin;  // pairs before k done by the vector loop
+    if (simd_lanes == 8) k = begin + (end - begin) / 8 * 8, avx512::chunk(loop, begin, k, chunk);
+    if (simd_lanes == 4) k = begin + (end - begin) / 4 * 4, avx2::chunk(loop, begin, k, chunk);
+    one_lane::chunk(loop, k, end, chunk);
+    out.chunk_sums[c] = chunk;
     return true;
   });
   sums = total_of_chunks(out.chunk_sums, cell);
 }
 
-template void compute_forces_simd<NoFriction>(int, const LinearSpring<NoFriction>&, const Particles&, const PeriodicCell&,
-                                              PairList&, const PairIndex&, const Vec3&, double, PairForces&, StepSums&);
-template void compute_forces_simd<Coulomb>(int, const LinearSpring<Coulomb>&, const Particles&, const PeriodicCell&,
-                                           PairList&, const PairIndex&, const Vec3&, double, PairForces&, StepSums&);
+// compute_forces for every law a scene can choose: the table's addresses make the compiler emit
+// each instantiation for dynamics/simulation.cpp to call.
+namespace {
+template <class Variant>
+struct ForcesOfEveryLaw;
+template <class... Laws>
+struct ForcesOfEveryLaw<std::variant<Laws...>> {
+  using Table = std::tuple<decltype(&compute_forces<Laws>)...>;
+  static Table table() { return {&compute_forces<Laws>...}; }
+};
+}  // namespace
+extern const ForcesOfEveryLaw<AnyContactLaw>::Table forces_of_every_law;
+const ForcesOfEveryLaw<AnyContactLaw>::Table forces_of_every_law = ForcesOfEveryLaw<AnyContactLaw>::table();
 
 }  // namespace dem

@@ -1,7 +1,7 @@
 #pragma once
-// The contact-force loop eight pairs at a time (AVX-512) or four (AVX2), and the viscous-damping
-// update four particles at a time (AVX2), with the same result bit for bit as `compute_forces` and
-// `integrate` (dynamics/kernel.hpp):
+// The contact-force loop (`compute_forces`, dynamics/kernel.hpp) one pair, four (AVX2) or eight
+// (AVX-512) pairs at a time, and the viscous-damping update four particles at a time (AVX2), with
+// the same result bit for bit as one pair at a time and as `integrate` (dynamics/kernel.hpp):
 //  - every lane does the scalar code's operations in the scalar code's order (no fused
 //    multiply-add, the same association in every sum, the same branches as masks);
 //  - the chunk sums are added item by item in order, as the scalar loops add them;
@@ -19,12 +19,6 @@ int simd_width_available();
 // rule one out. `lanes`: 0, 4 or 8.
 int simd_width();
 void cap_simd_width(int lanes);
-
-// As `compute_forces`, `width` (4 or 8) pairs at a time; call only with simd_width() >= width.
-template <class Friction>
-void compute_forces_simd(int width, const LinearSpring<Friction>& law, const Particles& p, const PeriodicCell& cell,
-                         PairList& pairs, const PairIndex& index, const Vec3& strain_rate, double dt, PairForces& out,
-                         StepSums& sums);
 
 // As `integrate` with viscous damping (the vectorised leapfrog update, four particles at a time);
 // call only if simd_width() >= 4.

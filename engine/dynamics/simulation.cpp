@@ -10,12 +10,6 @@
 
 namespace dem {
 
-double critical_time_step(const Particles& p, double kn_N_per_m) {
-  if (p.size() == 0) throw std::invalid_argument("critical_time_step: no particles");
-  const double m_min = *std::min_element(p.mass.begin(), p.mass.end());
-  return 2.0 * std::sqrt(m_min / kn_N_per_m);
-}
-
 StepSums total_of_chunks(const std::vector<StepSums>& chunk_sums, const PeriodicCell& cell) {
   StepSums total;
   for (const StepSums& chunk : chunk_sums) {
@@ -26,6 +20,8 @@ StepSums total_of_chunks(const std::vector<StepSums>& chunk_sums, const Periodic
     total.elastic_normal_J += chunk.elastic_normal_J;
     total.elastic_tangential_J += chunk.elastic_tangential_J;
     total.friction_loss_J += chunk.friction_loss_J;
+    total.elastic_rolling_J += chunk.elastic_rolling_J;
+    total.rolling_loss_J += chunk.rolling_loss_J;
   }
   const double inv_volume = 1.0 / cell.volume();
   const Mat3 stress = total.stress_Pa;  // a copy: (A + A^T) assigned to A would alias
@@ -54,37 +50,43 @@ struct Simulation::Kernel {
   virtual MotionSums integrate(Simulation& sim) = 0;
 };
 
-template <class Friction, class DampingPolicy>
+template <class Law, class DampingPolicy>
 struct KernelImpl final : Simulation::Kernel {
-  LinearSpring<Friction> law;
+  Law law;
   DampingPolicy damping;
   int simd = simd_width();  // the same result at any width; wider is faster
-  KernelImpl(LinearSpring<Friction> l, DampingPolicy d) : law(l), damping(std::move(d)) {}
+  KernelImpl(Law l, DampingPolicy d) : law(l), damping(std::move(d)) {}
   void forces(Simulation& s) override {
-    if (simd)
-      compute_forces_simd(simd, law, s.particles_, s.cell_, s.list_.pairs(), s.list_.index(), s.strain_rate_, s.dt_,
-                          *s.pair_forces_, s.sums_);
-    else
-      compute_forces(law, s.particles_, s.cell_, s.list_.pairs(), s.list_.index(), s.strain_rate_, s.dt_,
-                     *s.pair_forces_, s.sums_);
+    compute_forces(simd, law, s.particles_, s.cell_, s.list_.pairs(), s.history_, s.list_.index(), s.strain_rate_, s.dt_,
+                   *s.pair_forces_, s.sums_);
   }
   MotionSums integrate(Simulation& s) override {
     if constexpr (std::is_same_v<DampingPolicy, ViscousDamping>)
       if (simd)
-        return integrate_simd<Friction::has_tangential>(damping, s.particles_, s.cell_, s.list_.index(),
-                                                        *s.pair_forces_, s.force_, s.dt_);
-    return dem::integrate<Friction::has_tangential>(damping, s.particles_, s.cell_, s.list_.index(), *s.pair_forces_,
-                                                    s.force_, s.dt_);
+        return integrate_simd<Law::rotates>(damping, s.particles_, s.cell_, s.list_.index(), *s.pair_forces_, s.force_,
+                                            s.dt_);
+    return dem::integrate<Law::rotates>(damping, s.particles_, s.cell_, s.list_.index(), *s.pair_forces_, s.force_, s.dt_);
   }
 };
 
 namespace {
-template <class Friction>
-std::unique_ptr<Simulation::Kernel> make_kernel(LinearSpring<Friction> law, const Particles& p, const Damping& d,
-                                                double dt) {
+template <class Law>
+std::unique_ptr<Simulation::Kernel> make_kernel(const Law& law, const Particles& p, const Damping& d, double dt) {
   if (d.form == Damping::Form::Local)
-    return std::make_unique<KernelImpl<Friction, LocalDamping>>(law, LocalDamping(p, d, law.kn, dt));
-  return std::make_unique<KernelImpl<Friction, ViscousDamping>>(law, ViscousDamping(p, d, law.kn, dt));
+    return std::make_unique<KernelImpl<Law, LocalDamping>>(law, LocalDamping(p, d, 0, dt));
+  const double k = law.normal.damping_stiffness();
+  if (!(k > 0) && (d.translational > 0 || d.rotational > 0))
+    throw std::invalid_argument("viscous damping needs a contact stiffness to scale with, and this contact law has none: "
+                                "use damping.form: local");
+  return std::make_unique<KernelImpl<Law, ViscousDamping>>(law, ViscousDamping(p, d, k, dt));
+}
+
+// An empty history shaped by the law: what it keeps per contact.
+ContactHistory history_for(const AnyContactLaw& law) {
+  ContactHistory h;
+  h.tangential_name = tangential_history_name(law);
+  h.rolling_on = has_rolling(law);
+  return h;
 }
 }  // namespace
 
@@ -95,30 +97,42 @@ Simulation::Simulation(Particles particles, PeriodicCell cell, Material material
       material_(material),
       damping_(damping),
       dt_(time_step_s),
-      list_(verlet_skin_m, material.friction > 0),
+      list_(verlet_skin_m),
+      history_(history_for(material.law)),
       pair_forces_(std::make_unique<PairForces>()) {
-  if (material_.friction > 0)
-    kernel_ = make_kernel(LinearSpring<Coulomb>{material_.kn_N_per_m, Coulomb{material_.ks_N_per_m, material_.friction}},
-                          particles_, damping_, dt_);
-  else
-    kernel_ = make_kernel(LinearSpring<NoFriction>{material_.kn_N_per_m, {}}, particles_, damping_, dt_);
+  kernel_ = std::visit([&](const auto& law) { return make_kernel(law, particles_, damping_, dt_); }, material_.law);
 }
 
 Simulation::~Simulation() = default;
 Simulation::Simulation(Simulation&&) noexcept = default;
 Simulation& Simulation::operator=(Simulation&&) noexcept = default;
 
-void Simulation::restore(std::int64_t step, const Vec3& strain_rate, PairList contacts) {
+void Simulation::adopt(const ContactHistory& history) {
+  const std::size_t n = list_.pairs().size();
+  const ContactHistory unloaded = [&] {
+    ContactHistory h = history_for(material_.law);
+    h.reset(n);
+    return h;
+  }();
+  history_ = unloaded;
+  if (history_.has_tangential() && history.tangential_name == history_.tangential_name && history.tangential.size() == n)
+    history_.tangential = history.tangential, history_.sliding = history.sliding;
+  if (history_.rolling_on && history.rolling_on && history.rolling.size() == n) history_.rolling = history.rolling;
+}
+
+void Simulation::restore(std::int64_t step, const Vec3& strain_rate, PairList contacts, const ContactHistory& history) {
   step_ = step;
   strain_rate_ = strain_rate;
   list_.restore(std::move(contacts));
+  adopt(history);
 }
 
 void Simulation::restore_checkpoint(std::int64_t step, const Vec3& strain_rate, VerletList::Saved list,
-                                    const EnergyBalance& energy) {
+                                    const ContactHistory& history, const EnergyBalance& energy) {
   step_ = step;
   strain_rate_ = strain_rate;
   list_.restore_exact(std::move(list), particles_);
+  adopt(history);
   energy_ = energy;
 }
 
@@ -131,7 +145,7 @@ void Simulation::step(const CellTargets& targets, AdaptiveServo& servo) {
 }
 
 void Simulation::advance(const std::function<Vec3()>& strain_rates) {
-  if (list_.rebuild_due(particles_, cell_)) list_.build(particles_, cell_);
+  if (list_.rebuild_due(particles_, cell_)) list_.build(particles_, cell_, &history_);
   kernel_->forces(*this);
   if (!sums_.stress_Pa.allFinite()) {
     std::ostringstream msg;
@@ -143,8 +157,9 @@ void Simulation::advance(const std::function<Vec3()>& strain_rates) {
   const Vec3 virial = sums_.stress_Pa.diagonal() * cell_.volume();
   if (energy_.started) energy_.work_by_cell += 0.5 * dt_ * strain_rate_.dot(virial + energy_.virial);
   energy_.virial = virial;
-  energy_.elastic = sums_.elastic_normal_J + sums_.elastic_tangential_J;
+  energy_.elastic = sums_.elastic_normal_J + sums_.elastic_tangential_J + sums_.elastic_rolling_J;
   energy_.dissipated_friction += sums_.friction_loss_J;
+  energy_.dissipated_rolling += sums_.rolling_loss_J;
   strain_rate_ = strain_rates();
   const MotionSums motion = kernel_->integrate(*this);
   list_.add_motion(dt_ * std::sqrt(motion.max_speed2));

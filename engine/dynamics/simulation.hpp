@@ -9,8 +9,8 @@
 //   4. leapfrog update of velocities (with damping) and fractional positions;
 //   5. homogeneous deformation of the cell.
 //
-// The contact law (friction or not) and the damping form are chosen once, when the simulation is
-// built; the per-step loop is a monomorphic template (see dynamics/kernel.hpp).
+// The contact law (contact/contact_law.hpp) and the damping form are chosen once, when the
+// simulation is built; the per-step loop is a monomorphic template (see dynamics/kernel.hpp).
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -19,6 +19,8 @@
 #include <string>
 
 #include "cell/periodic_cell.hpp"
+#include "contact/contact_history.hpp"
+#include "contact/contact_law.hpp"
 #include "control/stress_servo.hpp"
 #include "core/particles.hpp"
 #include "neighbour/verlet_list.hpp"
@@ -27,13 +29,12 @@ namespace dem {
 
 struct Material {
   double density_kg_per_m3 = 2650;
-  double kn_N_per_m = 1e6;
-  double ks_N_per_m = 1e6;
-  double friction = 0.5;  // mu [-]; 0 selects the frictionless kernel
+  AnyContactLaw law = linear_law(1e6, 1e6, 0.5);  // the kernel is compiled for the law chosen
 };
 
 // SPEC section 5. Viscous: body force -c v on the fluctuating velocity with c = 2 C_t sqrt(kn m),
-// torque -c_r omega with c_r = 2 C_r sqrt(kn r^2 I) (the rotational analogue). Local: Cundall's
+// torque -c_r omega with c_r = 2 C_r sqrt(kn r^2 I) (the rotational analogue), kn the law's
+// damping stiffness (a law without one, Hertz's, needs local damping). Local: Cundall's
 // non-viscous damping, each force component reduced by alpha |F_k| opposing the velocity.
 struct Damping {
   enum class Form { Viscous, Local };
@@ -47,9 +48,6 @@ struct NonFiniteError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Critical time step of the lightest particle on one normal spring: 2 sqrt(m_min / kn), the
-// stability limit of the leapfrog scheme for an undamped harmonic oscillator.
-double critical_time_step(const Particles& p, double kn_N_per_m);
 
 struct PairForces;  // dynamics/kernel.hpp
 
@@ -61,6 +59,8 @@ struct StepSums {          // by-products of the last force evaluation
   double elastic_normal_J = 0;         // sum 1/2 kn overlap^2
   double elastic_tangential_J = 0;     // sum 1/2 ks |u_s|^2 (after the Coulomb cap)
   double friction_loss_J = 0;          // spring energy removed by the Coulomb cap (and by contacts opening) in this evaluation
+  double elastic_rolling_J = 0;        // sum 1/2 kr |u_r|^2 (rolling resistance)
+  double rolling_loss_J = 0;           // rolling spring energy removed by its cap (and by contacts opening)
 };
 
 // The energy balance of a run [J], accumulated step by step from the first step of this
@@ -72,8 +72,9 @@ struct EnergyBalance {
   double work_by_cell = 0;         // integral of V sigma : d(eps), compression positive
   double dissipated_damping = 0;   // taken by the damping (translational + rotational)
   double dissipated_friction = 0;  // taken by sliding contacts
+  double dissipated_rolling = 0;   // taken by rolling resistance at its cap
   double kinetic = 0;              // time-centred, translational + rotational
-  double elastic = 0;              // normal + tangential springs
+  double elastic = 0;              // normal + tangential + rolling
   double stored_at_start = 0;      // kinetic + elastic at the first step
   Vec3 virial = Vec3::Zero();      // V sigma_kk at the last evaluation [J]
   bool started = false;
@@ -82,7 +83,7 @@ struct EnergyBalance {
   // |energy in - (stored + dissipated)| / energy in; 0 while nothing has been put in.
   double closure_error() const {
     const double in = energy_in();
-    return in > 0 ? std::abs(in - stored() - dissipated_damping - dissipated_friction) / in : 0.0;
+    return in > 0 ? std::abs(in - stored() - dissipated_damping - dissipated_friction - dissipated_rolling) / in : 0.0;
   }
 };
 
@@ -102,6 +103,7 @@ class Simulation {
   const PeriodicCell& cell() const { return cell_; }
   PeriodicCell& cell() { return cell_; }
   const PairList& pairs() const { return list_.pairs(); }
+  const ContactHistory& history() const { return history_; }  // per pair of pairs()
   const VerletList& verlet_list() const { return list_; }
   const Material& material() const { return material_; }
   const Damping& damping() const { return damping_; }
@@ -114,18 +116,21 @@ class Simulation {
   double kinetic_energy() const { return kinetic_energy_; }      // translational, fluctuating, after the last step [J]
   const EnergyBalance& energy() const { return energy_; }
 
-  // Restores the dynamic state saved by a previous run (for a bit-for-bit continuation).
-  void restore(std::int64_t step, const Vec3& strain_rate, PairList contacts);
-  // Restores a checkpoint of this same run (run/checkpoint.hpp): also the whole Verlet list and
-  // the energy balance, so that rows, rebuilds and sums continue exactly as without the stop.
-  void restore_checkpoint(std::int64_t step, const Vec3& strain_rate, VerletList::Saved list, const EnergyBalance& energy);
+  // Restores the dynamic state saved by a previous run (for a bit-for-bit continuation). A history
+  // of another kind than this law keeps (none, another tangential law) starts unloaded.
+  void restore(std::int64_t step, const Vec3& strain_rate, PairList contacts, const ContactHistory& history);
+  // Restores a checkpoint of this same run (run/checkpoint.hpp): also the whole Verlet list, its
+  // history and the energy balance, so that rows, rebuilds and sums continue exactly as without the stop.
+  void restore_checkpoint(std::int64_t step, const Vec3& strain_rate, VerletList::Saved list, const ContactHistory& history,
+                          const EnergyBalance& energy);
 
   // Internal: the per-step kernel, chosen once from the material and damping.
   struct Kernel;
 
  private:
-  template <class Friction, class DampingPolicy>
+  template <class Law, class DampingPolicy>
   friend struct KernelImpl;
+  void adopt(const ContactHistory& history);  // `history` if of this law's kinds, else unloaded
   // One step, the fixed order above; `strain_rates` is called after the force evaluation.
   void advance(const std::function<Vec3()>& strain_rates);
   Particles particles_;
@@ -134,6 +139,7 @@ class Simulation {
   Damping damping_;
   double dt_;
   VerletList list_;
+  ContactHistory history_;
   std::int64_t step_ = 0;
   Vec3 strain_rate_ = Vec3::Zero();
   StepSums sums_;

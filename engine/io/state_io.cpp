@@ -31,36 +31,51 @@ std::vector<Vec3> read_vec3(hid_t group, const std::string& file, const std::str
   return out;
 }
 
-void write_pairs(hid_t group, const std::string& prefix, const PairList& pairs, bool with_history) {
+namespace {
+// The tangential histories a file can hold, with their units.
+constexpr std::pair<const char*, const char*> tangential_histories[] = {{"tangential_spring", "m"}, {"tangential_force", "N"}};
+}  // namespace
+
+void write_pairs(hid_t group, const std::string& prefix, const PairList& pairs, const ContactHistory& history) {
   h5::write(group, prefix + "_first", pairs.first, 1, "1");
   h5::write(group, prefix + "_second", pairs.second, 1, "1");
-  if (with_history) {
-    h5::write(group, prefix + "_tangential_spring", flatten(pairs.spring), 3, "m");
-    h5::write(group, prefix + "_sliding", pairs.sliding, 1, "1");
-  }
+  for (const auto& [name, unit] : tangential_histories)
+    if (history.tangential_name == name) {
+      h5::write(group, prefix + "_" + name, flatten(history.tangential), 3, unit);
+      h5::write(group, prefix + "_sliding", history.sliding, 1, "1");
+    }
+  if (history.rolling_on) h5::write(group, prefix + "_rolling_spring", flatten(history.rolling), 3, "m");
 }
 
-PairList read_pairs(hid_t group, const std::string& file, const std::string& prefix, std::size_t particles) {
-  PairList pairs;
+SavedPairs read_pairs(hid_t group, const std::string& file, const std::string& prefix, std::size_t particles) {
+  SavedPairs saved;
+  PairList& pairs = saved.pairs;
+  ContactHistory& history = saved.history;
   std::size_t cols = 0;
   pairs.first = h5::read<std::uint32_t>(group, prefix + "_first", cols);
   pairs.second = h5::read<std::uint32_t>(group, prefix + "_second", cols);
-  const bool history = h5::exists(group, prefix + "_tangential_spring");
-  if (history) {
-    pairs.spring = read_vec3(group, file, prefix + "_tangential_spring");
-    pairs.sliding = h5::read<std::uint8_t>(group, prefix + "_sliding", cols);
-  }
+  for (const auto& [name, unit] : tangential_histories)
+    if (h5::exists(group, prefix + "_" + name)) {
+      history.tangential_name = name;
+      history.tangential = read_vec3(group, file, prefix + "_" + name);
+      history.sliding = h5::read<std::uint8_t>(group, prefix + "_sliding", cols);
+    }
+  history.rolling_on = h5::exists(group, prefix + "_rolling_spring");
+  if (history.rolling_on) history.rolling = read_vec3(group, file, prefix + "_rolling_spring");
   const std::size_t n = pairs.first.size();
-  if (pairs.second.size() != n || (history && (pairs.spring.size() != n || pairs.sliding.size() != n)))
+  const bool tangential = history.has_tangential();
+  if (pairs.second.size() != n || (tangential && (history.tangential.size() != n || history.sliding.size() != n)) ||
+      (history.rolling_on && history.rolling.size() != n))
     throw h5::Error(file + ": " + path_of(group) + " " + prefix + " datasets have different lengths");
   for (std::size_t k = 0; k < n; ++k)
     if (pairs.first[k] >= pairs.second[k] || pairs.second[k] >= particles ||
         (k > 0 && std::make_pair(pairs.first[k - 1], pairs.second[k - 1]) >= std::make_pair(pairs.first[k], pairs.second[k])))
       throw h5::Error(file + ": " + path_of(group) + " " + prefix + " " + std::to_string(k) + " names invalid particles");
-    else if (history && (!pairs.spring[k].allFinite() || pairs.sliding[k] > 1))
+    else if ((tangential && (!history.tangential[k].allFinite() || history.sliding[k] > 1)) ||
+             (history.rolling_on && !history.rolling[k].allFinite()))
       throw h5::Error(file + ": " + path_of(group) + " " + prefix + " " + std::to_string(k) +
-                      " has a non-finite spring or a sliding flag other than 0 or 1");
-  return pairs;
+                      " has a non-finite history or a sliding flag other than 0 or 1");
+  return saved;
 }
 
 void write_state(hid_t group, const Simulation& sim) {
@@ -84,20 +99,17 @@ void write_state(hid_t group, const Simulation& sim) {
 
   // Contacts: the pairs whose spheres overlap, with their history.
   const PairList& pairs = sim.pairs();
-  const bool frictional = sim.material().friction > 0;
   PairList contacts;
+  std::vector<std::size_t> in_contact;
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     const auto i = pairs.first[k], j = pairs.second[k];
     const double rsum = p.radius[i] + p.radius[j];
     if (cell.branch(p.s[i], p.s[j]).squaredNorm() >= rsum * rsum) continue;
     contacts.first.push_back(i);
     contacts.second.push_back(j);
-    if (frictional) {
-      contacts.spring.push_back(pairs.spring[k]);
-      contacts.sliding.push_back(pairs.sliding[k]);
-    }
+    in_contact.push_back(k);
   }
-  write_pairs(group, "contact", contacts, frictional);
+  write_pairs(group, "contact", contacts, sim.history().subset(in_contact));
   h5::set_attribute(group, "step", static_cast<std::int64_t>(sim.step_count()));
   h5::set_attribute(group, "time", sim.time());
   h5::set_attribute(group, "time_step", sim.time_step());
@@ -155,7 +167,9 @@ SavedState read_state_unchecked(hid_t g, const std::string& file) {
   st.cell = PeriodicCell(Vec3(L[0], L[1], L[2]));
   st.cell.set_reference_lengths(Vec3(L0[0], L0[1], L0[2]));
   st.strain_rate_per_s = Vec3(r[0], r[1], r[2]);
-  st.contacts = read_pairs(g, file, "contact", n);
+  SavedPairs contacts = read_pairs(g, file, "contact", n);
+  st.contacts = std::move(contacts.pairs);
+  st.history = std::move(contacts.history);
   st.step = h5::get_int_attribute(g, "step");
   st.time_step_s = h5::get_double_attribute(g, "time_step");
   return st;

@@ -11,7 +11,8 @@ namespace dem {
 struct SavedState {
   Particles particles;
   PeriodicCell cell;
-  PairList contacts;     // pairs in contact, with springs and sliding flags if frictional
+  PairList contacts;     // pairs in contact
+  ContactHistory history;  // their history (what the law that wrote it keeps)
   Vec3 strain_rate_per_s = Vec3::Zero();
   std::int64_t step = 0;
   double time_step_s = 0;
@@ -21,10 +22,16 @@ struct SavedState {
 std::vector<double> flatten(const std::vector<Vec3>& v);
 std::vector<Vec3> read_vec3(hid_t group, const std::string& file, const std::string& name);
 
-// A pair list as <prefix>_first, <prefix>_second and, with history, <prefix>_tangential_spring and
-// <prefix>_sliding; reading checks the lengths, the order (i < j, sorted) and the values.
-void write_pairs(hid_t group, const std::string& prefix, const PairList& pairs, bool with_history);
-PairList read_pairs(hid_t group, const std::string& file, const std::string& prefix, std::size_t particles);
+// A pair list as <prefix>_first, <prefix>_second and its history: <prefix>_<tangential history name>
+// (tangential_spring [m] or tangential_force [N]) and <prefix>_sliding with friction,
+// <prefix>_rolling_spring [m] with rolling resistance; reading checks the lengths, the order
+// (i < j, sorted) and the values.
+void write_pairs(hid_t group, const std::string& prefix, const PairList& pairs, const ContactHistory& history);
+struct SavedPairs {
+  PairList pairs;
+  ContactHistory history;
+};
+SavedPairs read_pairs(hid_t group, const std::string& file, const std::string& prefix, std::size_t particles);
 
 void write_state(hid_t group, const Simulation& sim);
 // Reads the /state group of a *complete* result file; throws naming the file otherwise.

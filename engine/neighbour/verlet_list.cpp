@@ -131,8 +131,8 @@ void VerletList::restore_exact(Saved saved, const Particles& p) {
   index_.build(pairs_, p.size());
 }
 
-void VerletList::build(const Particles& p, const PeriodicCell& cell) {
-  max_radius_ = largest_radius(p);
+void VerletList::build(const Particles& p, const PeriodicCell& cell, ContactHistory* history) {
+  max_radius_ = largest_radius(p);  // the particles' own: collect_pairs bins by it
   const double range = 2 * max_radius_ + skin_;
   for (int k = 0; k < 3; ++k) {
     if (cell.lengths()[k] <= 2 * range) {
@@ -142,24 +142,29 @@ void VerletList::build(const Particles& p, const PeriodicCell& cell) {
       throw std::runtime_error(msg.str());
     }
   }
+  // Everything is built aside first: if an allocation fails, the list and the history stay as they were.
   PairList fresh;
   collect_pairs(p, cell, fresh);
-  if (keep_history_) {  // carry tangential springs of surviving pairs over (both lists sorted by (i, j))
-    fresh.spring.assign(fresh.size(), Vec3::Zero());
-    fresh.sliding.assign(fresh.size(), 0);
-    std::size_t o = 0;
-    for (std::size_t k = 0; k < fresh.size() && o < pairs_.size(); ++k) {
-      const auto key = std::make_pair(fresh.first[k], fresh.second[k]);
-      while (o < pairs_.size() && std::make_pair(pairs_.first[o], pairs_.second[o]) < key) ++o;
-      if (o < pairs_.size() && pairs_.first[o] == key.first && pairs_.second[o] == key.second) {
-        fresh.spring[k] = pairs_.spring[o];
-        fresh.sliding[k] = pairs_.sliding[o];
-      }
-    }
+  // Where each pair was before (both lists sorted by (i, j)), for the contact history.
+  std::vector<std::uint32_t> from_previous(fresh.size(), ContactHistory::none);
+  std::size_t o = 0;
+  for (std::size_t k = 0; k < fresh.size() && o < pairs_.size(); ++k) {
+    const auto key = std::make_pair(fresh.first[k], fresh.second[k]);
+    while (o < pairs_.size() && std::make_pair(pairs_.first[o], pairs_.second[o]) < key) ++o;
+    if (o < pairs_.size() && pairs_.first[o] == key.first && pairs_.second[o] == key.second)
+      from_previous[k] = static_cast<std::uint32_t>(o);
   }
+  PairIndex index;
+  index.build(fresh, p.size());
+  std::vector<Vec3> s_at_build = p.s;
+  ContactHistory carried;
+  if (history) carried = history->carried(from_previous);
+  // Commit: nothing below throws.
   pairs_ = std::move(fresh);
-  index_.build(pairs_, p.size());
-  s_at_build_ = p.s;
+  index_ = std::move(index);
+  from_previous_ = std::move(from_previous);
+  s_at_build_ = std::move(s_at_build);
+  if (history) *history = std::move(carried);
   lengths_at_build_ = cell.lengths();
   drift_m_ = 0, lengths_min_ = cell.lengths();
   built_ = true;

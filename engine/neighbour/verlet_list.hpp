@@ -4,8 +4,9 @@
 // The list holds every pair (i < j) whose surfaces were closer than `skin` at build time, sorted by
 // (i, j). Forces are summed in that order, in chunks by particle (dynamics/kernel.hpp), so results
 // do not depend, to the last bit, on when the list was rebuilt or on the skin (tests/.../skin_test).
-// Each pair owns its contact history (tangential spring, sliding flag); a rebuild carries the
-// history of surviving pairs over.
+// The contact history lives in its own store (contact/contact_history.hpp); a rebuild tells where
+// each new pair was in the old list (`from_previous`) so that the history of surviving pairs is
+// carried over.
 //
 // Rebuild criterion (`needs_rebuild`): a pair outside the list at build time had a surface gap
 // > skin. Its gap can close only through the particles' own displacement (at most 2 d_max, d_max
@@ -25,14 +26,13 @@
 #include <vector>
 
 #include "cell/periodic_cell.hpp"
+#include "contact/contact_history.hpp"
 #include "core/particles.hpp"
 
 namespace dem {
 
 struct PairList {
   std::vector<std::uint32_t> first, second;  // particle indices, first < second, sorted
-  std::vector<Vec3> spring;                  // elastic tangential displacement [m] (frictional scenes only)
-  std::vector<std::uint8_t> sliding;         // 1 if the contact slid at the last force evaluation (frictional only)
   std::size_t size() const { return first.size(); }
 };
 
@@ -50,7 +50,7 @@ struct PairIndex {
 class VerletList {
  public:
   VerletList() = default;
-  VerletList(double skin_m, bool keep_history) : skin_(skin_m), keep_history_(keep_history) {}
+  explicit VerletList(double skin_m) : skin_(skin_m) {}
 
   double skin() const { return skin_; }
   const PairList& pairs() const { return pairs_; }
@@ -66,18 +66,17 @@ class VerletList {
   // After a position update: the largest distance any particle moved relative to the cell, dt max |v| [m].
   void add_motion(double max_step_m) { drift_m_ += max_step_m; }
   std::size_t exact_checks() const { return exact_checks_; }  // passes of the exact criterion so far
-  // Replaces the pairs, e.g. with contacts and springs loaded from a saved state; the next build()
-  // keeps their history.
+  // Replaces the pairs, e.g. with the contacts of a saved state; the next build() tells where they went.
   void restore(PairList pairs) {
     pairs_ = std::move(pairs);
-    if (keep_history_ && pairs_.spring.size() != pairs_.size()) {  // history-less pairs start unloaded
-      pairs_.spring.assign(pairs_.size(), Vec3::Zero());
-      pairs_.sliding.assign(pairs_.size(), 0);
-    }
     built_ = false;
   }
-  // Rebuilds the list; throws std::runtime_error if the cell is too small for the minimum image.
-  void build(const Particles& p, const PeriodicCell& cell);
+  // Rebuilds the list, and carries `history` (one entry per pair) over to the new pairs; throws
+  // std::runtime_error if the cell is too small for the minimum image. If it throws (that, or an
+  // allocation), the list and the history are left as they were.
+  void build(const Particles& p, const PeriodicCell& cell, ContactHistory* history = nullptr);
+  // After build(): for each pair, its index in the list before the build, or ContactHistory::none.
+  const std::vector<std::uint32_t>& from_previous() const { return from_previous_; }
 
   // Everything a checkpoint needs to continue bit for bit: the whole list (pairs out of contact
   // too: the rebuild criterion relies on every pair within the skin at the last build being
@@ -101,8 +100,8 @@ class VerletList {
   bool beyond_skin(double d_max, double affine) const { return 2 * d_max + affine > skin_; }
 
   double skin_ = 0;
-  bool keep_history_ = false;
   PairList pairs_;
+  std::vector<std::uint32_t> from_previous_;
   PairIndex index_;
   std::vector<Vec3> s_at_build_;
   Vec3 lengths_at_build_ = Vec3::Ones();

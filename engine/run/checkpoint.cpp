@@ -41,16 +41,18 @@ std::int64_t int_attribute(hid_t g, const std::string& file, const std::string& 
   return v;
 }
 
-void write_list(hid_t g, const VerletList::Saved& list) {
-  write_pairs(g, "verlet", list.pairs, !list.pairs.spring.empty());
+void write_list(hid_t g, const VerletList::Saved& list, const ContactHistory& history) {
+  write_pairs(g, "verlet", list.pairs, history);
   h5::write(g, "verlet_position_fractional_at_build", flatten(list.s_at_build), 3, "1");
   write_vec3(g, "verlet_cell_lengths_at_build", list.lengths_at_build, "m");
   h5::set_attribute(g, "verlet_builds", static_cast<std::int64_t>(list.builds));
 }
 
-VerletList::Saved read_list(hid_t g, const std::string& file, std::size_t n) {
+VerletList::Saved read_list(hid_t g, const std::string& file, std::size_t n, ContactHistory& history) {
   VerletList::Saved list;
-  list.pairs = read_pairs(g, file, "verlet", n);
+  SavedPairs pairs = read_pairs(g, file, "verlet", n);
+  list.pairs = std::move(pairs.pairs);
+  history = std::move(pairs.history);
   list.s_at_build = read_vec3(g, file, "verlet_position_fractional_at_build");
   list.lengths_at_build = read_one_vec3(g, file, "verlet_cell_lengths_at_build");
   list.builds = static_cast<std::size_t>(int_attribute(g, file, "verlet_builds", 0, std::numeric_limits<std::int64_t>::max()));
@@ -67,6 +69,7 @@ void write_energy(hid_t g, const EnergyBalance& e) {
   h5::set_attribute(g, "energy_work_by_cell", e.work_by_cell);
   h5::set_attribute(g, "energy_dissipated_damping", e.dissipated_damping);
   h5::set_attribute(g, "energy_dissipated_friction", e.dissipated_friction);
+  h5::set_attribute(g, "energy_dissipated_rolling", e.dissipated_rolling);
   h5::set_attribute(g, "energy_kinetic", e.kinetic);
   h5::set_attribute(g, "energy_elastic", e.elastic);
   h5::set_attribute(g, "energy_stored_at_start", e.stored_at_start);
@@ -79,6 +82,7 @@ EnergyBalance read_energy(hid_t g, const std::string& file) {
   e.work_by_cell = finite_attribute(g, file, "energy_work_by_cell");
   e.dissipated_damping = finite_attribute(g, file, "energy_dissipated_damping");
   e.dissipated_friction = finite_attribute(g, file, "energy_dissipated_friction");
+  e.dissipated_rolling = finite_attribute(g, file, "energy_dissipated_rolling");
   e.kinetic = finite_attribute(g, file, "energy_kinetic");
   e.elastic = finite_attribute(g, file, "energy_elastic");
   e.stored_at_start = finite_attribute(g, file, "energy_stored_at_start");
@@ -151,7 +155,7 @@ void write_checkpoint(const std::string& partial_path, const std::string& out_pa
       h5::set_attribute(g, "wall_time_s", wall_time_s);
       h5::Handle state = h5::create_group(g, "state");
       write_state(state, sim);
-      write_list(state, sim.verlet_list().saved());
+      write_list(state, sim.verlet_list().saved(), sim.history());
       write_energy(state, sim.energy());
       write_cursor(h5::create_group(g, "cursor"), cursor);
       h5::flush_file(f, tmp);  // checked while the groups are open: closing them then writes nothing
@@ -177,7 +181,7 @@ Checkpoint read_checkpoint(const std::string& file) {
     c.wall_time_s = finite_attribute(g, file, "wall_time_s");
     h5::Handle state = h5::open_group(g, "state");
     c.state = read_state(state, file);
-    c.list = read_list(state, file, c.state.particles.size());
+    c.list = read_list(state, file, c.state.particles.size(), c.list_history);
     c.energy = read_energy(state, file);
     c.cursor = read_cursor(h5::open_group(g, "cursor"), file);
     return c;
@@ -188,7 +192,7 @@ Checkpoint read_checkpoint(const std::string& file) {
 Simulation restore_simulation(const SceneConfig& scene, Checkpoint& c) {
   Simulation sim(std::move(c.state.particles), c.state.cell, scene.material, scene.damping, scene.time_step_s,
                  scene.verlet_skin_m);
-  sim.restore_checkpoint(c.state.step, c.state.strain_rate_per_s, std::move(c.list), c.energy);
+  sim.restore_checkpoint(c.state.step, c.state.strain_rate_per_s, std::move(c.list), c.list_history, c.energy);
   return sim;
 }
 

@@ -33,6 +33,7 @@ struct Checkpoint {
   StageCursor cursor;
   SavedState state;  // particles, cell, strain rate, step
   VerletList::Saved list;
+  ContactHistory list_history;  // the history of every pair of `list`
   EnergyBalance energy;
 };
 

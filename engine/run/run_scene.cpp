@@ -49,26 +49,21 @@ Simulation build_simulation(const SceneConfig& scene) {
                                                                  : "particles.state";
     throw ConfigError(scene.file + ": " + key + ": " + e.what());
   }
-  const double dt_crit = critical_time_step(particles, scene.material.kn_N_per_m);
+  const double dt_crit = critical_time_step(scene.material.law, particles, scene.material.density_kg_per_m3);
   if (scene.time_step_s > scene.max_time_step_fraction * dt_crit) {
     std::ostringstream msg;
     msg << scene.file << ": numerics.time_step = " << scene.time_step_s << " s is above the allowed "
         << scene.max_time_step_fraction << " x critical time step = " << scene.max_time_step_fraction * dt_crit
-        << " s (critical step 2 sqrt(m_min/kn) = " << dt_crit
+        << " s (critical step " << critical_time_step_formula(scene.material.law) << " = " << dt_crit
         << " s); reduce time_step, or raise numerics.max_time_step_fraction on purpose";
     throw ConfigError(msg.str());
   }
   Simulation sim(std::move(particles), cell, scene.material, scene.damping, scene.time_step_s, scene.verlet_skin_m);
   if (src.kind == ParticleSource::Kind::State) {
     // A new run from a saved state: its own step count starts at zero; the dynamic state continues.
-    // A frictional scene started from a frictionless sample gets unloaded springs (VerletList::restore);
-    // a frictionless scene drops any springs.
-    PairList contacts = std::move(saved.contacts);
-    if (scene.material.friction == 0) {
-      contacts.spring.clear();
-      contacts.sliding.clear();
-    }
-    sim.restore(0, saved.strain_rate_per_s, std::move(contacts));
+    // A history the scene's law does not keep (a frictional scene from a frictionless sample, a
+    // Hertz-Mindlin scene from a linear one) starts unloaded; one the law does not use is dropped.
+    sim.restore(0, saved.strain_rate_per_s, std::move(saved.contacts), saved.history);
   }
   return sim;
 }
@@ -330,7 +325,7 @@ RunSummary run_stages(Simulation& sim, const SceneConfig& scene, const Checkpoin
       std::ostringstream msg;
       msg << "the energy balance no longer closes at step " << s.step_count() << " (time " << s.time()
           << " s): closure error " << error << " > numerics.max_energy_error = " << scene.max_energy_error
-          << "; the time step (" << s.time_step() << " s = " << s.time_step() / critical_time_step(s.particles(), s.material().kn_N_per_m)
+          << "; the time step (" << s.time_step() << " s = " << s.time_step() / critical_time_step(s.material().law, s.particles(), s.material().density_kg_per_m3)
           << " x critical) is too large for this stiffness and loading";
       throw StageError(msg.str());
     }

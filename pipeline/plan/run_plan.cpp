@@ -170,7 +170,7 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
         if (v.time_step_fraction) {
           const dem::SceneConfig parsed = dem::scene_from_text(emit(scene, header), prep.scene_file);
           sample = lattice_particles(parsed);
-          const double dt = *v.time_step_fraction * dem::critical_time_step(sample, parsed.material.kn_N_per_m);
+          const double dt = *v.time_step_fraction * dem::critical_time_step(parsed.material.law, sample, parsed.material.density_kg_per_m3);
           dem::apply_override(scene, study.preparation, "numerics.time_step", exact(dt));
         }
         return 0;
@@ -227,7 +227,7 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
           cap_repeats(ts, profile.max_repeat);
           if (v.time_step_fraction) {  // the test's spheres are the sample's; its kn may differ
             const dem::SceneConfig parsed = dem::scene_from_text(emit(ts, header), run.scene_file);
-            const double dt = *v.time_step_fraction * dem::critical_time_step(sample, parsed.material.kn_N_per_m);
+            const double dt = *v.time_step_fraction * dem::critical_time_step(parsed.material.law, sample, parsed.material.density_kg_per_m3);
             dem::apply_override(ts, t.scene, "numerics.time_step", exact(dt));
           }
           return 0;

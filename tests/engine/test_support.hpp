@@ -16,9 +16,7 @@ inline constexpr double pi = std::numbers::pi;
 inline Material material(double kn, double ks = 0, double mu = 0, double density = 2650) {
   Material m;
   m.density_kg_per_m3 = density;
-  m.kn_N_per_m = kn;
-  m.ks_N_per_m = ks;
-  m.friction = mu;
+  m.law = linear_law(kn, ks, mu);
   return m;
 }
 

@@ -53,7 +53,7 @@ TEST_CASE("the paper study plans a preparation per density and every test after 
   }
   CHECK(names.size() == runs.size());
   const dem::SceneConfig loose = dem::scene_from_text(runs[0].scene_text, runs[0].scene_file);
-  CHECK(loose.material.friction == 0.5);
+  CHECK(std::get<dem::LinearFrictionLaw>(loose.material.law).tangential.mu == 0.5);
 }
 
 TEST_CASE("input hashes change with the engine, the scene and the sample a test starts from", "[pipeline]") {

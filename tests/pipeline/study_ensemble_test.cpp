@@ -104,9 +104,9 @@ TEST_CASE("per_test changes one test; shearing with the preparation friction fol
   CHECK(scene(r.at("slow2_loose_test2")).stages[0].duration_s == 2e-4);
   CHECK(scene(r.at("slow2_loose_test1")).stages[0].duration_s == 1e-4);  // the other test as written ...
   CHECK(r.at("slow2_loose_test1").hash != r.at("base_loose_test1").hash);  // (its own name; join_studies copies it)
-  CHECK(scene(r.at("prepmu_dense_test1")).material.friction == 0.0);  // the dense sample's preparation friction
-  CHECK(scene(r.at("prepmu_loose_test1")).material.friction == 0.5);
-  CHECK(scene(r.at("base_dense_test1")).material.friction == 0.5);   // the test scene's shearing friction
+  CHECK(dem::friction_coefficient(scene(r.at("prepmu_dense_test1")).material.law) == 0.0);  // the dense sample's preparation friction
+  CHECK(dem::friction_coefficient(scene(r.at("prepmu_loose_test1")).material.law) == 0.5);
+  CHECK(dem::friction_coefficient(scene(r.at("base_dense_test1")).material.law) == 0.5);   // the test scene's shearing friction
   // join_studies: a test whose resolved scene is the baseline's but for its name is a copy of it.
   const pipeline::Study study = load(dir, two_densities + "profiles: {paper: {lattice: 2}, quick: {lattice: 2}}\n"
                                                           "variants: [{name: base}, {name: slow2, per_test: {test2: {\"stages[0].duration\": 2.0e-4}}}]\n");

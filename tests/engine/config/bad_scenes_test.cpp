@@ -363,7 +363,7 @@ TEST_CASE("a time step above the allowed fraction of the critical step is refuse
   const double pi = 3.14159265358979323846;
   const auto step_of = [&](double d) { return 2 * std::sqrt(2650 * pi / 6 * d * d * d / 1e6); };
   const SceneConfig ok = scene_from_text(Yaml{.numerics = "{time_step: 1.0e-7}"}.text(), "crit.yaml");
-  const double dt_crit = critical_time_step(build_simulation(ok).particles(), 1e6);
+  const double dt_crit = critical_time_step(ok.material.law, build_simulation(ok).particles(), 2650);
   REQUIRE(dt_crit >= step_of(3e-3));
   REQUIRE(dt_crit <= step_of(4.5e-3));
 

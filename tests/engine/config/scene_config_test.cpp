@@ -106,9 +106,11 @@ TEST_CASE("the resolved YAML is a complete scene that parses back to the same va
   CHECK(b.particles.grading_diameters_m == a.particles.grading_diameters_m);
   CHECK(b.particles.grading_percent_finer == a.particles.grading_percent_finer);
   CHECK(b.material.density_kg_per_m3 == a.material.density_kg_per_m3);
-  CHECK(b.material.kn_N_per_m == a.material.kn_N_per_m);
-  CHECK(b.material.ks_N_per_m == a.material.ks_N_per_m);
-  CHECK(b.material.friction == a.material.friction);
+  const auto& la = std::get<LinearFrictionLaw>(a.material.law);
+  const auto& lb = std::get<LinearFrictionLaw>(b.material.law);
+  CHECK(lb.normal.kn == la.normal.kn);
+  CHECK(lb.tangential.ks == la.tangential.ks);
+  CHECK(lb.tangential.mu == la.tangential.mu);
   CHECK((b.damping.form == Damping::Form::Local));
   CHECK(b.damping.translational == 0.7);
   CHECK(b.damping.rotational == 0.3);

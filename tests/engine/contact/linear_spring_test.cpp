@@ -1,4 +1,4 @@
-// Linear spring contact with Coulomb friction (contact/linear_spring.hpp): the tangential spring
+// Linear spring contact with Coulomb friction (contact/linear_spring.hpp, LinearCoulomb): the tangential spring
 // grows elastically as ks u_t, is capped at exactly mu f_n (sliding flag set), and is rotated into
 // a new tangent plane with its magnitude kept.
 #include <catch2/catch.hpp>
@@ -6,12 +6,13 @@
 #include <cmath>
 
 #include "contact/linear_spring.hpp"
+#include "engine/contact/contact_support.hpp"
 #include "engine/test_support.hpp"
 
 using namespace dem;
 
 TEST_CASE("Coulomb: elastic tangential force ks*u_t below mu*f_n, capped at mu*f_n above", "[contact][friction]") {
-  const Coulomb law{1e5, 0.5};         // ks [N/m], mu
+  const LinearCoulomb law{1e5, 0.5};         // ks [N/m], mu
   const double fn = 10.0;              // fixed normal force [N] -> cap mu fn = 5 N at u_t = 5e-5 m
   const double cap = law.mu * fn;
   const Vec3 n(1, 0, 0);
@@ -22,7 +23,7 @@ TEST_CASE("Coulomb: elastic tangential force ks*u_t below mu*f_n, capped at mu*f
   double lost = -1;  // spring energy removed by the cap [J]
   int elastic_calls = 0, sliding_calls = 0;
   for (int k = 1; k <= 120; ++k) {
-    const Vec3 f = law.tangential(spring, n, v_t, dt, fn, sliding, lost);
+    const Vec3 f = test::tangential_step(law, spring, n, v_t, dt, fn, 0.0, 0.0, sliding, lost);
     const double elastic = law.ks * k * speed * dt;  // ks u_t with u_t = k v dt, the spring never having slipped
     // The spring stays in the tangent plane (v_t is tangential, n fixed), and opposes the motion of j.
     REQUIRE(std::abs(f.dot(n)) <= 1e-15 * f.norm());
@@ -53,19 +54,19 @@ TEST_CASE("Coulomb: elastic tangential force ks*u_t below mu*f_n, capped at mu*f
 
   // Reversing the motion unloads the spring elastically from the cap: |f| = mu fn - ks * k v dt, not sliding.
   for (int k = 1; k <= 10; ++k) {
-    const Vec3 f = law.tangential(spring, n, -v_t, dt, fn, sliding, lost);
+    const Vec3 f = test::tangential_step(law, spring, n, -v_t, dt, fn, 0.0, 0.0, sliding, lost);
     REQUIRE_FALSE(sliding);
     REQUIRE(f.norm() == Approx(cap - law.ks * k * speed * dt).epsilon(1e-12));
   }
 
   // A drop of the normal force below |f_t|/mu makes the contact slide at once, at the new cap.
-  const Vec3 f = law.tangential(spring, n, Vec3::Zero(), dt, 2.0, sliding, lost);
+  const Vec3 f = test::tangential_step(law, spring, n, Vec3::Zero(), dt, 2.0, 0.0, 0.0, sliding, lost);
   REQUIRE(sliding);
   REQUIRE(f.norm() == Approx(law.mu * 2.0).epsilon(1e-14));
 }
 
 TEST_CASE("Coulomb: a new normal rotates the spring into the new tangent plane, magnitude kept", "[contact][friction]") {
-  const Coulomb law{2e5, 0.6};
+  const LinearCoulomb law{2e5, 0.6};
   const double fn = 1e3;  // cap 600 N, far above ks u = 2 N: no sliding
   const double u = 1e-5;
   bool sliding = true;
@@ -74,7 +75,7 @@ TEST_CASE("Coulomb: a new normal rotates the spring into the new tangent plane, 
     for (double theta : {0.1, 0.7, 1.3}) {
       Vec3 spring(0, u, 0);
       const Vec3 n(std::cos(theta), std::sin(theta), 0);
-      const Vec3 f = law.tangential(spring, n, Vec3::Zero(), 1e-4, fn, sliding, lost);
+      const Vec3 f = test::tangential_step(law, spring, n, Vec3::Zero(), 1e-4, fn, 0.0, 0.0, sliding, lost);
       REQUIRE_FALSE(sliding);
       // The expected vector is the unit tangent closest to the old spring, times |u|; round-off only.
       const Vec3 expected = u * Vec3(-std::sin(theta), std::cos(theta), 0);
@@ -87,7 +88,7 @@ TEST_CASE("Coulomb: a new normal rotates the spring into the new tangent plane, 
     const double theta = 0.4;
     Vec3 spring(u, 0, 0);
     const Vec3 n(std::sin(theta), 0, std::cos(theta));
-    law.tangential(spring, n, Vec3::Zero(), 1e-4, fn, sliding, lost);
+    test::tangential_step(law, spring, n, Vec3::Zero(), 1e-4, fn, 0.0, 0.0, sliding, lost);
     REQUIRE((spring - u * Vec3(std::cos(theta), 0, -std::sin(theta))).norm() <= 1e-14 * u);
   }
 }
@@ -113,7 +114,7 @@ TEST_CASE("oblique contact in a simulation: normal kn*overlap, tangential -ks*v_
     REQUIRE((sim.net_force()[0] + f_j).norm() <= 1e-15 * f_j.norm());  // action = reaction
     omega_i = sim.particles().omega[0];
     omega_j = sim.particles().omega[1];
-    sliding = sim.pairs().sliding.at(0) != 0;
+    sliding = sim.history().sliding.at(0) != 0;
     return sim.particles().inertia[0];
   };
   Vec3 f, wi, wj;

@@ -176,7 +176,7 @@ TEST_CASE("stress path: the five test scenes expand into the SPEC's legs and cyc
     CHECK(st.stress_ratio == 1.24);
     CHECK(st.stress_rate_Pa_per_s == 2e6);
     CHECK(st.reset_strain);
-    CHECK(scene.material.friction == 0.5);
+    CHECK(std::get<LinearFrictionLaw>(scene.material.law).tangential.mu == 0.5);
     const double p = st.mean_stress_Pa, R = st.stress_ratio, rate = st.stress_rate_Pa_per_s;
 
     const std::vector<PathLeg> legs = expand_path(st.path, Vec3::Constant(p), rate);

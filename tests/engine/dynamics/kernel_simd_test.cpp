@@ -50,7 +50,7 @@ TEST_CASE("the vectorised loops give the scalar loops' run bit for bit", "[simd]
     // 729 spheres: the last chunk of 217 particles ends with one moved by the scalar code.
     const Simulation scalar = compressed_with(0, 0.5, 12000, 9);
     std::size_t sliding = 0;
-    for (auto f : scalar.pairs().sliding) sliding += f;
+    for (auto f : scalar.history().sliding) sliding += f;
     REQUIRE(sliding > 0);  // the Coulomb cap ran
     // Pairs left after the last full block go through the scalar code: make sure both paths ran.
     REQUIRE(scalar.pairs().size() % 8 % 4 != 0);

@@ -55,8 +55,8 @@ inline std::vector<Contact> touching(const Simulation& sim) {
     const auto i = pairs.first[k], j = pairs.second[k];
     const double rsum = p.radius[i] + p.radius[j];
     if (sim.cell().branch(p.s[i], p.s[j]).squaredNorm() >= rsum * rsum) continue;
-    out.emplace_back(i, j, pairs.spring.empty() ? Vec3::Zero() : pairs.spring[k],
-                     pairs.sliding.empty() ? 0 : int(pairs.sliding[k]));
+    const ContactHistory& h = sim.history();
+    out.emplace_back(i, j, h.tangential.empty() ? Vec3(Vec3::Zero()) : h.tangential[k], h.sliding.empty() ? 0 : int(h.sliding[k]));
   }
   return out;
 }
@@ -77,8 +77,9 @@ inline void require_identical_motion(const Simulation& a, const Simulation& b) {
 inline void require_identical(const Simulation& a, const Simulation& b) {
   require_identical_motion(a, b);
   REQUIRE(a.pairs().first == b.pairs().first);
-  REQUIRE(a.pairs().spring == b.pairs().spring);
-  REQUIRE(a.pairs().sliding == b.pairs().sliding);
+  REQUIRE(a.history().tangential == b.history().tangential);
+  REQUIRE(a.history().sliding == b.history().sliding);
+  REQUIRE(a.history().rolling == b.history().rolling);
 }
 
 

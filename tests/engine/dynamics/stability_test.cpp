@@ -16,7 +16,7 @@ TEST_CASE("critical_time_step = 2 sqrt(m_min / kn)", "[dynamics][stability]") {
   const double kn = 3e5;
   const double m_min = 2650 * 4.0 / 3.0 * test::pi * 0.5e-3 * 0.5e-3 * 0.5e-3;
   // m_min is recomputed independently from rho 4/3 pi r^3: a few roundings, relative 1e-15.
-  REQUIRE(critical_time_step(p, kn) == Approx(2 * std::sqrt(m_min / kn)).epsilon(1e-14));
+  REQUIRE(critical_time_step(linear_law(kn, 0, 0), p, 2650) == Approx(2 * std::sqrt(m_min / kn)).epsilon(1e-14));
 }
 
 namespace {
@@ -34,7 +34,7 @@ double alternating_mode_amplitude(double dt_over_limit, int steps, double* bound
     const double u = (k % 2 == 0) ? u0 : -u0;
     p.add(test::fractional(cell, Vec3((k + 0.5) * a + u, 0.005, 0.005)), r, 2650);
   }
-  const double dt = dt_over_limit * critical_time_step(p, 4 * kn);
+  const double dt = dt_over_limit * critical_time_step(linear_law(4 * kn, 0, 0), p, 2650);
   const double w = 2 * dt_over_limit;  // omega dt
   if (bound) *bound = 1 / std::sqrt(1 - w * w / 4);
   Simulation sim(p, cell, test::material(kn), test::no_damping(), dt, 1e-4);

@@ -19,7 +19,7 @@ TEST_CASE("1 and 2 threads give bit-for-bit the same run", "[threads]") {
     const Simulation one = compressed(0.5, 1, 12000);
     const Simulation two = compressed(0.5, 2, 12000);
     std::size_t sliding = 0;
-    for (auto f : one.pairs().sliding) sliding += f;
+    for (auto f : one.history().sliding) sliding += f;
     REQUIRE(sliding > 0);  // the Coulomb branch ran
     require_identical(one, two);
   }

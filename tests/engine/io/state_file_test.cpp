@@ -86,7 +86,7 @@ TEST_CASE("a saved state loads into a new simulation exactly, with its step coun
   const SavedState st = read_state(good);
   REQUIRE(st.particles.size() == 64);
   REQUIRE(st.contacts.size() > 0);
-  CHECK(st.contacts.spring.size() == st.contacts.size());  // frictional: history saved
+  CHECK(st.history.tangential.size() == st.contacts.size());  // frictional: history saved
   CHECK(st.step == 1000);
   CHECK(st.time_step_s == 2e-6);
   // The scene's state path is relative to the scene file (resolved against its folder).
@@ -100,8 +100,8 @@ TEST_CASE("a saved state loads into a new simulation exactly, with its step coun
   CHECK(sim.cell().reference_lengths() == st.cell.reference_lengths());
   CHECK(sim.strain_rate() == st.strain_rate_per_s);
   CHECK(sim.pairs().first == st.contacts.first);
-  CHECK(sim.pairs().spring == st.contacts.spring);
-  CHECK(sim.pairs().sliding == st.contacts.sliding);
+  CHECK(sim.history().tangential == st.history.tangential);
+  CHECK(sim.history().sliding == st.history.sliding);
 }
 
 TEST_CASE("a frictionless state can start a frictional scene and vice versa", "[io][state]") {
@@ -111,20 +111,20 @@ TEST_CASE("a frictionless state can start a frictional scene and vice versa", "[
     const std::string dir = test::scratch_dir("state_cross_a");
     const SavedState st = read_state(good_result(dir, frictionless));
     REQUIRE(st.contacts.size() > 0);
-    CHECK(st.contacts.spring.empty());
+    CHECK(st.history.tangential.empty());
     const Simulation sim = build_simulation(scene_from_text(scene_text("particles: {state: good.h5}\n", frictional), dir + "/n.yaml"));
     CHECK(sim.pairs().size() == st.contacts.size());
-    REQUIRE(sim.pairs().spring.size() == st.contacts.size());
-    for (const Vec3& u : sim.pairs().spring) CHECK(u == Vec3::Zero());
+    REQUIRE(sim.history().tangential.size() == st.contacts.size());
+    for (const Vec3& u : sim.history().tangential) CHECK(u == Vec3::Zero());
   }
   SECTION("frictional sample, frictionless scene") {
     const std::string dir = test::scratch_dir("state_cross_b");
     const SavedState st = read_state(good_result(dir, frictional));
-    REQUIRE(!st.contacts.spring.empty());
+    REQUIRE(!st.history.tangential.empty());
     const Simulation sim = build_simulation(scene_from_text(scene_text("particles: {state: good.h5}\n", frictionless), dir + "/n.yaml"));
     CHECK(sim.pairs().size() == st.contacts.size());
-    CHECK(sim.pairs().spring.empty());
-    CHECK(sim.pairs().sliding.empty());
+    CHECK(sim.history().tangential.empty());
+    CHECK(sim.history().sliding.empty());
   }
 }
 

@@ -165,26 +165,35 @@ TEST_CASE("Verlet list: a rebuild keeps the history of surviving pairs and only 
   p.add(Vec3(0.50, 0.8, 0.5), r, 2650);  // 2
   p.add(Vec3(0.59, 0.8, 0.5), r, 2650);  // 3: 1.8 mm from 2
   p.add(Vec3(0.59, 0.2, 0.5), r, 2650);  // 4: 1.8 mm from 1
-  VerletList list(1e-4, true);
+  VerletList list(1e-4);
   list.build(p, cell);
   REQUIRE(list_pairs(list.pairs()) == PairVec{{1, 4}, {2, 3}});
-  list.pairs().spring[0] = Vec3(0, 0, 3e-6);
-  list.pairs().spring[1] = Vec3(0, 1e-6, 2e-6);
-  list.pairs().sliding[1] = 1;
+  ContactHistory h{"tangential_spring", true, {}, {}, {}};
+  h.reset(list.pairs().size());
+  h.tangential[0] = Vec3(0, 0, 3e-6);
+  h.tangential[1] = Vec3(0, 1e-6, 2e-6);
+  h.sliding[1] = 1;
+  h.rolling[1] = Vec3(4e-6, 0, 0);
   p.s[0] = Vec3(0.41, 0.2, 0.5);  // now 1.8 mm from 1
   p.s[4] = Vec3(0.70, 0.2, 0.5);  // now 4 mm from 1
   REQUIRE(list.needs_rebuild(p, cell));
   list.build(p, cell);
+  h.carry(list.from_previous());
   REQUIRE(list_pairs(list.pairs()) == PairVec{{0, 1}, {2, 3}});
-  REQUIRE(list.pairs().spring[0] == Vec3::Zero());  // new pair: no history
-  REQUIRE(list.pairs().sliding[0] == 0);
-  REQUIRE(list.pairs().spring[1] == Vec3(0, 1e-6, 2e-6));  // surviving pair: kept exactly
-  REQUIRE(list.pairs().sliding[1] == 1);
+  REQUIRE(list.from_previous() == std::vector<std::uint32_t>{ContactHistory::none, 1});
+  REQUIRE(h.tangential[0] == Vec3::Zero());  // new pair: no history
+  REQUIRE(h.sliding[0] == 0);
+  REQUIRE(h.rolling[0] == Vec3::Zero());
+  REQUIRE(h.tangential[1] == Vec3(0, 1e-6, 2e-6));  // surviving pair: kept exactly
+  REQUIRE(h.sliding[1] == 1);
+  REQUIRE(h.rolling[1] == Vec3(4e-6, 0, 0));
   REQUIRE(list.builds() == 2);
-  // Without history (frictionless scenes) the list carries no springs at all.
-  VerletList plain(1e-4, false);
-  plain.build(p, cell);
-  REQUIRE(plain.pairs().spring.empty());
+  // Without friction or rolling (a frictionless law) the history keeps nothing at all.
+  ContactHistory plain;
+  plain.reset(list.pairs().size());
+  plain.carry(list.from_previous());
+  REQUIRE(plain.tangential.empty());
+  REQUIRE(plain.rolling.empty());
 }
 
 TEST_CASE("Verlet list: a contact's tangential spring survives rebuilds inside a simulation", "[neighbour][verlet][friction]") {
@@ -208,9 +217,8 @@ TEST_CASE("Verlet list: a contact's tangential spring survives rebuilds inside a
     PairList saved;
     saved.first = {0};
     saved.second = {1};
-    saved.spring = {Vec3(0, 2e-6, 0)};
-    saved.sliding = {0};
-    sim.restore(0, Vec3::Zero(), saved);
+    ContactHistory history{"tangential_spring", false, {Vec3(0, 2e-6, 0)}, {0}, {}};
+    sim.restore(0, Vec3::Zero(), saved, history);
     return sim;
   };
   Simulation moving = run(1000, 1e-5), reference = run(0, 1e-3);

@@ -104,7 +104,7 @@ StageRecord run_recorded(Simulation& sim, const SceneConfig& scene, int index, b
   hooks.row = [&](const Simulation& s, const RowContext&) {
     r.min_contacts = std::min(r.min_contacts, count_contacts(s).contacts);
     std::size_t sliding = 0;
-    for (auto f : s.pairs().sliding) sliding += f;
+    for (auto f : s.history().sliding) sliding += f;
     r.max_sliding = std::max(r.max_sliding, sliding);
     ++r.rows;
   };
@@ -130,7 +130,7 @@ void perturb_velocity(const std::string& file, double dv) {
 
 void check_resume(const Variant& v) {
   const std::string dir = test::scratch_dir("resume_" + v.name);
-  const bool friction = scene_from_text(scene_text(v, lattice, true, true), "x.yaml").material.friction > 0;
+  const bool friction = has_tangential(scene_from_text(scene_text(v, lattice, true, true), "x.yaml").material.law);
 
   // Uninterrupted: both stages on one simulation.
   const SceneConfig both = scene_from_text(scene_text(v, lattice, true, true), dir + "/both.yaml");
@@ -202,8 +202,8 @@ void check_resume_files(const Variant& v) {
   CHECK(a.strain_rate_per_s == b.strain_rate_per_s);
   CHECK(a.contacts.first == b.contacts.first);
   CHECK(a.contacts.second == b.contacts.second);
-  CHECK(a.contacts.spring == b.contacts.spring);
-  CHECK(a.contacts.sliding == b.contacts.sliding);
+  CHECK(a.history.tangential == b.history.tangential);
+  CHECK(a.history.sliding == b.history.sliding);
   // The step counts differ by the first stage's steps (1000 steps of 2 us).
   CHECK(a.step - b.step == 1000);
 

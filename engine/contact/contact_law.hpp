@@ -1,0 +1,77 @@
+#pragma once
+// A contact law: a normal law, a tangential law and a rolling law, each a value type that owns
+// its force, its stored energy, what the servo and the time step need, and (tangential and
+// rolling) the history it keeps per contact. Every part is written once, for any lanes `O`
+// (contact/lane_ops.inc), and called by the scalar and the vectorised pair loops
+// (dynamics/kernel_simd_pairs.inc) and by the measurements.
+//
+// What each part provides (see contact/linear_spring.hpp for the exemplar):
+//   normal      force<O>(overlap, R*), stiffness<O>(overlap, R*) (d f_n / d overlap, for the servo),
+//               energy<O>(f_n, overlap), critical_time_step(m_min, r_min, density) and its formula,
+//               damping_stiffness() (0: viscous damping cannot be scaled), needs_reduced_radius
+//   tangential  has_tangential, history_name / history_unit, needs_reduced_radius,
+//               update<O>(HistoryStep&, f_n, overlap, R*, touch), energy<O>(f_t, overlap, R*),
+//               opening_loss<O>(|history|^2), force_of<O>(history, overlap, R*)
+//   rolling     has_rolling, update<O>(HistoryStep&, f_n, touch), energy<O>(f_r), opening_loss<O>
+//
+// To add a law: write its parts in a header here, add the combination to AnyContactLaw below,
+// and read its keys in config/contact_keys.cpp. The kernels are instantiated for every
+// alternative of AnyContactLaw (dynamics/kernel_simd.cpp, dynamics/simulation.cpp).
+#include <string>
+#include <variant>
+
+#include "contact/hertz_mindlin.hpp"
+#include "contact/linear_spring.hpp"
+#include "contact/rolling.hpp"
+#include "core/particles.hpp"
+
+namespace dem {
+
+// No tangential force: the kernel has no tangential spring, no history and no torque.
+struct NoFriction {
+  static constexpr bool has_tangential = false;
+  static constexpr bool needs_reduced_radius = false;
+};
+
+template <class Normal, class Tangential = NoFriction, class Rolling = NoRolling>
+struct ContactLaw {
+  Normal normal{};
+  Tangential tangential{};
+  Rolling rolling{};
+
+  using NormalLaw = Normal;
+  using TangentialLaw = Tangential;
+  using RollingLaw = Rolling;
+  static constexpr bool has_tangential = Tangential::has_tangential;
+  static constexpr bool has_rolling = Rolling::has_rolling;
+  static constexpr bool rotates = has_tangential || has_rolling;  // torques, spins
+  static constexpr bool needs_reduced_radius =
+      Normal::needs_reduced_radius || Tangential::needs_reduced_radius || has_rolling;
+};
+
+using LinearLaw = ContactLaw<LinearNormal>;
+using LinearFrictionLaw = ContactLaw<LinearNormal, LinearCoulomb>;
+using LinearRollingLaw = ContactLaw<LinearNormal, LinearCoulomb, RollingSpring>;
+using HertzLaw = ContactLaw<HertzNormal>;
+using HertzMindlinLaw = ContactLaw<HertzNormal, MindlinCoulomb>;
+using HertzMindlinRollingLaw = ContactLaw<HertzNormal, MindlinCoulomb, RollingSpring>;
+
+// Every law a scene can choose; the kernels are compiled for each.
+using AnyContactLaw =
+    std::variant<LinearLaw, LinearFrictionLaw, LinearRollingLaw, HertzLaw, HertzMindlinLaw, HertzMindlinRollingLaw>;
+
+// The linear law with Coulomb friction if mu > 0 (frictionless otherwise).
+AnyContactLaw linear_law(double kn, double ks, double mu);
+
+bool has_tangential(const AnyContactLaw& law);
+bool has_rolling(const AnyContactLaw& law);
+double friction_coefficient(const AnyContactLaw& law);  // mu; 0 without friction
+// The name and unit of the tangential history ("tangential_spring", "m"); empty without friction.
+std::string tangential_history_name(const AnyContactLaw& law);
+std::string tangential_history_unit(const AnyContactLaw& law);
+// The critical time step of the law on these particles [s], and how it is computed.
+double critical_time_step(const AnyContactLaw& law, const Particles& p, double density_kg_per_m3);
+std::string critical_time_step_formula(const AnyContactLaw& law);
+double damping_stiffness(const AnyContactLaw& law);  // [N/m]; 0 if the law has none
+
+}  // namespace dem
