@@ -200,8 +200,8 @@ inline V wrap(V x, V& inside) {
 // and one add each (the fourth lane carries the next entry's first component and is dropped;
 // PairLoop gives the arrays a spare entry): lanes 0-2 add exactly what the scalar gather adds, in
 // the same order. Stores the net force in net[i] and the torque in *torque.
-template <bool Rotate>
-inline void gather_net(const ParticleLoop<Rotate, ViscousDamping>& loop, std::size_t i, Vec3* torque) {
+template <bool Rotate, class DampingPolicy>
+inline void gather_net(const ParticleLoop<Rotate, DampingPolicy>& loop, std::size_t i, Vec3* torque) {
   V f = zero(), t = zero();
   for (std::uint32_t m = loop.second_begin[i]; m < loop.second_begin[i + 1]; ++m) {
     const std::uint32_t k = loop.second_pairs[m];
@@ -220,19 +220,38 @@ inline void gather_net(const ParticleLoop<Rotate, ViscousDamping>& loop, std::si
   if constexpr (Rotate) put(*torque, t);
 }
 
-// The particles [begin, end) of one chunk under viscous damping: ParticleLoop::update four
+// The particles [begin, end) of one chunk, viscous or local damping: ParticleLoop::update four
 // particles at a time. In batches of up to 16 blocks of four: the net forces and torques are
 // gathered one particle at a time (pair order), then the blocks are moved. `ok` is cleared if a
 // particle cannot be wrapped back into the cell.
-template <bool Rotate>
-void particle_chunk(const ParticleLoop<Rotate, ViscousDamping>& loop, std::size_t begin, std::size_t end,
+// The damped leapfrog update of four particles' velocities (or spins, `rot`) from v_old under the
+// force f: ViscousDamping::velocity / spin and LocalDamping::velocity / spin, lane by lane.
+inline V3 damped_update(const ViscousDamping& d, bool rot, std::size_t ib, const V3& v_old, const V3& f) {
+  const V a = _mm256_loadu_pd((rot ? d.a_rot : d.a).data() + ib), c = _mm256_loadu_pd((rot ? d.b_rot : d.b).data() + ib);
+  return a * v_old + c * f;
+}
+// LocalDamping::damped, one component: f - (alpha |f|) sign(v), sign(NaN) = 0 as in the scalar code.
+inline V local_damped(V f, V v, V alpha) {
+  const V abs_f = _mm256_andnot_pd(splat(-0.0), f);
+  const V sign = select(greater(v, zero()), splat(1.0), select(less(v, zero()), splat(-1.0), zero()));
+  return f - (alpha * abs_f) * sign;
+}
+inline V3 damped_update(const LocalDamping& d, bool rot, std::size_t ib, const V3& v_old, const V3& f) {
+  const V alpha = splat(rot ? d.alpha_rot : d.alpha);
+  const V step = _mm256_loadu_pd((rot ? d.dt_over_I : d.dt_over_m).data() + ib);
+  return v_old + step * V3{local_damped(f.x, v_old.x, alpha), local_damped(f.y, v_old.y, alpha),
+                           local_damped(f.z, v_old.z, alpha)};
+}
+
+template <bool Rotate, class DampingPolicy>
+void particle_chunk(const ParticleLoop<Rotate, DampingPolicy>& loop, std::size_t begin, std::size_t end,
                          MotionSums& out, bool& ok) {
   constexpr std::size_t batch = 16;  // blocks
   Vec3 torque[4 * batch];
   V acc = zero();  // twice: kinetic_half_step, kinetic_centred, damping_loss; 0
   V speed2_max = zero();
   V inside = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
-  const ViscousDamping& damping = loop.damping;
+  const DampingPolicy& damping = loop.damping;
   const V dt = splat(loop.dt);
   const V dtLx = splat(loop.dt_over_L[0]), dtLy = splat(loop.dt_over_L[1]), dtLz = splat(loop.dt_over_L[2]);
   std::size_t i = begin;
@@ -242,8 +261,7 @@ void particle_chunk(const ParticleLoop<Rotate, ViscousDamping>& loop, std::size_
     for (std::size_t b = 0; b < n_blocks; ++b) {
       const std::size_t ib = i + 4 * b;
       const V3 f = load(loop.net + ib), v_old = load(loop.v + ib);
-      const V a = _mm256_loadu_pd(damping.a.data() + ib), c = _mm256_loadu_pd(damping.b.data() + ib);
-      const V3 v_new = a * v_old + c * f;
+      const V3 v_new = damped_update(damping, false, ib, v_old, f);
       store(loop.v + ib, v_new);
       const V3 s = load(loop.s + ib);
       store(loop.s + ib, {wrap(s.x + v_new.x * dtLx, inside), wrap(s.y + v_new.y * dtLy, inside),
@@ -255,8 +273,7 @@ void particle_chunk(const ParticleLoop<Rotate, ViscousDamping>& loop, std::size_
                                    dt * dot(f, v_old + v_new) - (twice_ke_new - m * dot(v_old, v_old)), zero());
       if constexpr (Rotate) {
         const V3 t = load(torque + 4 * b), w_old = load(loop.omega + ib);
-        const V a_rot = _mm256_loadu_pd(damping.a_rot.data() + ib), c_rot = _mm256_loadu_pd(damping.b_rot.data() + ib);
-        const V3 w_new = a_rot * w_old + c_rot * t;
+        const V3 w_new = damped_update(damping, true, ib, w_old, t);
         store(loop.omega + ib, w_new);
         const V I = _mm256_loadu_pd(loop.inertia + ib);
         const V twice_rot_new = I * dot(w_new, w_new);
@@ -396,10 +413,10 @@ struct Accumulator {
 #pragma GCC diagnostic pop
 #pragma GCC pop_options
 
-template <bool Rotate>
-MotionSums integrate_simd(const ViscousDamping& damping, Particles& p, const PeriodicCell& cell, const PairIndex& index,
+template <bool Rotate, class DampingPolicy>
+MotionSums integrate_simd(const DampingPolicy& damping, Particles& p, const PeriodicCell& cell, const PairIndex& index,
                           PairForces& pf, std::vector<Vec3>& force, double dt) {
-  const ParticleLoop<Rotate, ViscousDamping> loop(damping, p, cell, index, pf, force, dt);
+  const ParticleLoop<Rotate, DampingPolicy> loop(damping, p, cell, index, pf, force, dt);
   const bool wrapped = for_each_chunk(loop.n, [&](std::size_t c, std::size_t begin, std::size_t end) {
     bool ok = true;
     avx2::particle_chunk(loop, begin, end, pf.motion_sums[c], ok);
@@ -411,6 +428,10 @@ MotionSums integrate_simd(const ViscousDamping& damping, Particles& p, const Per
 template MotionSums integrate_simd<true>(const ViscousDamping&, Particles&, const PeriodicCell&, const PairIndex&,
                                          PairForces&, std::vector<Vec3>&, double);
 template MotionSums integrate_simd<false>(const ViscousDamping&, Particles&, const PeriodicCell&, const PairIndex&,
+                                          PairForces&, std::vector<Vec3>&, double);
+template MotionSums integrate_simd<true>(const LocalDamping&, Particles&, const PeriodicCell&, const PairIndex&,
+                                         PairForces&, std::vector<Vec3>&, double);
+template MotionSums integrate_simd<false>(const LocalDamping&, Particles&, const PeriodicCell&, const PairIndex&,
                                           PairForces&, std::vector<Vec3>&, double);
 
 template <class Law>

@@ -1,6 +1,6 @@
 #pragma once
 // The contact-force loop (`compute_forces`, dynamics/kernel.hpp) one pair, four (AVX2) or eight
-// (AVX-512) pairs at a time, and the viscous-damping update four particles at a time (AVX2), with
+// (AVX-512) pairs at a time, and the damped leapfrog update four particles at a time (AVX2), with
 // the same result bit for bit as one pair at a time and as `integrate` (dynamics/kernel.hpp):
 //  - every lane does the scalar code's operations in the scalar code's order (no fused
 //    multiply-add, the same association in every sum, the same branches as masks);
@@ -20,10 +20,10 @@ int simd_width_available();
 int simd_width();
 void cap_simd_width(int lanes);
 
-// As `integrate` with viscous damping (the vectorised leapfrog update, four particles at a time);
-// call only if simd_width() >= 4.
-template <bool Rotate>
-MotionSums integrate_simd(const ViscousDamping& damping, Particles& p, const PeriodicCell& cell, const PairIndex& index,
+// As `integrate` (the vectorised leapfrog update, four particles at a time), with viscous or
+// local damping; call only if simd_width() >= 4.
+template <bool Rotate, class DampingPolicy>
+MotionSums integrate_simd(const DampingPolicy& damping, Particles& p, const PeriodicCell& cell, const PairIndex& index,
                           PairForces& pf, std::vector<Vec3>& force, double dt);
 
 }  // namespace dem

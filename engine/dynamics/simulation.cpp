@@ -61,9 +61,8 @@ struct KernelImpl final : Simulation::Kernel {
                    *s.pair_forces_, s.sums_);
   }
   MotionSums integrate(Simulation& s) override {
-    if constexpr (std::is_same_v<DampingPolicy, ViscousDamping>)
-      if (simd)
-        return integrate_simd<Law::rotates>(damping, s.particles_, s.cell_, s.list_.index(), *s.pair_forces_, s.force_,
+    if (simd)
+      return integrate_simd<Law::rotates>(damping, s.particles_, s.cell_, s.list_.index(), *s.pair_forces_, s.force_,
                                             s.dt_);
     return dem::integrate<Law::rotates>(damping, s.particles_, s.cell_, s.list_.index(), *s.pair_forces_, s.force_, s.dt_);
   }
