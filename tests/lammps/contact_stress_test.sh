@@ -12,8 +12,9 @@
 #    its own, which is what both codes evaluate).
 # 2. Ours: a scene reading the CSV (`particles: {csv: ..., cell: [...]}`) runs one step; the row
 #    every stage writes at its start, before the first step, is measured from the positions alone
-#    (analysis/measurements.cpp): stress_11 ... stress_23 and mean_normal_force, read from the HDF5
-#    file at full precision (h5dump -m %.17g; `dem table` prints only 10 digits).
+#    (analysis/measurements.cpp; before issue 22 this row saw no contacts, the neighbour list being
+#    built only by the first step): stress_11 ... stress_23, mean_normal_force and contacts, read
+#    from the HDF5 file at full precision (h5dump -m %.17g; `dem table` prints only 10 digits).
 # 3. LAMMPS: the same positions (atom_style sphere, periodic box 0..L), `run 0`, with
 #      - the pressure tensor of `compute pressure NULL virial`: the virial alone, so no kinetic
 #        term (the velocities are zero anyway). LAMMPS's virial sum over pairs of r_ij (x) f_ij / V,
@@ -50,7 +51,8 @@
 # typical overlap of 1e-6 m. The stress is compared component by component relative to the
 # largest component |sigma|_max (the off-diagonal components are sums of terms of size ~p that
 # cancel to ~1 % of p, so their own round-off is of order ulp(p), not of their own size); the
-# mean normal force relative to itself. Required: < 1e-9, and the same contact count.
+# mean normal force relative to itself. Required: < 1e-9, and the same contact count. Measured:
+# 5e-14 (stress) and 1.7e-14 (mean force) for both laws and both LAMMPS pair styles, 2080 contacts.
 set -u
 bin=$(cd "$1" && pwd) work=$2
 LMP=${LMP:-lmp}
