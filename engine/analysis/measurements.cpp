@@ -21,11 +21,10 @@ double coordination_number(std::size_t contacts, std::size_t particles) {
 namespace {
 
 template <class Law>
-ContactCounts count_with(const Law& law, const Simulation& sim, bool keep_normals) {
+ContactCounts count_with(const Law& law, const Simulation& sim, const PairList& pairs, const ContactHistory& history,
+                         bool keep_normals) {
   using O = scalar_lanes::Ops;
   const Particles& p = sim.particles();
-  const PairList& pairs = sim.pairs();
-  const ContactHistory& history = sim.history();
   std::vector<unsigned> per_particle(p.size(), 0);
   ContactCounts c;
   double sum_fn = 0;
@@ -68,7 +67,21 @@ ContactCounts count_with(const Law& law, const Simulation& sim, bool keep_normal
 }  // namespace
 
 ContactCounts count_contacts(const Simulation& sim, bool keep_normals) {
-  return std::visit([&](const auto& law) { return count_with(law, sim, keep_normals); }, sim.material().law);
+  // A simulation built from particles (a lattice, a CSV file) has no neighbour list until its
+  // first step builds one, yet its particles may already overlap (a packing read from a CSV file):
+  // its first row reported no contacts and zero stress. It is measured over a list built here from
+  // the same positions, with unloaded histories, which is what its own histories are before its
+  // first step. (A simulation restored from a saved state has the saved contacts as its list.)
+  if (sim.verlet_list().builds() == 0 && sim.pairs().size() == 0) {
+    VerletList list(sim.verlet_list().skin());
+    list.build(sim.particles(), sim.cell());
+    ContactHistory unloaded = sim.history();
+    unloaded.reset(list.pairs().size());
+    return std::visit([&](const auto& law) { return count_with(law, sim, list.pairs(), unloaded, keep_normals); },
+                      sim.material().law);
+  }
+  return std::visit([&](const auto& law) { return count_with(law, sim, sim.pairs(), sim.history(), keep_normals); },
+                    sim.material().law);
 }
 
 double mechanical_coordination_number(const ContactCounts& c, std::size_t particles) {

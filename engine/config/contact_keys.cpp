@@ -1,11 +1,18 @@
 #include "config/contact_keys.hpp"
 
+#include <sstream>
 #include <string>
 #include <type_traits>
 
 namespace dem {
 
 namespace {
+
+std::string format_number(double x) {  // as the range messages print numbers (default stream format)
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
 
 // The keys that belong to each law, for the message when one is given to another law.
 struct LawKeys {
@@ -44,9 +51,18 @@ AnyContactLaw read_contact_law(Section& m) {
   rolling.mu_r = m.number("rolling_friction", "", {0, 10}, 0.0,
                           "rolling friction coefficient mu_r: rolling moment capped at mu_r R* f_n; 0 = no rolling resistance");
   if (rolling.mu_r > 0) {
-    rolling.kr = m.number("rolling_stiffness", "N/m", {0, 1e12, true}, std::nullopt,
-                          "stiffness k_r of the rolling spring (moment R* k_r u_r); needed when rolling_friction > 0");
-    if (mu == 0) m.fail("rolling_friction", "needs friction > 0 (a frictionless contact has no rolling), got friction = 0");
+    try {
+      rolling.kr = m.number("rolling_stiffness", "N/m", {0, 1e12, true}, std::nullopt,
+                            "stiffness k_r of the rolling spring (moment R* k_r u_r); needed when rolling_friction > 0");
+    } catch (const ConfigError& e) {
+      // A key that is optional elsewhere: say why it is missing here.
+      if (m.has("rolling_stiffness")) throw;
+      throw ConfigError(std::string(e.what()) + "; needed because " + m.key_path("rolling_friction") + " = " +
+                        format_number(rolling.mu_r) + " > 0 turns rolling resistance on");
+    }
+    if (mu == 0)
+      m.fail("rolling_friction", "needs " + m.key_path("friction") + " > 0 (a frictionless contact has no rolling), got " +
+                                     m.key_path("friction") + " = 0");
   } else if (m.has("rolling_stiffness")) {
     m.fail("rolling_stiffness", "is read only when rolling_friction > 0 (rolling resistance on); give both or neither");
   }
@@ -61,9 +77,9 @@ AnyContactLaw read_contact_law(Section& m) {
   HertzNormal normal;
   normal.young_modulus_Pa = m.number("young_modulus", "Pa", {0, 1e13, true}, std::nullopt,
                                      "Young's modulus E of the grains (law hertz_mindlin)");
-  normal.poisson_ratio = m.number("poisson_ratio", "", {-1, 0.5, true}, std::nullopt,
-                                  "Poisson's ratio nu of the grains, in (-1, 0.5) (law hertz_mindlin)");
-  if (normal.poisson_ratio >= 0.5) m.fail("poisson_ratio", "must be below 0.5, got " + std::to_string(normal.poisson_ratio));
+  // Open at 0.5: an isotropic elastic solid has -1 < nu <= 0.5, and nu = 0.5 (incompressible) is refused.
+  normal.poisson_ratio = m.number("poisson_ratio", "", {-1, 0.5, true, true}, std::nullopt,
+                                  "Poisson's ratio nu of the grains (law hertz_mindlin)");
   if (mu == 0) return HertzLaw{normal, {}, {}};
   return with_rolling(normal, MindlinCoulomb::of(normal, mu), rolling);
 }

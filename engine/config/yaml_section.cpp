@@ -24,7 +24,7 @@ std::string fmt(double x) {
 
 std::string range_text(Range r) {
   std::string lo = r.min_open ? "(" : "[";
-  return lo + fmt(r.min) + ", " + fmt(r.max) + "]";
+  return lo + fmt(r.min) + ", " + fmt(r.max) + (r.max_open ? ")" : "]");
 }
 
 std::size_t edit_distance(const std::string& a, const std::string& b) {
@@ -189,7 +189,8 @@ double Section::number(const std::string& key, const std::string& unit, Range ra
   if (!n.IsScalar() || !YAML::convert<double>::decode(n, x))
     fail(key, "must be a number" + (unit.empty() ? "" : " [" + unit + "]") + ", got " + scalar_text(n) + where(n));
   const bool below = range.min_open ? !(x > range.min) : !(x >= range.min);
-  if (!std::isfinite(x) || below || !(x <= range.max))
+  const bool above = range.max_open ? !(x < range.max) : !(x <= range.max);
+  if (!std::isfinite(x) || below || above)
     fail(key, "must be in " + range_text(range) + (unit.empty() ? "" : " " + unit) + ", got " + n.Scalar() + where(n));
   return x;
 }
@@ -275,7 +276,8 @@ std::vector<double> Section::numbers(const std::string& key, const std::string& 
     if (!item.IsScalar() || !YAML::convert<double>::decode(item, x))
       fail(item_key, "must be a number, got " + scalar_text(item) + where(item));
     const bool below = range.min_open ? !(x > range.min) : !(x >= range.min);
-    if (!std::isfinite(x) || below || !(x <= range.max))
+    const bool above = range.max_open ? !(x < range.max) : !(x <= range.max);
+    if (!std::isfinite(x) || below || above)
       fail(item_key, "must be in " + range_text(range) + (unit.empty() ? "" : " " + unit) + ", got " + item.Scalar() +
                          where(item));
     out.push_back(x);

@@ -32,6 +32,7 @@ void apply_override(YAML::Node root, const std::string& file, const std::string&
 struct Range {
   double min, max;
   bool min_open = false;  // true: value must be > min rather than >= min
+  bool max_open = false;  // true: value must be < max rather than <= max
 };
 
 class Section {

@@ -88,3 +88,23 @@ TEST_CASE("simple cubic lattice without overlap carries no stress", "[analysis][
   REQUIRE(sim.sums().contacts == 0);
   REQUIRE(sim.sums().stress_Pa.norm() == 0.0);
 }
+
+TEST_CASE("an overlapping lattice is measured before its first step", "[analysis][stress]") {
+  // A simulation built from particles has no neighbour list until its first step; the survey
+  // (the first row of a run, e.g. of a packing read from a CSV file) must still see the contacts
+  // of the positions. It reported no contacts and zero stress before (issue 22, found by the
+  // LAMMPS test, tests/lammps/contact_stress_test.sh). Same expectation and tolerance as above.
+  const double d = 2e-3, kn = 1e5;
+  const std::array<int, 3> n{4, 5, 6};
+  const Vec3 a = Vec3(0.99, 0.995, 0.98) * d;
+  const Simulation sim = lattice(n, a, d, kn);
+  REQUIRE(sim.step_count() == 0);
+  REQUIRE(sim.pairs().size() == 0);  // no list yet
+  const ContactCounts counts = count_contacts(sim);
+  const std::size_t N = static_cast<std::size_t>(n[0] * n[1] * n[2]);
+  REQUIRE(counts.contacts == 3 * N);
+  const Vec3 expected(kn * (d - a[0]) / (a[1] * a[2]), kn * (d - a[1]) / (a[0] * a[2]), kn * (d - a[2]) / (a[0] * a[1]));
+  REQUIRE((counts.stress_Pa - Mat3(expected.asDiagonal())).norm() <= 1e-12 * expected.norm());
+  REQUIRE(counts.mean_normal_force_N == Approx(kn * (3 * d - a.sum()) / 3).epsilon(1e-12));
+  REQUIRE(sim.verlet_list().builds() == 0);  // measuring did not touch the simulation
+}

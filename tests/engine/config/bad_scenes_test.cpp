@@ -210,6 +210,64 @@ std::vector<BadScene> catalogue() {
       // Coulomb friction needs a tangential spring.
       {"friction > 0 with ks = 0", Yaml{.material = "{kn: 1.0e6, ks: 0, friction: 0.5}"}.text(), C,
        {"bad.yaml: material.ks: must be > 0 when friction > 0"}},
+      // --- contact laws (engine/config/contact_keys.cpp, issue 22) ---------------------------------
+      // Each law reads its own stiffness keys; another law's key is refused, naming the law it
+      // belongs to and the keys this one reads (not silently ignored).
+      {"hertz_mindlin with kn", Yaml{.material = "{law: hertz_mindlin, young_modulus: 1.0e9, poisson_ratio: 0.3, kn: 1.0e6, friction: 0.5}",
+                                     .extra = "damping: {form: local}\n"}.text(), C,
+       {"bad.yaml: material.kn: belongs to material.law: linear; law hertz_mindlin reads material.young_modulus and material.poisson_ratio"}},
+      {"hertz_mindlin with ks", Yaml{.material = "{law: hertz_mindlin, young_modulus: 1.0e9, poisson_ratio: 0.3, ks: 1.0e6, friction: 0.5}",
+                                     .extra = "damping: {form: local}\n"}.text(), C,
+       {"bad.yaml: material.ks: belongs to material.law: linear; law hertz_mindlin reads material.young_modulus and material.poisson_ratio"}},
+      {"linear with young_modulus", Yaml{.material = "{kn: 1.0e6, ks: 1.0e6, young_modulus: 1.0e9, friction: 0.5}"}.text(), C,
+       {"bad.yaml: material.young_modulus: belongs to material.law: hertz_mindlin; law linear reads material.kn and material.ks"}},
+      {"an unknown law", Yaml{.material = "{law: hertz, young_modulus: 1.0e9, poisson_ratio: 0.3, friction: 0.5}"}.text(), C,
+       {"bad.yaml: material.law: must be one of: linear, hertz_mindlin, got 'hertz' (line 5)"}},
+      // Rolling resistance is an elastic-plastic spring: its cap mu_r R* f_n needs its stiffness.
+      // rolling_stiffness is optional otherwise, so the message says why it is needed here.
+      {"rolling_friction > 0 without rolling_stiffness", Yaml{.material = "{kn: 1.0e6, ks: 1.0e6, friction: 0.5, rolling_friction: 0.1}"}.text(), C,
+       {"bad.yaml: material.rolling_stiffness: missing (a number in (0, 1e+12] N/m); needed because material.rolling_friction = 0.1 > 0 "
+        "turns rolling resistance on"}},
+      // The same, misspelt: the look-alike is still pointed at.
+      {"rolling_friction > 0 with 'rolling_stifness'",
+       Yaml{.material = "{kn: 1.0e6, ks: 1.0e6, friction: 0.5, rolling_friction: 0.1, rolling_stifness: 1.0e5}"}.text(), C,
+       {"bad.yaml: material.rolling_stiffness: missing (a number in (0, 1e+12] N/m); found 'rolling_stifness' (line 5): "
+        "did you mean 'rolling_stiffness'?; needed because material.rolling_friction = 0.1 > 0"}},
+      {"rolling_stiffness without rolling_friction", Yaml{.material = "{kn: 1.0e6, ks: 1.0e6, friction: 0.5, rolling_stiffness: 1.0e5}"}.text(), C,
+       {"bad.yaml: material.rolling_stiffness: is read only when rolling_friction > 0 (rolling resistance on); give both or neither"}},
+      // Rolling resistance acts through the contact's spins, which a frictionless kernel does not integrate.
+      {"rolling_friction with friction 0",
+       Yaml{.material = "{kn: 1.0e6, ks: 1.0e6, friction: 0, rolling_friction: 0.1, rolling_stiffness: 1.0e5}"}.text(), C,
+       {"bad.yaml: material.rolling_friction: needs material.friction > 0 (a frictionless contact has no rolling), got material.friction = 0"}},
+      {"negative rolling_friction", Yaml{.material = "{kn: 1.0e6, ks: 1.0e6, friction: 0.5, rolling_friction: -0.1}"}.text(), C,
+       {"bad.yaml: material.rolling_friction: must be in [0, 10], got -0.1 (line 5)"}},
+      // nu = 0.5 is the incompressible limit; the range is open there (it printed "(-1, 0.5]" and
+      // then refused 0.5 by a second check, "must be below 0.5, got 0.500000").
+      {"poisson_ratio 0.5", Yaml{.material = "{law: hertz_mindlin, young_modulus: 1.0e9, poisson_ratio: 0.5, friction: 0.5}",
+                                 .extra = "damping: {form: local}\n"}.text(), C,
+       {"bad.yaml: material.poisson_ratio: must be in (-1, 0.5), got 0.5 (line 5)"}},
+      {"poisson_ratio -1", Yaml{.material = "{law: hertz_mindlin, young_modulus: 1.0e9, poisson_ratio: -1, friction: 0.5}",
+                                .extra = "damping: {form: local}\n"}.text(), C,
+       {"bad.yaml: material.poisson_ratio: must be in (-1, 0.5), got -1 (line 5)"}},
+      {"hertz_mindlin without poisson_ratio", Yaml{.material = "{law: hertz_mindlin, young_modulus: 1.0e9, friction: 0.5}",
+                                                   .extra = "damping: {form: local}\n"}.text(), C,
+       {"bad.yaml: material.poisson_ratio: missing (a number in (-1, 0.5))"}},
+      {"zero young_modulus", Yaml{.material = "{law: hertz_mindlin, young_modulus: 0, poisson_ratio: 0.3, friction: 0.5}",
+                                  .extra = "damping: {form: local}\n"}.text(), C,
+       {"bad.yaml: material.young_modulus: must be in (0, 1e+13] Pa, got 0 (line 5)"}},
+      // Viscous damping is a fraction of the critical damping 2 sqrt(k m) of a constant stiffness k,
+      // which Hertz does not have; explicitly and by default (the default form is viscous).
+      {"viscous damping with hertz_mindlin", Yaml{.material = "{law: hertz_mindlin, young_modulus: 1.0e9, poisson_ratio: 0.3, friction: 0.5}",
+                                                  .extra = "damping: {form: viscous}\n"}.text(), C,
+       {"bad.yaml: damping.form: viscous (the default) scales the damping with a contact stiffness, and material.law hertz_mindlin has none: "
+        "use damping: {form: local}"}},
+      {"hertz_mindlin with the default damping", Yaml{.material = "{law: hertz_mindlin, young_modulus: 1.0e9, poisson_ratio: 0.3, friction: 0.5}"}.text(), C,
+       {"bad.yaml: damping.form: viscous (the default)", "use damping: {form: local}"}},
+      // A time step above 0.2 x the Rayleigh step: E = 1e11 Pa with 3 mm spheres gives ~1.3 us.
+      {"time step above 0.2 x the Rayleigh step",
+       Yaml{.material = "{law: hertz_mindlin, young_modulus: 1.0e11, poisson_ratio: 0.3, friction: 0.5}", .numerics = "{time_step: 1.0e-6}",
+            .extra = "damping: {form: local}\n"}.text(), C,
+       {"bad.yaml: numerics.time_step = 1e-06 s", "the Rayleigh time pi r_min sqrt(rho/G) / (0.1631 nu + 0.8766)"}},
       // --- particle sources ----------------------------------------------------------------------
       {"particles with both lattice and csv", Yaml{.grading = "{diameters: [3.0e-3, 4.5e-3], percent_finer: [0, 100]}\n  csv: p.csv"}.text(), C,
        {"bad.yaml: particles: give exactly one of 'lattice', 'csv' or 'state'"}},

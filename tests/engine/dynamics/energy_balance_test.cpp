@@ -10,15 +10,22 @@
 // * Damped and frictional: the damping and the Coulomb cap take energy out; both are booked
 //   exactly per step (kernel.hpp: from the leapfrog update itself; linear_spring.hpp: the spring
 //   energy the cap removes), so the balance must close to well within the issue's 1 %.
+// * Every contact law (issue 22), below: what the balance leaves open is the integrator's O(dt^2)
+//   error, plus, for Hertz-Mindlin, a term of the law itself that the test computes.
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <sstream>
 #include <string>
+#include <type_traits>
+#include <unordered_map>
+#include <variant>
 
 #include <filesystem>
 
 #include "config/scene_config.hpp"
+#include "contact/scalar_lanes.hpp"
 #include "engine/io/io_test_support.hpp"
 #include "run/run_scene.hpp"
 
@@ -56,7 +63,7 @@ Simulation squeeze(double dt, double friction, double damping, double duration =
 }
 
 double closure_gap(const EnergyBalance& e) {  // signed: energy in - (stored + dissipated) [J]
-  return e.energy_in() - e.stored() - e.dissipated_damping - e.dissipated_friction;
+  return e.energy_in() - e.stored() - e.dissipated_damping - e.dissipated_friction - e.dissipated_rolling;
 }
 
 }  // namespace
@@ -131,4 +138,196 @@ TEST_CASE("Energy balance: a run whose balance no longer closes stops with the r
   fine.output.interval_steps = 100;
   REQUIRE_NOTHROW(run_scene(fine, out, false));
   CHECK(test::h5_status(out) == "complete");
+}
+
+// ---- Every contact law ---------------------------------------------------------------------------
+//
+// The same squeeze (20/s for 13.5 ms, then 2.5 ms at a fixed cell) for each law a scene can write,
+// each with the damping it allows: viscous 0.05 for the linear laws, Cundall's local damping 0.1
+// for Hertz (which has no constant stiffness for viscous damping), and Hertz frictionless also
+// undamped (the integrator alone on a nonlinear spring). Hertz: E = 1e9 Pa, nu = 0.3; its
+// Rayleigh step is 13.3 us for the 3 mm spheres, so dt = 2, 1, 0.5 us are 0.15, 0.075 and 0.038
+// of it. Rolling: mu_r = 0.1, k_r = 5e5 N/m (linear) and 5e4 N/m (Hertz).
+//
+// What must close, and why:
+// * Linear springs (normal, tangential, rolling) conserve energy exactly under leapfrog with the
+//   time-centred kinetic energy; the caps' losses are booked exactly per step (capped_spring.hpp),
+//   and the rolling spring's energy and its cap's loss are in the balance like the tangential
+//   spring's. What is left is O(dt^2): contacts opening and closing within a step and the turning
+//   of the contact frames. Hertz's normal force derives from the potential 2/5 f_n delta, but
+//   leapfrog conserves only a nearby energy for a nonlinear spring: O(dt^2) as well.
+// * Mindlin's tangential force is incremental, df_t = -k_t du with k_t = 8 G* sqrt(R* delta): it
+//   is not the gradient of a potential. The engine books |f_t|^2 / (2 k_t) at the current k_t as
+//   the stored energy, and the work on the spring over a step (trapezoidal) less the cap's loss
+//   changes it by exactly (|f_new|^2 - |f_old|^2) / (2 k_t,new) (hertz_mindlin.hpp, sticking or
+//   sliding alike). So each step of each contact leaves open
+//       S = |f_old|^2 / 2 (1 / k_t,old - 1 / k_t,new),
+//   positive while the contact is loaded (k_t grows with delta) and negative while unloaded, plus
+//   the energy |f|^2 / (2 k_t) still in a spring when its contact opens (not booked:
+//   hertz_mindlin.hpp, opening_loss). The test sums S over every contact and step, from the
+//   overlaps before each step (the positions of its force evaluation) and the tangential forces
+//   after it, and requires the balance minus S to close at O(dt^2) like the other laws.
+//   Its size is bounded by the Coulomb cap |f_t| <= mu f_n: |S| <= T, T the same sums with
+//   (mu f_n,old)^2 in place of |f_old|^2. For one contact loaded to delta, S ~ integral of
+//   E_t d(ln k_t) = integral of E_t d delta / (2 delta), and E_t <= (mu f_n)^2 / (2 k_t) =
+//   (15/72) mu^2 (E*/G*) E_n with E_n = 2/5 f_n delta the normal energy (E*/G* = 4.86 for nu = 0.3,
+//   so E_t <= 0.25 E_n at mu = 0.5), and the integral of E_n d delta / (2 delta) is E_n / 5:
+//   S is at most ~5 % of the normal energy each contact takes up. Measured (dt = 2, 1, 0.5 us):
+//   S / E_in = 8.9e-5, 2.6e-3, 3.3e-3 (Hertz-Mindlin) and -2.0e-4, 4.3e-3, 4.1e-3 (+ rolling),
+//   T / E_in 0.13; the residual after S is 3.1e-4, 7.7e-5, 1.6e-5 and 2.3e-4, 4.4e-5, 9.6e-6.
+//   Without S taken out, the Hertz-Mindlin balance would not converge with dt (4.0e-4, 2.6e-3,
+//   3.3e-3) and the test fails: S is what the law leaves open, and it is bounded by its cap.
+namespace {
+
+struct LawCase {
+  std::string name, material, damping;
+};
+
+// The sums of S and of its bound T (see above) over the run.
+struct MindlinGap {
+  double S = 0, T = 0;
+};
+
+struct LawBalance {
+  Simulation sim;
+  MindlinGap mindlin;
+  std::size_t max_contacts = 0;
+};
+
+// One contact of the last force evaluation: its k_t, |f_t|^2 after the cap, and f_n.
+struct TangentialState {
+  double kt, f2, fn;
+};
+using ContactKey = std::uint64_t;
+ContactKey key_of(std::uint32_t i, std::uint32_t j) { return (std::uint64_t(i) << 32) | j; }
+
+// The overlap, k_t and f_n of every pair in contact at the current positions (those of the next
+// force evaluation), by the law's own functions.
+template <class Law>
+std::unordered_map<ContactKey, TangentialState> contacts_now(const Law& law, const Simulation& sim) {
+  using O = scalar_lanes::Ops;
+  std::unordered_map<ContactKey, TangentialState> out;
+  const Particles& p = sim.particles();
+  const PairList& pairs = sim.pairs();
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    const auto i = pairs.first[k], j = pairs.second[k];
+    const double rsum = p.radius[i] + p.radius[j];
+    const double d2 = sim.cell().branch(p.s[i], p.s[j]).squaredNorm();
+    if (d2 >= rsum * rsum) continue;
+    const double overlap = rsum - std::sqrt(d2), reduced = (p.radius[i] * p.radius[j]) / rsum;
+    out[key_of(i, j)] = {law.tangential.template stiffness<O>(overlap, reduced), 0.0,
+                         law.normal.template force<O>(overlap, reduced)};
+  }
+  return out;
+}
+
+// The squeeze of energy_balance_test's scene() with the law's material and damping, summing the
+// Mindlin term S (and T) when the law is Hertz-Mindlin.
+LawBalance squeeze_law(const LawCase& c, double dt) {
+  std::ostringstream text;
+  text << "name: energy\n"
+          "particles:\n"
+          "  lattice: {n: [7, 7, 7], spacing: 4.6e-3, seed: 3}\n"
+          "  grading: {diameters: [3.0e-3, 4.5e-3], percent_finer: [0, 100]}\n"
+       << "material: " << c.material << "\ndamping: " << c.damping << "\nnumerics: {time_step: " << dt << "}\n"
+       << "stages:\n  - {name: squeeze, type: strain_rate, strain_rate: [20, 20, 20], duration: 1.0e-2}\n";
+  const SceneConfig sc = scene_from_text(text.str(), "energy.yaml");
+  LawBalance b{build_simulation(sc)};
+  CellTargets squeeze_targets;
+  for (auto& t : squeeze_targets) t = {AxisTarget::Mode::StrainRate, 20.0, 0, 0};
+  const long n = std::lround(13.5e-3 / dt), m = std::lround(2.5e-3 / dt);
+  std::unordered_map<ContactKey, TangentialState> last;  // after the previous force evaluation
+  for (long step = 0; step < n + m; ++step) {
+    std::visit(
+        [&](const auto& law) {
+          if constexpr (std::is_same_v<typename std::decay_t<decltype(law)>::TangentialLaw, MindlinCoulomb>) {
+            std::unordered_map<ContactKey, TangentialState> now = contacts_now(law, b.sim);
+            const double mu2 = law.tangential.mu * law.tangential.mu;
+            for (const auto& [key, old] : last) {
+              const auto it = now.find(key);
+              const double change = it == now.end() ? 1 / old.kt : 1 / old.kt - 1 / it->second.kt;  // opened: all of it
+              b.mindlin.S += 0.5 * old.f2 * change;
+              b.mindlin.T += 0.5 * mu2 * old.fn * old.fn * std::abs(change);
+            }
+            b.sim.step(step < n ? squeeze_targets : CellTargets{}, sc.servo);
+            // The force evaluation of this step used the list after its rebuild: this one.
+            last.clear();
+            const PairList& pairs = b.sim.pairs();
+            for (std::size_t k = 0; k < pairs.size(); ++k) {
+              const auto it = now.find(key_of(pairs.first[k], pairs.second[k]));
+              if (it == now.end()) continue;
+              TangentialState state = it->second;
+              state.f2 = b.sim.history().tangential[k].squaredNorm();
+              last[it->first] = state;
+            }
+          } else {
+            b.sim.step(step < n ? squeeze_targets : CellTargets{}, sc.servo);
+          }
+        },
+        b.sim.material().law);
+    b.max_contacts = std::max(b.max_contacts, b.sim.sums().contacts);
+  }
+  return b;
+}
+
+}  // namespace
+
+TEST_CASE("Energy balance closes for every contact law, at O(dt^2) once Mindlin's own term is taken out",
+          "[dynamics][energy][law]") {
+  const std::string linear = "{density: 2650, kn: 1.0e6, ks: 1.0e6, ";
+  const std::string hertz = "{density: 2650, law: hertz_mindlin, young_modulus: 1.0e9, poisson_ratio: 0.3, ";
+  const std::string viscous = "{form: viscous, translational: 0.05, rotational: 0.05}";
+  const std::string local = "{form: local, translational: 0.1, rotational: 0.1}";
+  const std::vector<LawCase> laws = {
+      {"linear frictionless", linear + "friction: 0}", viscous},
+      {"linear + friction", linear + "friction: 0.5}", viscous},
+      {"linear + friction + rolling", linear + "friction: 0.5, rolling_friction: 0.1, rolling_stiffness: 5.0e5}", viscous},
+      {"Hertz frictionless, undamped", hertz + "friction: 0}", "{form: local, translational: 0, rotational: 0}"},
+      {"Hertz frictionless", hertz + "friction: 0}", local},
+      {"Hertz-Mindlin", hertz + "friction: 0.5}", local},
+      {"Hertz-Mindlin + rolling", hertz + "friction: 0.5, rolling_friction: 0.1, rolling_stiffness: 5.0e4}", local},
+  };
+  std::vector<bool> covered(std::variant_size_v<AnyContactLaw>, false);
+  for (const LawCase& c : laws) {
+    INFO("law " << c.name);
+    std::vector<double> residual;
+    for (const double dt : {2e-6, 1e-6, 5e-7}) {
+      const LawBalance b = squeeze_law(c, dt);
+      const EnergyBalance& e = b.sim.energy();
+      const AnyContactLaw& law = b.sim.material().law;
+      covered[law.index()] = true;
+      const double in = e.energy_in();
+      const double r = (closure_gap(e) - b.mindlin.S) / in;
+      INFO("dt " << dt << ": in " << in << " J, stored " << e.stored() << " J, damping " << e.dissipated_damping
+                 << " J, friction " << e.dissipated_friction << " J, rolling " << e.dissipated_rolling << " J; gap / in "
+                 << closure_gap(e) / in << ", Mindlin S / in " << b.mindlin.S / in << " (bound T / in " << b.mindlin.T / in
+                 << "), residual " << r);
+      // The run exercises the law: contacts, and each of its sinks taking a share of the energy.
+      REQUIRE(b.max_contacts > 100);
+      REQUIRE(e.stored_at_start == 0.0);
+      if (has_tangential(law)) REQUIRE(e.dissipated_friction > 0.01 * in);
+      if (has_rolling(law)) REQUIRE(e.dissipated_rolling > 0.01 * in);
+      if (!has_tangential(law)) REQUIRE(e.dissipated_friction == 0.0);
+      if (!has_rolling(law)) REQUIRE(e.dissipated_rolling == 0.0);
+      // The engine's closure error is the same number.
+      REQUIRE(std::abs(closure_gap(e)) / in == Approx(e.closure_error()).epsilon(1e-12));
+      if (!std::holds_alternative<HertzMindlinLaw>(law) && !std::holds_alternative<HertzMindlinRollingLaw>(law))
+        REQUIRE(b.mindlin.S == 0.0);
+      // Mindlin's term stays within what the Coulomb cap allows (1e-9: the cap leaves
+      // |f_t| = mu f_n up to a few roundings).
+      REQUIRE(std::abs(b.mindlin.S) <= b.mindlin.T * (1 + 1e-9));
+      // The run stays far inside the engine's guard (numerics.max_energy_error, 5 %) and the issue's 1 %.
+      REQUIRE(e.closure_error() < 1e-2);
+      residual.push_back(std::abs(r));
+    }
+    INFO("residuals " << residual[0] << ", " << residual[1] << ", " << residual[2]);
+    // O(dt^2): 16 over two halvings, O(dt) 4. The trajectories are chaotic, so single halvings
+    // scatter (2.5 ... 11 measured); over two the ratio was 12.7 (Hertz undamped) ... 24 (Hertz-
+    // Mindlin + rolling).
+    REQUIRE(residual[0] / residual[2] > 8);
+    // Measured at 1 us: 3.6e-5 (linear + rolling) ... 1.8e-4 (Hertz, local damping); the bound
+    // leaves a factor 5 for other packings of the same kind, the convergence above is the sharp test.
+    REQUIRE(residual[1] < 1e-3);
+  }
+  for (std::size_t k = 0; k < covered.size(); ++k) REQUIRE(covered[k]);  // every alternative of AnyContactLaw
 }

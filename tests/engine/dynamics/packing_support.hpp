@@ -8,9 +8,11 @@
 #include <cstdint>
 #include <string>
 #include <tuple>
+#include <variant>
 #include <vector>
 
 #include "config/scene_config.hpp"
+#include "contact/scalar_lanes.hpp"
 #include "run/run_scene.hpp"
 
 namespace dem::test {
@@ -44,8 +46,104 @@ inline Simulation compressed(double friction, int threads, int steps, int side =
   return sim;
 }
 
-// A contact at the current positions with its history: (i, j, spring, sliding).
-using Contact = std::tuple<std::uint32_t, std::uint32_t, Vec3, int>;
+// A contact law as a scene writes it, with the damping it allows.
+struct LawScene {
+  std::string name;
+  std::string material;  // YAML flow mapping
+  std::string damping;   // YAML flow mapping
+  std::size_t index;     // the alternative of AnyContactLaw the scene must select
+};
+
+// Every law of AnyContactLaw (contact/contact_law.hpp) a scene can write, one per alternative (in
+// variant order). Linear: kn = ks = 1e6 N/m with viscous damping (the engine's default), as in
+// compressed() below. Hertz-Mindlin: E = 1e9 Pa, nu = 0.3, so that at 100 kPa overlaps are ~1 % of
+// a radius; Hertz has no constant stiffness to scale viscous damping with, so Cundall's local
+// damping (alpha = 0.1). Its Rayleigh step pi r_min sqrt(rho/G) / (0.1631 nu + 0.8766) is 17.8 us
+// for r_min = 2 mm (G = E / 2.6), so dt = 1 us is 0.056 of it (the engine refuses more than 0.2).
+// Rolling: mu_r = 0.1 with k_r = 5e5 N/m (linear; half of kn) and 5e4 N/m (Hertz; about half the
+// normal stiffness 2 E* sqrt(R* delta) ~ 1.4e5 N/m at 100 kPa): the rolling spring's rotational
+// frequency sqrt(k_r R*^2 / I) stays below the normal one.
+inline const std::vector<LawScene>& every_law() {
+  static const std::string linear = "{density: 2650, kn: 1.0e6, ks: 1.0e6, ";
+  static const std::string hertz = "{density: 2650, law: hertz_mindlin, young_modulus: 1.0e9, poisson_ratio: 0.3, ";
+  static const std::string local = "{form: local, translational: 0.1, rotational: 0.1}";
+  static const std::vector<LawScene> laws = {
+      {"linear frictionless", linear + "friction: 0}", "{form: viscous}", 0},
+      {"linear + friction", linear + "friction: 0.5}", "{form: viscous}", 1},
+      {"linear + friction + rolling", linear + "friction: 0.5, rolling_friction: 0.1, rolling_stiffness: 5.0e5}", "{form: viscous}", 2},
+      {"Hertz frictionless", hertz + "friction: 0}", local, 3},
+      {"Hertz-Mindlin", hertz + "friction: 0.5}", local, 4},
+      {"Hertz-Mindlin + rolling", hertz + "friction: 0.5, rolling_friction: 0.1, rolling_stiffness: 5.0e4}", local, 5},
+  };
+  static_assert(std::variant_size_v<AnyContactLaw> == 6, "a new law needs its scene here");
+  return laws;
+}
+
+// A compressed packing of a law, and what its last force evaluation did at the caps.
+struct LawRun {
+  Simulation sim;
+  std::size_t sliding = 0;          // contacts at the Coulomb cap (the history's sliding flags)
+  std::size_t rolling_at_cap = 0;   // contacts whose rolling spring is at its cap, k_r |u_r| = mu_r f_n
+};
+
+// side^3 spheres of 4.0-4.5 mm on a lattice of spacing 4.5 mm (an 8 % strain from jamming, so
+// contacts form within ~500 steps), compressed to 100 kPa with the adaptive stress servo
+// (max strain rate 50/s) for `steps` steps of 1 us: contacts form, slide, roll and open.
+inline LawRun compressed_law(const LawScene& law, int threads, int steps, int side = 10) {
+  const std::string n = std::to_string(side);
+  const std::string text =
+      "name: law\n"
+      "particles:\n"
+      "  lattice: {n: [" + n + ", " + n + ", " + n + "], spacing: 4.5e-3, seed: 5}\n"
+      "  grading: {diameters: [4.0e-3, 4.5e-3], percent_finer: [0, 100]}\n"
+      "material: " + law.material + "\n"
+      "damping: " + law.damping + "\n"
+      "numerics: {time_step: 1.0e-6}\n"
+      "stages:\n"
+      "  - {name: compress, type: stress, target: [1.0e5, 1.0e5, 1.0e5], rate: 1.0e8, max_strain_rate: 50,\n"
+      "     hold: {stress_tolerance: 0.01, unbalanced_force_ratio: 0.01, max_duration: 1.0}}\n";
+  const SceneConfig scene = scene_from_text(text, "law.yaml");
+  REQUIRE(scene.material.law.index() == law.index);
+  const int saved = omp_get_max_threads();
+  omp_set_num_threads(threads);
+  LawRun run{build_simulation(scene)};
+  CellTargets targets;
+  for (auto& t : targets) t = {AxisTarget::Mode::Stress, 0, 1e5, 0};
+  ServoSettings settings = scene.servo;
+  settings.max_strain_rate_per_s = 50.0;
+  AdaptiveServo servo(settings);
+  for (int i = 0; i + 1 < steps; ++i) run.sim.step(targets, servo);
+  // The last step's force evaluation sees these positions and this cell.
+  const std::vector<Vec3> s_before = run.sim.particles().s;
+  const PeriodicCell cell_before = run.sim.cell();
+  run.sim.step(targets, servo);
+  omp_set_num_threads(saved);
+
+  const ContactHistory& h = run.sim.history();
+  for (auto f : h.sliding) run.sliding += f;
+  std::visit(
+      [&](const auto& l) {
+        if constexpr (std::decay_t<decltype(l)>::has_rolling) {
+          using O = scalar_lanes::Ops;
+          const Particles& p = run.sim.particles();
+          const PairList& pairs = run.sim.pairs();  // the list of the last force evaluation
+          for (std::size_t k = 0; k < pairs.size(); ++k) {
+            const auto i = pairs.first[k], j = pairs.second[k];
+            const double rsum = p.radius[i] + p.radius[j];
+            const double dist = cell_before.branch(s_before[i], s_before[j]).norm();
+            if (dist >= rsum) continue;
+            const double fn = l.normal.template force<O>(rsum - dist, p.radius[i] * p.radius[j] / rsum);
+            // The cap leaves k_r |u_r| = mu_r f_n up to a few roundings; below it the spring is elastic.
+            if (l.rolling.kr * h.rolling[k].norm() >= (1 - 1e-9) * l.rolling.mu_r * fn) ++run.rolling_at_cap;
+          }
+        }
+      },
+      run.sim.material().law);
+  return run;
+}
+
+// A contact at the current positions with its history: (i, j, tangential history, sliding, rolling spring).
+using Contact = std::tuple<std::uint32_t, std::uint32_t, Vec3, int, Vec3>;
 // The pairs of the list in contact at the current positions, in list order, with their history.
 inline std::vector<Contact> touching(const Simulation& sim) {
   std::vector<Contact> out;
@@ -56,7 +154,8 @@ inline std::vector<Contact> touching(const Simulation& sim) {
     const double rsum = p.radius[i] + p.radius[j];
     if (sim.cell().branch(p.s[i], p.s[j]).squaredNorm() >= rsum * rsum) continue;
     const ContactHistory& h = sim.history();
-    out.emplace_back(i, j, h.tangential.empty() ? Vec3(Vec3::Zero()) : h.tangential[k], h.sliding.empty() ? 0 : int(h.sliding[k]));
+    out.emplace_back(i, j, h.tangential.empty() ? Vec3(Vec3::Zero()) : h.tangential[k], h.sliding.empty() ? 0 : int(h.sliding[k]),
+                     h.rolling.empty() ? Vec3(Vec3::Zero()) : h.rolling[k]);
   }
   return out;
 }

@@ -24,4 +24,21 @@ TEST_CASE("1 and 2 threads give bit-for-bit the same run", "[threads]") {
     require_identical(one, two);
   }
   SECTION("frictionless") { require_identical(compressed(0.0, 1, 12000), compressed(0.0, 2, 12000)); }
+  // Every law a scene can choose (packing_support.hpp, every_law()): 4,000 steps of 1,000 spheres,
+  // contacts forming, sliding at the Coulomb cap and rolling springs at theirs (both required).
+  SECTION("every contact law") {
+    for (const LawScene& law : every_law()) {
+      INFO("law " << law.name);
+      const LawRun one = compressed_law(law, 1, 4000), two = compressed_law(law, 2, 4000);
+      INFO("contacts " << one.sim.sums().contacts << ", sliding " << one.sliding << ", rolling springs at the cap "
+                       << one.rolling_at_cap);
+      if (has_tangential(one.sim.material().law)) REQUIRE(one.sliding > 0);
+      if (has_rolling(one.sim.material().law)) REQUIRE(one.rolling_at_cap > 0);
+      require_identical(one.sim, two.sim);
+      REQUIRE(one.sim.energy().dissipated_friction == two.sim.energy().dissipated_friction);
+      REQUIRE(one.sim.energy().dissipated_rolling == two.sim.energy().dissipated_rolling);
+      REQUIRE(one.sim.energy().dissipated_damping == two.sim.energy().dissipated_damping);
+      REQUIRE(one.sim.energy().elastic == two.sim.energy().elastic);
+    }
+  }
 }

@@ -8,6 +8,7 @@
 #include <sys/file.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
 
@@ -65,6 +66,56 @@ TEST_CASE("a stopped run keeps its checkpoint, and resuming repeats the rest exa
     CHECK(column(out + ".partial", c.name) == column(dir + "/first.h5", c.name));
   }
   CHECK(column(out + ".partial", "step").size() == 13 + 5);  // squeeze: steps 0, 50 ... 600; hold: 600, 650 ... 800
+}
+
+TEST_CASE("a Hertz-Mindlin run with rolling resistance resumes from its checkpoint bit for bit", "[run][checkpoint][law]") {
+  // The same stop-and-resume as above for the law with the most history: the tangential force
+  // and the rolling spring of every listed pair go into the checkpoint with the whole Verlet list.
+  // 64 spheres of 4.0-4.5 mm at 4.5 mm (tests/engine/run/resume_test.cpp) squeezed 4 % in 2 ms
+  // (1,000 steps of 2 us, 0.11 of the Rayleigh step), then a stress stage that cannot settle in
+  // 1 ms: the run stops at step 1,500 with its checkpoint at 1,400. Every time-series column of the
+  // resumed run equals the first run's, the tangential and rolling spring energies included.
+  const std::string dir = dem::test::scratch_dir("checkpoint_resume_hertz_mindlin_rolling");
+  dem::test::write_text(dir + "/s.yaml",
+                        "name: hmr\n"
+                        "particles:\n"
+                        "  lattice: {n: [4, 4, 4], spacing: 4.5e-3, seed: 3}\n"
+                        "  grading: {diameters: [4.0e-3, 4.5e-3], percent_finer: [0, 100]}\n"
+                        "material: {law: hertz_mindlin, young_modulus: 1.0e9, poisson_ratio: 0.3, friction: 0.5,\n"
+                        "           rolling_friction: 0.1, rolling_stiffness: 5.0e4}\n"
+                        "damping: {form: local, translational: 0.1, rotational: 0.1}\n"
+                        "numerics: {time_step: 2.0e-6}\n"
+                        "output: {interval: 50, checkpoint_interval: 100}\n"
+                        "stages:\n"
+                        "  - {name: compress, type: strain_rate, strain_rate: [20, 20, 20], duration: 2.0e-3}\n"
+                        "  - {name: unload, type: stress, target: [1.0e5, 1.0e5, 1.0e5], rate: 1.0e9, max_strain_rate: 5,\n"
+                        "     hold: {max_duration: 1.0e-3, check_interval: 50}}\n");
+  const std::string out = dir + "/r.h5";
+  REQUIRE(dem_stderr("run '" + dir + "/s.yaml' --out '" + out + "'").exit_code == 1);
+  REQUIRE(fs::exists(out + ".checkpoint"));
+  CHECK(checkpoint_step(out + ".checkpoint") == 1400);
+  fs::copy_file(out + ".partial", dir + "/first.h5");
+  // The rows after the checkpoint have loaded tangential and rolling springs, and sliding contacts.
+  const auto steps = column(dir + "/first.h5", "step");
+  const auto rolling = column(dir + "/first.h5", "elastic_energy_rolling");
+  const auto tangential = column(dir + "/first.h5", "elastic_energy_tangential");
+  const auto sliding = column(dir + "/first.h5", "sliding_fraction");
+  REQUIRE(steps.back() == 1500);
+  REQUIRE(rolling.back() > 0);
+  REQUIRE(tangential.back() > 0);
+  REQUIRE(column(dir + "/first.h5", "dissipated_by_rolling").back() > 0);
+  double most_sliding = 0;
+  for (std::size_t k = 0; k < steps.size(); ++k)
+    if (steps[k] > 1400) most_sliding = std::max(most_sliding, sliding[k]);
+  REQUIRE(most_sliding > 0);
+
+  const auto again = dem_stderr("run '" + dir + "/s.yaml' --out '" + out + "' --resume");
+  CHECK(again.exit_code == 1);
+  CHECK_THAT(again.out, Catch::Matchers::Contains("resuming from " + out + ".checkpoint at step 1400"));
+  for (const dem::SeriesColumn& c : dem::series_columns()) {
+    INFO(c.name);
+    CHECK(column(out + ".partial", c.name) == column(dir + "/first.h5", c.name));
+  }
 }
 
 TEST_CASE("a checkpoint of other inputs or a damaged one is not resumed", "[run][checkpoint][input]") {

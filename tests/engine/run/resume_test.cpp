@@ -130,7 +130,8 @@ void perturb_velocity(const std::string& file, double dv) {
 
 void check_resume(const Variant& v) {
   const std::string dir = test::scratch_dir("resume_" + v.name);
-  const bool friction = has_tangential(scene_from_text(scene_text(v, lattice, true, true), "x.yaml").material.law);
+  const AnyContactLaw law = scene_from_text(scene_text(v, lattice, true, true), "x.yaml").material.law;
+  const bool friction = has_tangential(law), rolling = has_rolling(law);
 
   // Uninterrupted: both stages on one simulation.
   const SceneConfig both = scene_from_text(scene_text(v, lattice, true, true), dir + "/both.yaml");
@@ -157,6 +158,12 @@ void check_resume(const Variant& v) {
   REQUIRE(second_full.rows >= 5);
   REQUIRE(second_full.min_contacts > 0);
   if (friction) REQUIRE(second_full.max_sliding > 0);
+  if (rolling) {  // rolling springs loaded, some at their cap (the energy it took), at the end of the stage
+    REQUIRE(full.energy().dissipated_rolling > 0);
+    std::size_t loaded = 0;
+    for (const auto& c : touching(full)) loaded += std::get<4>(c) != Vec3::Zero();
+    REQUIRE(loaded > 0);
+  }
   // The list is rebuilt during the stage (the resumed run also at its first step), so the two
   // runs sum forces over lists built at different times: the claim of verlet_list.hpp that
   // results do not depend on when the list was rebuilt is exercised.
@@ -202,8 +209,11 @@ void check_resume_files(const Variant& v) {
   CHECK(a.strain_rate_per_s == b.strain_rate_per_s);
   CHECK(a.contacts.first == b.contacts.first);
   CHECK(a.contacts.second == b.contacts.second);
+  CHECK(a.history.tangential_name == b.history.tangential_name);
   CHECK(a.history.tangential == b.history.tangential);
   CHECK(a.history.sliding == b.history.sliding);
+  CHECK(a.history.rolling_on == b.history.rolling_on);
+  CHECK(a.history.rolling == b.history.rolling);
   // The step counts differ by the first stage's steps (1000 steps of 2 us).
   CHECK(a.step - b.step == 1000);
 
@@ -268,6 +278,36 @@ TEST_CASE("resume: local damping and a stress stage continue bit for bit", "[run
 TEST_CASE("resume: the result files of a run in one go and of a continued run have the same /state", "[run][resume][io]") {
   check_resume_files({"frictional", "{kn: 1.0e6, ks: 1.0e6, friction: 0.5}", "{form: viscous}", shear});
   check_resume_files({"frictionless", "{kn: 1.0e6, ks: 1.0e6, friction: 0}", "{form: viscous}", shear});
+}
+
+// Hertz-Mindlin with rolling resistance: the history is the tangential force itself
+// (contact_tangential_force [N]) and a rolling spring (contact_rolling_spring [m]), both in /state.
+// E = 1e9 Pa, nu = 0.3: the Rayleigh step for the 4 mm spheres is 17.8 us, dt = 2 us is 0.11 of it.
+const Variant hertz_mindlin_rolling{"hertz_mindlin_rolling",
+                                    "{law: hertz_mindlin, young_modulus: 1.0e9, poisson_ratio: 0.3, friction: 0.5, "
+                                    "rolling_friction: 0.1, rolling_stiffness: 5.0e4}",
+                                    "{form: local, translational: 0.1, rotational: 0.1}", shear};
+
+TEST_CASE("resume: a Hertz-Mindlin run with rolling resistance continues bit for bit from its saved state", "[run][resume][law]") {
+  check_resume(hertz_mindlin_rolling);
+}
+
+TEST_CASE("resume: the /state of a Hertz-Mindlin run with rolling resistance holds its histories and continues bit for bit",
+          "[run][resume][io][law]") {
+  check_resume_files(hertz_mindlin_rolling);
+  // The histories the saved state must carry, by their names in the file.
+  const std::string file = std::string(DEM_BINARY_DIR) + "/test_tmp/resume_files_hertz_mindlin_rolling/first.h5";  // check_resume_files wrote it
+  h5::Handle f = h5::open_file_read(file);
+  h5::Handle state = h5::open_group(f, "state");
+  CHECK(h5::exists(state, "contact_tangential_force"));
+  CHECK(h5::exists(state, "contact_rolling_spring"));
+  CHECK_FALSE(h5::exists(state, "contact_tangential_spring"));
+  const SavedState st = read_state(file);
+  REQUIRE(st.contacts.size() > 0);
+  CHECK(st.history.tangential_name == "tangential_force");
+  std::size_t loaded = 0;
+  for (const Vec3& r : st.history.rolling) loaded += r != Vec3::Zero();
+  CHECK(loaded > 0);
 }
 
 TEST_CASE("the first row of a continued run reports the saved state's kinetic energy and inertial number",
