@@ -34,7 +34,7 @@ build: deps
 
 # Only what the studies and the report use (not the tests or the benchmark: from nothing, 1 min 11 s
 # instead of 2 min 38 s on this machine).
-TOOLS := dem pipeline validate compare-runs ensemble-cycles
+TOOLS := dem pipeline validate compare-runs ensemble-cycles figure-data
 tools: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
 	cmake --build $(BUILD) -j $(JOBS) --target $(TOOLS)
@@ -116,9 +116,8 @@ quick: build
 	-$(BUILD)/bin/validate --results results/study/quick --references reference_data/paper.yaml \
 	  --out $(BUILD)/quick-report --profile quick
 	$(BUILD)/bin/ensemble-cycles results/study/quick $(BUILD)/quick-report/figures/ensemble
-	ENSEMBLE=$(BUILD)/quick-report/figures/ensemble reports/make_figures.sh $(BUILD)/bin/dem \
-	  results/study/quick/$(strip $(SAMPLE)) $(BUILD)/quick-report/figures
-	reports/make_report.sh $(BUILD)/bin/dem results/study/quick $(BUILD)/quick-report
+	reports/make_figures.sh $(BUILD)/bin results/study/quick $(BUILD)/quick-report/figures $(strip $(SAMPLE))
+	reports/make_report.sh $(BUILD)/bin results/study/quick $(BUILD)/quick-report
 
 # Validation table, figures, the convergence and stability sections and reports/index.md from the
 # results of the full studies (a section whose study has not run says so).
@@ -127,11 +126,10 @@ report: tools
 	-$(BUILD)/bin/validate --results $(RESULTS) --references reference_data/paper.yaml --out reports \
 	  --decisions reports/decisions/decisions.json
 	$(BUILD)/bin/ensemble-cycles $(RESULTS) reports/figures/ensemble
-	ENSEMBLE=reports/figures/ensemble reports/make_figures.sh $(BUILD)/bin/dem $(RESULTS)/$(strip $(SAMPLE)) reports/figures
-	SAMPLE=%s_prepare.h5 LATTICE=$(BUILD)/lattice.h5 reports/samples/figures.sh $(BUILD)/bin/dem $(RESULTS)/$(strip $(SAMPLE)) reports/figures
+	reports/make_figures.sh $(BUILD)/bin $(RESULTS) reports/figures $(strip $(SAMPLE))
 	-reports/convergence/make_section.sh $(BUILD)/bin $(CONVERGENCE) reports/convergence
 	reports/stability/make_section.sh $(BUILD)/bin $(STABILITY) reports/stability
-	reports/make_report.sh $(BUILD)/bin/dem $(RESULTS) reports
+	CONVERGENCE=$(CONVERGENCE) DECISIONS=$(DECISIONS) reports/make_report.sh $(BUILD)/bin $(RESULTS) reports
 
 # The paper's open choices (SPEC section 7): each reading one at a time from the baseline, 3
 # samples of 1,000 spheres (pipeline/studies/decisions.yaml), then the report's section on them.

@@ -80,11 +80,16 @@ void read_stop(const std::string& result, validation::CaseRun& run) {
   }
 }
 
-// Paths under the working folder (the repository, when make runs it) without that folder, so that
-// committed tables do not carry the machine's absolute paths.
-std::string relative_paths(std::string s) {
-  const std::string root = fs::current_path().string() + "/";
-  for (std::size_t at; (at = s.find(root)) != std::string::npos;) s.erase(at, root.size());
+// Paths under the working folder (the repository, when make runs it), or under the repository the
+// study ran in (the folder above the results' `results/`), without that folder, so that committed
+// tables do not carry the machine's absolute paths.
+std::string relative_paths(std::string s, const std::string& results = "") {
+  std::vector<std::string> roots = {fs::current_path().string() + "/"};
+  std::error_code ec;  // the real folder: a results/ that is a link to another checkout's names that one
+  const std::string abs = fs::weakly_canonical(fs::absolute(results), ec).string();
+  if (const auto at = abs.rfind("/results/"); !results.empty() && at != std::string::npos) roots.push_back(abs.substr(0, at + 1));
+  for (const std::string& root : roots)
+    for (std::size_t at; (at = s.find(root)) != std::string::npos;) s.erase(at, root.size());
   return s;
 }
 
@@ -365,7 +370,7 @@ int main(int argc, char** argv) {
           o.message = o.message.substr(at + 7);
         bad += !o.acceptable;
         const std::string name = l.test == "-" ? v : v + " " + l.test;
-        md << "| " << cell(name) << " | " << cell(relative_paths(l.settings)) << " | " << (o.acceptable ? "" : "⚠ ") << o.outcome << " | "
+        md << "| " << cell(name) << " | " << cell(relative_paths(l.settings, results)) << " | " << (o.acceptable ? "" : "⚠ ") << o.outcome << " | "
            << o.steps << " | " << (o.closure ? percent(*o.closure) : "—") << " | " << cell(o.message) << " |\n";
       }
     }
