@@ -11,7 +11,7 @@ STABILITY   ?= results/stability/paper
 DECISIONS   ?= results/decisions/paper
 EXECUTOR    ?=                          # local or slurm (pipeline --executor); empty: the study files' executor key, else local
 
-.PHONY: all deps build tools test kill-test slurm-test sanitize fuzz bench quick study report decisions decisions-report samples samples-study cyclic-tests clean
+.PHONY: all deps build tools test kill-test slurm-test sanitize fuzz bench quick study report decisions decisions-report samples samples-study cyclic-tests render clean
 
 # Everything: install, build the tools, run the full study (an ensemble of 5 samples per density,
 # reusing finished runs), validate it, draw the figures and write reports/index.md (the tests are
@@ -144,24 +144,32 @@ decisions-report: tools
 	  (cd reports/decisions && for g in tornado_*.gp; do gnuplot $$g || exit 1; done); \
 	else echo "decisions: no results in $(DECISIONS) yet (make decisions)"; fi
 
-# The three preparation scenes of SPEC section 2, full size (8,000 spheres), seed 1; then the table.
-samples: build
-	mkdir -p results/samples
-	for d in dense medium loose; do \
-	  [ -f results/samples/$${d}_n20_s1_viscous.h5 ] || \
-	  $(BUILD)/bin/dem run scenes/prepare_$$d.yaml --out results/samples/$${d}_n20_s1_viscous.h5 \
-	    --set name=prepare_$${d}_n20_s1_viscous || exit 1; \
-	done
-	reports/samples/make_table.sh $(BUILD)/bin/dem results/samples > reports/samples/table.md
+# The samples before shearing (pipeline/studies/samples.yaml): the three preparation scenes at
+# full size, 3 seeds, viscous and local damping (18 runs of 8,000 spheres), then the table of them
+# beside the paper's values (reports/samples/table.md).
+samples: tools
+	$(BUILD)/bin/pipeline pipeline/studies/samples.yaml --profile paper -j $(JOBS) $(if $(strip $(EXECUTOR)),--executor $(strip $(EXECUTOR)))
+	$(BUILD)/bin/figure-data samples-table results/samples/paper --references reference_data/paper.yaml > reports/samples/table.md
 
-# Issue 3's whole sample study: 3 seeds x 3 sizes x 3 densities, and local damping (hours).
-samples-study: build
-	reports/samples/run_samples.sh $(BUILD)/bin/dem results/samples
-	reports/samples/make_table.sh $(BUILD)/bin/dem results/samples > reports/samples/table.md
+# The sample study: the same at 1,000 spheres too, and the preparation protocol's free choices one
+# at a time (pipeline/studies/sweep.yaml), in one pipeline call; the tables table.md and sweep.md.
+samples-study: tools
+	$(BUILD)/bin/pipeline pipeline/studies/samples.yaml pipeline/studies/sweep.yaml --profile paper -j $(JOBS) $(if $(strip $(EXECUTOR)),--executor $(strip $(EXECUTOR)))
+	$(BUILD)/bin/pipeline pipeline/studies/samples.yaml --profile quick -j $(JOBS) $(if $(strip $(EXECUTOR)),--executor $(strip $(EXECUTOR)))
+	$(BUILD)/bin/figure-data samples-table results/samples/quick results/samples/paper --references reference_data/paper.yaml > reports/samples/table.md
+	$(BUILD)/bin/figure-data samples-table results/sweep/paper --references reference_data/paper.yaml --baseline base > reports/samples/sweep.md
 
-# The five cyclic tests (scenes/tests) on each full-size sample.
-cyclic-tests: samples
-	reports/samples/run_tests.sh $(BUILD)/bin/dem "dense medium loose"
+# The five cyclic tests on the full-size samples are the paper study's (make study); their table
+# (steps, wall time, tracking error, eps_v and CN at cycle ends) for one sample.
+cyclic-tests: study
+	reports/samples/tests_table.sh $(BUILD)/bin/dem $(RESULTS)/$(strip $(SAMPLE)) > reports/samples/tests.md
+
+# A result's XDMF view opened in ParaView (pvbatch; paraview and xvfb installed by the target, a
+# virtual display started if there is none) and its spheres rendered to a PNG the report shows
+# (about 20 s; not in make test: ParaView is a large install).
+RENDER ?= $(RESULTS)/$(strip $(SAMPLE))/dense_prepare.xdmf
+render:
+	reports/render/render.sh $(RENDER) reports/figures/render_dense_prepare.png "dense sample $(strip $(SAMPLE)), after isotropic compression"
 
 clean:
 	rm -rf $(BUILD)

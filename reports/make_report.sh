@@ -129,6 +129,15 @@ mkdir -p "$report"
     echo
     echo "${note:-*No comparison with the paper written for this figure yet.*}"
   done
+  for png in "$report"/figures/render_*.png; do
+    echo
+    echo "### A sample in ParaView"
+    echo
+    echo "The XDMF view of a result (written beside every complete result) opened in ParaView by \`make render\`"
+    echo "(\`reports/render/render.sh\`, pvbatch): the spheres of the last frame at their own radius, coloured by it, axis 1 vertical."
+    echo
+    echo "![$(basename "$png" .png)](figures/$(basename "$png"))"
+  done
   echo
   echo "## Energy balance"
   echo

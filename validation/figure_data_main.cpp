@@ -6,9 +6,10 @@
 //   figure-data settings RESULTS_DIR [--prefix P]
 //       the settings the runs used, read from the resolved scenes of the first sample's
 //       P<density>_prepare.h5 and P<density>_test<N>.h5 (key<TAB>value), for the report's text
-//   figure-data samples-table RESULTS_DIR --references FILE [--per-sample] [--baseline VARIANT]
-//       Markdown table of the prepared samples (the preparations of runs.tsv, or
-//       <sample>/<density>_prepare.h5), mean ± sd over seeds, with the paper's values
+//   figure-data samples-table RESULTS_DIR... --references FILE [--per-sample] [--baseline VARIANT]
+//       Markdown table of the prepared samples (the preparations of each folder's runs.tsv, or
+//       <sample>/<density>_prepare.h5), mean ± sd over seeds per density, variant and size (or
+//       one row per sample), with the paper's values; --baseline adds the shift from that variant
 // Exit status: 0, 1 if something could not be read or written, 2 for bad arguments.
 #include <algorithm>
 #include <cmath>
@@ -38,7 +39,7 @@ const char* usage =
     "usage:\n"
     "  figure-data figures RESULTS_DIR FIG_DIR [--sample NAME] [--references FILE]\n"
     "  figure-data settings RESULTS_DIR [--prefix P]\n"
-    "  figure-data samples-table RESULTS_DIR --references FILE [--per-sample] [--baseline VARIANT]\n";
+    "  figure-data samples-table RESULTS_DIR... --references FILE [--per-sample] [--baseline VARIANT]\n";
 
 const std::vector<std::string> densities = {"loose", "medium", "dense"};
 
@@ -78,6 +79,7 @@ int figures(const std::string& results, const std::string& out, std::string samp
   std::vector<std::string> missing;
   const std::vector<validation::Sample> samples = validation::load_samples(results, densities, missing);
   if (sample.empty()) sample = samples.front().name;
+  const std::string sample_label = sample.empty() ? fs::path(samples.front().dir).filename().string() : sample;
   const auto chosen = std::find_if(samples.begin(), samples.end(), [&](const validation::Sample& s) { return s.name == sample; });
   if (chosen == samples.end()) {
     std::fprintf(stderr, "figure-data: no sample '%s' in %s\n", sample.c_str(), results.c_str());
@@ -94,7 +96,7 @@ int figures(const std::string& results, const std::string& out, std::string samp
   };
   const std::string from = shown(chosen->dir);
   validation::GnuplotValues values;
-  values.text("sample", sample.empty() ? fs::path(chosen->dir).filename().string() : sample);
+  values.text("sample", sample_label);
   values.number("samples_n", static_cast<double>(samples.size()));
 
   // The scenes of the chosen sample: preparations, and the first test's stress path (p, R).
@@ -121,7 +123,19 @@ int figures(const std::string& results, const std::string& out, std::string samp
   }
   values.number("paper_slope", validation::paper_value(paper, "qp_strong_fabric_slope", "").value_or(NAN));
 
-  // Fig. 1 and 2: the grading and the samples (from /state of each preparation).
+  // Fig. 1 and 2: the grading and the samples (from /state of each preparation). Without a dense
+  // preparation these stay at "none" (has_lattice = 0) and the scripts say "not run".
+  values.number("has_lattice", 0);
+  values.text("grading_basis", "?");
+  for (const char* v : {"grading_d_min_mm", "grading_d50_mm", "grading_d_max_mm", "lattice_side_mm", "target_pressure_kPa"}) values.number(v, 1);
+  values.number("particles", 0);
+  {
+    Table none;
+    none.comments = {"no dense preparation"};
+    write("fig01_grading_target.dat", none, "Fig. 1");
+    write("fig01_grading_sample.dat", none, "Fig. 1");
+    write("fig02_lattice.dat", none, "Fig. 2 (A)");
+  }
   if (prepare.count("dense")) {
     write("fig01_grading_target.dat", validation::grading_target(prepare["dense"]), "Fig. 1: target grading (" + from + "/dense_prepare)");
     const dem::ParticleSource& g = prepare["dense"].particles;
@@ -137,6 +151,7 @@ int figures(const std::string& results, const std::string& out, std::string samp
       dem::make_lattice(src.lattice, dem::GradingCurve(src.grading_diameters_m, src.grading_percent_finer, src.grading_basis),
                         prepare["dense"].material.density_kg_per_m3, lattice, cell);
       write("fig02_lattice.dat", validation::spheres(lattice, cell), "Fig. 2 (A): the lattice of " + from + "/dense_prepare before compression");
+      values.number("has_lattice", 1);
       values.number("lattice_side_mm", 1e3 * cell.lengths().maxCoeff());
       values.number("particles", static_cast<double>(lattice.size()));
       if (const dem::StageConfig* st = stage_of_type(prepare["dense"], dem::StageConfig::Type::Stress))
@@ -159,7 +174,7 @@ int figures(const std::string& results, const std::string& out, std::string samp
     }
     write("fig02_" + d + ".dat", t, "Fig. 2: the " + d + " sample after compression (" + from + "/" + d + "_prepare)");
   }
-  values.number("sample_side_mm", std::ceil(side_mm / 5) * 5);
+  values.number("sample_side_mm", side_mm > 0 ? std::ceil(side_mm / 5) * 5 : 1);
 
   // Figs. 3-6, 8, 9, 12, 13 from the chosen sample's tests.
   const auto find_test = [](const validation::DensityResults& r, int t) -> const validation::TestResult* {
@@ -273,11 +288,11 @@ int figures(const std::string& results, const std::string& out, std::string samp
   }
 
   dem::write_file_atomically((fs::path(out) / "values.gp").string(),
-                             values.text_file("Written by figure-data from " + shown(results) + " (sample " + sample +
+                             values.text_file("Written by figure-data from " + shown(results) + " (sample " + sample_label +
                                               ") and reference_data/paper.yaml: the numbers the scripts in reports/gnuplot/ read"));
   for (const std::string& m : missing) std::fprintf(stderr, "note: %s: missing or not complete, left out\n", shown(m).c_str());
   std::fprintf(stderr, "figure-data: %d files from %zu sample(s) of %s (single-run figures: %s) -> %s\n", files + 1,
-               samples.size(), shown(results).c_str(), sample.c_str(), shown(out).c_str());
+               samples.size(), shown(results).c_str(), sample_label.c_str(), shown(out).c_str());
   return 0;
 }
 
@@ -356,7 +371,7 @@ std::string mean_sd(const std::vector<double>& v, int digits) {
   return buf;
 }
 
-int samples_table(const std::string& results, const std::string& references, bool per_sample, const std::string& baseline) {
+int samples_table(const std::vector<std::string>& folders, const std::string& references, bool per_sample, const std::string& baseline) {
   const std::vector<validation::Row> paper = validation::load_references(references, "paper");
   std::vector<Preparation> preps;
   const auto add = [&](const std::string& group, const std::string& density, const std::string& sample, const std::string& file) {
@@ -374,24 +389,26 @@ int samples_table(const std::string& results, const std::string& references, boo
       std::fprintf(stderr, "figure-data: %s: %s, left out\n", shown(file).c_str(), e.what());
     }
   };
-  std::ifstream runs(fs::path(results) / "runs.tsv");
-  if (runs) {  // the pipeline's list: variant, density, test, run, result, starts_from, may_fail, settings, seed
-    std::string line;
-    while (std::getline(runs, line)) {
-      if (line.empty() || line[0] == '#') continue;
-      std::vector<std::string> f;
-      std::stringstream ss(line);
-      for (std::string x; std::getline(ss, x, '\t');) f.push_back(x);
-      if (f.size() < 5 || f[2] != "-") continue;
-      const std::string seed = f.size() > 8 ? "seed" + f[8] : "";
-      add(f[0] == "-" ? "" : f[0], f[1], seed, (fs::path(results) / (f[3] + ".h5")).string());
+  for (const std::string& results : folders) {
+    std::ifstream runs(fs::path(results) / "runs.tsv");
+    if (runs) {  // the pipeline's list: variant, density, test, run, result, starts_from, may_fail, settings, seed
+      std::string line;
+      while (std::getline(runs, line)) {
+        if (line.empty() || line[0] == '#') continue;
+        std::vector<std::string> f;
+        std::stringstream ss(line);
+        for (std::string x; std::getline(ss, x, '\t');) f.push_back(x);
+        if (f.size() < 5 || f[2] != "-") continue;
+        const std::string seed = f.size() > 8 && f[8] != "-" && !f[8].empty() ? "seed" + f[8] : "";
+        add(f[0] == "-" ? "" : f[0], f[1], seed, (fs::path(results) / (f[3] + ".h5")).string());
+      }
+    } else {
+      for (const auto& [name, dir] : validation::sample_dirs(results))
+        for (const std::string& d : densities) add("", d, name, (fs::path(dir) / (d + "_prepare.h5")).string());
     }
-  } else {
-    for (const auto& [name, dir] : validation::sample_dirs(results))
-      for (const std::string& d : densities) add("", d, name, (fs::path(dir) / (d + "_prepare.h5")).string());
   }
   if (preps.empty()) {
-    std::fprintf(stderr, "figure-data samples-table: no complete preparation in %s\n", results.c_str());
+    std::fprintf(stderr, "figure-data samples-table: no complete preparation in %s\n", joined(folders, ", ").c_str());
     return 1;
   }
   // Groups in the order met (by density first, as the paper's tables).
@@ -482,8 +499,8 @@ int main(int argc, char** argv) {
       return figures(positional[0], positional[1], sample, references);
     }
     if (cmd == "settings" && positional.size() == 1) return settings(positional[0], prefix);
-    if (cmd == "samples-table" && positional.size() == 1 && !references.empty())
-      return samples_table(positional[0], references, per_sample, baseline);
+    if (cmd == "samples-table" && !positional.empty() && !references.empty())
+      return samples_table(positional, references, per_sample, baseline);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "figure-data: %s\n", e.what());
     return 1;

@@ -9,7 +9,9 @@ set view 65, 35, 1, 1; set ticslevel 0; unset key; unset grid
 set xlabel "x_2 (mm)"; set ylabel "x_3 (mm)"; set zlabel "x_1 (mm)" rotate
 set xrange [0:lattice_side_mm]; set yrange [0:lattice_side_mm]; set zrange [0:lattice_side_mm]
 set title sprintf("(A) lattice, %g mm cube", lattice_side_mm)
+if (!has_lattice) { eval not_run }
 splot "fig02_lattice.dat" u 2:3:1:($4 * 0.175) w p pt 7 ps variable lc rgb "#7f7f7f"
+eval not_run_off
 set xrange [0:sample_side_mm]; set yrange [0:sample_side_mm]; set zrange [0:sample_side_mm]
 i = 1
 do for [d in densities] {

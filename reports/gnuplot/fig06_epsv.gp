@@ -18,7 +18,9 @@ do for [row = 1:2] {
       set title sprintf("(%s) %s: Tests 2, 3 against q/p", letter(i), d) font ",12"
       tests = "2 3"
     }
-    if (!has_density(d)) { eval not_run; set yrange [0:1] } else { set yrange [*:*] }
+    any = 0
+    do for [t in tests] { any = any + has(d, t + 0) }
+    if (!any) { eval not_run; set yrange [0:1] } else { set yrange [*:*] }
     plot for [t in tests] sprintf("fig06_epsv_%s_test%s.dat", d, t) u 1:2 w l lw 1.4 lc rgb test_colour(t + 0) t test_title(d, t + 0)
     eval not_run_off
   }
