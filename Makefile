@@ -141,7 +141,7 @@ decisions: tools
 decisions-report: tools
 	@if [ -f $(DECISIONS)/runs.tsv ]; then \
 	  $(BUILD)/bin/compare-runs decisions $(DECISIONS) reports/decisions --references reference_data/paper.yaml --ensemble $(RESULTS) && \
-	  (cd reports/decisions && for g in tornado_*.gp; do gnuplot $$g || exit 1; done); \
+	  (cd reports/decisions && GNUPLOT_LIB=$(CURDIR)/reports/gnuplot gnuplot $(CURDIR)/reports/gnuplot/tornado.gp); \
 	else echo "decisions: no results in $(DECISIONS) yet (make decisions)"; fi
 
 # The samples before shearing (pipeline/studies/samples.yaml): the three preparation scenes at

@@ -21,6 +21,7 @@ conv() { awk -F'\t' -v k="$1" '$1 == k { print $2 }' <<< "$conv_settings"; }
 decision() { awk -F'\t' -v k="$1" '$1 == k { print $2 }' <<< "$decisions_settings"; }
 spheres() { awk -v n="$1" 'BEGIN { if (n == "") print "?"; else if (n >= 1000) printf "%d,%03d", n / 1000, n % 1000; else print n }'; }
 microseconds() { awk -v s="$1" 'BEGIN { if (s == "") print "?"; else printf "%g µs", s * 1e6 }'; }
+scaled() { awk -v x="$1" -v f="$2" -v u="$3" 'BEGIN { if (x == "") print "?"; else printf "%g %s", x / f, u }'; }   # scaled VALUE FACTOR UNIT
 shopt -s nullglob
 out=$report/index.md
 mkdir -p "$report"
@@ -49,7 +50,7 @@ mkdir -p "$report"
   echo "hold until the unbalanced force ratio is below $(setting hold_unbalanced_force_ratio) and every principal stress within $(setting hold_stress_tolerance) of the target;"
   echo "strain-rate cap while compressing $(setting max_strain_rate_per_s) s⁻¹;"
   echo "shearing friction $(for d in loose medium dense; do printf '%s %s, ' "$d" "$(setting friction_shear_$d)"; done | sed 's/, $//');"
-  echo "vertices at p = $(setting mean_stress_Pa) Pa with R = $(setting stress_ratio);"
+  echo "vertices at p = $(scaled "$(setting mean_stress_Pa)" 1e3 kPa) with R = $(setting stress_ratio);"
   echo "Test 3 visits $(setting test3_path | sed -n 's/.*\(TC1, A, [A-Z0-9]*, A, [A-Z0-9]*\).*/\1/p'), …;"
   echo "the cell is kept orthorhombic (its shear stresses are not controlled)."
   echo
@@ -70,7 +71,7 @@ mkdir -p "$report"
   echo "${#samples[@]} sample(s) per density (seeds of the diameter sampler); each sample is prepared (SPEC §2: isotropic"
   echo "compression of the $(setting lattice) lattice ($(spheres "$(setting particles)") spheres) to $(setting target_pressure_kPa) kPa with the density's friction,"
   echo "$(setting friction_prepare) for loose / medium / dense, Δt = $(microseconds "$(setting time_step_prepare_s)")) and sheared along the five cyclic"
-  echo "true-triaxial paths (SPEC §3; p = $(setting mean_stress_Pa) Pa, R = $(setting stress_ratio), $(setting stress_rate_Pa_per_s) Pa/s, shearing friction"
+  echo "true-triaxial paths (SPEC §3; p = $(scaled "$(setting mean_stress_Pa)" 1e3 kPa), R = $(setting stress_ratio), $(scaled "$(setting stress_rate_Pa_per_s)" 1e6 MPa/s), shearing friction"
   echo "$(setting friction_shear), Δt = $(microseconds "$(setting time_step_test_s)")). Per sample:"
   echo
   echo "| sample | runs | steps | wall time of the runs (s) |"
@@ -154,7 +155,7 @@ mkdir -p "$report"
   echo
   if [ -f "$report/convergence/table.md" ]; then
     echo "\`pipeline/studies/convergence.yaml\`: the loose sample and Test 1 (2 cycles) at the paper's settings"
-    echo "($(spheres "$(conv particles)") spheres, Δt = $(microseconds "$(conv time_step_test_s)"), $(conv stress_rate_Pa_per_s) Pa/s) as the reference, and variants that change the time step (with their own"
+    echo "($(spheres "$(conv particles)") spheres, Δt = $(microseconds "$(conv time_step_test_s)"), $(scaled "$(conv stress_rate_Pa_per_s)" 1e6 MPa/s)) as the reference, and variants that change the time step (with their own"
     echo "preparation), the stress rate (test only) or the particle count, alone and together. Errors are relative to the"
     echo "reference; wall times are those of this machine while the study ran (\`reports/convergence/errors.dat\`)."
     echo

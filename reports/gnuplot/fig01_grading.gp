@@ -1,6 +1,7 @@
 # Fig. 1: the grading curve of the scene (target, as the preparation reads it) and the one realised
 # in the dense sample, by count and by mass. Data: fig01_grading_target.dat, fig01_grading_sample.dat.
 load 'style.gp'
+load 'values.gp'
 set terminal pngcairo size 900,650 font ",12" enhanced
 set output 'fig01_grading.png'
 set title sprintf("Fig. 1  Grain size distribution (d_{min} = %g mm, d_{50} = %g mm, d_{max} = %g mm)", grading_d_min_mm, grading_d50_mm, grading_d_max_mm)

@@ -2,6 +2,7 @@
 # point size proportional to the diameter, axis 1 vertical. Data: fig02_lattice.dat,
 # fig02_<density>.dat (x1, x2, x3, diameter in mm); the friction of each preparation from its scene.
 load 'style.gp'
+load 'values.gp'
 set terminal pngcairo size 1400,1200 font ",12" enhanced
 set output 'fig02_samples.png'
 set multiplot layout 2,2 title sprintf("Fig. 2  Samples before (A) and after isotropic compression to %g kPa: (B) loose, (C) medium, (D) dense\n%d spheres, point size proportional to diameter, axis 1 vertical", target_pressure_kPa, particles)

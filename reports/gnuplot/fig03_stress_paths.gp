@@ -2,6 +2,7 @@
 # panel per test (A)-(E) and all five targets overlaid (E′). Data: fig03_test<t>_target.dat,
 # fig03_<density>_test<t>.dat, fig03_states.dat (figure-data).
 load 'style.gp'
+load 'values.gp'
 set terminal pngcairo size 1650,1130 font ",11" enhanced
 set output 'fig03_stress_paths.png'
 set multiplot layout 2,3 title sprintf("Fig. 3  Stress paths on the normalised π-plane (p = %g kPa, σ_{max}/σ_{min} = %g): target (grey, arrows) and measured\nx = (σ_3 − σ_2)/(√2 p),  y = (2σ_1 − σ_2 − σ_3)/(√6 p); measured: from the axis stresses σ_{11}, σ_{22}, σ_{33}", mean_stress_kPa, stress_ratio) font ",13"

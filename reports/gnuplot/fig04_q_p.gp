@@ -2,6 +2,7 @@
 # order. Dashed: the target q at the TC and TE states (fig04_targets.dat, from p and R of the
 # scenes). Data: fig04_q_p_<density>_test<t>.dat (figure-data).
 load 'style.gp'
+load 'values.gp'
 set terminal pngcairo size 1800,620 font ",11" enhanced
 set output 'fig04_q_p.png'
 set multiplot layout 1,3 title "Fig. 4  Deviator stress q against mean stress p, all cycles of all tests (q from the principal values of the full stress tensor)" font ",13"

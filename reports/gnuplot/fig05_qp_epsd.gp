@@ -1,6 +1,7 @@
 # Fig. 5: q/p against ε_d (paper Eq. 4), first 5 cycles (cycle 0, the A→TC1 leg of Tests 1 and 4,
 # included). Data: fig05_qp_epsd_<density>_test<t>.dat (figure-data).
 load 'style.gp'
+load 'values.gp'
 set terminal pngcairo size 1800,620 font ",11" enhanced
 set output 'fig05_qp_epsd.png'
 set multiplot layout 1,3 title "Fig. 5  Stress ratio q/p against deviatoric strain ε_d, first 5 cycles of all tests (strains from the start of shearing)\nε_d of paper Eq. 4: √(2/3 [(ε_1−ε_2)^2 + (ε_2−ε_3)^2 + (ε_1−ε_3)^2]) = √3 × the usual equivalent strain" font ",13"

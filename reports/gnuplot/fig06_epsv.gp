@@ -1,6 +1,7 @@
 # Fig. 6: ε_v against σ_1/σ_3 (Tests 1, 4, 5; top row) and against q/p (Tests 2, 3; bottom row),
 # first 5 cycles. Data: fig06_epsv_<density>_test<t>.dat (figure-data; column 1 is σ11/σ33 or q/p).
 load 'style.gp'
+load 'values.gp'
 set terminal pngcairo size 1800,1050 font ",11" enhanced
 set output 'fig06_epsv.png'
 set multiplot layout 2,3 title "Fig. 6  Volumetric strain ε_v = 1 − V/V_0 (compression +), first 5 cycles: against σ_1/σ_3 for Tests 1, 4, 5 (top) and against q/p for Tests 2, 3 (bottom)" font ",13"

@@ -2,9 +2,10 @@
 # The ensemble's mean over its samples with a band of one standard deviation (one sample: its
 # values). Data: fig07_epsv_cycles_<density>_test<t>.dat (figure-data: cycle, mean, sd, n, min, max).
 load 'style.gp'
+load 'values.gp'
 set terminal pngcairo size 1800,620 font ",11" enhanced
 set output 'fig07_epsv_cycles.png'
-set multiplot layout 1,3 title "Fig. 7  Volumetric strain ε_v (compression +) at the end of each cycle, all tests" . ensemble_note font ",13"
+set multiplot layout 1,3 title "Fig. 7  Volumetric strain ε_v (compression +) at the end of each cycle, all tests" . ensemble_note(samples_n) font ",13"
 set xlabel "cycle number (0 = start of shearing)"; set ylabel "ε_v (%) at the end of the cycle"; set key top left
 set offsets 0, 0.3, graph 0.25, 0
 i = 0

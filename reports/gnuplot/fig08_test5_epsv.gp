@@ -2,6 +2,7 @@
 # ends when the loaded axis changes, from the /legs targets). Data: fig08_test5_<density>.dat, one
 # gnuplot index per block; the block captions fig08_titles_<density>_<b> in values.gp.
 load 'style.gp'
+load 'values.gp'
 set terminal pngcairo size 1800,620 font ",11" enhanced
 set output 'fig08_test5_epsv.png'
 set multiplot layout 1,3 title "Fig. 8  Test 5: volumetric strain ε_v (compression +) against σ_1/σ_3 over all cycles, coloured by block of cycles" font ",13"

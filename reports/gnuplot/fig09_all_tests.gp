@@ -1,6 +1,7 @@
 # Fig. 9 for every test of each density (beyond the paper's selection): fig09_all_tests_<density>.png,
 # cycle 1 on top, cycle 5 below; the panels of panel_fig09.gp.
 load 'style.gp'
+load 'values.gp'
 do for [dd in densities] {
   set terminal pngcairo size 2250,1000 font ",11" enhanced
   set output sprintf("fig09_all_tests_%s.png", dd)

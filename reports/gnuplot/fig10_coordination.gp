@@ -2,9 +2,10 @@
 # cycle 0 is the start of shearing. Dashed: the paper's value before shearing (paper_cn_<density>,
 # reference_data/paper.yaml). Mean and band as Fig. 7. Data: fig10_coordination_<density>_test<t>.dat.
 load 'style.gp'
+load 'values.gp'
 set terminal pngcairo size 1800,620 font ",11" enhanced
 set output 'fig10_coordination.png'
-set multiplot layout 1,3 title "Fig. 10  Coordination number 2N_c/N_p (rattlers included) at the end of each cycle, all tests" . ensemble_note font ",13"
+set multiplot layout 1,3 title "Fig. 10  Coordination number 2N_c/N_p (rattlers included) at the end of each cycle, all tests" . ensemble_note(samples_n) font ",13"
 set xlabel "cycle number (0 = start of shearing)"; set ylabel "coordination number"; set key top right
 set offsets 0, 0.3, graph 0.4, graph 0.05
 i = 0

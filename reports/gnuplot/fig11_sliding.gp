@@ -2,9 +2,10 @@
 # first row's sliding flags come from the saved sample, i.e. its preparation friction). Mean and
 # band as Fig. 7. Data: fig11_sliding_<density>_test<t>.dat (figure-data).
 load 'style.gp'
+load 'values.gp'
 set terminal pngcairo size 1800,620 font ",11" enhanced
 set output 'fig11_sliding.png'
-set multiplot layout 1,3 title "Fig. 11  Sliding contact fraction N_s/N_c × 100 % (|f_t| ≥ μ f_n) at the end of each cycle, all tests" . ensemble_note font ",13"
+set multiplot layout 1,3 title "Fig. 11  Sliding contact fraction N_s/N_c × 100 % (|f_t| ≥ μ f_n) at the end of each cycle, all tests" . ensemble_note(samples_n) font ",13"
 set xlabel "cycle number"; set ylabel "sliding contact fraction N_s/N_c (%)"; set key top right
 set offsets 0, 0.3, graph 0.4, 0
 i = 0

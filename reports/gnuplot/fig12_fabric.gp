@@ -1,6 +1,7 @@
 # Fig. 12: q/p against the fabric ratio F_d/F_m of all contacts (paper Eq. 8), first 5 cycles, with
 # the 1:1 line; square axes of equal ranges (fig12_max). Data: fig12_fabric_<density>_test<t>.dat.
 load 'style.gp'
+load 'values.gp'
 set terminal pngcairo size 1800,660 font ",11" enhanced
 set output 'fig12_fabric.png'
 set multiplot layout 1,3 title "Fig. 12  Stress ratio q/p against the fabric ratio F_d/F_m of all contacts, first 5 cycles of all tests" font ",13"

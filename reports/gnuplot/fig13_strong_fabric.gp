@@ -2,6 +2,7 @@
 # cycles, with the paper's relation (slope paper_slope of reference_data/paper.yaml); square axes
 # (fig13_max). Data: fig13_strong_fabric_<density>_test<t>.dat (figure-data).
 load 'style.gp'
+load 'values.gp'
 set terminal pngcairo size 1800,660 font ",11" enhanced
 set output 'fig13_strong_fabric.png'
 set multiplot layout 1,3 title "Fig. 13  Stress ratio q/p against the strong-contact fabric ratio F^s_d/F^s_m, first 5 cycles of all tests" font ",13"

@@ -1,6 +1,7 @@
 # Fig. 14: Fig. 13 of the three densities together (colour = density), with the paper's relation.
 # Data: fig13_strong_fabric_<density>_test<t>.dat; the tests present, fig14_tests_<density>.
 load 'style.gp'
+load 'values.gp'
 set terminal pngcairo size 900,860 font ",11" enhanced
 set output 'fig14_strong_fabric_all.png'
 set title "Fig. 14  q/p against F^s_d/F^s_m, all densities and tests, first 5 cycles" font ",13"

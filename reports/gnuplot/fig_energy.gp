@@ -3,6 +3,7 @@
 # time, work_by_cell, dissipated_by_damping, dissipated_by_friction, elastic_energy_normal,
 # elastic_energy_tangential, kinetic_energy_centred, energy_closure_error).
 load 'style.gp'
+load 'values.gp'
 set terminal pngcairo size 1500,450 font ",11" enhanced
 set output 'fig_energy.png'
 set key top left box opaque samplen 2 font ",9"

@@ -1,10 +1,10 @@
 # The shared style of the report's figures: every script in reports/gnuplot/ starts with
 #   load 'style.gp'
-# and runs in the figure folder, where build/bin/figure-data wrote the data files and values.gp
-# (the numbers the scripts read: the paper's values from reference_data/paper.yaml, the settings of
-# the resolved scenes, which results exist). reports/make_figures.sh runs them with GNUPLOT_LIB
+# and runs in the folder of its data. The figures of the study then load 'values.gp', which
+# build/bin/figure-data wrote beside their data files (the numbers the scripts read: the paper's
+# values from reference_data/paper.yaml, the settings of the resolved scenes, which results exist).
+# reports/make_figures.sh and reports/convergence/make_section.sh run them with GNUPLOT_LIB
 # pointing here.
-load 'values.gp'
 
 set grid lc rgb "#dddddd"
 set key top left box opaque samplen 2 spacing 1.1 font ",10"
@@ -23,7 +23,7 @@ has(d, t) = value(sprintf("has_%s_test%d", d, t))
 has_density(d) = value("has_" . d)
 test_title(d, t) = has(d, t) ? sprintf("Test %d", t) : sprintf("Test %d: not run", t)
 # The title note of the figures that show the ensemble's mean with a band of one standard deviation.
-ensemble_note = samples_n > 1 ? sprintf(" — mean of %d samples, band ± 1 standard deviation", samples_n) : ""
+ensemble_note(n) = n > 1 ? sprintf(" — mean of %d samples, band ± 1 standard deviation", n) : ""
 
 # A panel without data says so; `eval not_run` before its plot, `eval not_run_off` after.
 not_run = "set label 99 'not run' at graph 0.5, 0.4 center front font ',18' tc rgb '#888888'"
