@@ -28,7 +28,7 @@ mkdir -p "$report"
 {
   echo "# cyclic-triax: reproduction of the seed paper's study"
   echo
-  echo "Generated on $(date -u +%Y-%m-%d) from \`$(realpath --relative-to="$here" "$results")\`${REPORT_NOTE:+ — $REPORT_NOTE}."
+  echo "Generated on $(date -u +%Y-%m-%d) from \`$(realpath -s --relative-to="$here" "$results")\`${REPORT_NOTE:+ — $REPORT_NOTE}."
   echo "Source: commit \`$(git -C "$here" rev-parse --short=12 HEAD 2>/dev/null || echo unknown)\`$(git -C "$here" diff --quiet HEAD -- . ':!reports' 2>/dev/null || echo ' (with uncommitted changes)'); engine: \`$("$dem" --version)\`."
   shopt -s globstar
   engines=$(for f in "$results"/**/*.h5; do [ -f "$f" ] || continue; h5dump -a software_version "$f" 2>/dev/null | sed -n 's/.*(0): "\(.*\)".*/\1/p'; done | sort | uniq -c | awk '{printf "%s%s (%d runs)", (NR > 1 ? ", " : ""), $2, $1}')
@@ -195,7 +195,7 @@ mkdir -p "$report"
   echo
   echo "## Provenance"
   echo
-  echo "- Resolved scenes of every run: \`$(realpath --relative-to="$here" "$results")/scenes/\` (also inside each result, attribute \`scene_yaml\`)."
+  echo "- Resolved scenes of every run: \`$(realpath -s --relative-to="$here" "$results")/scenes/\` (also inside each result, attribute \`scene_yaml\`)."
   echo "- Libraries: $(for p in libeigen3-dev libhdf5-dev libyaml-cpp-dev catch2 gnuplot-nox; do printf '%s %s; ' "$p" "$(dpkg-query -W -f='${Version}' "$p" 2>/dev/null || echo '?')"; done)"
   echo "- Compiler: $(g++ --version | head -1); machine: $(nproc) cores."
 } > "$out"
