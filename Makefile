@@ -129,7 +129,7 @@ report: tools
 	reports/make_figures.sh $(BUILD)/bin $(RESULTS) reports/figures $(strip $(SAMPLE))
 	-reports/convergence/make_section.sh $(BUILD)/bin $(CONVERGENCE) reports/convergence
 	reports/stability/make_section.sh $(BUILD)/bin $(STABILITY) reports/stability
-	CONVERGENCE=$(CONVERGENCE) DECISIONS=$(DECISIONS) reports/make_report.sh $(BUILD)/bin $(RESULTS) reports
+	CONVERGENCE=$(CONVERGENCE) DECISIONS=$(DECISIONS) STABILITY=$(STABILITY) reports/make_report.sh $(BUILD)/bin $(RESULTS) reports
 
 # The paper's open choices (SPEC section 7): each reading one at a time from the baseline, 3
 # samples of 1,000 spheres (pipeline/studies/decisions.yaml), then the report's section on them.

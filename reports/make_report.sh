@@ -12,13 +12,17 @@ results=${2:-$here/results/study/paper}
 report=${3:-$here/reports}
 convergence=${CONVERGENCE:-$here/results/convergence/paper}
 decisions=${DECISIONS:-$here/results/decisions/paper}
+stability=${STABILITY:-$here/results/stability/paper}
 # settings KEY: a setting of the study's runs; conv KEY: of the convergence study's reference runs.
 study_settings=$("$bin/figure-data" settings "$results" 2> /dev/null || true)
 conv_settings=$("$bin/figure-data" settings "$convergence" --prefix reference_ 2> /dev/null || true)
 decisions_settings=$("$bin/figure-data" settings "$decisions" --prefix baseline_ 2> /dev/null || true)
+stability_settings=$("$bin/figure-data" settings "$stability" --run base 2> /dev/null || true)
 setting() { awk -F'\t' -v k="$1" '$1 == k { print $2 }' <<< "$study_settings"; }
 conv() { awk -F'\t' -v k="$1" '$1 == k { print $2 }' <<< "$conv_settings"; }
 decision() { awk -F'\t' -v k="$1" '$1 == k { print $2 }' <<< "$decisions_settings"; }
+stab() { awk -F'\t' -v k="$1" '$1 == k { print $2 }' <<< "$stability_settings"; }
+percent() { awk -v x="$1" 'BEGIN { if (x == "") print "?"; else printf "%g %%", 100 * x }'; }
 spheres() { awk -v n="$1" 'BEGIN { if (n == "") print "?"; else if (n >= 1000) printf "%d,%03d", n / 1000, n % 1000; else print n }'; }
 microseconds() { awk -v s="$1" 'BEGIN { if (s == "") print "?"; else printf "%g µs", s * 1e6 }'; }
 scaled() { awk -v x="$1" -v f="$2" -v u="$3" 'BEGIN { if (x == "") print "?"; else printf "%g %s", x / f, u }'; }   # scaled VALUE FACTOR UNIT
@@ -146,7 +150,7 @@ mkdir -p "$report"
   echo "motion and the energy the damping and the sliding contacts took (engine/README.md, \`Energy balance\`); below, the"
   echo "runs of sample $(basename "$first")."
   echo
-  "$here/reports/energy/energy.sh" "$report/figures" > "$report/energy.md"
+  "$here/reports/energy/energy.sh" "$report/figures" "$(setting max_energy_error)" > "$report/energy.md"
   cat "$report/energy.md"
   echo
   echo "![energy balance](figures/fig_energy.png)"
@@ -171,11 +175,11 @@ mkdir -p "$report"
   echo "## Stability"
   echo
   if [ -f "$report/stability/table.md" ]; then
-    echo "\`pipeline/studies/stability.yaml\` (issue 7): 216 spheres (\`scenes/stability/base.yaml\`: fast isotropic compression"
-    echo "to 100 kPa, then A → TC1 → A) with one setting pushed per case. A case either runs to the end (finite values; the"
+    echo "\`pipeline/studies/stability.yaml\`: $(spheres "$(stab particles)") spheres (\`scenes/stability/base.yaml\`: fast isotropic compression"
+    echo "to $(stab target_pressure_kPa) kPa, then A → TC1 → A) with one setting pushed per case. A case either runs to the end (finite values; the"
     echo "energy closure error is the largest over the rows once 1 % of the energy has come in, limit 1 %) or stops early"
-    echo "with the engine's message (its own energy guard stops a run above \`numerics.max_energy_error\` = 5 %); a time step"
-    echo "above 0.2 × critical runs once as written (refused) and once with \`numerics.max_time_step_fraction\` raised to 2 on"
+    echo "with the engine's message (its own energy guard stops a run above \`numerics.max_energy_error\` = $(percent "$(stab max_energy_error)")); a time step"
+    echo "above $(stab max_time_step_fraction) × critical runs once as written (refused) and once with \`numerics.max_time_step_fraction\` raised to 2 on"
     echo "purpose. ⚠ marks a case that does neither (\`reports/stability/table.md\`, \`build/bin/compare-runs stability\`)."
     echo
     cat "$report/stability/table.md"

@@ -3,9 +3,10 @@
 //   figure-data figures RESULTS_DIR FIG_DIR [--sample NAME] [--references FILE]
 //       every figure's data files (figNN_*.dat, columns named with units) and values.gp, the
 //       numbers the static scripts in reports/gnuplot/ read (the paper's among them)
-//   figure-data settings RESULTS_DIR [--prefix P]
+//   figure-data settings RESULTS_DIR [--prefix P | --run NAME]
 //       the settings the runs used, read from the resolved scenes of the first sample's
-//       P<density>_prepare.h5 and P<density>_test<N>.h5 (key<TAB>value), for the report's text
+//       P<density>_prepare.h5 and P<density>_test<N>.h5, or of NAME.h5 alone (key<TAB>value), for
+//       the report's text
 //   figure-data samples-table RESULTS_DIR... --references FILE [--per-sample] [--baseline VARIANT]
 //       Markdown table of the prepared samples (the preparations of each folder's runs.tsv, or
 //       <sample>/<density>_prepare.h5), mean ± sd over seeds per density, variant and size (or
@@ -38,7 +39,7 @@ namespace {
 const char* usage =
     "usage:\n"
     "  figure-data figures RESULTS_DIR FIG_DIR [--sample NAME] [--references FILE]\n"
-    "  figure-data settings RESULTS_DIR [--prefix P]\n"
+    "  figure-data settings RESULTS_DIR [--prefix P | --run NAME]\n"
     "  figure-data samples-table RESULTS_DIR... --references FILE [--per-sample] [--baseline VARIANT]\n";
 
 const std::vector<std::string> densities = {"loose", "medium", "dense"};
@@ -73,6 +74,22 @@ std::string joined(const std::vector<std::string>& v, const std::string& sep) {
 }
 
 std::string num(double x) { return validation::number(x); }
+
+// A path as written in a scene ("- TC1\n- {repeat: 5, ...}" or a flow list) on one line: "[TC1, {repeat: 5, ...}]".
+std::string one_line(const std::string& yaml) {
+  std::stringstream in(yaml);
+  std::vector<std::string> items;
+  for (std::string line; std::getline(in, line);) {
+    const auto first = line.find_first_not_of(" \t");
+    if (first == std::string::npos) continue;
+    line = line.substr(first);
+    if (line.rfind("- ", 0) == 0) items.push_back(line.substr(2));
+    else if (items.empty()) items.push_back(line);
+    else items.back() += " " + line;
+  }
+  if (items.size() == 1 && !items[0].empty() && items[0][0] == '[') return items[0];
+  return "[" + joined(items, ", ") + "]";
+}
 
 // ---------------------------------------------------------------------------------------------
 int figures(const std::string& results, const std::string& out, std::string sample, const std::string& references) {
@@ -297,15 +314,18 @@ int figures(const std::string& results, const std::string& out, std::string samp
 }
 
 // ---------------------------------------------------------------------------------------------
-int settings(const std::string& results, const std::string& prefix) {
+int settings(const std::string& results, const std::string& prefix, const std::string& run) {
   const auto dirs = validation::sample_dirs(results);
   const std::string dir = dirs.front().second;
   std::map<std::string, std::string> kv;
   std::map<std::string, std::vector<std::string>> per_density;
   bool any = false;
-  for (const std::string& d : densities) {
-    const auto prep = scene_of((fs::path(dir) / (prefix + d + "_prepare.h5")).string());
+  // One named run (--run NAME: DIR/NAME.h5) is read as the preparation of a study of one density.
+  for (const std::string& d : run.empty() ? densities : std::vector<std::string>{"run"}) {
+    const auto prep = scene_of((fs::path(dir) / (run.empty() ? prefix + d + "_prepare.h5" : run + ".h5")).string());
     if (prep) {
+      kv["max_energy_error"] = num(prep->max_energy_error);
+      kv["max_time_step_fraction"] = num(prep->max_time_step_fraction);
       any = true;
       per_density["friction_prepare"].push_back(num(prep->material.friction));
       kv["time_step_prepare_s"] = num(prep->time_step_s);
@@ -339,7 +359,7 @@ int settings(const std::string& results, const std::string& prefix) {
         kv["mean_stress_Pa"] = num(st->mean_stress_Pa);
         kv["stress_ratio"] = num(st->stress_ratio);
         kv["stress_rate_Pa_per_s"] = num(st->stress_rate_Pa_per_s);
-        kv["test" + std::to_string(t) + "_path"] = st->path_text;
+        kv["test" + std::to_string(t) + "_path"] = one_line(st->path_text);
       }
     }
   }
@@ -485,13 +505,14 @@ int main(int argc, char** argv) {
   }
   const std::string cmd = argv[1];
   std::vector<std::string> positional;
-  std::string sample, references, prefix, baseline;
+  std::string sample, references, prefix, baseline, run;
   bool per_sample = false;
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--sample" && i + 1 < argc) sample = argv[++i];
     else if (a == "--references" && i + 1 < argc) references = argv[++i];
     else if (a == "--prefix" && i + 1 < argc) prefix = argv[++i];
+    else if (a == "--run" && i + 1 < argc) run = argv[++i];
     else if (a == "--baseline" && i + 1 < argc) baseline = argv[++i];
     else if (a == "--per-sample") per_sample = true;
     else if (!a.empty() && a[0] == '-') { std::fprintf(stderr, "figure-data: unknown option '%s'\n%s", a.c_str(), usage); return 2; }
@@ -502,7 +523,7 @@ int main(int argc, char** argv) {
       if (references.empty()) references = "reference_data/paper.yaml";
       return figures(positional[0], positional[1], sample, references);
     }
-    if (cmd == "settings" && positional.size() == 1) return settings(positional[0], prefix);
+    if (cmd == "settings" && positional.size() == 1) return settings(positional[0], prefix, run);
     if (cmd == "samples-table" && !positional.empty() && !references.empty())
       return samples_table(positional, references, per_sample, baseline);
   } catch (const std::exception& e) {

@@ -257,3 +257,25 @@ TEST_CASE("figure-data on a synthetic result: known columns, and every figure sc
     CHECK(fs::exists(dir / "figs" / "fig10_coordination.png"));
   }
 }
+
+TEST_CASE("figure-data settings: what the report quotes comes from the resolved scene of a run", "[figures][tool]") {
+  // A real run of the engine (27 spheres, seconds): its result's scene, read back by figure-data.
+  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test-figure-settings";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string bin = std::string(DEM_BINARY_DIR) + "/bin";
+  std::string run = "'" + bin + "/dem' run '";
+  run += DEM_SOURCE_DIR;
+  run += "/scenes/stability/base.yaml' --out '" + (dir / "loose_prepare.h5").string() +
+         "' --quiet --set 'particles.lattice.n=[3, 3, 3]' --set numerics.time_step=5.0e-7 --set material.friction=0.3 > /dev/null 2>&1";
+  REQUIRE(std::system(run.c_str()) == 0);
+  const std::string cmd = "'" + bin + "/figure-data' settings '" + dir.string() + "' > '" + (dir / "settings.tsv").string() + "'";
+  REQUIRE(std::system(cmd.c_str()) == 0);
+  const std::string s = slurp(dir / "settings.tsv");
+  CHECK(s.find("particles\t27\n") != std::string::npos);
+  CHECK(s.find("lattice\t3×3×3\n") != std::string::npos);
+  CHECK(s.find("time_step_prepare_s\t5e-07\n") != std::string::npos);
+  CHECK(s.find("friction_prepare\t0.3\n") != std::string::npos);
+  CHECK(s.find("target_pressure_kPa\t100\n") != std::string::npos);
+  CHECK(s.find("max_energy_error\t0.05\n") != std::string::npos);
+}
