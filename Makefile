@@ -11,7 +11,7 @@ STABILITY   ?= results/stability/paper
 DECISIONS   ?= results/decisions/paper
 EXECUTOR    ?=                          # local or slurm (pipeline --executor); empty: the study files' executor key, else local
 
-.PHONY: all deps build tools test kill-test slurm-test sanitize fuzz bench quick study report decisions decisions-report samples samples-study cyclic-tests clean
+.PHONY: all deps build tools test kill-test slurm-test sanitize fuzz bench quick study report decisions decisions-report samples samples-study cyclic-tests render clean
 
 # Everything: install, build the tools, run the full study (an ensemble of 5 samples per density,
 # reusing finished runs), validate it, draw the figures and write reports/index.md (the tests are
@@ -34,7 +34,7 @@ build: deps
 
 # Only what the studies and the report use (not the tests or the benchmark: from nothing, 1 min 11 s
 # instead of 2 min 38 s on this machine).
-TOOLS := dem pipeline validate compare-runs ensemble-cycles
+TOOLS := dem pipeline validate compare-runs ensemble-cycles figure-data
 tools: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
 	cmake --build $(BUILD) -j $(JOBS) --target $(TOOLS)
@@ -116,9 +116,8 @@ quick: build
 	-$(BUILD)/bin/validate --results results/study/quick --references reference_data/paper.yaml \
 	  --out $(BUILD)/quick-report --profile quick
 	$(BUILD)/bin/ensemble-cycles results/study/quick $(BUILD)/quick-report/figures/ensemble
-	ENSEMBLE=$(BUILD)/quick-report/figures/ensemble reports/make_figures.sh $(BUILD)/bin/dem \
-	  results/study/quick/$(strip $(SAMPLE)) $(BUILD)/quick-report/figures
-	reports/make_report.sh $(BUILD)/bin/dem results/study/quick $(BUILD)/quick-report
+	reports/make_figures.sh $(BUILD)/bin results/study/quick $(BUILD)/quick-report/figures $(strip $(SAMPLE))
+	reports/make_report.sh $(BUILD)/bin results/study/quick $(BUILD)/quick-report
 
 # Validation table, figures, the convergence and stability sections and reports/index.md from the
 # results of the full studies (a section whose study has not run says so).
@@ -127,11 +126,10 @@ report: tools
 	-$(BUILD)/bin/validate --results $(RESULTS) --references reference_data/paper.yaml --out reports \
 	  --decisions reports/decisions/decisions.json
 	$(BUILD)/bin/ensemble-cycles $(RESULTS) reports/figures/ensemble
-	ENSEMBLE=reports/figures/ensemble reports/make_figures.sh $(BUILD)/bin/dem $(RESULTS)/$(strip $(SAMPLE)) reports/figures
-	SAMPLE=%s_prepare.h5 LATTICE=$(BUILD)/lattice.h5 reports/samples/figures.sh $(BUILD)/bin/dem $(RESULTS)/$(strip $(SAMPLE)) reports/figures
+	reports/make_figures.sh $(BUILD)/bin $(RESULTS) reports/figures $(strip $(SAMPLE))
 	-reports/convergence/make_section.sh $(BUILD)/bin $(CONVERGENCE) reports/convergence
 	reports/stability/make_section.sh $(BUILD)/bin $(STABILITY) reports/stability
-	reports/make_report.sh $(BUILD)/bin/dem $(RESULTS) reports
+	CONVERGENCE=$(CONVERGENCE) DECISIONS=$(DECISIONS) STABILITY=$(STABILITY) reports/make_report.sh $(BUILD)/bin $(RESULTS) reports
 
 # The paper's open choices (SPEC section 7): each reading one at a time from the baseline, 3
 # samples of 1,000 spheres (pipeline/studies/decisions.yaml), then the report's section on them.
@@ -143,27 +141,35 @@ decisions: tools
 decisions-report: tools
 	@if [ -f $(DECISIONS)/runs.tsv ]; then \
 	  $(BUILD)/bin/compare-runs decisions $(DECISIONS) reports/decisions --references reference_data/paper.yaml --ensemble $(RESULTS) && \
-	  (cd reports/decisions && for g in tornado_*.gp; do gnuplot $$g || exit 1; done); \
+	  (cd reports/decisions && GNUPLOT_LIB=$(CURDIR)/reports/gnuplot gnuplot $(CURDIR)/reports/gnuplot/tornado.gp); \
 	else echo "decisions: no results in $(DECISIONS) yet (make decisions)"; fi
 
-# The three preparation scenes of SPEC section 2, full size (8,000 spheres), seed 1; then the table.
-samples: build
-	mkdir -p results/samples
-	for d in dense medium loose; do \
-	  [ -f results/samples/$${d}_n20_s1_viscous.h5 ] || \
-	  $(BUILD)/bin/dem run scenes/prepare_$$d.yaml --out results/samples/$${d}_n20_s1_viscous.h5 \
-	    --set name=prepare_$${d}_n20_s1_viscous || exit 1; \
-	done
-	reports/samples/make_table.sh $(BUILD)/bin/dem results/samples > reports/samples/table.md
+# The samples before shearing (pipeline/studies/samples.yaml): the three preparation scenes at
+# full size, 3 seeds, viscous and local damping (18 runs of 8,000 spheres), then the table of them
+# beside the paper's values (reports/samples/table.md).
+samples: tools
+	$(BUILD)/bin/pipeline pipeline/studies/samples.yaml --profile paper -j $(JOBS) $(if $(strip $(EXECUTOR)),--executor $(strip $(EXECUTOR)))
+	$(BUILD)/bin/figure-data samples-table results/samples/paper --references reference_data/paper.yaml > reports/samples/table.md
 
-# Issue 3's whole sample study: 3 seeds x 3 sizes x 3 densities, and local damping (hours).
-samples-study: build
-	reports/samples/run_samples.sh $(BUILD)/bin/dem results/samples
-	reports/samples/make_table.sh $(BUILD)/bin/dem results/samples > reports/samples/table.md
+# The sample study: the same at 1,000 spheres too, and the preparation protocol's free choices one
+# at a time (pipeline/studies/sweep.yaml), in one pipeline call; the tables table.md and sweep.md.
+samples-study: tools
+	$(BUILD)/bin/pipeline pipeline/studies/samples.yaml pipeline/studies/sweep.yaml --profile paper -j $(JOBS) $(if $(strip $(EXECUTOR)),--executor $(strip $(EXECUTOR)))
+	$(BUILD)/bin/pipeline pipeline/studies/samples.yaml --profile quick -j $(JOBS) $(if $(strip $(EXECUTOR)),--executor $(strip $(EXECUTOR)))
+	$(BUILD)/bin/figure-data samples-table results/samples/quick results/samples/paper --references reference_data/paper.yaml > reports/samples/table.md
+	$(BUILD)/bin/figure-data samples-table results/sweep/paper --references reference_data/paper.yaml --baseline base > reports/samples/sweep.md
 
-# The five cyclic tests (scenes/tests) on each full-size sample.
-cyclic-tests: samples
-	reports/samples/run_tests.sh $(BUILD)/bin/dem "dense medium loose"
+# The five cyclic tests on the full-size samples are the paper study's (make study); their table
+# (steps, wall time, tracking error, eps_v and CN at cycle ends) for one sample.
+cyclic-tests: study
+	reports/samples/tests_table.sh $(BUILD)/bin/dem $(RESULTS)/$(strip $(SAMPLE)) > reports/samples/tests.md
+
+# A result's XDMF view opened in ParaView (pvbatch; paraview and xvfb installed by the target, a
+# virtual display started if there is none) and its spheres rendered to a PNG the report shows
+# (about 20 s; not in make test: ParaView is a large install).
+RENDER ?= $(RESULTS)/$(strip $(SAMPLE))/dense_prepare.xdmf
+render:
+	reports/render/render.sh $(RENDER) reports/figures/render_dense_prepare.png "dense sample $(strip $(SAMPLE)), after isotropic compression"
 
 clean:
 	rm -rf $(BUILD)

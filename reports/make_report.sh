@@ -1,18 +1,38 @@
 #!/usr/bin/env bash
 # Writes the study report reports/index.md from a results folder, the validation output and the
-# figures. Usage: reports/make_report.sh [DEM] [RESULTS_DIR] [REPORT_DIR]
+# figures. Usage: [CONVERGENCE=DIR] reports/make_report.sh [BIN_DIR] [RESULTS_DIR] [REPORT_DIR]
+# BIN_DIR holds dem and figure-data (build/bin). Every setting the text quotes (time step, frictions,
+# lattice, stress path, ...) is read from the resolved scenes of the results (figure-data settings),
+# and the paper's values from reference_data/paper.yaml (figure-data samples-table).
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
-dem=${1:-$here/build/bin/dem}
+bin=${1:-$here/build/bin}
+dem=$bin/dem
 results=${2:-$here/results/study/paper}
 report=${3:-$here/reports}
+convergence=${CONVERGENCE:-$here/results/convergence/paper}
+decisions=${DECISIONS:-$here/results/decisions/paper}
+stability=${STABILITY:-$here/results/stability/paper}
+# settings KEY: a setting of the study's runs; conv KEY: of the convergence study's reference runs.
+study_settings=$("$bin/figure-data" settings "$results" 2> /dev/null || true)
+conv_settings=$("$bin/figure-data" settings "$convergence" --prefix reference_ 2> /dev/null || true)
+decisions_settings=$("$bin/figure-data" settings "$decisions" --prefix baseline_ 2> /dev/null || true)
+stability_settings=$("$bin/figure-data" settings "$stability" --run base 2> /dev/null || true)
+setting() { awk -F'\t' -v k="$1" '$1 == k { print $2 }' <<< "$study_settings"; }
+conv() { awk -F'\t' -v k="$1" '$1 == k { print $2 }' <<< "$conv_settings"; }
+decision() { awk -F'\t' -v k="$1" '$1 == k { print $2 }' <<< "$decisions_settings"; }
+stab() { awk -F'\t' -v k="$1" '$1 == k { print $2 }' <<< "$stability_settings"; }
+percent() { awk -v x="$1" 'BEGIN { if (x == "") print "?"; else printf "%g %%", 100 * x }'; }
+spheres() { awk -v n="$1" 'BEGIN { if (n == "") print "?"; else if (n >= 1000) printf "%d,%03d", n / 1000, n % 1000; else print n }'; }
+microseconds() { awk -v s="$1" 'BEGIN { if (s == "") print "?"; else printf "%g µs", s * 1e6 }'; }
+scaled() { awk -v x="$1" -v f="$2" -v u="$3" 'BEGIN { if (x == "") print "?"; else printf "%g %s", x / f, u }'; }   # scaled VALUE FACTOR UNIT
 shopt -s nullglob
 out=$report/index.md
 mkdir -p "$report"
 {
   echo "# cyclic-triax: reproduction of the seed paper's study"
   echo
-  echo "Generated on $(date -u +%Y-%m-%d) from \`$(realpath --relative-to="$here" "$results")\`${REPORT_NOTE:+ — $REPORT_NOTE}."
+  echo "Generated on $(date -u +%Y-%m-%d) from \`$(realpath -s --relative-to="$here" "$results")\`${REPORT_NOTE:+ — $REPORT_NOTE}."
   echo "Source: commit \`$(git -C "$here" rev-parse --short=12 HEAD 2>/dev/null || echo unknown)\`$(git -C "$here" diff --quiet HEAD -- . ':!reports' 2>/dev/null || echo ' (with uncommitted changes)'); engine: \`$("$dem" --version)\`."
   shopt -s globstar
   engines=$(for f in "$results"/**/*.h5; do [ -f "$f" ] || continue; h5dump -a software_version "$f" 2>/dev/null | sed -n 's/.*(0): "\(.*\)".*/\1/p'; done | sort | uniq -c | awk '{printf "%s%s (%d runs)", (NR > 1 ? ", " : ""), $2, $1}')
@@ -23,30 +43,27 @@ mkdir -p "$report"
   [ ${#samples[@]} -gt 0 ] || samples=("$results")
   mapfile -t samples < <(printf '%s\n' "${samples[@]}" | sort -V)
   first=${samples[0]}
-  scene() { echo "$first/../scenes/$(basename "$first")/$1.yaml"; }   # a resolved scene of the first sample
-  [ "$first" = "$results" ] && scene() { echo "$results/scenes/$1.yaml"; }
-  value() { sed -n "s/.*$1: *\([^,}]*\).*/\1/p" "$2" 2>/dev/null | head -1; }
   echo
   echo "## Verdicts"
   echo
   if [ -f "$report/verdicts.md" ]; then cat "$report/verdicts.md"; else echo "No validation output yet (\`build/bin/validate\`)."; fi
   echo
   echo "Readings of the paper's open choices used (SPEC §7; read from the resolved scenes of the first sample):"
-  echo "grading read by $( [ "$(value basis "$(scene loose_prepare)")" = mass ] && echo mass || echo count );"
-  echo "damping $(value form "$(scene loose_prepare)"), translational $(value translational "$(scene loose_prepare)");"
-  echo "hold until the unbalanced force ratio is below $(value unbalanced_force_ratio "$(scene loose_prepare)") and every principal stress within $(value stress_tolerance "$(scene loose_prepare)") of the target;"
-  echo "strain-rate cap while compressing $(value max_strain_rate "$(scene loose_prepare)") s⁻¹;"
-  echo "shearing friction $(for d in loose medium dense; do printf '%s %s, ' "$d" "$(value friction "$(scene ${d}_test1)")"; done | sed 's/, $//');"
-  echo "vertices at p = $(value mean_stress "$(scene loose_test1)") Pa with R = $(value stress_ratio "$(scene loose_test1)");"
-  echo "Test 3 visits $(sed -n 's/.*path: \[\(TC1, A, [A-Z0-9]*, A, [A-Z0-9]*\).*/\1/p' "$(scene loose_test3)" | head -1), …;"
+  echo "grading read by $(setting grading_basis);"
+  echo "damping $(setting damping_form), translational $(setting damping_translational);"
+  echo "hold until the unbalanced force ratio is below $(setting hold_unbalanced_force_ratio) and every principal stress within $(setting hold_stress_tolerance) of the target;"
+  echo "strain-rate cap while compressing $(setting max_strain_rate_per_s) s⁻¹;"
+  echo "shearing friction $(for d in loose medium dense; do printf '%s %s, ' "$d" "$(setting friction_shear_$d)"; done | sed 's/, $//');"
+  echo "vertices at p = $(scaled "$(setting mean_stress_Pa)" 1e3 kPa) with R = $(setting stress_ratio);"
+  echo "Test 3 visits $(setting test3_path | sed -n 's/.*\(TC1, A, [A-Z0-9]*, A, [A-Z0-9]*\).*/\1/p'), …;"
   echo "the cell is kept orthorhombic (its shear stresses are not controlled)."
   echo
   echo "## What the paper's open choices change"
   echo
   if [ -f "$report/decisions/table.md" ]; then
     echo "\`make decisions\` (\`pipeline/studies/decisions.yaml\`): each alternative reading of SPEC §7, one at a time from the"
-    echo "baseline, each on its own ensemble ($(awk -F'\t' '$1 == "baseline" && $3 == "-" { n[$9] = 1 } END { print length(n) }' "$here/results/decisions/paper/runs.tsv" 2>/dev/null || echo '?') samples"
-    echo "of 1,000 spheres; the cell side is scaled to 8,000 spheres). Every validation row is judged by the same rule as above."
+    echo "baseline, each on its own ensemble ($(awk -F'\t' '$1 == "baseline" && $3 == "-" { n[$9] = 1 } END { print length(n) }' "$decisions/runs.tsv" 2>/dev/null || echo '?') samples"
+    echo "of $(spheres "$(decision particles)") spheres; the cell side is scaled to 8,000 spheres). Every validation row is judged by the same rule as above."
     echo
     sed 's#](\(tornado[^)]*\))#](decisions/\1)#g' "$report/decisions/table.md"
   else
@@ -56,8 +73,10 @@ mkdir -p "$report"
   echo "## What was run"
   echo
   echo "${#samples[@]} sample(s) per density (seeds of the diameter sampler); each sample is prepared (SPEC §2: isotropic"
-  echo "compression of the 20×20×20 lattice to 100 kPa with the density's friction, 0.5 / 0.2 / 0) and sheared along the five"
-  echo "cyclic true-triaxial paths (SPEC §3). Per sample:"
+  echo "compression of the $(setting lattice) lattice ($(spheres "$(setting particles)") spheres) to $(setting target_pressure_kPa) kPa with the density's friction,"
+  echo "$(setting friction_prepare) for loose / medium / dense, Δt = $(microseconds "$(setting time_step_prepare_s)")) and sheared along the five cyclic"
+  echo "true-triaxial paths (SPEC §3; p = $(scaled "$(setting mean_stress_Pa)" 1e3 kPa), R = $(setting stress_ratio), $(scaled "$(setting stress_rate_Pa_per_s)" 1e6 MPa/s), shearing friction"
+  echo "$(setting friction_shear), Δt = $(microseconds "$(setting time_step_test_s)")). Per sample:"
   echo
   echo "| sample | runs | steps | wall time of the runs (s) |"
   echo "|---|---|---|---|"
@@ -78,20 +97,10 @@ mkdir -p "$report"
   echo
   echo "## The samples before shearing"
   echo
-  echo "| sample | e0 (paper) | cell side, cm (paper) | coordination number (paper) | without rattlers | sliding % | unbalanced force ratio |"
-  echo "|---|---|---|---|---|---|---|"
-  for dir in "${samples[@]}"; do for d in loose medium dense; do
-    f=$dir/${d}_prepare.h5
-    label="$d, $(basename "$dir")"
-    [ -f "$f" ] || { echo "| $label | not run | | | | | |"; continue; }
-    "$dem" summary "$f" | awk -F'\t' -v d="$d" -v label="$label" '
-      NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i }
-      NR == 2 { e["loose"] = 0.73; e["medium"] = 0.67; e["dense"] = 0.57; L["loose"] = 7.3; L["medium"] = 7.2; L["dense"] = 7.1
-                z["loose"] = 4.09; z["medium"] = 4.88; z["dense"] = 5.94
-                side = 100 * ($c["cell_length_1"] * $c["cell_length_2"] * $c["cell_length_3"]) ^ (1 / 3)
-                printf "| %s | %.3f (%.2f) | %.2f (%.1f) | %.2f (%.2f) | %.2f | %.1f | %.1e |\n", label, $c["void_ratio"], e[d], side, L[d],
-                  $c["coordination_number"], z[d], $c["coordination_number_mechanical"], 100 * $c["sliding_fraction"], $c["unbalanced_force_ratio"] }'
-  done; done
+  echo "Each sample's last row of its preparation, with the paper's value in brackets (\`reference_data/paper.yaml\`)"
+  echo "and the difference from it; the cell side is scaled to 8,000 spheres."
+  echo
+  "$bin/figure-data" samples-table "$results" --references "$here/reference_data/paper.yaml" --per-sample
   echo
   echo "## Validation against the paper"
   echo
@@ -125,6 +134,15 @@ mkdir -p "$report"
     echo
     echo "${note:-*No comparison with the paper written for this figure yet.*}"
   done
+  for png in "$report"/figures/render_*.png; do
+    echo
+    echo "### A sample in ParaView"
+    echo
+    echo "The XDMF view of a result (written beside every complete result) opened in ParaView by \`make render\`"
+    echo "(\`reports/render/render.sh\`, pvbatch): the spheres of the last frame at their own radius, coloured by it, axis 1 vertical."
+    echo
+    echo "![$(basename "$png" .png)](figures/$(basename "$png"))"
+  done
   echo
   echo "## Energy balance"
   echo
@@ -132,7 +150,7 @@ mkdir -p "$report"
   echo "motion and the energy the damping and the sliding contacts took (engine/README.md, \`Energy balance\`); below, the"
   echo "runs of sample $(basename "$first")."
   echo
-  "$here/reports/energy/energy.sh" "$dem" "$first" "$report" > /dev/null
+  "$here/reports/energy/energy.sh" "$report/figures" "$(setting max_energy_error)" > "$report/energy.md"
   cat "$report/energy.md"
   echo
   echo "![energy balance](figures/fig_energy.png)"
@@ -140,8 +158,8 @@ mkdir -p "$report"
   echo "## Convergence: error against run time"
   echo
   if [ -f "$report/convergence/table.md" ]; then
-    echo "\`pipeline/studies/convergence.yaml\` (issue 7): the loose sample and Test 1 (2 cycles) at the paper's settings"
-    echo "(8,000 spheres, Δt = 1 µs, 2 MPa/s) as the reference, and variants that change the time step (with their own"
+    echo "\`pipeline/studies/convergence.yaml\`: the loose sample and Test 1 (2 cycles) at the paper's settings"
+    echo "($(spheres "$(conv particles)") spheres, Δt = $(microseconds "$(conv time_step_test_s)"), $(scaled "$(conv stress_rate_Pa_per_s)" 1e6 MPa/s)) as the reference, and variants that change the time step (with their own"
     echo "preparation), the stress rate (test only) or the particle count, alone and together. Errors are relative to the"
     echo "reference; wall times are those of this machine while the study ran (\`reports/convergence/errors.dat\`)."
     echo
@@ -157,11 +175,11 @@ mkdir -p "$report"
   echo "## Stability"
   echo
   if [ -f "$report/stability/table.md" ]; then
-    echo "\`pipeline/studies/stability.yaml\` (issue 7): 216 spheres (\`scenes/stability/base.yaml\`: fast isotropic compression"
-    echo "to 100 kPa, then A → TC1 → A) with one setting pushed per case. A case either runs to the end (finite values; the"
+    echo "\`pipeline/studies/stability.yaml\`: $(spheres "$(stab particles)") spheres (\`scenes/stability/base.yaml\`: fast isotropic compression"
+    echo "to $(stab target_pressure_kPa) kPa, then A → TC1 → A) with one setting pushed per case. A case either runs to the end (finite values; the"
     echo "energy closure error is the largest over the rows once 1 % of the energy has come in, limit 1 %) or stops early"
-    echo "with the engine's message (its own energy guard stops a run above \`numerics.max_energy_error\` = 5 %); a time step"
-    echo "above 0.2 × critical runs once as written (refused) and once with \`numerics.max_time_step_fraction\` raised to 2 on"
+    echo "with the engine's message (its own energy guard stops a run above \`numerics.max_energy_error\` = $(percent "$(stab max_energy_error)")); a time step"
+    echo "above $(stab max_time_step_fraction) × critical runs once as written (refused) and once with \`numerics.max_time_step_fraction\` raised to 2 on"
     echo "purpose. ⚠ marks a case that does neither (\`reports/stability/table.md\`, \`build/bin/compare-runs stability\`)."
     echo
     cat "$report/stability/table.md"
@@ -181,7 +199,7 @@ mkdir -p "$report"
   echo
   echo "## Provenance"
   echo
-  echo "- Resolved scenes of every run: \`$(realpath --relative-to="$here" "$results")/scenes/\` (also inside each result, attribute \`scene_yaml\`)."
+  echo "- Resolved scenes of every run: \`$(realpath -s --relative-to="$here" "$results")/scenes/\` (also inside each result, attribute \`scene_yaml\`)."
   echo "- Libraries: $(for p in libeigen3-dev libhdf5-dev libyaml-cpp-dev catch2 gnuplot-nox; do printf '%s %s; ' "$p" "$(dpkg-query -W -f='${Version}' "$p" 2>/dev/null || echo '?')"; done)"
   echo "- Compiler: $(g++ --version | head -1); machine: $(nproc) cores."
 } > "$out"

@@ -23,6 +23,7 @@
 #include "io/atomic_file.hpp"
 #include "compare.hpp"
 #include "decisions.hpp"
+#include "figures.hpp"
 #include "format.hpp"
 #include "io/hdf5.hpp"
 #include "results.hpp"
@@ -80,11 +81,16 @@ void read_stop(const std::string& result, validation::CaseRun& run) {
   }
 }
 
-// Paths under the working folder (the repository, when make runs it) without that folder, so that
-// committed tables do not carry the machine's absolute paths.
-std::string relative_paths(std::string s) {
-  const std::string root = fs::current_path().string() + "/";
-  for (std::size_t at; (at = s.find(root)) != std::string::npos;) s.erase(at, root.size());
+// Paths under the working folder (the repository, when make runs it), or under the repository the
+// study ran in (the folder above the results' `results/`), without that folder, so that committed
+// tables do not carry the machine's absolute paths.
+std::string relative_paths(std::string s, const std::string& results = "") {
+  std::vector<std::string> roots = {fs::current_path().string() + "/"};
+  std::error_code ec;  // the real folder: a results/ that is a link to another checkout's names that one
+  const std::string abs = fs::weakly_canonical(fs::absolute(results), ec).string();
+  if (const auto at = abs.rfind("/results/"); !results.empty() && at != std::string::npos) roots.push_back(abs.substr(0, at + 1));
+  for (const std::string& root : roots)
+    for (std::size_t at; (at = s.find(root)) != std::string::npos;) s.erase(at, root.size());
   return s;
 }
 
@@ -127,7 +133,7 @@ std::string signed_fixed(double x) {
 // The decisions study (SPEC section 7): every validation row on every reading's ensemble, the
 // shift of the mean in baseline standard deviations, a tornado chart per group of rows, and the
 // reading that explains each inconsistent row. Writes table.md, decisions.json and, per group,
-// tornado_<group>.dat and .gp (gnuplot draws them into tornado_<group>.png).
+// tornado_<group>.dat and tornado_values.gp (reports/gnuplot/tornado.gp draws tornado_<group>.png).
 int decisions(const std::vector<ManifestLine>& manifest, const std::vector<std::string>& order, const std::string& references,
               const std::string& baseline, const std::string& ensemble, const std::string& out) {
   std::vector<validation::Row> rows;
@@ -190,6 +196,9 @@ int decisions(const std::vector<ManifestLine>& manifest, const std::vector<std::
      << (full.empty() ? std::string(".\n")
                       : std::string(" of the paper study's full-size ensemble with that shift of the mean applied to each of its "
                                     "samples; the baseline column gives this study's mean ± sd and the full-size ensemble's verdict.\n"));
+  validation::GnuplotValues gp_values;  // tornado_values.gp, read by reports/gnuplot/tornado.gp
+  gp_values.texts("tornado_reading", others);
+  std::string group_names;
   for (const std::string& g : groups) {
     md << "\n### " << g << "\n\n![tornado chart: " << g << "](tornado_" << file_safe(g) << ".png)\n\n| row | baseline: mean ± sd | ";
     for (const std::string& r : others) md << cell(r) << " | ";
@@ -215,36 +224,24 @@ int decisions(const std::vector<ManifestLine>& manifest, const std::vector<std::
         if (e.shift_sd && std::isfinite(*e.shift_sd))
           dat << i << '\t' << k << '\t' << *e.shift_sd << "\t\"" << of_group[i]->row.name << "\"\t" << e.reading << "\n";
       }
-    std::ofstream gp(fs::path(out) / ("tornado_" + file_safe(g) + ".gp"));
-    const double h = 0.8 / static_cast<double>(std::max<std::size_t>(others.size(), 1));
-    gp << "# Tornado chart of the group '" << g << "' (written by compare-runs decisions)\n"
-       << "set terminal pngcairo size 1400," << 220 + 34 * of_group.size() * std::max<std::size_t>(1, others.size() / 3)
-       << " font 'Sans,10'\nset output 'tornado_" << file_safe(g) << ".png'\n"
-       << "set title \"" << g << ": shift of the ensemble mean by each reading (baseline standard deviations)\"\n"
-       << "set termoption noenhanced\n"
-       << "set xlabel 'shift of the mean / baseline standard deviation (bars beyond ±10 are cut and labelled with their value)'\n"
-       << "set grid xtics\nset key outside right\nset xrange [-11:11]\nclip(x) = x > 10 ? 10 : x < -10 ? -10 : x\n"
-       << "set yrange [-0.6:" << of_group.size() - 0.4 << "]\n";
-    // The row names as labels, not tic labels: a tic label is a format (its '%' would need
-    // doubling, and gnuplot cut long ones short).
+    // What the static script (reports/gnuplot/tornado.gp) needs of this group: its title, the row
+    // names as labels (not tic labels: a tic label is a format, whose '%' would need doubling, and
+    // gnuplot cut long ones short), the left margin they take and the chart's height.
     std::size_t longest = 0;
-    for (std::size_t i = 0; i < of_group.size(); ++i) {
-      std::string label = of_group[i]->row.name;
+    const std::string key = "tornado_" + file_safe(g);
+    gp_values.text(key + "_title", g);
+    std::vector<std::string> labels;
+    for (const validation::RowDecision* d : of_group) {
+      std::string label = d->row.name;
       for (char& c : label)
         if (c == '"') c = '\'';
       longest = std::max(longest, label.size());
-      gp << "set label " << i + 1 << " \"" << label << "\" at graph -0.01, first " << i << " right\n";
+      labels.push_back(label);
     }
-    gp << "set lmargin " << longest * 9 / 10 + 2 << "\nset ytics (";
-    for (std::size_t i = 0; i < of_group.size(); ++i) gp << (i ? ", " : "") << "\"\" " << i;
-    gp << ")\nset style fill solid 0.8 noborder\nset arrow from 0, graph 0 to 0, graph 1 nohead lc rgb 'black'\nplot ";
-    for (std::size_t k = 0; k < others.size(); ++k)
-      gp << (k ? ", \\\n     " : "") << "'tornado_" << file_safe(g) << ".dat' using ($2 == " << k << " ? clip($3) / 2 : 1/0):($1 + "
-         << (static_cast<double>(k) - (static_cast<double>(others.size()) - 1) / 2) * h << "):(abs(clip($3)) / 2):(" << h / 2
-         << ") with boxxyerror lc " << k + 1 << " title '" << others[k] << "'";
-    // The value of a cut bar, written at its end.
-    gp << ", \\\n     'tornado_" << file_safe(g) << ".dat' using (abs($3) > 10 ? clip($3) * 0.93 : 1/0):($1 + "
-       << "($2 - " << (static_cast<double>(others.size()) - 1) / 2 << ") * " << h << "):(sprintf('%+.0f', $3)) with labels font ',8' notitle\n";
+    gp_values.texts(key + "_row", labels);
+    gp_values.number(key + "_lmargin", static_cast<double>(longest * 9 / 10 + 2));
+    gp_values.number(key + "_height", static_cast<double>(220 + 34 * of_group.size() * std::max<std::size_t>(1, others.size() / 3)));
+    group_names += (group_names.empty() ? "" : " ") + file_safe(g);
     for (auto it = of_group.rbegin(); it != of_group.rend(); ++it) {
       const validation::RowDecision& d = **it;
       md << "| " << cell(d.row.name) << " | "
@@ -256,6 +253,10 @@ int decisions(const std::vector<ManifestLine>& manifest, const std::vector<std::
       md << cell(d.explanation) << " |\n";
     }
   }
+  gp_values.text("tornado_groups", group_names);
+  dem::write_file_atomically((fs::path(out) / "tornado_values.gp").string(),
+                             gp_values.text_file("Written by compare-runs decisions: what reports/gnuplot/tornado.gp draws, one chart "
+                                                 "per group from tornado_<group>.dat"));
   // The size check: the baseline of this study against the paper study's ensemble (its own
   // sample size), row by row, in units of the paper ensemble's standard deviation.
   if (!ensemble.empty()) {
@@ -365,7 +366,7 @@ int main(int argc, char** argv) {
           o.message = o.message.substr(at + 7);
         bad += !o.acceptable;
         const std::string name = l.test == "-" ? v : v + " " + l.test;
-        md << "| " << cell(name) << " | " << cell(relative_paths(l.settings)) << " | " << (o.acceptable ? "" : "⚠ ") << o.outcome << " | "
+        md << "| " << cell(name) << " | " << cell(relative_paths(l.settings, results)) << " | " << (o.acceptable ? "" : "⚠ ") << o.outcome << " | "
            << o.steps << " | " << (o.closure ? percent(*o.closure) : "—") << " | " << cell(o.message) << " |\n";
       }
     }
@@ -442,6 +443,20 @@ int main(int argc, char** argv) {
       dat << r.variant << '\t' << r.wall << '\t' << r.largest << '\t' << (front[k] ? 1 : 0);
       for (const auto& [name, v] : ref_q) dat << '\t' << r.errors.at(name);
       dat << "\n";
+    }
+    // front.dat: the same lines of the Pareto front but the reference (error 0, off a log axis),
+    // in order of wall time, for the figure's line (reports/gnuplot/convergence_error_vs_time.gp).
+    std::vector<std::size_t> on_front;
+    for (std::size_t k = 0; k < points.size(); ++k)
+      if (front[k] && points[k].error > 0) on_front.push_back(k);
+    std::sort(on_front.begin(), on_front.end(), [&](std::size_t a, std::size_t b) { return points[a].cost < points[b].cost; });
+    std::ofstream fr(fs::path(out) / "front.dat");
+    fr << "# the Pareto front of errors.dat without the reference, by wall time; columns as errors.dat\n";
+    for (std::size_t k : on_front) {
+      const Row& r = rows[point_row[k]];
+      fr << r.variant << '\t' << r.wall << '\t' << r.largest << "\t1";
+      for (const auto& [name, v] : ref_q) fr << '\t' << r.errors.at(name);
+      fr << "\n";
     }
   }
   std::ofstream md(fs::path(out) / "table.md");

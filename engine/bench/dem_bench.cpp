@@ -105,7 +105,7 @@ std::string packing_for(const std::string& dir, double friction) {
   text.replace(text.find("FRICTION"), 8, friction > 0 ? "0.5" : "0.0");
   std::fprintf(stderr, "dem-bench: building the 8,000-sphere packing (mu = %g, 100 kPa) once -> %s\n", friction,
                path.c_str());
-  const auto s = dem::run_scene(dem::scene_from_text(text, dir + "/bench_packing.yaml"), path, false);
+  const auto s = dem::run_scene(dem::scene_from_text(text, dir + "/bench_packing.yaml"), path);
   std::fprintf(stderr, "dem-bench: packing built in %lld steps, %.1f s\n", static_cast<long long>(s.steps), s.wall_time_s);
   return path;
 }

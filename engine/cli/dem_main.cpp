@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -20,12 +21,13 @@
 
 #include "config/scene_config.hpp"
 #include "config/yaml_section.hpp"
+#include "analysis/legs.hpp"
 #include "analysis/time_series.hpp"
 #include "io/hdf5.hpp"
 #include "io/result_writer.hpp"  // describe_failure
 #include "io/state_io.hpp"
 #include "run/output_path.hpp"
-#include "run/run_scene.hpp"  // leg_columns
+#include "run/run_scene.hpp"
 #include "source_hash.hpp"
 #include "version.hpp"
 
@@ -61,6 +63,43 @@ const char* usage =
     ".tmp or .xdmf, nor name a non-regular file (device, folder, FIFO, link) or a file the scene\n"
     "reads. Exit status: 0 success, 1 run failed (the reason on stderr and in the status of\n"
     "RESULT.h5.partial), 2 bad input (nothing written).\n";
+
+// The terminal's progress line of a run (`dem run` on a terminal, without --quiet): at most every
+// 0.5 s, with the time left in the stage from its progress so far. Warnings and notes start on a
+// line of their own.
+class ProgressLine {
+ public:
+  void draw(const dem::RunProgress& p) {
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last_ < std::chrono::milliseconds(500)) return;
+    last_ = now;
+    drawn_ = true;
+    std::fprintf(stderr, "\r\033[K[%s %d/%d '%s'] step %lld, t = %.4g s", p.scene.c_str(), p.stage + 1, p.stages,
+                 p.stage_name.c_str(), static_cast<long long>(p.step), p.time_s);
+    if (p.stage_fraction > 0) {
+      if (stage_seen_ != p.stage) stage_seen_ = p.stage, stage_start_s_ = p.elapsed_s;
+      const double stage_elapsed = p.elapsed_s - stage_start_s_;
+      std::fprintf(stderr, ", %.0f %% of stage, ETA %.0f s", 100 * p.stage_fraction,
+                   stage_elapsed * (1 - p.stage_fraction) / p.stage_fraction);
+    }
+    if (!p.status.empty()) std::fprintf(stderr, ", %s", p.status.c_str());
+    std::fflush(stderr);
+  }
+  void new_line() {  // before a message: the line drawn so far stays
+    if (drawn_) std::fprintf(stderr, "\n");
+    drawn_ = false;
+  }
+  void clear() {  // at the end of the run: the line goes
+    if (drawn_) std::fprintf(stderr, "\r\033[K");
+    drawn_ = false;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+  bool drawn_ = false;
+  int stage_seen_ = -1;       // for the ETA: the stage being timed and when it started
+  double stage_start_s_ = 0;  // [s since the run started]
+};
 
 int run(int argc, char** argv) {
   std::string scene_file, out;
@@ -143,8 +182,25 @@ int run(int argc, char** argv) {
   }
   omp_set_num_threads(threads);
   try {
-    const bool progress = !quiet && isatty(STDERR_FILENO);
-    const dem::RunSummary s = dem::run_scene(scene, out, progress, input_hash, resume);
+    ProgressLine line;
+    dem::RunObserver observer;
+    if (!quiet && isatty(STDERR_FILENO)) observer.progress = [&](const dem::RunProgress& p) { line.draw(p); };
+    observer.warning = [&](const std::string& w) {
+      line.new_line();
+      std::fprintf(stderr, "warning: %s\n", w.c_str());
+    };
+    observer.note = [&](const std::string& n) {
+      line.new_line();
+      std::fprintf(stderr, "%s\n", n.c_str());
+    };
+    dem::RunSummary s;
+    try {
+      s = dem::run_scene(scene, out, observer, input_hash, resume);
+    } catch (...) {
+      line.new_line();
+      throw;
+    }
+    line.clear();
     std::fprintf(stderr, "%s: %lld steps in %.1f s (%.3g steps/s) -> %s\n", scene.name.c_str(),
                  static_cast<long long>(s.steps), s.wall_time_s, static_cast<double>(s.steps) / s.wall_time_s, out.c_str());
     unlink(lock_path.c_str());  // still held: a run waiting for it would find the result complete

@@ -4,10 +4,10 @@
 #include <filesystem>
 #include <new>
 
+#include "analysis/legs.hpp"
 #include "io/atomic_file.hpp"
 #include "io/state_io.hpp"
 #include "io/xdmf.hpp"
-#include "run/run_scene.hpp"
 #include "version.hpp"
 
 namespace dem {
@@ -127,7 +127,7 @@ void ResultWriter::close() {
   closed_cleanly_ = true;
 }
 
-void ResultWriter::complete(double wall_time_s) {
+std::string ResultWriter::complete(double wall_time_s) {
   write_pending();
   h5::set_attribute(file_, "wall_time_s", wall_time_s);
   h5::set_attribute(file_, "status", std::string("complete"));
@@ -148,12 +148,13 @@ void ResultWriter::complete(double wall_time_s) {
   done_ = true;
   // The XDMF is a convenience view of a result that is already complete: failing to write it is
   // reported but does not fail the run.
-  if (!has_frames) return;
+  if (!has_frames) return "";
   try {
     write_xdmf(out_);
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "warning: %s: no XDMF file written: %s\n", xdmf.c_str(), e.what());
+    return xdmf + ": no XDMF file written: " + e.what();
   }
+  return "";
 }
 
 void ResultWriter::fail(const std::string& reason) noexcept {

@@ -59,7 +59,8 @@ class ResultWriter {
   void append_frame(const Simulation& sim);
   // Marks the file complete, closes it, fsyncs it and moves it to its final name; throws
   // (h5::Error, std::runtime_error) with the reason if any of that fails, leaving <out>.partial.
-  void complete(double wall_time_s);
+  // Returns a warning for the caller to report if the XDMF view could not be written ("" if it was).
+  std::string complete(double wall_time_s);
   // Marks the partial file "failed: <reason>" (best effort; never throws).
   void fail(const std::string& reason) noexcept;
   const std::string& partial_path() const { return partial_; }

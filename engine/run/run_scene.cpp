@@ -240,32 +240,6 @@ void run_stress_path_stage(Simulation& sim, const SceneConfig& scene, int index,
 
 }  // namespace
 
-const std::vector<SeriesColumn>& leg_columns() {
-  static const std::vector<SeriesColumn> columns = {
-      {"stage", "1", "stage index"},
-      {"leg", "1", "leg index from 0"},
-      {"cycle", "1", "cycle of the leg (0 before the first cycle)"},
-      {"ends_cycle", "1", "1 if the leg is the last of its cycle"},
-      {"target_1", "Pa", "principal stress the leg ends at"},
-      {"target_2", "Pa", ""},
-      {"target_3", "Pa", ""},
-      {"duration", "s", "leg duration"},
-      {"steps", "1", ""},
-      {"end_step", "1", "step at which the leg ended"},
-      {"rms_error_1", "1", "RMS of (stress_11 - target) over the leg, divided by p"},
-      {"rms_error_2", "1", ""},
-      {"rms_error_3", "1", ""},
-      {"max_inertial_number", "1", "largest inertial number during the leg"},
-  };
-  return columns;
-}
-
-std::vector<double> leg_row(const LegRecord& r) {
-  return {static_cast<double>(r.stage), static_cast<double>(r.leg), static_cast<double>(r.cycle), r.ends_cycle ? 1.0 : 0.0,
-          r.target_Pa[0], r.target_Pa[1], r.target_Pa[2], r.duration_s, static_cast<double>(r.steps),
-          static_cast<double>(r.end_step), r.rms_error[0], r.rms_error[1], r.rms_error[2], r.max_inertial_number};
-}
-
 void run_stage(Simulation& sim, const SceneConfig& scene, int index, const StageHooks& hooks, const StageCursor* resume) {
   const StageConfig& st = scene.stages[static_cast<std::size_t>(index)];
   if (!resume) {  // a resumed stage has had its start
@@ -284,7 +258,7 @@ namespace {
 
 // The checkpoint this run continues from, if any (see Resume).
 std::optional<Checkpoint> checkpoint_to_resume(const SceneConfig& scene, const std::string& out_path,
-                                               const std::string& identity, Resume resume) {
+                                               const std::string& identity, Resume resume, const RunObserver& observer) {
   const std::string path = checkpoint_path(out_path);
   if (resume == Resume::Never) return std::nullopt;
   if (!std::filesystem::exists(path)) {
@@ -301,7 +275,7 @@ std::optional<Checkpoint> checkpoint_to_resume(const SceneConfig& scene, const s
     return c;
   } catch (const h5::Error& e) {
     if (resume == Resume::Always) throw ConfigError(std::string("cannot resume: ") + e.what());
-    std::fprintf(stderr, "warning: not resuming: %s; starting from the beginning\n", e.what());
+    if (observer.warning) observer.warning(std::string("not resuming: ") + e.what() + "; starting from the beginning");
     return std::nullopt;
   }
 }
@@ -309,12 +283,9 @@ std::optional<Checkpoint> checkpoint_to_resume(const SceneConfig& scene, const s
 // The stages of a run whose result file `out` is open, from the start or from checkpoint `from`;
 // completes the result. Throws whatever stops the run (the caller marks the result failed).
 RunSummary run_stages(Simulation& sim, const SceneConfig& scene, const Checkpoint* from, const std::string& out_path,
-                      const std::string& identity, bool show_progress, std::chrono::steady_clock::time_point start,
+                      const std::string& identity, const RunObserver& observer, std::chrono::steady_clock::time_point start,
                       ResultWriter& out) {
   using clock = std::chrono::steady_clock;
-  auto last_print = start;
-  int stage_seen = -1;          // for the ETA: the stage being timed and when it started
-  double stage_start_wall = 0;  // [s since the run started]
   StageHooks hooks;
   // Rows are where the energy balance is looked at: a run whose balance no longer closes (an
   // unstable or too coarse time step) stops, after the row that shows it is written.
@@ -352,27 +323,22 @@ RunSummary run_stages(Simulation& sim, const SceneConfig& scene, const Checkpoin
     last_checkpoint_wall = clock::now();
   };
   hooks.warning = [&](const std::string& w) {
-    if (show_progress) std::fprintf(stderr, "\n");
-    std::fprintf(stderr, "warning: %s\n", w.c_str());
+    if (observer.warning) observer.warning(w);
     out.add_warning(w);
   };
-  if (show_progress)
+  if (observer.progress)
     hooks.progress = [&](const Simulation& s, const StageProgress& pr) {
-      const auto now = clock::now();
-      if (now - last_print < std::chrono::milliseconds(500)) return;
-      last_print = now;
-      const double elapsed = std::chrono::duration<double>(now - start).count();
-      std::fprintf(stderr, "\r\033[K[%s %d/%zu '%s'] step %lld, t = %.4g s", scene.name.c_str(), pr.stage + 1,
-                   scene.stages.size(), scene.stages[static_cast<std::size_t>(pr.stage)].name.c_str(),
-                   static_cast<long long>(s.step_count()), s.time());
-      if (pr.fraction > 0) {
-        // Time left in this stage, from its progress so far.
-        if (stage_seen != pr.stage) stage_seen = pr.stage, stage_start_wall = elapsed;
-        const double stage_elapsed = elapsed - stage_start_wall;
-        std::fprintf(stderr, ", %.0f %% of stage, ETA %.0f s", 100 * pr.fraction, stage_elapsed * (1 - pr.fraction) / pr.fraction);
-      }
-      if (!pr.status.empty()) std::fprintf(stderr, ", %s", pr.status.c_str());
-      std::fflush(stderr);
+      RunProgress r;
+      r.scene = scene.name;
+      r.stage = pr.stage;
+      r.stages = static_cast<int>(scene.stages.size());
+      r.stage_name = scene.stages[static_cast<std::size_t>(pr.stage)].name;
+      r.step = s.step_count();
+      r.time_s = s.time();
+      r.elapsed_s = std::chrono::duration<double>(clock::now() - start).count();
+      r.stage_fraction = pr.fraction;
+      r.status = pr.status;
+      observer.progress(r);
     };
   const int first = from ? from->cursor.stage : 0;
   for (int i = first; i < static_cast<int>(scene.stages.size()); ++i)
@@ -380,23 +346,23 @@ RunSummary run_stages(Simulation& sim, const SceneConfig& scene, const Checkpoin
   out.append_frame(sim);
   out.write_state(sim);
   const double wall = std::chrono::duration<double>(clock::now() - start).count();
-  out.complete(wall);
+  const std::string view_warning = out.complete(wall);
+  if (!view_warning.empty() && observer.warning) observer.warning(view_warning);
   std::error_code gone;  // the result supersedes the checkpoint (a stale one would only be resumed to the same end)
-  if (std::filesystem::remove(checkpoint_path(out_path), gone); gone)
-    std::fprintf(stderr, "warning: %s: not removed: %s\n", checkpoint_path(out_path).c_str(), gone.message().c_str());
-  if (show_progress) std::fprintf(stderr, "\r\033[K");
+  if (std::filesystem::remove(checkpoint_path(out_path), gone); gone && observer.warning)
+    observer.warning(checkpoint_path(out_path) + ": not removed: " + gone.message());
   return {sim.step_count(), wall};
 }
 
 }  // namespace
 
-RunSummary run_scene(const SceneConfig& scene, const std::string& out_path, bool show_progress,
+RunSummary run_scene(const SceneConfig& scene, const std::string& out_path, const RunObserver& observer,
                      const std::string& input_hash, Resume resume) {
   using clock = std::chrono::steady_clock;
   auto start = clock::now();
   Simulation sim = build_simulation(scene);  // all input checks happen before the output file exists
   const std::string identity = run_identity(scene, input_hash);
-  std::optional<Checkpoint> from = checkpoint_to_resume(scene, out_path, identity, resume);
+  std::optional<Checkpoint> from = checkpoint_to_resume(scene, out_path, identity, resume, observer);
   std::unique_ptr<ResultWriter> writer;
   // From here on every failure, whatever it is (a stage, a full disk, memory), is written into the
   // partial result's status with its reason before it goes on to the caller.
@@ -405,16 +371,15 @@ RunSummary run_scene(const SceneConfig& scene, const std::string& out_path, bool
       writer = std::make_unique<ResultWriter>(out_path, scene, checkpoint_path(out_path));
       sim = restore_simulation(scene, *from);
       start -= std::chrono::duration_cast<clock::duration>(std::chrono::duration<double>(from->wall_time_s));
-      std::fprintf(stderr, "%s: resuming from %s at step %lld\n", scene.name.c_str(), checkpoint_path(out_path).c_str(),
-                   static_cast<long long>(sim.step_count()));
+      if (observer.note)
+        observer.note(scene.name + ": resuming from " + checkpoint_path(out_path) + " at step " + std::to_string(sim.step_count()));
     } else {
       writer = std::make_unique<ResultWriter>(out_path, scene);
       if (!input_hash.empty()) writer->set_attribute("input_hash", input_hash);
       writer->append_frame(sim);  // particle frames: the start, each checkpoint and the end of the run
     }
-    return run_stages(sim, scene, from ? &*from : nullptr, out_path, identity, show_progress, start, *writer);
+    return run_stages(sim, scene, from ? &*from : nullptr, out_path, identity, observer, start, *writer);
   } catch (const std::exception& e) {
-    if (show_progress) std::fprintf(stderr, "\n");
     if (writer) writer->fail(describe_failure(e));
     throw;
   }

@@ -3,6 +3,7 @@
 #include <functional>
 #include <string>
 
+#include "analysis/legs.hpp"  // LegRecord
 #include "analysis/time_series.hpp"
 #include "config/scene_config.hpp"
 #include "dynamics/simulation.hpp"
@@ -18,19 +19,6 @@ struct StageProgress {
   double fraction = -1;  // of the stage, in [0, 1]; < 0 while holding for equilibrium (unknown end)
   std::string status;    // e.g. the current stress error while holding
 };
-
-// What a stress-path stage records about each leg.
-struct LegRecord {
-  int stage = 0, leg = 0, cycle = 0;
-  bool ends_cycle = false;
-  Vec3 target_Pa = Vec3::Zero();  // the state the leg ends at
-  double duration_s = 0;
-  std::int64_t steps = 0, end_step = 0;
-  Vec3 rms_error = Vec3::Zero();  // RMS of (sigma_kk - target_k) over the leg's steps, divided by p
-  double max_inertial_number = 0;
-};
-const std::vector<SeriesColumn>& leg_columns();
-std::vector<double> leg_row(const LegRecord& r);
 
 // Where a run is inside a stage, with what the stage's loop carries from one step to the next:
 // enough to continue the stage from the middle, bit for bit (run/checkpoint.hpp saves it).
@@ -95,14 +83,30 @@ enum class Resume {
   Never,    // start over (the checkpoint is replaced by this run's first one)
 };
 
+// What a run reports while it goes on. The library prints nothing: the `dem` command (cli/) draws
+// the terminal progress line and prints the warnings and notes. Any member may be empty.
+struct RunProgress {
+  std::string scene, stage_name;
+  int stage = 0, stages = 0;     // stage index (from 0) and the scene's number of stages
+  std::int64_t step = 0;
+  double time_s = 0;             // simulated time
+  double elapsed_s = 0;          // wall time since the run started (a resumed run counts its earlier time)
+  double stage_fraction = -1;    // of the stage, in [0, 1]; < 0 while holding for equilibrium (unknown end)
+  std::string status;            // e.g. the current stress error while holding
+};
+struct RunObserver {
+  std::function<void(const RunProgress&)> progress;  // every 256 steps
+  std::function<void(const std::string&)> warning;   // e.g. inertial number above 1e-3 (also kept in the result)
+  std::function<void(const std::string&)> note;      // about the checkpoint: resuming from it, or why not
+};
+
 // Runs a whole scene and writes the result file (see io/result_writer.hpp for the guarantees),
 // with checkpoints as output.checkpoint_* ask. `input_hash` (if not empty) is recorded in the
-// result's `input_hash` attribute and is part of the checkpoint identity. Messages about the
-// checkpoint go to stderr. On success the checkpoint is removed.
+// result's `input_hash` attribute and is part of the checkpoint identity. Progress, warnings and
+// notes about the checkpoint go to `observer`. On success the checkpoint is removed.
 // Any failure after the result file exists is written into <out>.partial's status as
 // "failed: " + describe_failure(e) (io/result_writer.hpp) before the exception goes on.
-RunSummary run_scene(const SceneConfig& scene, const std::string& out_path, bool show_progress,
+RunSummary run_scene(const SceneConfig& scene, const std::string& out_path, const RunObserver& observer = {},
                      const std::string& input_hash = "", Resume resume = Resume::IfValid);
-
 
 }  // namespace dem

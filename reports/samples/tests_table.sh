@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
-# Issue 4: one line per cyclic test result: steps, wall time, worst tracking error, largest
+# One line per cyclic test result of one sample: steps, wall time, worst tracking error, largest
 # inertial number, and volumetric strain and coordination number at the end of cycles 1 and 5
 # (cycles 1 and 30 for Test 5). Usage: reports/samples/tests_table.sh [DEM] [DIR] > table.md
 set -euo pipefail
 here=$(cd "$(dirname "$0")/../.." && pwd)
 dem=${1:-$here/build/bin/dem}
-dir=${2:-$here/results/tests}
+dir=${2:-$here/results/study/paper/seed1}
 echo "| sample | test | steps | wall time (s) | worst leg RMS tracking error (% of p) | largest inertial number | εv cycle 1 (%) | εv cycle 5/30 (%) | CN cycle 0 | CN cycle 1 | CN cycle 5/30 |"
 echo "|---|---|---|---|---|---|---|---|---|---|---|"
 for d in loose medium dense; do

@@ -433,7 +433,7 @@ std::string compressed_sample(const std::string& name) {
       "  - {name: compress, type: stress, target: [1.0e5, 1.0e5, 1.0e5], rate: 1.0e7, max_strain_rate: 5.0,\n"
       "     hold: {stress_tolerance: 0.005, unbalanced_force_ratio: 1.0e-2, max_duration: 2.0}}\n";
   const std::string file = dir + "/sample.h5";
-  run_scene(scene_from_text(scene, dir + "/sample.yaml"), file, false);
+  run_scene(scene_from_text(scene, dir + "/sample.yaml"), file);
   return file;
 }
 
@@ -480,7 +480,7 @@ TEST_CASE("stress path run: legs, cycles, leg and cycle ends, and p held at the 
   CHECK(rows_of_rest == 2);  // start (step 0) and end (step 1, not an output step)
   run_stage(sim, scene, 1, hooks);
   // ... and the same run through run_scene, into a result file.
-  run_scene(scene, dir + "/path.h5", false);
+  run_scene(scene, dir + "/path.h5");
 
   // Expected legs: targets, cycles, cycle ends; steps = the duration in whole steps.
   const std::vector<std::string> to = {"TC1", "A", "TC1", "A", "TC1"};

@@ -122,7 +122,7 @@ TEST_CASE("Energy balance: a run whose balance no longer closes stops with the r
   const std::string out = test::scratch_dir("energy_guard") + "/r.h5";
   std::string message;
   try {
-    run_scene(sc, out, false);
+    run_scene(sc, out);
   } catch (const StageError& e) {
     message = e.what();
   }
@@ -136,7 +136,7 @@ TEST_CASE("Energy balance: a run whose balance no longer closes stops with the r
   // The same scene at 1 us (0.08 x critical) closes and completes.
   SceneConfig fine = scene(1e-6, 0.5, 0.05);
   fine.output.interval_steps = 100;
-  REQUIRE_NOTHROW(run_scene(fine, out, false));
+  REQUIRE_NOTHROW(run_scene(fine, out));
   CHECK(test::h5_status(out) == "complete");
 }
 

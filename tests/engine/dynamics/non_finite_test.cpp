@@ -42,7 +42,7 @@ TEST_CASE("a run whose values become non-finite stops with an error naming the s
   fs::remove(out);
   fs::remove(out + ".partial");
   try {
-    dem::run_scene(scene, out, false);
+    dem::run_scene(scene, out);
     FAIL("the unstable run finished");
   } catch (const dem::NonFiniteError& e) {
     const std::string what = e.what();

@@ -71,7 +71,7 @@ TEST_CASE("a result holds H5MD particle frames at the start and end of the run, 
   }
   const std::string dir = test::scratch_dir("h5md_complete");
   const SceneConfig scene = scene_from_text(test::tiny_scene(squeeze_stage), dir + "/s.yaml");
-  run_scene(scene, dir + "/r.h5", false);
+  run_scene(scene, dir + "/r.h5");
   const std::size_t n = 27;
 
   SECTION("h5ls sees the H5MD layout: two frames of N x 3, shared step and time, the box") {
@@ -171,7 +171,7 @@ TEST_CASE("a failed run leaves no XDMF, and its partial result holds only the fr
   const std::string stage =
       "  - {name: consolidate, type: stress, target: [1.0e5, 1.0e5, 1.0e5], rate: 1.0e6, hold: {max_duration: 1.0e-5}}\n";
   const SceneConfig bad = scene_from_text(test::tiny_scene(stage), dir + "/bad.yaml");
-  CHECK_THROWS_AS(run_scene(bad, dir + "/r.h5", false), StageError);
+  CHECK_THROWS_AS(run_scene(bad, dir + "/r.h5"), StageError);
   CHECK_FALSE(fs::exists(dir + "/r.xdmf"));
   CHECK_FALSE(fs::exists(dir + "/r.xdmf.tmp"));
   h5::Handle f = h5::open_file_read(dir + "/r.h5.partial");
@@ -195,9 +195,9 @@ TEST_CASE("a complete run replaces the XDMF of an earlier result, a failed one l
   const SceneConfig bad = scene_from_text(
       test::tiny_scene("  - {name: c, type: stress, target: [1.0e5, 1.0e5, 1.0e5], rate: 1.0e6, hold: {max_duration: 1.0e-5}}\n"),
       dir + "/bad.yaml");
-  CHECK_THROWS_AS(run_scene(bad, dir + "/r.h5", false), StageError);
+  CHECK_THROWS_AS(run_scene(bad, dir + "/r.h5"), StageError);
   CHECK(test::read_bytes(dir + "/r.xdmf") == stale);
   // A complete run replaces both.
-  run_scene(scene_from_text(test::tiny_scene(squeeze_stage), dir + "/s.yaml"), dir + "/r.h5", false);
+  run_scene(scene_from_text(test::tiny_scene(squeeze_stage), dir + "/s.yaml"), dir + "/r.h5");
   CHECK(count(test::read_bytes(dir + "/r.xdmf"), "<Time Value=") == 2);
 }

@@ -70,7 +70,7 @@ TEST_CASE("a complete run writes a complete, self-describing result file", "[io]
   const std::string dir = test::scratch_dir("result_complete");
   const std::string out = dir + "/tiny.h5";
   const SceneConfig scene = scene_from_text(dense_tiny_scene(), dir + "/tiny.yaml");
-  const RunSummary summary = run_scene(scene, out, false);
+  const RunSummary summary = run_scene(scene, out);
   CHECK(summary.steps == 500);  // duration / dt
 
   // Renamed on completion: only the final name exists.
@@ -163,7 +163,7 @@ TEST_CASE("a frictionless run's state has no tangential springs", "[io][result]"
   // springs and sliding flags are written for frictional runs only).
   const std::string dir = test::scratch_dir("result_frictionless");
   const SceneConfig scene = scene_from_text(test::tiny_scene(squeeze_stage, "{kn: 1.0e6, ks: 0, friction: 0}"), dir + "/s.yaml");
-  run_scene(scene, dir + "/r.h5", false);
+  run_scene(scene, dir + "/r.h5");
   h5::Handle f = h5::open_file_read(dir + "/r.h5");
   h5::Handle g = h5::open_group(f, "state");
   CHECK(h5::exists(g, "contact_first"));
@@ -179,7 +179,7 @@ TEST_CASE("a frictional run without any neighbour pair still writes its (empty) 
   const std::string dir = test::scratch_dir("result_friction_no_pairs");
   const SceneConfig scene = scene_from_text(test::tiny_scene(squeeze_stage), dir + "/s.yaml");
   REQUIRE(has_tangential(scene.material.law));
-  run_scene(scene, dir + "/r.h5", false);
+  run_scene(scene, dir + "/r.h5");
   {
     h5::Handle f = h5::open_file_read(dir + "/r.h5");
     h5::Handle g = h5::open_group(f, "state");
@@ -202,7 +202,7 @@ TEST_CASE("h5ls lists the time series and the state of a result file", "[io][res
   }
   const std::string dir = test::scratch_dir("result_h5ls");
   const SceneConfig scene = scene_from_text(test::tiny_scene(squeeze_stage), dir + "/s.yaml");
-  run_scene(scene, dir + "/r.h5", false);
+  run_scene(scene, dir + "/r.h5");
   const test::CommandResult r = test::run_command("h5ls -r '" + dir + "/r.h5' 2>&1");
   INFO(r.out);
   REQUIRE(r.exit_code == 0);
@@ -227,7 +227,7 @@ TEST_CASE("a failed run keeps only the .partial file, marked failed, and leaves 
   const SceneConfig bad = scene_from_text(test::tiny_scene(hopeless_stage), dir + "/bad.yaml");
 
   SECTION("no earlier result") {
-    CHECK_THROWS_AS(run_scene(bad, out, false), StageError);
+    CHECK_THROWS_AS(run_scene(bad, out), StageError);
     CHECK_FALSE(fs::exists(out));  // a failed run never gets the final name
     REQUIRE(fs::exists(out + ".partial"));
     const std::string status = test::h5_status(out + ".partial");
@@ -246,7 +246,7 @@ TEST_CASE("a failed run keeps only the .partial file, marked failed, and leaves 
 
     // A later successful run to the same path replaces the stale .partial.
     const SceneConfig good = scene_from_text(test::tiny_scene(squeeze_stage), dir + "/good.yaml");
-    run_scene(good, out, false);
+    run_scene(good, out);
     CHECK(test::h5_status(out) == "complete");
     CHECK_FALSE(fs::exists(out + ".partial"));
   }
@@ -254,7 +254,7 @@ TEST_CASE("a failed run keeps only the .partial file, marked failed, and leaves 
     // Write something at the out path first (any bytes will do: the run must not open it).
     const std::string earlier = "an earlier, complete result\n";
     test::write_text(out, earlier);
-    CHECK_THROWS_AS(run_scene(bad, out, false), StageError);
+    CHECK_THROWS_AS(run_scene(bad, out), StageError);
     CHECK(test::read_bytes(out) == earlier);
     CHECK_THAT(test::h5_status(out + ".partial"), Catch::Matchers::StartsWith("failed: "));
   }
@@ -267,12 +267,12 @@ TEST_CASE("input errors are raised before any output file exists", "[io][result]
   std::string text = test::tiny_scene(squeeze_stage);
   text.replace(text.find("time_step: 1.0e-6"), 17, "time_step: 1.0e-4");  // 40 x the allowed step
   const SceneConfig too_big_step = scene_from_text(text, dir + "/s.yaml");
-  CHECK_THROWS_AS(run_scene(too_big_step, dir + "/r.h5", false), ConfigError);
+  CHECK_THROWS_AS(run_scene(too_big_step, dir + "/r.h5"), ConfigError);
   CHECK(fs::is_empty(dir));
 
   // An output folder that does not exist: HDF5 cannot create the file; the error names the path.
   const SceneConfig good = scene_from_text(test::tiny_scene(squeeze_stage), dir + "/s.yaml");
-  CHECK_THROWS_WITH(run_scene(good, dir + "/no/such/folder/r.h5", false),
+  CHECK_THROWS_WITH(run_scene(good, dir + "/no/such/folder/r.h5"),
                     Catch::Matchers::StartsWith(dir + "/no/such/folder/r.h5.partial: cannot create the HDF5 file"));
 }
 

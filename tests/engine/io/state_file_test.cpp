@@ -45,7 +45,7 @@ const std::string frictionless = "{kn: 1.0e6, ks: 1.0e6, friction: 0}";
 // Writes a complete result of the compression into `dir`/good.h5 and returns its path.
 std::string good_result(const std::string& dir, const std::string& material = frictional) {
   const std::string out = dir + "/good.h5";
-  run_scene(scene_from_text(scene_text(lattice, material), dir + "/good.yaml"), out, false);
+  run_scene(scene_from_text(scene_text(lattice, material), dir + "/good.yaml"), out);
   return out;
 }
 

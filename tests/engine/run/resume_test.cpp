@@ -142,7 +142,7 @@ void check_resume(const Variant& v) {
 
   // Interrupted: the first stage alone, written to a result file ...
   const SceneConfig first = scene_from_text(scene_text(v, lattice, true, false), dir + "/first.yaml");
-  run_scene(first, dir + "/first.h5", false);
+  run_scene(first, dir + "/first.h5");
   // ... and the second stage from its final state (relative path: resolved against the scene folder).
   const SceneConfig rest = scene_from_text(scene_text(v, "particles: {state: first.h5}\n", false, true), dir + "/rest.yaml");
   Simulation resumed = build_simulation(rest);
@@ -194,10 +194,10 @@ void check_resume(const Variant& v) {
 // the /state of the two-stage run equals the /state of the continued run.
 void check_resume_files(const Variant& v) {
   const std::string dir = test::scratch_dir("resume_files_" + v.name);
-  run_scene(scene_from_text(scene_text(v, lattice, true, true), dir + "/both.yaml"), dir + "/both.h5", false);
-  run_scene(scene_from_text(scene_text(v, lattice, true, false), dir + "/first.yaml"), dir + "/first.h5", false);
+  run_scene(scene_from_text(scene_text(v, lattice, true, true), dir + "/both.yaml"), dir + "/both.h5");
+  run_scene(scene_from_text(scene_text(v, lattice, true, false), dir + "/first.yaml"), dir + "/first.h5");
   run_scene(scene_from_text(scene_text(v, "particles: {state: first.h5}\n", false, true), dir + "/rest.yaml"),
-            dir + "/rest.h5", false);
+            dir + "/rest.h5");
   const SavedState a = read_state(dir + "/both.h5"), b = read_state(dir + "/rest.h5");
   REQUIRE(a.contacts.size() > 0);
   CHECK(a.particles.s == b.particles.s);
@@ -318,9 +318,9 @@ TEST_CASE("the first row of a continued run reports the saved state's kinetic en
   // row (before any step) equals the last row of the earlier run, which holds the same state.
   const std::string dir = test::scratch_dir("resume_first_row");
   const Variant v{"frictional", "{kn: 1.0e6, ks: 1.0e6, friction: 0.5}", "{form: viscous}", shear};
-  run_scene(scene_from_text(scene_text(v, lattice, true, false), dir + "/first.yaml"), dir + "/first.h5", false);
+  run_scene(scene_from_text(scene_text(v, lattice, true, false), dir + "/first.yaml"), dir + "/first.h5");
   run_scene(scene_from_text(scene_text(v, "particles: {state: first.h5}\n", false, true), dir + "/rest.yaml"),
-            dir + "/rest.h5", false);
+            dir + "/rest.h5");
   h5::Handle fa = h5::open_file_read(dir + "/first.h5"), fb = h5::open_file_read(dir + "/rest.h5");
   h5::Handle ga = h5::open_group(fa, "timeseries"), gb = h5::open_group(fb, "timeseries");
   std::size_t cols = 0;

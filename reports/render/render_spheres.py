@@ -1,0 +1,66 @@
+# A real client of the result files: ParaView opens a result's XDMF view (engine/io/xdmf.*, written
+# beside every complete result) and renders the spheres of its last frame, each a sphere of its own
+# radius, coloured by the radius, to a PNG. Run by `make render`:
+#   pvbatch --force-offscreen-rendering reports/render/render_spheres.py RESULT.xdmf OUT.png [TITLE]
+# (Python only as a client script: the project's own code is C++.)
+import sys
+
+from paraview.simple import (ColorBy, GetActiveViewOrCreate, GetColorTransferFunction, GetScalarBar, Glyph, Render,
+                             SaveScreenshot, Show, Text, XDMFReader)
+
+if len(sys.argv) < 3:
+    sys.exit("usage: pvbatch render_spheres.py RESULT.xdmf OUT.png [TITLE]")
+xdmf, png = sys.argv[1], sys.argv[2]
+title = sys.argv[3] if len(sys.argv) > 3 else xdmf
+
+reader = XDMFReader(FileNames=[xdmf])
+reader.UpdatePipelineInformation()
+times = list(reader.TimestepValues) if reader.TimestepValues else [0.0]
+reader.UpdatePipeline(times[-1])
+points = reader.GetDataInformation().GetNumberOfPoints()
+if points == 0:
+    sys.exit(f"{xdmf}: no particles in the last frame")
+
+view = GetActiveViewOrCreate("RenderView")
+view.ViewSize = [1100, 1000]
+view.ViewTime = times[-1]
+view.Background = [1, 1, 1]
+try:  # ParaView >= 5.10 keeps the background in a palette unless told otherwise
+    view.UseColorPaletteForBackground = 0
+except AttributeError:
+    pass
+view.OrientationAxesVisibility = 1
+
+# The default sphere glyph has radius 0.5: scaled by 2 x radius it is the particle itself.
+spheres = Glyph(Input=reader, GlyphType="Sphere")
+spheres.ScaleArray = ["POINTS", "radius"]
+spheres.ScaleFactor = 2.0
+spheres.GlyphMode = "All Points"
+spheres.GlyphType.ThetaResolution = 16
+spheres.GlyphType.PhiResolution = 12
+display = Show(spheres, view)
+ColorBy(display, ("POINTS", "radius"))
+lut = GetColorTransferFunction("radius")
+lut.ApplyPreset("Viridis (matplotlib)", True)
+display.SetScalarBarVisibility(view, True)
+bar = GetScalarBar(lut, view)
+bar.Title = "radius (m)"
+bar.ComponentTitle = ""
+bar.TitleColor = [0, 0, 0]
+bar.LabelColor = [0, 0, 0]
+bar.RangeLabelFormat = "%-#.2e"
+
+label = Text(Text=f"{title}\n{points} spheres at t = {times[-1]:.4g} s (ParaView, XDMF)")
+label_display = Show(label, view)
+label_display.Color = [0, 0, 0]
+label_display.FontSize = 14
+label_display.WindowLocation = "Upper Left Corner"
+
+# Axis 1 (x of the result) vertical, as the paper's Fig. 2.
+view.CameraPosition = [0.9, 1.6, -1.0]
+view.CameraFocalPoint = [0, 0, 0]
+view.CameraViewUp = [1, 0, 0]
+view.ResetCamera()
+Render(view)
+SaveScreenshot(png, view, ImageResolution=[1100, 1000])
+print(f"rendered {points} spheres of {xdmf} at t = {times[-1]:.6g} s -> {png}")

@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# A result read by a real client: h5py (Debian's python3-h5py, installed here if missing; the test
+# is skipped with exit 77 if it cannot be) reads a short run's result and checks it against
+# `dem table` and `dem state` (tests/clients/h5py_client.py).
+#   tests/clients/h5py_test.sh BIN_DIR WORKDIR
+set -u
+bin=$1 work=$2
+here=$(cd "$(dirname "$0")" && pwd)
+rm -rf "$work" && mkdir -p "$work" || exit 1
+# Debian's h5py is for Debian's python3 (another python3 may come first on the PATH).
+py=/usr/bin/python3
+[ -x "$py" ] || py=$(command -v python3) || { echo "h5py test: no python3: skipped"; exit 77; }
+if ! "$py" -c 'import h5py' 2> /dev/null; then
+  sudo=""; [ "$(id -u)" = 0 ] || sudo="sudo -n"
+  { $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends python3-h5py ||
+    { $sudo env DEBIAN_FRONTEND=noninteractive apt-get update -qq &&
+      $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends python3-h5py; }; } > "$work/apt.log" 2>&1
+  "$py" -c 'import h5py' 2> /dev/null || { echo "h5py test: python3-h5py cannot be installed here (see $work/apt.log): skipped"; exit 77; }
+fi
+# 27 spheres: a fast compression to 100 kPa, then A -> TC1 -> A (rows, legs and particle frames).
+"$bin/dem" run "$here/../../scenes/stability/base.yaml" --out "$work/result.h5" --quiet --no-resume \
+  --set name=h5py_client --set 'particles.lattice.n=[3, 3, 3]' 2> "$work/run.log" ||
+  { echo "h5py test: the run failed:"; cat "$work/run.log"; exit 1; }
+"$py" "$here/h5py_client.py" "$bin/dem" "$work/result.h5"

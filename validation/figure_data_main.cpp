@@ -1,0 +1,542 @@
+// figure-data: the data behind the report's figures and the numbers its text quotes, from a
+// study's results, its resolved scenes and reference_data/paper.yaml (validation/figures.hpp).
+//   figure-data figures RESULTS_DIR FIG_DIR [--sample NAME] [--references FILE]
+//       every figure's data files (figNN_*.dat, columns named with units) and values.gp, the
+//       numbers the static scripts in reports/gnuplot/ read (the paper's among them)
+//   figure-data settings RESULTS_DIR [--prefix P | --run NAME]
+//       the settings the runs used, read from the resolved scenes of the first sample's
+//       P<density>_prepare.h5 and P<density>_test<N>.h5, or of NAME.h5 alone (key<TAB>value), for
+//       the report's text
+//   figure-data samples-table RESULTS_DIR... --references FILE [--per-sample] [--baseline VARIANT]
+//       Markdown table of the prepared samples (the preparations of each folder's runs.tsv, or
+//       <sample>/<density>_prepare.h5), mean ± sd over seeds per density, variant and size (or
+//       one row per sample), with the paper's values; --baseline adds the shift from that variant
+// Exit status: 0, 1 if something could not be read or written, 2 for bad arguments.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "figures.hpp"
+#include "format.hpp"
+#include "io/atomic_file.hpp"
+#include "io/hdf5.hpp"
+#include "io/state_io.hpp"
+
+namespace fs = std::filesystem;
+using validation::Table;
+
+namespace {
+
+const char* usage =
+    "usage:\n"
+    "  figure-data figures RESULTS_DIR FIG_DIR [--sample NAME] [--references FILE]\n"
+    "  figure-data settings RESULTS_DIR [--prefix P | --run NAME]\n"
+    "  figure-data samples-table RESULTS_DIR... --references FILE [--per-sample] [--baseline VARIANT]\n";
+
+const std::vector<std::string> densities = {"loose", "medium", "dense"};
+
+// A path as written into files: relative to the working folder, never absolute.
+std::string shown(const std::string& p) {
+  const fs::path rel = fs::absolute(p).lexically_normal().lexically_relative(fs::current_path());
+  return rel.empty() ? fs::path(p).filename().string() : rel.string();
+}
+
+// The resolved scene a result ran (its `scene_yaml` attribute), if the result can be read.
+std::optional<dem::SceneConfig> scene_of(const std::string& result) {
+  try {
+    dem::h5::Handle f = dem::h5::open_file_read(result);
+    if (!dem::h5::has_attribute(f, "scene_yaml")) return std::nullopt;
+    return dem::scene_from_text(dem::h5::get_string_attribute(f, "scene_yaml"), result);
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+const dem::StageConfig* stage_of_type(const dem::SceneConfig& s, dem::StageConfig::Type type) {
+  for (const dem::StageConfig& st : s.stages)
+    if (st.type == type) return &st;
+  return nullptr;
+}
+
+std::string joined(const std::vector<std::string>& v, const std::string& sep) {
+  std::string out;
+  for (const std::string& s : v) out += (out.empty() ? "" : sep) + s;
+  return out;
+}
+
+std::string num(double x) { return validation::number(x); }
+
+// A path as written in a scene ("- TC1\n- {repeat: 5, ...}" or a flow list) on one line: "[TC1, {repeat: 5, ...}]".
+std::string one_line(const std::string& yaml) {
+  std::stringstream in(yaml);
+  std::vector<std::string> items;
+  for (std::string line; std::getline(in, line);) {
+    const auto first = line.find_first_not_of(" \t");
+    if (first == std::string::npos) continue;
+    line = line.substr(first);
+    if (line.rfind("- ", 0) == 0) items.push_back(line.substr(2));
+    else if (items.empty()) items.push_back(line);
+    else items.back() += " " + line;
+  }
+  if (items.size() == 1 && !items[0].empty() && items[0][0] == '[') return items[0];
+  return "[" + joined(items, ", ") + "]";
+}
+
+// ---------------------------------------------------------------------------------------------
+int figures(const std::string& results, const std::string& out, std::string sample, const std::string& references) {
+  std::vector<std::string> missing;
+  const std::vector<validation::Sample> samples = validation::load_samples(results, densities, missing);
+  if (sample.empty()) sample = samples.front().name;
+  const std::string sample_label = sample.empty() ? fs::path(samples.front().dir).filename().string() : sample;
+  const auto chosen = std::find_if(samples.begin(), samples.end(), [&](const validation::Sample& s) { return s.name == sample; });
+  if (chosen == samples.end()) {
+    std::fprintf(stderr, "figure-data: no sample '%s' in %s\n", sample.c_str(), results.c_str());
+    return 2;
+  }
+  const std::vector<validation::Row> paper = validation::load_references(references, "paper");
+  fs::create_directories(out);
+  int files = 0;
+  const auto write = [&](const std::string& name, const Table& t, const std::string& what) {
+    Table copy = t;
+    copy.comments.insert(copy.comments.begin(), what);
+    dem::write_file_atomically((fs::path(out) / name).string(), copy.text());
+    ++files;
+  };
+  const std::string from = shown(chosen->dir);
+  validation::GnuplotValues values;
+  values.text("sample", sample_label);
+  values.number("samples_n", static_cast<double>(samples.size()));
+
+  // The scenes of the chosen sample: preparations, and the first test's stress path (p, R).
+  std::map<std::string, dem::SceneConfig> prepare;
+  for (const std::string& d : densities)
+    if (auto s = scene_of((fs::path(chosen->dir) / (d + "_prepare.h5")).string())) prepare[d] = *s;
+  double p = 1e5, R = 1.24;
+  bool path_found = false;
+  for (const std::string& d : densities)
+    for (int t = 1; t <= 5 && !path_found; ++t)
+      if (auto s = scene_of((fs::path(chosen->dir) / (d + "_test" + std::to_string(t) + ".h5")).string()))
+        if (const dem::StageConfig* st = stage_of_type(*s, dem::StageConfig::Type::StressPath)) {
+          p = st->mean_stress_Pa, R = st->stress_ratio, path_found = true;
+          values.number("friction_shear", dem::friction_coefficient(s->material.law));
+        }
+  values.number("mean_stress_kPa", p / 1e3);
+  values.number("stress_ratio", R);
+  for (const std::string& d : densities) {
+    values.number("has_prepare_" + d, prepare.count(d) ? 1 : 0);
+    values.number("friction_prepare_" + d, prepare.count(d) ? dem::friction_coefficient(prepare[d].material.law) : NAN);
+    for (const auto& [quantity, name] : std::vector<std::pair<std::string, std::string>>{
+             {"coordination_after_preparation", "cn"}, {"void_ratio_after_preparation", "e0"}, {"cell_side_cm_after_preparation", "side_cm"}})
+      values.number("paper_" + name + "_" + d, validation::paper_value(paper, quantity, d).value_or(NAN));
+  }
+  values.number("paper_slope", validation::paper_value(paper, "qp_strong_fabric_slope", "").value_or(NAN));
+
+  // Fig. 1 and 2: the grading and the samples (from /state of each preparation). Without a dense
+  // preparation these stay at "none" (has_lattice = 0) and the scripts say "not run".
+  values.number("has_lattice", 0);
+  values.text("grading_basis", "?");
+  for (const char* v : {"grading_d_min_mm", "grading_d50_mm", "grading_d_max_mm", "lattice_side_mm", "target_pressure_kPa"}) values.number(v, 1);
+  values.number("particles", 0);
+  {
+    Table none;
+    none.comments = {"no dense preparation"};
+    write("fig01_grading_target.dat", none, "Fig. 1");
+    write("fig01_grading_sample.dat", none, "Fig. 1");
+    write("fig02_lattice.dat", none, "Fig. 2 (A)");
+  }
+  if (prepare.count("dense")) {
+    write("fig01_grading_target.dat", validation::grading_target(prepare["dense"]), "Fig. 1: target grading (" + from + "/dense_prepare)");
+    const dem::ParticleSource& g = prepare["dense"].particles;
+    values.text("grading_basis", g.grading_basis == dem::GradingCurve::Basis::Mass ? "mass" : "count");
+    values.number("grading_d_min_mm", 1e3 * g.grading_diameters_m.front());
+    values.number("grading_d50_mm", 1e3 * validation::grading_diameter_at(g.grading_diameters_m, g.grading_percent_finer, 50));
+    values.number("grading_d_max_mm", 1e3 * g.grading_diameters_m.back());
+    // The lattice before compression: the preparation scene's own lattice (generate/), not a run.
+    const dem::ParticleSource& src = prepare["dense"].particles;
+    if (src.kind == dem::ParticleSource::Kind::Lattice) {
+      dem::Particles lattice;
+      dem::PeriodicCell cell;
+      dem::make_lattice(src.lattice, dem::GradingCurve(src.grading_diameters_m, src.grading_percent_finer, src.grading_basis),
+                        prepare["dense"].material.density_kg_per_m3, lattice, cell);
+      write("fig02_lattice.dat", validation::spheres(lattice, cell), "Fig. 2 (A): the lattice of " + from + "/dense_prepare before compression");
+      values.number("has_lattice", 1);
+      values.number("lattice_side_mm", 1e3 * cell.lengths().maxCoeff());
+      values.number("particles", static_cast<double>(lattice.size()));
+      if (const dem::StageConfig* st = stage_of_type(prepare["dense"], dem::StageConfig::Type::Stress))
+        values.number("target_pressure_kPa", st->target_Pa.mean() / 1e3);
+    }
+  }
+  double side_mm = 0;
+  for (const std::string& d : densities) {
+    const std::string f = (fs::path(chosen->dir) / (d + "_prepare.h5")).string();
+    Table t;
+    try {
+      if (!prepare.count(d)) throw std::runtime_error("not run");
+      const dem::SavedState st = dem::read_state(f);
+      t = validation::spheres(st.particles, st.cell);
+      side_mm = std::max(side_mm, 1e3 * st.cell.lengths().maxCoeff());
+      if (d == "dense") write("fig01_grading_sample.dat", validation::grading_realised(st.particles.radius), "Fig. 1: the grading of " + from + "/dense_prepare");
+    } catch (const std::exception& e) {
+      t.columns = {"x1 [mm]", "x2 [mm]", "x3 [mm]", "diameter [mm]"};
+      t.comments = {std::string("no sample: ") + e.what()};
+    }
+    write("fig02_" + d + ".dat", t, "Fig. 2: the " + d + " sample after compression (" + from + "/" + d + "_prepare)");
+  }
+  values.number("sample_side_mm", side_mm > 0 ? std::ceil(side_mm / 5) * 5 : 1);
+
+  // Figs. 3-6, 8, 9, 12, 13 from the chosen sample's tests.
+  const auto find_test = [](const validation::DensityResults& r, int t) -> const validation::TestResult* {
+    for (const validation::TestResult& x : r.tests)
+      if (x.number == t) return &x;
+    return nullptr;
+  };
+  std::set<int> targets_done;
+  std::vector<Table> fabric_tables, strong_tables;
+  for (const std::string& d : densities) {
+    const validation::DensityResults& r = chosen->densities.at(d);
+    std::vector<std::string> present;
+    for (int t = 1; t <= 5; ++t) {
+      const std::string dt = d + "_test" + std::to_string(t);
+      const validation::TestResult* test = find_test(r, t);
+      values.number("has_" + dt, test ? 1 : 0);
+      const std::string run = from + "/" + dt;
+      if (!test) {
+        // Empty files with their header, so that every script finds its files (the curve is absent).
+        Table none;
+        none.comments = {"not run"};
+        for (const std::string& name : {"fig03_" + dt, "fig04_q_p_" + dt, "fig05_qp_epsd_" + dt, "fig06_epsv_" + dt,
+                                       "fig12_fabric_" + dt, "fig13_strong_fabric_" + dt, "fig09_" + dt + "_cycle1",
+                                       "fig09_" + dt + "_cycle5", "fig09_" + dt + "_cycle1_path", "fig09_" + dt + "_cycle5_path"})
+          write(name + ".dat", none, run);
+        if (t == 5) write("fig08_test5_" + d + ".dat", none, run), values.texts("fig08_titles_" + d, {});
+        values.number("fig09_scale_" + dt, 1);
+        values.number("fig09_cycle5_" + dt, 5);
+        continue;
+      }
+      present.push_back(std::to_string(t));
+      const validation::Columns& s = test->series;
+      if (!targets_done.count(t)) {
+        write("fig03_test" + std::to_string(t) + "_target.dat", validation::target_path(test->legs), "Fig. 3: target path of Test " + std::to_string(t) + " (" + run + ")");
+        targets_done.insert(t);
+      }
+      write("fig03_" + dt + ".dat", validation::stress_path(s), "Fig. 3: " + run);
+      write("fig04_q_p_" + dt + ".dat", validation::q_against_p(s), "Fig. 4: " + run);
+      write("fig05_qp_epsd_" + dt + ".dat", validation::qp_against_deviatoric_strain(s, 5), "Fig. 5: " + run);
+      write("fig06_epsv_" + dt + ".dat", validation::volumetric_strain_against(s, t, 5), "Fig. 6: " + run);
+      fabric_tables.push_back(validation::qp_against_fabric(s, "fabric", 5));
+      strong_tables.push_back(validation::qp_against_fabric(s, "strong_fabric", 5));
+      write("fig12_fabric_" + dt + ".dat", fabric_tables.back(), "Fig. 12: " + run);
+      write("fig13_strong_fabric_" + dt + ".dat", strong_tables.back(), "Fig. 13: " + run);
+      if (t == 5) {
+        std::vector<std::string> titles;
+        write("fig08_test5_" + d + ".dat", validation::test5_blocks(s, test->legs, titles), "Fig. 8: " + run);
+        values.texts("fig08_titles_" + d, titles);
+      }
+      // Fig. 9: cycles 1 and 5 (the last cycle run if fewer), one arrow scale for both.
+      const int c2 = std::min(5, validation::last_cycle(s));
+      const double scale = validation::arrow_scale(s, {1, c2});
+      values.number("fig09_scale_" + dt, scale);
+      values.number("fig09_cycle5_" + dt, c2);
+      for (const auto& [c, tag] : std::vector<std::pair<int, std::string>>{{1, "cycle1"}, {c2, "cycle5"}}) {
+        write("fig09_" + dt + "_" + tag + ".dat", validation::strain_increments(s, c, scale), "Fig. 9: " + run);
+        write("fig09_" + dt + "_" + tag + "_path.dat", validation::cycle_stress_path(s, c), "Fig. 9: " + run);
+      }
+    }
+    values.number("has_" + d, present.empty() ? 0 : 1);
+    values.text("fig14_tests_" + d, joined(present, ", "));
+  }
+  for (int t = 1; t <= 5; ++t)
+    if (!targets_done.count(t)) {
+      Table none;
+      none.comments = {"not run"};
+      write("fig03_test" + std::to_string(t) + "_target.dat", none, "Fig. 3: target path of Test " + std::to_string(t));
+    }
+  write("fig03_states.dat", validation::named_states(p, R), "Fig. 3: named states of the tests' stress paths");
+  const Table q = validation::target_q(p, R);
+  write("fig04_targets.dat", q, "Fig. 4: target deviator stress");
+  values.number("q_tc_kPa", q.rows[0][0]);
+  values.number("q_te_kPa", q.rows[1][0]);
+  std::vector<const Table*> all_fabric, all_strong;
+  for (const Table& t : fabric_tables) all_fabric.push_back(&t);
+  for (const Table& t : strong_tables) all_strong.push_back(&t);
+  values.number("fig12_max", validation::square_axis_max(all_fabric));
+  values.number("fig13_max", validation::square_axis_max(all_strong));
+
+  // Figs. 7, 10, 11: per-cycle statistics over every sample of the ensemble.
+  const std::map<std::string, std::string> cycle_files = {
+      {"epsv_percent", "fig07_epsv_cycles"}, {"coordination", "fig10_coordination"}, {"sliding_percent", "fig11_sliding"}};
+  for (const validation::CycleQuantity& cq : validation::cycle_quantities())
+    for (const std::string& d : densities)
+      for (int t = 1; t <= 5; ++t) {
+        std::vector<const validation::TestResult*> tests;
+        for (const validation::Sample& s : samples)
+          if (const validation::TestResult* x = find_test(s.densities.at(d), t)) tests.push_back(x);
+        write(cycle_files.at(cq.name) + "_" + d + "_test" + std::to_string(t) + ".dat", validation::cycle_statistics(tests, cq),
+              "Figs. 7, 10, 11: " + d + ", Test " + std::to_string(t) + ", " + std::to_string(tests.size()) + " sample(s) of " + shown(results));
+      }
+
+  // The energy balance of every run of the chosen sample (results of an engine without the energy
+  // columns are noted and left out).
+  for (const std::string& d : densities) {
+    std::vector<std::pair<std::string, const validation::Columns*>> runs;
+    validation::Columns prepare_series;
+    const std::string f = (fs::path(chosen->dir) / (d + "_prepare.h5")).string();
+    if (validation::is_complete(f)) {
+      prepare_series = validation::read_columns(f, "timeseries");
+      runs.emplace_back(d + "_prepare", &prepare_series);
+    }
+    for (const validation::TestResult& t : chosen->densities.at(d).tests) runs.emplace_back(d + "_test" + std::to_string(t.number), &t.series);
+    for (const auto& [run, series] : runs) {
+      try {
+        write("fig_energy_" + run + ".dat", validation::energy_balance(*series), "energy balance of " + from + "/" + run);
+      } catch (const std::out_of_range& e) {
+        std::fprintf(stderr, "note: %s/%s: no energy balance (%s)\n", from.c_str(), run.c_str(), e.what());
+      }
+    }
+  }
+
+  dem::write_file_atomically((fs::path(out) / "values.gp").string(),
+                             values.text_file("Written by figure-data from " + shown(results) + " (sample " + sample_label +
+                                              ") and reference_data/paper.yaml: the numbers the scripts in reports/gnuplot/ read"));
+  for (const std::string& m : missing) std::fprintf(stderr, "note: %s: missing or not complete, left out\n", shown(m).c_str());
+  std::fprintf(stderr, "figure-data: %d files from %zu sample(s) of %s (single-run figures: %s) -> %s\n", files + 1,
+               samples.size(), shown(results).c_str(), sample_label.c_str(), shown(out).c_str());
+  return 0;
+}
+
+// ---------------------------------------------------------------------------------------------
+int settings(const std::string& results, const std::string& prefix, const std::string& run) {
+  const auto dirs = validation::sample_dirs(results);
+  const std::string dir = dirs.front().second;
+  std::map<std::string, std::string> kv;
+  std::map<std::string, std::vector<std::string>> per_density;
+  bool any = false;
+  // One named run (--run NAME: DIR/NAME.h5) is read as the preparation of a study of one density.
+  for (const std::string& d : run.empty() ? densities : std::vector<std::string>{"run"}) {
+    const auto prep = scene_of((fs::path(dir) / (run.empty() ? prefix + d + "_prepare.h5" : run + ".h5")).string());
+    if (prep) {
+      kv["max_energy_error"] = num(prep->max_energy_error);
+      kv["max_time_step_fraction"] = num(prep->max_time_step_fraction);
+      any = true;
+      per_density["friction_prepare"].push_back(num(dem::friction_coefficient(prep->material.law)));
+      kv["time_step_prepare_s"] = num(prep->time_step_s);
+      kv["grading_basis"] = prep->particles.grading_basis == dem::GradingCurve::Basis::Mass ? "mass" : "count";
+      kv["damping_form"] = prep->damping.form == dem::Damping::Form::Viscous ? "viscous" : "local";
+      kv["damping_translational"] = num(prep->damping.translational);
+      kv["damping_rotational"] = num(prep->damping.rotational);
+      std::visit(
+          [&](const auto& law) {  // the linear law's stiffnesses (other laws name their own constants)
+            using Law = std::decay_t<decltype(law)>;
+            if constexpr (std::is_same_v<typename Law::NormalLaw, dem::LinearNormal>) {
+              kv["kn_N_per_m"] = num(law.normal.kn);
+              if constexpr (Law::has_tangential) kv["ks_N_per_m"] = num(law.tangential.ks);
+            }
+          },
+          prep->material.law);
+      if (prep->particles.kind == dem::ParticleSource::Kind::Lattice) {
+        const dem::LatticeSpec& l = prep->particles.lattice;
+        kv["lattice"] = std::to_string(l.n[0]) + "×" + std::to_string(l.n[1]) + "×" + std::to_string(l.n[2]);
+        kv["particles"] = std::to_string(static_cast<long long>(l.n[0]) * l.n[1] * l.n[2]);
+        kv["lattice_spacing_mm"] = num(1e3 * l.spacing_m);
+      }
+      if (const dem::StageConfig* st = stage_of_type(*prep, dem::StageConfig::Type::Stress)) {
+        kv["target_pressure_kPa"] = num(st->target_Pa.mean() / 1e3);
+        kv["compression_rate_Pa_per_s"] = num(st->stress_rate_Pa_per_s);
+        kv["max_strain_rate_per_s"] = num(st->max_strain_rate_per_s);
+        kv["hold_stress_tolerance"] = num(st->hold.stress_tolerance);
+        kv["hold_unbalanced_force_ratio"] = num(st->hold.unbalanced_force_ratio);
+      }
+    }
+    for (int t = 1; t <= 5; ++t) {
+      const auto test = scene_of((fs::path(dir) / (prefix + d + "_test" + std::to_string(t) + ".h5")).string());
+      if (!test) continue;
+      any = true;
+      if (t == 1 || !kv.count("friction_shear_" + d)) kv["friction_shear_" + d] = num(dem::friction_coefficient(test->material.law));
+      kv["time_step_test_s"] = num(test->time_step_s);
+      if (const dem::StageConfig* st = stage_of_type(*test, dem::StageConfig::Type::StressPath)) {
+        kv["mean_stress_Pa"] = num(st->mean_stress_Pa);
+        kv["stress_ratio"] = num(st->stress_ratio);
+        kv["stress_rate_Pa_per_s"] = num(st->stress_rate_Pa_per_s);
+        kv["test" + std::to_string(t) + "_path"] = one_line(st->path_text);
+      }
+    }
+  }
+  if (!any) {
+    std::fprintf(stderr, "figure-data settings: no result with a scene in %s (%s<density>_prepare.h5 ...)\n", dir.c_str(), prefix.c_str());
+    return 1;
+  }
+  for (const auto& [k, v] : per_density) kv[k] = joined(v, " / ");
+  for (const std::string& d : densities)
+    if (kv.count("friction_shear_" + d)) per_density["friction_shear"].push_back(kv["friction_shear_" + d]);
+  if (per_density.count("friction_shear")) kv["friction_shear"] = joined(per_density["friction_shear"], " / ");
+  for (const auto& [k, v] : kv) std::printf("%s\t%s\n", k.c_str(), v.c_str());
+  return 0;
+}
+
+// ---------------------------------------------------------------------------------------------
+struct Preparation {
+  std::string group, density, sample;  // group: the variant ("" without variants)
+  std::map<std::string, double> last;   // last time-series row
+  double wall_s = 0, particles = 0;
+};
+
+// mean ± sd of a column of the group's preparations ("0.558 ± 0.005"; one value: "0.558").
+std::string mean_sd(const std::vector<double>& v, int digits) {
+  const validation::Spread s = validation::spread(v);
+  char buf[96];
+  if (s.n < 2) std::snprintf(buf, sizeof buf, "%.*f", digits, s.mean);
+  else std::snprintf(buf, sizeof buf, "%.*f ± %.*f", digits, s.mean, digits, s.sd);
+  return buf;
+}
+
+int samples_table(const std::vector<std::string>& folders, const std::string& references, bool per_sample, const std::string& baseline) {
+  const std::vector<validation::Row> paper = validation::load_references(references, "paper");
+  std::vector<Preparation> preps;
+  const auto add = [&](const std::string& group, const std::string& density, const std::string& sample, const std::string& file) {
+    try {
+      if (!validation::is_complete(file)) return;
+      Preparation p{group, density, sample, {}, 0, 0};
+      const validation::Columns c = validation::read_columns(file, "timeseries");
+      for (const auto& [name, v] : c)
+        if (!v.empty()) p.last[name] = v.back();
+      dem::h5::Handle f = dem::h5::open_file_read(file);
+      p.wall_s = dem::h5::get_double_attribute(f, "wall_time_s");
+      if (dem::h5::exists(f, "particles/all/position/value")) p.particles = static_cast<double>(dem::h5::shape(f, "particles/all/position/value").at(1));
+      preps.push_back(p);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "figure-data: %s: %s, left out\n", shown(file).c_str(), e.what());
+    }
+  };
+  for (const std::string& results : folders) {
+    std::ifstream runs(fs::path(results) / "runs.tsv");
+    if (runs) {  // the pipeline's list: variant, density, test, run, result, starts_from, may_fail, settings, seed
+      std::string line;
+      while (std::getline(runs, line)) {
+        if (line.empty() || line[0] == '#') continue;
+        std::vector<std::string> f;
+        std::stringstream ss(line);
+        for (std::string x; std::getline(ss, x, '\t');) f.push_back(x);
+        if (f.size() < 5 || f[2] != "-") continue;
+        const std::string seed = f.size() > 8 && f[8] != "-" && !f[8].empty() ? "seed" + f[8] : "";
+        add(f[0] == "-" ? "" : f[0], f[1], seed, (fs::path(results) / (f[3] + ".h5")).string());
+      }
+    } else {
+      for (const auto& [name, dir] : validation::sample_dirs(results))
+        for (const std::string& d : densities) add("", d, name, (fs::path(dir) / (d + "_prepare.h5")).string());
+    }
+  }
+  if (preps.empty()) {
+    std::fprintf(stderr, "figure-data samples-table: no complete preparation in %s\n", joined(folders, ", ").c_str());
+    return 1;
+  }
+  // Groups in the order met (by density first, as the paper's tables).
+  std::vector<std::string> order;
+  std::map<std::string, std::vector<const Preparation*>> groups;
+  for (const std::string& d : densities)
+    for (const Preparation& p : preps) {
+      if (p.density != d) continue;
+      const std::string key = d + "\t" + p.group + "\t" + (per_sample ? p.sample : std::to_string(static_cast<long>(p.particles)));
+      if (!groups.count(key)) order.push_back(key);
+      groups[key].push_back(&p);
+    }
+  const auto values = [](const std::vector<const Preparation*>& g, const std::function<double(const Preparation&)>& f) {
+    std::vector<double> v;
+    for (const Preparation* p : g) v.push_back(f(*p));
+    return v;
+  };
+  const auto mean = [](const std::vector<double>& v) { return validation::spread(v).mean; };
+  const auto side = [](const Preparation& p) {  // cm, scaled to the paper's 8,000 spheres
+    const double v = p.last.at("cell_length_1") * p.last.at("cell_length_2") * p.last.at("cell_length_3");
+    return 100 * std::cbrt(p.particles > 0 ? v * 8000 / p.particles : v);
+  };
+  const bool deltas = !baseline.empty();
+  std::string header = "| sample | particles | ";
+  if (!per_sample) header += "seeds | ";
+  header += "e0 (paper) | Δe0 | cell side cm, 8,000-sphere equivalent (paper) | CN (paper) | ΔCN |";
+  if (deltas) header += " Δe0 vs " + baseline + " | ΔCN vs " + baseline + " |";
+  header += " CN w/o rattlers | sliding % | mean f_n (N) | unbalanced | steps | wall time (s) |\n";
+  std::fputs(header.c_str(), stdout);
+  std::printf("|---|---|%s---|---|---|---|---|%s---|---|---|---|---|---|\n", per_sample ? "" : "---|", deltas ? "---|---|" : "");
+  for (const std::string& key : order) {
+    const auto& g = groups[key];
+    const Preparation& first = *g.front();
+    const std::string d = first.density;
+    const double e_paper = validation::paper_value(paper, "void_ratio_after_preparation", d).value_or(NAN);
+    const double z_paper = validation::paper_value(paper, "coordination_after_preparation", d).value_or(NAN);
+    const double l_paper = validation::paper_value(paper, "cell_side_cm_after_preparation", d).value_or(NAN);
+    const auto e = values(g, [](const Preparation& p) { return p.last.at("void_ratio"); });
+    const auto z = values(g, [](const Preparation& p) { return p.last.at("coordination_number"); });
+    std::string label = d;
+    if (!first.group.empty()) label += ", " + first.group;
+    if (per_sample && !first.sample.empty()) label += ", " + first.sample;
+    std::string versus;
+    if (deltas) {
+      const std::string base_key = d + "\t" + baseline + "\t" + key.substr(key.rfind('\t') + 1);
+      if (groups.count(base_key)) {
+        char buf[64];
+        std::snprintf(buf, sizeof buf, " %+.4f | %+.3f |", mean(e) - mean(values(groups[base_key], [](const Preparation& p) { return p.last.at("void_ratio"); })),
+                      mean(z) - mean(values(groups[base_key], [](const Preparation& p) { return p.last.at("coordination_number"); })));
+        versus = buf;
+      } else {
+        versus = " | |";
+      }
+    }
+    std::printf("| %s | %.0f | %s%s (%.2f) | %+.3f | %s (%.1f) | %s (%.2f) | %+.2f |%s %s | %s | %s | %s | %s | %s |\n", label.c_str(),
+                first.particles, per_sample ? "" : (std::to_string(g.size()) + " | ").c_str(), mean_sd(e, 3).c_str(), e_paper,
+                mean(e) - e_paper, mean_sd(values(g, side), 2).c_str(), l_paper, mean_sd(z, 2).c_str(), z_paper, mean(z) - z_paper,
+                versus.c_str(), mean_sd(values(g, [](const Preparation& p) { return p.last.at("coordination_number_mechanical"); }), 2).c_str(),
+                mean_sd(values(g, [](const Preparation& p) { return 100 * p.last.at("sliding_fraction"); }), 1).c_str(),
+                mean_sd(values(g, [](const Preparation& p) { return p.last.at("mean_normal_force"); }), 3).c_str(),
+                mean_sd(values(g, [](const Preparation& p) { return p.last.at("unbalanced_force_ratio"); }), 5).c_str(),
+                mean_sd(values(g, [](const Preparation& p) { return p.last.at("step"); }), 0).c_str(),
+                mean_sd(values(g, [](const Preparation& p) { return p.wall_s; }), 0).c_str());
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 3) {
+    std::fputs(usage, stderr);
+    return 2;
+  }
+  const std::string cmd = argv[1];
+  std::vector<std::string> positional;
+  std::string sample, references, prefix, baseline, run;
+  bool per_sample = false;
+  for (int i = 2; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--sample" && i + 1 < argc) sample = argv[++i];
+    else if (a == "--references" && i + 1 < argc) references = argv[++i];
+    else if (a == "--prefix" && i + 1 < argc) prefix = argv[++i];
+    else if (a == "--run" && i + 1 < argc) run = argv[++i];
+    else if (a == "--baseline" && i + 1 < argc) baseline = argv[++i];
+    else if (a == "--per-sample") per_sample = true;
+    else if (!a.empty() && a[0] == '-') { std::fprintf(stderr, "figure-data: unknown option '%s'\n%s", a.c_str(), usage); return 2; }
+    else positional.push_back(a);
+  }
+  try {
+    if (cmd == "figures" && positional.size() == 2) {
+      if (references.empty()) references = "reference_data/paper.yaml";
+      return figures(positional[0], positional[1], sample, references);
+    }
+    if (cmd == "settings" && positional.size() == 1) return settings(positional[0], prefix, run);
+    if (cmd == "samples-table" && !positional.empty() && !references.empty())
+      return samples_table(positional, references, per_sample, baseline);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "figure-data: %s\n", e.what());
+    return 1;
+  }
+  std::fputs(usage, stderr);
+  return 2;
+}

@@ -1,0 +1,446 @@
+#include "figures.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <set>
+#include <stdexcept>
+
+#include "analysis/fabric.hpp"
+#include "analysis/measurements.hpp"
+#include "control/stress_path.hpp"
+#include "ensemble.hpp"
+#include "quantities.hpp"
+
+namespace validation {
+
+namespace {
+
+std::string format_number(double x) {
+  if (std::isnan(x)) return "NaN";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.10g", x);
+  return buf;
+}
+
+std::string quoted(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+const std::vector<double>& column(const Columns& c, const std::string& name) {
+  const auto it = c.find(name);
+  if (it == c.end()) throw std::out_of_range("the result has no column '" + name + "'");
+  return it->second;
+}
+
+bool in_cycles(const SeriesRow& r, int max_cycle) { return max_cycle < 0 || r("cycle") <= max_cycle; }
+
+}  // namespace
+
+std::string Table::text() const {
+  std::string out;
+  for (const std::string& c : comments) out += "# " + c + "\n";
+  out += "#";
+  if (!labels.empty()) out += " label\t";
+  for (std::size_t k = 0; k < columns.size(); ++k) {
+    out += k ? '\t' : ' ';
+    out += columns[k];
+  }
+  out += "\n";
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (i > 0 && std::find(block_starts.begin(), block_starts.end(), i) != block_starts.end()) out += "\n\n";
+    if (!labels.empty()) out += quoted(labels[i]) + "\t";
+    for (std::size_t k = 0; k < rows[i].size(); ++k) {
+      if (k) out += '\t';
+      out += format_number(rows[i][k]);
+    }
+    out += "\n";
+  }
+  return out;
+}
+
+double Table::at(std::size_t row, const std::string& name) const {
+  for (std::size_t k = 0; k < columns.size(); ++k)
+    if (columns[k] == name || columns[k].rfind(name + " [", 0) == 0) return rows.at(row).at(k);
+  throw std::out_of_range("no column '" + name + "'");
+}
+
+std::size_t row_count(const Columns& series) {
+  const auto it = series.find("step");
+  return it == series.end() ? (series.empty() ? 0 : series.begin()->second.size()) : it->second.size();
+}
+
+dem::Mat3 stress_of(const SeriesRow& r) {
+  dem::Mat3 s;
+  s << r("stress_11"), r("stress_12"), r("stress_13"),  //
+      r("stress_12"), r("stress_22"), r("stress_23"),   //
+      r("stress_13"), r("stress_23"), r("stress_33");
+  return s;
+}
+
+double q_over_p(const dem::Mat3& stress_Pa) {
+  const double p = dem::mean_stress(stress_Pa);
+  return p > 0 ? dem::deviator_stress(stress_Pa) / p : 0.0;
+}
+
+Eigen::Vector2d pi_stress(const dem::Vec3& principal_Pa) {
+  const double p = principal_Pa.sum() / 3;
+  return p > 0 ? Eigen::Vector2d(dem::pi_plane(principal_Pa) / p) : Eigen::Vector2d::Zero();
+}
+
+double fabric_ratio_of(const SeriesRow& r, const std::string& which) {
+  dem::Mat3 f;
+  const auto c = [&](const char* ij) { return r(which + "_" + ij); };
+  f << c("11"), c("12"), c("13"), c("12"), c("22"), c("23"), c("13"), c("23"), c("33");
+  const double m = dem::mean_invariant(f);
+  return m > 0 ? dem::deviator_invariant(f) / m : 0.0;
+}
+
+Table target_path(const Columns& legs) {
+  Table t;
+  t.comments = {"target path in the normalised pi-plane, A at the origin: one arrow per distinct leg (from /legs target_1..3)",
+                "x = (s3 - s2)/(sqrt(2) p), y = (2 s1 - s2 - s3)/(sqrt(6) p), p = mean of the leg's targets"};
+  t.columns = {"x_from [1]", "y_from [1]", "dx [1]", "dy [1]"};
+  const auto& t1 = column(legs, "target_1");
+  const auto& t2 = column(legs, "target_2");
+  const auto& t3 = column(legs, "target_3");
+  Eigen::Vector2d from = Eigen::Vector2d::Zero();
+  std::set<std::vector<long long>> seen;  // legs compared to 1e-4, as drawn
+  const auto key = [](double x) { return std::llround(x * 1e4); };
+  for (std::size_t k = 0; k < t1.size(); ++k) {
+    const Eigen::Vector2d to = pi_stress(dem::Vec3(t1[k], t2[k], t3[k]));
+    if (seen.insert({key(from[0]), key(from[1]), key(to[0]), key(to[1])}).second)
+      t.rows.push_back({from[0], from[1], to[0] - from[0], to[1] - from[1]});
+    from = to;
+  }
+  return t;
+}
+
+Table stress_path(const Columns& series) {
+  Table t;
+  t.comments = {"measured stress path in the normalised pi-plane, every row (axis stresses s11, s22, s33)"};
+  t.columns = {"x [1]", "y [1]", "cycle [1]"};
+  for (std::size_t i = 0; i < row_count(series); ++i) {
+    const SeriesRow r{series, i};
+    const Eigen::Vector2d xy = pi_stress(stress_of(r).diagonal());
+    t.rows.push_back({xy[0], xy[1], r("cycle")});
+  }
+  return t;
+}
+
+Table named_states(double p, double R) {
+  Table t;
+  t.comments = {"named states of the stress paths (p = " + format_number(p) + " Pa, R = " + format_number(R) +
+                ") in the normalised pi-plane"};
+  t.columns = {"x [1]", "y [1]"};
+  for (const char* name : {"A", "TC1", "TC2", "TC3", "TE1", "TE2", "TE3"}) {
+    const Eigen::Vector2d xy = pi_stress(dem::named_state(name, p, R));
+    t.labels.push_back(name);
+    t.rows.push_back({xy[0], xy[1]});
+  }
+  return t;
+}
+
+Table target_q(double p, double R) {
+  Table t;
+  t.comments = {"deviator stress q of the TC and TE states (p = " + format_number(p) + " Pa, R = " + format_number(R) + ")"};
+  t.columns = {"q [kPa]"};
+  for (const char* name : {"TC1", "TE1"}) {
+    const dem::Vec3 s = dem::named_state(name, p, R);
+    t.labels.push_back(std::string(name).substr(0, 2));
+    t.rows.push_back({dem::deviator_stress(dem::Mat3(s.asDiagonal())) / 1e3});
+  }
+  return t;
+}
+
+Table q_against_p(const Columns& series) {
+  Table t;
+  t.comments = {"mean stress p and deviator stress q of the full stress tensor, every row"};
+  t.columns = {"p [kPa]", "q [kPa]"};
+  for (std::size_t i = 0; i < row_count(series); ++i) {
+    const dem::Mat3 s = stress_of({series, i});
+    t.rows.push_back({dem::mean_stress(s) / 1e3, dem::deviator_stress(s) / 1e3});
+  }
+  return t;
+}
+
+Table qp_against_deviatoric_strain(const Columns& series, int max_cycle) {
+  Table t;
+  t.comments = {"deviatoric strain of paper Eq. 4 and q/p, cycles <= " + std::to_string(max_cycle)};
+  t.columns = {"eps_d [%]", "q/p [1]"};
+  for (std::size_t i = 0; i < row_count(series); ++i) {
+    const SeriesRow r{series, i};
+    if (in_cycles(r, max_cycle)) t.rows.push_back({100 * r("deviatoric_strain"), q_over_p(stress_of(r))});
+  }
+  return t;
+}
+
+Table volumetric_strain_against(const Columns& series, int test, int max_cycle) {
+  const bool against_qp = test == 2 || test == 3;
+  Table t;
+  t.comments = {std::string("volumetric strain 1 - V/V0 (compression +) against ") +
+                (against_qp ? "q/p" : "s11/s33") + ", cycles <= " + std::to_string(max_cycle)};
+  t.columns = {against_qp ? "q/p [1]" : "s11/s33 [1]", "eps_v [%]"};
+  for (std::size_t i = 0; i < row_count(series); ++i) {
+    const SeriesRow r{series, i};
+    if (!in_cycles(r, max_cycle)) continue;
+    const dem::Mat3 s = stress_of(r);
+    t.rows.push_back({against_qp ? q_over_p(s) : (s(2, 2) > 0 ? s(0, 0) / s(2, 2) : 0.0), 100 * r("volumetric_strain")});
+  }
+  return t;
+}
+
+Table qp_against_fabric(const Columns& series, const std::string& which, int max_cycle) {
+  Table t;
+  t.comments = {(which == "fabric" ? std::string("fabric ratio F_d/F_m of all contacts (paper Eq. 8)")
+                                   : std::string("fabric ratio F^s_d/F^s_m of the strong contacts (paper Eqs. 9-10)")) +
+                " and q/p, cycles <= " + std::to_string(max_cycle)};
+  t.columns = {which + "_ratio [1]", "q/p [1]"};
+  for (std::size_t i = 0; i < row_count(series); ++i) {
+    const SeriesRow r{series, i};
+    if (in_cycles(r, max_cycle)) t.rows.push_back({fabric_ratio_of(r, which), q_over_p(stress_of(r))});
+  }
+  return t;
+}
+
+const std::vector<CycleQuantity>& cycle_quantities() {
+  // The sliding fraction has no cycle 0: the first row's sliding flags come from the saved sample
+  // (its preparation friction), not from a step with the shearing friction.
+  static const std::vector<CycleQuantity> q = {{"epsv_percent", "volumetric_strain", "%", 100, true},
+                                               {"coordination", "coordination_number", "1", 1, true},
+                                               {"sliding_percent", "sliding_fraction", "%", 100, false}};
+  return q;
+}
+
+Table cycle_statistics(const std::vector<const TestResult*>& tests, const CycleQuantity& q) {
+  std::map<int, std::vector<double>> by_cycle;
+  for (const TestResult* t : tests) {
+    if (!t || !t->series.count(q.column) || t->series.at(q.column).empty()) continue;
+    if (q.from_start) by_cycle[0].push_back(q.scale * t->series.at(q.column).front());
+    const int last = last_cycle(t->series);
+    for (int c = 1; c <= last; ++c)
+      if (const auto v = at_cycle_end(*t, q.column, c)) by_cycle[c].push_back(q.scale * *v);
+  }
+  Table out;
+  out.comments = {q.column + " at the end of each cycle" + (q.from_start ? " (cycle 0: the first row, the start of shearing)" : "") +
+                  ", over " + std::to_string(tests.size()) + " sample(s)"};
+  out.columns = {"cycle [1]", "mean [" + q.unit + "]", "sd [" + q.unit + "]", "n [1]", "min [" + q.unit + "]", "max [" + q.unit + "]"};
+  for (const auto& [c, values] : by_cycle) {
+    const Spread s = spread(values);
+    out.rows.push_back({static_cast<double>(c), s.mean, s.sd, static_cast<double>(s.n),
+                        *std::min_element(values.begin(), values.end()), *std::max_element(values.begin(), values.end())});
+  }
+  return out;
+}
+
+int last_cycle(const Columns& series) {
+  const auto it = series.find("cycle");
+  if (it == series.end() || it->second.empty()) return 0;
+  return static_cast<int>(*std::max_element(it->second.begin(), it->second.end()));
+}
+
+Table test5_blocks(const Columns& series, const Columns& legs, std::vector<std::string>& titles) {
+  // The loaded axis of each cycle: the largest target of its legs that are not A.
+  const auto& lc = column(legs, "cycle");
+  const auto& t1 = column(legs, "target_1");
+  const auto& t2 = column(legs, "target_2");
+  const auto& t3 = column(legs, "target_3");
+  std::map<int, int> axis;
+  int cycles = 0;
+  for (std::size_t k = 0; k < lc.size(); ++k) {
+    int a = 1;
+    if (t2[k] > t1[k] && t2[k] >= t3[k]) a = 2;
+    if (t3[k] > t1[k] && t3[k] > t2[k]) a = 3;
+    if (t1[k] != t2[k] || t2[k] != t3[k]) axis[static_cast<int>(lc[k])] = a;
+    cycles = std::max(cycles, static_cast<int>(lc[k]));
+  }
+  std::map<int, int> block_of;  // cycle -> block (from 1)
+  struct Block {
+    int first, last, axis;
+  };
+  std::vector<Block> blocks;
+  for (int c = 1, prev = 0; c <= cycles; ++c) {
+    const int a = axis.count(c) ? axis[c] : 0;
+    if (a != prev) blocks.push_back({c, c, a}), prev = a;
+    blocks.back().last = c;
+    block_of[c] = static_cast<int>(blocks.size());
+  }
+  titles.clear();
+  for (std::size_t b = 0; b < blocks.size(); ++b) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "cycles %d–%d: A↔TC%d (steps %zu–%zu)", blocks[b].first, blocks[b].last, blocks[b].axis,
+                  2 * b + 1, 2 * b + 2);
+    titles.push_back(buf);
+  }
+  Table t;
+  t.comments = {"Test 5: s11/s33 and volumetric strain, every row; one block (gnuplot index) per run of cycles loading the same axis",
+                "each block starts with the previous block's last row, so the curve is continuous"};
+  t.columns = {"s11/s33 [1]", "eps_v [%]", "cycle [1]"};
+  int current = 0;
+  std::vector<double> last;
+  for (std::size_t i = 0; i < row_count(series); ++i) {
+    const SeriesRow r{series, i};
+    const int c = std::max(1, static_cast<int>(r("cycle")));
+    const int b = block_of.count(c) ? block_of[c] : current;
+    const dem::Mat3 s = stress_of(r);
+    const std::vector<double> row = {s(2, 2) > 0 ? s(0, 0) / s(2, 2) : 0.0, 100 * r("volumetric_strain"), r("cycle")};
+    if (b != current) {
+      if (current) {
+        t.block_starts.push_back(t.rows.size());
+        t.rows.push_back(last);
+      }
+      current = b;
+    }
+    t.rows.push_back(row);
+    last = row;
+  }
+  return t;
+}
+
+Table strain_increments(const Columns& series, int cycle, double scale) {
+  Table t;
+  t.comments = {"the legs of cycle " + std::to_string(cycle) +
+                    ": measured stress at the leg's end (normalised pi-plane) and the leg's strain increment in the pi-plane",
+                "arrow = increment x " + format_number(scale) + " (the scale of the panel)"};
+  t.columns = {"x [1]", "y [1]", "deps_x [1]", "deps_y [1]", "arrow_dx [1]", "arrow_dy [1]", "leg [1]", "order [1]"};
+  int order = 0;
+  for (std::size_t i = 0; i < row_count(series); ++i) {
+    const SeriesRow r{series, i};
+    if (r("leg_end") != 1 || static_cast<int>(r("cycle")) != cycle) continue;
+    const Eigen::Vector2d xy = pi_stress(stress_of(r).diagonal());
+    const double dx = r("pi_strain_increment_x"), dy = r("pi_strain_increment_y");
+    t.rows.push_back({xy[0], xy[1], dx, dy, dx * scale, dy * scale, r("leg"), static_cast<double>(++order)});
+  }
+  return t;
+}
+
+Table cycle_stress_path(const Columns& series, int cycle) {
+  Table t;
+  t.comments = {"measured stress path of cycle " + std::to_string(cycle) + " (from the leg end before it), normalised pi-plane"};
+  t.columns = {"x [1]", "y [1]"};
+  for (std::size_t i = 0; i < row_count(series); ++i) {
+    const SeriesRow r{series, i};
+    const int c = static_cast<int>(r("cycle"));
+    if (c != cycle && !(c == cycle - 1 && r("leg_end") == 1)) continue;
+    const Eigen::Vector2d xy = pi_stress(stress_of(r).diagonal());
+    t.rows.push_back({xy[0], xy[1]});
+  }
+  return t;
+}
+
+double arrow_scale(const Columns& series, const std::vector<int>& cycles) {
+  double longest = 0;
+  for (std::size_t i = 0; i < row_count(series); ++i) {
+    const SeriesRow r{series, i};
+    if (r("leg_end") != 1 || std::find(cycles.begin(), cycles.end(), static_cast<int>(r("cycle"))) == cycles.end()) continue;
+    longest = std::max(longest, std::hypot(r("pi_strain_increment_x"), r("pi_strain_increment_y")));
+  }
+  if (longest <= 0) return 1;
+  const double s = 0.12 / longest;
+  const double e = std::pow(10.0, std::trunc(std::log10(s) - (s < 1 ? 1 : 0)));
+  const double f = s / e;
+  return (f >= 5 ? 5 : f >= 2 ? 2 : 1) * e;
+}
+
+Table energy_balance(const Columns& series) {
+  Table t;
+  t.comments = {"energy balance, every row (cumulative values from the run's first step; engine/README.md, Energy balance)"};
+  const std::vector<std::pair<std::string, std::string>> cols = {
+      {"time", "s"},  {"work_by_cell", "J"},          {"dissipated_by_damping", "J"},   {"dissipated_by_friction", "J"},
+      {"elastic_energy_normal", "J"}, {"elastic_energy_tangential", "J"}, {"kinetic_energy_centred", "J"}, {"energy_closure_error", "1"}};
+  std::vector<const std::vector<double>*> data;
+  for (const auto& [name, unit] : cols) {
+    t.columns.push_back(name + " [" + unit + "]");
+    data.push_back(&column(series, name));
+  }
+  for (std::size_t i = 0; i < row_count(series); ++i) {
+    std::vector<double> row;
+    for (const auto* d : data) row.push_back(d->at(i));
+    t.rows.push_back(row);
+  }
+  return t;
+}
+
+Table grading_target(const dem::SceneConfig& scene) {
+  Table t;
+  const bool mass = scene.particles.grading_basis == dem::GradingCurve::Basis::Mass;
+  t.comments = {std::string("grading curve of the scene (particles.grading), read by ") + (mass ? "mass" : "count")};
+  t.columns = {"diameter [mm]", "percent_finer [%]"};
+  for (std::size_t k = 0; k < scene.particles.grading_diameters_m.size(); ++k)
+    t.rows.push_back({1e3 * scene.particles.grading_diameters_m[k], scene.particles.grading_percent_finer.at(k)});
+  return t;
+}
+
+Table grading_realised(const std::vector<double>& radius_m) {
+  std::vector<double> d;
+  for (double r : radius_m) d.push_back(2e3 * r);
+  std::sort(d.begin(), d.end());
+  double total = 0;
+  for (double x : d) total += x * x * x;
+  Table t;
+  t.comments = {"grading realised by " + std::to_string(d.size()) + " spheres, sorted by diameter"};
+  t.columns = {"diameter [mm]", "percent_finer_by_mass [%]", "percent_finer_by_count [%]"};
+  double mass = 0;
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    mass += d[i] * d[i] * d[i];
+    t.rows.push_back({d[i], 100 * mass / total, 100 * static_cast<double>(i + 1) / static_cast<double>(d.size())});
+  }
+  return t;
+}
+
+double grading_diameter_at(const std::vector<double>& d, const std::vector<double>& P, double percent) {
+  if (d.empty() || d.size() != P.size()) return NAN;
+  if (percent <= P.front()) return d.front();
+  for (std::size_t k = 1; k < d.size(); ++k)
+    if (percent <= P[k]) return d[k - 1] + (d[k] - d[k - 1]) * (percent - P[k - 1]) / (P[k] - P[k - 1]);
+  return d.back();
+}
+
+Table spheres(const dem::Particles& particles, const dem::PeriodicCell& cell) {
+  Table t;
+  const dem::Vec3& L = cell.lengths();
+  t.comments = {std::to_string(particles.size()) + " spheres in a cell of " + format_number(1e3 * L[0]) + " x " +
+                format_number(1e3 * L[1]) + " x " + format_number(1e3 * L[2]) + " mm"};
+  t.columns = {"x1 [mm]", "x2 [mm]", "x3 [mm]", "diameter [mm]"};
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    const dem::Vec3 x = cell.to_real(particles.s[i]);
+    t.rows.push_back({1e3 * x[0], 1e3 * x[1], 1e3 * x[2], 2e3 * particles.radius[i]});
+  }
+  return t;
+}
+
+std::optional<double> paper_value(const std::vector<Row>& rows, const std::string& quantity, const std::string& density) {
+  for (const Row& r : rows)
+    if (r.quantity == quantity && (density.empty() || r.density == density)) return r.reference;
+  return std::nullopt;
+}
+
+double square_axis_max(const std::vector<const Table*>& tables) {
+  double m = 0;
+  for (const Table* t : tables)
+    for (const auto& row : t->rows)
+      for (std::size_t k = 0; k < 2 && k < row.size(); ++k) m = std::max(m, row[k]);
+  m *= 1.05;
+  if (m < 0.3) m = 0.3;
+  return std::ceil(m / 0.05 - 1e-9) * 0.05;
+}
+
+void GnuplotValues::number(const std::string& name, double value) { lines_.emplace_back(name, format_number(value)); }
+void GnuplotValues::text(const std::string& name, const std::string& value) { lines_.emplace_back(name, quoted(value)); }
+void GnuplotValues::texts(const std::string& name, const std::vector<std::string>& values) {
+  lines_.emplace_back(name + "_n", std::to_string(values.size()));
+  for (std::size_t k = 0; k < values.size(); ++k) lines_.emplace_back(name + "_" + std::to_string(k + 1), quoted(values[k]));
+}
+
+std::string GnuplotValues::text_file(const std::string& comment) const {
+  std::string out = "# " + comment + "\n";
+  for (const auto& [name, value] : lines_) out += name + " = " + value + "\n";
+  return out;
+}
+
+}  // namespace validation

@@ -1,0 +1,121 @@
+#pragma once
+// The data behind the report's figures (reports/gnuplot/*.gp draw them): pure functions of a
+// result's columns, of a scene and of the paper's rows, each giving one table with named columns
+// and units. The stress invariants and the pi-plane projection are the engine's own
+// (analysis/measurements.hpp, analysis/fabric.hpp), recomputed from the stress and fabric tensors
+// written in the time series, so a figure shows what the engine's definitions give.
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "config/scene_config.hpp"
+#include "core/particles.hpp"
+#include "cell/periodic_cell.hpp"
+#include "results.hpp"
+#include "rows.hpp"
+
+namespace validation {
+
+// One data file: comment lines, a header naming each column with its unit, rows of numbers, and
+// optionally a text label per row (written as the first column, quoted) and gnuplot index blocks.
+struct Table {
+  std::vector<std::string> comments;  // written as "# ..." lines before the header
+  std::vector<std::string> columns;   // "name [unit]"
+  std::vector<std::string> labels;    // empty, or one per row
+  std::vector<std::vector<double>> rows;
+  std::vector<std::size_t> block_starts;  // rows that start a new block (two blank lines before)
+  std::string text() const;
+  std::size_t size() const { return rows.size(); }
+  double at(std::size_t row, const std::string& column) const;  // by name (without the unit); throws
+};
+
+// A view of one time-series row: `s.at("q")` reads column q at row i.
+struct SeriesRow {
+  const Columns& series;
+  std::size_t i;
+  double operator()(const std::string& column) const { return series.at(column).at(i); }
+};
+std::size_t row_count(const Columns& series);
+
+// The stress tensor of a row (stress_11 ... stress_23) [Pa], and what the engine derives from it:
+// p and q (principal values of the full tensor), q/p, sigma_11/sigma_33, and the normalised
+// pi-plane point of the axis stresses, pi_plane(diag)/p.
+dem::Mat3 stress_of(const SeriesRow& r);
+double q_over_p(const dem::Mat3& stress_Pa);
+Eigen::Vector2d pi_stress(const dem::Vec3& principal_Pa);
+
+// Fabric ratio F_d / F_m of a row's fabric tensor, "fabric" or "strong_fabric" (paper Eqs. 8-10).
+double fabric_ratio_of(const SeriesRow& r, const std::string& which);
+
+// Fig. 3: the target path of a test from its /legs, as arrows (x_from, y_from, dx, dy) in the
+// normalised pi-plane, A at the origin, each distinct leg once.
+Table target_path(const Columns& legs);
+// Fig. 3: the measured stress path, every row: x, y, cycle.
+Table stress_path(const Columns& series);
+// Fig. 3: the named states A, TC1..3, TE1..3 of a stress-path stage (p, R), projected.
+Table named_states(double mean_stress_Pa, double stress_ratio);
+// Fig. 4: the target q of the TC and TE states [kPa] (rows TC, TE).
+Table target_q(double mean_stress_Pa, double stress_ratio);
+
+// Figs. 4-6, 12, 13: every row (cycle <= max_cycle if given) of a test.
+Table q_against_p(const Columns& series);
+Table qp_against_deviatoric_strain(const Columns& series, int max_cycle);
+Table volumetric_strain_against(const Columns& series, int test, int max_cycle);  // x: q/p (Tests 2, 3) or s11/s33
+Table qp_against_fabric(const Columns& series, const std::string& which, int max_cycle);
+
+// Figs. 7, 10, 11: a quantity at the end of each cycle over the samples given (one test of one
+// density per sample): cycle, mean, sd, n, min, max. `from_start` adds cycle 0 = the first row.
+struct CycleQuantity {
+  std::string name, column, unit;
+  double scale = 1;
+  bool from_start = true;
+};
+const std::vector<CycleQuantity>& cycle_quantities();  // epsv_percent, coordination, sliding_percent
+Table cycle_statistics(const std::vector<const TestResult*>& tests, const CycleQuantity& q);
+
+// Fig. 8: Test 5's eps_v against s11/s33 over all cycles, one block per run of cycles loading the
+// same axis (from the /legs targets); each block starts at the previous block's last point.
+// `titles` gets one caption per block ("cycles 1–10: A↔TC1 (steps 1–2)").
+Table test5_blocks(const Columns& series, const Columns& legs, std::vector<std::string>& titles);
+
+// Fig. 9: the legs of cycle c: measured stress at the leg end, the leg's strain increment in the
+// pi-plane, the arrow (increment x scale), leg index and order; and the stress path of the cycle.
+Table strain_increments(const Columns& series, int cycle, double scale);
+Table cycle_stress_path(const Columns& series, int cycle);
+// A round arrow scale (1, 2 or 5 x 10^k) making the longest increment of these cycles about 0.12.
+double arrow_scale(const Columns& series, const std::vector<int>& cycles);
+int last_cycle(const Columns& series);
+
+// Energy balance columns of a run, every row.
+Table energy_balance(const Columns& series);
+
+// Fig. 1: the scene's grading curve, and the one realised in a set of radii (by mass and count).
+Table grading_target(const dem::SceneConfig& scene);
+Table grading_realised(const std::vector<double>& radius_m);
+// The diameter [m] at `percent` finer on a grading curve (linear between its points).
+double grading_diameter_at(const std::vector<double>& diameters_m, const std::vector<double>& percent_finer, double percent);
+// Fig. 2: sphere centres and diameters [mm].
+Table spheres(const dem::Particles& particles, const dem::PeriodicCell& cell);
+
+// The paper's value of `quantity` for `density` (the row of reference_data/paper.yaml), if any.
+std::optional<double> paper_value(const std::vector<Row>& rows, const std::string& quantity, const std::string& density);
+
+// The axis limit of Figs. 12-14: the largest value of the first two columns x 1.05, at least 0.3,
+// rounded up to 0.05.
+double square_axis_max(const std::vector<const Table*>& tables);
+
+// gnuplot variable definitions (values.gp): numbers, strings, and lists of strings as NAME_n and
+// NAME_1 ... NAME_n (the scripts read them with value(sprintf(...))).
+class GnuplotValues {
+ public:
+  void number(const std::string& name, double value);
+  void text(const std::string& name, const std::string& value);
+  void texts(const std::string& name, const std::vector<std::string>& values);
+  std::string text_file(const std::string& comment) const;
+
+ private:
+  std::vector<std::pair<std::string, std::string>> lines_;
+};
+
+}  // namespace validation
