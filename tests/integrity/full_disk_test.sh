@@ -26,7 +26,9 @@ scene=$here/scenes/stability/base.yaml
 fail=0
 ok=0
 failed=0
-# The reference, on a disk with room: every complete run must match its time series.
+# The reference, on a disk with room: every complete run must match its time series. (Made anew:
+# one left by an earlier engine or scene is not this run's, and dem would refuse to replace it.)
+rm -f "$work"/reference.*
 "$dem" run "$scene" --set 'particles.lattice.n=[4,4,4]' --out "$work/reference.h5" --quiet 2>/dev/null ||
   { echo "FAIL: the reference run failed"; exit 1; }
 "$dem" table "$work/reference.h5" step p > "$work/reference.txt"
