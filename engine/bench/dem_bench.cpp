@@ -26,12 +26,18 @@
 // spread and the process's peak memory (VmHWM; run one size per process). ORDER: `tiled` (copy by
 // copy), `sorted` (one Morton curve over the whole packing, bench/tiling.hpp) or `random`.
 //   dem-bench size BENCH_DIR TILES STEPS REPETITIONS [SKIN] [ORDER]
+//
+// `dem-bench fused BENCH_DIR TILES STEPS REPETITIONS`: an experiment on the same packing, one
+// thread: the engine's two passes per step against one fused sweep (bench/fused_sweep.hpp).
 #include <omp.h>
 #include <sys/resource.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <sstream>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -39,6 +45,7 @@
 #include <utility>
 #include <vector>
 
+#include "bench/fused_sweep.hpp"
 #include "bench/tiling.hpp"
 #include "config/scene_config.hpp"
 #include "dynamics/kernel_simd.hpp"
@@ -82,6 +89,14 @@ struct Result {
   double speedup;  // median rate / the 1-thread median of the same friction
 };
 
+// CPU time of the calling thread [s]: with one thread, the run's CPU time, which a busy machine
+// inflates less than the wall time.
+double thread_cpu_s() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
 // One timed run: the scene's simulation, 200 warm-up steps (list built, caches filled), then
 // `steps` timed steps at constant stress. Inside a parallel region every thread starts timing
 // together.
@@ -90,6 +105,7 @@ struct Timed {
   std::vector<dem::Vec3> positions;  // at the end
   double contacts_per_particle;
   std::size_t rebuilds;  // Verlet list builds during the timed steps
+  double cpu_s;          // CPU time of the calling thread in the timed steps (all of it with one thread)
 };
 Timed time_steps(dem::Simulation& sim, const dem::SceneConfig& scene, long steps) {
   dem::CellTargets targets;
@@ -99,10 +115,13 @@ Timed time_steps(dem::Simulation& sim, const dem::SceneConfig& scene, long steps
   const std::size_t builds = sim.verlet_list().builds();
 #pragma omp barrier
   const auto t0 = std::chrono::steady_clock::now();
+  const double cpu0 = thread_cpu_s();
   for (long i = 0; i < steps; ++i) sim.step(targets, servo);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double cpu = thread_cpu_s() - cpu0;
   const auto n = static_cast<double>(sim.particles().size());
-  return {wall, sim.particles().s, 2.0 * static_cast<double>(sim.sums().contacts) / n, sim.verlet_list().builds() - builds};
+  return {wall, sim.particles().s, 2.0 * static_cast<double>(sim.sums().contacts) / n, sim.verlet_list().builds() - builds,
+          cpu};
 }
 Timed time_run(const dem::SceneConfig& scene, long steps) {
   dem::Simulation sim = dem::build_simulation(scene);
@@ -169,20 +188,28 @@ int run_size(const std::string& dir, int tiles, long steps, int reps, double ski
     return st;
   };
   const auto n = static_cast<double>(base.particles.size()) * tiles * tiles * tiles;
-  const double frictions[] = {0.5, 0.0};
-  const int threads[] = {1, 2};
+  // BENCH_FRICTIONS and BENCH_THREADS (space-separated) time fewer ways, e.g. under perf.
+  const auto list_from_env = [](const char* name, const char* fallback) {
+    const char* v = std::getenv(name);
+    std::istringstream in(v && *v ? v : fallback);
+    std::vector<double> out;
+    for (double x; in >> x;) out.push_back(x);
+    return out;
+  };
+  const std::vector<double> frictions = list_from_env("BENCH_FRICTIONS", "0.5 0");
+  const std::vector<double> threads = list_from_env("BENCH_THREADS", "1 2");
   struct Way {
     double friction;
     int threads;
-    std::vector<double> rates, setup_s;
+    std::vector<double> rates, cpu_rates, setup_s;
     double z = 0;
     std::size_t rebuilds = 0;  // Verlet list builds in the timed steps, summed over repetitions
     bool same = true;
   };
   std::vector<Way> ways;
   for (double mu : frictions)
-    for (int t : threads) ways.push_back({mu, t, {}, {}});
-  std::vector<dem::Vec3> reference[2];  // the 1-thread end positions of each friction
+    for (double t : threads) ways.push_back({mu, static_cast<int>(t), {}, {}, {}});
+  std::vector<dem::Vec3> reference[2];  // the end positions of each friction's first run
   for (int r = 0; r < reps; ++r)
     for (Way& w : ways) {
       const dem::SceneConfig scene =
@@ -194,45 +221,100 @@ int run_size(const std::string& dir, int tiles, long steps, int reps, double ski
       const Timed t = time_steps(sim, scene, steps);
       w.rebuilds += t.rebuilds;
       w.rates.push_back(n * static_cast<double>(steps) / t.wall_s);
+      w.cpu_rates.push_back(n * static_cast<double>(steps) / t.cpu_s);
       w.z = t.contacts_per_particle;
       auto& ref = reference[w.friction > 0 ? 0 : 1];
-      if (w.threads == 1 && r == 0) ref = t.positions;
+      if (ref.empty()) ref = t.positions;
       w.same = w.same && t.positions == ref;
     }
   const double peak_MB = status_MB("VmHWM");
   std::printf("dem-bench size: %.0f spheres (8,000 x %d^3), %s order, %ld steps x %d repetitions, skin %g m\n", n, tiles,
               order.c_str(), steps, reps, skin);
-  std::printf("%-9s %-8s %-22s %-24s %-8s %s\n", "friction", "threads", "particle-steps/s (med)", "min .. max", "2Nc/Np",
-              "same bits as 1 thread");
+  std::printf("%-9s %-8s %-22s %-24s %-14s %-8s %s\n", "friction", "threads", "particle-steps/s (med)", "min .. max",
+              "per CPU-s (1)", "2Nc/Np", "same bits as 1 thread");
   std::ofstream json(dir + "/size_" + std::to_string(static_cast<long long>(n)) + "_" + order + ".json");
-  json << "{\"particles\": " << static_cast<long long>(n) << ", \"tiles\": " << tiles << ", \"order\": \"" << order
-       << "\", \"steps\": " << steps << ", \"repetitions\": " << reps << ", \"verlet_skin_m\": " << skin
-       << ", \"vector_lanes\": " << dem::simd_width() << ", \"baseline_rss_MB\": " << baseline_MB
-       << ", \"peak_rss_MB\": " << peak_MB << ", \"peak_bytes_per_particle\": " << (peak_MB - baseline_MB) * 1048576.0 / n
-       << ", \"runs\": [";
-  const char* sep = "";
+  // One run per line, as in bench.json (reports/bench/run_bench.sh picks lines with grep).
+  json << "{\n  \"code\": \"cyclic-triax dem\",\n  \"version\": \"" << dem::software_version << "\",\n  \"particles\": "
+       << static_cast<long long>(n) << ",\n  \"tiles\": " << tiles << ",\n  \"order\": \"" << order
+       << "\",\n  \"steps\": " << steps << ",\n  \"warmup_steps\": 200,\n  \"repetitions\": " << reps
+       << ",\n  \"verlet_skin_m\": " << skin << ",\n  \"vector_lanes\": " << dem::simd_width()
+       << ",\n  \"baseline_rss_MB\": " << baseline_MB << ",\n  \"peak_rss_MB\": " << peak_MB
+       << ",\n  \"peak_bytes_per_particle\": " << (peak_MB - baseline_MB) * 1048576.0 / n << ",\n  \"runs\": [";
+  const char* sep = "\n    ";
   bool all_same = true;
   for (Way& w : ways) {
     std::sort(w.rates.begin(), w.rates.end());
     std::sort(w.setup_s.begin(), w.setup_s.end());
+    std::sort(w.cpu_rates.begin(), w.cpu_rates.end());
     const double median = w.rates[w.rates.size() / 2];
-    std::printf("%-9.2f %-8d %-22.3e %.3e .. %.3e  %-8.2f %s\n", w.friction, w.threads, median, w.rates.front(),
-                w.rates.back(), w.z, w.same ? "yes" : "NO");
-    json << std::exchange(sep, ", ") << "{\"friction\": " << w.friction << ", \"threads\": " << w.threads
+    std::printf("%-9.2f %-8d %-22.3e %.3e .. %.3e  %-14.3e %-8.2f %s\n", w.friction, w.threads, median, w.rates.front(),
+                w.rates.back(), w.cpu_rates[w.cpu_rates.size() / 2], w.z, w.same ? "yes" : "NO");
+    json << std::exchange(sep, ",\n    ") << "{\"friction\": " << w.friction << ", \"threads\": " << w.threads
          << ", \"particle_steps_per_s_median\": " << median << ", \"min\": " << w.rates.front() << ", \"max\": " << w.rates.back()
+         << ", \"cpu_rate_median\": " << w.cpu_rates[w.cpu_rates.size() / 2]
          << ", \"setup_s_median\": " << w.setup_s[w.setup_s.size() / 2] << ", \"coordination_number\": " << w.z
          << ", \"timed_rebuilds\": " << w.rebuilds << ", \"same_bits_as_1_thread\": " << (w.same ? "true" : "false") << "}";
     all_same = all_same && w.same;
   }
-  json << "]}\n";
+  json << "\n  ]\n}\n";
   std::printf("peak memory (VmHWM) %.1f MB, %.1f MB before tiling: %.0f bytes per particle\n", peak_MB, baseline_MB,
               (peak_MB - baseline_MB) * 1048576.0 / n);
+  return all_same ? 0 : 1;
+}
+
+// `dem-bench fused`: see bench/fused_sweep.hpp. The packing of `dem-bench size` (tiled order),
+// one thread, the engine's two passes against one fused sweep, both with the scalar per-pair and
+// per-particle code, interleaved repetition by repetition; each run 200 warm-up steps then STEPS
+// timed. Checks that both end in the same state bit for bit.
+int run_fused(const std::string& dir, int tiles, long steps, int reps) {
+  const std::string packing = packing_for(dir, 0.0);
+  const dem::SavedState base = dem::read_state(packing);
+  const auto n = static_cast<double>(base.particles.size()) * tiles * tiles * tiles;
+  omp_set_num_threads(1);
+  std::printf("dem-bench fused: %.0f spheres (8,000 x %d^3), one thread, scalar loops, %ld steps x %d repetitions\n", n, tiles,
+              steps, reps);
+  std::printf("%-9s %-28s %-28s %-8s %s\n", "friction", "two passes: p-steps/s (med)", "one sweep: p-steps/s (med)",
+              "ratio", "same bits");
+  bool all_same = true;
+  for (double mu : {0.5, 0.0}) {
+    const dem::SceneConfig scene = dem::scene_from_text(timing_scene(packing, mu, 2.5e-5, 1000000000L), dir + "/bench.yaml");
+    std::vector<double> rates[2];
+    bool same = true;
+    for (int r = 0; r < reps; ++r) {
+      std::vector<dem::Vec3> end[2];
+      for (int way = 0; way < 2; ++way) {
+        dem::bench::StepLoops loops(dem::bench::tile(base, tiles), scene.material, scene.damping, scene.time_step_s,
+                                    scene.verlet_skin_m);
+        const auto step = [&] { way == 0 ? loops.step_two_passes() : loops.step_fused(); };
+        for (int i = 0; i < 200; ++i) step();
+        const double cpu0 = thread_cpu_s();
+        for (long i = 0; i < steps; ++i) step();
+        rates[way].push_back(n * static_cast<double>(steps) / (thread_cpu_s() - cpu0));
+        end[way] = loops.particles().s;
+      }
+      same = same && end[0] == end[1];
+    }
+    for (auto& r : rates) std::sort(r.begin(), r.end());
+    const double a = rates[0][rates[0].size() / 2], b = rates[1][rates[1].size() / 2];
+    std::printf("%-9.2f %.3e (%.3e .. %.3e) %.3e (%.3e .. %.3e) %-8.2f %s\n", mu, a, rates[0].front(), rates[0].back(), b,
+                rates[1].front(), rates[1].back(), b / a, same ? "yes" : "NO");
+    all_same = all_same && same;
+  }
+  std::printf("(particle-steps per CPU-second of the timed steps)\n");
   return all_same ? 0 : 1;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc > 1 && std::string(argv[1]) == "fused") {
+    if (argc < 6) {
+      std::fprintf(stderr, "usage: dem-bench fused BENCH_DIR TILES STEPS REPETITIONS\n");
+      return 2;
+    }
+    std::filesystem::create_directories(argv[2]);
+    return run_fused(argv[2], std::stoi(argv[3]), std::stol(argv[4]), std::stoi(argv[5]));
+  }
   if (argc > 1 && std::string(argv[1]) == "size") {
     if (argc < 6) {
       std::fprintf(stderr, "usage: dem-bench size BENCH_DIR TILES STEPS REPETITIONS [SKIN] [ORDER]\n");
