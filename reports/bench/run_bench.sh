@@ -28,6 +28,8 @@ reps=${4:-7}
 export SKIN=${SKIN:-2.5e-5}
 size_plan=${SIZE_PLAN-"1:4000:5 2:600:5 4:100:3 5:60:3"}
 here=$(cd "$(dirname "$0")" && pwd)
+# The machine is shared: its load before and after says how far the figures are the code's.
+load_start=$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo unknown)
 work=$build/bench
 mkdir -p "$work" "$out"
 
@@ -129,6 +131,8 @@ lammps_value() { grep "\"$3\"" "$work/lammps_$1_$2.json" | sed "s/.*\"$3\": \([^
   echo "packing jammed with μ = 0.5 it loses them and, where its 2Nc/N falls during the run (→ end), it times a"
   echo "loosening packing; μ = 0.5 on the packing jammed with μ = 0 needs no tangential force to stand, so"
   echo "both codes time the same jammed packing with friction: that row is the like-for-like comparison."
+  echo "Load average of the machine (1, 5, 15 min; the benchmark's own runs add 1 to 2): $load_start at the"
+  echo "start, $(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo unknown) at the end; above 2 other work shared the two cores."
 } >"$out/bench.md"
 [ -n "$size_files" ] && {
   # A value of one run line: size_value FILE FRICTION THREADS KEY (THREADS "" for LAMMPS's lines).
