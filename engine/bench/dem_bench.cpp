@@ -201,7 +201,8 @@ int run_size(const std::string& dir, int tiles, long steps, int reps, double ski
   struct Way {
     double friction;
     int threads;
-    std::vector<double> rates, cpu_rates, setup_s;
+    std::vector<double> rates, cpu_rates;
+    std::vector<double> setup_s;  // making the packing and the simulation (the first list is built in the warm-up)
     double z = 0;
     std::size_t rebuilds = 0;  // Verlet list builds in the timed steps, summed over repetitions
     bool same = true;
