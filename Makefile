@@ -94,8 +94,9 @@ fuzz: deps
 	done
 
 # Speed of the engine (1 and 2 threads, and two runs at once) and of LAMMPS on the same packings
-# (medians of 7 repetitions of 5,000 steps; the 2-thread figure moves with the VM: see README)
-# -> reports/bench.{json,md}.
+# (medians of 7 repetitions of 5,000 steps; the 2-thread figure moves with the VM: see README),
+# then the cost against size, 8,000 to 1,000,000 spheres (reports/bench/run_bench.sh, SIZE_PLAN;
+# about a quarter of an hour in all) -> reports/bench.{json,md}.
 bench: build
 	@dpkg -s lammps >/dev/null 2>&1 || { echo "installing: lammps (for the side-by-side benchmark)"; \
 	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get update -qq && \

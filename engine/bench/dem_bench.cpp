@@ -18,20 +18,35 @@
 // The Verlet skin of the timed runs is SKIN (default 2.5e-5 m, the skin of the study's cyclic
 // tests; the packings are built with 2e-4 m).
 //   dem-bench [BENCH_DIR] [STEPS] [REPETITIONS] [SKIN]
+//
+// Cost against size: `dem-bench size` times the mu = 0 packing tiled TILES x TILES x TILES
+// (bench/tiling.hpp: 8,000 TILES^3 spheres, the same contacts and stress) with mu = 0.5 and
+// mu = 0, on 1 and 2 threads (the four ways interleaved repetition by repetition, each run from
+// the tiled packing again), and writes BENCH_DIR/size_<N>_<ORDER>.json with the medians, the
+// spread and the process's peak memory (VmHWM; run one size per process). ORDER: `tiled` (copy by
+// copy), `sorted` (one Morton curve over the whole packing, bench/tiling.hpp) or `random`.
+//   dem-bench size BENCH_DIR TILES STEPS REPETITIONS [SKIN] [ORDER]
+//
 #include <omp.h>
 #include <sys/resource.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <sstream>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "bench/tiling.hpp"
 #include "config/scene_config.hpp"
 #include "dynamics/kernel_simd.hpp"
+#include "io/state_io.hpp"
 #include "run/run_scene.hpp"
 #include "version.hpp"
 
@@ -71,6 +86,14 @@ struct Result {
   double speedup;  // median rate / the 1-thread median of the same friction
 };
 
+// CPU time of the calling thread [s]: with one thread, the run's CPU time, which a busy machine
+// inflates less than the wall time.
+double thread_cpu_s() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
 // One timed run: the scene's simulation, 200 warm-up steps (list built, caches filled), then
 // `steps` timed steps at constant stress. Inside a parallel region every thread starts timing
 // together.
@@ -78,19 +101,28 @@ struct Timed {
   double wall_s;
   std::vector<dem::Vec3> positions;  // at the end
   double contacts_per_particle;
+  std::size_t rebuilds;  // Verlet list builds during the timed steps
+  double cpu_s;          // CPU time of the calling thread in the timed steps (all of it with one thread)
 };
-Timed time_run(const dem::SceneConfig& scene, long steps) {
-  dem::Simulation sim = dem::build_simulation(scene);
+Timed time_steps(dem::Simulation& sim, const dem::SceneConfig& scene, long steps) {
   dem::CellTargets targets;
   for (auto& t : targets) t = {dem::AxisTarget::Mode::Stress, 0, 1e5, 0};
   const dem::ServoSettings servo{scene.servo.gain, 1.0};
   for (int i = 0; i < 200; ++i) sim.step(targets, servo);
+  const std::size_t builds = sim.verlet_list().builds();
 #pragma omp barrier
   const auto t0 = std::chrono::steady_clock::now();
+  const double cpu0 = thread_cpu_s();
   for (long i = 0; i < steps; ++i) sim.step(targets, servo);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double cpu = thread_cpu_s() - cpu0;
   const auto n = static_cast<double>(sim.particles().size());
-  return {wall, sim.particles().s, 2.0 * static_cast<double>(sim.sums().contacts) / n};
+  return {wall, sim.particles().s, 2.0 * static_cast<double>(sim.sums().contacts) / n, sim.verlet_list().builds() - builds,
+          cpu};
+}
+Timed time_run(const dem::SceneConfig& scene, long steps) {
+  dem::Simulation sim = dem::build_simulation(scene);
+  return time_steps(sim, scene, steps);
 }
 
 std::string packing_tag(double friction) { return friction > 0 ? "mu05" : "mu0"; }
@@ -110,9 +142,135 @@ std::string packing_for(const std::string& dir, double friction) {
   return path;
 }
 
+// Memory of this process from /proc/self/status [MB]: "VmRSS" (now) or "VmHWM" (peak); 0 if unknown.
+double status_MB(const std::string& field) {
+  std::ifstream in("/proc/self/status");
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind(field + ":", 0) == 0) return std::stod(line.substr(field.size() + 1)) / 1024.0;  // kB
+  return 0;
+}
+
+// The simulation of `scene` (its material, damping, time step and skin) started from `state`, as
+// build_simulation does for `particles: {state: ...}`.
+dem::Simulation simulation_from(dem::SavedState state, const dem::SceneConfig& scene) {
+  dem::Simulation sim(std::move(state.particles), state.cell, scene.material, scene.damping, scene.time_step_s,
+                      scene.verlet_skin_m);
+  sim.restore(0, state.strain_rate_per_s, std::move(state.contacts), state.history);
+  return sim;
+}
+
+// `dem-bench size`: see the top of the file.
+int run_size(const std::string& dir, int tiles, long steps, int reps, double skin, const std::string& order) {
+  if (order != "tiled" && order != "sorted" && order != "random") {
+    std::fprintf(stderr, "dem-bench size: ORDER must be tiled, sorted or random, got '%s'\n", order.c_str());
+    return 2;
+  }
+  const std::string packing = packing_for(dir, 0.0);
+  const dem::SavedState base = dem::read_state(packing);
+  const double baseline_MB = status_MB("VmRSS");  // the process with the 8,000-sphere packing loaded
+  // The packing of this size in the chosen order, made again for every run so that the process
+  // holds one copy only while a simulation runs.
+  const auto make_state = [&] {
+    dem::SavedState st = dem::bench::tile(base, tiles);
+    if (order == "sorted") st = dem::bench::reordered(st, dem::bench::spatial_order(st.particles, st.cell));
+    if (order == "random") {
+      std::vector<std::uint32_t> perm(st.particles.size());
+      for (std::size_t k = 0; k < perm.size(); ++k) perm[k] = static_cast<std::uint32_t>(k);
+      std::shuffle(perm.begin(), perm.end(), std::mt19937_64(7));
+      st = dem::bench::reordered(st, perm);
+    }
+    return st;
+  };
+  const auto n = static_cast<double>(base.particles.size()) * tiles * tiles * tiles;
+  // BENCH_FRICTIONS and BENCH_THREADS (space-separated) time fewer ways, e.g. under perf.
+  const auto list_from_env = [](const char* name, const char* fallback) {
+    const char* v = std::getenv(name);
+    std::istringstream in(v && *v ? v : fallback);
+    std::vector<double> out;
+    for (double x; in >> x;) out.push_back(x);
+    return out;
+  };
+  const std::vector<double> frictions = list_from_env("BENCH_FRICTIONS", "0.5 0");
+  const std::vector<double> threads = list_from_env("BENCH_THREADS", "1 2");
+  struct Way {
+    double friction;
+    int threads;
+    std::vector<double> rates, cpu_rates;
+    std::vector<double> setup_s;  // making the packing and the simulation (the first list is built in the warm-up)
+    double z = 0;
+    std::size_t rebuilds = 0;  // Verlet list builds in the timed steps, summed over repetitions
+    bool same = true;
+  };
+  std::vector<Way> ways;
+  for (double mu : frictions)
+    for (double t : threads) ways.push_back({mu, static_cast<int>(t), {}, {}, {}});
+  std::vector<dem::Vec3> reference[2];  // the end positions of each friction's first run
+  for (int r = 0; r < reps; ++r)
+    for (Way& w : ways) {
+      const dem::SceneConfig scene =
+          dem::scene_from_text(timing_scene(packing, w.friction, skin, 1000000000L), dir + "/bench.yaml");
+      omp_set_num_threads(w.threads);
+      const auto t0 = std::chrono::steady_clock::now();
+      dem::Simulation sim = simulation_from(make_state(), scene);
+      w.setup_s.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+      const Timed t = time_steps(sim, scene, steps);
+      w.rebuilds += t.rebuilds;
+      w.rates.push_back(n * static_cast<double>(steps) / t.wall_s);
+      w.cpu_rates.push_back(n * static_cast<double>(steps) / t.cpu_s);
+      w.z = t.contacts_per_particle;
+      auto& ref = reference[w.friction > 0 ? 0 : 1];
+      if (ref.empty()) ref = t.positions;
+      w.same = w.same && t.positions == ref;
+    }
+  const double peak_MB = status_MB("VmHWM");
+  std::printf("dem-bench size: %.0f spheres (8,000 x %d^3), %s order, %ld steps x %d repetitions, skin %g m\n", n, tiles,
+              order.c_str(), steps, reps, skin);
+  std::printf("%-9s %-8s %-22s %-24s %-14s %-8s %s\n", "friction", "threads", "particle-steps/s (med)", "min .. max",
+              "per CPU-s (1)", "2Nc/Np", "same bits as 1 thread");
+  std::ofstream json(dir + "/size_" + std::to_string(static_cast<long long>(n)) + "_" + order + ".json");
+  // One run per line, as in bench.json (reports/bench/run_bench.sh picks lines with grep).
+  json << "{\n  \"code\": \"cyclic-triax dem\",\n  \"version\": \"" << dem::software_version << "\",\n  \"particles\": "
+       << static_cast<long long>(n) << ",\n  \"tiles\": " << tiles << ",\n  \"order\": \"" << order
+       << "\",\n  \"steps\": " << steps << ",\n  \"warmup_steps\": 200,\n  \"repetitions\": " << reps
+       << ",\n  \"verlet_skin_m\": " << skin << ",\n  \"vector_lanes\": " << dem::simd_width()
+       << ",\n  \"baseline_rss_MB\": " << baseline_MB << ",\n  \"peak_rss_MB\": " << peak_MB
+       << ",\n  \"peak_bytes_per_particle\": " << (peak_MB - baseline_MB) * 1048576.0 / n << ",\n  \"runs\": [";
+  const char* sep = "\n    ";
+  bool all_same = true;
+  for (Way& w : ways) {
+    std::sort(w.rates.begin(), w.rates.end());
+    std::sort(w.setup_s.begin(), w.setup_s.end());
+    std::sort(w.cpu_rates.begin(), w.cpu_rates.end());
+    const double median = w.rates[w.rates.size() / 2];
+    std::printf("%-9.2f %-8d %-22.3e %.3e .. %.3e  %-14.3e %-8.2f %s\n", w.friction, w.threads, median, w.rates.front(),
+                w.rates.back(), w.cpu_rates[w.cpu_rates.size() / 2], w.z, w.same ? "yes" : "NO");
+    json << std::exchange(sep, ",\n    ") << "{\"friction\": " << w.friction << ", \"threads\": " << w.threads
+         << ", \"particle_steps_per_s_median\": " << median << ", \"min\": " << w.rates.front() << ", \"max\": " << w.rates.back()
+         << ", \"cpu_rate_median\": " << w.cpu_rates[w.cpu_rates.size() / 2]
+         << ", \"setup_s_median\": " << w.setup_s[w.setup_s.size() / 2] << ", \"coordination_number\": " << w.z
+         << ", \"timed_rebuilds\": " << w.rebuilds << ", \"same_bits_as_1_thread\": " << (w.same ? "true" : "false") << "}";
+    all_same = all_same && w.same;
+  }
+  json << "\n  ]\n}\n";
+  std::printf("peak memory (VmHWM) %.1f MB, %.1f MB before tiling: %.0f bytes per particle\n", peak_MB, baseline_MB,
+              (peak_MB - baseline_MB) * 1048576.0 / n);
+  return all_same ? 0 : 1;
+}
+
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc > 1 && std::string(argv[1]) == "size") {
+    if (argc < 6) {
+      std::fprintf(stderr, "usage: dem-bench size BENCH_DIR TILES STEPS REPETITIONS [SKIN] [ORDER]\n");
+      return 2;
+    }
+    std::filesystem::create_directories(argv[2]);
+    return run_size(argv[2], std::stoi(argv[3]), std::stol(argv[4]), std::stoi(argv[5]), argc > 6 ? std::stod(argv[6]) : 2.5e-5,
+                    argc > 7 ? argv[7] : "tiled");
+  }
   namespace fs = std::filesystem;
   const std::string dir = argc > 1 ? argv[1] : "build/bench";
   const long steps = argc > 2 ? std::stol(argv[2]) : 4000;

@@ -12,7 +12,8 @@
 #
 # Like dem-bench, every repetition starts again from the packing: read it, `run 200` (warm-up), then
 # `run STEPS`, timed by LAMMPS's "Loop time of T ... for N steps with A atoms": rate = N A / T.
-# Median = sorted[REPS/2] (as dem-bench), min, max.
+# Median = sorted[REPS/2] (as dem-bench), min, max; cpu_rate_median: the same per CPU-second (from LAMMPS's
+# "% CPU use" of each timed run), which time-slicing on a busy machine inflates less.
 #
 # Damping (5% of critical, for the mean sphere mass m): contact damping gamma_n = 2*0.05*sqrt(kn/m_eff),
 # m_eff = m/2, gamma_t = gamma_n/2; and, as the engine's viscous damping, a body force
@@ -23,6 +24,12 @@
 # at once (as it does in the engine at fixed volume; dem-bench's stress servo re-compacts it).
 # The table shows contacts per sphere (2Nc/N) and pressure after the warm-up -> after the timed run.
 # Set LMP to use another launcher, e.g. LMP="mpirun -np 1 lmp".
+#
+# TILES=n (default 1) times the packing tiled n x n x n (LAMMPS's `replicate n n n` after reading
+# it: n^3 times the spheres in a box n times as long, the same packing as `dem-bench size`). Like
+# every `run`, LAMMPS sorts the atoms spatially when it sets the run up (atom_modify sort, on by
+# default), so it times a spatially sorted order. The peak memory of the LAMMPS process (all
+# repetitions, GNU time's maximum resident set size) goes into the JSON when /usr/bin/time exists.
 set -euo pipefail
 
 die() { echo "lammps_bench: $*" >&2; exit 1; }
@@ -35,6 +42,10 @@ command -v "${LMP%% *}" >/dev/null || die "'${LMP%% *}' not found: install the D
 export OMP_NUM_THREADS=1
 
 density=2650 kn=1.0e6 kt=1.0e6 zeta=0.05 dt=1.0e-6 skin=${SKIN:-2.0e-4} warmup=200
+tiles=${TILES:-1}
+[[ $tiles =~ ^[1-9][0-9]*$ ]] || die "TILES must be a positive integer"
+replicate=""
+[ "$tiles" -gt 1 ] && replicate="replicate       $tiles $tiles $tiles"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
@@ -63,6 +74,7 @@ atom_style      sphere
 boundary        p p p
 comm_modify     vel yes
 read_data       $tmp/data.spheres
+$replicate
 pair_style      gran/hooke/history $kn $kt $gamman $gammat \${mu} 1
 pair_coeff      * *
 neighbor        $skin bin
@@ -99,7 +111,9 @@ runs=""
 frictions=${FRICTIONS:-0.5 0}
 for mu in $frictions; do
   log=$tmp/log.mu$mu
-  if ! $LMP -var mu "$mu" -in "$tmp/in.bench" -log "$log" -screen none >"$tmp/stdout" 2>&1 ||
+  timer=()
+  [ -x /usr/bin/time ] && timer=(/usr/bin/time -f %M -o "$tmp/rss.mu$mu")
+  if ! "${timer[@]}" $LMP -var mu "$mu" -in "$tmp/in.bench" -log "$log" -screen none >"$tmp/stdout" 2>&1 ||
      [ "$(grep -c '^BENCH end' "$log")" -ne "$reps" ]; then
     echo "lammps_bench: LAMMPS run with mu = $mu failed; end of its log:" >&2
     tail -n 25 "$log" "$tmp/stdout" >&2 2>/dev/null || true
@@ -109,6 +123,7 @@ for mu in $frictions; do
   row=$(awk -v reps="$reps" -v mu="$mu" '
     /^BENCH timed/ { timed = 1 }
     /^Loop time of/ && timed { rate[++n] = $9 * $12 / $4 }
+    /% CPU use with/ && timed { c = $1; sub(/%/, "", c); cpu[n] = c > 0 ? rate[n] * 100 / c : rate[n] }
     /^Ave neighs\/atom/ && timed { neigh += $4 / reps }
     /^Neighbor list builds/ && timed { builds += $5 }
     /^Dangerous builds/ { dangerous += $4; timed = 0 }
@@ -118,11 +133,14 @@ for mu in $frictions; do
       if (n != reps) { print "lammps_bench: expected " reps " timed runs in the log" > "/dev/stderr"; exit 1 }
       for (i = 1; i <= n; i++) for (j = i + 1; j <= n; j++) if (rate[j] < rate[i]) { t = rate[i]; rate[i] = rate[j]; rate[j] = t }
       med = rate[int(n / 2) + 1]
+      for (i = 1; i <= n; i++) for (j = i + 1; j <= n; j++) if (cpu[j] < cpu[i]) { t = cpu[i]; cpu[i] = cpu[j]; cpu[j] = t }
       printf "%-9s %-23.3e %.3e .. %.3e %5.2f -> %-5.2f %6.1f -> %-6.1f %-11.2f %d (dangerous %d)\n", mu, med, rate[1], rate[n], z0, z1, p0 / 1e3, p1 / 1e3, 2 * neigh, builds, dangerous > "/dev/stderr"
       printf "{\"friction\": %s, \"particle_steps_per_s_median\": %.6g, \"min\": %.6g, \"max\": %.6g, ", mu, med, rate[1], rate[n]
+      printf "\"cpu_rate_median\": %.6g, ", cpu[int(n / 2) + 1]
       printf "\"coordination_number_start\": %.6g, \"coordination_number_end\": %.6g, \"neighbours_per_atom\": %.6g, ", z0, z1, 2 * neigh
       printf "\"pressure_Pa_start\": %.6g, \"pressure_Pa_end\": %.6g, \"neighbour_list_builds\": %d, \"dangerous_builds\": %d}", p0, p1, builds, dangerous
     }' "$log" 2>"$tmp/row") || die "could not parse $log"
+  [ -s "$tmp/rss.mu$mu" ] && row="${row%\}}, \"peak_rss_MB\": $(awk '{ printf "%.1f", $1 / 1024 }' "$tmp/rss.mu$mu")}"
   cat "$tmp/row"
   runs="$runs${runs:+,
     }$row"
@@ -136,7 +154,8 @@ cat >"$out" <<EOF
 {
   "code": "LAMMPS",
   "version": "$version (Debian lammps $pkg)",
-  "particles": $natoms,
+  "particles": $((natoms * tiles * tiles * tiles)),
+  "tiles": $tiles,
   "steps": $steps,
   "repetitions": $reps,
   "threads": 1,
@@ -147,4 +166,4 @@ cat >"$out" <<EOF
 }
 EOF
 if command -v jq >/dev/null; then jq empty "$out" || die "$out is not valid JSON"; fi
-echo "LAMMPS $version, $natoms spheres, $steps steps x $reps repetitions, 1 core -> $out"
+echo "LAMMPS $version, $((natoms * tiles * tiles * tiles)) spheres, $steps steps x $reps repetitions, 1 core -> $out"
