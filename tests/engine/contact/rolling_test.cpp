@@ -8,6 +8,26 @@
 
 using namespace dem;
 
+namespace {
+
+// Four equal spheres of radius r on a periodic ring along x, each overlapping both neighbours by
+// `overlap` (so the normal forces balance), spinning about z at +w, -w, +w, -w; the linear law
+// (kn = ks = 1e6 N/m, mu = 0.5) with a rolling spring of stiffness kr capped at mu_r.
+Simulation ring(double r, double overlap, double w, double kr, double mu_r, double dt) {
+  const double a = 2 * r - overlap;
+  const PeriodicCell cell(Vec3(4 * a, 0.01, 0.01));
+  Particles p;
+  for (int k = 0; k < 4; ++k) {
+    p.add(test::fractional(cell, Vec3((k + 0.5) * a, 0.005, 0.005)), r, 2650);
+    p.omega[k] = Vec3(0, 0, k % 2 ? -w : w);
+  }
+  Material material;
+  material.law = LinearRollingLaw{LinearNormal{1e6}, LinearCoulomb{1e6, 0.5}, RollingSpring{kr, mu_r}};
+  return Simulation(p, cell, material, test::no_damping(), dt, 1e-4);
+}
+
+}  // namespace
+
 TEST_CASE("rolling: counter-rotating spheres in a ring stop at t = I w / (2 mu_r R* f_n)", "[contact][rolling]") {
   // Four equal spheres on a periodic ring along x, each overlapping both neighbours by 10 um, so
   // the normal forces balance. They spin about z at +w, -w, +w, -w: at every contact the surfaces
@@ -17,17 +37,8 @@ TEST_CASE("rolling: counter-rotating spheres in a ring stop at t = I w / (2 mu_r
   // linearly), then it exerts the moment mu_r R* f_n, twice per sphere, until the spin has gone:
   // t = I w / (2 mu_r R* f_n) + t_r / 2.
   const double r = 1e-3, overlap = 1e-5, kn = 1e6, kr = 1e6, mu_r = 0.1, w = 1e4, dt = 1e-8;
-  const double a = 2 * r - overlap;
-  const PeriodicCell cell(Vec3(4 * a, 0.01, 0.01));
-  Particles p;
-  for (int k = 0; k < 4; ++k) {
-    p.add(test::fractional(cell, Vec3((k + 0.5) * a, 0.005, 0.005)), r, 2650);
-    p.omega[k] = Vec3(0, 0, k % 2 ? -w : w);
-  }
-  Material material;
-  material.law = LinearRollingLaw{LinearNormal{kn}, LinearCoulomb{1e6, 0.5}, RollingSpring{kr, mu_r}};
-  Simulation sim(p, cell, material, test::no_damping(), dt, 1e-4);
-  const double I = p.inertia[0], R_star = r / 2;
+  Simulation sim = ring(r, overlap, w, kr, mu_r, dt);
+  const double I = sim.particles().inertia[0], R_star = r / 2;
   const double ke0 = 4 * 0.5 * I * w * w;
   double t_zero = 0;
   for (int n = 0; n < 10000 && t_zero == 0; ++n) {
@@ -63,17 +74,8 @@ TEST_CASE("rolling: an elastic rolling spring makes the spins oscillate at 2 R* 
   // The ring as above with a cap far away (mu_r = 10): each sphere's angle obeys
   // I theta'' = -2 contacts x k_r R*^2 (2 theta), so omega(t) = w cos(2 R* sqrt(k_r / I) t).
   const double r = 1e-3, overlap = 1e-5, kr = 1e6, w = 100, dt = 1e-8;
-  const double a = 2 * r - overlap;
-  const PeriodicCell cell(Vec3(4 * a, 0.01, 0.01));
-  Particles p;
-  for (int k = 0; k < 4; ++k) {
-    p.add(test::fractional(cell, Vec3((k + 0.5) * a, 0.005, 0.005)), r, 2650);
-    p.omega[k] = Vec3(0, 0, k % 2 ? -w : w);
-  }
-  Material material;
-  material.law = LinearRollingLaw{LinearNormal{1e6}, LinearCoulomb{1e6, 0.5}, RollingSpring{kr, 10.0}};
-  Simulation sim(p, cell, material, test::no_damping(), dt, 1e-4);
-  const double omega0 = 2 * (r / 2) * std::sqrt(kr / p.inertia[0]);
+  Simulation sim = ring(r, overlap, w, kr, 10.0, dt);
+  const double omega0 = 2 * (r / 2) * std::sqrt(kr / sim.particles().inertia[0]);
   const int steps = static_cast<int>(1.3 * test::pi / omega0 / dt);  // past the half period
   double t_zero = 0;
   for (int n = 0; n < steps && t_zero == 0; ++n) {

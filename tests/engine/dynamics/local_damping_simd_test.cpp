@@ -28,12 +28,8 @@ Simulation compressed_locally(int width, int steps) {
       "stages: [{name: s, type: strain_rate, strain_rate: [0, 0, 0], duration: 1.0e-6}]\n",
       "local.yaml");
   Simulation sim = build_simulation(scene);
-  CellTargets targets;
-  for (auto& t : targets) t = {AxisTarget::Mode::Stress, 0, 1e5, 0};
-  ServoSettings settings = scene.servo;
-  settings.max_strain_rate_per_s = 50.0;
-  AdaptiveServo servo(settings);
-  for (int i = 0; i < steps; ++i) sim.step(targets, servo);
+  Squeeze squeeze(scene);
+  for (int i = 0; i < steps; ++i) squeeze.step(sim);
   cap_simd_width(saved);
   return sim;
 }

@@ -17,6 +17,22 @@
 
 namespace dem::test {
 
+// The adaptive stress servo driving every axis towards 100 kPa (max strain rate 50/s), as the
+// packings below are compressed.
+struct Squeeze {
+  CellTargets targets;
+  AdaptiveServo servo;
+  explicit Squeeze(const SceneConfig& scene) : servo(settings_of(scene)) {
+    for (auto& t : targets) t = {AxisTarget::Mode::Stress, 0, 1e5, 0};
+  }
+  void step(Simulation& sim) { sim.step(targets, servo); }
+  static ServoSettings settings_of(const SceneConfig& scene) {
+    ServoSettings settings = scene.servo;
+    settings.max_strain_rate_per_s = 50.0;
+    return settings;
+  }
+};
+
 // 1,000 spheres (3.0-4.5 mm) on a 10x10x10 lattice of spacing 4.6 mm (or side^3 spheres), compressed
 // to 100 kPa with the adaptive stress servo for `steps` steps: contacts form, slide and break.
 // `skin`: the Verlet skin [m], or the default.
@@ -36,12 +52,8 @@ inline Simulation compressed(double friction, int threads, int steps, int side =
   const int saved = omp_get_max_threads();
   omp_set_num_threads(threads);
   Simulation sim = build_simulation(scene);
-  CellTargets targets;
-  for (auto& t : targets) t = {AxisTarget::Mode::Stress, 0, 1e5, 0};
-  ServoSettings settings = scene.servo;
-  settings.max_strain_rate_per_s = 50.0;
-  AdaptiveServo servo(settings);
-  for (int i = 0; i < steps; ++i) sim.step(targets, servo);
+  Squeeze squeeze(scene);
+  for (int i = 0; i < steps; ++i) squeeze.step(sim);
   omp_set_num_threads(saved);
   return sim;
 }
@@ -107,16 +119,12 @@ inline LawRun compressed_law(const LawScene& law, int threads, int steps, int si
   const int saved = omp_get_max_threads();
   omp_set_num_threads(threads);
   LawRun run{build_simulation(scene)};
-  CellTargets targets;
-  for (auto& t : targets) t = {AxisTarget::Mode::Stress, 0, 1e5, 0};
-  ServoSettings settings = scene.servo;
-  settings.max_strain_rate_per_s = 50.0;
-  AdaptiveServo servo(settings);
-  for (int i = 0; i + 1 < steps; ++i) run.sim.step(targets, servo);
+  Squeeze squeeze(scene);
+  for (int i = 0; i + 1 < steps; ++i) squeeze.step(run.sim);
   // The last step's force evaluation sees these positions and this cell.
   const std::vector<Vec3> s_before = run.sim.particles().s;
   const PeriodicCell cell_before = run.sim.cell();
-  run.sim.step(targets, servo);
+  squeeze.step(run.sim);
   omp_set_num_threads(saved);
 
   const ContactHistory& h = run.sim.history();
