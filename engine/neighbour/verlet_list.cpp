@@ -145,10 +145,12 @@ void VerletList::build(const Particles& p, const PeriodicCell& cell, ContactHist
   // Everything is built aside first: if an allocation fails, the list and the history stay as they were.
   PairList fresh;
   collect_pairs(p, cell, fresh);
-  // Where each pair was before (both lists sorted by (i, j)), for the contact history.
-  std::vector<std::uint32_t> from_previous(fresh.size(), ContactHistory::none);
+  // Where each pair was before (both lists sorted by (i, j)), for the contact history; not needed
+  // by a law that keeps none (a frictionless scene).
+  const bool carries = !history || history->has_tangential() || history->rolling_on;
+  std::vector<std::uint32_t> from_previous(carries ? fresh.size() : 0, ContactHistory::none);
   std::size_t o = 0;
-  for (std::size_t k = 0; k < fresh.size() && o < pairs_.size(); ++k) {
+  for (std::size_t k = 0; carries && k < fresh.size() && o < pairs_.size(); ++k) {
     const auto key = std::make_pair(fresh.first[k], fresh.second[k]);
     while (o < pairs_.size() && std::make_pair(pairs_.first[o], pairs_.second[o]) < key) ++o;
     if (o < pairs_.size() && pairs_.first[o] == key.first && pairs_.second[o] == key.second)

@@ -75,7 +75,8 @@ class VerletList {
   // std::runtime_error if the cell is too small for the minimum image. If it throws (that, or an
   // allocation), the list and the history are left as they were.
   void build(const Particles& p, const PeriodicCell& cell, ContactHistory* history = nullptr);
-  // After build(): for each pair, its index in the list before the build, or ContactHistory::none.
+  // After build(): for each pair, its index in the list before the build, or ContactHistory::none
+  // (empty if build() was given a history that keeps nothing).
   const std::vector<std::uint32_t>& from_previous() const { return from_previous_; }
 
   // Everything a checkpoint needs to continue bit for bit: the whole list (pairs out of contact
