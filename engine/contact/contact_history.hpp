@@ -2,7 +2,7 @@
 // The contact history, in its own store beside the neighbour list (neighbour/verlet_list.hpp),
 // shaped by the law: a tangential history (and sliding flag) only with friction, a rolling spring
 // only with rolling resistance. Entry k belongs to pair k of the list; when the list is rebuilt,
-// `carry` moves the history of the pairs that survive to their new places.
+// `carried` moves the history of the pairs that survive to their new places.
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -39,7 +39,6 @@ struct ContactHistory {
     if (rolling_on) out.rolling = moved(rolling, from_previous, Vec3(Vec3::Zero()));
     return out;
   }
-  void carry(const std::vector<std::uint32_t>& from_previous) { *this = carried(from_previous); }
   // The entries of the pairs `keep` (ascending), e.g. the pairs in contact.
   ContactHistory subset(const std::vector<std::size_t>& keep) const {
     ContactHistory out{tangential_name, rolling_on, {}, {}, {}};

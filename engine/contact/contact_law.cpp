@@ -36,15 +36,6 @@ std::string tangential_history_name(const AnyContactLaw& law) {
       law);
 }
 
-std::string tangential_history_unit(const AnyContactLaw& law) {
-  return std::visit(
-      [](const auto& l) -> std::string {
-        if constexpr (std::decay_t<decltype(l)>::has_tangential) return l.tangential.history_unit;
-        return "";
-      },
-      law);
-}
-
 double critical_time_step(const AnyContactLaw& law, const Particles& p, double density_kg_per_m3) {
   if (p.size() == 0) throw std::invalid_argument("critical_time_step: no particles");
   const double m_min = *std::min_element(p.mass.begin(), p.mass.end());

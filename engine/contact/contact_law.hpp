@@ -66,9 +66,8 @@ AnyContactLaw linear_law(double kn, double ks, double mu);
 bool has_tangential(const AnyContactLaw& law);
 bool has_rolling(const AnyContactLaw& law);
 double friction_coefficient(const AnyContactLaw& law);  // mu; 0 without friction
-// The name and unit of the tangential history ("tangential_spring", "m"); empty without friction.
+// The name of the tangential history ("tangential_spring", "tangential_force"); empty without friction.
 std::string tangential_history_name(const AnyContactLaw& law);
-std::string tangential_history_unit(const AnyContactLaw& law);
 // The critical time step of the law on these particles [s], and how it is computed.
 double critical_time_step(const AnyContactLaw& law, const Particles& p, double density_kg_per_m3);
 std::string critical_time_step_formula(const AnyContactLaw& law);

@@ -108,12 +108,8 @@ Simulation& Simulation::operator=(Simulation&&) noexcept = default;
 
 void Simulation::adopt(const ContactHistory& history) {
   const std::size_t n = list_.pairs().size();
-  const ContactHistory unloaded = [&] {
-    ContactHistory h = history_for(material_.law);
-    h.reset(n);
-    return h;
-  }();
-  history_ = unloaded;
+  history_ = history_for(material_.law);
+  history_.reset(n);
   if (history_.has_tangential() && history.tangential_name == history_.tangential_name && history.tangential.size() == n)
     history_.tangential = history.tangential, history_.sliding = history.sliding;
   if (history_.rolling_on && history.rolling_on && history.rolling.size() == n) history_.rolling = history.rolling;

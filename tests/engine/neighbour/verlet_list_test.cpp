@@ -178,7 +178,7 @@ TEST_CASE("Verlet list: a rebuild keeps the history of surviving pairs and only 
   p.s[4] = Vec3(0.70, 0.2, 0.5);  // now 4 mm from 1
   REQUIRE(list.needs_rebuild(p, cell));
   list.build(p, cell);
-  h.carry(list.from_previous());
+  h = h.carried(list.from_previous());
   REQUIRE(list_pairs(list.pairs()) == PairVec{{0, 1}, {2, 3}});
   REQUIRE(list.from_previous() == std::vector<std::uint32_t>{ContactHistory::none, 1});
   REQUIRE(h.tangential[0] == Vec3::Zero());  // new pair: no history
@@ -191,7 +191,7 @@ TEST_CASE("Verlet list: a rebuild keeps the history of surviving pairs and only 
   // Without friction or rolling (a frictionless law) the history keeps nothing at all.
   ContactHistory plain;
   plain.reset(list.pairs().size());
-  plain.carry(list.from_previous());
+  plain = plain.carried(list.from_previous());
   REQUIRE(plain.tangential.empty());
   REQUIRE(plain.rolling.empty());
 }
