@@ -80,6 +80,17 @@ const std::vector<SeriesColumn>& series_columns() {
       {"energy_closure_error", "1", "|E_in - (E_stored + E_dissipated)| / E_in, E_in = stored energy at the start + work by the cell"},
       {"elastic_energy_rolling", "J", "stored in the rolling springs, sum 1/2 kr |u_r|^2 (0 without rolling resistance)"},
       {"dissipated_by_rolling", "J", "by rolling resistance at its cap since the run started"},
+      {"shear_strain_12", "1", "engineering shear strain since the reference, compression positive (cell/periodic_cell.hpp)"},
+      {"shear_strain_13", "1", ""},
+      {"shear_strain_23", "1", ""},
+      {"shear_rate_12", "1/s", "engineering shear strain rate applied in the last step, compression positive"},
+      {"shear_rate_13", "1/s", ""},
+      {"shear_rate_23", "1/s", ""},
+      {"cell_tilt_12", "m", "tilt xy of the cell (the x offset of its second vector), within +-L1/2 after re-mapping"},
+      {"cell_tilt_13", "m", "tilt xz"},
+      {"cell_tilt_23", "m", "tilt yz"},
+      {"pore_pressure_ratio", "1", "control stages: r_u = 1 - p/p0, p0 at the stage start (constant volume: the excess pore pressure ratio); 0 elsewhere"},
+      {"double_amplitude_strain", "1", "control stages with cyclic loading: max - min strain of the cyclic component in the current cycle"},
   };
   return columns;
 }
@@ -147,7 +158,12 @@ std::vector<double> measure_row(const Simulation& sim, const RowContext& where) 
           e.dissipated_friction,
           e.closure_error(),
           sim.sums().elastic_rolling_J,
-          e.dissipated_rolling};
+          e.dissipated_rolling,
+          cell.shear_strain()[0], cell.shear_strain()[1], cell.shear_strain()[2],
+          sim.rates().shear[0], sim.rates().shear[1], sim.rates().shear[2],
+          cell.tilts()[0], cell.tilts()[1], cell.tilts()[2],
+          where.mean_stress_at_stage_start > 0 ? 1 - p / where.mean_stress_at_stage_start : 0.0,
+          where.double_amplitude_strain};
 }
 
 }  // namespace dem

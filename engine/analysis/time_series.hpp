@@ -21,6 +21,8 @@ struct RowContext {
   bool leg_end = false;    // the row is taken at the end of a leg
   bool cycle_end = false;  // ... which is also the end of a cycle
   Vec3 strain_at_previous_leg_end = Vec3::Zero();  // for the strain increment vector
+  double mean_stress_at_stage_start = 0;  // control stages: p0 of the pore pressure ratio (0: none)
+  double double_amplitude_strain = 0;     // control stages with cyclic loading: in the current cycle
 };
 
 // One row, in the order of series_columns(). Computed only when a row is written.

@@ -156,7 +156,7 @@ double status_MB(const std::string& field) {
 dem::Simulation simulation_from(dem::SavedState state, const dem::SceneConfig& scene) {
   dem::Simulation sim(std::move(state.particles), state.cell, scene.material, scene.damping, scene.time_step_s,
                       scene.verlet_skin_m);
-  sim.restore(0, state.strain_rate_per_s, std::move(state.contacts), state.history);
+  sim.restore(0, state.rates, std::move(state.contacts), state.history);
   return sim;
 }
 

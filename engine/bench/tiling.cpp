@@ -67,7 +67,9 @@ SavedState tile(const SavedState& in, int n) {
   SavedState out;
   out.cell = PeriodicCell(in.cell.lengths() * n);
   out.cell.set_reference_lengths(in.cell.reference_lengths() * n);
-  out.strain_rate_per_s = in.strain_rate_per_s;
+  out.cell.set_tilts(in.cell.tilts() * n);
+  out.cell.set_shear_strain(in.cell.shear_strain());
+  out.rates = in.rates;
   out.step = in.step;
   out.time_step_s = in.time_step_s;
   const Particles& p = in.particles;

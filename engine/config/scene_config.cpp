@@ -120,12 +120,55 @@ std::vector<PathItem> read_path(const YAML::Node& node, const Section& s, const 
   return items;
 }
 
+int component_index(const std::string& name) {
+  for (std::size_t k = 0; k < component_names.size(); ++k)
+    if (name == component_names[k]) return static_cast<int>(k);
+  return -1;
+}
+
+// The `control` of a control stage: per component {strain_rate: r}, {stress: s} or follow.
+CellControl read_control(Section s, const Section& stage) {
+  CellControl c;
+  for (std::size_t k = 0; k < 6; ++k) {
+    const std::string name = component_names[k];
+    const bool axis = k < 3;
+    const std::string doc = std::string(axis ? "axis " : "shear ") + name +
+                            ": {strain_rate: r} [1/s], {stress: s} [Pa] (compression positive) or follow (set by the constraint)" +
+                            (axis ? "" : "; default {strain_rate: 0}");
+    if (!s.has(name)) {
+      if (axis) s.child(name, doc);  // required: declares and reports it
+      continue;
+    }
+    AxisTarget& t = c.component[k];
+    const YAML::Node node = s.raw(name, "{strain_rate: r}, {stress: s} or follow", doc);
+    if (node.IsScalar()) {
+      if (node.as<std::string>() != "follow") s.fail(name, "must be {strain_rate: r}, {stress: s} or follow");
+      t.mode = AxisTarget::Mode::Follow;
+      continue;
+    }
+    Section m = s.child(name, doc);
+    const bool rate = m.has("strain_rate"), stress = m.has("stress");
+    if (rate == stress)
+      m.fail(rate ? "stress" : "strain_rate", rate ? "a component takes one control, not both strain_rate and stress"
+                                                   : "give strain_rate or stress");
+    if (rate)
+      t = {AxisTarget::Mode::StrainRate, m.number("strain_rate", "1/s", {-1e3, 1e3}, std::nullopt, "strain rate, compression positive"), 0, 0};
+    else
+      t = {AxisTarget::Mode::Stress, 0, m.number("stress", "Pa", {-1e10, 1e10}, std::nullopt, "stress target, compression positive"), 0};
+    m.finish();
+  }
+  s.finish();
+  (void)stage;
+  return c;
+}
+
 StageConfig read_stage(Section s) {
   StageConfig st;
   st.name = s.text("name", std::nullopt, "stage name, written into the results");
-  const std::string type = s.choice("type", {"strain_rate", "stress", "stress_path"}, std::nullopt,
+  const std::string type = s.choice("type", {"strain_rate", "stress", "stress_path", "control"}, std::nullopt,
                                     "strain_rate: fixed strain rates for a duration; stress: ramp to a target stress and hold; "
-                                    "stress_path: straight legs between stress states at constant mean stress");
+                                    "stress_path: straight legs between stress states at constant mean stress; "
+                                    "control: each component of the cell strain-rate or stress controlled, or set by a constraint");
   st.reset_strain = s.boolean("reset_strain", false, "measure strains from the start of this stage");
   if (type == "strain_rate") {
     st.type = StageConfig::Type::StrainRate;
@@ -145,6 +188,71 @@ StageConfig read_stage(Section s) {
     YAML::Emitter e;
     e << YAML::Flow << path;
     st.path_text = e.c_str();
+    st.zero_shear_stress = s.boolean("zero_shear_stress", false,
+                                     "hold the shear stresses at zero (the cell shears); false: the cell stays orthorhombic");
+  } else if (type == "control") {
+    st.type = StageConfig::Type::Control;
+    st.duration_s = s.number("duration", "s", {0, 1e6, true}, std::nullopt, "the longest the stage runs");
+    st.max_strain_rate_per_s = s.number("max_strain_rate", "1/s", {0, 1e3, true}, 1.0,
+                                        "cap on the strain rate of each stress-controlled component");
+    YAML::Emitter e;
+    e << YAML::Flow << YAML::BeginMap;
+    for (const char* key : {"control", "constraint", "cyclic", "until"})
+      if (s.has(key)) e << YAML::Key << key << YAML::Value << s.raw(key, "", "");
+    e << YAML::EndMap;
+    st.control_text = e.c_str();
+    st.control = read_control(s.child("control", "per component xx yy zz xy xz yz: {strain_rate: r}, {stress: s} or follow"), s);
+    if (s.has("constraint")) {
+      Section c = s.child("constraint", "a constraint the following components obey");
+      const std::string kind = c.choice("type", {"constant_volume", "constant_mean_stress"}, std::nullopt,
+                                        "constant_volume: undrained; constant_mean_stress: p held, the followers split by b");
+      CellConstraint& k = st.control.constraint;
+      if (kind == "constant_volume") {
+        k.kind = CellConstraint::Kind::ConstantVolume;
+      } else {
+        k.kind = CellConstraint::Kind::ConstantMeanStress;
+        k.mean_stress_Pa = c.number("mean_stress", "Pa", {0, 1e10, true}, std::nullopt, "p to hold");
+        k.b = c.number("b", "", {0, 1}, 0.0, "intermediate principal stress ratio (s2 - s3)/(s1 - s3), the leader major");
+      }
+      c.finish();
+    }
+    if (const std::string error = control_error(st.control); !error.empty()) s.fail("control", error);
+    if (s.has("cyclic")) {
+      Section c = s.child("cyclic", "one component's loading oscillates as a sine");
+      const std::string name = c.choice("component", {"xx", "yy", "zz", "xy", "xz", "yz"}, std::nullopt, "the component");
+      st.cyclic.component = component_index(name);
+      const std::string q = c.choice("quantity", {"stress", "deviator", "strain"}, "stress",
+                                     "stress: its target oscillates about its value in control; deviator: q = s_kk - "
+                                     "(other axes)/2 about q at the stage start (an axis); strain: its strain, on top of its rate");
+      st.cyclic.quantity = q == "stress" ? CyclicLoading::Quantity::Stress
+                           : q == "deviator" ? CyclicLoading::Quantity::Deviator : CyclicLoading::Quantity::Strain;
+      st.cyclic.amplitude = c.number("amplitude", "Pa or 1", {0, 1e10, true}, std::nullopt, "amplitude of the sine");
+      st.cyclic.period_s = c.number("period", "s", {0, 1e6, true}, std::nullopt, "period of the sine");
+      const AxisTarget::Mode mode = st.control.component[static_cast<std::size_t>(st.cyclic.component)].mode;
+      const bool wants_stress = st.cyclic.quantity != CyclicLoading::Quantity::Strain;
+      if (wants_stress && mode != AxisTarget::Mode::Stress)
+        c.fail("component", name + " must be stress-controlled in control to cycle its " + q);
+      if (!wants_stress && mode != AxisTarget::Mode::StrainRate)
+        c.fail("component", name + " must be strain-rate controlled in control to cycle its strain");
+      if (st.cyclic.quantity == CyclicLoading::Quantity::Deviator && st.cyclic.component >= 3)
+        c.fail("quantity", "deviator cycles an axis (xx, yy or zz), not " + name);
+      c.finish();
+    }
+    if (s.has("until")) {
+      Section u = s.child("until", "criteria that end the stage before its duration (the first met)");
+      if (u.has("strain")) {
+        st.until.strain = u.number("strain", "1", {0, 10, true}, std::nullopt, "|strain| of until.component since the stage start");
+        st.until.component = component_index(u.choice("component", {"xx", "yy", "zz", "xy", "xz", "yz"}, std::nullopt,
+                                                        "whose strain until.strain limits"));
+      }
+      st.until.pore_pressure_ratio = u.number("pore_pressure_ratio", "", {0, 1, true}, 0.0,
+                                              "r_u = 1 - p/p0 (p0 at the stage start) that ends the stage; 0: off");
+      st.until.double_amplitude_strain = u.number("double_amplitude_strain", "1", {0, 10}, 0.0,
+                                                  "max - min strain of the cyclic component within a cycle; 0: off");
+      if (st.until.double_amplitude_strain > 0 && st.cyclic.component < 0)
+        u.fail("double_amplitude_strain", "needs a cyclic loading (the stage's cyclic key)");
+      u.finish();
+    }
   } else {
     st.type = StageConfig::Type::Stress;
     st.target_Pa = vec3(s.numbers("target", "Pa", {0, 1e10, true}, 3, 3, "target principal stresses, compression positive"));
@@ -210,6 +318,11 @@ std::string emit_resolved(const SceneConfig& c) {
           << s.mean_stress_Pa << YAML::Key << "stress_ratio" << YAML::Value << s.stress_ratio << YAML::Key << "rate"
           << YAML::Value << s.stress_rate_Pa_per_s << YAML::Key << "max_strain_rate" << YAML::Value
           << s.max_strain_rate_per_s << YAML::Key << "path" << YAML::Value << YAML::Load(s.path_text);
+      if (s.zero_shear_stress) out << YAML::Key << "zero_shear_stress" << YAML::Value << true;
+    } else if (s.type == StageConfig::Type::Control) {
+      out << YAML::Key << "type" << YAML::Value << "control" << YAML::Key << "duration" << YAML::Value << s.duration_s
+          << YAML::Key << "max_strain_rate" << YAML::Value << s.max_strain_rate_per_s;
+      for (const auto& kv : YAML::Load(s.control_text)) out << YAML::Key << kv.first << YAML::Value << kv.second;
     } else {
       out << YAML::Key << "type" << YAML::Value << "stress" << YAML::Key << "target" << YAML::Value << YAML::Flow
           << std::vector<double>{s.target_Pa[0], s.target_Pa[1], s.target_Pa[2]} << YAML::Key << "rate" << YAML::Value
@@ -367,7 +480,15 @@ std::string scene_key_reference() {
                   "example");
   scene_from_text(std::string("particles: {state: s.h5}\n") + common +
                       "stages: [{name: s, type: stress_path, mean_stress: 1.0e5, stress_ratio: 1.24, rate: 2.0e6,\n"
-                      "          max_strain_rate: 1, path: [TC1, {repeat: 5, path: [TC2, TC3, TC1]}]}]\n",
+                      "          max_strain_rate: 1, path: [TC1, {repeat: 5, path: [TC2, TC3, TC1]}], zero_shear_stress: true}]\n",
+                  "example");
+  scene_from_text(std::string("particles: {state: s.h5}\n") + common +
+                      "stages:\n  - {name: s, type: control, duration: 1, max_strain_rate: 1,\n"
+                      "     control: {xx: follow, yy: follow, zz: {stress: 1.0e5}, xy: {strain_rate: 0}, xz: {stress: 0}, yz: {stress: 0}},\n"
+                      "     constraint: {type: constant_volume}, cyclic: {component: zz, quantity: deviator, amplitude: 1.0e4, period: 0.1},\n"
+                      "     until: {component: zz, strain: 0.4, pore_pressure_ratio: 0.95, double_amplitude_strain: 0.05}}\n"
+                      "  - {name: t, type: control, duration: 1, control: {xx: follow, yy: follow, zz: {strain_rate: 0.1}},\n"
+                      "     constraint: {type: constant_mean_stress, mean_stress: 1.0e5, b: 0.5}}\n",
                   "example");
   scene_from_text(std::string("particles: {state: s.h5}\n") +
                       "material: {law: hertz_mindlin, young_modulus: 7.0e10, poisson_ratio: 0.25, friction: 0.5,\n"

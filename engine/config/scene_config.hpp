@@ -29,8 +29,27 @@ struct HoldCriteria {
   double max_duration_s = 10;               // the stage fails if the criteria do not hold by then
 };
 
+// A control stage's loading that oscillates: one component's stress (from its value in
+// `control`), the deviator q = s_kk - (other two axes)/2 of an axis (from q at the stage start),
+// or its strain (a sine of the strain, on top of its strain rate in `control`).
+struct CyclicLoading {
+  enum class Quantity { Stress, Deviator, Strain };
+  int component = -1;  // index into CellControl::component; -1: no cyclic loading
+  Quantity quantity = Quantity::Stress;
+  double amplitude = 0;  // Pa, or strain
+  double period_s = 0;
+};
+
+// When a control stage ends before its duration (each criterion off at 0).
+struct StopCriteria {
+  int component = -1;                    // whose strain `strain` limits
+  double strain = 0;                     // |axial true strain or engineering shear strain| since the stage start
+  double pore_pressure_ratio = 0;        // r_u = 1 - p / p0, p0 the mean stress at the stage start
+  double double_amplitude_strain = 0;    // max - min of the cyclic component's strain within a cycle
+};
+
 struct StageConfig {
-  enum class Type { StrainRate, Stress, StressPath };
+  enum class Type { StrainRate, Stress, StressPath, Control };
   std::string name;
   Type type = Type::StrainRate;
   bool reset_strain = false;      // strains measured from the start of this stage
@@ -47,6 +66,12 @@ struct StageConfig {
   double stress_ratio = 1.24;    // R = sigma_max / sigma_min of the named TC/TE states
   std::vector<PathItem> path;
   std::string path_text;         // the path as written (for the resolved scene)
+  bool zero_shear_stress = false; // the cell shears so that the shear stresses stay at zero
+  // control stage: every component of the cell (control/stress_servo.hpp) for `duration`
+  CellControl control;
+  CyclicLoading cyclic;
+  StopCriteria until;
+  std::string control_text;      // its keys as written (for the resolved scene)
 };
 
 struct OutputConfig {

@@ -1,6 +1,8 @@
 #pragma once
-// Per-axis control of the periodic cell: each axis is either strain-rate controlled or stress
-// controlled. A stress-controlled axis is driven by a servo
+// Control of the periodic cell, per component of its velocity gradient G (cell/periodic_cell.hpp):
+// the three axes xx, yy, zz and the three shears xy, xz, yz. Each component is strain-rate
+// controlled, stress controlled, or follows a constraint of the whole cell (constant volume, or
+// constant mean stress). A stress-controlled component is driven by a servo
 //
 //   rate_k = gain * (target_k - sigma_kk) / (K_k dt)  +  dtarget_k/dt / K_k,   |rate_k| <= max_rate,
 //
@@ -9,15 +11,21 @@
 // removes a fraction `gain` of the stress error per step; the second (feed-forward) term follows a
 // moving target without lag. Because K_k is the affine (upper-bound) stiffness, the servo
 // under-corrects rather than overshoots. With no contacts (K = 0) the axis moves at the cap.
+// A shear component ab uses K_ab = sqrt(K_aa K_bb) / 3, the affine shear stiffness of an isotropic
+// fabric (sum kn (n_a l_b)^2 / V, with <n_a^2 n_b^2> = <n_a^4> / 3 over the sphere): only its
+// order of magnitude matters, the servo removes a fraction `gain` of the error per step.
 // Compression positive throughout.
 #include <array>
+#include <string>
+
+#include "cell/periodic_cell.hpp"
 
 #include "core/types.hpp"
 
 namespace dem {
 
 struct AxisTarget {
-  enum class Mode { StrainRate, Stress };
+  enum class Mode { StrainRate, Stress, Follow };  // Follow: set by the cell's constraint
   Mode mode = Mode::StrainRate;
   double strain_rate_per_s = 0;     // used when mode == StrainRate
   double stress_Pa = 0;             // used when mode == Stress
@@ -31,10 +39,49 @@ struct ServoSettings {
   double min_stiffness_ratio = 0.05; // AdaptiveServo: lower bound of the learnt ratio kappa
 };
 
-using CellTargets = std::array<AxisTarget, 3>;
+using CellTargets = std::array<AxisTarget, 3>;  // the axes only; the cell does not shear
 
 Vec3 servo_strain_rates(const CellTargets& targets, const Mat3& stress_Pa, const Vec3& stiffness_Pa,
                         const ServoSettings& settings, double dt_s);
+
+// The six components in the order of CellControl::component, and their row and column in sigma.
+inline constexpr std::array<const char*, 6> component_names{"xx", "yy", "zz", "xy", "xz", "yz"};
+inline constexpr int component_row[6] = {0, 1, 2, 0, 0, 1}, component_column[6] = {0, 1, 2, 1, 2, 2};
+
+// A constraint on the whole cell, which sets the components marked Follow:
+//  - ConstantVolume (undrained): tr G = 0; the following axes share the opposite of the other
+//    axes' rates equally. Only axes can follow, at least one and not all three.
+//  - ConstantMeanStress: exactly one axis is strain-rate controlled (the leader) and the two
+//    others follow as stress targets computed each step from the leader's measured stress s_l:
+//    the first follower (in xx, yy, zz order) s_f = (3 p - s_l (1 + b)) / (2 - b), the second
+//    s_f + b (s_l - s_f). Their mean with s_l is p; with the leader as the major stress,
+//    b = (s_2 - s_3) / (s_1 - s_3) is the intermediate principal stress ratio (b = 0 triaxial
+//    compression, b = 1 triaxial extension at constant p).
+struct CellConstraint {
+  enum class Kind { None, ConstantVolume, ConstantMeanStress };
+  Kind kind = Kind::None;
+  double mean_stress_Pa = 0;  // ConstantMeanStress: p
+  double b = 0;               // ConstantMeanStress, in [0, 1]
+};
+
+struct CellControl {
+  std::array<AxisTarget, 6> component;  // xx yy zz xy xz yz; the shears default to zero strain rate
+  CellConstraint constraint;
+  static CellControl of_axes(const CellTargets& axes) {
+    CellControl c;
+    for (std::size_t k = 0; k < 3; ++k) c.component[k] = axes[k];
+    return c;
+  }
+  bool shears() const;  // some shear component is not held at zero strain rate
+};
+
+// What is wrong with a control, naming its components ("" if nothing): a component that follows
+// without a constraint, a constraint that leaves a component free or over-determines one.
+std::string control_error(const CellControl& control);
+
+// The velocity gradient of the next step (control_error(control) must be "").
+CellRates servo_rates(const CellControl& control, const Mat3& stress_Pa, const Vec3& stiffness_Pa,
+                      const ServoSettings& settings, double dt_s);
 
 // The servo above with a learnt stiffness. A packing is softer than affine (particles rearrange,
 // contacts slide): with real stiffness kappa K the servo above settles, on a ramp at rate r, to a
@@ -47,6 +94,8 @@ class AdaptiveServo {
  public:
   explicit AdaptiveServo(const ServoSettings& settings) : settings_(settings) {}
   Vec3 rates(const CellTargets& targets, const Mat3& stress_Pa, const Vec3& stiffness_Pa, double dt_s);
+  // Every component; kappa is learnt from the stress-controlled axes (constraint followers included).
+  CellRates rates(const CellControl& control, const Mat3& stress_Pa, const Vec3& stiffness_Pa, double dt_s);
   const Vec3& stiffness_ratio() const { return kappa_; }
   // What the servo has learnt so far (saved in checkpoints).
   struct State {

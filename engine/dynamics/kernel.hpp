@@ -76,12 +76,14 @@ struct PairForces {
 // The inputs and outputs of `compute_forces`, as raw pointers (the arrays do not alias, and the
 // compiler keeps them in registers). The pair loop itself (dynamics/kernel_simd_pairs.inc) is
 // written once for any lanes and compiled for one lane, AVX2 and AVX-512; the contact law
-// (contact/contact_law.hpp) supplies every force, energy and history update.
-template <class Law>
+// (contact/contact_law.hpp) supplies every force, energy and history update. `Sheared`: the
+// cell may be tilted or shearing (the branch vectors and the affine velocity take the tilts and
+// shear rates in); an orthorhombic cell runs the loop without them (the same result bit for bit).
+template <class Law, bool Sheared>
 struct PairLoop {
   Law law;
   PeriodicCell cell;
-  Vec3 strain_rate;
+  CellRates rates;
   double dt;
   const std::uint32_t* __restrict first;
   const std::uint32_t* __restrict second;
@@ -98,8 +100,8 @@ struct PairLoop {
 
   // Sizes the outputs and points at them.
   PairLoop(const Law& law_, const Particles& p, const PeriodicCell& cell_, const PairList& pairs, ContactHistory& history,
-           const Vec3& strain_rate_, double dt_, PairForces& out)
-      : law(law_), cell(cell_), strain_rate(strain_rate_), dt(dt_) {
+           const CellRates& rates_, double dt_, PairForces& out)
+      : law(law_), cell(cell_), rates(rates_), dt(dt_) {
     // One spare entry, zero: the vectorised update reads each entry as four doubles (the fourth
     // is the next entry's first, and is dropped), so the last pair's read stays inside the array.
     out.force.resize(pairs.size() + 1);
@@ -132,12 +134,12 @@ StepSums total_of_chunks(const std::vector<StepSums>& chunk_sums, const Periodic
 
 // Contact forces at the current positions, `simd_lanes` (0, 4 or 8; see dynamics/kernel_simd.hpp)
 // pairs at a time, the same result bit for bit at any width. Velocities are those of the previous
-// half step; the relative velocity at a contact includes the affine part -rate (.) l of the
-// deforming cell. `sums` receives the contact stress and the servo stiffness; `history` is
-// updated. Instantiated for every law of AnyContactLaw (dynamics/kernel_simd.cpp).
-template <class Law>
+// half step; the relative velocity at a contact includes the affine part -G l of the deforming
+// cell. `sums` receives the contact stress and the servo stiffness; `history` is updated.
+// Instantiated for every law of AnyContactLaw, orthorhombic and sheared (dynamics/kernel_simd.cpp).
+template <class Law, bool Sheared>
 void compute_forces(int simd_lanes, const Law& law, const Particles& p, const PeriodicCell& cell, const PairList& pairs,
-                    ContactHistory& history, const PairIndex& index, const Vec3& strain_rate, double dt, PairForces& out,
+                    ContactHistory& history, const PairIndex& index, const CellRates& rates, double dt, PairForces& out,
                     StepSums& sums);
 
 // Viscous body damping, integrated semi-implicitly (exact for the damping term alone):
@@ -180,11 +182,13 @@ struct LocalDamping {
 
 // The per-particle work of `integrate`, on raw pointers: `gather` sums a particle's pair forces
 // and torques, `update` moves it. The vectorised version (dynamics/kernel_simd.cpp) updates four
-// particles at a time and uses these for the gathers and the particles left over.
-template <bool Rotate, class DampingPolicy>
+// particles at a time and uses these for the gathers and the particles left over. `Sheared`: the
+// fractional step is H^-1 v dt by back substitution (with zero tilts the same bits as v dt / L).
+template <bool Rotate, class DampingPolicy, bool Sheared = false>
 struct ParticleLoop {
   const DampingPolicy& damping;
   Vec3 dt_over_L;
+  Vec3 inv_L, tilt;  // Sheared only
   double dt;
   std::size_t n;
   const std::uint32_t* __restrict first_begin;
@@ -203,7 +207,8 @@ struct ParticleLoop {
   // Sizes the outputs and points at them.
   ParticleLoop(const DampingPolicy& damping_, Particles& p, const PeriodicCell& cell, const PairIndex& index,
                PairForces& pf, std::vector<Vec3>& force, double dt_)
-      : damping(damping_), dt_over_L(dt_ * cell.inverse_lengths()), dt(dt_), n(p.size()) {
+      : damping(damping_), dt_over_L(dt_ * cell.inverse_lengths()), inv_L(cell.inverse_lengths()), tilt(cell.tilts()),
+        dt(dt_), n(p.size()) {
     force.resize(n);
     pf.motion_sums.resize(static_cast<std::size_t>(chunk_count(n)));
     first_begin = index.first_begin.data();
@@ -234,13 +239,23 @@ struct ParticleLoop {
     }
   }
 
+  // H^-1 v dt: back substitution from z (v dt / L for an orthorhombic cell).
+  Vec3 fractional_step(const Vec3& u) const {
+    if constexpr (!Sheared) {
+      return u.cwiseProduct(dt_over_L);
+    } else {
+      const double uz = u[2] * inv_L[2], vy = u[1] - tilt[2] * uz, uy = vy * inv_L[1];
+      return Vec3((u[0] - (tilt[0] * uy + tilt[1] * uz)) * dt_over_L[0], vy * dt_over_L[1], u[2] * dt_over_L[2]);
+    }
+  }
+
   // Leapfrog update of particle i under net force f (stored in net[i]) and torque t; adds to `sums`
   // (twice the energies). Returns false if the particle cannot be wrapped back into the cell.
   bool update(std::size_t i, const Vec3& f, const Vec3& t, MotionSums& sums) const {
     net[i] = f;
     const Vec3 v_old = v[i];
     damping.velocity(i, v[i], f);
-    s[i] += v[i].cwiseProduct(dt_over_L);
+    s[i] += fractional_step(v[i]);
     const bool ok = PeriodicCell::wrap(s[i]);
     const double speed2 = v[i].squaredNorm(), m = mass[i], twice_ke_new = m * speed2;
     sums.max_speed2 = std::max(sums.max_speed2, speed2);
@@ -271,14 +286,14 @@ MotionSums total_of_chunks(const std::vector<MotionSums>& chunk_sums, bool wrapp
 // energy changes by exactly dt (F + F_damping).v_mid with v_mid = (v_old + v_new) / 2 (the
 // leapfrog update is m (v_new - v_old) = dt (F + F_damping)), so the damping took
 // dt F.v_mid - (1/2 m v_new^2 - 1/2 m v_old^2).
-template <bool Rotate, class DampingPolicy>
+template <bool Rotate, class DampingPolicy, bool Sheared = false>
 MotionSums integrate(const DampingPolicy& damping, Particles& p, const PeriodicCell& cell, const PairIndex& index,
                      PairForces& pf, std::vector<Vec3>& force, double dt) {
-  const ParticleLoop<Rotate, DampingPolicy> loop(damping, p, cell, index, pf, force, dt);
+  const ParticleLoop<Rotate, DampingPolicy, Sheared> loop(damping, p, cell, index, pf, force, dt);
   const bool wrapped = for_each_chunk(loop.n, [&](std::size_t c, std::size_t begin, std::size_t end) {
     MotionSums chunk;  // sums of twice the energies; halved by total_of_chunks
     bool ok = true;
-    const ParticleLoop<Rotate, DampingPolicy> local = loop;  // a local copy: its pointers stay in registers
+    const ParticleLoop<Rotate, DampingPolicy, Sheared> local = loop;  // a local copy: its pointers stay in registers
     for (std::size_t i = begin; i < end; ++i) {
       Vec3 f, t;
       local.gather(i, f, t);

@@ -200,8 +200,8 @@ inline V wrap(V x, V& inside) {
 // and one add each (the fourth lane carries the next entry's first component and is dropped;
 // PairLoop gives the arrays a spare entry): lanes 0-2 add exactly what the scalar gather adds, in
 // the same order. Stores the net force in net[i] and the torque in *torque.
-template <bool Rotate, class DampingPolicy>
-inline void gather_net(const ParticleLoop<Rotate, DampingPolicy>& loop, std::size_t i, Vec3* torque) {
+template <bool Rotate, class DampingPolicy, bool Sheared>
+inline void gather_net(const ParticleLoop<Rotate, DampingPolicy, Sheared>& loop, std::size_t i, Vec3* torque) {
   V f = zero(), t = zero();
   for (std::uint32_t m = loop.second_begin[i]; m < loop.second_begin[i + 1]; ++m) {
     const std::uint32_t k = loop.second_pairs[m];
@@ -243,8 +243,8 @@ inline V3 damped_update(const LocalDamping& d, bool rot, std::size_t ib, const V
                            local_damped(f.z, v_old.z, alpha)};
 }
 
-template <bool Rotate, class DampingPolicy>
-void particle_chunk(const ParticleLoop<Rotate, DampingPolicy>& loop, std::size_t begin, std::size_t end,
+template <bool Rotate, class DampingPolicy, bool Sheared>
+void particle_chunk(const ParticleLoop<Rotate, DampingPolicy, Sheared>& loop, std::size_t begin, std::size_t end,
                          MotionSums& out, bool& ok) {
   constexpr std::size_t batch = 16;  // blocks
   Vec3 torque[4 * batch];
@@ -254,6 +254,8 @@ void particle_chunk(const ParticleLoop<Rotate, DampingPolicy>& loop, std::size_t
   const DampingPolicy& damping = loop.damping;
   const V dt = splat(loop.dt);
   const V dtLx = splat(loop.dt_over_L[0]), dtLy = splat(loop.dt_over_L[1]), dtLz = splat(loop.dt_over_L[2]);
+  const V inv_Ly = splat(loop.inv_L[1]), inv_Lz = splat(loop.inv_L[2]);  // Sheared only
+  const V t_xy = splat(loop.tilt[0]), t_xz = splat(loop.tilt[1]), t_yz = splat(loop.tilt[2]);
   std::size_t i = begin;
   while (i + 4 <= end) {
     const std::size_t n_blocks = std::min(batch, (end - i) / 4);
@@ -264,8 +266,14 @@ void particle_chunk(const ParticleLoop<Rotate, DampingPolicy>& loop, std::size_t
       const V3 v_new = damped_update(damping, false, ib, v_old, f);
       store(loop.v + ib, v_new);
       const V3 s = load(loop.s + ib);
-      store(loop.s + ib, {wrap(s.x + v_new.x * dtLx, inside), wrap(s.y + v_new.y * dtLy, inside),
-                           wrap(s.z + v_new.z * dtLz, inside)});
+      if constexpr (Sheared) {  // ParticleLoop::fractional_step
+        const V uz = v_new.z * inv_Lz, vy = v_new.y - t_yz * uz, uy = vy * inv_Ly;
+        const V vx = v_new.x - (t_xy * uy + t_xz * uz);
+        store(loop.s + ib, {wrap(s.x + vx * dtLx, inside), wrap(s.y + vy * dtLy, inside), wrap(s.z + v_new.z * dtLz, inside)});
+      } else {
+        store(loop.s + ib, {wrap(s.x + v_new.x * dtLx, inside), wrap(s.y + v_new.y * dtLy, inside),
+                             wrap(s.z + v_new.z * dtLz, inside)});
+      }
       const V m = _mm256_loadu_pd(loop.mass + ib);
       const V speed2 = dot(v_new, v_new), twice_ke_new = m * speed2;
       speed2_max = _mm256_max_pd(speed2_max, speed2);
@@ -413,10 +421,10 @@ struct Accumulator {
 #pragma GCC diagnostic pop
 #pragma GCC pop_options
 
-template <bool Rotate, class DampingPolicy>
+template <bool Rotate, class DampingPolicy, bool Sheared>
 MotionSums integrate_simd(const DampingPolicy& damping, Particles& p, const PeriodicCell& cell, const PairIndex& index,
                           PairForces& pf, std::vector<Vec3>& force, double dt) {
-  const ParticleLoop<Rotate, DampingPolicy> loop(damping, p, cell, index, pf, force, dt);
+  const ParticleLoop<Rotate, DampingPolicy, Sheared> loop(damping, p, cell, index, pf, force, dt);
   const bool wrapped = for_each_chunk(loop.n, [&](std::size_t c, std::size_t begin, std::size_t end) {
     bool ok = true;
     avx2::particle_chunk(loop, begin, end, pf.motion_sums[c], ok);
@@ -425,20 +433,25 @@ MotionSums integrate_simd(const DampingPolicy& damping, Particles& p, const Peri
   return total_of_chunks(pf.motion_sums, wrapped);
 }
 
-template MotionSums integrate_simd<true>(const ViscousDamping&, Particles&, const PeriodicCell&, const PairIndex&,
-                                         PairForces&, std::vector<Vec3>&, double);
-template MotionSums integrate_simd<false>(const ViscousDamping&, Particles&, const PeriodicCell&, const PairIndex&,
-                                          PairForces&, std::vector<Vec3>&, double);
-template MotionSums integrate_simd<true>(const LocalDamping&, Particles&, const PeriodicCell&, const PairIndex&,
-                                         PairForces&, std::vector<Vec3>&, double);
-template MotionSums integrate_simd<false>(const LocalDamping&, Particles&, const PeriodicCell&, const PairIndex&,
-                                          PairForces&, std::vector<Vec3>&, double);
+// integrate_simd for both damping forms, with and without rotation, orthorhombic and sheared.
+#define DEM_INTEGRATE_SIMD(Rotate, Damping, Sheared)                                                           \
+  template MotionSums integrate_simd<Rotate, Damping, Sheared>(const Damping&, Particles&, const PeriodicCell&, \
+                                                               const PairIndex&, PairForces&, std::vector<Vec3>&, double);
+DEM_INTEGRATE_SIMD(true, ViscousDamping, false)
+DEM_INTEGRATE_SIMD(true, ViscousDamping, true)
+DEM_INTEGRATE_SIMD(false, ViscousDamping, false)
+DEM_INTEGRATE_SIMD(false, ViscousDamping, true)
+DEM_INTEGRATE_SIMD(true, LocalDamping, false)
+DEM_INTEGRATE_SIMD(true, LocalDamping, true)
+DEM_INTEGRATE_SIMD(false, LocalDamping, false)
+DEM_INTEGRATE_SIMD(false, LocalDamping, true)
+#undef DEM_INTEGRATE_SIMD
 
-template <class Law>
+template <class Law, bool Sheared>
 void compute_forces(int simd_lanes, const Law& law, const Particles& p, const PeriodicCell& cell, const PairList& pairs,
-                    ContactHistory& history, const PairIndex& index, const Vec3& strain_rate, double dt, PairForces& out,
+                    ContactHistory& history, const PairIndex& index, const CellRates& rates, double dt, PairForces& out,
                     StepSums& sums) {
-  const PairLoop<Law> loop(law, p, cell, pairs, history, strain_rate, dt, out);
+  const PairLoop<Law, Sheared> loop(law, p, cell, pairs, history, rates, dt, out);
   for_each_pair_chunk(index, [&](std::size_t c, std::size_t begin, std::size_t end) {
     StepSums chunk;
     std::size_t k = begin;  // pairs before k done by the vector loop
@@ -451,15 +464,15 @@ void compute_forces(int simd_lanes, const Law& law, const Particles& p, const Pe
   sums = total_of_chunks(out.chunk_sums, cell);
 }
 
-// compute_forces for every law a scene can choose: the table's addresses make the compiler emit
+// compute_forces for every law a scene can choose, orthorhombic and sheared: the table's addresses make the compiler emit
 // each instantiation for dynamics/simulation.cpp to call.
 namespace {
 template <class Variant>
 struct ForcesOfEveryLaw;
 template <class... Laws>
 struct ForcesOfEveryLaw<std::variant<Laws...>> {
-  using Table = std::tuple<decltype(&compute_forces<Laws>)...>;
-  static Table table() { return {&compute_forces<Laws>...}; }
+  using Table = std::tuple<decltype(&compute_forces<Laws, false>)..., decltype(&compute_forces<Laws, true>)...>;
+  static Table table() { return {&compute_forces<Laws, false>..., &compute_forces<Laws, true>...}; }
 };
 }  // namespace
 extern const ForcesOfEveryLaw<AnyContactLaw>::Table forces_of_every_law;

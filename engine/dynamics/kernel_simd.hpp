@@ -22,7 +22,7 @@ void cap_simd_width(int lanes);
 
 // As `integrate` (the vectorised leapfrog update, four particles at a time), with viscous or
 // local damping; call only if simd_width() >= 4.
-template <bool Rotate, class DampingPolicy>
+template <bool Rotate, class DampingPolicy, bool Sheared>
 MotionSums integrate_simd(const DampingPolicy& damping, Particles& p, const PeriodicCell& cell, const PairIndex& index,
                           PairForces& pf, std::vector<Vec3>& force, double dt);
 

@@ -57,14 +57,24 @@ struct KernelImpl final : Simulation::Kernel {
   int simd = simd_width();  // the same result at any width; wider is faster
   KernelImpl(Law l, DampingPolicy d) : law(l), damping(std::move(d)) {}
   void forces(Simulation& s) override {
-    compute_forces(simd, law, s.particles_, s.cell_, s.list_.pairs(), s.history_, s.list_.index(), s.strain_rate_, s.dt_,
-                   *s.pair_forces_, s.sums_);
+    if (s.cell_.sheared() || s.rates_.shears())
+      compute_forces<Law, true>(simd, law, s.particles_, s.cell_, s.list_.pairs(), s.history_, s.list_.index(), s.rates_,
+                                s.dt_, *s.pair_forces_, s.sums_);
+    else
+      compute_forces<Law, false>(simd, law, s.particles_, s.cell_, s.list_.pairs(), s.history_, s.list_.index(), s.rates_,
+                                 s.dt_, *s.pair_forces_, s.sums_);
   }
   MotionSums integrate(Simulation& s) override {
+    if (s.cell_.sheared()) return integrate_as<true>(s);
+    return integrate_as<false>(s);
+  }
+  template <bool Sheared>
+  MotionSums integrate_as(Simulation& s) {
     if (simd)
-      return integrate_simd<Law::rotates>(damping, s.particles_, s.cell_, s.list_.index(), *s.pair_forces_, s.force_,
-                                            s.dt_);
-    return dem::integrate<Law::rotates>(damping, s.particles_, s.cell_, s.list_.index(), *s.pair_forces_, s.force_, s.dt_);
+      return integrate_simd<Law::rotates, DampingPolicy, Sheared>(damping, s.particles_, s.cell_, s.list_.index(),
+                                                                  *s.pair_forces_, s.force_, s.dt_);
+    return dem::integrate<Law::rotates, DampingPolicy, Sheared>(damping, s.particles_, s.cell_, s.list_.index(),
+                                                                *s.pair_forces_, s.force_, s.dt_);
   }
 };
 
@@ -115,31 +125,47 @@ void Simulation::adopt(const ContactHistory& history) {
   if (history_.rolling_on && history.rolling_on && history.rolling.size() == n) history_.rolling = history.rolling;
 }
 
-void Simulation::restore(std::int64_t step, const Vec3& strain_rate, PairList contacts, const ContactHistory& history) {
+void Simulation::restore(std::int64_t step, const CellRates& rates, PairList contacts, const ContactHistory& history) {
   step_ = step;
-  strain_rate_ = strain_rate;
+  rates_ = rates;
   list_.restore(std::move(contacts));
   adopt(history);
 }
 
-void Simulation::restore_checkpoint(std::int64_t step, const Vec3& strain_rate, VerletList::Saved list,
+void Simulation::restore_checkpoint(std::int64_t step, const CellRates& rates, VerletList::Saved list,
                                     const ContactHistory& history, const EnergyBalance& energy) {
   step_ = step;
-  strain_rate_ = strain_rate;
+  rates_ = rates;
   list_.restore_exact(std::move(list), particles_);
   adopt(history);
   energy_ = energy;
 }
 
 void Simulation::step(const CellTargets& targets, const ServoSettings& servo) {
-  advance([&] { return servo_strain_rates(targets, sums_.stress_Pa, sums_.stiffness_Pa, servo, dt_); });
+  advance([&] { return CellRates{servo_strain_rates(targets, sums_.stress_Pa, sums_.stiffness_Pa, servo, dt_), Vec3::Zero()}; });
 }
 
 void Simulation::step(const CellTargets& targets, AdaptiveServo& servo) {
-  advance([&] { return servo.rates(targets, sums_.stress_Pa, sums_.stiffness_Pa, dt_); });
+  advance([&] { return CellRates{servo.rates(targets, sums_.stress_Pa, sums_.stiffness_Pa, dt_), Vec3::Zero()}; });
 }
 
-void Simulation::advance(const std::function<Vec3()>& strain_rates) {
+void Simulation::step(const CellControl& control, AdaptiveServo& servo) {
+  advance([&] { return servo.rates(control, sums_.stress_Pa, sums_.stiffness_Pa, dt_); });
+}
+
+void Simulation::step(const CellControl& control, const ServoSettings& servo) {
+  advance([&] { return servo_rates(control, sums_.stress_Pa, sums_.stiffness_Pa, servo, dt_); });
+}
+
+void Simulation::remap_cell() {
+  const PeriodicCell before = cell_;
+  if (!cell_.remap()) return;
+  for (Vec3& s : particles_.s) s = cell_.remapped(before, s);
+  list_.invalidate();  // the same pairs, at other fractional positions: rebuilt at the next step
+  ++cell_remaps_;
+}
+
+void Simulation::advance(const std::function<CellRates()>& rates) {
   if (list_.rebuild_due(particles_, cell_)) list_.build(particles_, cell_, &history_);
   kernel_->forces(*this);
   if (!sums_.stress_Pa.allFinite()) {
@@ -150,12 +176,18 @@ void Simulation::advance(const std::function<Vec3()>& strain_rates) {
   // The cell's work over the last step, trapezoidal in V sigma (the rate is the one applied since
   // the previous evaluation).
   const Vec3 virial = sums_.stress_Pa.diagonal() * cell_.volume();
-  if (energy_.started) energy_.work_by_cell += 0.5 * dt_ * strain_rate_.dot(virial + energy_.virial);
+  const Mat3& sigma = sums_.stress_Pa;
+  const Vec3 shear_virial = Vec3(sigma(0, 1), sigma(0, 2), sigma(1, 2)) * cell_.volume();
+  if (energy_.started) {
+    energy_.work_by_cell += 0.5 * dt_ * rates_.axial.dot(virial + energy_.virial);
+    if (rates_.shears()) energy_.work_by_cell += 0.5 * dt_ * rates_.shear.dot(shear_virial + energy_.shear_virial);
+  }
   energy_.virial = virial;
+  energy_.shear_virial = shear_virial;
   energy_.elastic = sums_.elastic_normal_J + sums_.elastic_tangential_J + sums_.elastic_rolling_J;
   energy_.dissipated_friction += sums_.friction_loss_J;
   energy_.dissipated_rolling += sums_.rolling_loss_J;
-  strain_rate_ = strain_rates();
+  rates_ = rates();
   const MotionSums motion = kernel_->integrate(*this);
   list_.add_motion(dt_ * std::sqrt(motion.max_speed2));
   kinetic_energy_ = motion.kinetic_half_step;
@@ -168,7 +200,8 @@ void Simulation::advance(const std::function<Vec3()>& strain_rates) {
         << time() << " s): the run is unstable (time step too large for the stiffness?)";
     throw NonFiniteError(msg.str());
   }
-  cell_.deform(strain_rate_, dt_);
+  cell_.deform(rates_, dt_);
+  if (remap_cell_ && cell_.sheared()) remap_cell();
   ++step_;
 }
 

@@ -5,12 +5,15 @@
 //   1. rebuild the Verlet list if the rebuild criterion says so;
 //   2. contact forces at the current positions (velocities from the previous half step);
 //      the contact stress and the servo stiffness are summed in the same loop;
-//   3. strain rates of the cell from the axis targets (servo);
+//   3. the cell's velocity gradient from its control (servo);
 //   4. leapfrog update of velocities (with damping) and fractional positions;
-//   5. homogeneous deformation of the cell.
+//   5. homogeneous deformation of the cell, re-mapped when a tilt passes half a length.
 //
 // The contact law (contact/contact_law.hpp) and the damping form are chosen once, when the
-// simulation is built; the per-step loop is a monomorphic template (see dynamics/kernel.hpp).
+// simulation is built; the per-step loop is a monomorphic template (see dynamics/kernel.hpp),
+// compiled twice: for an orthorhombic cell and for one that is tilted or shearing. Each step runs
+// the first while the cell has no tilt and no shear rate, so a scene that never shears pays
+// nothing for shear.
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -67,7 +70,8 @@ struct StepSums {          // by-products of the last force evaluation
 // Simulation (or of its restore). Energies are those of the last force evaluation, time t_n:
 // kinetic energy is the time-centred 1/2 m v(n-1/2).v(n+1/2), which with elastic energy at x_n
 // makes the leapfrog energy error O(dt^2) (exactly conserved for linear springs); the cell's work
-// is the trapezoidal sum of V sigma_kk rate_k dt between force evaluations.
+// is the trapezoidal sum of V sigma : G dt between force evaluations (axes, and shears when the
+// cell shears).
 struct EnergyBalance {
   double work_by_cell = 0;         // integral of V sigma : d(eps), compression positive
   double dissipated_damping = 0;   // taken by the damping (translational + rotational)
@@ -77,6 +81,7 @@ struct EnergyBalance {
   double elastic = 0;              // normal + tangential + rolling
   double stored_at_start = 0;      // kinetic + elastic at the first step
   Vec3 virial = Vec3::Zero();      // V sigma_kk at the last evaluation [J]
+  Vec3 shear_virial = Vec3::Zero();  // V sigma_xy, V sigma_xz, V sigma_yz at the last evaluation [J]
   bool started = false;
   double stored() const { return kinetic + elastic; }
   double energy_in() const { return stored_at_start + work_by_cell; }
@@ -98,6 +103,9 @@ class Simulation {
   void step(const CellTargets& targets, const ServoSettings& servo);
   // The same with a servo that learns the packing's stiffness (stress stages and paths).
   void step(const CellTargets& targets, AdaptiveServo& servo);
+  // Every component of the cell's velocity gradient (control_error(control) must be "").
+  void step(const CellControl& control, AdaptiveServo& servo);
+  void step(const CellControl& control, const ServoSettings& servo);
 
   const Particles& particles() const { return particles_; }
   const PeriodicCell& cell() const { return cell_; }
@@ -110,7 +118,12 @@ class Simulation {
   double time_step() const { return dt_; }
   std::int64_t step_count() const { return step_; }
   double time() const { return static_cast<double>(step_) * dt_; }
-  const Vec3& strain_rate() const { return strain_rate_; }  // applied in the last step [1/s]
+  const Vec3& strain_rate() const { return rates_.axial; }  // applied in the last step [1/s]
+  const CellRates& rates() const { return rates_; }         // the velocity gradient applied in the last step
+  // Whether the cell is re-mapped when a tilt passes half a length (on by default; off to compare
+  // a run with its re-mapped twin, or for tilts that stay small).
+  void set_cell_remapping(bool on) { remap_cell_ = on; }
+  std::size_t cell_remaps() const { return cell_remaps_; }
   const StepSums& sums() const { return sums_; }
   const std::vector<Vec3>& net_force() const { return force_; }  // from the last force evaluation [N]
   double kinetic_energy() const { return kinetic_energy_; }      // translational, fluctuating, after the last step [J]
@@ -118,10 +131,10 @@ class Simulation {
 
   // Restores the dynamic state saved by a previous run (for a bit-for-bit continuation). A history
   // of another kind than this law keeps (none, another tangential law) starts unloaded.
-  void restore(std::int64_t step, const Vec3& strain_rate, PairList contacts, const ContactHistory& history);
+  void restore(std::int64_t step, const CellRates& rates, PairList contacts, const ContactHistory& history);
   // Restores a checkpoint of this same run (run/checkpoint.hpp): also the whole Verlet list, its
   // history and the energy balance, so that rows, rebuilds and sums continue exactly as without the stop.
-  void restore_checkpoint(std::int64_t step, const Vec3& strain_rate, VerletList::Saved list, const ContactHistory& history,
+  void restore_checkpoint(std::int64_t step, const CellRates& rates, VerletList::Saved list, const ContactHistory& history,
                           const EnergyBalance& energy);
 
   // Internal: the per-step kernel, chosen once from the material and damping.
@@ -131,8 +144,9 @@ class Simulation {
   template <class Law, class DampingPolicy>
   friend struct KernelImpl;
   void adopt(const ContactHistory& history);  // `history` if of this law's kinds, else unloaded
-  // One step, the fixed order above; `strain_rates` is called after the force evaluation.
-  void advance(const std::function<Vec3()>& strain_rates);
+  // One step, the fixed order above; `rates` is called after the force evaluation.
+  void advance(const std::function<CellRates()>& rates);
+  void remap_cell();
   Particles particles_;
   PeriodicCell cell_;
   Material material_;
@@ -141,7 +155,9 @@ class Simulation {
   VerletList list_;
   ContactHistory history_;
   std::int64_t step_ = 0;
-  Vec3 strain_rate_ = Vec3::Zero();
+  CellRates rates_;
+  bool remap_cell_ = true;
+  std::size_t cell_remaps_ = 0;
   StepSums sums_;
   std::unique_ptr<PairForces> pair_forces_;  // per-pair forces of the last evaluation
   std::vector<Vec3> force_;

@@ -96,6 +96,12 @@ void write_state(hid_t group, const Simulation& sim) {
   h5::write(group, "cell_lengths", std::vector<double>{L[0], L[1], L[2]}, 1, "m");
   h5::write(group, "cell_reference_lengths", std::vector<double>{L0[0], L0[1], L0[2]}, 1, "m");
   h5::write(group, "cell_strain_rate", std::vector<double>{r[0], r[1], r[2]}, 1, "1/s");
+  if (cell.sheared() || sim.rates().shears() || cell.shear_strain() != Vec3::Zero()) {
+    const Vec3 &t = cell.tilts(), &g = sim.rates().shear, &gamma = cell.shear_strain();
+    h5::write(group, "cell_tilts", std::vector<double>{t[0], t[1], t[2]}, 1, "m");
+    h5::write(group, "cell_shear_rate", std::vector<double>{g[0], g[1], g[2]}, 1, "1/s");
+    h5::write(group, "cell_shear_strain", std::vector<double>{gamma[0], gamma[1], gamma[2]}, 1, "1");
+  }
 
   // Contacts: the pairs whose spheres overlap, with their history.
   const PairList& pairs = sim.pairs();
@@ -166,7 +172,23 @@ SavedState read_state_unchecked(hid_t g, const std::string& file) {
       throw h5::Error(file + ": /state cell lengths must be positive and finite, strain rates finite");
   st.cell = PeriodicCell(Vec3(L[0], L[1], L[2]));
   st.cell.set_reference_lengths(Vec3(L0[0], L0[1], L0[2]));
-  st.strain_rate_per_s = Vec3(r[0], r[1], r[2]);
+  st.rates.axial = Vec3(r[0], r[1], r[2]);
+  if (h5::exists(g, "cell_tilts")) {  // a cell that has sheared
+    Vec3 shear[3];
+    const char* names[3] = {"cell_tilts", "cell_shear_rate", "cell_shear_strain"};
+    for (int q = 0; q < 3; ++q) {
+      const auto v = h5::read<double>(g, names[q], cols);
+      if (v.size() != 3 || !std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2]))
+        throw h5::Error(file + ": /state/" + names[q] + " must be 3 finite values");
+      shear[q] = Vec3(v[0], v[1], v[2]);
+    }
+    st.cell.set_tilts(shear[0]);
+    st.rates.shear = shear[1];
+    st.cell.set_shear_strain(shear[2]);
+    if (std::abs(shear[0][0]) > 0.5 * L[0] * (1 + 1e-12) || std::abs(shear[0][1]) > 0.5 * L[0] * (1 + 1e-12) ||
+        std::abs(shear[0][2]) > 0.5 * L[1] * (1 + 1e-12))
+      throw h5::Error(file + ": /state/cell_tilts: a tilt is more than half the length it tilts along");
+  }
   SavedPairs contacts = read_pairs(g, file, "contact", n);
   st.contacts = std::move(contacts.pairs);
   st.history = std::move(contacts.history);

@@ -1,5 +1,6 @@
 #pragma once
 // The saved state: everything needed to continue a run bit for bit (layout in engine/README.md).
+// A cell that has sheared also has cell_tilts, cell_shear_rate and cell_shear_strain (absent: 0).
 #include <cstdint>
 #include <string>
 
@@ -13,7 +14,7 @@ struct SavedState {
   PeriodicCell cell;
   PairList contacts;     // pairs in contact
   ContactHistory history;  // their history (what the law that wrote it keeps)
-  Vec3 strain_rate_per_s = Vec3::Zero();
+  CellRates rates;  // the velocity gradient applied in the last step
   std::int64_t step = 0;
   double time_step_s = 0;
 };

@@ -5,6 +5,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <Eigen/SVD>
+
 namespace dem {
 
 void PairIndex::build(const PairList& pairs, std::size_t particles) {
@@ -23,20 +25,26 @@ void PairIndex::build(const PairList& pairs, std::size_t particles) {
   for (std::size_t k = 0; k < pairs.size(); ++k) second_pairs[fill[pairs.second[k]]++] = static_cast<std::uint32_t>(k);
 }
 
+namespace {
+Vec3 singular_values(const Mat3& m) { return Eigen::JacobiSVD<Mat3>(m).singularValues(); }  // descending
+}  // namespace
+
 double VerletList::max_displacement(const Particles& p, const PeriodicCell& cell) const {
-  const Vec3& L = cell.lengths();
   double max_disp2 = 0;  // a maximum: the same whatever the order or the number of threads
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(p.size());
 #pragma omp parallel for schedule(static) reduction(max : max_disp2)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
     const Vec3 ds = PeriodicCell::min_image(p.s[i] - s_at_build_[i]);
-    max_disp2 = std::max(max_disp2, ds.cwiseProduct(L).squaredNorm());
+    max_disp2 = std::max(max_disp2, cell.to_real(ds).squaredNorm());
   }
   return std::sqrt(max_disp2);
 }
 
 double VerletList::affine_closing(const PeriodicCell& cell) const {
-  const double lambda_min = cell.lengths().cwiseQuotient(lengths_at_build_).minCoeff();
+  // A branch vector l at the build is H H_build^-1 l now: it is at least lambda_min |l| long.
+  const double lambda_min = cell.sheared() || cell_at_build_.sheared()
+                                ? singular_values(cell.matrix() * cell_at_build_.matrix().inverse())[2]
+                                : cell.lengths().cwiseQuotient(cell_at_build_.lengths()).minCoeff();
   return (2 * max_radius_ + skin_) * std::max(0.0, 1.0 - lambda_min);
 }
 
@@ -51,21 +59,29 @@ bool VerletList::rebuild_due(const Particles& p, const PeriodicCell& cell) {
   // motion since the last measurement times the largest L / L_min; the 0.1 % margins cover round-off.
   const Vec3& L = cell.lengths();
   lengths_min_ = lengths_min_.cwiseMin(L);
-  const double stretch = L.cwiseQuotient(lengths_min_).maxCoeff();
+  double stretch = L.cwiseQuotient(lengths_min_).maxCoeff();
+  if (cell.sheared() || smallest_singular_value_ > 0) {  // |H d| <= s_max(H_now) / s_min(H_then) |H_then d|
+    const Vec3 sv = singular_values(cell.matrix());
+    smallest_singular_value_ = smallest_singular_value_ > 0 ? std::min(smallest_singular_value_, sv[2]) : sv[2];
+    stretch = sv[0] / smallest_singular_value_;
+  }
   const double affine = affine_closing(cell);
   if (2 * 1.001 * stretch * drift_m_ + affine <= 0.999 * skin_) return false;  // false for a NaN bound too
   ++exact_checks_;
   const double d_max = max_displacement(p, cell);
   drift_m_ = d_max, lengths_min_ = L;
+  smallest_singular_value_ = cell.sheared() ? singular_values(cell.matrix())[2] : 0;
   return beyond_skin(d_max, affine);
 }
 
 void VerletList::collect_pairs(const Particles& p, const PeriodicCell& cell, PairList& out) const {
   const std::size_t n = p.size();
-  const Vec3& L = cell.lengths();
+  // Bins of at least `range` between opposite faces: a ball of that radius spans at most one bin
+  // on either side along every fractional axis, whatever the tilt.
+  const Vec3 width = cell.widths();
   const double range = 2 * max_radius_ + skin_;
   int nb[3];
-  for (int k = 0; k < 3; ++k) nb[k] = static_cast<int>(std::floor(L[k] / range));
+  for (int k = 0; k < 3; ++k) nb[k] = static_cast<int>(std::floor(width[k] / range));
   auto within = [&](std::size_t i, std::size_t j) {
     const double cut = p.radius[i] + p.radius[j] + skin_;
     return cell.branch(p.s[i], p.s[j]).squaredNorm() < cut * cut;
@@ -123,7 +139,8 @@ double largest_radius(const Particles& p) {
 void VerletList::restore_exact(Saved saved, const Particles& p) {
   pairs_ = std::move(saved.pairs);
   s_at_build_ = std::move(saved.s_at_build);
-  lengths_at_build_ = saved.lengths_at_build;
+  cell_at_build_.set_lengths(saved.lengths_at_build);
+  cell_at_build_.set_tilts(saved.tilts_at_build);
   builds_ = saved.builds;
   built_ = true;
   drift_m_ = std::numeric_limits<double>::infinity();  // measured at the next check
@@ -134,10 +151,12 @@ void VerletList::restore_exact(Saved saved, const Particles& p) {
 void VerletList::build(const Particles& p, const PeriodicCell& cell, ContactHistory* history) {
   max_radius_ = largest_radius(p);  // the particles' own: collect_pairs bins by it
   const double range = 2 * max_radius_ + skin_;
+  const Vec3 width = cell.widths();  // the lengths for an orthorhombic cell
   for (int k = 0; k < 3; ++k) {
-    if (cell.lengths()[k] <= 2 * range) {
+    if (width[k] <= 2 * range) {
       std::ostringstream msg;
-      msg << "cell side L" << k + 1 << " = " << cell.lengths()[k] << " m is not larger than twice the contact range "
+      msg << (cell.sheared() ? "cell width " : "cell side L") << k + 1 << " = " << width[k]
+          << " m is not larger than twice the contact range "
           << "2*(largest diameter + skin) = " << 2 * range << " m: the periodic minimum image would be ambiguous";
       throw std::runtime_error(msg.str());
     }
@@ -167,8 +186,9 @@ void VerletList::build(const Particles& p, const PeriodicCell& cell, ContactHist
   from_previous_ = std::move(from_previous);
   s_at_build_ = std::move(s_at_build);
   if (history) *history = std::move(carried);
-  lengths_at_build_ = cell.lengths();
+  cell_at_build_ = cell;
   drift_m_ = 0, lengths_min_ = cell.lengths();
+  smallest_singular_value_ = cell.sheared() ? singular_values(cell.matrix())[2] : 0;
   built_ = true;
   ++builds_;
 }

@@ -11,13 +11,14 @@
 // Rebuild criterion (`needs_rebuild`): a pair outside the list at build time had a surface gap
 // > skin. Its gap can close only through the particles' own displacement (at most 2 d_max, d_max
 // measured relative to the deforming cell) and through the cell's contraction (at most
-// (2 r_max + skin)(1 - lambda_min), lambda_min the smallest L/L_build). We rebuild before the sum
-// of the two can exceed the skin.
+// (2 r_max + skin)(1 - lambda_min), lambda_min the smallest L/L_build; for a tilted cell the
+// smallest singular value of H H_build^-1). We rebuild before the sum of the two can exceed the skin.
 //
 // That criterion costs a pass over every particle. The step calls `rebuild_due` instead, which
 // first screens with a bound that costs nothing per particle: the fluctuating displacement of any
 // particle since the last exact measurement is at most the sum over steps of dt max_i |v_i| (told
-// by `add_motion`), times the largest stretch L/L_min of a cell side since then. Only when that
+// by `add_motion`), times the largest stretch L/L_min of a cell side since then (for a tilted
+// cell: the largest singular value of H over the smallest one of any H since). Only when that
 // bound cannot rule a rebuild out does it run the exact criterion, whose measured displacement
 // restarts the bound. The list is therefore rebuilt at exactly the steps where the exact criterion
 // alone would rebuild it.
@@ -71,6 +72,9 @@ class VerletList {
     pairs_ = std::move(pairs);
     built_ = false;
   }
+  // Asks for a rebuild at the next step (after the cell was re-mapped: the same pairs, but every
+  // fractional position moved); the history is carried over by the build as usual.
+  void invalidate() { built_ = false; }
   // Rebuilds the list, and carries `history` (one entry per pair) over to the new pairs; throws
   // std::runtime_error if the cell is too small for the minimum image. If it throws (that, or an
   // allocation), the list and the history are left as they were.
@@ -89,8 +93,9 @@ class VerletList {
     std::vector<Vec3> s_at_build;
     Vec3 lengths_at_build = Vec3::Ones();
     std::size_t builds = 0;
+    Vec3 tilts_at_build = Vec3::Zero();
   };
-  Saved saved() const { return {pairs_, s_at_build_, lengths_at_build_, builds_}; }
+  Saved saved() const { return {pairs_, s_at_build_, cell_at_build_.lengths(), builds_, cell_at_build_.tilts()}; }
   void restore_exact(Saved saved, const Particles& p);
 
  private:
@@ -105,7 +110,7 @@ class VerletList {
   std::vector<std::uint32_t> from_previous_;
   PairIndex index_;
   std::vector<Vec3> s_at_build_;
-  Vec3 lengths_at_build_ = Vec3::Ones();
+  PeriodicCell cell_at_build_;
   double max_radius_ = 0;
   std::size_t builds_ = 0;
   bool built_ = false;
@@ -113,6 +118,7 @@ class VerletList {
   // since, and the shortest cell sides since then. Infinite until the first measurement.
   double drift_m_ = std::numeric_limits<double>::infinity();
   Vec3 lengths_min_ = Vec3::Ones();
+  double smallest_singular_value_ = 0;  // of any H since the last measurement (tilted cells)
   std::size_t exact_checks_ = 0;
 };
 

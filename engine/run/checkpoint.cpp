@@ -45,6 +45,7 @@ void write_list(hid_t g, const VerletList::Saved& list, const ContactHistory& hi
   write_pairs(g, "verlet", list.pairs, history);
   h5::write(g, "verlet_position_fractional_at_build", flatten(list.s_at_build), 3, "1");
   write_vec3(g, "verlet_cell_lengths_at_build", list.lengths_at_build, "m");
+  if (list.tilts_at_build != Vec3::Zero()) write_vec3(g, "verlet_cell_tilts_at_build", list.tilts_at_build, "m");
   h5::set_attribute(g, "verlet_builds", static_cast<std::int64_t>(list.builds));
 }
 
@@ -55,6 +56,7 @@ VerletList::Saved read_list(hid_t g, const std::string& file, std::size_t n, Con
   history = std::move(pairs.history);
   list.s_at_build = read_vec3(g, file, "verlet_position_fractional_at_build");
   list.lengths_at_build = read_one_vec3(g, file, "verlet_cell_lengths_at_build");
+  if (h5::exists(g, "verlet_cell_tilts_at_build")) list.tilts_at_build = read_one_vec3(g, file, "verlet_cell_tilts_at_build");
   list.builds = static_cast<std::size_t>(int_attribute(g, file, "verlet_builds", 0, std::numeric_limits<std::int64_t>::max()));
   if (list.s_at_build.size() != n)
     throw h5::Error(file + ": /checkpoint/state: verlet_position_fractional_at_build has " +
@@ -75,6 +77,7 @@ void write_energy(hid_t g, const EnergyBalance& e) {
   h5::set_attribute(g, "energy_stored_at_start", e.stored_at_start);
   h5::set_attribute(g, "energy_started", static_cast<std::int64_t>(e.started));
   write_vec3(g, "energy_virial", e.virial, "J");
+  if (e.shear_virial != Vec3::Zero()) write_vec3(g, "energy_shear_virial", e.shear_virial, "J");
 }
 
 EnergyBalance read_energy(hid_t g, const std::string& file) {
@@ -88,6 +91,7 @@ EnergyBalance read_energy(hid_t g, const std::string& file) {
   e.stored_at_start = finite_attribute(g, file, "energy_stored_at_start");
   e.started = int_attribute(g, file, "energy_started", 0, 1) == 1;
   e.virial = read_one_vec3(g, file, "energy_virial");
+  if (h5::exists(g, "energy_shear_virial")) e.shear_virial = read_one_vec3(g, file, "energy_shear_virial");
   return e;
 }
 
@@ -192,7 +196,7 @@ Checkpoint read_checkpoint(const std::string& file) {
 Simulation restore_simulation(const SceneConfig& scene, Checkpoint& c) {
   Simulation sim(std::move(c.state.particles), c.state.cell, scene.material, scene.damping, scene.time_step_s,
                  scene.verlet_skin_m);
-  sim.restore_checkpoint(c.state.step, c.state.strain_rate_per_s, std::move(c.list), c.list_history, c.energy);
+  sim.restore_checkpoint(c.state.step, c.state.rates, std::move(c.list), c.list_history, c.energy);
   return sim;
 }
 

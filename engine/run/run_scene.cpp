@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <memory>
 #include <new>
+#include <numbers>
 #include <optional>
 #include <sstream>
 
@@ -63,7 +64,7 @@ Simulation build_simulation(const SceneConfig& scene) {
     // A new run from a saved state: its own step count starts at zero; the dynamic state continues.
     // A history the scene's law does not keep (a frictional scene from a frictionless sample, a
     // Hertz-Mindlin scene from a linear one) starts unloaded; one the law does not use is dropped.
-    sim.restore(0, saved.strain_rate_per_s, std::move(saved.contacts), saved.history);
+    sim.restore(0, saved.rates, std::move(saved.contacts), saved.history);
   }
   return sim;
 }
@@ -190,6 +191,8 @@ void run_stress_path_stage(Simulation& sim, const SceneConfig& scene, int index,
   Vec3 strain_at_leg_start = resume ? resume->strain_at_leg_start : sim.cell().strain();
   if (resume) servo.restore(resume->servo), done_steps = resume->done_steps;
   CellTargets targets;
+  CellControl control;  // zero_shear_stress: the axes' targets, and zero shear stress
+  for (std::size_t k = 3; k < 6; ++k) control.component[k] = {AxisTarget::Mode::Stress, 0, 0, 0};
   for (std::size_t leg_index = resume ? static_cast<std::size_t>(resume->leg) : 0; leg_index < legs.size(); ++leg_index) {
     const PathLeg& leg = legs[leg_index];
     const std::int64_t n = std::max<std::int64_t>(1, steps_in(leg.duration_s, dt));
@@ -208,7 +211,12 @@ void run_stress_path_stage(Simulation& sim, const SceneConfig& scene, int index,
       const Vec3 target = leg.from_Pa + (leg.to_Pa - leg.from_Pa) * (static_cast<double>(i) / static_cast<double>(n));
       for (int k = 0; k < 3; ++k)
         targets[static_cast<std::size_t>(k)] = {AxisTarget::Mode::Stress, 0, target[k], rate[k]};
-      sim.step(targets, servo);
+      if (st.zero_shear_stress) {
+        for (std::size_t k = 0; k < 3; ++k) control.component[k] = targets[k];
+        sim.step(control, servo);
+      } else {
+        sim.step(targets, servo);
+      }
       const Mat3& s = sim.sums().stress_Pa;  // at this step's positions, i.e. at time t_i
       for (int k = 0; k < 3; ++k) sum_sq[k] += (s(k, k) - target[k]) * (s(k, k) - target[k]);
       const double p_now = s.trace() / 3;
@@ -238,6 +246,91 @@ void run_stress_path_stage(Simulation& sim, const SceneConfig& scene, int index,
   }
 }
 
+// The strain of component k since the reference: axial true strain or engineering shear strain.
+double component_strain(const PeriodicCell& cell, int k) { return k < 3 ? cell.strain()[k] : cell.shear_strain()[k - 3]; }
+
+void run_control_stage(Simulation& sim, const SceneConfig& scene, int index, const StageHooks& hooks,
+                       const StageCursor* resume) {
+  const StageConfig& st = scene.stages[static_cast<std::size_t>(index)];
+  const double dt = sim.time_step();
+  const std::int64_t n = steps_in(st.duration_s, dt);
+  AdaptiveServo servo = stage_servo(scene, st);
+  const CyclicLoading& cyc = st.cyclic;
+  const std::size_t kc = static_cast<std::size_t>(std::max(cyc.component, 0));
+  // At the stage start: p0 (for r_u), the deviator of the cyclic axis, the strains.
+  const auto deviator = [&](const Mat3& s) {
+    const int k = static_cast<int>(kc), a = (k + 1) % 3, b = (k + 2) % 3;
+    return s(k, k) - 0.5 * (s(a, a) + s(b, b));
+  };
+  const Mat3 s0 = count_contacts(sim).stress_Pa;
+  const double p0 = resume ? resume->from_Pa[0] : s0.trace() / 3, q0 = resume ? resume->from_Pa[1] : deviator(s0);
+  const double strain0 = resume ? resume->from_Pa[2] : component_strain(sim.cell(), static_cast<int>(kc));
+  const double until_strain0 = st.until.component >= 0 ? component_strain(sim.cell(), st.until.component) : 0;
+  Vec3 cycle_strain = resume ? resume->sum_sq : Vec3(0, 0, 0);  // min, max of the cyclic strain in this cycle; DA so far
+  if (resume) servo.restore(resume->servo);
+  const double omega = cyc.component >= 0 ? 2 * std::numbers::pi / cyc.period_s : 0;
+  std::string ended = "duration reached";
+  for (std::int64_t i = resume ? resume->i : 0; i < n; ++i) {
+    if (i > 0 && checkpoint_due(hooks, sim)) {
+      StageCursor here = cursor_at(index, i);
+      here.servo = servo.state(), here.from_Pa = Vec3(p0, q0, strain0), here.sum_sq = cycle_strain;
+      hooks.checkpoint(sim, here);
+    }
+    const double t = static_cast<double>(i) * dt;
+    CellControl control = st.control;
+    int cycle = 0;
+    if (cyc.component >= 0) {
+      AxisTarget& c = control.component[kc];
+      const double wave = cyc.amplitude * std::sin(omega * t), wave_rate = cyc.amplitude * omega * std::cos(omega * t);
+      cycle = static_cast<int>(std::floor(t / cyc.period_s)) + 1;
+      switch (cyc.quantity) {
+        case CyclicLoading::Quantity::Stress: c.stress_Pa += wave, c.stress_rate_Pa_per_s = wave_rate; break;
+        case CyclicLoading::Quantity::Deviator: {
+          const Mat3& s = sim.sums().stress_Pa;  // the others' stress at the last evaluation
+          const int a = (static_cast<int>(kc) + 1) % 3, b = (static_cast<int>(kc) + 2) % 3;
+          c.stress_Pa = 0.5 * (s(a, a) + s(b, b)) + q0 + wave, c.stress_rate_Pa_per_s = wave_rate;
+          break;
+        }
+        case CyclicLoading::Quantity::Strain: c.strain_rate_per_s += wave_rate; break;
+      }
+    }
+    sim.step(control, servo);
+    RowContext where{index, cycle};
+    where.mean_stress_at_stage_start = p0;
+    std::string stop;
+    if (cyc.component >= 0) {
+      const double e = component_strain(sim.cell(), static_cast<int>(kc)) - strain0;
+      const bool new_cycle = i > 0 && static_cast<int>(std::floor(static_cast<double>(i + 1) * dt / cyc.period_s)) + 1 > cycle;
+      cycle_strain[0] = std::min(cycle_strain[0], e), cycle_strain[1] = std::max(cycle_strain[1], e);
+      where.double_amplitude_strain = cycle_strain[1] - cycle_strain[0];
+      cycle_strain[2] = std::max(cycle_strain[2], where.double_amplitude_strain);
+      if (st.until.double_amplitude_strain > 0 && where.double_amplitude_strain >= st.until.double_amplitude_strain)
+        stop = "double_amplitude_strain";
+      if (new_cycle) cycle_strain[0] = cycle_strain[1] = e;
+    }
+    const double p = sim.sums().stress_Pa.trace() / 3;
+    if (st.until.pore_pressure_ratio > 0 && p0 > 0 && 1 - p / p0 >= st.until.pore_pressure_ratio) stop = "pore_pressure_ratio";
+    if (st.until.strain > 0 &&
+        std::abs(component_strain(sim.cell(), st.until.component) - until_strain0) >= st.until.strain)
+      stop = "strain";
+    if (hooks.row && (output_due(sim, scene) || !stop.empty() || i + 1 == n)) hooks.row(sim, where);
+    if (hooks.progress && i % progress_every == 0) {
+      std::ostringstream status;
+      if (cyc.component >= 0) status << "cycle " << cycle << ", ";
+      status << "r_u " << (p0 > 0 ? 1 - p / p0 : 0.0);
+      hooks.progress(sim, {index, static_cast<double>(i) / static_cast<double>(n), status.str()});
+    }
+    if (!stop.empty()) {
+      std::ostringstream why;
+      why << "until." << stop << " met at time " << sim.time() << " s";
+      if (cyc.component >= 0) why << " after " << (t + dt) / cyc.period_s << " cycles";
+      ended = why.str();
+      break;
+    }
+  }
+  if (hooks.attribute) hooks.attribute("stage_end_" + st.name, ended);
+}
+
 }  // namespace
 
 void run_stage(Simulation& sim, const SceneConfig& scene, int index, const StageHooks& hooks, const StageCursor* resume) {
@@ -250,6 +343,7 @@ void run_stage(Simulation& sim, const SceneConfig& scene, int index, const Stage
     case StageConfig::Type::StrainRate: run_strain_rate_stage(sim, scene, index, hooks, resume); break;
     case StageConfig::Type::Stress: run_stress_stage(sim, scene, index, hooks, resume); break;
     case StageConfig::Type::StressPath: run_stress_path_stage(sim, scene, index, hooks, resume); return;  // rows at every leg end
+    case StageConfig::Type::Control: run_control_stage(sim, scene, index, hooks, resume); return;  // its last row is its end
   }
   if (hooks.row && !output_due(sim, scene)) hooks.row(sim, {index});  // the stage end is always recorded
 }
@@ -302,6 +396,7 @@ RunSummary run_stages(Simulation& sim, const SceneConfig& scene, const Checkpoin
     }
   };
   hooks.leg = [&](const LegRecord& r) { out.append_leg(leg_row(r)); };
+  hooks.attribute = [&](const std::string& name, const std::string& value) { out.set_attribute(name, value); };
   // Checkpoints by steps and by wall time (the clock is read every 256 steps); never twice at
   // one step, so a resumed run does not write again the checkpoint it started from.
   std::int64_t last_checkpoint_step = sim.step_count();

@@ -42,6 +42,7 @@ struct StageHooks {
   std::function<void(const Simulation&, const StageProgress&)> progress;  // every few hundred steps
   std::function<void(const LegRecord&)> leg;                              // at each leg end of a stress path
   std::function<void(const std::string&)> warning;                        // e.g. inertial number above 1e-3
+  std::function<void(const std::string&, const std::string&)> attribute;  // a result attribute, e.g. why a stage ended
   // Asked between two steps of a stage (never at its first step; not at all if checkpoint_due is
   // unset): if checkpoint_due says yes, checkpoint gets where the stage is. The next thing the
   // stage does is a step.

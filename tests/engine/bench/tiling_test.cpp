@@ -21,7 +21,7 @@ SavedState state_of(const Simulation& sim) {
   SavedState st;
   st.particles = sim.particles();
   st.cell = sim.cell();
-  st.strain_rate_per_s = sim.strain_rate();
+  st.rates = sim.rates();
   st.time_step_s = sim.time_step();
   st.history.tangential_name = sim.history().tangential_name;
   for (const auto& [i, j, spring, sliding, rolling] : touching(sim)) {
@@ -41,7 +41,7 @@ SavedState state_of(const Simulation& sim) {
 Simulation from_state(SavedState st, const Simulation& like) {
   Simulation sim(std::move(st.particles), st.cell, like.material(), like.damping(), like.time_step(),
                  like.verlet_list().skin());
-  sim.restore(0, st.strain_rate_per_s, std::move(st.contacts), st.history);
+  sim.restore(0, st.rates, std::move(st.contacts), st.history);
   return sim;
 }
 

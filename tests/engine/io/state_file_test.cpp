@@ -98,7 +98,7 @@ TEST_CASE("a saved state loads into a new simulation exactly, with its step coun
   CHECK(sim.particles().mass == st.particles.mass);
   CHECK(sim.cell().lengths() == st.cell.lengths());
   CHECK(sim.cell().reference_lengths() == st.cell.reference_lengths());
-  CHECK(sim.strain_rate() == st.strain_rate_per_s);
+  CHECK(sim.strain_rate() == st.rates.axial);
   CHECK(sim.pairs().first == st.contacts.first);
   CHECK(sim.history().tangential == st.history.tangential);
   CHECK(sim.history().sliding == st.history.sliding);
@@ -254,7 +254,7 @@ TEST_CASE("non-positive or non-finite cell lengths and non-finite strain rates i
   // Control: a negative strain rate (extension) is a valid state.
   const std::string extension =
       damaged_copy(good, "negative_rate", [](hid_t f) { edit_values<double>(f, "state/cell_strain_rate", [](auto& v) { v[0] = -5; }); });
-  CHECK(read_state(extension).strain_rate_per_s[0] == -5);
+  CHECK(read_state(extension).rates.axial[0] == -5);
 }
 
 TEST_CASE("a saved fractional position outside the unit interval is refused", "[io][state]") {

@@ -218,7 +218,7 @@ TEST_CASE("Verlet list: a contact's tangential spring survives rebuilds inside a
     saved.first = {0};
     saved.second = {1};
     ContactHistory history{"tangential_spring", false, {Vec3(0, 2e-6, 0)}, {0}, {}};
-    sim.restore(0, Vec3::Zero(), saved, history);
+    sim.restore(0, CellRates{}, saved, history);
     return sim;
   };
   Simulation moving = run(1000, 1e-5), reference = run(0, 1e-3);

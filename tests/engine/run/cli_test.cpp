@@ -304,6 +304,13 @@ TEST_CASE("dem run: a run out of memory says so, in its exit status, on stderr a
     CHECK_FALSE(fs::exists(out));
     if (!fs::exists(out + ".partial")) continue;  // stopped before the result file existed
     const std::string status = dem::test::h5_status(out + ".partial");
+    // HDF5 itself out of memory while the file is being created (34 MiB: "creating column ...
+    // failed") may not manage to write the status either; the partial result then has none (so it
+    // is never taken for a finished one) and the reason is on stderr, checked above.
+    if (status.empty() && r.out.find("HDF5: ") != std::string::npos) {
+      WARN(mib << " MiB: HDF5 ran out of memory creating the file; its status could not be written");
+      continue;
+    }
     CHECK_THAT(status, Catch::Matchers::StartsWith("failed: ") && Catch::Matchers::Contains("out of memory") &&
                            !Catch::Matchers::Contains("interrupted"));
     if (status == "failed: out of memory (std::bad_alloc)") ++out_of_memory_status;

@@ -206,7 +206,7 @@ void check_resume_files(const Variant& v) {
   CHECK(a.particles.radius == b.particles.radius);
   CHECK(a.cell.lengths() == b.cell.lengths());
   CHECK(a.cell.reference_lengths() == b.cell.reference_lengths());
-  CHECK(a.strain_rate_per_s == b.strain_rate_per_s);
+  CHECK(a.rates.axial == b.rates.axial);
   CHECK(a.contacts.first == b.contacts.first);
   CHECK(a.contacts.second == b.contacts.second);
   CHECK(a.history.tangential_name == b.history.tangential_name);
@@ -339,8 +339,8 @@ TEST_CASE("the first row of a continued run reports the saved state's kinetic en
   for (double r : st.particles.radius) d_mean += 2 * r;
   d_mean /= static_cast<double>(st.particles.size());
   const double p = h5::read<double>(gb, "p", cols).front();
-  REQUIRE(st.strain_rate_per_s.cwiseAbs().maxCoeff() == Approx(20).epsilon(1e-12));
-  CHECK(ib.front() == Approx(st.strain_rate_per_s.cwiseAbs().maxCoeff() * d_mean * std::sqrt(2650 / p)).epsilon(1e-12));
+  REQUIRE(st.rates.axial.cwiseAbs().maxCoeff() == Approx(20).epsilon(1e-12));
+  CHECK(ib.front() == Approx(st.rates.axial.cwiseAbs().maxCoeff() * d_mean * std::sqrt(2650 / p)).epsilon(1e-12));
   // ... and the kinetic energy sum 1/2 m v^2 over the saved velocities.
   double e = 0;
   for (std::size_t i = 0; i < st.particles.size(); ++i) e += 0.5 * st.particles.mass[i] * st.particles.v[i].squaredNorm();
