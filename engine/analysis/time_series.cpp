@@ -13,7 +13,7 @@ const std::vector<SeriesColumn>& series_columns() {
       {"step", "1", "time step index"},
       {"time", "s", "simulated time"},
       {"stage", "1", "stage index (0-based, order of the scene)"},
-      {"cycle", "1", "stress-path cycle (0 before the first cycle or outside paths)"},
+      {"cycle", "1", "stress-path cycle, or cycle of a control stage's cyclic loading (0 outside cycles)"},
       {"leg", "1", "stress-path leg index from 0 (-1 outside paths)"},
       {"leg_end", "1", "1 if the row is taken at the end of a leg"},
       {"cycle_end", "1", "1 if the row is taken at the end of a cycle"},

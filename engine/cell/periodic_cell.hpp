@@ -45,8 +45,10 @@ class PeriodicCell {
     H << L_[0], tilt_[0], tilt_[1], 0, L_[1], tilt_[2], 0, 0, L_[2];
     return H;
   }
-  // The distance between opposite faces, per axis: V / |b x c|, V / |c x a|, V / |a x b|.
+  // The distance between opposite faces, per axis: V / |b x c|, V / |c x a|, V / |a x b| (the
+  // lengths themselves, exactly, for an orthorhombic cell).
   Vec3 widths() const {
+    if (!sheared()) return L_;
     const double xy = tilt_[0], xz = tilt_[1], yz = tilt_[2];
     const Vec3 bc(L_[1] * L_[2], -xy * L_[2], xy * yz - L_[1] * xz);
     return Vec3(volume() / bc.norm(), L_[1] * L_[2] / std::hypot(L_[2], yz), L_[2]);

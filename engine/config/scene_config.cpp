@@ -127,7 +127,7 @@ int component_index(const std::string& name) {
 }
 
 // The `control` of a control stage: per component {strain_rate: r}, {stress: s} or follow.
-CellControl read_control(Section s, const Section& stage) {
+CellControl read_control(Section s) {
   CellControl c;
   for (std::size_t k = 0; k < 6; ++k) {
     const std::string name = component_names[k];
@@ -158,7 +158,6 @@ CellControl read_control(Section s, const Section& stage) {
     m.finish();
   }
   s.finish();
-  (void)stage;
   return c;
 }
 
@@ -201,7 +200,7 @@ StageConfig read_stage(Section s) {
       if (s.has(key)) e << YAML::Key << key << YAML::Value << s.raw(key, "", "");
     e << YAML::EndMap;
     st.control_text = e.c_str();
-    st.control = read_control(s.child("control", "per component xx yy zz xy xz yz: {strain_rate: r}, {stress: s} or follow"), s);
+    st.control = read_control(s.child("control", "per component xx yy zz xy xz yz: {strain_rate: r}, {stress: s} or follow"));
     if (s.has("constraint")) {
       Section c = s.child("constraint", "a constraint the following components obey");
       const std::string kind = c.choice("type", {"constant_volume", "constant_mean_stress"}, std::nullopt,

@@ -71,12 +71,6 @@ Vec3 servo_strain_rates(const CellTargets& targets, const Mat3& stress_Pa, const
   return rate;
 }
 
-bool CellControl::shears() const {
-  for (std::size_t k = 3; k < 6; ++k)
-    if (component[k].mode != AxisTarget::Mode::StrainRate || component[k].strain_rate_per_s != 0) return true;
-  return false;
-}
-
 std::string control_error(const CellControl& c) {
   std::ostringstream msg;
   int axis_followers = 0;

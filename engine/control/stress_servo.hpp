@@ -72,7 +72,6 @@ struct CellControl {
     for (std::size_t k = 0; k < 3; ++k) c.component[k] = axes[k];
     return c;
   }
-  bool shears() const;  // some shear component is not held at zero strain rate
 };
 
 // What is wrong with a control, naming its components ("" if nothing): a component that follows

@@ -151,7 +151,7 @@ void VerletList::restore_exact(Saved saved, const Particles& p) {
 void VerletList::build(const Particles& p, const PeriodicCell& cell, ContactHistory* history) {
   max_radius_ = largest_radius(p);  // the particles' own: collect_pairs bins by it
   const double range = 2 * max_radius_ + skin_;
-  const Vec3 width = cell.widths();  // the lengths for an orthorhombic cell
+  const Vec3 width = cell.widths();
   for (int k = 0; k < 3; ++k) {
     if (width[k] <= 2 * range) {
       std::ostringstream msg;

@@ -1,5 +1,6 @@
 #include "run/checkpoint.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -110,6 +111,11 @@ void write_cursor(hid_t g, const StageCursor& c) {
   write_vec3(g, "servo_kappa", c.servo.kappa, "1");
   write_vec3(g, "servo_predicted", c.servo.predicted, "Pa");
   write_vec3(g, "servo_window_start", c.servo.window_start, "Pa");
+  h5::set_attribute(g, "mean_stress_at_start", c.mean_stress_at_start);
+  h5::set_attribute(g, "deviator_at_start", c.deviator_at_start);
+  h5::set_attribute(g, "cycle_low", c.cycle_low);
+  h5::set_attribute(g, "cycle_high", c.cycle_high);
+  h5::write(g, "strain_at_start", std::vector<double>(c.strain_at_start.begin(), c.strain_at_start.end()), 1, "1");
 }
 
 StageCursor read_cursor(hid_t g, const std::string& file) {
@@ -128,6 +134,15 @@ StageCursor read_cursor(hid_t g, const std::string& file) {
   c.servo.kappa = read_one_vec3(g, file, "servo_kappa");
   c.servo.predicted = read_one_vec3(g, file, "servo_predicted");
   c.servo.window_start = read_one_vec3(g, file, "servo_window_start");
+  c.mean_stress_at_start = finite_attribute(g, file, "mean_stress_at_start");
+  c.deviator_at_start = finite_attribute(g, file, "deviator_at_start");
+  c.cycle_low = finite_attribute(g, file, "cycle_low");
+  c.cycle_high = finite_attribute(g, file, "cycle_high");
+  std::size_t cols = 0;
+  const std::vector<double> strains = h5::read<double>(g, "strain_at_start", cols);
+  if (strains.size() != 6 || !std::all_of(strains.begin(), strains.end(), [](double e) { return std::isfinite(e); }))
+    throw h5::Error(file + ": /checkpoint: strain_at_start must be 6 finite values");
+  std::copy(strains.begin(), strains.end(), c.strain_at_start.begin());
   return c;
 }
 

@@ -249,6 +249,9 @@ void run_stress_path_stage(Simulation& sim, const SceneConfig& scene, int index,
 // The strain of component k since the reference: axial true strain or engineering shear strain.
 double component_strain(const PeriodicCell& cell, int k) { return k < 3 ? cell.strain()[k] : cell.shear_strain()[k - 3]; }
 
+// The mean stress of the two axes other than k.
+double lateral_stress(const Mat3& s, int k) { return 0.5 * (s((k + 1) % 3, (k + 1) % 3) + s((k + 2) % 3, (k + 2) % 3)); }
+
 void run_control_stage(Simulation& sim, const SceneConfig& scene, int index, const StageHooks& hooks,
                        const StageCursor* resume) {
   const StageConfig& st = scene.stages[static_cast<std::size_t>(index)];
@@ -256,41 +259,46 @@ void run_control_stage(Simulation& sim, const SceneConfig& scene, int index, con
   const std::int64_t n = steps_in(st.duration_s, dt);
   AdaptiveServo servo = stage_servo(scene, st);
   const CyclicLoading& cyc = st.cyclic;
-  const std::size_t kc = static_cast<std::size_t>(std::max(cyc.component, 0));
-  // At the stage start: p0 (for r_u), the deviator of the cyclic axis, the strains.
-  const auto deviator = [&](const Mat3& s) {
-    const int k = static_cast<int>(kc), a = (k + 1) % 3, b = (k + 2) % 3;
-    return s(k, k) - 0.5 * (s(a, a) + s(b, b));
+  const bool cyclic = cyc.component >= 0;
+  const int kc = std::max(cyc.component, 0);
+  // What the stage measures from its start (p0 for r_u, q0 of a cyclic deviator, the strains),
+  // and the range of the cyclic strain in the current cycle: from the checkpoint when resuming.
+  StageCursor start;
+  if (resume) {
+    start = *resume;
+    servo.restore(resume->servo);
+  } else {
+    const Mat3 s0 = count_contacts(sim).stress_Pa;
+    start.mean_stress_at_start = s0.trace() / 3;
+    start.deviator_at_start = s0(kc, kc) - lateral_stress(s0, kc);
+    for (int k = 0; k < 6; ++k) start.strain_at_start[static_cast<std::size_t>(k)] = component_strain(sim.cell(), k);
+  }
+  const double p0 = start.mean_stress_at_start;
+  const auto strain_since_start = [&](int k) {
+    return component_strain(sim.cell(), k) - start.strain_at_start[static_cast<std::size_t>(k)];
   };
-  const Mat3 s0 = count_contacts(sim).stress_Pa;
-  const double p0 = resume ? resume->from_Pa[0] : s0.trace() / 3, q0 = resume ? resume->from_Pa[1] : deviator(s0);
-  const double strain0 = resume ? resume->from_Pa[2] : component_strain(sim.cell(), static_cast<int>(kc));
-  const double until_strain0 = st.until.component >= 0 ? component_strain(sim.cell(), st.until.component) : 0;
-  Vec3 cycle_strain = resume ? resume->sum_sq : Vec3(0, 0, 0);  // min, max of the cyclic strain in this cycle; DA so far
-  if (resume) servo.restore(resume->servo);
-  const double omega = cyc.component >= 0 ? 2 * std::numbers::pi / cyc.period_s : 0;
+  double low = start.cycle_low, high = start.cycle_high;
+  const double omega = cyclic ? 2 * std::numbers::pi / cyc.period_s : 0;
+  const auto cycle_of = [&](std::int64_t step) { return static_cast<int>(std::floor(static_cast<double>(step) * dt / cyc.period_s)) + 1; };
   std::string ended = "duration reached";
   for (std::int64_t i = resume ? resume->i : 0; i < n; ++i) {
     if (i > 0 && checkpoint_due(hooks, sim)) {
-      StageCursor here = cursor_at(index, i);
-      here.servo = servo.state(), here.from_Pa = Vec3(p0, q0, strain0), here.sum_sq = cycle_strain;
+      StageCursor here = start;
+      here.stage = index, here.i = i, here.servo = servo.state(), here.cycle_low = low, here.cycle_high = high;
       hooks.checkpoint(sim, here);
     }
-    const double t = static_cast<double>(i) * dt;
     CellControl control = st.control;
-    int cycle = 0;
-    if (cyc.component >= 0) {
-      AxisTarget& c = control.component[kc];
+    const int cycle = cyclic ? cycle_of(i) : 0;
+    if (cyclic) {
+      const double t = static_cast<double>(i) * dt;
       const double wave = cyc.amplitude * std::sin(omega * t), wave_rate = cyc.amplitude * omega * std::cos(omega * t);
-      cycle = static_cast<int>(std::floor(t / cyc.period_s)) + 1;
+      AxisTarget& c = control.component[static_cast<std::size_t>(kc)];
       switch (cyc.quantity) {
         case CyclicLoading::Quantity::Stress: c.stress_Pa += wave, c.stress_rate_Pa_per_s = wave_rate; break;
-        case CyclicLoading::Quantity::Deviator: {
-          const Mat3& s = sim.sums().stress_Pa;  // the others' stress at the last evaluation
-          const int a = (static_cast<int>(kc) + 1) % 3, b = (static_cast<int>(kc) + 2) % 3;
-          c.stress_Pa = 0.5 * (s(a, a) + s(b, b)) + q0 + wave, c.stress_rate_Pa_per_s = wave_rate;
+        case CyclicLoading::Quantity::Deviator:  // about the other axes' stress at the last evaluation
+          c.stress_Pa = lateral_stress(sim.sums().stress_Pa, kc) + start.deviator_at_start + wave;
+          c.stress_rate_Pa_per_s = wave_rate;
           break;
-        }
         case CyclicLoading::Quantity::Strain: c.strain_rate_per_s += wave_rate; break;
       }
     }
@@ -298,32 +306,27 @@ void run_control_stage(Simulation& sim, const SceneConfig& scene, int index, con
     RowContext where{index, cycle};
     where.mean_stress_at_stage_start = p0;
     std::string stop;
-    if (cyc.component >= 0) {
-      const double e = component_strain(sim.cell(), static_cast<int>(kc)) - strain0;
-      const bool new_cycle = i > 0 && static_cast<int>(std::floor(static_cast<double>(i + 1) * dt / cyc.period_s)) + 1 > cycle;
-      cycle_strain[0] = std::min(cycle_strain[0], e), cycle_strain[1] = std::max(cycle_strain[1], e);
-      where.double_amplitude_strain = cycle_strain[1] - cycle_strain[0];
-      cycle_strain[2] = std::max(cycle_strain[2], where.double_amplitude_strain);
-      if (st.until.double_amplitude_strain > 0 && where.double_amplitude_strain >= st.until.double_amplitude_strain)
-        stop = "double_amplitude_strain";
-      if (new_cycle) cycle_strain[0] = cycle_strain[1] = e;
+    if (cyclic) {
+      const double e = strain_since_start(kc);
+      low = std::min(low, e), high = std::max(high, e);
+      where.double_amplitude_strain = high - low;
+      if (st.until.double_amplitude_strain > 0 && high - low >= st.until.double_amplitude_strain) stop = "double_amplitude_strain";
+      if (cycle_of(i + 1) > cycle) low = high = e;  // the next step starts a cycle
     }
     const double p = sim.sums().stress_Pa.trace() / 3;
     if (st.until.pore_pressure_ratio > 0 && p0 > 0 && 1 - p / p0 >= st.until.pore_pressure_ratio) stop = "pore_pressure_ratio";
-    if (st.until.strain > 0 &&
-        std::abs(component_strain(sim.cell(), st.until.component) - until_strain0) >= st.until.strain)
-      stop = "strain";
+    if (st.until.strain > 0 && std::abs(strain_since_start(st.until.component)) >= st.until.strain) stop = "strain";
     if (hooks.row && (output_due(sim, scene) || !stop.empty() || i + 1 == n)) hooks.row(sim, where);
     if (hooks.progress && i % progress_every == 0) {
       std::ostringstream status;
-      if (cyc.component >= 0) status << "cycle " << cycle << ", ";
+      if (cyclic) status << "cycle " << cycle << ", ";
       status << "r_u " << (p0 > 0 ? 1 - p / p0 : 0.0);
       hooks.progress(sim, {index, static_cast<double>(i) / static_cast<double>(n), status.str()});
     }
     if (!stop.empty()) {
       std::ostringstream why;
       why << "until." << stop << " met at time " << sim.time() << " s";
-      if (cyc.component >= 0) why << " after " << (t + dt) / cyc.period_s << " cycles";
+      if (cyclic) why << " after " << static_cast<double>(i + 1) * dt / cyc.period_s << " cycles";
       ended = why.str();
       break;
     }

@@ -1,5 +1,6 @@
 #pragma once
 // Running a scene: building the simulation from its particle source, then its stages in order.
+#include <array>
 #include <functional>
 #include <string>
 
@@ -35,6 +36,10 @@ struct StageCursor {
   Vec3 sum_sq = Vec3::Zero();  // of the leg so far
   double max_inertial_number = 0;
   Vec3 strain_at_leg_start = Vec3::Zero();
+  // control stages
+  double mean_stress_at_start = 0, deviator_at_start = 0;  // p0 of r_u, q0 of a cyclic deviator
+  std::array<double, 6> strain_at_start{};                 // every component's strain at the stage start
+  double cycle_low = 0, cycle_high = 0;                    // the cyclic strain's range in the current cycle
 };
 
 struct StageHooks {

@@ -211,3 +211,48 @@ TEST_CASE("dem run refuses an --out that is a folder, in a missing folder, or be
   CHECK_THAT(r.out, Catch::Matchers::Contains("another dem run is writing this result"));
   CHECK(dem::test::read_bytes(out + ".partial") == "another run's partial result\n");
 }
+
+TEST_CASE("a control stage with a shearing cell and cyclic loading resumes from its checkpoint bit for bit",
+          "[run][checkpoint][sheared]") {
+  // 64 spheres of 4.0-4.5 mm at 4.5 mm squeezed 4 % in 2,000 steps, then a control stage: simple
+  // shear xy at 20/s (the cell tilts), zz strain cycling, xx and yy at 100 kPa, until the shear
+  // strain since the stage start reaches 0.004 (about step 2,200); then a stress stage that cannot
+  // settle in 50 steps stops the run. The last checkpoint, at step 2,100, is inside the control
+  // stage: the resumed run must carry the stage's start values (p0, the strains the stop criterion
+  // is measured from), the cycle's strain range, the tilts and the servo, or its rows would differ.
+  const std::string dir = dem::test::scratch_dir("checkpoint_resume_control");
+  dem::test::write_text(dir + "/s.yaml",
+                        "name: control\n"
+                        "particles:\n"
+                        "  lattice: {n: [4, 4, 4], spacing: 4.5e-3, seed: 3}\n"
+                        "  grading: {diameters: [4.0e-3, 4.5e-3], percent_finer: [0, 100]}\n"
+                        "material: {kn: 1.0e6, ks: 1.0e6, friction: 0.5}\n"
+                        "numerics: {time_step: 1.0e-6}\n"
+                        "output: {interval: 50, checkpoint_interval: 100}\n"
+                        "stages:\n"
+                        "  - {name: compress, type: strain_rate, strain_rate: [20, 20, 20], duration: 2.0e-3}\n"
+                        "  - {name: shear, type: control, reset_strain: true, duration: 1.0e-3,\n"
+                        "     control: {xx: {stress: 1.0e5}, yy: {stress: 1.0e5}, zz: {strain_rate: 0}, xy: {strain_rate: 20},\n"
+                        "               xz: {stress: 0}, yz: {stress: 0}},\n"
+                        "     cyclic: {component: zz, quantity: strain, amplitude: 1.0e-3, period: 1.5e-4},\n"
+                        "     until: {component: xy, strain: 0.004}}\n"
+                        "  - {name: hold, type: stress, target: [1.0e5, 1.0e5, 1.0e5], rate: 1.0e9, hold: {max_duration: 5.0e-5}}\n");
+  const std::string out = dir + "/r.h5";
+  const auto first = dem_stderr("run '" + dir + "/s.yaml' --out '" + out + "'");
+  INFO(first.out);
+  REQUIRE(first.exit_code == 1);
+  REQUIRE(fs::exists(out + ".checkpoint"));
+  CHECK(checkpoint_step(out + ".checkpoint") == 2100);
+  fs::copy_file(out + ".partial", dir + "/first.h5");
+  const auto tilt = column(dir + "/first.h5", "cell_tilt_12"), amplitude = column(dir + "/first.h5", "double_amplitude_strain");
+  REQUIRE(*std::min_element(tilt.begin(), tilt.end()) < 0);  // the cell tilted (G_xy > 0 lowers xy)
+  REQUIRE(*std::max_element(amplitude.begin(), amplitude.end()) > 0);
+
+  const auto again = dem_stderr("run '" + dir + "/s.yaml' --out '" + out + "' --resume");
+  CHECK(again.exit_code == 1);
+  CHECK_THAT(again.out, Catch::Matchers::Contains("resuming from " + out + ".checkpoint at step 2100"));
+  for (const dem::SeriesColumn& c : dem::series_columns()) {
+    INFO(c.name);
+    CHECK(column(out + ".partial", c.name) == column(dir + "/first.h5", c.name));
+  }
+}
