@@ -64,6 +64,9 @@ HoldCriteria read_hold(Section h) {
   c.check_interval_steps = h.integer("check_interval", 1, 1000000000, 100, "steps between checks of the criteria");
   c.max_duration_s = h.number("max_duration", "s", {0, 1e6, true}, 10.0,
                               "the stage fails if the criteria do not hold within this time");
+  c.creep_rate_per_s = h.number("creep_rate", "1/s", {0, 1e3}, 0.0,
+                                "volumetric strain rate over the last creep_window at most this (0: not checked)");
+  c.creep_window_s = h.number("creep_window", "s", {0, 1e6, true}, 0.01, "the window over which creep_rate is measured");
   h.finish();
   return c;
 }
@@ -329,8 +332,11 @@ std::string emit_resolved(const SceneConfig& c) {
           << YAML::Key << "hold" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "stress_tolerance"
           << YAML::Value << s.hold.stress_tolerance << YAML::Key << "unbalanced_force_ratio" << YAML::Value
           << s.hold.unbalanced_force_ratio << YAML::Key << "check_interval" << YAML::Value
-          << s.hold.check_interval_steps << YAML::Key << "max_duration" << YAML::Value << s.hold.max_duration_s
-          << YAML::EndMap;
+          << s.hold.check_interval_steps << YAML::Key << "max_duration" << YAML::Value << s.hold.max_duration_s;
+      if (s.hold.creep_rate_per_s > 0)  // only when set: the resolved scenes (and input hashes) of older scenes stay
+        out << YAML::Key << "creep_rate" << YAML::Value << s.hold.creep_rate_per_s << YAML::Key << "creep_window"
+            << YAML::Value << s.hold.creep_window_s;
+      out << YAML::EndMap;
     }
     out << YAML::EndMap;
   }

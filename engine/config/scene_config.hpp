@@ -27,6 +27,11 @@ struct HoldCriteria {
   double unbalanced_force_ratio = 1e-3;     // [-]
   std::int64_t check_interval_steps = 100;
   double max_duration_s = 10;               // the stage fails if the criteria do not hold by then
+  // Creep: |ln(V_end / V_start)| / creep_window over the last whole window of the hold at most
+  // this [1/s] (0: not checked). A loose packing that meets the force criteria can still creep
+  // at constant stress for tenths of a second; an undrained test started then measures the creep.
+  double creep_rate_per_s = 0;
+  double creep_window_s = 0.01;
 };
 
 // A control stage's loading that oscillates: one component's stress (from its value in

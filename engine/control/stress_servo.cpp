@@ -18,11 +18,21 @@ double component_rate(const AxisTarget& t, double stress_Pa, double stiffness_Pa
   return std::clamp(r, -cap, cap);
 }
 
-// The servo stiffness of component k from the axes' (see the header).
-double component_stiffness(std::size_t k, const Vec3& axes_Pa) {
-  if (k < 3) return axes_Pa[static_cast<int>(k)];
+// The affine shear stiffness of shear component k (3..5) from the axes' (see the header).
+double shear_stiffness(std::size_t k, const Vec3& axes_Pa) {
   return std::sqrt(axes_Pa[component_row[k]] * axes_Pa[component_column[k]]) / 3;
 }
+
+// The stiffness the servo uses: the affine one of the axes times their ratios, of the shears
+// times theirs.
+struct ServoStiffness {
+  Vec3 axes_Pa;
+  Vec3 kappa = Vec3::Ones();
+  double kappa_shear = 1;
+  double of(std::size_t k) const {
+    return k < 3 ? axes_Pa[static_cast<int>(k)] * kappa[static_cast<int>(k)] : kappa_shear * shear_stiffness(k, axes_Pa);
+  }
+};
 
 // The control with a constant mean stress resolved: its followers become stress targets, which
 // move with the leader's measured stress, without a feed-forward term (an affine estimate of the
@@ -41,12 +51,11 @@ std::array<AxisTarget, 6> resolved(const CellControl& c, const Mat3& stress_Pa) 
 }
 
 CellRates rates_of(const CellControl& control, const std::array<AxisTarget, 6>& t, const Mat3& stress_Pa,
-                   const Vec3& stiffness_Pa, const ServoSettings& settings, double dt_s) {
+                   const ServoStiffness& stiffness, const ServoSettings& settings, double dt_s) {
   double g[6] = {0, 0, 0, 0, 0, 0};
   for (std::size_t k = 0; k < 6; ++k)
     if (t[k].mode != AxisTarget::Mode::Follow)
-      g[k] = component_rate(t[k], stress_Pa(component_row[k], component_column[k]), component_stiffness(k, stiffness_Pa),
-                            settings, dt_s);
+      g[k] = component_rate(t[k], stress_Pa(component_row[k], component_column[k]), stiffness.of(k), settings, dt_s);
   if (control.constraint.kind == CellConstraint::Kind::ConstantVolume) {
     double others = 0;
     int followers = 0;
@@ -106,7 +115,7 @@ std::string control_error(const CellControl& c) {
 
 CellRates servo_rates(const CellControl& control, const Mat3& stress_Pa, const Vec3& stiffness_Pa,
                       const ServoSettings& settings, double dt_s) {
-  return rates_of(control, resolved(control, stress_Pa), stress_Pa, stiffness_Pa, settings, dt_s);
+  return rates_of(control, resolved(control, stress_Pa), stress_Pa, {stiffness_Pa}, settings, dt_s);
 }
 
 Vec3 AdaptiveServo::rates(const CellTargets& targets, const Mat3& stress_Pa, const Vec3& stiffness_Pa, double dt_s) {
@@ -115,30 +124,41 @@ Vec3 AdaptiveServo::rates(const CellTargets& targets, const Mat3& stress_Pa, con
 
 CellRates AdaptiveServo::rates(const CellControl& control, const Mat3& stress_Pa, const Vec3& stiffness_Pa, double dt_s) {
   const Vec3 sigma = stress_Pa.diagonal();
+  const Vec3 tau(stress_Pa(0, 1), stress_Pa(0, 2), stress_Pa(1, 2));
   const std::array<AxisTarget, 6> targets = resolved(control, stress_Pa);
   if (steps_ < 0 || (settings_.adapt_window_steps > 0 && steps_ >= settings_.adapt_window_steps)) {
     // One ratio for the packing, by least squares over the stress-controlled axes: per-axis
     // ratios are confounded by the coupling between axes (compressing one axis loads the others).
-    double num = 0, den = 0, scale = 0;
+    double num = 0, den = 0, scale = 0, num_shear = 0, den_shear = 0;
     for (int k = 0; k < 3 && steps_ >= 0; ++k) {
-      if (targets[static_cast<std::size_t>(k)].mode != AxisTarget::Mode::Stress) continue;
-      num += (sigma[k] - window_start_[k]) * predicted_[k];
-      den += predicted_[k] * predicted_[k];
-      scale = std::max(scale, std::abs(targets[static_cast<std::size_t>(k)].stress_Pa));
+      if (targets[static_cast<std::size_t>(k)].mode == AxisTarget::Mode::Stress) {
+        num += (sigma[k] - window_start_[k]) * predicted_[k];
+        den += predicted_[k] * predicted_[k];
+        scale = std::max(scale, std::abs(targets[static_cast<std::size_t>(k)].stress_Pa));
+      }
+      if (targets[static_cast<std::size_t>(k) + 3].mode == AxisTarget::Mode::Stress) {
+        num_shear += (tau[k] - window_start_shear_[k]) * predicted_shear_[k];
+        den_shear += predicted_shear_[k] * predicted_shear_[k];
+      }
     }
     // Learn only from windows that moved the stress noticeably (0.5 % of the target): in small,
     // noisy packings a smaller change is mostly fluctuation.
-    if (den > 0 && std::sqrt(den) > 5e-3 * scale) {
-      const double k0 = kappa_[0];
-      const double smoothed = 0.5 * k0 + 0.5 * num / den;
-      kappa_.setConstant(std::clamp(smoothed, std::max(settings_.min_stiffness_ratio, 0.5 * k0), std::min(1.0, 2 * k0)));
-    }
+    const auto learn = [&](double ratio, double n, double d) {
+      const double smoothed = 0.5 * ratio + 0.5 * n / d;
+      return std::clamp(smoothed, std::max(settings_.min_stiffness_ratio, 0.5 * ratio), std::min(1.0, 2 * ratio));
+    };
+    if (den > 0 && std::sqrt(den) > 5e-3 * scale) kappa_.setConstant(learn(kappa_[0], num, den));
+    if (den_shear > 0 && std::sqrt(den_shear) > 5e-3 * std::abs(sigma.sum() / 3))
+      kappa_shear_ = learn(shear_ratio(), num_shear, den_shear);
     window_start_ = sigma;
+    window_start_shear_ = tau;
     predicted_.setZero();
+    predicted_shear_.setZero();
     steps_ = 0;
   }
-  const CellRates rate = rates_of(control, targets, stress_Pa, stiffness_Pa.cwiseProduct(kappa_), settings_, dt_s);
+  const CellRates rate = rates_of(control, targets, stress_Pa, {stiffness_Pa, kappa_, shear_ratio()}, settings_, dt_s);
   predicted_ += stiffness_Pa.cwiseProduct(rate.axial) * dt_s;
+  for (std::size_t k = 3; k < 6; ++k) predicted_shear_[static_cast<int>(k) - 3] += shear_stiffness(k, stiffness_Pa) * rate.shear[static_cast<int>(k) - 3] * dt_s;
   ++steps_;
   return rate;
 }

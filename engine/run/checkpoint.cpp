@@ -103,6 +103,9 @@ void write_cursor(hid_t g, const StageCursor& c) {
   h5::set_attribute(g, "done_steps", c.done_steps);
   h5::set_attribute(g, "stress_error", c.stress_error);
   h5::set_attribute(g, "unbalanced", c.unbalanced);
+  h5::set_attribute(g, "creep_window_start", c.creep_window_start);
+  h5::set_attribute(g, "creep_volume_at_start", c.creep_volume_at_start);
+  h5::set_attribute(g, "creep_rate", c.creep_rate);
   h5::set_attribute(g, "max_inertial_number", c.max_inertial_number);
   h5::set_attribute(g, "servo_steps", static_cast<std::int64_t>(c.servo.steps));
   write_vec3(g, "from", c.from_Pa, "Pa");
@@ -111,6 +114,9 @@ void write_cursor(hid_t g, const StageCursor& c) {
   write_vec3(g, "servo_kappa", c.servo.kappa, "1");
   write_vec3(g, "servo_predicted", c.servo.predicted, "Pa");
   write_vec3(g, "servo_window_start", c.servo.window_start, "Pa");
+  h5::set_attribute(g, "servo_kappa_shear", c.servo.kappa_shear);
+  write_vec3(g, "servo_predicted_shear", c.servo.predicted_shear, "Pa");
+  write_vec3(g, "servo_window_start_shear", c.servo.window_start_shear, "Pa");
   h5::set_attribute(g, "mean_stress_at_start", c.mean_stress_at_start);
   h5::set_attribute(g, "deviator_at_start", c.deviator_at_start);
   h5::set_attribute(g, "cycle_low", c.cycle_low);
@@ -126,6 +132,9 @@ StageCursor read_cursor(hid_t g, const std::string& file) {
   c.done_steps = int_attribute(g, file, "done_steps", 0, std::numeric_limits<std::int64_t>::max());
   c.stress_error = finite_attribute(g, file, "stress_error");
   c.unbalanced = finite_attribute(g, file, "unbalanced");
+  c.creep_window_start = int_attribute(g, file, "creep_window_start", -1, std::numeric_limits<std::int64_t>::max());
+  c.creep_volume_at_start = finite_attribute(g, file, "creep_volume_at_start");
+  c.creep_rate = finite_attribute(g, file, "creep_rate");
   c.max_inertial_number = finite_attribute(g, file, "max_inertial_number");
   c.servo.steps = static_cast<int>(int_attribute(g, file, "servo_steps", -1, 1 << 30));
   c.from_Pa = read_one_vec3(g, file, "from");
@@ -134,6 +143,9 @@ StageCursor read_cursor(hid_t g, const std::string& file) {
   c.servo.kappa = read_one_vec3(g, file, "servo_kappa");
   c.servo.predicted = read_one_vec3(g, file, "servo_predicted");
   c.servo.window_start = read_one_vec3(g, file, "servo_window_start");
+  c.servo.kappa_shear = finite_attribute(g, file, "servo_kappa_shear");
+  c.servo.predicted_shear = read_one_vec3(g, file, "servo_predicted_shear");
+  c.servo.window_start_shear = read_one_vec3(g, file, "servo_window_start_shear");
   c.mean_stress_at_start = finite_attribute(g, file, "mean_stress_at_start");
   c.deviator_at_start = finite_attribute(g, file, "deviator_at_start");
   c.cycle_low = finite_attribute(g, file, "cycle_low");

@@ -131,13 +131,14 @@ void run_stress_stage(Simulation& sim, const SceneConfig& scene, int index, cons
   const std::int64_t max_steps = steps_in(st.hold.max_duration_s, dt);
   AdaptiveServo servo = stage_servo(scene, st);
   CellTargets targets;
-  double stress_error = 0, unbalanced = 1;
-  if (resume) servo.restore(resume->servo), stress_error = resume->stress_error, unbalanced = resume->unbalanced;
+  StageCursor hold = cursor_at(index, 0);  // the hold's measurements so far
+  if (resume) servo.restore(resume->servo), hold = *resume;
+  const bool creep = st.hold.creep_rate_per_s > 0;
+  const std::int64_t creep_window_steps = std::max<std::int64_t>(1, steps_in(st.hold.creep_window_s, dt));
   for (std::int64_t i = resume ? resume->i : 0;; ++i) {
     if (i > 0 && checkpoint_due(hooks, sim)) {
-      StageCursor here = cursor_at(index, i);
-      here.from_Pa = from, here.stress_error = stress_error, here.unbalanced = unbalanced, here.servo = servo.state();
-      hooks.checkpoint(sim, here);
+      hold.i = i, hold.from_Pa = from, hold.servo = servo.state();
+      hooks.checkpoint(sim, hold);
     }
     const double t = static_cast<double>(i) * dt;
     for (int k = 0; k < 3; ++k) {
@@ -151,23 +152,35 @@ void run_stress_stage(Simulation& sim, const SceneConfig& scene, int index, cons
     const std::int64_t done = i + 1;
     if (hooks.row && output_due(sim, scene)) hooks.row(sim, {index});
     const double t_done = static_cast<double>(done) * dt;
+    if (creep && t_done >= ramp_end) {  // consecutive windows from the end of the ramp
+      if (hold.creep_window_start < 0) {
+        hold.creep_window_start = done, hold.creep_volume_at_start = sim.cell().volume();
+      } else if (done - hold.creep_window_start >= creep_window_steps) {
+        const double elapsed = static_cast<double>(done - hold.creep_window_start) * dt;
+        hold.creep_rate = std::abs(std::log(sim.cell().volume() / hold.creep_volume_at_start)) / elapsed;
+        hold.creep_window_start = done, hold.creep_volume_at_start = sim.cell().volume();
+      }
+    }
     if (t_done >= ramp_end && done % st.hold.check_interval_steps == 0) {
       const HoldStatus h = hold_status(sim, st);
-      stress_error = h.stress_error;
-      unbalanced = h.unbalanced_force_ratio;
-      if (h.met) return;
+      hold.stress_error = h.stress_error;
+      hold.unbalanced = h.unbalanced_force_ratio;
+      const bool at_rest = !creep || (hold.creep_rate >= 0 && hold.creep_rate <= st.hold.creep_rate_per_s);
+      if (h.met && at_rest) return;
     }
     if (done >= max_steps) {
       std::ostringstream msg;
       msg << "stage '" << st.name << "' did not reach equilibrium within hold.max_duration = " << st.hold.max_duration_s
-          << " s: largest stress error " << 100 * stress_error << " % (allowed " << 100 * st.hold.stress_tolerance
-          << " %), unbalanced force ratio " << unbalanced << " (allowed " << st.hold.unbalanced_force_ratio << ")";
+          << " s: largest stress error " << 100 * hold.stress_error << " % (allowed " << 100 * st.hold.stress_tolerance
+          << " %), unbalanced force ratio " << hold.unbalanced << " (allowed " << st.hold.unbalanced_force_ratio << ")";
+      if (creep) msg << ", creep rate " << hold.creep_rate << " 1/s (allowed " << st.hold.creep_rate_per_s << ")";
       throw StageError(msg.str());
     }
     if (hooks.progress && i % progress_every == 0) {
       std::ostringstream status;
       status << "p = " << mean_stress(sim.sums().stress_Pa) / 1e3 << " kPa";
-      if (t_done >= ramp_end) status << ", holding: stress error " << 100 * stress_error << " %, unbalanced " << unbalanced;
+      if (t_done >= ramp_end) status << ", holding: stress error " << 100 * hold.stress_error << " %, unbalanced " << hold.unbalanced;
+      if (creep && hold.creep_rate >= 0) status << ", creep " << hold.creep_rate << " 1/s";
       hooks.progress(sim, {index, t_done < ramp_end ? t_done / std::max(ramp_end, dt) : -1.0, status.str()});
     }
   }

@@ -29,6 +29,9 @@ struct StageCursor {
   // stress stages
   Vec3 from_Pa = Vec3::Zero();  // each axis' stress at the stage start, where its ramp begins
   double stress_error = 0, unbalanced = 1;
+  std::int64_t creep_window_start = -1;  // the step count where the hold's creep window began (-1: none yet)
+  double creep_volume_at_start = 0;      // the cell volume then [m^3]
+  double creep_rate = -1;                // of the last whole window [1/s] (-1: none measured yet)
   AdaptiveServo::State servo;  // stress stages and paths
   // stress paths
   int leg = 0;

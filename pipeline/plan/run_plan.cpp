@@ -56,11 +56,23 @@ std::string unnamed(const YAML::Node& scene) {
   return emit(copy, "");
 }
 
+// A control stage runs for its duration, or until a strain-rate controlled component reaches its
+// `until.strain` (the other stop criteria cannot be foreseen: their duration is the bound).
+double control_duration(const dem::StageConfig& st) {
+  if (st.until.strain > 0 && st.until.component >= 0) {
+    const dem::AxisTarget& c = st.control.component[static_cast<std::size_t>(st.until.component)];
+    if (c.mode == dem::AxisTarget::Mode::StrainRate && c.strain_rate_per_s != 0)
+      return std::min(st.duration_s, st.until.strain / std::abs(c.strain_rate_per_s));
+  }
+  return st.duration_s;
+}
+
 double estimated_steps(const dem::SceneConfig& scene) {
   double steps = 0;
   for (const dem::StageConfig& st : scene.stages) {
     if (st.type == dem::StageConfig::Type::StrainRate) steps += st.duration_s / scene.time_step_s;
     else if (st.type == dem::StageConfig::Type::Stress) steps += 1.0 / scene.time_step_s;  // about 1 s to hold (measured)
+    else if (st.type == dem::StageConfig::Type::Control) steps += control_duration(st) / scene.time_step_s;
     else
       for (const dem::PathLeg& leg : dem::expand_path(st.path, dem::named_state("A", st.mean_stress_Pa, st.stress_ratio),
                                                       st.stress_rate_Pa_per_s))
