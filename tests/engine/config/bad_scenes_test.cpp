@@ -200,6 +200,12 @@ std::vector<BadScene> catalogue() {
       {"zero hold.max_duration",
        Yaml{.stages = "\n  - {name: a, type: stress, target: [1.0e5, 1.0e5, 1.0e5], rate: 1.0e6, hold: {max_duration: 0}}"}.text(), C,
        {"bad.yaml: stages[0].hold.max_duration: must be in (0, 1e+06] s, got 0"}},
+      {"negative hold.creep_rate",
+       Yaml{.stages = "\n  - {name: a, type: stress, target: [1.0e5, 1.0e5, 1.0e5], rate: 1.0e6, hold: {max_duration: 1, creep_rate: -1.0e-5}}"}.text(), C,
+       {"bad.yaml: stages[0].hold.creep_rate: must be in [0, 1000] 1/s, got -1.0e-5"}},
+      {"zero hold.creep_window",
+       Yaml{.stages = "\n  - {name: a, type: stress, target: [1.0e5, 1.0e5, 1.0e5], rate: 1.0e6, hold: {max_duration: 1, creep_rate: 1.0e-5, creep_window: 0}}"}.text(), C,
+       {"bad.yaml: stages[0].hold.creep_window: must be in (0, 1e+06] s, got 0"}},
       {"unknown stage type", Yaml{.stages = "\n  - {name: a, type: cyclic, duration: 1}"}.text(), C,
        {"bad.yaml: stages[0].type: must be one of: strain_rate, stress, stress_path, control, got 'cyclic' (line 8)"}},
       // The control stage: every new key.

@@ -256,3 +256,42 @@ TEST_CASE("a control stage with a shearing cell and cyclic loading resumes from 
     CHECK(column(out + ".partial", c.name) == column(dir + "/first.h5", c.name));
   }
 }
+
+TEST_CASE("a stress stage's hold with a creep criterion resumes from its checkpoint bit for bit", "[run][checkpoint]") {
+  // tests/engine/run/hold_criteria_test.cpp's compression with hold.creep_rate: its creep windows
+  // start at step 10,000 and the stage ends at step 117,000, after the checkpoint at step 100,000;
+  // a stress stage that cannot settle in 50 steps then stops the run. The resumed run must carry
+  // the open creep window (its start and volume) or its windows, and so its end, would move.
+  const std::string dir = dem::test::scratch_dir("checkpoint_resume_creep");
+  dem::test::write_text(dir + "/s.yaml",
+                        "name: creep\n"
+                        "particles:\n"
+                        "  lattice: {n: [5, 5, 5], spacing: 5.0e-3, seed: 4}\n"
+                        "  grading: {diameters: [3.0e-3, 3.7e-3, 4.5e-3], percent_finer: [0, 50, 100]}\n"
+                        "material: {density: 2650, kn: 1.0e6, ks: 1.0e6, friction: 0.3}\n"
+                        "numerics: {time_step: 1.0e-6}\n"
+                        "output: {interval: 100, checkpoint_interval: 50000}\n"
+                        "stages:\n"
+                        "  - {name: compress, type: stress, target: [1.0e5, 1.0e5, 1.0e5], rate: 1.0e7, max_strain_rate: 5.0,\n"
+                        "     hold: {stress_tolerance: 0.005, unbalanced_force_ratio: 1.0e-2, check_interval: 100, max_duration: 2.0,\n"
+                        "            creep_rate: 0.05, creep_window: 1.0e-3}}\n"
+                        "  - {name: hold, type: stress, target: [2.0e5, 2.0e5, 2.0e5], rate: 1.0e9, hold: {max_duration: 5.0e-5}}\n");
+  const std::string out = dir + "/r.h5";
+  const auto first = dem_stderr("run '" + dir + "/s.yaml' --out '" + out + "'");
+  INFO(first.out);
+  REQUIRE(first.exit_code == 1);
+  REQUIRE(checkpoint_step(out + ".checkpoint") == 100000);
+  fs::copy_file(out + ".partial", dir + "/first.h5");
+  const auto stage = column(dir + "/first.h5", "stage"), step = column(dir + "/first.h5", "step");
+  const auto hold_start = std::find(stage.begin(), stage.end(), 1.0);
+  REQUIRE(hold_start != stage.end());
+  CHECK(step[static_cast<std::size_t>(hold_start - stage.begin())] == 117000);  // the creep stage ended after the checkpoint
+
+  const auto again = dem_stderr("run '" + dir + "/s.yaml' --out '" + out + "' --resume");
+  CHECK(again.exit_code == 1);
+  CHECK_THAT(again.out, Catch::Matchers::Contains("resuming from " + out + ".checkpoint at step 100000"));
+  for (const dem::SeriesColumn& c : dem::series_columns()) {
+    INFO(c.name);
+    CHECK(column(out + ".partial", c.name) == column(dir + "/first.h5", c.name));
+  }
+}
