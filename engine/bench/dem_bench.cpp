@@ -27,6 +27,11 @@
 // copy), `sorted` (one Morton curve over the whole packing, bench/tiling.hpp) or `random`.
 //   dem-bench size BENCH_DIR TILES STEPS REPETITIONS [SKIN] [ORDER]
 //
+// The sheared cell's price: `dem-bench shear` times mu = 0.5 on the mu = 0 packing, one thread,
+// with the axes at 100 kPa and the cell orthorhombic, against the same with the cell shearing
+// (xy at 1/s: the sheared kernels), interleaved, per CPU second; writes BENCH_DIR/shear.json.
+//   dem-bench shear BENCH_DIR STEPS REPETITIONS [SKIN]
+//
 #include <omp.h>
 #include <sys/resource.h>
 
@@ -259,9 +264,67 @@ int run_size(const std::string& dir, int tiles, long steps, int reps, double ski
 }
 
 
+// `dem-bench shear`: see the top of the file.
+int run_shear(const std::string& dir, long steps, int reps, double skin) {
+  const std::string packing = packing_for(dir, 0.0);
+  const dem::SceneConfig scene = dem::scene_from_text(timing_scene(packing, 0.5, skin, 1000000000L), dir + "/bench.yaml");
+  const dem::SavedState base = dem::read_state(packing);
+  const auto n = static_cast<double>(base.particles.size());
+  omp_set_num_threads(1);
+  // Both ways hold the axes at 100 kPa with the scene's servo; the sheared one also shears xy at
+  // 1/s, so its cell tilts from the first step and every step takes the sheared kernels.
+  dem::CellControl orthorhombic;
+  for (std::size_t k = 0; k < 3; ++k) orthorhombic.component[k] = {dem::AxisTarget::Mode::Stress, 0, 1e5, 0};
+  dem::CellControl sheared = orthorhombic;
+  sheared.component[3] = {dem::AxisTarget::Mode::StrainRate, 1.0, 0, 0};
+  struct Way {
+    const char* name;
+    dem::CellControl control;
+    std::vector<double> rates;
+    std::size_t rebuilds = 0;
+  };
+  std::vector<Way> ways{{"orthorhombic", orthorhombic, {}}, {"sheared", sheared, {}}};
+  const dem::ServoSettings servo{scene.servo.gain, 1.0};
+  for (int r = 0; r < reps; ++r)
+    for (Way& w : ways) {
+      dem::Simulation sim = simulation_from(base, scene);
+      for (int i = 0; i < 200; ++i) sim.step(w.control, servo);
+      const std::size_t builds = sim.verlet_list().builds();
+      const double cpu0 = thread_cpu_s();
+      for (long i = 0; i < steps; ++i) sim.step(w.control, servo);
+      w.rates.push_back(n * static_cast<double>(steps) / (thread_cpu_s() - cpu0));
+      w.rebuilds += sim.verlet_list().builds() - builds;
+    }
+  std::printf("dem-bench shear: %.0f spheres, mu = 0.5, one thread, %ld steps x %d repetitions, skin %g m\n", n, steps, reps, skin);
+  std::ofstream json(dir + "/shear.json");
+  json << "{\n  \"code\": \"cyclic-triax dem\",\n  \"version\": \"" << dem::software_version << "\",\n  \"particles\": "
+       << static_cast<long long>(n) << ",\n  \"friction\": 0.5,\n  \"steps\": " << steps << ",\n  \"repetitions\": " << reps
+       << ",\n  \"verlet_skin_m\": " << skin << ",\n  \"runs\": [";
+  const char* sep = "\n    ";
+  for (Way& w : ways) {
+    std::sort(w.rates.begin(), w.rates.end());
+    const double median = w.rates[w.rates.size() / 2];
+    std::printf("%-13s %.3e particle-steps per CPU-s (median; %.3e .. %.3e), %zu list builds\n", w.name, median,
+                w.rates.front(), w.rates.back(), w.rebuilds);
+    json << std::exchange(sep, ",\n    ") << "{\"cell\": \"" << w.name << "\", \"cpu_rate_median\": " << median
+         << ", \"min\": " << w.rates.front() << ", \"max\": " << w.rates.back() << ", \"timed_rebuilds\": " << w.rebuilds << "}";
+  }
+  json << "\n  ]\n}\n";
+  return 0;
+}
+
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc > 1 && std::string(argv[1]) == "shear") {
+    if (argc < 5) {
+      std::fprintf(stderr, "usage: dem-bench shear BENCH_DIR STEPS REPETITIONS [SKIN]\n");
+      return 2;
+    }
+    std::filesystem::create_directories(argv[2]);
+    return run_shear(argv[2], std::stol(argv[3]), std::stoi(argv[4]), argc > 5 ? std::stod(argv[5]) : 2.5e-5);
+  }
   if (argc > 1 && std::string(argv[1]) == "size") {
     if (argc < 6) {
       std::fprintf(stderr, "usage: dem-bench size BENCH_DIR TILES STEPS REPETITIONS [SKIN] [ORDER]\n");

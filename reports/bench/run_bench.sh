@@ -46,6 +46,9 @@ echo "== our engine (dem-bench) =="
 "$build/bin/dem-bench" "$work" 0   # builds missing packings; the timing runs in a fresh process
 "$build/bin/dem-bench" "$work" "$steps" "$reps" "$SKIN"
 
+echo "== our engine: the sheared cell's price (dem-bench shear) =="
+"$build/bin/dem-bench" shear "$work" "$steps" "$reps" "$SKIN"
+
 echo "== LAMMPS, same packings =="
 cases="mu05:0.5 mu0:0 mu0:0.5"   # packing:friction, the engine's order
 for c in $cases; do
@@ -80,6 +83,7 @@ lammps_value() { grep "\"$3\"" "$work/lammps_$1_$2.json" | sed "s/.*\"$3\": \([^
 {
   echo "{"
   echo "  \"engine\": $(sed 's/^/  /' "$work/bench.json" | sed '1s/^  //'),"
+  echo "  \"sheared_cell\": $(sed 's/^/  /' "$work/shear.json" | sed '1s/^  //'),"
   echo "  \"lammps\": ["
   sep=""
   for c in $cases; do
@@ -195,5 +199,24 @@ lammps_value() { grep "\"$3\"" "$work/lammps_$1_$2.json" | sed "s/.*\"$3\": \([^
   echo "runs in its own process (peak memory: VmHWM; LAMMPS: GNU time's maximum resident set, μ = 0.5 and μ = 0 runs"
   echo "each in its own process, the larger shown). Our particles are in tiled order (copy after copy); LAMMPS sorts"
   echo "its atoms spatially when a run starts."
+} >>"$out/bench.md"
+
+# The sheared cell (a scene whose cell never shears runs the orthorhombic kernels, chosen per step).
+shear_rate() { grep "\"cell\": \"$1\"" "$work/shear.json" | sed "s/.*\"$2\": \([^,}]*\).*/\1/"; }
+{
+  echo
+  echo "### The sheared cell"
+  echo
+  echo "| cell | particle-steps per CPU-s (median) | min – max | vs orthorhombic |"
+  echo "|---|---|---|---|"
+  for c in orthorhombic sheared; do
+    awk -v c="$c" -v m="$(shear_rate "$c" cpu_rate_median)" -v a="$(shear_rate "$c" min)" -v b="$(shear_rate "$c" max)" \
+      -v o="$(shear_rate orthorhombic cpu_rate_median)" 'BEGIN { printf "| %s | %.3g | %.3g – %.3g | %.3f |\n", c, m, a, b, m / o }'
+  done
+  echo
+  echo "\`dem-bench shear\`: μ = 0.5 on the μ = 0 packing, one thread, the axes held at 100 kPa; \"sheared\" also shears"
+  echo "xy at 1/s, so its cell tilts from the first step and every step runs the sheared kernels (nearest image"
+  echo "through the tilts, fractional positions in the update). Medians of $reps repetitions of $steps steps,"
+  echo "the two ways interleaved, per CPU second of the one thread."
 } >>"$out/bench.md"
 cat "$out/bench.md"
