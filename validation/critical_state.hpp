@@ -65,10 +65,12 @@ struct ShearSummary {
   dem::Vec3 peak_principal_Pa = dem::Vec3::Zero();  // smoothed, at the peak
   double peak_b = 0;
   PiPoint peak_pi;
+  double peak_p_Pa = 0;              // the smoothed mean stress at the peak
+  double p_min_Pa = 0, p_max_Pa = 0;  // over every row of the shear: how well p was held
   // The critical state: over the rows with cs_from <= |strain_3| <= cs_to. The sd is the
   // row-to-row scatter about the mean (the rows are correlated: it is not the error of the mean).
   std::size_t cs_rows = 0;
-  Spread phi_deg, void_ratio, coordination, coordination_mechanical, q_over_p;
+  Spread phi_deg, void_ratio, coordination, coordination_mechanical, q_over_p, p_Pa, b;
 };
 
 // A shear's summary from its time series (the rows of its last stage). `smoothing_strain` is the

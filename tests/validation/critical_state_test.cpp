@@ -95,18 +95,18 @@ TEST_CASE("peak and critical state of a synthetic constant-p shear", "[critical-
   // of 45 deg at e = 0.15. The smoothing window (1 %: the rows within 0.005) at e = 0.05 lies in
   // the plateau, so the peak is 40 deg there; the spike is the largest single row but, averaged
   // with its 30-deg neighbours, is far below 40. A row of an earlier stage (phi ~ 64 deg) is not
-  // part of the shear.
+  // part of the shear. Every row of the shear is at p = 100 kPa (the earlier stage's at 900 kPa).
   validation::Columns c;
   for (const dem::SeriesColumn& col : dem::series_columns()) c[col.name] = {};
-  const auto add = [&](double stage, double strain, double phi_deg, double e, double cn) {
-    const double s = std::sin(phi_deg * deg), ratio = (1 + s) / (1 - s), lateral = 3e5 / (ratio + 2);
+  const auto add = [&](double stage, double strain, double phi_deg, double e, double cn, double p = 1e5) {
+    const double s = std::sin(phi_deg * deg), ratio = (1 + s) / (1 - s), lateral = 3 * p / (ratio + 2);
     for (auto& [name, v] : c) v.push_back(0.0);
     c["stage"].back() = stage;
     c["strain_3"].back() = strain;
     c["stress_11"].back() = lateral, c["stress_22"].back() = lateral, c["stress_33"].back() = ratio * lateral;
     c["void_ratio"].back() = e, c["coordination_number"].back() = cn, c["coordination_number_mechanical"].back() = cn + 0.5;
   };
-  add(0, 0.9, 64, 9, 9);
+  add(0, 0.9, 64, 9, 9, 9e5);
   for (int i = 0; i <= 200; ++i) {
     const double strain = 0.002 * i;
     const double phi = i == 75 ? 45 : (i >= 20 && i <= 30) ? 40 : 30;
@@ -133,4 +133,10 @@ TEST_CASE("peak and critical state of a synthetic constant-p shear", "[critical-
   CHECK(s.void_ratio.mean == Approx(0.60).margin(0.01 / static_cast<double>(s.cs_rows) + 1e-12));
   CHECK(s.void_ratio.sd == Approx(0.01).epsilon(0.03));  // alternating +-0.01: sd = 0.01 sqrt(n/(n-1))
   CHECK(s.coordination_mechanical.mean - s.coordination.mean == Approx(0.5));
+  // p as held: at the peak, over the shear (the earlier stage's row left out) and at the critical state.
+  CHECK(s.peak_p_Pa == Approx(1e5).epsilon(1e-12));
+  CHECK(s.p_min_Pa == Approx(1e5).epsilon(1e-12));
+  CHECK(s.p_max_Pa == Approx(1e5).epsilon(1e-12));
+  CHECK(s.p_Pa.mean == Approx(1e5).epsilon(1e-12));
+  CHECK(s.b.mean == Approx(0).margin(1e-12));  // compression: s2 = s3
 }
