@@ -9,9 +9,15 @@ SAMPLE   ?= seed1                       # the sample whose runs the single-run f
 CONVERGENCE ?= results/convergence/paper
 STABILITY   ?= results/stability/paper
 DECISIONS   ?= results/decisions/paper
+CRITICAL_STATE ?= results/critical_state/paper
+LIQUEFACTION   ?= results/liquefaction_loose/paper results/liquefaction_medium/paper
+# The studies of the cell under full control (constant-p shear to the critical state, undrained
+# cyclic tests to liquefaction): `make study`, and so `make all`, runs them beside the others
+# (empty: it does not).
+CELL_STUDIES   ?= pipeline/studies/critical_state.yaml pipeline/studies/liquefaction_loose.yaml pipeline/studies/liquefaction_medium.yaml
 EXECUTOR    ?=                          # local or slurm (pipeline --executor); empty: the study files' executor key, else local
 
-.PHONY: all deps build tools test kill-test slurm-test sanitize fuzz bench quick study report decisions decisions-report samples samples-study cyclic-tests render clean
+.PHONY: all deps build tools test kill-test slurm-test sanitize fuzz bench quick study report decisions decisions-report critical-state liquefaction samples samples-study cyclic-tests render clean
 
 # Everything: install, build the tools, run the full study (an ensemble of 5 samples per density,
 # reusing finished runs), validate it, draw the figures and write reports/index.md (the tests are
@@ -104,11 +110,11 @@ bench: build
 	reports/bench/run_bench.sh $(BUILD) reports
 
 # The studies through the pipeline, reusing finished results: the paper's (issue 5: every density
-# x test), error against run time and the stability matrix (issue 7), in one call so that they
-# share the cores (one study's runs fill them while another's last runs finish).
+# x test), error against run time, the stability matrix (issue 7) and CELL_STUDIES, in one call so
+# that they share the cores (one study's runs fill them while another's last runs finish).
 study: tools
 	$(BUILD)/bin/pipeline pipeline/studies/paper.yaml pipeline/studies/convergence.yaml \
-	  pipeline/studies/stability.yaml --profile paper -j $(JOBS) $(if $(strip $(EXECUTOR)),--executor $(strip $(EXECUTOR)))
+	  pipeline/studies/stability.yaml $(CELL_STUDIES) --profile paper -j $(JOBS) $(if $(strip $(EXECUTOR)),--executor $(strip $(EXECUTOR)))
 
 # The same with the quick profile (1,000 spheres, at most 2 cycles per repeat block), validated
 # and drawn into build/quick-report (reports/ is kept for the full study).
@@ -120,8 +126,9 @@ quick: build
 	reports/make_figures.sh $(BUILD)/bin results/study/quick $(BUILD)/quick-report/figures $(strip $(SAMPLE))
 	reports/make_report.sh $(BUILD)/bin results/study/quick $(BUILD)/quick-report
 
-# Validation table, figures, the convergence and stability sections and reports/index.md from the
-# results of the full studies (a section whose study has not run says so).
+# Validation table, figures, the convergence, stability, critical-state and liquefaction sections
+# and reports/index.md from the results of the full studies (a section whose study has not run
+# says so; a missing or unfinished one does not fail the report).
 report: tools
 	-$(MAKE) --no-print-directory decisions-report
 	-$(BUILD)/bin/validate --results $(RESULTS) --references reference_data/paper.yaml --out reports \
@@ -130,6 +137,8 @@ report: tools
 	reports/make_figures.sh $(BUILD)/bin $(RESULTS) reports/figures $(strip $(SAMPLE))
 	-reports/convergence/make_section.sh $(BUILD)/bin $(CONVERGENCE) reports/convergence
 	reports/stability/make_section.sh $(BUILD)/bin $(STABILITY) reports/stability
+	-reports/critical_state/make_section.sh $(BUILD)/bin $(CRITICAL_STATE) reports/critical_state
+	-reports/liquefaction/make_section.sh $(BUILD)/bin reports/liquefaction $(LIQUEFACTION)
 	CONVERGENCE=$(CONVERGENCE) DECISIONS=$(DECISIONS) STABILITY=$(STABILITY) reports/make_report.sh $(BUILD)/bin $(RESULTS) reports
 
 # The paper's open choices (SPEC section 7): each reading one at a time from the baseline, 3
@@ -144,6 +153,21 @@ decisions-report: tools
 	  $(BUILD)/bin/compare-runs decisions $(DECISIONS) reports/decisions --references reference_data/paper.yaml --ensemble $(RESULTS) && \
 	  (cd reports/decisions && GNUPLOT_LIB=$(CURDIR)/reports/gnuplot gnuplot $(CURDIR)/reports/gnuplot/tornado.gp); \
 	else echo "decisions: no results in $(DECISIONS) yet (make decisions)"; fi
+
+# Drained shear at constant p of the dense sample to the critical state, compression and
+# extension against the shearing friction and the b series (pipeline/studies/critical_state.yaml),
+# then its section (reports/critical_state/: table, friction angles, e and CN, the pi-plane).
+critical-state: tools
+	$(BUILD)/bin/pipeline pipeline/studies/critical_state.yaml --profile paper -j $(JOBS) $(if $(strip $(EXECUTOR)),--executor $(strip $(EXECUTOR)))
+	reports/critical_state/make_section.sh $(BUILD)/bin $(CRITICAL_STATE) reports/critical_state
+
+# Undrained cyclic triaxial tests of the loose and the medium sample to liquefaction, and their
+# unloaded holds (pipeline/studies/liquefaction_{loose,medium}.yaml, in one call), then their
+# section (reports/liquefaction/: table, CSR against N_L, r_u against cycles).
+liquefaction: tools
+	$(BUILD)/bin/pipeline pipeline/studies/liquefaction_loose.yaml pipeline/studies/liquefaction_medium.yaml --profile paper \
+	  -j $(JOBS) $(if $(strip $(EXECUTOR)),--executor $(strip $(EXECUTOR)))
+	reports/liquefaction/make_section.sh $(BUILD)/bin reports/liquefaction $(LIQUEFACTION)
 
 # The samples before shearing (pipeline/studies/samples.yaml): the three preparation scenes at
 # full size, 3 seeds, viscous and local damping (18 runs of 8,000 spheres), then the table of them

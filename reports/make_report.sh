@@ -26,6 +26,19 @@ percent() { awk -v x="$1" 'BEGIN { if (x == "") print "?"; else printf "%g %%", 
 spheres() { awk -v n="$1" 'BEGIN { if (n == "") print "?"; else if (n >= 1000) printf "%d,%03d", n / 1000, n % 1000; else print n }'; }
 microseconds() { awk -v s="$1" 'BEGIN { if (s == "") print "?"; else printf "%g µs", s * 1e6 }'; }
 scaled() { awk -v x="$1" -v f="$2" -v u="$3" 'BEGIN { if (x == "") print "?"; else printf "%g %s", x / f, u }'; }   # scaled VALUE FACTOR UNIT
+# A section's table.md (REPORT_DIR/DIR/table.md) with its figures' paths made relative to the
+# report; a figure that was not drawn (no gnuplot, a script that failed) is said so.
+section_table() {
+  local dir=$1 line png
+  while IFS= read -r line; do
+    if [[ $line =~ ^!\[(.*)\]\(([^/\)]+\.png)\)$ ]]; then
+      png=${BASH_REMATCH[2]}
+      if [ -f "$report/$dir/$png" ]; then echo "![${BASH_REMATCH[1]}]($dir/$png)"; else echo "*Figure \`$dir/$png\` not drawn.*"; fi
+    else
+      echo "$line"
+    fi
+  done < "$report/$dir/table.md"
+}
 shopt -s nullglob
 out=$report/index.md
 mkdir -p "$report"
@@ -185,6 +198,30 @@ mkdir -p "$report"
     cat "$report/stability/table.md"
   else
     echo "Not run yet (\`make study\` runs it, \`make report\` writes the table)."
+  fi
+  echo
+  echo "## Critical state: friction, void ratio and coordination against μ"
+  echo
+  if [ -f "$report/critical_state/table.md" ]; then
+    echo "\`make critical-state\` (\`pipeline/studies/critical_state.yaml\`, \`build/bin/compare-runs critical-state\`): the dense sample"
+    echo "sheared drained at constant p to 40 % axial strain with the shearing friction μ = 0 … 1, in compression and extension,"
+    echo "and true-triaxial at μ = 0.5 with b = 0 … 1; data in \`reports/critical_state/\` (\`critical_state.dat\`, \`pi_plane.dat\`)."
+    echo
+    section_table critical_state
+  else
+    echo "Not run yet (\`make critical-state\` runs it and writes the section; \`make study\` runs it too)."
+  fi
+  echo
+  echo "## Liquefaction: cyclic stress ratio against cycles"
+  echo
+  if [ -f "$report/liquefaction/table.md" ]; then
+    echo "\`make liquefaction\` (\`pipeline/studies/liquefaction_loose.yaml\`, \`liquefaction_medium.yaml\`, \`build/bin/compare-runs liquefaction\`):"
+    echo "undrained cyclic triaxial tests of the loose and the medium sample at p0' = 100 kPa and the same samples held undrained with"
+    echo "nothing applied; data in \`reports/liquefaction/\` (\`csr_nl.dat\`, \`ru.dat\`)."
+    echo
+    section_table liquefaction
+  else
+    echo "Not run yet (\`make liquefaction\` runs it and writes the section; \`make study\` runs it too)."
   fi
   echo
   echo "## Performance"
