@@ -5,18 +5,11 @@
 #include <stdexcept>
 
 #include "ensemble.hpp"
+#include "format.hpp"
 
 namespace validation {
 
 namespace {
-
-std::string fixed(double x, int digits = 2) {
-  std::ostringstream s;
-  s.setf(std::ios::fixed);
-  s.precision(digits);
-  s << x;
-  return s.str();
-}
 
 // Distance from the interval [low, high] to the paper's region (0 when they overlap).
 double gap(const RowResult& r) {

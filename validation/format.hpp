@@ -1,6 +1,8 @@
 #pragma once
 // Text the validation tools write: JSON strings, Markdown table cells, numbers, file names.
 #include <cctype>
+#include <cmath>
+#include <cstdio>
 #include <sstream>
 #include <string>
 
@@ -34,6 +36,14 @@ inline std::string number(double x) {
   s.precision(6);
   s << x;
   return s.str();
+}
+
+// `digits` decimals ("12.30"); "—" for a value that is not there (NaN, infinite).
+inline std::string fixed(double x, int digits = 2) {
+  if (!std::isfinite(x)) return "—";
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, x);
+  return buf;
 }
 
 // Letters and digits kept, anything else '_': "volumetric strain" -> "volumetric_strain".

@@ -158,7 +158,9 @@ CellRates AdaptiveServo::rates(const CellControl& control, const Mat3& stress_Pa
   }
   const CellRates rate = rates_of(control, targets, stress_Pa, {stiffness_Pa, kappa_, shear_ratio()}, settings_, dt_s);
   predicted_ += stiffness_Pa.cwiseProduct(rate.axial) * dt_s;
-  for (std::size_t k = 3; k < 6; ++k) predicted_shear_[static_cast<int>(k) - 3] += shear_stiffness(k, stiffness_Pa) * rate.shear[static_cast<int>(k) - 3] * dt_s;
+  for (std::size_t k = 3; k < 6; ++k)  // only the shears it learns from (a scene without them pays nothing)
+    if (targets[k].mode == AxisTarget::Mode::Stress)
+      predicted_shear_[static_cast<int>(k) - 3] += shear_stiffness(k, stiffness_Pa) * rate.shear[static_cast<int>(k) - 3] * dt_s;
   ++steps_;
   return rate;
 }
