@@ -6,56 +6,86 @@
 #include <cstddef>
 #include <vector>
 
+#include <omp.h>
+
 #include "cell/periodic_cell.hpp"
 #include "contact/contact_history.hpp"
 #include "contact/contact_law.hpp"
+#include "core/chunks.hpp"
 #include "core/particles.hpp"
 #include "dynamics/simulation.hpp"
 #include "neighbour/verlet_list.hpp"
 
 namespace dem {
 
-// Work is split into chunks of a fixed size, independent of the number of threads; sums are
-// formed per chunk in index order and the chunk sums are added in chunk order. Every result is
-// therefore bit-for-bit the same on 1 or N threads.
+// Work is split into chunks of particles (core/chunks.hpp); sums are formed per chunk in index
+// order and the chunk sums are added in chunk order. Every result is therefore bit-for-bit the
+// same on 1 or N threads.
 //
 // Pairs are chunked by particle: pair chunk c holds the pairs whose `first` particle is in
 // particle chunk c. Which pairs out of contact the list holds (it depends on the Verlet skin and
 // on when it was rebuilt) then changes no sum: they add exact zeros (+0.0 to a sum that is never
 // -0.0), and the contacts of each chunk are the same whatever the skin. A run is bit for bit the
 // same with any skin.
-inline constexpr std::ptrdiff_t chunk_size = 512;
-inline std::ptrdiff_t chunk_count(std::size_t n) { return (static_cast<std::ptrdiff_t>(n) + chunk_size - 1) / chunk_size; }
 
-// Calls body(c, begin, end) for every chunk c = [begin, end) of n items, chunks in parallel;
-// returns whether every call returned true. Threads take equal runs of chunks starting from
-// chunk 1, the first chunk going last, with the partial last chunk: the lowest-numbered
-// particles are `first` in the pairs across the wrap of a spatially sorted order, so chunk 0 has
-// the most pairs (on the 8,000-sphere dense packing 2,390 against about 1,690, and 506 in the
-// last chunk of 320 particles).
-template <class Body>
-bool for_each_chunk(std::size_t n, const Body& body) {
+// A step in one sweep over the chunks: pairs(c, begin, end) computes the forces of pair chunk c
+// (pairs [begin, end)), move(c, begin, end) moves the particles [begin, end) of chunk c and returns
+// false if one could not be wrapped into the cell; returns whether every move returned true.
+// `run_start` is scratch space, kept between steps.
+//
+// Pairs are listed with first < second, so every pair of a particle of chunk c lies in a pair
+// chunk from PairIndex::chunk_lowest_first[c]'s to c, and no later pair chunk reads that
+// particle. Each thread takes a contiguous run of chunks in order and moves each chunk right after
+// its pairs if all of them are in its own run: the pair forces are then read back while still in
+// the cache (docs/performance.md has what that gains). The other chunks (pairs shared with an
+// earlier run) move after all the pairs are done. On one thread every chunk moves at once. Each
+// chunk's forces and motion are those of a pass over every pair followed by one over every
+// particle, so the result is theirs bit for bit, on any number of threads.
+template <class PairBody, class MoveBody>
+bool sweep_chunks(const PairIndex& index, std::vector<std::ptrdiff_t>& run_start, const PairBody& pairs,
+                  const MoveBody& move) {
+  const std::size_t n = index.first_begin.size() - 1;
   const std::ptrdiff_t chunks = chunk_count(n);
+  auto first_particle = [n](std::ptrdiff_t c) { return std::min(n, static_cast<std::size_t>(c * chunk_size)); };
+  // Runs of about equal work, one per thread: a particle's move costs about as much as the forces
+  // of 1.5 pairs (perf, mu = 0.5 on 8,000 spheres: 67 % forces, 30 % moves, 3.3 pairs per particle).
+  auto work_before = [&](std::ptrdiff_t c) {
+    const std::size_t p = first_particle(c);
+    return static_cast<double>(index.first_begin[p]) + 1.5 * static_cast<double>(p);
+  };
+  const std::ptrdiff_t runs = std::max<std::ptrdiff_t>(1, std::min<std::ptrdiff_t>(omp_get_max_threads(), chunks));
+  run_start.assign(static_cast<std::size_t>(runs + 1), chunks);
+  for (std::ptrdiff_t r = 0, c = 0; r < runs; ++r) {
+    const double target = work_before(chunks) * static_cast<double>(r) / static_cast<double>(runs);
+    while (c < chunks && work_before(c + 1) <= target) ++c;
+    if (c < chunks && target - work_before(c) > work_before(c + 1) - target) ++c;  // the nearer boundary
+    run_start[static_cast<std::size_t>(r)] = c;
+  }
+  auto moves_at_once = [&](std::ptrdiff_t c) {
+    std::size_t r = static_cast<std::size_t>(runs) - 1;
+    while (run_start[r] > c) --r;
+    return index.chunk_lowest_first[static_cast<std::size_t>(c)] >= first_particle(run_start[r]);
+  };
   int all = 1;
-#pragma omp parallel for schedule(static) reduction(&& : all)
-  for (std::ptrdiff_t rotated = 0; rotated < chunks; ++rotated) {
-    const std::ptrdiff_t c = (rotated + 1) % chunks;
-    const std::size_t begin = static_cast<std::size_t>(c * chunk_size);
-    all = body(static_cast<std::size_t>(c), begin, std::min(n, begin + static_cast<std::size_t>(chunk_size))) && all;
+#pragma omp parallel num_threads(static_cast<int>(runs)) reduction(&& : all)
+  {
+    const std::ptrdiff_t threads = omp_get_num_threads(), t = omp_get_thread_num();
+    for (std::ptrdiff_t r = t; r < runs; r += threads)  // one run per thread unless fewer threads came
+      for (std::ptrdiff_t c = run_start[static_cast<std::size_t>(r)]; c < run_start[static_cast<std::size_t>(r) + 1]; ++c) {
+        pairs(static_cast<std::size_t>(c), std::size_t{index.first_begin[first_particle(c)]},
+              std::size_t{index.first_begin[first_particle(c + 1)]});
+        if (moves_at_once(c)) all = move(static_cast<std::size_t>(c), first_particle(c), first_particle(c + 1)) && all;
+      }
+#pragma omp barrier
+    std::ptrdiff_t later = 0;  // the chunks left, shared out in turn
+    for (std::ptrdiff_t c = 0; c < chunks; ++c)
+      if (!moves_at_once(c) && later++ % threads == t)
+        all = move(static_cast<std::size_t>(c), first_particle(c), first_particle(c + 1)) && all;
   }
   return all;
 }
 
-// Calls body(c, begin, end) for every pair chunk c = pairs [begin, end) (see above), in parallel.
-template <class Body>
-void for_each_pair_chunk(const PairIndex& index, const Body& body) {
-  const std::size_t particles = index.first_begin.size() - 1;
-  for_each_chunk(particles, [&](std::size_t c, std::size_t first, std::size_t last) {
-    return body(c, std::size_t{index.first_begin[first]}, std::size_t{index.first_begin[last]});
-  });
-}
-
-// What `integrate` sums over the particles [J].
+// What the update (forces_and_motion) sums over the particles [J].
 struct MotionSums {
   double kinetic_half_step = 0;  // translational, 1/2 m |v(n+1/2)|^2
   double kinetic_centred = 0;    // translational + rotational, 1/2 m v(n-1/2).v(n+1/2) (+ the same with I, w)
@@ -63,7 +93,7 @@ struct MotionSums {
   double max_speed2 = 0;         // largest |v(n+1/2)|^2 [m^2/s^2], for the Verlet list's displacement bound
 };
 
-// Forces of one evaluation, per pair, gathered per particle by `integrate` (no scattered writes,
+// Forces of one evaluation, per pair, gathered per particle by the update (no scattered writes,
 // so pairs can be processed in parallel), and the per-chunk partial sums of both loops. Kept
 // between steps so that a step allocates nothing.
 struct PairForces {
@@ -71,9 +101,10 @@ struct PairForces {
   std::vector<Vec3> torque_i, torque_j;  // minus the torques on `first` and `second` [N m] (laws that rotate only)
   std::vector<StepSums> chunk_sums;       // per pair chunk; every chunk writes its own entry
   std::vector<MotionSums> motion_sums;    // per chunk of particles
+  std::vector<std::ptrdiff_t> run_start;  // sweep_chunks' runs of chunks
 };
 
-// The inputs and outputs of `compute_forces`, as raw pointers (the arrays do not alias, and the
+// The inputs and outputs of the pair loop, as raw pointers (the arrays do not alias, and the
 // compiler keeps them in registers). The pair loop itself (dynamics/kernel_simd_pairs.inc) is
 // written once for any lanes and compiled for one lane, AVX2 and AVX-512; the contact law
 // (contact/contact_law.hpp) supplies every force, energy and history update. `Sheared`: the
@@ -132,16 +163,6 @@ struct PairLoop {
 // symmetrises the stress.
 StepSums total_of_chunks(const std::vector<StepSums>& chunk_sums, const PeriodicCell& cell);
 
-// Contact forces at the current positions, `simd_lanes` (0, 4 or 8; see dynamics/kernel_simd.hpp)
-// pairs at a time, the same result bit for bit at any width. Velocities are those of the previous
-// half step; the relative velocity at a contact includes the affine part -G l of the deforming
-// cell. `sums` receives the contact stress and the servo stiffness; `history` is updated.
-// Instantiated for every law of AnyContactLaw, orthorhombic and sheared (dynamics/kernel_simd.cpp).
-template <class Law, bool Sheared>
-void compute_forces(int simd_lanes, const Law& law, const Particles& p, const PeriodicCell& cell, const PairList& pairs,
-                    ContactHistory& history, const PairIndex& index, const CellRates& rates, double dt, PairForces& out,
-                    StepSums& sums);
-
 // Viscous body damping, integrated semi-implicitly (exact for the damping term alone):
 // v <- ((1 - h) v + dt F / m) / (1 + h), h = c dt / (2 m).
 struct ViscousDamping {
@@ -180,7 +201,7 @@ struct LocalDamping {
   void spin(std::size_t i, Vec3& w, const Vec3& t) const { w += dt_over_I[i] * damped(t, w, alpha_rot); }
 };
 
-// The per-particle work of `integrate`, on raw pointers: `gather` sums a particle's pair forces
+// The per-particle work of the update, on raw pointers: `gather` sums a particle's pair forces
 // and torques, `update` moves it. The vectorised version (dynamics/kernel_simd.cpp) updates four
 // particles at a time and uses these for the gathers and the particles left over. `Sheared`: the
 // fractional step is H^-1 v dt by back substitution (with zero tilts the same bits as v dt / L).
@@ -271,38 +292,47 @@ struct ParticleLoop {
     }
     return ok;
   }
+
+  // Gathers and moves the particles [begin, end) one by one; false if one could not be wrapped.
+  bool move(std::size_t begin, std::size_t end, MotionSums& sums) const {
+    bool ok = true;
+    for (std::size_t i = begin; i < end; ++i) {
+      Vec3 f, t;
+      gather(i, f, t);
+      ok &= update(i, f, t, sums);
+    }
+    return ok;
+  }
 };
 
 // Adds the chunk sums in chunk order and halves them; kinetic_half_step is NaN if not `wrapped`.
 MotionSums total_of_chunks(const std::vector<MotionSums>& chunk_sums, bool wrapped);
 
-// Leapfrog update of velocities and fractional positions, with the net force and torque of each
-// particle gathered from the pair forces in pair order (the order a serial scatter would use).
-// `force` receives the net forces. Returns the kinetic energies and the energy the damping took
-// in this step (see MotionSums); kinetic_half_step is NaN if a particle moved by more than a cell
-// in one step (the run is unstable; positions can no longer be trusted).
+// One step's contact forces and leapfrog update, `simd_lanes` (0, 4 or 8; see
+// dynamics/kernel_simd.hpp) pairs at a time, the same result bit for bit at any width, in one
+// sweep over the chunks (sweep_chunks).
+//
+// Forces: at the current positions, with the velocities of the previous half step; the relative
+// velocity at a contact includes the affine part -G l of the deforming cell. `sums` receives the
+// contact stress and the servo stiffness; `history` is updated.
+//
+// Update: velocities and fractional positions, with the net force and torque of each particle
+// gathered from the pair forces in pair order (the order a serial scatter would use). `force`
+// receives the net forces. Returns the kinetic energies and the energy the damping took in this
+// step (see MotionSums); kinetic_half_step is NaN if a particle moved by more than a cell in one
+// step (the run is unstable; positions can no longer be trusted).
 //
 // The damping loss needs no knowledge of the damping form: over one step a particle's kinetic
 // energy changes by exactly dt (F + F_damping).v_mid with v_mid = (v_old + v_new) / 2 (the
 // leapfrog update is m (v_new - v_old) = dt (F + F_damping)), so the damping took
 // dt F.v_mid - (1/2 m v_new^2 - 1/2 m v_old^2).
-template <bool Rotate, class DampingPolicy, bool Sheared = false>
-MotionSums integrate(const DampingPolicy& damping, Particles& p, const PeriodicCell& cell, const PairIndex& index,
-                     PairForces& pf, std::vector<Vec3>& force, double dt) {
-  const ParticleLoop<Rotate, DampingPolicy, Sheared> loop(damping, p, cell, index, pf, force, dt);
-  const bool wrapped = for_each_chunk(loop.n, [&](std::size_t c, std::size_t begin, std::size_t end) {
-    MotionSums chunk;  // sums of twice the energies; halved by total_of_chunks
-    bool ok = true;
-    const ParticleLoop<Rotate, DampingPolicy, Sheared> local = loop;  // a local copy: its pointers stay in registers
-    for (std::size_t i = begin; i < end; ++i) {
-      Vec3 f, t;
-      local.gather(i, f, t);
-      ok &= local.update(i, f, t, chunk);
-    }
-    pf.motion_sums[c] = chunk;
-    return ok;
-  });
-  return total_of_chunks(pf.motion_sums, wrapped);
-}
+//
+// Instantiated for every law of AnyContactLaw, both damping forms, orthorhombic and sheared
+// (dynamics/kernel_simd.cpp).
+template <class Law, class DampingPolicy, bool Sheared>
+MotionSums forces_and_motion(int simd_lanes, const Law& law, const DampingPolicy& damping, Particles& p,
+                             const PeriodicCell& cell, const PairList& pairs, ContactHistory& history,
+                             const PairIndex& index, const CellRates& rates, double dt, PairForces& out,
+                             StepSums& sums, std::vector<Vec3>& force);
 
 }  // namespace dem

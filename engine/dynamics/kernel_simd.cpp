@@ -299,11 +299,7 @@ void particle_chunk(const ParticleLoop<Rotate, DampingPolicy, Sheared>& loop, st
   _mm256_store_pd(speeds, speed2_max);
   out = {sums[0], sums[1], sums[2], std::max(std::max(speeds[0], speeds[1]), std::max(speeds[2], speeds[3]))};
   ok = _mm256_movemask_pd(inside) == 0xF;
-  for (; i < end; ++i) {  // the last particles, one by one
-    Vec3 f, t;
-    loop.gather(i, f, t);
-    ok &= loop.update(i, f, t, out);
-  }
+  ok &= loop.move(i, end, out);  // the last particles, one by one
 }
 
 }  // namespace
@@ -421,61 +417,53 @@ struct Accumulator {
 #pragma GCC diagnostic pop
 #pragma GCC pop_options
 
-template <bool Rotate, class DampingPolicy, bool Sheared>
-MotionSums integrate_simd(const DampingPolicy& damping, Particles& p, const PeriodicCell& cell, const PairIndex& index,
-                          PairForces& pf, std::vector<Vec3>& force, double dt) {
-  const ParticleLoop<Rotate, DampingPolicy, Sheared> loop(damping, p, cell, index, pf, force, dt);
-  const bool wrapped = for_each_chunk(loop.n, [&](std::size_t c, std::size_t begin, std::size_t end) {
-    bool ok = true;
-    avx2::particle_chunk(loop, begin, end, pf.motion_sums[c], ok);
-    return ok;
-  });
-  return total_of_chunks(pf.motion_sums, wrapped);
-}
-
-// integrate_simd for both damping forms, with and without rotation, orthorhombic and sheared.
-#define DEM_INTEGRATE_SIMD(Rotate, Damping, Sheared)                                                           \
-  template MotionSums integrate_simd<Rotate, Damping, Sheared>(const Damping&, Particles&, const PeriodicCell&, \
-                                                               const PairIndex&, PairForces&, std::vector<Vec3>&, double);
-DEM_INTEGRATE_SIMD(true, ViscousDamping, false)
-DEM_INTEGRATE_SIMD(true, ViscousDamping, true)
-DEM_INTEGRATE_SIMD(false, ViscousDamping, false)
-DEM_INTEGRATE_SIMD(false, ViscousDamping, true)
-DEM_INTEGRATE_SIMD(true, LocalDamping, false)
-DEM_INTEGRATE_SIMD(true, LocalDamping, true)
-DEM_INTEGRATE_SIMD(false, LocalDamping, false)
-DEM_INTEGRATE_SIMD(false, LocalDamping, true)
-#undef DEM_INTEGRATE_SIMD
-
-template <class Law, bool Sheared>
-void compute_forces(int simd_lanes, const Law& law, const Particles& p, const PeriodicCell& cell, const PairList& pairs,
-                    ContactHistory& history, const PairIndex& index, const CellRates& rates, double dt, PairForces& out,
-                    StepSums& sums) {
-  const PairLoop<Law, Sheared> loop(law, p, cell, pairs, history, rates, dt, out);
-  for_each_pair_chunk(index, [&](std::size_t c, std::size_t begin, std::size_t end) {
+template <class Law, class DampingPolicy, bool Sheared>
+MotionSums forces_and_motion(int simd_lanes, const Law& law, const DampingPolicy& damping, Particles& p,
+                             const PeriodicCell& cell, const PairList& pairs, ContactHistory& history,
+                             const PairIndex& index, const CellRates& rates, double dt, PairForces& out,
+                             StepSums& sums, std::vector<Vec3>& force) {
+  const PairLoop<Law, Sheared> pair_loop(law, p, cell, pairs, history, rates, dt, out);
+  const ParticleLoop<Law::rotates, DampingPolicy, Sheared> particle_loop(damping, p, cell, index, out, force, dt);
+  const auto pair_chunk = [&](std::size_t c, std::size_t begin, std::size_t end) {
     StepSums chunk;
     std::size_t k = begin;  // pairs before k done by the vector loop
-    if (simd_lanes == 8) k = begin + (end - begin) / 8 * 8, avx512::chunk(loop, begin, k, chunk);
-    if (simd_lanes == 4) k = begin + (end - begin) / 4 * 4, avx2::chunk(loop, begin, k, chunk);
-    one_lane::chunk(loop, k, end, chunk);
+    if (simd_lanes == 8) k = begin + (end - begin) / 8 * 8, avx512::chunk(pair_loop, begin, k, chunk);
+    if (simd_lanes == 4) k = begin + (end - begin) / 4 * 4, avx2::chunk(pair_loop, begin, k, chunk);
+    one_lane::chunk(pair_loop, k, end, chunk);
     out.chunk_sums[c] = chunk;
-    return true;
-  });
+  };
+  const auto move_chunk = [&](std::size_t c, std::size_t begin, std::size_t end) {
+    MotionSums chunk;  // sums of twice the energies; halved by total_of_chunks
+    bool ok = true;
+    if (simd_lanes) {
+      avx2::particle_chunk(particle_loop, begin, end, chunk, ok);
+    } else {
+      const ParticleLoop<Law::rotates, DampingPolicy, Sheared> local = particle_loop;  // its pointers stay in registers
+      ok = local.move(begin, end, chunk);
+    }
+    out.motion_sums[c] = chunk;
+    return ok;
+  };
+  const bool wrapped = sweep_chunks(index, out.run_start, pair_chunk, move_chunk);
   sums = total_of_chunks(out.chunk_sums, cell);
+  return total_of_chunks(out.motion_sums, wrapped);
 }
 
-// compute_forces for every law a scene can choose, orthorhombic and sheared: the table's addresses make the compiler emit
-// each instantiation for dynamics/simulation.cpp to call.
+// forces_and_motion for every law a scene can choose, both damping forms, orthorhombic and
+// sheared: the table's addresses make the compiler emit each instantiation for
+// dynamics/simulation.cpp to call.
 namespace {
 template <class Variant>
-struct ForcesOfEveryLaw;
+struct StepsOfEveryLaw;
 template <class... Laws>
-struct ForcesOfEveryLaw<std::variant<Laws...>> {
-  using Table = std::tuple<decltype(&compute_forces<Laws, false>)..., decltype(&compute_forces<Laws, true>)...>;
-  static Table table() { return {&compute_forces<Laws, false>..., &compute_forces<Laws, true>...}; }
+struct StepsOfEveryLaw<std::variant<Laws...>> {
+  static auto table() {
+    return std::make_tuple(&forces_and_motion<Laws, ViscousDamping, false>..., &forces_and_motion<Laws, ViscousDamping, true>...,
+                           &forces_and_motion<Laws, LocalDamping, false>..., &forces_and_motion<Laws, LocalDamping, true>...);
+  }
 };
 }  // namespace
-extern const ForcesOfEveryLaw<AnyContactLaw>::Table forces_of_every_law;
-const ForcesOfEveryLaw<AnyContactLaw>::Table forces_of_every_law = ForcesOfEveryLaw<AnyContactLaw>::table();
+extern const decltype(StepsOfEveryLaw<AnyContactLaw>::table()) steps_of_every_law;
+const decltype(StepsOfEveryLaw<AnyContactLaw>::table()) steps_of_every_law = StepsOfEveryLaw<AnyContactLaw>::table();
 
 }  // namespace dem

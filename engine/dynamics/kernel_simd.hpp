@@ -1,7 +1,7 @@
 #pragma once
-// The contact-force loop (`compute_forces`, dynamics/kernel.hpp) one pair, four (AVX2) or eight
+// The contact-force loop (`forces_and_motion`, dynamics/kernel.hpp) one pair, four (AVX2) or eight
 // (AVX-512) pairs at a time, and the damped leapfrog update four particles at a time (AVX2), with
-// the same result bit for bit as one pair at a time and as `integrate` (dynamics/kernel.hpp):
+// the same result bit for bit as one pair and one particle at a time (ParticleLoop::move):
 //  - every lane does the scalar code's operations in the scalar code's order (no fused
 //    multiply-add, the same association in every sum, the same branches as masks);
 //  - the chunk sums are added item by item in order, as the scalar loops add them;
@@ -19,11 +19,5 @@ int simd_width_available();
 // rule one out. `lanes`: 0, 4 or 8.
 int simd_width();
 void cap_simd_width(int lanes);
-
-// As `integrate` (the vectorised leapfrog update, four particles at a time), with viscous or
-// local damping; call only if simd_width() >= 4.
-template <bool Rotate, class DampingPolicy, bool Sheared>
-MotionSums integrate_simd(const DampingPolicy& damping, Particles& p, const PeriodicCell& cell, const PairIndex& index,
-                          PairForces& pf, std::vector<Vec3>& force, double dt);
 
 }  // namespace dem

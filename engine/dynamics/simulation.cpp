@@ -46,8 +46,8 @@ MotionSums total_of_chunks(const std::vector<MotionSums>& chunk_sums, bool wrapp
 
 struct Simulation::Kernel {
   virtual ~Kernel() = default;
-  virtual void forces(Simulation& sim) = 0;
-  virtual MotionSums integrate(Simulation& sim) = 0;
+  // Forces (into sims.sums_ and the pair forces) and the update of one step.
+  virtual MotionSums step(Simulation& sim) = 0;
 };
 
 template <class Law, class DampingPolicy>
@@ -56,25 +56,17 @@ struct KernelImpl final : Simulation::Kernel {
   DampingPolicy damping;
   int simd = simd_width();  // the same result at any width; wider is faster
   KernelImpl(Law l, DampingPolicy d) : law(l), damping(std::move(d)) {}
-  void forces(Simulation& s) override {
-    if (s.cell_.sheared() || s.rates_.shears())
-      compute_forces<Law, true>(simd, law, s.particles_, s.cell_, s.list_.pairs(), s.history_, s.list_.index(), s.rates_,
-                                s.dt_, *s.pair_forces_, s.sums_);
-    else
-      compute_forces<Law, false>(simd, law, s.particles_, s.cell_, s.list_.pairs(), s.history_, s.list_.index(), s.rates_,
-                                 s.dt_, *s.pair_forces_, s.sums_);
-  }
-  MotionSums integrate(Simulation& s) override {
-    if (s.cell_.sheared()) return integrate_as<true>(s);
-    return integrate_as<false>(s);
+  MotionSums step(Simulation& s) override {
+    // The sheared loops when the cell is tilted or shearing (with zero tilts they give the
+    // orthorhombic loops' bits).
+    if (s.cell_.sheared() || s.rates_.shears()) return step_as<true>(s);
+    return step_as<false>(s);
   }
   template <bool Sheared>
-  MotionSums integrate_as(Simulation& s) {
-    if (simd)
-      return integrate_simd<Law::rotates, DampingPolicy, Sheared>(damping, s.particles_, s.cell_, s.list_.index(),
-                                                                  *s.pair_forces_, s.force_, s.dt_);
-    return dem::integrate<Law::rotates, DampingPolicy, Sheared>(damping, s.particles_, s.cell_, s.list_.index(),
-                                                                *s.pair_forces_, s.force_, s.dt_);
+  MotionSums step_as(Simulation& s) {
+    return forces_and_motion<Law, DampingPolicy, Sheared>(simd, law, damping, s.particles_, s.cell_, s.list_.pairs(),
+                                                          s.history_, s.list_.index(), s.rates_, s.dt_, *s.pair_forces_,
+                                                          s.sums_, s.force_);
   }
 };
 
@@ -167,7 +159,7 @@ void Simulation::remap_cell() {
 
 void Simulation::advance(const std::function<CellRates()>& rates) {
   if (list_.rebuild_due(particles_, cell_)) list_.build(particles_, cell_, &history_);
-  kernel_->forces(*this);
+  const MotionSums motion = kernel_->step(*this);
   if (!sums_.stress_Pa.allFinite()) {
     std::ostringstream msg;
     msg << "non-finite contact stress at step " << step_ << " (time " << time() << " s)";
@@ -187,8 +179,7 @@ void Simulation::advance(const std::function<CellRates()>& rates) {
   energy_.elastic = sums_.elastic_normal_J + sums_.elastic_tangential_J + sums_.elastic_rolling_J;
   energy_.dissipated_friction += sums_.friction_loss_J;
   energy_.dissipated_rolling += sums_.rolling_loss_J;
-  rates_ = rates();
-  const MotionSums motion = kernel_->integrate(*this);
+  rates_ = rates();  // the update does not depend on them: they apply from the next step
   list_.add_motion(dt_ * std::sqrt(motion.max_speed2));
   kinetic_energy_ = motion.kinetic_half_step;
   energy_.kinetic = motion.kinetic_centred;
