@@ -444,7 +444,7 @@ MotionSums forces_and_motion(int simd_lanes, const Law& law, const DampingPolicy
     out.motion_sums[c] = chunk;
     return ok;
   };
-  const bool wrapped = sweep_chunks(index, out.run_start, pair_chunk, move_chunk);
+  const bool wrapped = sweep_chunks(index, pair_chunk, move_chunk);
   sums = total_of_chunks(out.chunk_sums, cell);
   return total_of_chunks(out.motion_sums, wrapped);
 }

@@ -23,15 +23,6 @@ void PairIndex::build(const PairList& pairs, std::size_t particles) {
   second_pairs.resize(pairs.size());
   std::vector<std::uint32_t> fill(second_begin.begin(), second_begin.end() - 1);
   for (std::size_t k = 0; k < pairs.size(); ++k) second_pairs[fill[pairs.second[k]]++] = static_cast<std::uint32_t>(k);
-  // A particle's pairs as `second` are sorted by `first`: the first of them has the lowest.
-  chunk_lowest_first.resize(static_cast<std::size_t>(chunk_count(particles)));
-  for (std::size_t c = 0; c < chunk_lowest_first.size(); ++c) {
-    const std::size_t begin = c * static_cast<std::size_t>(chunk_size), end = std::min(particles, begin + static_cast<std::size_t>(chunk_size));
-    std::uint32_t lowest = static_cast<std::uint32_t>(begin);
-    for (std::size_t i = begin; i < end; ++i)
-      if (second_begin[i] < second_begin[i + 1]) lowest = std::min(lowest, pairs.first[second_pairs[second_begin[i]]]);
-    chunk_lowest_first[c] = lowest;
-  }
 }
 
 namespace {

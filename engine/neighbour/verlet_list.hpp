@@ -27,7 +27,6 @@
 #include <vector>
 
 #include "cell/periodic_cell.hpp"
-#include "core/chunks.hpp"
 #include "contact/contact_history.hpp"
 #include "core/particles.hpp"
 
@@ -46,10 +45,6 @@ struct PairIndex {
   std::vector<std::uint32_t> first_begin;   // pairs first_begin[i] .. first_begin[i+1]-1 have first == i
   std::vector<std::uint32_t> second_begin;  // second_pairs[second_begin[i] .. second_begin[i+1]-1]
   std::vector<std::uint32_t> second_pairs;  // pair indices with second == i, ascending
-  // Per chunk of particles (core/chunks.hpp): the lowest `first` of the pairs whose `second` is in
-  // the chunk, or the chunk's first particle if lower. The pairs of a chunk's particles all lie in
-  // the pair chunks from this one's to their own (dynamics/kernel.hpp, sweep_chunks).
-  std::vector<std::uint32_t> chunk_lowest_first;
   void build(const PairList& pairs, std::size_t particles);
 };
 
