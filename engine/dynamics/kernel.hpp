@@ -11,22 +11,23 @@
 #include "cell/periodic_cell.hpp"
 #include "contact/contact_history.hpp"
 #include "contact/contact_law.hpp"
-#include "core/chunks.hpp"
 #include "core/particles.hpp"
 #include "dynamics/simulation.hpp"
 #include "neighbour/verlet_list.hpp"
 
 namespace dem {
 
-// Work is split into chunks of particles (core/chunks.hpp); sums are formed per chunk in index
-// order and the chunk sums are added in chunk order. Every result is therefore bit-for-bit the
-// same on 1 or N threads.
+// Work is split into chunks of a fixed size, independent of the number of threads; sums are
+// formed per chunk in index order and the chunk sums are added in chunk order. Every result is
+// therefore bit-for-bit the same on 1 or N threads.
 //
 // Pairs are chunked by particle: pair chunk c holds the pairs whose `first` particle is in
 // particle chunk c. Which pairs out of contact the list holds (it depends on the Verlet skin and
 // on when it was rebuilt) then changes no sum: they add exact zeros (+0.0 to a sum that is never
 // -0.0), and the contacts of each chunk are the same whatever the skin. A run is bit for bit the
 // same with any skin.
+inline constexpr std::ptrdiff_t chunk_size = 512;
+inline std::ptrdiff_t chunk_count(std::size_t n) { return (static_cast<std::ptrdiff_t>(n) + chunk_size - 1) / chunk_size; }
 
 // A step over the chunks: pairs(c, begin, end) computes the forces of pair chunk c (pairs
 // [begin, end)), move(c, begin, end) moves the particles [begin, end) of chunk c and returns false
