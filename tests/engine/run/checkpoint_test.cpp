@@ -46,26 +46,41 @@ std::int64_t checkpoint_step(const std::string& file) {
   return dem::h5::get_int_attribute(dem::h5::open_group(f, "checkpoint"), "step");
 }
 
+// Runs DIR/s.yaml into DIR/r.h5, which must stop (exit 1) with its checkpoint at `step`; keeps the
+// stopped run's result as DIR/first.h5 and returns that path.
+std::string stop_at_checkpoint(const std::string& dir, std::int64_t step) {
+  const std::string out = dir + "/r.h5";
+  const auto first = dem_stderr("run '" + dir + "/s.yaml' --out '" + out + "'");
+  INFO(first.out);
+  REQUIRE(first.exit_code == 1);
+  REQUIRE(fs::exists(out + ".checkpoint"));
+  REQUIRE(checkpoint_step(out + ".checkpoint") == step);
+  fs::copy_file(out + ".partial", dir + "/first.h5");
+  return dir + "/first.h5";
+}
+
+// Resumes DIR/s.yaml from the checkpoint at `step` that stop_at_checkpoint left: it must stop
+// again, and every time-series column must equal the stopped run's (rows up to the checkpoint come
+// from it, the rest are computed again: all equal, none twice).
+void resume_bit_for_bit(const std::string& dir, std::int64_t step) {
+  const std::string out = dir + "/r.h5";
+  const auto again = dem_stderr("run '" + dir + "/s.yaml' --out '" + out + "' --resume");
+  CHECK(again.exit_code == 1);
+  CHECK_THAT(again.out, Catch::Matchers::Contains("resuming from " + out + ".checkpoint at step " + std::to_string(step)));
+  for (const dem::SeriesColumn& c : dem::series_columns()) {
+    INFO(c.name);
+    CHECK(column(out + ".partial", c.name) == column(dir + "/first.h5", c.name));
+  }
+}
+
 }  // namespace
 
 TEST_CASE("a stopped run keeps its checkpoint, and resuming repeats the rest exactly", "[run][checkpoint]") {
   const std::string dir = dem::test::scratch_dir("checkpoint_resume");
   dem::test::write_text(dir + "/s.yaml", stopping_scene());
-  const std::string out = dir + "/r.h5";
-  REQUIRE(dem_stderr("run '" + dir + "/s.yaml' --out '" + out + "'").exit_code == 1);
-  REQUIRE(fs::exists(out + ".checkpoint"));
-  CHECK(checkpoint_step(out + ".checkpoint") == 700);  // the last between two steps before the stop at 800
-  fs::copy_file(out + ".partial", dir + "/first.h5");
-
-  const auto again = dem_stderr("run '" + dir + "/s.yaml' --out '" + out + "' --resume");
-  CHECK(again.exit_code == 1);
-  CHECK_THAT(again.out, Catch::Matchers::Contains("resuming from " + out + ".checkpoint at step 700"));
-  // Rows up to the checkpoint come from it, the rest are computed again: all equal, none twice.
-  for (const dem::SeriesColumn& c : dem::series_columns()) {
-    INFO(c.name);
-    CHECK(column(out + ".partial", c.name) == column(dir + "/first.h5", c.name));
-  }
-  CHECK(column(out + ".partial", "step").size() == 13 + 5);  // squeeze: steps 0, 50 ... 600; hold: 600, 650 ... 800
+  stop_at_checkpoint(dir, 700);  // the last between two steps before the stop at 800
+  resume_bit_for_bit(dir, 700);
+  CHECK(column(dir + "/r.h5.partial", "step").size() == 13 + 5);  // squeeze: steps 0, 50 ... 600; hold: 600, 650 ... 800
 }
 
 TEST_CASE("a Hertz-Mindlin run with rolling resistance resumes from its checkpoint bit for bit", "[run][checkpoint][law]") {
@@ -90,32 +105,22 @@ TEST_CASE("a Hertz-Mindlin run with rolling resistance resumes from its checkpoi
                         "  - {name: compress, type: strain_rate, strain_rate: [20, 20, 20], duration: 2.0e-3}\n"
                         "  - {name: unload, type: stress, target: [1.0e5, 1.0e5, 1.0e5], rate: 1.0e9, max_strain_rate: 5,\n"
                         "     hold: {max_duration: 1.0e-3, check_interval: 50}}\n");
-  const std::string out = dir + "/r.h5";
-  REQUIRE(dem_stderr("run '" + dir + "/s.yaml' --out '" + out + "'").exit_code == 1);
-  REQUIRE(fs::exists(out + ".checkpoint"));
-  CHECK(checkpoint_step(out + ".checkpoint") == 1400);
-  fs::copy_file(out + ".partial", dir + "/first.h5");
+  const std::string first = stop_at_checkpoint(dir, 1400);
   // The rows after the checkpoint have loaded tangential and rolling springs, and sliding contacts.
-  const auto steps = column(dir + "/first.h5", "step");
-  const auto rolling = column(dir + "/first.h5", "elastic_energy_rolling");
-  const auto tangential = column(dir + "/first.h5", "elastic_energy_tangential");
-  const auto sliding = column(dir + "/first.h5", "sliding_fraction");
+  const auto steps = column(first, "step");
+  const auto rolling = column(first, "elastic_energy_rolling");
+  const auto tangential = column(first, "elastic_energy_tangential");
+  const auto sliding = column(first, "sliding_fraction");
   REQUIRE(steps.back() == 1500);
   REQUIRE(rolling.back() > 0);
   REQUIRE(tangential.back() > 0);
-  REQUIRE(column(dir + "/first.h5", "dissipated_by_rolling").back() > 0);
+  REQUIRE(column(first, "dissipated_by_rolling").back() > 0);
   double most_sliding = 0;
   for (std::size_t k = 0; k < steps.size(); ++k)
     if (steps[k] > 1400) most_sliding = std::max(most_sliding, sliding[k]);
   REQUIRE(most_sliding > 0);
 
-  const auto again = dem_stderr("run '" + dir + "/s.yaml' --out '" + out + "' --resume");
-  CHECK(again.exit_code == 1);
-  CHECK_THAT(again.out, Catch::Matchers::Contains("resuming from " + out + ".checkpoint at step 1400"));
-  for (const dem::SeriesColumn& c : dem::series_columns()) {
-    INFO(c.name);
-    CHECK(column(out + ".partial", c.name) == column(dir + "/first.h5", c.name));
-  }
+  resume_bit_for_bit(dir, 1400);
 }
 
 TEST_CASE("a checkpoint of other inputs or a damaged one is not resumed", "[run][checkpoint][input]") {
@@ -237,24 +242,12 @@ TEST_CASE("a control stage with a shearing cell and cyclic loading resumes from 
                         "     cyclic: {component: zz, quantity: strain, amplitude: 1.0e-3, period: 1.5e-4},\n"
                         "     until: {component: xy, strain: 0.004}}\n"
                         "  - {name: hold, type: stress, target: [1.0e5, 1.0e5, 1.0e5], rate: 1.0e9, hold: {max_duration: 5.0e-5}}\n");
-  const std::string out = dir + "/r.h5";
-  const auto first = dem_stderr("run '" + dir + "/s.yaml' --out '" + out + "'");
-  INFO(first.out);
-  REQUIRE(first.exit_code == 1);
-  REQUIRE(fs::exists(out + ".checkpoint"));
-  CHECK(checkpoint_step(out + ".checkpoint") == 2100);
-  fs::copy_file(out + ".partial", dir + "/first.h5");
-  const auto tilt = column(dir + "/first.h5", "cell_tilt_12"), amplitude = column(dir + "/first.h5", "double_amplitude_strain");
+  const std::string first = stop_at_checkpoint(dir, 2100);
+  const auto tilt = column(first, "cell_tilt_12"), amplitude = column(first, "double_amplitude_strain");
   REQUIRE(*std::min_element(tilt.begin(), tilt.end()) < 0);  // the cell tilted (G_xy > 0 lowers xy)
   REQUIRE(*std::max_element(amplitude.begin(), amplitude.end()) > 0);
 
-  const auto again = dem_stderr("run '" + dir + "/s.yaml' --out '" + out + "' --resume");
-  CHECK(again.exit_code == 1);
-  CHECK_THAT(again.out, Catch::Matchers::Contains("resuming from " + out + ".checkpoint at step 2100"));
-  for (const dem::SeriesColumn& c : dem::series_columns()) {
-    INFO(c.name);
-    CHECK(column(out + ".partial", c.name) == column(dir + "/first.h5", c.name));
-  }
+  resume_bit_for_bit(dir, 2100);
 }
 
 TEST_CASE("a stress stage's hold with a creep criterion resumes from its checkpoint bit for bit", "[run][checkpoint]") {
@@ -276,22 +269,11 @@ TEST_CASE("a stress stage's hold with a creep criterion resumes from its checkpo
                         "     hold: {stress_tolerance: 0.005, unbalanced_force_ratio: 1.0e-2, check_interval: 100, max_duration: 2.0,\n"
                         "            creep_rate: 0.05, creep_window: 1.0e-3}}\n"
                         "  - {name: hold, type: stress, target: [2.0e5, 2.0e5, 2.0e5], rate: 1.0e9, hold: {max_duration: 5.0e-5}}\n");
-  const std::string out = dir + "/r.h5";
-  const auto first = dem_stderr("run '" + dir + "/s.yaml' --out '" + out + "'");
-  INFO(first.out);
-  REQUIRE(first.exit_code == 1);
-  REQUIRE(checkpoint_step(out + ".checkpoint") == 100000);
-  fs::copy_file(out + ".partial", dir + "/first.h5");
-  const auto stage = column(dir + "/first.h5", "stage"), step = column(dir + "/first.h5", "step");
+  const std::string first = stop_at_checkpoint(dir, 100000);
+  const auto stage = column(first, "stage"), step = column(first, "step");
   const auto hold_start = std::find(stage.begin(), stage.end(), 1.0);
   REQUIRE(hold_start != stage.end());
   CHECK(step[static_cast<std::size_t>(hold_start - stage.begin())] == 117000);  // the creep stage ended after the checkpoint
 
-  const auto again = dem_stderr("run '" + dir + "/s.yaml' --out '" + out + "' --resume");
-  CHECK(again.exit_code == 1);
-  CHECK_THAT(again.out, Catch::Matchers::Contains("resuming from " + out + ".checkpoint at step 100000"));
-  for (const dem::SeriesColumn& c : dem::series_columns()) {
-    INFO(c.name);
-    CHECK(column(out + ".partial", c.name) == column(dir + "/first.h5", c.name));
-  }
+  resume_bit_for_bit(dir, 100000);
 }
