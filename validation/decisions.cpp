@@ -48,7 +48,9 @@ std::vector<RowDecision> decide(const std::vector<Row>& rows, const std::map<std
     for (const std::string& name : order) {
       if (name == baseline) continue;
       const auto it = readings.find(name);
-      ReadingEffect e{name, it == readings.end() ? RowResult{} : evaluate(row, it->second), std::nullopt, std::nullopt};
+      ReadingEffect e;
+      e.reading = name;
+      e.result = it == readings.end() ? RowResult{} : evaluate(row, it->second);
       if (e.result.valued > 0 && d.baseline.valued > 1 && d.baseline.spread.sd > 0)
         e.shift_sd = (e.result.spread.mean - d.baseline.spread.mean) / d.baseline.spread.sd;
       if (d.full && e.result.valued > 0 && d.baseline.valued > 0)

@@ -106,7 +106,8 @@ int main(int argc, char** argv) {
       const auto& ps = e.samples[k];
       json << (k ? ", " : "") << "{\"sample\": " << json_string(ps.sample) << ", \"value\": " << json_number(ps.measured.value)
            << ", \"note\": " << json_string(ps.measured.note) << "}";
-      values += (k ? ", " : "") + number_or_dash(ps.measured.value);
+      if (k) values += ", ";
+      values += number_or_dash(ps.measured.value);
     }
     json << "],\n     \"n\": " << e.valued << ", \"mean\": " << (e.valued ? number(e.spread.mean) : "null")
          << ", \"sd\": " << (e.valued > 1 ? number(e.spread.sd) : "null") << ", \"prediction_interval\": ["

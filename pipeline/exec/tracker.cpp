@@ -66,6 +66,7 @@ Tracker::Tracker(const std::vector<PlannedRun>& runs)
     if (problem.empty()) {
       state_[i] = RunState::Done;
       ++out_.reused;
+      learn(i, 0);
     } else if (runs[i].may_fail && recorded_stop(runs[i].result, runs[i].hash)) {
       state_[i] = RunState::Failed;  // stopped before with these inputs: its outcome stands
       ++out_.reused;
@@ -156,8 +157,7 @@ void Tracker::end(std::size_t i, const Ending& e) {
   if (e.exited && e.code == 0 && up_to_date(r.result, r.hash)) {
     state_[i] = RunState::Done;
     ++out_.ran;
-    learnt_[kind(i)].cost += r.cost;
-    learnt_[kind(i)].wall += wall;
+    learn(i, wall);
     report("finished " + r.name + " in " + minutes(wall));
   } else if (r.may_fail && e.exited && (e.code == 1 || e.code == 2)) {
     // An expected kind of end: the engine refused the input or stopped the run, with a message.
@@ -186,8 +186,25 @@ Outcome Tracker::outcome() const {
   return o;
 }
 
-// Each run's seconds are its estimated particle-steps over the throughput learnt from the finished
-// runs of its kind (preparations, whose hold has no known length, and tests are learnt apart).
+void Tracker::learn(std::size_t i, double wall_s) {
+  const PlannedRun& r = runs_[i];
+  if (r.copy_of >= 0) return;
+  const std::optional<ResultCost> c = result_cost(r.result);
+  if (!c) return;
+  Scale& s = scale_[r.family];
+  s.planned += r.cost, s.done += c->particle_steps;
+  const double wall = c->wall_s.value_or(wall_s);
+  if (wall > 0) learnt_[kind(i)].cost += c->particle_steps, learnt_[kind(i)].wall += wall;
+}
+
+double Tracker::expected_cost(std::size_t i) const {
+  const auto s = scale_.find(runs_[i].family);
+  if (s == scale_.end() || s->second.planned <= 0) return runs_[i].cost;
+  return runs_[i].cost * (s->second.done / s->second.planned);
+}
+
+// Each run's seconds are its expected particle-steps over the throughput learnt from the finished
+// (and reused) runs of its kind (preparations and tests apart: a gas compresses faster per step).
 // Before any run of a kind has finished, the other kind's throughput is used, or 2.5e7
 // particle-steps/s (this 2-core machine's paper study, two runs at a time).
 double Tracker::rate(int k) const {
@@ -204,7 +221,7 @@ double Tracker::eta_seconds() const {
   const auto now = clock::now();
   for (std::size_t i = 0; i < runs_.size(); ++i) {
     if (runs_[i].copy_of >= 0 || (state_[i] != RunState::Waiting && state_[i] != RunState::Running)) continue;
-    double t = runs_[i].cost / rate(kind(i));
+    double t = expected_cost(i) / rate(kind(i));
     if (state_[i] == RunState::Running && !queued_[i]) t = std::max(0.0, t - std::chrono::duration<double>(now - started_[i]).count());
     seconds += t;
     ++left;

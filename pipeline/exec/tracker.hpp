@@ -6,6 +6,7 @@
 // executors reuse, copy, record outcomes and report exactly alike.
 #include <algorithm>
 #include <chrono>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -55,6 +56,13 @@ class Tracker {
   // Judges how a running run ended: done (exit 0 and its result complete with its input hash), a
   // may_fail stop (exit 1 or 2: its outcome recorded), else a failure, reported with its log.
   void end(std::size_t i, const Ending& e);
+  // The particle-steps run i is expected to take: its planned cost times what the finished runs of
+  // its family (same density and source scene: liquefaction runs stop early, a preparation's hold
+  // is not known ahead) took against theirs; the plan alone before any of them has finished.
+  double expected_cost(std::size_t i) const;
+  // Seconds until every run is done: the expected cost of each run left (of a running one, what is
+  // left of its time) over the throughput learnt for its kind, shared by the busy workers.
+  double eta_seconds() const;
   // The progress line: "[pipeline T] what; ran, reused, failed, running[, queued]; ETA".
   void report(const std::string& what) const;
   void set_workers(int workers) { workers_ = std::max(1, workers); }  // runs busy at once, for the ETA
@@ -64,7 +72,6 @@ class Tracker {
 
  private:
   using clock = std::chrono::steady_clock;
-  double eta_seconds() const;
   double rate(int kind) const;
   int kind(std::size_t i) const { return runs_[i].test.empty() ? 0 : 1; }
 
@@ -76,10 +83,17 @@ class Tracker {
   clock::time_point start_ = clock::now();
   Outcome out_;
   int workers_ = 1;
+  // Learns from a complete result of run i: its particle-steps, against its plan and, with
+  // `wall_s` (its own record first), per second.
+  void learn(std::size_t i, double wall_s);
   struct Learnt {
-    double cost = 0, wall = 0;
+    double cost = 0, wall = 0;  // particle-steps done and the wall time they took
   };
   Learnt learnt_[2];  // [0] preparations, [1] tests
+  struct Scale {
+    double planned = 0, done = 0;  // particle-steps
+  };
+  std::map<std::string, Scale> scale_;  // per family
 };
 
 }  // namespace pipeline

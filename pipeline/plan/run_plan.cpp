@@ -203,6 +203,7 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
         const auto& lat = parsed.particles.lattice;
         particles[prep_index] = static_cast<double>(lat.n[0]) * lat.n[1] * lat.n[2];
         prep.cost = particles[prep_index] * estimated_steps(parsed);
+        prep.family = d.name + " " + study.preparation;
         prep.variants = {v.name};
         preparations[unnamed_text] = prep_index;
         runs.push_back(prep);
@@ -249,6 +250,7 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
         run.hash = content_hash(engine_version + "\n" + run.scene_text + "\nfrom " + from.hash);
         run.depends_on = prep_index;
         run.cost = particles[prep_index] * estimated_steps(tp);
+        run.family = d.name + " " + t.scene;
         runs.push_back(run);
       }
     }

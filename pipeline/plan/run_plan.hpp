@@ -20,6 +20,7 @@ struct PlannedRun {
   std::string hash;         // input hash, recorded in the result
   int depends_on = -1;      // index of the run whose result this one starts from
   double cost = 0;          // estimated particle-steps, for the ETA
+  std::string family;       // density and source scene: runs whose actual length the ETA learns from one another
   std::string density, test;  // test: empty for a preparation
   std::optional<std::int64_t> seed;  // the sample's seed in an ensemble (study key seeds)
   std::vector<std::string> variants;  // the variants whose results this run is (a shared preparation: several)

@@ -5,11 +5,14 @@
 
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "config/study_config.hpp"
 #include "exec/scheduler.hpp"
+#include "exec/tracker.hpp"
+#include "io/hdf5.hpp"
 #include "plan/run_plan.hpp"
 #include "pipeline/tiny_scenes.hpp"
 
@@ -159,4 +162,53 @@ TEST_CASE("pipeline: several studies share one list of runs, each test after its
     plans[1] = plans[0];
     CHECK_THROWS_WITH(pipeline::join_studies(plans), Catch::Matchers::Contains("would both write"));
   }
+}
+
+namespace {
+// A complete result as `dem run` leaves it, for the tracker to reuse: status, input hash, the
+// final step count of /state and its spheres, and (if given) the run's wall time.
+void write_result(const fs::path& file, const std::string& hash, std::int64_t steps, std::size_t spheres,
+                  std::optional<double> wall_s) {
+  dem::h5::Handle f = dem::h5::create_file(file.string());
+  dem::h5::set_attribute(f, "status", std::string("complete"));
+  dem::h5::set_attribute(f, "input_hash", hash);
+  if (wall_s) dem::h5::set_attribute(f, "wall_time_s", *wall_s);
+  {
+    dem::h5::Handle state = dem::h5::create_group(f, "state");
+    dem::h5::set_attribute(state, "step", steps);
+    dem::h5::write(state, "radius", std::vector<double>(spheres, 1e-3), 1, "m");
+  }
+  dem::h5::close_file(f, file.string());
+}
+
+pipeline::PlannedRun planned(const fs::path& dir, const std::string& name, const std::string& family, double cost) {
+  pipeline::PlannedRun r;
+  r.name = name, r.test = "test", r.family = family, r.cost = cost;
+  r.result = (dir / (name + ".h5")).string(), r.log = (dir / (name + ".log")).string();
+  r.hash = "hash of " + name;
+  return r;
+}
+}  // namespace
+
+TEST_CASE("pipeline: the ETA learns from finished runs what their family takes against its plan", "[pipeline][scheduler]") {
+  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "scheduler_eta";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  // Family "liquefy": planned at 2e6 particle-steps each (their duration bound), the finished one
+  // stopped after 1,000 steps of 10 spheres (1e4) in 20 s: the next is expected to take 2e6 x 1e4 / 2e6.
+  std::vector<pipeline::PlannedRun> runs = {planned(dir, "liquefy_a", "liquefy", 2e6), planned(dir, "liquefy_b", "liquefy", 2e6),
+                                            planned(dir, "shear", "shear", 3e4), planned(dir, "unknown_wall", "other", 5e4)};
+  write_result(runs[0].result, runs[0].hash, 1000, 10, 20.0);
+  write_result(runs[3].result, runs[3].hash, 100, 10, std::nullopt);  // no wall time: scales its family, not the rate
+  pipeline::Tracker tracker(runs);
+  REQUIRE(tracker.state(0) == pipeline::RunState::Done);
+  REQUIRE(tracker.state(3) == pipeline::RunState::Done);
+  CHECK(tracker.expected_cost(1) == Approx(1e4));
+  CHECK(tracker.expected_cost(2) == Approx(3e4));  // no finished run of its family: the plan
+  // Throughput learnt from the tests' actual particle-steps: 1e4 in 20 s = 500 per second (the
+  // planned 2e6 would claim 1e5 per second). Left: liquefy_b (1e4 / 500 = 20 s) and shear (3e4 /
+  // 500 = 60 s), on one worker.
+  CHECK(tracker.eta_seconds() == Approx(80.0));
+  tracker.set_workers(2);
+  CHECK(tracker.eta_seconds() == Approx(40.0));
 }
