@@ -232,7 +232,7 @@ LawBalance squeeze_law(const LawCase& c, double dt) {
        << "material: " << c.material << "\ndamping: " << c.damping << "\nnumerics: {time_step: " << dt << "}\n"
        << "stages:\n  - {name: squeeze, type: strain_rate, strain_rate: [20, 20, 20], duration: 1.0e-2}\n";
   const SceneConfig sc = scene_from_text(text.str(), "energy.yaml");
-  LawBalance b{build_simulation(sc)};
+  LawBalance b{build_simulation(sc), {}, 0};
   CellTargets squeeze_targets;
   for (auto& t : squeeze_targets) t = {AxisTarget::Mode::StrainRate, 20.0, 0, 0};
   const long n = std::lround(13.5e-3 / dt), m = std::lround(2.5e-3 / dt);
