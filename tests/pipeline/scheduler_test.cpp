@@ -197,7 +197,8 @@ TEST_CASE("pipeline: the ETA learns from finished runs what their family takes a
   // Family "liquefy": planned at 2e6 particle-steps each (their duration bound), the finished one
   // stopped after 1,000 steps of 10 spheres (1e4) in 20 s: the next is expected to take 2e6 x 1e4 / 2e6.
   std::vector<pipeline::PlannedRun> runs = {planned(dir, "liquefy_a", "liquefy", 2e6), planned(dir, "liquefy_b", "liquefy", 2e6),
-                                            planned(dir, "shear", "shear", 3e4), planned(dir, "unknown_wall", "other", 5e4)};
+                                            planned(dir, "shear", "shear", 3e4), planned(dir, "unknown_wall", "other", 5e4),
+                                            planned(dir, "unknown_wall_b", "other", 5e4)};
   write_result(runs[0].result, runs[0].hash, 1000, 10, 20.0);
   write_result(runs[3].result, runs[3].hash, 100, 10, std::nullopt);  // no wall time: scales its family, not the rate
   pipeline::Tracker tracker(runs);
@@ -205,10 +206,11 @@ TEST_CASE("pipeline: the ETA learns from finished runs what their family takes a
   REQUIRE(tracker.state(3) == pipeline::RunState::Done);
   CHECK(tracker.expected_cost(1) == Approx(1e4));
   CHECK(tracker.expected_cost(2) == Approx(3e4));  // no finished run of its family: the plan
-  // Throughput learnt from the tests' actual particle-steps: 1e4 in 20 s = 500 per second (the
-  // planned 2e6 would claim 1e5 per second). Left: liquefy_b (1e4 / 500 = 20 s) and shear (3e4 /
-  // 500 = 60 s), on one worker.
-  CHECK(tracker.eta_seconds() == Approx(80.0));
+  CHECK(tracker.expected_cost(4) == Approx(1e3));  // 5e4 x 1e3 / 5e4
+  // Throughput learnt from the tests' actual particle-steps with a wall time: 1e4 in 20 s = 500
+  // per second (the planned 2e6 would claim 1e5 per second). Left: liquefy_b (1e4 / 500 = 20 s),
+  // shear (3e4 / 500 = 60 s) and unknown_wall_b (1e3 / 500 = 2 s), on one worker.
+  CHECK(tracker.eta_seconds() == Approx(82.0));
   tracker.set_workers(2);
-  CHECK(tracker.eta_seconds() == Approx(40.0));
+  CHECK(tracker.eta_seconds() == Approx(41.0));
 }
