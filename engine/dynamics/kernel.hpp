@@ -45,28 +45,33 @@ inline std::ptrdiff_t chunk_count(std::size_t n) { return (static_cast<std::ptrd
 // sharing pairs with another thread's chunks after the barrier, was 5 to 9 % slower on 8,000
 // spheres. Each chunk's forces and motion are the same either way, so the result is the same bit
 // for bit on any number of threads.
+//
+// The bodies are also told whether the sweep runs on one thread (`serial`): only then may the pairs
+// of a chunk add their forces straight into the particles' sums (see PairForces).
 template <class PairBody, class MoveBody>
 bool sweep_chunks(const PairIndex& index, const PairBody& pairs, const MoveBody& move) {
   const std::size_t n = index.first_begin.size() - 1;
   const std::ptrdiff_t chunks = chunk_count(n);
   auto first_particle = [n](std::ptrdiff_t c) { return std::min(n, static_cast<std::size_t>(c * chunk_size)); };
-  auto pairs_of = [&](std::ptrdiff_t c) {
+  auto pairs_of = [&](std::ptrdiff_t c, bool serial) {
     pairs(static_cast<std::size_t>(c), std::size_t{index.first_begin[first_particle(c)]},
-          std::size_t{index.first_begin[first_particle(c + 1)]});
+          std::size_t{index.first_begin[first_particle(c + 1)]}, serial);
   };
-  auto move_of = [&](std::ptrdiff_t c) { return move(static_cast<std::size_t>(c), first_particle(c), first_particle(c + 1)); };
+  auto move_of = [&](std::ptrdiff_t c, bool serial) {
+    return move(static_cast<std::size_t>(c), first_particle(c), first_particle(c + 1), serial);
+  };
   int every = 1;
   // One thread runs its sweep inside the parallel region too: outside it, the same loop ran 6 %
   // slower with mu = 0.5 (3.17-3.25e7 particle-steps/s against 3.32-3.44e7; code generation).
 #pragma omp parallel reduction(&& : every)
   {
     if (omp_get_num_threads() == 1) {
-      for (std::ptrdiff_t c = 0; c < chunks; ++c) pairs_of(c), every = move_of(c) && every;
+      for (std::ptrdiff_t c = 0; c < chunks; ++c) pairs_of(c, true), every = move_of(c, true) && every;
     } else {
 #pragma omp for schedule(static)
-      for (std::ptrdiff_t rotated = 0; rotated < chunks; ++rotated) pairs_of((rotated + 1) % chunks);
+      for (std::ptrdiff_t rotated = 0; rotated < chunks; ++rotated) pairs_of((rotated + 1) % chunks, false);
 #pragma omp for schedule(static)
-      for (std::ptrdiff_t rotated = 0; rotated < chunks; ++rotated) every = move_of((rotated + 1) % chunks) && every;
+      for (std::ptrdiff_t rotated = 0; rotated < chunks; ++rotated) every = move_of((rotated + 1) % chunks, false) && every;
     }
   }
   return every != 0;
@@ -80,14 +85,36 @@ struct MotionSums {
   double max_speed2 = 0;         // largest |v(n+1/2)|^2 [m^2/s^2], for the Verlet list's displacement bound
 };
 
-// Forces of one evaluation, per pair, gathered per particle by the update (no scattered writes,
-// so pairs can be processed in parallel), and the per-chunk partial sums of both loops. Kept
-// between steps so that a step allocates nothing.
+// A particle's net force or torque while its pairs add to it: x, y, z and a zero, one 256-bit load.
+struct alignas(32) Sum4 {
+  double v[4];
+};
+
+// Forces of one evaluation, and the per-chunk partial sums of both loops. Kept between steps so
+// that a step allocates nothing.
+//
+// Forces are stored per pair and gathered per particle by the update (no scattered writes, so
+// pairs can be processed in parallel). Except on one thread with a law without torques: there
+// each pair adds its force straight into the sums of its two particles (`scattered`), in pair
+// order, and nothing is stored per pair. Each particle's sum then sees the same additions in the
+// same order as the gather (the pairs where it is `second`, then those where it is `first`,
+// ascending), so both give the same bits. A pair out of contact adds nothing, where the gather adds
+// +0.0: the same, as the sums start at +0.0 and so are never -0.0. The update reads each sum and
+// sets it back to zero, so the sums are zero between steps. (With torques too, μ = 0.5, this was
+// slower than the gather; docs/performance.md.)
 struct PairForces {
   std::vector<Vec3> force;              // force on `second` [N]; -force acts on `first`
   std::vector<Vec3> torque_i, torque_j;  // minus the torques on `first` and `second` [N m] (laws that rotate only)
   std::vector<StepSums> chunk_sums;       // per pair chunk; every chunk writes its own entry
   std::vector<MotionSums> motion_sums;    // per chunk of particles
+  std::vector<Sum4> net_force;            // per particle: the sums of Scattered, zero between steps
+  struct Scattered {
+    Sum4* __restrict force = nullptr;
+  };
+  Scattered scattered(std::size_t particles) {
+    net_force.resize(particles, Sum4{});
+    return {net_force.data()};
+  }
 };
 
 // The inputs and outputs of the pair loop, as raw pointers (the arrays do not alias, and the
@@ -114,6 +141,7 @@ struct PairLoop {
   Vec3* __restrict pair_force;
   Vec3* __restrict torque_i;
   Vec3* __restrict torque_j;
+  PairForces::Scattered scattered;  // set: add the forces into the particles' sums instead (see PairForces)
 
   // Sizes the outputs and points at them.
   PairLoop(const Law& law_, const Particles& p, const PeriodicCell& cell_, const PairList& pairs, ContactHistory& history,
@@ -210,6 +238,7 @@ struct ParticleLoop {
   Vec3* __restrict s;
   Vec3* __restrict omega;
   Vec3* __restrict net;
+  PairForces::Scattered scattered;  // set: the pair loop summed the forces per particle (see PairForces)
 
   // Sizes the outputs and points at them.
   ParticleLoop(const DampingPolicy& damping_, Particles& p, const PeriodicCell& cell, const PairIndex& index,
@@ -232,9 +261,14 @@ struct ParticleLoop {
     net = force.data();
   }
 
-  // Net force and torque of particle i, gathered in pair order.
+  // Net force and torque of particle i, gathered in pair order (or taken from its sums).
   void gather(std::size_t i, Vec3& f, Vec3& t) const {
     f.setZero(), t.setZero();
+    if (!Rotate && scattered.force) {  // summed by the pair loop: take the sum, leave zeros
+      Sum4& sum = scattered.force[i];
+      f = Vec3(sum.v[0], sum.v[1], sum.v[2]), sum = Sum4{};
+      return;
+    }
     for (std::uint32_t m = second_begin[i]; m < second_begin[i + 1]; ++m) {
       const std::uint32_t k = second_pairs[m];
       f += pair_force[k];

@@ -79,6 +79,17 @@ struct Accumulator {
   }
 };
 
+// sum[index] += v (or -= v).
+template <bool Subtract>
+inline void scatter(Sum4* sum, const std::uint32_t* index, const V3& v) {
+  double* s = sum[*index].v;
+  if constexpr (Subtract) {
+    s[0] -= v.x, s[1] -= v.y, s[2] -= v.z;
+  } else {
+    s[0] += v.x, s[1] += v.y, s[2] += v.z;
+  }
+}
+
 #include "dynamics/kernel_simd_pairs.inc"
 
 }  // namespace
@@ -184,6 +195,19 @@ struct Accumulator {
   }
 };
 
+// sum[index[p]] += lane p of v (or -=), lane by lane: each pair's force as one row (x, y, z, 0),
+// one 256-bit load, add and store per particle. Every lane, in contact or not: a lane out of
+// contact adds +0.0, which leaves a sum unchanged (the sums are never -0.0; see PairForces).
+template <bool Subtract>
+inline void scatter(Sum4* sum, const std::uint32_t* index, const V3& v) {
+  const Rows r = transpose(v.x, v.y, v.z, zero());
+  for (std::size_t p = 0; p < 4; ++p) {
+    double* s = sum[index[p]].v;
+    const V old = _mm256_load_pd(s);
+    _mm256_store_pd(s, Subtract ? old - r.row[p] : old + r.row[p]);
+  }
+}
+
 #include "contact/lane_ops.inc"
 #include "dynamics/kernel_simd_pairs.inc"
 
@@ -256,13 +280,27 @@ void particle_chunk(const ParticleLoop<Rotate, DampingPolicy, Sheared>& loop, st
   const V dtLx = splat(loop.dt_over_L[0]), dtLy = splat(loop.dt_over_L[1]), dtLz = splat(loop.dt_over_L[2]);
   const V inv_Ly = splat(loop.inv_L[1]), inv_Lz = splat(loop.inv_L[2]);  // Sheared only
   const V t_xy = splat(loop.tilt[0]), t_xz = splat(loop.tilt[1]), t_yz = splat(loop.tilt[2]);
+  const bool scattered = !Rotate && loop.scattered.force;  // the pair loop summed the forces (PairForces)
   std::size_t i = begin;
   while (i + 4 <= end) {
     const std::size_t n_blocks = std::min(batch, (end - i) / 4);
-    for (std::size_t q = 0; q < 4 * n_blocks; ++q) gather_net(loop, i + q, torque + q);
+    if (!scattered) {
+      for (std::size_t q = 0; q < 4 * n_blocks; ++q) gather_net(loop, i + q, torque + q);
+    }
     for (std::size_t b = 0; b < n_blocks; ++b) {
       const std::size_t ib = i + 4 * b;
-      const V3 f = load(loop.net + ib), v_old = load(loop.v + ib);
+      V3 f;
+      if (scattered) {  // the four particles' sums, taken (left zero) and transposed into lanes
+        Sum4* sum = loop.scattered.force + ib;
+        const Rows c = transpose(_mm256_load_pd(sum[0].v), _mm256_load_pd(sum[1].v), _mm256_load_pd(sum[2].v),
+                                 _mm256_load_pd(sum[3].v));
+        for (int q = 0; q < 4; ++q) _mm256_store_pd(sum[q].v, zero());
+        f = {c.row[0], c.row[1], c.row[2]};
+        store(loop.net + ib, f);
+      } else {
+        f = load(loop.net + ib);
+      }
+      const V3 v_old = load(loop.v + ib);
       const V3 v_new = damped_update(damping, false, ib, v_old, f);
       store(loop.v + ib, v_new);
       const V3 s = load(loop.s + ib);
@@ -355,6 +393,11 @@ inline V3 gather(const Vec3* base, const std::uint32_t* index) {
 inline V gather(const double* base, const std::uint32_t* index) {
   return join(avx2::gather(base, index), avx2::gather(base, index + 4));
 }
+template <bool Subtract>
+inline void scatter(Sum4* sum, const std::uint32_t* index, const V3& v) {
+  avx2::scatter<Subtract>(sum, index, {low(v.x), low(v.y), low(v.z)});
+  avx2::scatter<Subtract>(sum, index + 4, {high(v.x), high(v.y), high(v.z)});
+}
 
 // An 8 x 8 transpose: given eight components c[0..7] of eight pairs (lane p = pair p), the pairs'
 // rows (row[p] lane k = component k of pair p).
@@ -422,9 +465,14 @@ MotionSums forces_and_motion(int simd_lanes, const Law& law, const DampingPolicy
                              const PeriodicCell& cell, const PairList& pairs, ContactHistory& history,
                              const PairIndex& index, const CellRates& rates, double dt, PairForces& out,
                              StepSums& sums, std::vector<Vec3>& force) {
-  const PairLoop<Law, Sheared> pair_loop(law, p, cell, pairs, history, rates, dt, out);
-  const ParticleLoop<Law::rotates, DampingPolicy, Sheared> particle_loop(damping, p, cell, index, out, force, dt);
-  const auto pair_chunk = [&](std::size_t c, std::size_t begin, std::size_t end) {
+  PairLoop<Law, Sheared> gathered_pairs(law, p, cell, pairs, history, rates, dt, out);
+  ParticleLoop<Law::rotates, DampingPolicy, Sheared> gathered_moves(damping, p, cell, index, out, force, dt);
+  // On one thread, a law without torques adds into the particles' sums (PairForces).
+  PairLoop<Law, Sheared> scattered_pairs = gathered_pairs;
+  ParticleLoop<Law::rotates, DampingPolicy, Sheared> scattered_moves = gathered_moves;
+  if constexpr (!Law::rotates) scattered_pairs.scattered = scattered_moves.scattered = out.scattered(p.size());
+  const auto pair_chunk = [&](std::size_t c, std::size_t begin, std::size_t end, bool serial) {
+    const PairLoop<Law, Sheared>& pair_loop = serial ? scattered_pairs : gathered_pairs;
     StepSums chunk;
     std::size_t k = begin;  // pairs before k done by the vector loop
     if (simd_lanes == 8) k = begin + (end - begin) / 8 * 8, avx512::chunk(pair_loop, begin, k, chunk);
@@ -432,7 +480,8 @@ MotionSums forces_and_motion(int simd_lanes, const Law& law, const DampingPolicy
     one_lane::chunk(pair_loop, k, end, chunk);
     out.chunk_sums[c] = chunk;
   };
-  const auto move_chunk = [&](std::size_t c, std::size_t begin, std::size_t end) {
+  const auto move_chunk = [&](std::size_t c, std::size_t begin, std::size_t end, bool serial) {
+    const ParticleLoop<Law::rotates, DampingPolicy, Sheared>& particle_loop = serial ? scattered_moves : gathered_moves;
     MotionSums chunk;  // sums of twice the energies; halved by total_of_chunks
     bool ok = true;
     if (simd_lanes) {

@@ -51,23 +51,29 @@ TEST_CASE("one-sweep step: chunks move after all their pairs and before no pair 
     std::vector<long> pairs_done(chunks, -1), move_start(chunks, -1);
     std::vector<int> pair_calls(chunks, 0), move_calls(chunks, 0);
     std::vector<std::size_t> pair_range_ok(chunks, 0);
+    std::atomic<int> told_serial{0}, told_parallel{0};  // calls told the sweep runs on one thread, on more
     omp_set_num_threads(threads);
     const bool all = sweep_chunks(
         index,
-        [&](std::size_t c, std::size_t begin, std::size_t end) {
+        [&](std::size_t c, std::size_t begin, std::size_t end, bool serial) {
+          ++(serial ? told_serial : told_parallel);
           if (c == 0) std::this_thread::sleep_for(std::chrono::milliseconds(20));
           pair_range_ok[c] = begin == index.first_begin[c * chunk_size] &&
                              end == index.first_begin[std::min(n, (c + 1) * chunk_size)];
           ++pair_calls[c];
           pairs_done[c] = clock++;
         },
-        [&](std::size_t c, std::size_t begin, std::size_t end) {
+        [&](std::size_t c, std::size_t begin, std::size_t end, bool serial) {
+          ++(serial ? told_serial : told_parallel);
           move_start[c] = clock++;
           ++move_calls[c];
           return begin == c * chunk_size && end == std::min(n, begin + chunk_size);
         });
     omp_set_num_threads(1);
     CHECK(all);
+    // Only a sweep on one thread may let the pairs add into the particles' sums (PairForces).
+    CHECK(told_serial == (threads == 1 ? 2 * static_cast<int>(chunks) : 0));
+    CHECK(told_parallel == (threads == 1 ? 0 : 2 * static_cast<int>(chunks)));
     for (std::size_t c = 0; c < chunks; ++c) {
       CHECK(pair_calls[c] == 1);
       CHECK(move_calls[c] == 1);

@@ -1,7 +1,8 @@
 // Threads inside a run (OpenMP) must not change a single bit of the result.
 //
 // Why exact equality is the right expectation: pair forces are computed per pair (no shared
-// writes) and gathered per particle in pair order; sums (stress, stiffness, kinetic energy) are
+// writes) and gathered per particle in pair order (on one thread, a frictionless law adds them
+// into the particles' sums in the same order instead); sums (stress, stiffness, kinetic energy) are
 // formed over chunks of a fixed size, independent of the thread count, and the chunk sums are
 // added in chunk order. So 1 and 2 threads perform the same floating-point operations in the same
 // order. A 1,000-sphere packing has 2 particle chunks and about 7 pair chunks, so 2 threads do
