@@ -100,8 +100,7 @@ struct alignas(32) Sum4 {
 // same order as the gather (the pairs where it is `second`, then those where it is `first`,
 // ascending), so both give the same bits. A pair out of contact adds nothing, where the gather adds
 // +0.0: the same, as the sums start at +0.0 and so are never -0.0. The update reads each sum and
-// sets it back to zero, so the sums are zero between steps. (With torques too, μ = 0.5, this was
-// slower than the gather; docs/performance.md.)
+// sets it back to zero, so the sums are zero between steps. Up to scatter_max_particles (below).
 struct PairForces {
   std::vector<Vec3> force;              // force on `second` [N]; -force acts on `first`
   std::vector<Vec3> torque_i, torque_j;  // minus the torques on `first` and `second` [N m] (laws that rotate only)
@@ -116,6 +115,11 @@ struct PairForces {
     return {net_force.data()};
   }
 };
+// The scatter pays while the sample is small: on the benchmark machine (AMD EPYC, 1 MB L2 per
+// core, 32 MB L3), one thread, mu = 0, +13 % at 8,000 spheres, ahead in 4 rounds of 5 at 64,000,
+// even at 216,000 and 3 to 9 % slower at 512,000. With torques too (mu = 0.5) it was 8 % slower
+// at 8,000 spheres and no faster at 64,000 (docs/performance.md).
+inline constexpr std::size_t scatter_max_particles = 150'000;
 
 // The inputs and outputs of the pair loop, as raw pointers (the arrays do not alias, and the
 // compiler keeps them in registers). The pair loop itself (dynamics/kernel_simd_pairs.inc) is

@@ -467,10 +467,13 @@ MotionSums forces_and_motion(int simd_lanes, const Law& law, const DampingPolicy
                              StepSums& sums, std::vector<Vec3>& force) {
   PairLoop<Law, Sheared> gathered_pairs(law, p, cell, pairs, history, rates, dt, out);
   ParticleLoop<Law::rotates, DampingPolicy, Sheared> gathered_moves(damping, p, cell, index, out, force, dt);
-  // On one thread, a law without torques adds into the particles' sums (PairForces).
+  // On one thread, a law without torques adds into the particles' sums (PairForces), up to
+  // `scatter_max_particles`.
   PairLoop<Law, Sheared> scattered_pairs = gathered_pairs;
   ParticleLoop<Law::rotates, DampingPolicy, Sheared> scattered_moves = gathered_moves;
-  if constexpr (!Law::rotates) scattered_pairs.scattered = scattered_moves.scattered = out.scattered(p.size());
+  if constexpr (!Law::rotates) {
+    if (p.size() <= scatter_max_particles) scattered_pairs.scattered = scattered_moves.scattered = out.scattered(p.size());
+  }
   const auto pair_chunk = [&](std::size_t c, std::size_t begin, std::size_t end, bool serial) {
     const PairLoop<Law, Sheared>& pair_loop = serial ? scattered_pairs : gathered_pairs;
     StepSums chunk;
