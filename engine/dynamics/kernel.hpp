@@ -106,13 +106,10 @@ struct PairForces {
   std::vector<Vec3> torque_i, torque_j;  // minus the torques on `first` and `second` [N m] (laws that rotate only)
   std::vector<StepSums> chunk_sums;       // per pair chunk; every chunk writes its own entry
   std::vector<MotionSums> motion_sums;    // per chunk of particles
-  std::vector<Sum4> net_force;            // per particle: the sums of Scattered, zero between steps
-  struct Scattered {
-    Sum4* __restrict force = nullptr;
-  };
-  Scattered scattered(std::size_t particles) {
+  std::vector<Sum4> net_force;            // per particle: the scattered sums, zero between steps
+  Sum4* scattered_sums(std::size_t particles) {
     net_force.resize(particles, Sum4{});
-    return {net_force.data()};
+    return net_force.data();
   }
 };
 // The scatter pays while the sample is small: on the benchmark machine (AMD EPYC, 1 MB L2 per
@@ -145,7 +142,7 @@ struct PairLoop {
   Vec3* __restrict pair_force;
   Vec3* __restrict torque_i;
   Vec3* __restrict torque_j;
-  PairForces::Scattered scattered;  // set: add the forces into the particles' sums instead (see PairForces)
+  Sum4* __restrict scattered = nullptr;  // set: add the forces into these particle sums instead (see PairForces)
 
   // Sizes the outputs and points at them.
   PairLoop(const Law& law_, const Particles& p, const PeriodicCell& cell_, const PairList& pairs, ContactHistory& history,
@@ -242,7 +239,7 @@ struct ParticleLoop {
   Vec3* __restrict s;
   Vec3* __restrict omega;
   Vec3* __restrict net;
-  PairForces::Scattered scattered;  // set: the pair loop summed the forces per particle (see PairForces)
+  Sum4* __restrict scattered = nullptr;  // set: the pair loop summed the forces here, per particle (see PairForces)
 
   // Sizes the outputs and points at them.
   ParticleLoop(const DampingPolicy& damping_, Particles& p, const PeriodicCell& cell, const PairIndex& index,
@@ -268,8 +265,8 @@ struct ParticleLoop {
   // Net force and torque of particle i, gathered in pair order (or taken from its sums).
   void gather(std::size_t i, Vec3& f, Vec3& t) const {
     f.setZero(), t.setZero();
-    if (!Rotate && scattered.force) {  // summed by the pair loop: take the sum, leave zeros
-      Sum4& sum = scattered.force[i];
+    if (!Rotate && scattered) {  // summed by the pair loop: take the sum, leave zeros
+      Sum4& sum = scattered[i];
       f = Vec3(sum.v[0], sum.v[1], sum.v[2]), sum = Sum4{};
       return;
     }

@@ -280,7 +280,7 @@ void particle_chunk(const ParticleLoop<Rotate, DampingPolicy, Sheared>& loop, st
   const V dtLx = splat(loop.dt_over_L[0]), dtLy = splat(loop.dt_over_L[1]), dtLz = splat(loop.dt_over_L[2]);
   const V inv_Ly = splat(loop.inv_L[1]), inv_Lz = splat(loop.inv_L[2]);  // Sheared only
   const V t_xy = splat(loop.tilt[0]), t_xz = splat(loop.tilt[1]), t_yz = splat(loop.tilt[2]);
-  const bool scattered = !Rotate && loop.scattered.force;  // the pair loop summed the forces (PairForces)
+  const bool scattered = !Rotate && loop.scattered;  // the pair loop summed the forces (PairForces)
   std::size_t i = begin;
   while (i + 4 <= end) {
     const std::size_t n_blocks = std::min(batch, (end - i) / 4);
@@ -291,7 +291,7 @@ void particle_chunk(const ParticleLoop<Rotate, DampingPolicy, Sheared>& loop, st
       const std::size_t ib = i + 4 * b;
       V3 f;
       if (scattered) {  // the four particles' sums, taken (left zero) and transposed into lanes
-        Sum4* sum = loop.scattered.force + ib;
+        Sum4* sum = loop.scattered + ib;
         const Rows c = transpose(_mm256_load_pd(sum[0].v), _mm256_load_pd(sum[1].v), _mm256_load_pd(sum[2].v),
                                  _mm256_load_pd(sum[3].v));
         for (int q = 0; q < 4; ++q) _mm256_store_pd(sum[q].v, zero());
@@ -472,7 +472,7 @@ MotionSums forces_and_motion(int simd_lanes, const Law& law, const DampingPolicy
   PairLoop<Law, Sheared> scattered_pairs = gathered_pairs;
   ParticleLoop<Law::rotates, DampingPolicy, Sheared> scattered_moves = gathered_moves;
   if constexpr (!Law::rotates) {
-    if (p.size() <= scatter_max_particles) scattered_pairs.scattered = scattered_moves.scattered = out.scattered(p.size());
+    if (p.size() <= scatter_max_particles) scattered_pairs.scattered = scattered_moves.scattered = out.scattered_sums(p.size());
   }
   const auto pair_chunk = [&](std::size_t c, std::size_t begin, std::size_t end, bool serial) {
     const PairLoop<Law, Sheared>& pair_loop = serial ? scattered_pairs : gathered_pairs;
