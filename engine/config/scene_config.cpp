@@ -262,6 +262,9 @@ StageConfig read_stage(Section s) {
                                        "rate at which each target ramps from the stage's starting stress");
     st.max_strain_rate_per_s = s.number("max_strain_rate", "1/s", {0, 1e3, true}, 1.0,
                                         "cap on the cell strain rate of each axis");
+    st.zero_shear_stress = s.boolean("zero_shear_stress", false,
+                                     "hold the shear stresses at zero (the cell shears), and count them in the hold's "
+                                     "stress error; false: the cell stays orthorhombic");
     if (s.has("hold")) st.hold = read_hold(s.child("hold", "equilibrium criteria that end the stage"));
     else s.child("hold", "equilibrium criteria that end the stage");  // required: declares and reports it
   }
@@ -337,6 +340,7 @@ std::string emit_resolved(const SceneConfig& c) {
         out << YAML::Key << "creep_rate" << YAML::Value << s.hold.creep_rate_per_s << YAML::Key << "creep_window"
             << YAML::Value << s.hold.creep_window_s;
       out << YAML::EndMap;
+      if (s.zero_shear_stress) out << YAML::Key << "zero_shear_stress" << YAML::Value << true;
     }
     out << YAML::EndMap;
   }

@@ -71,7 +71,7 @@ struct StageConfig {
   double stress_ratio = 1.24;    // R = sigma_max / sigma_min of the named TC/TE states
   std::vector<PathItem> path;
   std::string path_text;         // the path as written (for the resolved scene)
-  bool zero_shear_stress = false; // the cell shears so that the shear stresses stay at zero
+  bool zero_shear_stress = false; // stress and stress_path stages: the cell shears so that the shear stresses stay at zero
   // control stage: every component of the cell (control/stress_servo.hpp) for `duration`
   CellControl control;
   CyclicLoading cyclic;

@@ -73,6 +73,10 @@ HoldStatus hold_status(const Simulation& sim, const StageConfig& st) {
   const Mat3& s = sim.sums().stress_Pa;
   HoldStatus h;
   for (int k = 0; k < 3; ++k) h.stress_error = std::max(h.stress_error, std::abs(s(k, k) - st.target_Pa[k]) / st.target_Pa[k]);
+  if (st.zero_shear_stress) {  // a shear stress counts against the mean target, as q/p would
+    const double scale = st.target_Pa.mean();
+    for (const double shear : {s(0, 1), s(0, 2), s(1, 2)}) h.stress_error = std::max(h.stress_error, std::abs(shear) / scale);
+  }
   h.unbalanced_force_ratio = unbalanced_force_ratio(sim);
   h.met = h.stress_error <= st.hold.stress_tolerance && h.unbalanced_force_ratio <= st.hold.unbalanced_force_ratio;
   return h;
@@ -131,6 +135,8 @@ void run_stress_stage(Simulation& sim, const SceneConfig& scene, int index, cons
   const std::int64_t max_steps = steps_in(st.hold.max_duration_s, dt);
   AdaptiveServo servo = stage_servo(scene, st);
   CellTargets targets;
+  CellControl control;  // zero_shear_stress: the axes' targets, and zero shear stress
+  for (std::size_t k = 3; k < 6; ++k) control.component[k] = {AxisTarget::Mode::Stress, 0, 0, 0};
   StageCursor hold = cursor_at(index, 0);  // the hold's measurements so far
   if (resume) servo.restore(resume->servo), hold = *resume;
   const bool creep = st.hold.creep_rate_per_s > 0;
@@ -148,7 +154,12 @@ void run_stress_stage(Simulation& sim, const SceneConfig& scene, int index, cons
                                               ramping ? from[k] + sign * st.stress_rate_Pa_per_s * t : st.target_Pa[k],
                                               ramping ? sign * st.stress_rate_Pa_per_s : 0.0};
     }
-    sim.step(targets, servo);
+    if (st.zero_shear_stress) {
+      for (std::size_t k = 0; k < 3; ++k) control.component[k] = targets[k];
+      sim.step(control, servo);
+    } else {
+      sim.step(targets, servo);
+    }
     const std::int64_t done = i + 1;
     if (hooks.row && output_due(sim, scene)) hooks.row(sim, {index});
     const double t_done = static_cast<double>(done) * dt;
