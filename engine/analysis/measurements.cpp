@@ -22,7 +22,7 @@ namespace {
 
 template <class Law>
 ContactCounts count_with(const Law& law, const Simulation& sim, const PairList& pairs, const ContactHistory& history,
-                         bool keep_normals) {
+                         bool keep_normals, bool keep_network) {
   using O = scalar_lanes::Ops;
   const Particles& p = sim.particles();
   std::vector<unsigned> per_particle(p.size(), 0);
@@ -39,17 +39,23 @@ ContactCounts count_with(const Law& law, const Simulation& sim, const PairList& 
     const double reduced_radius = Law::needs_reduced_radius ? (p.radius[i] * p.radius[j]) / rsum : 0.0;
     const double fn = law.normal.template force<O>(overlap, reduced_radius);
     Vec3 f = fn / dist * l;
+    double ft = 0;
     if constexpr (Law::has_tangential) {
-      f += scalar_lanes::vec3_of(
+      const Vec3 tangential = scalar_lanes::vec3_of(
           law.tangential.template force_of<O>(scalar_lanes::lanes_of(history.tangential[k]), overlap, reduced_radius));
+      f += tangential;
+      ft = tangential.norm();
       if (history.sliding[k]) ++c.sliding;
+    }
+    if (keep_network) {
+      c.pairs.push_back(i), c.pairs.push_back(j);
+      c.tangential_forces_N.push_back(ft);
+      c.branches.push_back(l);
     }
     c.stress_Pa += f * l.transpose();
     sum_fn += fn;
-    if (keep_normals) {
-      c.normals.push_back(l / dist);
-      c.normal_forces_N.push_back(fn);
-    }
+    if (keep_normals) c.normals.push_back(l / dist);
+    if (keep_normals || keep_network) c.normal_forces_N.push_back(fn);
     ++c.contacts;
     ++per_particle[i];
     ++per_particle[j];
@@ -66,7 +72,7 @@ ContactCounts count_with(const Law& law, const Simulation& sim, const PairList& 
 
 }  // namespace
 
-ContactCounts count_contacts(const Simulation& sim, bool keep_normals) {
+ContactCounts count_contacts(const Simulation& sim, bool keep_normals, bool keep_network) {
   // A simulation built from particles (a lattice, a CSV file) has no neighbour list until its
   // first step builds one, yet its particles may already overlap (a packing read from a CSV file):
   // its first row reported no contacts and zero stress. It is measured over a list built here from
@@ -77,10 +83,10 @@ ContactCounts count_contacts(const Simulation& sim, bool keep_normals) {
     list.build(sim.particles(), sim.cell());
     ContactHistory unloaded = sim.history();
     unloaded.reset(list.pairs().size());
-    return std::visit([&](const auto& law) { return count_with(law, sim, list.pairs(), unloaded, keep_normals); },
+    return std::visit([&](const auto& law) { return count_with(law, sim, list.pairs(), unloaded, keep_normals, keep_network); },
                       sim.material().law);
   }
-  return std::visit([&](const auto& law) { return count_with(law, sim, sim.pairs(), sim.history(), keep_normals); },
+  return std::visit([&](const auto& law) { return count_with(law, sim, sim.pairs(), sim.history(), keep_normals, keep_network); },
                     sim.material().law);
 }
 

@@ -20,12 +20,17 @@ struct ContactCounts {
   double mean_normal_force_N = 0;
   std::vector<Vec3> normals;              // unit normal of each contact (filled if asked for)
   std::vector<double> normal_forces_N;    // f_n of each contact (filled if asked for)
+  // The contact network (filled if asked for): per contact, its two particles, |f_t| and the
+  // branch vector from the first particle's centre to the second's (m).
+  std::vector<std::int64_t> pairs;        // i, j of each contact
+  std::vector<double> tangential_forces_N;
+  std::vector<Vec3> branches;
 };
 // Surveys the contacts at the current positions: counts, and the stress from the contact law's
 // normal force plus the tangential force its stored history stands for. Evaluated at the state of
 // the row (one position update after the last force evaluation), by the law's own functions, so
 // it can be called at any time without touching the trajectory.
-ContactCounts count_contacts(const Simulation& sim, bool keep_normals = false);
+ContactCounts count_contacts(const Simulation& sim, bool keep_normals = false, bool keep_network = false);
 
 // Mechanical coordination number without rattlers (Thornton 2000): (2 Nc - N1) / (Np - N0 - N1).
 double mechanical_coordination_number(const ContactCounts& c, std::size_t particles);

@@ -308,8 +308,12 @@ std::string emit_resolved(const SceneConfig& c) {
       << c.servo.gain << YAML::Key << "adapt_window" << YAML::Value << c.servo.adapt_window_steps << YAML::Key
       << "min_stiffness_ratio" << YAML::Value << c.servo.min_stiffness_ratio << YAML::EndMap;
   out << YAML::Key << "output" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "interval"
-      << YAML::Value << c.output.interval_steps << YAML::Key << "flush_rows" << YAML::Value << c.output.flush_rows
-      << YAML::EndMap;
+      << YAML::Value << c.output.interval_steps << YAML::Key << "flush_rows" << YAML::Value << c.output.flush_rows;
+  if (c.output.frames_interval_steps > 0)  // only when set: the resolved scenes (and input hashes) of older scenes stay
+    out << YAML::Key << "frames" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "interval" << YAML::Value
+        << c.output.frames_interval_steps << YAML::Key << "contacts" << YAML::Value << c.output.frames_contacts
+        << YAML::EndMap;
+  out << YAML::EndMap;
   out << YAML::Key << "stages" << YAML::Value << YAML::BeginSeq;
   for (const auto& s : c.stages) {
     out << YAML::BeginMap << YAML::Key << "name" << YAML::Value << s.name << YAML::Key << "reset_strain"
@@ -449,6 +453,17 @@ static SceneConfig parse_scene(Section root, const std::string& file) {
         "steps between checkpoints (RESULT.h5.checkpoint, for dem run --resume; 0: none by steps)");
     c.output.checkpoint_wall_time_s = o.number("checkpoint_wall_time", "s", {0, 1e7}, 600,
         "seconds of wall time between checkpoints (0: none by time)");
+    if (o.has("frames")) {
+      Section f = o.child("frames", "particle frames for ParaView (RESULT.xdmf) every `interval` steps, off by default");
+      c.output.frames_interval_steps = f.integer("interval", 1, 1000000000, std::nullopt,
+          "steps between frames: a multiple of output.interval (frames are written with time-series rows)");
+      c.output.frames_contacts = f.boolean("contacts", false, "also the contact network of each frame (pairs, "
+                                           "normal and tangential force, branch vector)");
+      if (c.output.frames_interval_steps % c.output.interval_steps != 0)
+        f.fail("interval", std::to_string(c.output.frames_interval_steps) + " is not a multiple of output.interval = " +
+                               std::to_string(c.output.interval_steps));
+      f.finish();
+    }
     o.finish();
   }
   for (Section& s : root.list("stages", "the stages, run in order")) c.stages.push_back(read_stage(s));
@@ -478,7 +493,7 @@ std::string scene_key_reference() {
   const char* common = "material: {kn: 1.0e6, ks: 1.0e6, friction: 0.5, density: 2650}\n"
                        "damping: {form: viscous, translational: 0.05, rotational: 0.05}\n"
                        "numerics: {time_step: 1.0e-6, max_time_step_fraction: 0.2, max_energy_error: 0.05, verlet_skin: 2.0e-4}\n"
-                       "servo: {gain: 1.0e-3}\noutput: {interval: 1000, flush_rows: 20}\n";
+                       "servo: {gain: 1.0e-3}\noutput: {interval: 1000, flush_rows: 20, frames: {interval: 1000, contacts: true}}\n";
   scene_from_text(std::string("name: a\nparticles:\n  lattice: {n: [2, 2, 2], spacing: 0.005, seed: 1}\n"
                               "  grading: {diameters: [0.003, 0.0045], percent_finer: [0, 100]}\n") + common +
                       "stages:\n  - {name: s, type: stress, target: [1, 1, 1], rate: 1, max_strain_rate: 1, reset_strain: false,\n"

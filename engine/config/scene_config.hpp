@@ -86,6 +86,10 @@ struct OutputConfig {
   // time (0: not by time). They do not change the result, so they are not in resolved_yaml.
   std::int64_t checkpoint_interval_steps = 0;
   double checkpoint_wall_time_s = 600;
+  // Particle frames for ParaView (io/h5md.hpp) every N steps (0: only the start, the checkpoints
+  // and the end), with the contact network if `frames_contacts`.
+  std::int64_t frames_interval_steps = 0;
+  bool frames_contacts = false;
 };
 
 // A file a run reads: `key` is the scene key naming it ("particles.csv", "particles.state") or

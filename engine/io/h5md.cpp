@@ -1,5 +1,6 @@
 #include "io/h5md.hpp"
 
+#include "analysis/measurements.hpp"
 #include "io/state_io.hpp"  // flatten
 #include "version.hpp"
 
@@ -14,7 +15,7 @@ void link(hid_t from_group, const std::string& target, hid_t to_group, const std
 
 }  // namespace
 
-H5mdWriter::H5mdWriter(hid_t file, const Simulation& sim) {
+H5mdWriter::H5mdWriter(hid_t file, const Simulation& sim) : file_(file) {
   {
     h5::Handle h5md = h5::create_group(file, "h5md");
     h5::set_attribute(h5md, "version", std::vector<std::int64_t>{1, 1});
@@ -69,10 +70,28 @@ H5mdWriter::H5mdWriter(hid_t file, const Simulation& sim) {
   h5::write(all, "mass", p.mass, 1, "kg", "unit");
 }
 
-H5mdWriter::H5mdWriter(hid_t file) {
+H5mdWriter::H5mdWriter(hid_t file) : file_(file) {
+  if (h5::exists(file, "frames")) {
+    views_ = true;
+    h5::Handle frames = h5::open_group(file, "frames");
+    corners_ = h5::FrameSeries<double>(frames, "cell_corners");
+    if (h5::exists(frames, "contacts")) {
+      contacts_ = true;
+      h5::Handle c = h5::open_group(frames, "contacts");
+      contact_count_ = h5::FrameSeries<std::int64_t>(c, "count");
+      pairs_ = h5::FrameSeries<std::int64_t>(c, "pairs");
+      normal_force_ = h5::FrameSeries<double>(c, "normal_force");
+      tangential_force_ = h5::FrameSeries<double>(c, "tangential_force");
+      branch_ = h5::FrameSeries<double>(c, "branch");
+      ends_ = h5::FrameSeries<double>(c, "ends");
+    }
+  }
   h5::Handle all = h5::open_group(file, "particles/all");
   h5::Handle position = h5::open_group(all, "position");
   step_ = h5::FrameSeries<std::int64_t>(position, "step");
+  std::size_t cols = 0;
+  const std::vector<std::int64_t> steps = h5::read<std::int64_t>(position, "step", cols);
+  if (!steps.empty()) last_step_ = steps.back();
   time_ = h5::FrameSeries<double>(position, "time");
   position_ = h5::FrameSeries<double>(position, "value");
   velocity_ = h5::FrameSeries<double>(all, "velocity/value");
@@ -80,19 +99,66 @@ H5mdWriter::H5mdWriter(hid_t file) {
   edges_ = h5::FrameSeries<double>(all, "box/edges/value");
 }
 
-void H5mdWriter::append_frame(const Simulation& sim) {
+void H5mdWriter::create_views(hid_t file, bool contacts) {
+  h5::Handle frames = h5::create_group(file, "frames");
+  corners_ = h5::FrameSeries<double>(frames, "cell_corners", {8, 3}, 64);
+  h5::set_attribute(corners_.id(), "units", std::string("m"));
+  views_ = true;
+  if (!contacts) return;
+  contacts_ = true;
+  h5::Handle c = h5::create_group(frames, "contacts");
+  constexpr hsize_t rows = 4096;  // contacts per chunk
+  contact_count_ = h5::FrameSeries<std::int64_t>(c, "count", {});
+  pairs_ = h5::FrameSeries<std::int64_t>(c, "pairs", {2}, rows);
+  normal_force_ = h5::FrameSeries<double>(c, "normal_force", {}, rows);
+  h5::set_attribute(normal_force_.id(), "units", std::string("N"));
+  tangential_force_ = h5::FrameSeries<double>(c, "tangential_force", {}, rows);
+  h5::set_attribute(tangential_force_.id(), "units", std::string("N"));
+  branch_ = h5::FrameSeries<double>(c, "branch", {3}, rows);
+  h5::set_attribute(branch_.id(), "units", std::string("m"));
+  ends_ = h5::FrameSeries<double>(c, "ends", {2, 3}, rows);
+  h5::set_attribute(ends_.id(), "units", std::string("m"));
+}
+
+void H5mdWriter::append_contacts(const Simulation& sim) {
+  const ContactCounts c = count_contacts(sim, false, true);
+  std::vector<double> ends;
+  ends.reserve(6 * c.contacts);
+  for (std::size_t k = 0; k < c.contacts; ++k) {
+    const Vec3 a = sim.cell().to_real(sim.particles().s[static_cast<std::size_t>(c.pairs[2 * k])]);
+    const Vec3 b = a + c.branches[k];
+    ends.insert(ends.end(), {a[0], a[1], a[2], b[0], b[1], b[2]});
+  }
+  pairs_.append_frames(c.pairs);
+  normal_force_.append_frames(c.normal_forces_N);
+  tangential_force_.append_frames(c.tangential_forces_N);
+  branch_.append_frames(flatten(c.branches));
+  ends_.append_frames(ends);
+  contact_count_.append({static_cast<std::int64_t>(c.contacts)});
+}
+
+void H5mdWriter::append_frame(const Simulation& sim, bool contacts) {
   const Particles& p = sim.particles();
   const PeriodicCell& cell = sim.cell();
+  if (!views_ && step_.frames() == 0) create_views(file_, contacts);
   std::vector<Vec3> x(p.size());
   for (std::size_t i = 0; i < p.size(); ++i) x[i] = cell.to_real(p.s[i]);
   const Vec3& L = cell.lengths();
+  std::vector<double> corners;
+  for (int k = 0; k < 8; ++k) {
+    const Vec3 c = cell.to_real(Vec3(k & 1, (k >> 1) & 1, (k >> 2) & 1));
+    corners.insert(corners.end(), {c[0], c[1], c[2]});
+  }
   // Step last: should a frame fail part-way, the length of `step` still counts whole frames only.
   position_.append(flatten(x));
   velocity_.append(flatten(p.v));
   angular_velocity_.append(flatten(p.omega));
   edges_.append({L[0], L[1], L[2]});
+  if (views_) corners_.append(corners);
+  if (contacts_) append_contacts(sim);
   time_.append({sim.time()});
   step_.append({sim.step_count()});
+  last_step_ = sim.step_count();
 }
 
 }  // namespace dem

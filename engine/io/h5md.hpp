@@ -12,6 +12,14 @@
 //
 // The step and time datasets live in position/ and are hard-linked into the other elements, as
 // H5MD allows: one append extends them for all, so the elements can never disagree on frames.
+//
+// Beside them, our own (not H5MD) per-frame views, for ParaView through the XDMF (io/xdmf.hpp):
+//   /frames/cell_corners        [F x 8 x 3] (m): the cell's corners (a tilted cell is drawn tilted)
+//   /frames/contacts (output.frames.contacts only): the contact network of every frame, its rows
+//     frame after frame: count [F] (contacts in each frame), pairs [M x 2] (particle indices),
+//     normal_force, tangential_force [M] (N, |f_t|), branch [M x 3] (m, from the first
+//     particle's centre to the nearest image of the second's), ends [M x 2 x 3] (m, the two
+//     centres, the second unwrapped: what ParaView draws as a line)
 #include <cstdint>
 
 #include "dynamics/simulation.hpp"
@@ -25,13 +33,23 @@ class H5mdWriter {
   H5mdWriter(hid_t file, const Simulation& sim);
   // Reopens the frames of `file` (written by the constructor above) for appending.
   explicit H5mdWriter(hid_t file);
-  // Appends the current positions, velocities and cell edges as one frame at sim's step.
-  void append_frame(const Simulation& sim);
+  // Appends the current positions, velocities and cell edges as one frame at sim's step, with
+  // the contact network if `contacts` (the first frame decides: all frames have it or none).
+  void append_frame(const Simulation& sim, bool contacts = false);
   std::size_t frames() const { return step_.frames(); }
+  std::int64_t last_step() const { return last_step_; }
 
  private:
+  void create_views(hid_t file, bool contacts);
+  void append_contacts(const Simulation& sim);
   h5::FrameSeries<std::int64_t> step_;
   h5::FrameSeries<double> time_, position_, velocity_, angular_velocity_, edges_;
+  h5::FrameSeries<double> corners_;
+  bool views_ = false, contacts_ = false;
+  h5::FrameSeries<std::int64_t> contact_count_, pairs_;
+  h5::FrameSeries<double> normal_force_, tangential_force_, branch_, ends_;
+  std::int64_t last_step_ = -1;
+  hid_t file_ = -1;
 };
 
 }  // namespace dem

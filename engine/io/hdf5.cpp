@@ -268,12 +268,13 @@ void Column::append(const std::vector<double>& values) {
 }
 
 template <class T>
-FrameSeries<T>::FrameSeries(hid_t parent, const std::string& name, std::vector<hsize_t> frame_shape)
+FrameSeries<T>::FrameSeries(hid_t parent, const std::string& name, std::vector<hsize_t> frame_shape, hsize_t chunk_frames)
     : frame_shape_(std::move(frame_shape)) {
   std::vector<hsize_t> dims = {0}, max_dims = {H5S_UNLIMITED}, chunk = {1};
   for (hsize_t d : frame_shape_) dims.push_back(d), max_dims.push_back(d), chunk.push_back(d);
   // A frame of particles is one chunk (written and read whole); scalars per frame are batched.
   if (frame_shape_.empty()) chunk[0] = 64;
+  if (chunk_frames > 0) chunk[0] = chunk_frames;
   Handle space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), max_dims.data()));
   Handle props(H5Pcreate(H5P_DATASET_CREATE));
   check(H5Pset_chunk(props, static_cast<int>(chunk.size()), chunk.data()), "chunking " + name);
@@ -296,14 +297,24 @@ void FrameSeries<T>::append(const std::vector<T>& frame) {
   const hsize_t per_frame = std::accumulate(frame_shape_.begin(), frame_shape_.end(), hsize_t{1}, std::multiplies<>());
   if (frame.size() != per_frame) throw Error("HDF5: a frame of " + std::to_string(frame.size()) + " values, expected " +
                                              std::to_string(per_frame));
-  std::vector<hsize_t> size = {frames_ + 1}, start = {frames_}, count = {1};
+  append_frames(frame);
+}
+
+template <class T>
+void FrameSeries<T>::append_frames(const std::vector<T>& values) {
+  const hsize_t per_frame = std::accumulate(frame_shape_.begin(), frame_shape_.end(), hsize_t{1}, std::multiplies<>());
+  if (values.size() % per_frame != 0)
+    throw Error("HDF5: " + std::to_string(values.size()) + " values are not whole frames of " + std::to_string(per_frame));
+  const hsize_t n = values.size() / per_frame;
+  if (n == 0) return;
+  std::vector<hsize_t> size = {frames_ + n}, start = {frames_}, count = {n};
   for (hsize_t d : frame_shape_) size.push_back(d), start.push_back(0), count.push_back(d);
   check(H5Dset_extent(dataset_, size.data()), "extending dataset");
   Handle file_space(H5Dget_space(dataset_));
   check(H5Sselect_hyperslab(file_space, H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr), "selecting a frame");
   Handle mem_space(H5Screate_simple(static_cast<int>(count.size()), count.data(), nullptr));
-  check(H5Dwrite(dataset_, native_type<T>(), mem_space, file_space, H5P_DEFAULT, frame.data()), "appending a frame");
-  ++frames_;
+  check(H5Dwrite(dataset_, native_type<T>(), mem_space, file_space, H5P_DEFAULT, values.data()), "appending a frame");
+  frames_ += n;
 }
 
 template class FrameSeries<double>;

@@ -97,10 +97,13 @@ template <class T>
 class FrameSeries {
  public:
   FrameSeries() = default;
-  FrameSeries(hid_t parent, const std::string& name, std::vector<hsize_t> frame_shape);
+  // `chunk_frames` frames per chunk (0: one frame of particles, or 64 scalars).
+  FrameSeries(hid_t parent, const std::string& name, std::vector<hsize_t> frame_shape, hsize_t chunk_frames = 0);
   // Reopens an existing series for appending.
   FrameSeries(hid_t parent, const std::string& name);
   void append(const std::vector<T>& frame);
+  // Appends values.size() / (values per frame) frames at once (a whole number of them).
+  void append_frames(const std::vector<T>& values);
   std::size_t frames() const { return frames_; }
   hid_t id() const { return dataset_; }
 

@@ -42,7 +42,8 @@ std::string describe_failure(const std::exception& e) {
 }
 
 ResultWriter::ResultWriter(std::string out_path, const SceneConfig& scene)
-    : out_(std::move(out_path)), partial_(out_ + ".partial"), flush_rows_(static_cast<std::size_t>(scene.output.flush_rows)) {
+    : out_(std::move(out_path)), partial_(out_ + ".partial"), flush_rows_(static_cast<std::size_t>(scene.output.flush_rows)),
+      frame_contacts_(scene.output.frames_contacts) {
   file_ = h5::create_file(partial_);
   try {  // the file exists from here on: a failure goes into its status
     h5::set_attribute(file_, "status", std::string("running"));
@@ -61,7 +62,8 @@ ResultWriter::ResultWriter(std::string out_path, const SceneConfig& scene)
 }
 
 ResultWriter::ResultWriter(std::string out_path, const SceneConfig& scene, const std::string& checkpoint_file)
-    : out_(std::move(out_path)), partial_(out_ + ".partial"), flush_rows_(static_cast<std::size_t>(scene.output.flush_rows)) {
+    : out_(std::move(out_path)), partial_(out_ + ".partial"), flush_rows_(static_cast<std::size_t>(scene.output.flush_rows)),
+      frame_contacts_(scene.output.frames_contacts) {
   copy_file_contents(checkpoint_file, partial_);
   file_ = h5::open_file_write(partial_);
   try {
@@ -113,7 +115,8 @@ void ResultWriter::write_state(const Simulation& sim) {
 
 void ResultWriter::append_frame(const Simulation& sim) {
   if (!frames_) frames_ = std::make_unique<H5mdWriter>(file_, sim);
-  frames_->append_frame(sim);
+  if (frames_->frames() > 0 && frames_->last_step() == sim.step_count()) return;
+  frames_->append_frame(sim, frame_contacts_);
   h5::flush_file(file_, partial_);
 }
 

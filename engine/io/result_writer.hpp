@@ -55,7 +55,7 @@ class ResultWriter {
   void flush();  // everything so far is written to the file (checked; not fsync'd) when it returns
   void write_state(const class Simulation& sim);
   // One H5MD particle frame at the simulation's current step (the first call creates /h5md
-  // and /particles, taking radius and mass from `sim`).
+  // and /particles, taking radius and mass from `sim`); none if the last frame is of this step.
   void append_frame(const Simulation& sim);
   // Marks the file complete, closes it, fsyncs it and moves it to its final name; throws
   // (h5::Error, std::runtime_error) with the reason if any of that fails, leaving <out>.partial.
@@ -70,6 +70,7 @@ class ResultWriter {
   void close();          // checked; file_ is empty afterwards either way
   std::string out_, partial_;
   std::size_t flush_rows_;
+  bool frame_contacts_;
   h5::Handle file_;
   std::vector<ColumnTable> tables_;  // [0] time series, [1] legs
   std::unique_ptr<H5mdWriter> frames_;  // created by the first frame

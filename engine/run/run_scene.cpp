@@ -410,8 +410,10 @@ RunSummary run_stages(Simulation& sim, const SceneConfig& scene, const Checkpoin
   StageHooks hooks;
   // Rows are where the energy balance is looked at: a run whose balance no longer closes (an
   // unstable or too coarse time step) stops, after the row that shows it is written.
+  const std::int64_t frame_every = scene.output.frames_interval_steps;
   hooks.row = [&](const Simulation& s, const RowContext& where) {
     out.append_row(measure_row(s, where));
+    if (frame_every > 0 && s.step_count() % frame_every == 0) out.append_frame(s);
     const double error = s.energy().closure_error();
     if (error > scene.max_energy_error) {
       std::ostringstream msg;
@@ -437,7 +439,7 @@ RunSummary run_stages(Simulation& sim, const SceneConfig& scene, const Checkpoin
            std::chrono::duration<double>(clock::now() - last_checkpoint_wall).count() >= scene.output.checkpoint_wall_time_s;
   };
   hooks.checkpoint = [&](const Simulation& s, const StageCursor& where) {
-    out.append_frame(s);
+    if (frame_every == 0) out.append_frame(s);  // frames at regular steps only, when asked for
     out.flush();
     write_checkpoint(out.partial_path(), out_path, identity, std::chrono::duration<double>(clock::now() - start).count(), s,
                      where);

@@ -1,19 +1,36 @@
 # A real client of the result files: ParaView opens a result's XDMF view (engine/io/xdmf.*, written
 # beside every complete result) and renders the spheres of its last frame, each a sphere of its own
-# radius, coloured by the radius, to a PNG. Run by `make render`:
+# radius, coloured by the radius, the cell's outline and, if the result has frames with contacts
+# (output.frames.contacts), the contact forces as tubes whose radius grows with the normal force,
+# to a PNG. Run by `make render`:
 #   pvbatch --force-offscreen-rendering reports/render/render_spheres.py RESULT.xdmf OUT.png [TITLE]
 # (Python only as a client script: the project's own code is C++.)
 import sys
 
 from paraview.simple import (ColorBy, GetActiveViewOrCreate, GetColorTransferFunction, GetScalarBar, Glyph, Render,
-                             SaveScreenshot, Show, Text, XDMFReader)
+                             SaveScreenshot, Show, Text, Tube, XDMFReader)
 
 if len(sys.argv) < 3:
     sys.exit("usage: pvbatch render_spheres.py RESULT.xdmf OUT.png [TITLE]")
 xdmf, png = sys.argv[1], sys.argv[2]
 title = sys.argv[3] if len(sys.argv) > 3 else xdmf
 
-reader = XDMFReader(FileNames=[xdmf])
+def grid(name):
+    """A reader of one kind of the XDMF's grids (particles, cell, contacts), or None if it has none.
+    Results written before the cell and contact views have only particle grids ("frame N")."""
+    r = XDMFReader(FileNames=[xdmf])
+    r.UpdatePipelineInformation()
+    available = list(r.GridStatus.Available)
+    mine = [g for g in available if g.split("[")[0] == name]
+    if not mine and name == "particles" and not any(g.split("[")[0] in ("cell", "contacts") for g in available):
+        mine = available
+    if not mine:
+        return None
+    r.GridStatus = mine
+    return r
+
+
+reader = grid("particles")
 reader.UpdatePipelineInformation()
 times = list(reader.TimestepValues) if reader.TimestepValues else [0.0]
 reader.UpdatePipeline(times[-1])
@@ -50,7 +67,41 @@ bar.TitleColor = [0, 0, 0]
 bar.LabelColor = [0, 0, 0]
 bar.RangeLabelFormat = "%-#.2e"
 
-label = Text(Text=f"{title}\n{points} spheres at t = {times[-1]:.4g} s (ParaView, XDMF)")
+# The cell, and the contact network as tubes (radius and colour by the normal force), if present.
+cell = grid("cell")
+if cell is not None:
+    outline = Show(cell, view)
+    outline.SetRepresentationType("Outline")
+    outline.AmbientColor = outline.DiffuseColor = [0, 0, 0]
+    outline.LineWidth = 2
+contacts = grid("contacts")
+forces = ""
+if contacts is not None:
+    contacts.UpdatePipeline(times[-1])
+    lines = contacts.GetDataInformation().GetNumberOfCells()
+    if lines > 0:
+        display.Opacity = 0.15  # the spheres fade so that the force chains show
+        fmax = contacts.CellData["normal_force"].GetRange()[1]
+        from paraview.simple import CellDatatoPointData
+        tubes = Tube(Input=CellDatatoPointData(Input=contacts))
+        tubes.Scalars = ["POINTS", "normal_force"]
+        tubes.VaryRadius = "By Absolute Scalar"
+        tubes.Radius = 0.0
+        tubes.RadiusFactor = 1.0e-3 / fmax if fmax > 0 else 1.0  # the largest force: a tube of 1 mm radius
+        tubes.NumberofSides = 8
+        tube_display = Show(tubes, view)
+        ColorBy(tube_display, ("POINTS", "normal_force"))
+        force_lut = GetColorTransferFunction("normal_force")
+        force_lut.ApplyPreset("Inferno (matplotlib)", True)
+        tube_display.SetScalarBarVisibility(view, True)
+        force_bar = GetScalarBar(force_lut, view)
+        force_bar.Title = "normal force (N)"
+        force_bar.ComponentTitle = ""
+        force_bar.TitleColor = force_bar.LabelColor = [0, 0, 0]
+        force_bar.WindowLocation = "Upper Right Corner"
+        forces = f", {lines} contacts as tubes (radius by the normal force, largest {fmax:.3g} N)"
+
+label = Text(Text=f"{title}\n{points} spheres at t = {times[-1]:.4g} s{forces} (ParaView, XDMF)")
 label_display = Show(label, view)
 label_display.Color = [0, 0, 0]
 label_display.FontSize = 14
@@ -63,4 +114,4 @@ view.CameraViewUp = [1, 0, 0]
 view.ResetCamera()
 Render(view)
 SaveScreenshot(png, view, ImageResolution=[1100, 1000])
-print(f"rendered {points} spheres of {xdmf} at t = {times[-1]:.6g} s -> {png}")
+print(f"rendered {points} spheres of {xdmf} at t = {times[-1]:.6g} s{forces} -> {png}")

@@ -21,4 +21,9 @@ fi
 "$bin/dem" run "$here/../../scenes/stability/base.yaml" --out "$work/result.h5" --quiet --no-resume \
   --set name=h5py_client --set 'particles.lattice.n=[3, 3, 3]' 2> "$work/run.log" ||
   { echo "h5py test: the run failed:"; cat "$work/run.log"; exit 1; }
-"$py" "$here/h5py_client.py" "$bin/dem" "$work/result.h5"
+"$py" "$here/h5py_client.py" "$bin/dem" "$work/result.h5" || exit 1
+# Frames for ParaView (output.frames, with the contact network) read back: tests/clients/frames_client.py.
+"$bin/dem" run "$here/../../scenes/stability/base.yaml" --out "$work/frames.h5" --quiet --no-resume \
+  --set name=frames_client --set 'particles.lattice.n=[3, 3, 3]' --set 'output.frames={interval: 400, contacts: true}' \
+  2> "$work/frames_run.log" || { echo "h5py test: the frames run failed:"; cat "$work/frames_run.log"; exit 1; }
+"$py" "$here/frames_client.py" "$work/frames.h5" 400
