@@ -1,7 +1,7 @@
 # cyclic-triax: the two commands a user needs are `make all` and `make test`.
 BUILD    ?= build
 JOBS     ?= $(shell nproc 2>/dev/null || echo 2)
-PACKAGES := g++ cmake make libeigen3-dev libhdf5-dev libyaml-cpp-dev catch2 gnuplot-nox hdf5-tools libboost-math-dev
+PACKAGES := g++ cmake make libeigen3-dev libhdf5-dev libyaml-cpp-dev catch2 gnuplot-nox hdf5-tools libboost-math-dev libcli11-dev
 SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 RESULTS  ?= results/study/paper
@@ -17,7 +17,7 @@ LIQUEFACTION   ?= results/liquefaction_loose/paper results/liquefaction_medium/p
 CELL_STUDIES   ?= pipeline/studies/critical_state.yaml pipeline/studies/liquefaction_loose.yaml pipeline/studies/liquefaction_medium.yaml
 EXECUTOR    ?=                          # local or slurm (pipeline --executor); empty: the study files' executor key, else local
 
-.PHONY: all deps build tools test kill-test slurm-test sanitize fuzz bench quick study report decisions decisions-report critical-state liquefaction samples samples-study cyclic-tests render clean
+.PHONY: all deps build tools examples example-samples install test kill-test slurm-test sanitize fuzz bench quick study report decisions decisions-report critical-state liquefaction samples samples-study cyclic-tests render clean
 
 # Everything: install, build the tools, run the full study (an ensemble of 5 samples per density,
 # reusing finished runs), validate it, draw the figures and write reports/index.md (the tests are
@@ -44,6 +44,30 @@ TOOLS := dem pipeline validate compare-runs ensemble-cycles figure-data
 tools: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
 	cmake --build $(BUILD) -j $(JOBS) --target $(TOOLS)
+
+# The examples (scenes/examples/*.yaml), each from a shipped 1,000-sphere sample
+# (scenes/samples/) on one thread, into build/examples/ (each under a minute here; make test runs
+# them shortened through ctest).
+examples: tools
+	@mkdir -p $(BUILD)/examples
+	@for s in scenes/examples/*.yaml; do n=$$(basename $$s .yaml); \
+	  echo "== $$s"; \
+	  OMP_NUM_THREADS=1 $(BUILD)/bin/dem run $$s --out $(BUILD)/examples/$$n.h5 --threads 1 --no-resume --force --quiet || exit 1; \
+	done
+
+# The shipped samples: the three preparation scenes at 1,000 spheres (10 x 10 x 10 lattice, seed 1:
+# the quick profile's first sample), about 7 s each. tests/examples/samples_test.sh checks that they
+# are what this engine and these scenes make, bit for bit.
+example-samples: tools
+	@for d in loose medium dense; do \
+	  OMP_NUM_THREADS=1 $(BUILD)/bin/dem run scenes/prepare_$$d.yaml --set 'particles.lattice.n=[10, 10, 10]' \
+	    --out scenes/samples/$${d}_1k.h5 --threads 1 --no-resume --force --quiet && rm -f scenes/samples/$${d}_1k.xdmf || exit 1; \
+	done
+
+# The tools into PREFIX (bin/dem, bin/pipeline, ...; they run from any folder).
+PREFIX ?= /usr/local
+install: tools
+	cmake --install $(BUILD) --prefix $(PREFIX)
 
 # Unit tests, then a smoke run of the whole pipeline (quick profile, into the build folder) with
 # the validation rows that hold at that size, and the stability matrix on 27 spheres (216 for the

@@ -1,8 +1,9 @@
 // pipeline: runs a study (every density x test) with the dem engine, reusing finished results.
-//   pipeline STUDY.yaml... [--profile paper|quick] [--out DIR] [-j N] [--threads T] [--dem PATH] [--plan]
-//            [--executor local|slurm]
+//   pipeline STUDY.yaml... [--profile NAME] [--out DIR] [-j N] [--threads T] [--dem PATH] [--plan]
+//            [--executor local|slurm]   (arguments through CLI11; --help lists them)
 #include <unistd.h>
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -14,23 +15,16 @@
 #include "config/yaml_section.hpp"
 #include "exec/scheduler.hpp"
 #include "exec/slurm.hpp"
+#include "plan/plan_cost.hpp"
 #include "plan/run_plan.hpp"
 
 namespace {
 
-const char* usage =
-    "usage: pipeline STUDY.yaml... [--profile paper|quick] [--out DIR] [-j N] [--threads T] [--dem PATH] [--plan]\n"
-    "                [--executor local|slurm]\n"
-    "  --profile  study size (default paper)        --out  results folder (default: the study's output/PROFILE;\n"
-    "                                                      with one study file only)\n"
-    "  -j         runs at once (default: cores)     --dem  the engine (default: dem beside this program)\n"
-    "  --threads  threads inside each run (default: cores / runs at once, at least 1; results do not depend on it)\n"
-    "  --plan     write the resolved scenes and list the runs, run nothing\n"
-    "  --executor local: runs here as child processes (default); slurm: one sbatch job per run, options\n"
-    "             in the study's slurm: mapping (default: the study's executor: key, else local)\n"
+const char* footer =
     "A run whose result is complete with the same input hash (resolved scene, engine version and the\n"
     "sample it starts from) is reused, so an interrupted study continues where it stopped. Several\n"
-    "study files share the -j slots: one study's runs fill the cores while another's last runs finish.\n";
+    "study files share the -j slots: one study's runs fill the cores while another's last runs finish.\n"
+    "Paths on the command line are relative to the current folder; paths in a study file to that file.";
 
 // The engine's source hash and result schema: what a result's reuse depends on.
 std::string engine_version(const std::string& dem) {
@@ -60,44 +54,88 @@ std::string chosen_executor(const std::vector<pipeline::Study>& studies) {
   return chosen.empty() ? "local" : chosen;
 }
 
+std::string duration_text(double s) {
+  char buf[64];
+  if (s < 120) std::snprintf(buf, sizeof buf, "%.0f s", s);
+  else if (s < 7200) std::snprintf(buf, sizeof buf, "%.1f min", s / 60);
+  else std::snprintf(buf, sizeof buf, "%.1f h", s / 3600);
+  return buf;
+}
+
+// `--plan`: each run with what it will do and its estimated particle-steps, then what the runs
+// still to do cost: the critical path and the wall time on 1, 2, 16 and 64 cores.
+void print_plan(const std::vector<pipeline::PlannedRun>& runs, double throughput) {
+  std::vector<bool> todo(runs.size());
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const pipeline::PlannedRun& r = runs[i];
+    const char* what = pipeline::up_to_date(r.result, r.hash)                       ? "reuse"
+                       : r.may_fail && pipeline::recorded_stop(r.result, r.hash) ? "stopped"
+                       : r.copy_of >= 0                                             ? "copy"
+                                                                                   : "run";
+    todo[i] = std::string(what) == "run";
+    std::printf("%-24s %-9s %.3g particle-steps  %s\n", r.name.c_str(), what, r.cost, r.scene_file.c_str());
+  }
+  const std::vector<double> cost = pipeline::run_costs(runs, todo);
+  double total = 0;
+  for (double c : cost) total += c;
+  std::printf("\nto run: %.3g particle-steps in %d of %zu runs (reused results and copies cost nothing)\n", total,
+              static_cast<int>(std::count(todo.begin(), todo.end(), true)), runs.size());
+  const pipeline::CriticalPath cp = pipeline::critical_path(runs, cost);
+  std::string chain;
+  for (int k : cp.runs) chain += (chain.empty() ? "" : " -> ") + runs[static_cast<std::size_t>(k)].name;
+  std::printf("critical path (the longest chain of runs, each starting from the one before): %.3g particle-steps, "
+              "%s: %s\n", cp.cost, duration_text(cp.cost / throughput).c_str(), chain.empty() ? "nothing to run" : chain.c_str());
+  std::printf("estimated wall time, one run per core at %.3g particle-steps/s:", throughput);
+  for (int cores : {1, 2, 16, 64})
+    std::printf(" %d core%s %s;", cores, cores > 1 ? "s" : "",
+                duration_text(pipeline::estimated_wall_time_s(runs, cost, cores, throughput)).c_str());
+  std::printf("\n(throughput: %s; runs that stop on a criterion are counted as planned: a stress stage's hold as about "
+              "1 s, a liquefaction at its stage's duration)\n",
+              throughput == pipeline::default_throughput
+                  ? "the engine's, measured by make bench on this project's 2-core machine (reports/bench.md: 8,000 "
+                    "spheres, one run per core); set yours with --throughput"
+                  : "--throughput");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   namespace fs = std::filesystem;
   std::vector<std::string> study_files;
-  std::string profile = "paper", out, dem;
+  std::string profile, out, dem;  // profile "": each study's paper profile if it declares one, else its first
   const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   int jobs = cores;
   int threads = 0;  // 0: cores / jobs
   bool plan_only = false;
   std::string executor;  // "": the studies' executor key, else local
-  bool local_slots_given = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--help" || a == "-h") { std::fputs(usage, stdout); return 0; }
-    if (a == "--profile" && i + 1 < argc) profile = argv[++i];
-    else if (a == "--out" && i + 1 < argc) out = argv[++i];
-    else if (a == "--dem" && i + 1 < argc) dem = argv[++i];
-    else if (a == "--executor" && i + 1 < argc) {
-      executor = argv[++i];
-      if (executor != "local" && executor != "slurm") {
-        std::fprintf(stderr, "pipeline: --executor must be local or slurm, got '%s'\n", executor.c_str());
-        return 2;
-      }
-    } else if (a == "-j" && i + 1 < argc) {
-      local_slots_given = true;
-      try { jobs = std::stoi(argv[++i]); } catch (const std::exception&) { jobs = 0; }
-      if (jobs < 1 || jobs > 256) { std::fprintf(stderr, "pipeline: -j must be an integer in [1, 256]\n"); return 2; }
-    } else if (a == "--threads" && i + 1 < argc) {
-      local_slots_given = true;
-      try { threads = std::stoi(argv[++i]); } catch (const std::exception&) { threads = 0; }
-      if (threads < 1 || threads > 256) { std::fprintf(stderr, "pipeline: --threads must be an integer in [1, 256]\n"); return 2; }
-    } else if (a == "--plan") plan_only = true;
-    else if (!a.empty() && a[0] != '-') study_files.push_back(a);
-    else { std::fprintf(stderr, "pipeline: unexpected argument '%s'\n%s", a.c_str(), usage); return 2; }
+  double throughput = pipeline::default_throughput;
+  CLI::App app{"pipeline: plans and runs the studies (every density x test x variant x seed) with dem"};
+  app.add_option("studies", study_files, "the study files (YAML)")->required();
+  app.add_option("--profile", profile, "a profile the studies declare (default: paper if declared, else the first)");
+  app.add_option("--out", out, "results folder (default: the study's output/PROFILE; with one study file only)");
+  CLI::Option* jobs_opt = app.add_option("-j", jobs, "runs at once (default: the number of cores)")->check(CLI::Range(1, 256));
+  CLI::Option* threads_opt = app.add_option("--threads", threads,
+      "threads inside each run (default: cores / runs at once, at least 1; results do not depend on it)")
+      ->check(CLI::Range(1, 256));
+  app.add_option("--dem", dem, "the engine (default: dem beside this program)");
+  app.add_flag("--plan", plan_only,
+      "write the resolved scenes, list the runs with their particle-steps, the critical path and the wall time "
+      "on 1, 2, 16 and 64 cores; run nothing");
+  app.add_option("--throughput", throughput, "particle-steps per second of one run on one core, for --plan's estimates")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--executor", executor,
+      "local: runs here as child processes; slurm: one sbatch job per run, options in the study's slurm: mapping "
+      "(default: the study's executor: key, else local)")
+      ->check(CLI::IsMember({"local", "slurm"}));
+  app.footer(footer);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int rc = app.exit(e);
+    return rc == 0 ? 0 : 2;
   }
+  const bool local_slots_given = jobs_opt->count() > 0 || threads_opt->count() > 0;
   if (threads == 0) threads = std::max(1, cores / jobs);
-  if (study_files.empty()) { std::fprintf(stderr, "pipeline: need a study file\n%s", usage); return 2; }
   if (study_files.size() > 1 && !out.empty()) {
     std::fprintf(stderr, "pipeline: --out names the results folder of one study; give one study file with it\n");
     return 2;
@@ -111,11 +149,14 @@ int main(int argc, char** argv) {
     std::vector<pipeline::Study> studies;
     std::vector<std::string> outs;
     std::vector<pipeline::StudyPlan> plans;
+    std::vector<std::string> profiles;
     for (const std::string& study_file : study_files) {
       const pipeline::Study& study = studies.emplace_back(pipeline::load_study(study_file));
+      const pipeline::Profile& p = profile.empty() ? study.default_profile() : study.profile(profile);
+      profiles.push_back(p.name);
       const std::string& study_out = outs.emplace_back(
-          fs::absolute(out.empty() ? fs::path(study.output) / profile : fs::path(out)).lexically_normal().string());
-      plans.push_back({study.name, pipeline::plan_study(study, study.profile(profile), study_out, version)});
+          fs::absolute(out.empty() ? fs::path(study.output) / p.name : fs::path(out)).lexically_normal().string());
+      plans.push_back({study.name, pipeline::plan_study(study, p, study_out, version)});
     }
     const std::vector<pipeline::PlannedRun> runs = pipeline::join_studies(plans);
     if (executor.empty()) executor = chosen_executor(studies);
@@ -124,16 +165,10 @@ int main(int argc, char** argv) {
       pipeline::write_manifest(plans[i].runs, studies[i], outs[i]);
       if (!plan_only)
         std::printf("[pipeline] study '%s', profile %s, engine %s, results in %s\n", studies[i].name.c_str(),
-                    profile.c_str(), version.c_str(), outs[i].c_str());
+                    profiles[i].c_str(), version.c_str(), outs[i].c_str());
     }
     if (plan_only) {
-      for (const auto& r : runs)
-        std::printf("%-24s %-9s %.3g particle-steps  %s\n", r.name.c_str(),
-                    pipeline::up_to_date(r.result, r.hash)                       ? "reuse"
-                    : r.may_fail && pipeline::recorded_stop(r.result, r.hash) ? "stopped"
-                    : r.copy_of >= 0                                             ? "copy"
-                                                                                : "run",
-                    r.cost, r.scene_file.c_str());
+      print_plan(runs, throughput);
       return 0;
     }
     pipeline::Outcome o;

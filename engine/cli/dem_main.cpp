@@ -1,12 +1,14 @@
-// dem: the command-line front end of the engine.
+// dem: the command-line front end of the engine (arguments through CLI11; every sub-command
+// answers --help).
 //   dem run SCENE.yaml --out RESULT.h5     run a scene, write its result
 //   dem keys                               the reference of every scene key
-//   dem --help
+//   dem table | state | summary RESULT.h5  read a result
 #include <fcntl.h>
 #include <omp.h>
 #include <sys/file.h>
 #include <unistd.h>
 
+#include <CLI/CLI.hpp>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -33,36 +35,14 @@
 
 namespace {
 
-const char* usage =
-    "usage:\n"
-    "  dem run SCENE.yaml --out RESULT.h5 [--set KEY=VALUE ...] [--threads N] [--quiet]\n"
-    "                                   [--resume | --no-resume] [--force]\n"
-    "                                                 run a scene and write its result (HDF5); --set\n"
-    "                                                 overrides a key, e.g. --set particles.lattice.seed=2;\n"
-    "                                                 --threads: threads inside the run (default 1; the\n"
-    "                                                 result is bit for bit the same for any count);\n"
-    "                                                 --input-hash H is recorded in the result (pipeline);\n"
-    "                                                 --resume: continue from RESULT.h5.checkpoint, which\n"
-    "                                                 must exist and match (exit 2 otherwise); --no-resume:\n"
-    "                                                 start over; default: resume if a matching checkpoint\n"
-    "                                                 exists (output.checkpoint_interval/_wall_time);\n"
-    "                                                 --force: replace an existing RESULT.h5 that is not a\n"
-    "                                                 complete result of this scene (scene text and input\n"
-    "                                                 hash); without it such a file is refused (exit 2)\n"
-    "  dem keys                                       list every scene key with unit, range, default\n"
-    "  dem table RESULT.h5 [--legs] [COLUMN ...]      print time-series (or per-leg) columns as\n"
-    "                                                 tab-separated text\n"
-    "  dem state RESULT.h5                            the final particles: x y z radius (m), tab-separated\n"
-    "  dem summary RESULT.h5 ...                      one line per result: its last time-series row,\n"
-    "                                                 steps and wall time (tab-separated)\n"
-    "  dem --version | --source-hash | --help\n"
-    "\n"
+const char* run_footer =
     "The result is written to RESULT.h5.partial while the run goes on and renamed to RESULT.h5\n"
     "(status 'complete') only when it finishes and is on the disk; RESULT.h5.checkpoint holds the\n"
-    "newest checkpoint until then. --out may not end in .partial, .checkpoint, .lock, .outcome,\n"
-    ".tmp or .xdmf, nor name a non-regular file (device, folder, FIFO, link) or a file the scene\n"
-    "reads. Exit status: 0 success, 1 run failed (the reason on stderr and in the status of\n"
-    "RESULT.h5.partial), 2 bad input (nothing written).\n";
+    "newest checkpoint until then. --out must end in .h5 or .hdf5 and may not name a non-regular\n"
+    "file (device, folder, FIFO, link) or a file the scene reads. Paths typed on the command line\n"
+    "(--out, --set particles.state=FILE) are relative to the current folder; paths inside the\n"
+    "scene file are relative to the scene file. Exit status: 0 success, 1 run failed (the reason\n"
+    "on stderr and in the status of RESULT.h5.partial), 2 bad input (nothing written).";
 
 // The terminal's progress line of a run (`dem run` on a terminal, without --quiet): at most every
 // 0.5 s, with the time left in the stage from its progress so far. Warnings and notes start on a
@@ -101,45 +81,26 @@ class ProgressLine {
   double stage_start_s_ = 0;  // [s since the run started]
 };
 
-int run(int argc, char** argv) {
-  std::string scene_file, out;
-  bool quiet = false;
-  std::vector<std::pair<std::string, std::string>> overrides;
-  std::string input_hash;
+struct RunArgs {
+  std::string scene_file, out, input_hash;
+  std::vector<std::string> sets;  // KEY=VALUE
   int threads = 1;
-  bool force = false;
-  dem::Resume resume = dem::Resume::IfValid;
-  for (int i = 2; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--out" && i + 1 < argc) out = argv[++i];
-    else if (a == "--quiet") quiet = true;
-    else if (a == "--resume") resume = dem::Resume::Always;
-    else if (a == "--no-resume") resume = dem::Resume::Never;
-    else if (a == "--force") force = true;
-    else if (a == "--input-hash" && i + 1 < argc) input_hash = argv[++i];
-    else if (a == "--threads" && i + 1 < argc) {
-      const std::string t = argv[++i];
-      char* end = nullptr;
-      const long n = std::strtol(t.c_str(), &end, 10);
-      if (end == t.c_str() || *end != '\0' || n < 1 || n > 256) {
-        std::fprintf(stderr, "dem run: --threads must be an integer in [1, 256], got '%s'\n", t.c_str());
-        return 2;
-      }
-      threads = static_cast<int>(n);
-    }
-    else if (a == "--set" && i + 1 < argc) {
-      const std::string kv = argv[++i];
-      const auto eq = kv.find('=');
-      if (eq == std::string::npos || eq == 0) { std::fprintf(stderr, "dem run: --set needs KEY=VALUE, got '%s'\n", kv.c_str()); return 2; }
-      overrides.emplace_back(kv.substr(0, eq), kv.substr(eq + 1));
-    }
-    else if (!a.empty() && a[0] == '-') { std::fprintf(stderr, "dem run: unknown option '%s'\n%s", a.c_str(), usage); return 2; }
-    else if (scene_file.empty()) scene_file = a;
-    else { std::fprintf(stderr, "dem run: more than one scene given ('%s')\n", a.c_str()); return 2; }
-  }
-  if (scene_file.empty() || out.empty()) {
-    std::fprintf(stderr, "dem run: need a scene file and --out RESULT.h5\n%s", usage);
-    return 2;
+  bool quiet = false, resume = false, no_resume = false, force = false;
+};
+
+int run(const RunArgs& args) {
+  const std::string& scene_file = args.scene_file;
+  const std::string& out = args.out;
+  const bool quiet = args.quiet;
+  const std::string& input_hash = args.input_hash;
+  const int threads = args.threads;
+  const bool force = args.force;
+  const dem::Resume resume = args.resume ? dem::Resume::Always : args.no_resume ? dem::Resume::Never : dem::Resume::IfValid;
+  std::vector<std::pair<std::string, std::string>> overrides;
+  for (const std::string& kv : args.sets) {
+    const auto eq = kv.find('=');
+    if (eq == std::string::npos || eq == 0) { std::fprintf(stderr, "dem run: --set needs KEY=VALUE, got '%s'\n", kv.c_str()); return 2; }
+    overrides.emplace_back(kv.substr(0, eq), kv.substr(eq + 1));
   }
   // Where the result goes (run/output_path.hpp): its name and folder first, then what the scene
   // reads, then, under the lock, what is there now.
@@ -206,37 +167,59 @@ int run(int argc, char** argv) {
     unlink(lock_path.c_str());  // still held: a run waiting for it would find the result complete
     return 0;
   } catch (const dem::ConfigError& e) {
+    unlink(lock_path.c_str());  // still held: a refused run leaves no lock file behind
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;
   } catch (const std::exception& e) {
+    unlink(lock_path.c_str());  // still held; the partial result and its checkpoint stay for a resume
     std::fprintf(stderr, "error: %s: %s\n", scene_file.c_str(), dem::describe_failure(e).c_str());
     if (std::filesystem::exists(out + ".partial")) std::fprintf(stderr, "(partial result kept in %s.partial)\n", out.c_str());
     return 1;
   }
 }
 
-// Prints time-series columns of a result (all of them if none are named) as tab-separated text.
-int table(int argc, char** argv) {
-  if (argc < 3) { std::fprintf(stderr, "dem table: need a result file\n%s", usage); return 2; }
+// The unit of a column from the registry (series_columns, leg_columns); "" if it has none.
+std::string unit_of(const std::string& name, bool legs) {
+  for (const auto& c : legs ? dem::leg_columns() : dem::series_columns())
+    if (c.name == name) return c.units;
+  return "";
+}
+
+struct TableArgs {
+  std::string file;
+  std::vector<std::string> columns;
+  bool legs = false, csv = false;
+};
+
+// Prints time-series (or per-leg) columns of a result (all of them if none are named): a header
+// of `name [unit]` entries, then one row per line; tab-separated with 10 significant digits after
+// a '#' header, or CSV with 17 (every double read back exactly, e.g. by pandas.read_csv).
+int table(const TableArgs& args) {
   try {
-    dem::h5::Handle f = dem::h5::open_file_read(argv[2]);
-    const bool legs = argc > 3 && std::string(argv[3]) == "--legs";
-    dem::h5::Handle g = dem::h5::open_group(f, legs ? "legs" : "timeseries");
-    std::vector<std::string> names;
-    for (int i = legs ? 4 : 3; i < argc; ++i) names.push_back(argv[i]);
+    dem::h5::Handle f = dem::h5::open_file_read(args.file);
+    dem::h5::Handle g = dem::h5::open_group(f, args.legs ? "legs" : "timeseries");
+    std::vector<std::string> names = args.columns;
     if (names.empty())
-      for (const auto& c : legs ? dem::leg_columns() : dem::series_columns()) names.push_back(c.name);
+      for (const auto& c : args.legs ? dem::leg_columns() : dem::series_columns()) names.push_back(c.name);
     std::vector<std::vector<double>> cols;
     std::size_t width = 0;
     for (const auto& n : names) {
-      if (!dem::h5::exists(g, n)) { std::fprintf(stderr, "dem table: %s has no column '%s'\n", argv[2], n.c_str()); return 2; }
+      if (!dem::h5::exists(g, n)) { std::fprintf(stderr, "dem table: %s has no column '%s'\n", args.file.c_str(), n.c_str()); return 2; }
       cols.push_back(dem::h5::read<double>(g, n, width));
     }
-    std::printf("#");
-    for (const auto& n : names) std::printf(" %s", n.c_str());
+    const char* sep = args.csv ? "," : "\t";
+    std::printf("%s", args.csv ? "" : "# ");
+    for (std::size_t c = 0; c < names.size(); ++c) {
+      const std::string unit = unit_of(names[c], args.legs);
+      std::printf("%s%s%s", c ? sep : "", names[c].c_str(), unit.empty() ? "" : (" [" + unit + "]").c_str());
+    }
     std::printf("\n");
+    const char* number = args.csv ? "%.17g" : "%.10g";
     for (std::size_t r = 0; r < cols[0].size(); ++r) {
-      for (std::size_t c = 0; c < cols.size(); ++c) std::printf(c ? "\t%.10g" : "%.10g", cols[c][r]);
+      for (std::size_t c = 0; c < cols.size(); ++c) {
+        if (c) std::fputs(sep, stdout);
+        std::printf(number, cols[c][r]);
+      }
       std::printf("\n");
     }
     return 0;
@@ -247,10 +230,9 @@ int table(int argc, char** argv) {
 }
 
 // The final particles of a result: real position and radius, one tab-separated line each.
-int state(int argc, char** argv) {
-  if (argc < 3) { std::fprintf(stderr, "dem state: need a result file\n%s", usage); return 2; }
+int state(const std::string& file) {
   try {
-    const dem::SavedState st = dem::read_state(argv[2]);
+    const dem::SavedState st = dem::read_state(file);
     std::printf("# x\ty\tz\tradius (m); cell %.10g %.10g %.10g\n", st.cell.lengths()[0], st.cell.lengths()[1],
                 st.cell.lengths()[2]);
     for (std::size_t i = 0; i < st.particles.size(); ++i) {
@@ -265,18 +247,17 @@ int state(int argc, char** argv) {
 }
 
 // One tab-separated line per complete result: file, wall time, then the last time-series row.
-int summary(int argc, char** argv) {
-  if (argc < 3) { std::fprintf(stderr, "dem summary: need result files\n%s", usage); return 2; }
+int summary(const std::vector<std::string>& files) {
   std::printf("# file\twall_time_s");
   for (const auto& c : dem::series_columns()) std::printf("\t%s", c.name.c_str());
   std::printf("\n");
   int status = 0;
-  for (int i = 2; i < argc; ++i) {
+  for (const std::string& file : files) {
     try {
-      dem::h5::Handle f = dem::h5::open_file_read(argv[i]);
+      dem::h5::Handle f = dem::h5::open_file_read(file);
       if (dem::h5::get_string_attribute(f, "status") != "complete") throw std::runtime_error("not a complete result");
       dem::h5::Handle g = dem::h5::open_group(f, "timeseries");
-      std::printf("%s\t%.6g", argv[i], dem::h5::get_double_attribute(f, "wall_time_s"));
+      std::printf("%s\t%.6g", file.c_str(), dem::h5::get_double_attribute(f, "wall_time_s"));
       for (const auto& c : dem::series_columns()) {  // columns a result's schema lacks print as nan
         std::size_t width = 0;
         const auto v = dem::h5::exists(g, c.name) ? dem::h5::read<double>(g, c.name, width) : std::vector<double>{};
@@ -284,7 +265,7 @@ int summary(int argc, char** argv) {
       }
       std::printf("\n");
     } catch (const std::exception& e) {
-      std::fprintf(stderr, "dem summary: %s: %s\n", argv[i], e.what());
+      std::fprintf(stderr, "dem summary: %s: %s\n", file.c_str(), e.what());
       status = 1;
     }
   }
@@ -298,25 +279,63 @@ int main(int argc, char** argv) {
   // the library there (HDF5 1.10), after the error was reported. Every file dem opens is closed
   // by its handle before main returns.
   H5dont_atexit();
-  if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) {
-    std::fputs(usage, argc < 2 ? stderr : stdout);
-    return argc < 2 ? 2 : 0;
-  }
-  const std::string cmd = argv[1];
-  if (cmd == "--version") {
-    std::printf("dem %s (result schema %d, engine source %s)\n", dem::software_version, dem::schema_version,
-                dem::engine_source_hash);
-    return 0;
-  }
-  if (cmd == "--source-hash") {  // what the pipeline keys its reuse of results on
+  CLI::App app{"dem: the DEM engine of cyclic-triax (spheres in a periodic, stress- or strain-controlled cell)"};
+  app.require_subcommand(0, 1);
+  app.set_version_flag("--version", std::string("dem ") + dem::software_version + " (result schema " +
+                                        std::to_string(dem::schema_version) + ", engine source " + dem::engine_source_hash + ")");
+  // What the pipeline keys its reuse of results on.
+  app.add_flag_callback("--source-hash", [] {
     std::printf("%s schema %d\n", dem::engine_source_hash, dem::schema_version);
-    return 0;
+    throw CLI::Success();
+  }, "print the engine source hash and the result schema (what the pipeline keys reuse on)");
+
+  RunArgs ra;
+  CLI::App* run_cmd = app.add_subcommand("run", "run a scene and write its result (HDF5)");
+  run_cmd->add_option("scene", ra.scene_file, "the scene file (YAML; dem keys lists every key)")->required();
+  run_cmd->add_option("--out", ra.out, "the result file, RESULT.h5 (or .hdf5)")->required();
+  run_cmd->add_option("--set", ra.sets, "KEY=VALUE: override a scene key, e.g. particles.lattice.seed=2 (repeatable)")
+      ->allow_extra_args(false);
+  run_cmd->add_option("--threads", ra.threads, "threads inside the run (the result is bit for bit the same for any count)")
+      ->check(CLI::Range(1, 256))->default_val(1);
+  run_cmd->add_flag("--quiet", ra.quiet, "no progress line");
+  CLI::Option* resume = run_cmd->add_flag("--resume", ra.resume,
+      "continue from RESULT.h5.checkpoint, which must exist and match (exit 2 otherwise)");
+  CLI::Option* no_resume = run_cmd->add_flag("--no-resume", ra.no_resume,
+      "start over (default: resume if a matching checkpoint exists)");
+  resume->excludes(no_resume);
+  run_cmd->add_flag("--force", ra.force,
+      "replace an existing RESULT.h5 that is not a complete result of this scene (scene text and input hash)");
+  run_cmd->add_option("--input-hash", ra.input_hash, "recorded in the result (the pipeline's input hash)");
+  run_cmd->footer(run_footer);
+
+  CLI::App* keys_cmd = app.add_subcommand("keys", "list every scene key with its unit, allowed range, default and meaning");
+
+  TableArgs ta;
+  CLI::App* table_cmd = app.add_subcommand("table", "print a result's time-series (or per-leg) columns, 'name [unit]' headers");
+  table_cmd->add_option("result", ta.file, "the result file")->required();
+  table_cmd->add_option("columns", ta.columns, "the columns to print (default: every column)");
+  table_cmd->add_flag("--legs", ta.legs, "the per-leg table /legs instead of /timeseries");
+  table_cmd->add_flag("--csv", ta.csv, "comma-separated, 17 digits, no '#' (pandas.read_csv reads it)");
+
+  std::string state_file;
+  CLI::App* state_cmd = app.add_subcommand("state", "the final particles: x y z radius (m), tab-separated");
+  state_cmd->add_option("result", state_file, "the result file")->required();
+
+  std::vector<std::string> summary_files;
+  CLI::App* summary_cmd = app.add_subcommand("summary", "one line per complete result: its last time-series row, steps and wall time");
+  summary_cmd->add_option("results", summary_files, "result files")->required();
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int rc = app.exit(e);  // prints help, the version, or the error naming the option
+    return rc == 0 ? 0 : 2;      // bad arguments are bad input: exit 2, as always
   }
-  if (cmd == "keys") { std::fputs(dem::scene_key_reference().c_str(), stdout); return 0; }
-  if (cmd == "run") return run(argc, argv);
-  if (cmd == "table") return table(argc, argv);
-  if (cmd == "summary") return summary(argc, argv);
-  if (cmd == "state") return state(argc, argv);
-  std::fprintf(stderr, "dem: unknown command '%s'\n%s", cmd.c_str(), usage);
+  if (*run_cmd) return run(ra);
+  if (*keys_cmd) { std::fputs(dem::scene_key_reference().c_str(), stdout); return 0; }
+  if (*table_cmd) return table(ta);
+  if (*state_cmd) return state(state_file);
+  if (*summary_cmd) return summary(summary_files);
+  std::fputs(app.help().c_str(), stderr);  // no sub-command: what there is
   return 2;
 }

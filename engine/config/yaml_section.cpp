@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <regex>
 #include <sstream>
 
@@ -89,7 +90,7 @@ Section Section::load_file(const std::string& file, const Overrides& overrides) 
 }
 
 // Sets `path` (a.b[2].c) in `root` to the YAML value `value`, creating missing mapping keys.
-void apply_override(YAML::Node root, const std::string& file, const std::string& path, const std::string& value) {
+YAML::Node apply_override(YAML::Node root, const std::string& file, const std::string& path, const std::string& value) {
   const std::regex segment_re(R"(^([A-Za-z_][A-Za-z0-9_]*)(?:\[([0-9]+)\])?$)");
   YAML::Node node = root;
   std::stringstream ss(path);
@@ -114,7 +115,7 @@ void apply_override(YAML::Node root, const std::string& file, const std::string&
         throw ConfigError(file + ": --set " + path + ": value '" + value + "' is not valid YAML: " + e.what());
       }
       node[m[1].str()] = v;
-      return;
+      return v;
     }
     YAML::Node next = node[m[1].str()];
     if (m[2].matched) {
@@ -124,12 +125,13 @@ void apply_override(YAML::Node root, const std::string& file, const std::string&
       done.append(1, '[').append(m[2].str()).append(1, ']');
       if (last) {
         next[index] = YAML::Load(value);
-        return;
+        return next[index];
       }
       next.reset(next[index]);
     }
     node.reset(next);
   }
+  return node;  // not reached: the last segment returns above
 }
 
 Section Section::from_text(const std::string& text, const std::string& file, const Overrides& overrides) {
@@ -141,8 +143,35 @@ Section Section::from_text(const std::string& text, const std::string& file, con
   }
   if (!root || root.IsNull()) throw ConfigError(file + ": the file is empty");
   if (!root.IsMap()) throw ConfigError(file + ": the file must be a mapping of keys, got " + scalar_text(root));
-  for (const auto& [path, value] : overrides) apply_override(root, file, path, value);
-  return Section(root, file, "");
+  auto set = std::make_shared<std::vector<YAML::Node>>();
+  for (const auto& [path, value] : overrides) set->push_back(apply_override(root, file, path, value));
+  Section s(root, file, "");
+  s.overrides_ = std::move(set);
+  return s;
+}
+
+Section Section::sub(YAML::Node node, std::string path) const {
+  Section s(std::move(node), file_, std::move(path));
+  s.overrides_ = overrides_;
+  return s;
+}
+
+// Whether `n` is (inside) a value an override set: the same node, not an equal one.
+bool Section::from_override(const YAML::Node& n) const {
+  if (!overrides_) return false;
+  const std::function<bool(const YAML::Node&)> within = [&](const YAML::Node& v) {
+    if (v.is(n)) return true;
+    if (v.IsMap())
+      for (const auto& kv : v)
+        if (within(kv.second)) return true;
+    if (v.IsSequence())
+      for (const auto& item : v)
+        if (within(item)) return true;
+    return false;
+  };
+  for (const YAML::Node& v : *overrides_)
+    if (within(v)) return true;
+  return false;
 }
 
 std::string Section::where(const YAML::Node& n) const {
@@ -254,6 +283,7 @@ std::string Section::file_path(const std::string& key, const std::string& doc) {
   if (!n.IsScalar() || n.Scalar().empty()) fail(key, "must be a file path, got " + scalar_text(n) + where(n));
   const std::filesystem::path p(n.Scalar());
   if (p.is_absolute()) return p.string();
+  if (from_override(n)) return std::filesystem::absolute(p).lexically_normal().string();  // typed in this folder
   return (std::filesystem::path(file_).parent_path() / p).lexically_normal().string();
 }
 
@@ -295,14 +325,14 @@ YAML::Node Section::raw(const std::string& key, const std::string& allowed, cons
 Section Section::optional_child(const std::string& key, const std::string& doc) {
   declare(key, "", "mapping", "optional (every key at its default)", doc);
   const YAML::Node n = get(key);
-  return Section(n ? n : YAML::Node(YAML::NodeType::Map), file_, key_path(key));
+  return sub(n ? n : YAML::Node(YAML::NodeType::Map), key_path(key));
 }
 
 Section Section::child(const std::string& key, const std::string& doc) {
   declare(key, "", "mapping", "required", doc);
   const YAML::Node n = get(key);
   if (!n) fail_missing(key, "a mapping");
-  return Section(n, file_, key_path(key));
+  return sub(n, key_path(key));
 }
 
 std::vector<Section> Section::list(const std::string& key, const std::string& doc) {
@@ -311,7 +341,7 @@ std::vector<Section> Section::list(const std::string& key, const std::string& do
   if (!n || !n.IsSequence() || n.size() == 0)
     fail(key, "must be a non-empty list of mappings, got " + (n ? scalar_text(n) : std::string("nothing")));
   std::vector<Section> out;
-  for (std::size_t i = 0; i < n.size(); ++i) out.emplace_back(n[i], file_, key_path(key) + "[" + std::to_string(i) + "]");
+  for (std::size_t i = 0; i < n.size(); ++i) out.push_back(sub(n[i], key_path(key) + "[" + std::to_string(i) + "]"));
   return out;
 }
 

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <optional>
 #include <set>
 #include <stdexcept>
@@ -26,8 +27,8 @@ struct KeyDoc {
 std::map<std::string, KeyDoc>& key_docs();
 
 // Sets the key `path` (a.b[2].c) of `root` to the YAML `value`, creating missing mapping keys;
-// throws ConfigError naming `file` if the path does not fit the document.
-void apply_override(YAML::Node root, const std::string& file, const std::string& path, const std::string& value);
+// throws ConfigError naming `file` if the path does not fit the document. Returns the node set.
+YAML::Node apply_override(YAML::Node root, const std::string& file, const std::string& path, const std::string& value);
 
 struct Range {
   double min, max;
@@ -41,7 +42,8 @@ class Section {
 
   // Parses a whole file; throws ConfigError if it is missing, unreadable, empty or not a mapping.
   // `overrides` are (key path, YAML value) pairs applied before validation, e.g.
-  // ("particles.lattice.seed", "2") or ("stages[0].hold.max_duration", "5").
+  // ("particles.lattice.seed", "2") or ("stages[0].hold.max_duration", "5"). They come from the
+  // command line, so a file path in one is relative to the current folder (file_path).
   using Overrides = std::vector<std::pair<std::string, std::string>>;
   static Section load_file(const std::string& file, const Overrides& overrides = {});
   static Section from_text(const std::string& text, const std::string& file, const Overrides& overrides = {});
@@ -56,10 +58,11 @@ class Section {
                      const std::string& doc);
   std::string text(const std::string& key, std::optional<std::string> def, const std::string& doc);
   // A required key naming a file: returned resolved against the folder of the scene file when
-  // relative. `dem keys` shows its type as file_path_allowed; every such key is an input of the
+  // relative, or against the current folder when an override (the command line) gave it. `dem keys` shows its type as file_path_allowed; every such key is an input of the
   // run (SceneConfig::input_files), which `dem run --out` may never name.
   std::string file_path(const std::string& key, const std::string& doc);
-  static constexpr const char* file_path_allowed = "path of a file (relative: to the scene's folder)";
+  static constexpr const char* file_path_allowed =
+      "path of a file (relative: to the scene's folder; given with --set: to the current folder)";
   std::vector<double> numbers(const std::string& key, const std::string& unit, Range range, std::size_t min_count,
                               std::size_t max_count, const std::string& doc);
   Section child(const std::string& key, const std::string& doc);
@@ -83,8 +86,11 @@ class Section {
   void declare(const std::string& key, const std::string& unit, const std::string& allowed, const std::string& def,
                const std::string& doc) const;
   std::string where(const YAML::Node& n) const;
+  Section sub(YAML::Node node, std::string path) const;  // a child section, sharing overrides_
+  bool from_override(const YAML::Node& n) const;
 
   YAML::Node node_;
+  std::shared_ptr<const std::vector<YAML::Node>> overrides_;  // the values the overrides set
   std::string file_, path_;
   mutable std::set<std::string> used_;
 };

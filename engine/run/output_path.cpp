@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <cctype>
 #include <filesystem>
 
 #include "io/hdf5.hpp"
@@ -83,6 +84,13 @@ void check_output_name(const std::string& out) {
     throw OutputPathError("--out " + out + " is a directory, not a file name");
   if (const std::string kind = non_regular_kind(out); !kind.empty())
     throw OutputPathError("--out " + out + " is " + kind + ", not a regular file: --out must name a regular file or a new one");
+  // A result is HDF5: a name that says otherwise (out.csv) would get HDF5 bytes and out.csv.xdmf.
+  std::string ext = fs::path(out).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext != ".h5" && ext != ".hdf5")
+    throw OutputPathError("--out " + out + ": a result is an HDF5 file, so its name must end in .h5 or .hdf5" +
+                          (ext.empty() ? std::string() : " (not '" + ext + "')") +
+                          "; for a text table of a result use dem table RESULT.h5 --csv");
   const fs::path folder = fs::path(out).parent_path().empty() ? fs::path(".") : fs::path(out).parent_path();
   if (!fs::is_directory(folder, ec)) throw OutputPathError("--out " + out + " is in a folder that does not exist");
   if (access(folder.c_str(), W_OK) != 0) throw OutputPathError("--out " + out + " is in a folder this user cannot write to");

@@ -11,6 +11,7 @@
 //
 // Refused before anything is written, each with a message naming --out (or the scene key) and
 // what is allowed; `dem` exits 2:
+//   * OUT whose extension is not .h5 or .hdf5 (a result is HDF5; `dem table --csv` writes text);
 //   * OUT ending in .partial, .checkpoint, .lock, .outcome, .tmp or .xdmf: it is (or could be) a
 //     file of another result's family, which that run's lock does not cover;
 //   * OUT in a folder that does not exist or that this user cannot write to;

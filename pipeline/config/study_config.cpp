@@ -173,13 +173,19 @@ std::string describe(const Variant& v) {
   return out.empty() ? "as written" : out;
 }
 
+const Profile& Study::default_profile() const {
+  for (const Profile& p : profiles)
+    if (p.name == "paper") return p;
+  return profiles.front();  // load_study refuses a study without profiles
+}
+
 const Profile& Study::profile(const std::string& wanted) const {
   std::string known;
   for (const Profile& p : profiles) {
     if (p.name == wanted) return p;
     known += (known.empty() ? "" : ", ") + p.name;
   }
-  throw dem::ConfigError(file + ": profiles: no profile '" + wanted + "' (known: " + known + ")");
+  throw dem::ConfigError(file + ": profiles: no profile '" + wanted + "'; this study declares " + known);
 }
 
 Study load_study(const std::string& file) {
@@ -214,9 +220,17 @@ Study load_study(const std::string& file) {
     st.tests.push_back(tc);
   }
   const std::vector<std::int64_t> seeds = read_seeds(root, {});
-  dem::Section profiles = root.child("profiles", "named sizes of the study (paper, quick)");
-  for (const char* name : {"paper", "quick"}) {
-    if (!profiles.has(name)) profiles.fail(name, "missing (every study defines the paper and quick profiles)");
+  // Profiles: any names, as many as the study needs (pipeline --profile NAME picks one).
+  const YAML::Node profile_node = root.raw("profiles", "a mapping of profile names to {lattice, max_repeat, seeds}",
+                                           "named sizes of the study, any names (paper, quick, small, ...)");
+  if (!profile_node.IsMap() || profile_node.size() == 0)
+    root.fail("profiles", "must be a non-empty mapping of profile names to {lattice, max_repeat, seeds}");
+  dem::Section profiles(profile_node, file, "profiles");
+  static const std::regex profile_re("^[A-Za-z0-9_-]+$");  // the results folder <output>/<profile>
+  for (const auto& kv : profile_node) {
+    const std::string name = kv.first.IsScalar() ? kv.first.Scalar() : "";
+    if (!std::regex_match(name, profile_re))
+      profiles.fail(name, "a profile name must be letters, digits, _ and - (it names the results folder)");
     dem::Section p = profiles.child(name, "a profile");
     Profile pr;
     pr.name = name;
@@ -265,7 +279,8 @@ Study load_study(const std::string& file) {
       for (const auto& o : var.set)
         if (o.first.rfind("particles", 0) == 0 && !st.tests.empty())
           v.fail("set." + o.first, "would change where the tests' particles come from; put it under prepare:");
-      const bool ensemble = !seeds.empty() || !st.profiles[0].seeds.empty() || !st.profiles[1].seeds.empty();
+      const bool ensemble = !seeds.empty() || std::any_of(st.profiles.begin(), st.profiles.end(),
+                                                         [](const Profile& p) { return !p.seeds.empty(); });
       for (const Overrides* o : {&var.set, &var.prepare})
         for (const auto& kv : *o)
           if (ensemble && kv.first.rfind("particles.lattice.seed", 0) == 0)

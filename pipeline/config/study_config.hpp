@@ -73,7 +73,8 @@ struct Study {
   std::vector<Variant> variants;    // empty: the paper study's form, runs named <density>_<test>
   std::optional<std::string> executor;  // "local" or "slurm" if the study names one (pipeline --executor wins)
   SlurmOptions slurm;
-  const Profile& profile(const std::string& name) const;  // throws naming the known profiles
+  const Profile& profile(const std::string& name) const;  // throws naming the declared profiles
+  const Profile& default_profile() const;  // `paper` if declared, else the first declared
 };
 
 // The variant's settings in one line (the tables of the report name variants by them).

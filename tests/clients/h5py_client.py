@@ -3,8 +3,9 @@
 
     python3 tests/clients/h5py_client.py DEM RESULT.h5
 
-Checked: the status attribute, the units attribute of each column read, several /timeseries
-columns and a /legs column against `dem table` (and `dem table --legs`), and the particle count of
+Checked: the status attribute, the units attribute of each column read (and the `name [unit]`
+header of `dem table`), several /timeseries columns and a /legs column against `dem table` (and
+`dem table --legs`), and the particle count of
 the H5MD frames against `dem state`. `dem table` prints 10 significant digits (%.10g), so a value
 read by h5py may differ from its printed form by at most half a unit in the 10th digit:
 |h5py - table| <= 5e-10 |h5py|. (Python is a client here only: the project's code is C++.)
@@ -22,16 +23,17 @@ def text(x):
     return x.decode() if isinstance(x, bytes) else str(x)
 
 
-def table(dem, result, names, legs=False):
-    args = [dem, "table", result] + (["--legs"] if legs else []) + names
+def table(dem, result, columns, legs=False):
+    args = [dem, "table", result] + (["--legs"] if legs else []) + list(columns)
     out = subprocess.run(args, capture_output=True, text=True, check=True).stdout
     lines = out.splitlines()
-    assert lines[0].split()[1:] == names, f"dem table header {lines[0]!r}"
+    header = [f"{name} [{unit}]" for name, unit in columns.items()]  # '# ' then 'name [unit]', tab-separated
+    assert lines[0].startswith("# ") and lines[0][2:].split("\t") == header, f"dem table header {lines[0]!r}"
     return [[float(v) for v in line.split("\t")] for line in lines[1:]]
 
 
 def compare(group, dem, result, columns, legs=False):
-    rows = table(dem, result, list(columns), legs)
+    rows = table(dem, result, columns, legs)
     for k, (name, unit) in enumerate(columns.items()):
         data = group[name][()]
         assert text(group[name].attrs["units"]) == unit, f"{name}: units {group[name].attrs['units']!r}, expected {unit!r}"

@@ -47,17 +47,26 @@ TEST_CASE("dem: usage errors and bad scenes exit with status 2 and a message on 
   SECTION("no arguments: the usage, exit 2") {
     const auto r = dem_stderr("");
     CHECK(r.exit_code == 2);
-    CHECK_THAT(r.out, Catch::Matchers::Contains("usage:"));
+    CHECK_THAT(r.out, Catch::Matchers::Contains("Usage:"));
+    CHECK_THAT(r.out, Catch::Matchers::Contains("run "));  // the sub-commands are listed
   }
   SECTION("unknown command") {
     const auto r = dem_stderr("frobnicate");
     CHECK(r.exit_code == 2);
-    CHECK_THAT(r.out, Catch::Matchers::Contains("dem: unknown command 'frobnicate'"));
+    CHECK_THAT(r.out, Catch::Matchers::Contains("frobnicate"));
   }
   SECTION("run without --out") {
     const auto r = dem_stderr("run scene.yaml");
     CHECK(r.exit_code == 2);
-    CHECK_THAT(r.out, Catch::Matchers::Contains("need a scene file and --out RESULT.h5"));
+    CHECK_THAT(r.out, Catch::Matchers::Contains("--out is required"));
+  }
+  SECTION("an unknown option and a bad --threads name the option") {
+    auto r = dem_stderr("run scene.yaml --out r.h5 --frobnicate");
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.out, Catch::Matchers::Contains("--frobnicate"));
+    r = dem_stderr("run scene.yaml --out r.h5 --threads 0");
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.out, Catch::Matchers::Contains("--threads"));
   }
   SECTION("a scene with a bad value: the message names file, key path and range") {
     dem::test::write_text(dir + "/bad.yaml", dem::test::tiny_scene(tiny_stage, "{kn: 1.0e6, ks: 1.0e6, friction: -0.5}"));
@@ -109,7 +118,7 @@ TEST_CASE("dem run writes a complete result and dem table prints its columns", "
 
   const auto t = dem_stdout("table '" + dir + "/r.h5' step p");
   CHECK(t.exit_code == 0);
-  CHECK(t.out.rfind("# step p\n0\t", 0) == 0);  // a header, then the first row (step 0)
+  CHECK(t.out.rfind("# step [1]\tp [Pa]\n0\t", 0) == 0);  // a header with units, then the first row (step 0)
   CHECK(std::count(t.out.begin(), t.out.end(), '\n') == 1 + 6);  // rows at steps 0, 100, ..., 500
   const auto bad_column = dem_stderr("table '" + dir + "/r.h5' pressure");
   CHECK(bad_column.exit_code == 2);
@@ -406,8 +415,12 @@ TEST_CASE("dem run refuses an --out that is, or whose companion files are, a fil
                                              "numerics: {time_step: 1.0e-6}\nstages:\n" + tiny_stage);
   fs::create_directory_symlink(dir, dir + "/linked");
   fs::create_hard_link(dir + "/sample.h5", dir + "/hard.h5");
-  const auto refused = [&](const std::string& scene, const std::string& out, const std::string& expected) {
+  const auto refused = [&](const std::string& scene, const std::string& out, const std::string& expected_if_h5) {
     INFO("scene " << scene << ", --out " << out);
+    // An --out that is not .h5 (the CSV, the scene file) is refused for its name before the inputs
+    // are compared; refused all the same, nothing run, every input intact.
+    const bool h5 = out.size() > 3 && out.compare(out.size() - 3, 3, ".h5") == 0;
+    const std::string expected = h5 ? expected_if_h5 : "must end in .h5 or .hdf5";
     const std::string input = dem::test::read_bytes(dir + "/particles.csv") + dem::test::read_bytes(dir + "/sample.h5") +
                               dem::test::read_bytes(dir + "/" + scene);
     for (const char* force : {"", " --force"}) {
@@ -514,4 +527,93 @@ TEST_CASE("dem run replaces an existing result of another scene, or any other fi
   }
   fs::copy_file(dir + "/other.h5", out, fs::copy_options::overwrite_existing);
   needs_force("", "a result with status 'failed: a test'");
+}
+
+TEST_CASE("dem: every sub-command answers --help with exit 0", "[run][cli]") {
+  if (!have_dem()) return;
+  for (const std::string cmd : {"", "run ", "keys ", "table ", "state ", "summary "}) {
+    const auto r = dem_stdout(cmd + "--help");
+    INFO("dem " << cmd << "--help");
+    CHECK(r.exit_code == 0);
+    CHECK_THAT(r.out, Catch::Matchers::Contains("Usage:"));
+  }
+  CHECK_THAT(dem_stdout("run --help").out, Catch::Matchers::Contains("--set"));
+  CHECK_THAT(dem_stdout("table --help").out, Catch::Matchers::Contains("--csv"));
+}
+
+TEST_CASE("dem run: an --out that is not .h5 or .hdf5 is refused, and no refused run leaves a file", "[run][cli]") {
+  if (!have_dem()) return;
+  const std::string dir = dem::test::scratch_dir("cli_extension");
+  dem::test::write_text(dir + "/s.yaml", dem::test::tiny_scene(tiny_stage));
+  for (const std::string name : {"out.csv", "out", "out.h5x"}) {
+    const auto r = dem_stderr("run '" + dir + "/s.yaml' --out '" + dir + "/" + name + "' --quiet");
+    INFO(name << ": " << r.out);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.out, Catch::Matchers::Contains("must end in .h5 or .hdf5"));
+  }
+  // A scene refused when the run starts (the time step, found once the particles exist), after
+  // the lock was taken: nothing is left, the lock file neither.
+  std::string text = dem::test::tiny_scene(tiny_stage);
+  text.replace(text.find("time_step: 1.0e-6"), 17, "time_step: 1.0e-4");
+  dem::test::write_text(dir + "/dt.yaml", text);
+  const auto r = dem_stderr("run '" + dir + "/dt.yaml' --out '" + dir + "/r.h5' --quiet");
+  CHECK(r.exit_code == 2);
+  std::vector<std::string> left;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().filename() != "s.yaml" && e.path().filename() != "dt.yaml") left.push_back(e.path().filename().string());
+  CHECK(left.empty());
+  for (const auto& f : left) WARN("left behind: " << f);
+  // Both extensions run.
+  for (const std::string name : {"a.h5", "b.hdf5"}) {
+    const auto ok = dem_stderr("run '" + dir + "/s.yaml' --out '" + dir + "/" + name + "' --quiet");
+    INFO(name << ": " << ok.out);
+    CHECK(ok.exit_code == 0);
+    CHECK(dem::test::h5_status(dir + "/" + name) == "complete");
+  }
+}
+
+TEST_CASE("dem run: paths typed on the command line are relative to the current folder, paths in a scene to the scene",
+          "[run][cli]") {
+  if (!have_dem()) return;
+  // scenes/ holds the scene (which names its particle file sample.csv, beside it) and another
+  // sample.csv; work/ is where the command is typed and holds a third sample.csv, with a different
+  // number of spheres each, so the result's sphere count tells which file was read.
+  const std::string dir = dem::test::scratch_dir("cli_paths");
+  fs::create_directories(dir + "/scenes");
+  fs::create_directories(dir + "/work");
+  const auto spheres = [](int n) {
+    std::string csv = "x,y,z,radius\n";
+    for (int i = 0; i < n; ++i) csv += std::to_string(0.004 + 0.008 * i) + ",0.01,0.01,0.002\n";
+    return csv;
+  };
+  dem::test::write_text(dir + "/scenes/sample.csv", spheres(2));
+  dem::test::write_text(dir + "/work/sample.csv", spheres(3));
+  std::string scene = dem::test::tiny_scene(tiny_stage);
+  const auto start = scene.find("particles:");
+  const auto end = scene.find("\nmaterial");
+  REQUIRE(start != std::string::npos);
+  REQUIRE(end != std::string::npos);
+  scene.replace(start, end - start, "particles: {csv: sample.csv, cell: [0.04, 0.04, 0.04]}");
+  dem::test::write_text(dir + "/scenes/s.yaml", scene);
+  const auto count = [&](const std::string& result) {
+    const auto st = dem_stdout("state '" + result + "'");
+    return std::count(st.out.begin(), st.out.end(), '\n') - 1;  // a header, then a line per sphere
+  };
+  // Typed in work/: --out and --set are relative to work/; the scene's own path to scenes/.
+  const auto in_work = [&](const std::string& args) {
+    return dem::test::run_command("cd '" + dir + "/work' && '" + dem_exe + "' run ../scenes/s.yaml --quiet " + args + " 2>&1");
+  };
+  auto r = in_work("--out from_scene.h5");
+  INFO(r.out);
+  REQUIRE(r.exit_code == 0);
+  CHECK(fs::exists(dir + "/work/from_scene.h5"));
+  CHECK(count(dir + "/work/from_scene.h5") == 2);
+  r = in_work("--out from_cli.h5 --set particles.csv=sample.csv");
+  INFO(r.out);
+  REQUIRE(r.exit_code == 0);
+  CHECK(count(dir + "/work/from_cli.h5") == 3);
+  r = in_work("--out from_cli_map.h5 --set 'particles={csv: sample.csv, cell: [0.04, 0.04, 0.04]}'");
+  INFO(r.out);
+  REQUIRE(r.exit_code == 0);
+  CHECK(count(dir + "/work/from_cli_map.h5") == 3);
 }

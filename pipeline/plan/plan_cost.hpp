@@ -1,0 +1,33 @@
+#pragma once
+// What a plan costs (pipeline --plan): each run's estimated particle-steps (PlannedRun::cost), the
+// critical path (the longest chain of runs, each starting from the one before it) and the wall
+// time on a number of cores, each run on one core at a given throughput.
+#include <vector>
+
+#include "plan/run_plan.hpp"
+
+namespace pipeline {
+
+// The particle-steps per second of one run on one core that the estimates assume unless told
+// otherwise: the engine's measured throughput, `make bench` on this project's 2-core machine
+// (reports/bench.md, 8,000 spheres, mu = 0.5, dt = 1 us): 3.53e7 for one run on one thread, 3.49e7
+// each for two runs at once. Output rows and the preparations' gas phase are not in it.
+inline constexpr double default_throughput = 3.5e7;
+
+// `todo[i]`: run i has to run; a reused result or a copy (copy_of) costs nothing.
+std::vector<double> run_costs(const std::vector<PlannedRun>& runs, const std::vector<bool>& todo);
+
+struct CriticalPath {
+  std::vector<int> runs;  // first to last, only runs that cost something
+  double cost = 0;        // particle-steps along it
+};
+// The chain of runs (each depends_on the one before) with the most particle-steps to do.
+CriticalPath critical_path(const std::vector<PlannedRun>& runs, const std::vector<double>& cost);
+
+// Seconds the runs take on `cores` cores, one run per core at `throughput` particle-steps/s:
+// list scheduling (a free core takes the ready run with the longest chain still behind it, as the
+// scheduler orders them), a run ready once the run it starts from is done.
+double estimated_wall_time_s(const std::vector<PlannedRun>& runs, const std::vector<double>& cost, int cores,
+                             double throughput);
+
+}  // namespace pipeline
