@@ -20,6 +20,9 @@ struct ContactCounts {
   double mean_normal_force_N = 0;
   std::vector<Vec3> normals;              // unit normal of each contact (filled if asked for)
   std::vector<double> normal_forces_N;    // f_n of each contact (filled if asked for)
+  // The energy the contacts' springs hold at these positions, by the law's own energy functions
+  // [J]: what the time series reports before the first force evaluation of a run (row 0).
+  double elastic_normal_J = 0, elastic_tangential_J = 0, elastic_rolling_J = 0;
 };
 // Surveys the contacts at the current positions: counts, and the stress from the contact law's
 // normal force plus the tangential force its stored history stands for. Evaluated at the state of
