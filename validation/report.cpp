@@ -291,6 +291,43 @@ Values figure_values(const ReportInputs& in) {
   }
   v["fig13.paper"] = paper("qp_strong_fabric_slope", "loose");
 
+  // Fig. 5: the largest εd (%) of each density's tests, cycles <= 5. Fig. 12: the largest fabric
+  // ratio and q/p of the chosen sample's tests, cycles <= 5. Fig. 8: Test 5's εv after its last cycle.
+  {
+    MinMax fabric_all, qp_all;
+    for (const std::string& d : densities) {
+      const DensityResults* r = results_of(d);
+      if (!r) continue;
+      MinMax ed;
+      for (const TestResult& t : r->tests) {
+        if (!t.series.count("cycle")) continue;
+        const auto& cyc = t.series.at("cycle");
+        for (std::size_t i = 0; i < cyc.size(); ++i) {
+          if (cyc[i] > 5) continue;
+          if (t.series.count("deviatoric_strain")) ed.add(100 * t.series.at("deviatoric_strain")[i]);
+          if (t.series.count("fabric_ratio")) fabric_all.add(t.series.at("fabric_ratio")[i]);
+          if (t.series.count("q_over_p")) qp_all.add(t.series.at("q_over_p")[i]);
+        }
+        if (t.number == 5)
+          if (const auto x = at_cycle_end(t, "volumetric_strain", last_cycle(t.series))) {
+            v["fig08.ev_" + d] = significant(100 * *x, 2);
+            v["fig08.cycles"] = std::to_string(last_cycle(t.series));
+          }
+      }
+      if (ed.any()) v["fig05.max_ed_" + d] = significant(ed.hi, 2);
+    }
+    if (fabric_all.any()) v["fig12.max_fabric"] = significant(fabric_all.hi, 2);
+    if (qp_all.any()) v["fig12.max_qp"] = significant(qp_all.hi, 2);
+  }
+  // Fig. 9: the mean turn of the strain increments towards the path from cycle 1 to 5 (the rows).
+  for (const auto& [quantity, d] : std::vector<std::pair<std::string, std::string>>{
+           {"strain_increment_alignment_gain", "loose"}, {"strain_increment_alignment_gain_magnitude", "dense"}}) {
+    const RowResult* r = row_result(quantity, d);
+    if (!r || r->valued == 0) continue;
+    v["fig09.turn_" + d] = r->valued > 1 ? mean_pm_sd(r->spread.mean, r->spread.sd) : significant(r->spread.mean, 2);
+    v["fig09.verdict_" + d] = verdict_phrase(r->verdict);
+  }
+
   // The energy balance of Test 1 of each density (the energy figure).
   bool old_first_row = false;
   for (const std::string& d : densities) {
