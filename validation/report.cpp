@@ -40,6 +40,17 @@ std::string range_fixed(double lo, double hi, int decimals) {
   return a == b ? a : a + "–" + b;
 }
 
+// An energy [J]: three significant digits, in powers of ten below 0.01 J.
+std::string energy_text(double x) {
+  if (!std::isfinite(x)) return "—";
+  if (x != 0 && std::abs(x) < 1e-2) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.2e", x);
+    return buf;
+  }
+  return significant(x, 3);
+}
+
 // A percentage that may be at rounding level: two significant digits, in powers of ten below 0.001.
 std::string percent_small(double x) {
   if (!std::isfinite(x)) return "—";
@@ -160,7 +171,20 @@ Values figure_values(const ReportInputs& in) {
   };
   const auto phrase = [&](const std::string& quantity, const std::string& density) {
     const RowResult* r = row_result(quantity, density);
-    return r ? verdict_phrase(r->verdict) : std::string("not judged (no such row in this profile)");
+    return r ? verdict_phrase(r->verdict) : std::string("not judged at this size: no row in this profile");
+  };
+  // A row's values on these samples even when the profile does not judge it (the quick profile
+  // leaves out rows that need the full size): the data are shown, the verdict is not.
+  std::map<std::string, RowResult> valued;
+  const auto values_of = [&](const std::string& quantity, const std::string& density) -> const RowResult* {
+    if (const RowResult* r = row_result(quantity, density)) return r;
+    for (const Row& r : in.paper)
+      if (r.quantity == quantity && r.density == density) {
+        auto it = valued.find(r.name);
+        if (it == valued.end()) it = valued.emplace(r.name, evaluate(r, in.samples)).first;
+        return &it->second;
+      }
+    return nullptr;
   };
   const auto paper = [&](const std::string& quantity, const std::string& density) {
     const auto x = paper_value(in.paper, quantity, density);
@@ -280,14 +304,14 @@ Values figure_values(const ReportInputs& in) {
 
   // Fig. 13: the slope of q/p against the strong fabric ratio, per sample (the validation row).
   for (const std::string& d : densities) {
-    const RowResult* r = row_result("qp_strong_fabric_slope", d);
+    const RowResult* r = values_of("qp_strong_fabric_slope", d);
     if (!r || r->valued == 0) continue;
     MinMax m;
     for (const auto& ps : r->samples)
       if (ps.measured.value) m.add(*ps.measured.value);
     v["fig13.slope_" + d] = r->valued > 1 ? mean_pm_sd(r->spread.mean, r->spread.sd) : fixed_text(r->spread.mean, 2);
     v["fig13.range_" + d] = range_fixed(m.lo, m.hi, 2);
-    v["fig13.verdict_" + d] = verdict_phrase(r->verdict);
+    v["fig13.verdict_" + d] = phrase("qp_strong_fabric_slope", d);
   }
   v["fig13.paper"] = paper("qp_strong_fabric_slope", "loose");
 
@@ -322,10 +346,10 @@ Values figure_values(const ReportInputs& in) {
   // Fig. 9: the mean turn of the strain increments towards the path from cycle 1 to 5 (the rows).
   for (const auto& [quantity, d] : std::vector<std::pair<std::string, std::string>>{
            {"strain_increment_alignment_gain", "loose"}, {"strain_increment_alignment_gain_magnitude", "dense"}}) {
-    const RowResult* r = row_result(quantity, d);
+    const RowResult* r = values_of(quantity, d);
     if (!r || r->valued == 0) continue;
     v["fig09.turn_" + d] = r->valued > 1 ? mean_pm_sd(r->spread.mean, r->spread.sd) : significant(r->spread.mean, 2);
-    v["fig09.verdict_" + d] = verdict_phrase(r->verdict);
+    v["fig09.verdict_" + d] = phrase(quantity, d);
   }
 
   // The energy balance of Test 1 of each density (the energy figure).
@@ -337,7 +361,7 @@ Values figure_values(const ReportInputs& in) {
     try {
       const EnergyCurves c = energy_curves(t->series);
       old_first_row = old_first_row || c.baseline_row > 0;
-      v["energy.work_" + d] = significant(c.work_total_J(), 3);
+      v["energy.work_" + d] = energy_text(c.work_total_J());
       v["energy.closure_" + d] = percent_small(100 * c.closure_relative_to_work());
       if (const auto at = c.parting_time_s(0.01)) v["energy.parts_at_" + d] = significant(*at, 3);
     } catch (const std::out_of_range&) {
@@ -401,8 +425,8 @@ std::string energy_table(const std::vector<std::pair<std::string, const Columns*
       char err[32];
       std::snprintf(err, sizeof err, "%.1e", engine_worst);
       md << "| " << name << " | row " << c.baseline_row + 1 << " (t = " << number(c.time_s.front()) << " s) | "
-         << significant(c.work_total_J(), 4) << " | " << significant(c.stored_change_J.back(), 4) << " | "
-         << significant(c.damping_J.back(), 3) << " | " << significant(c.friction_J.back(), 3) << " | "
+         << energy_text(c.work_total_J()) << " | " << energy_text(c.stored_change_J.back()) << " | "
+         << energy_text(c.damping_J.back()) << " | " << energy_text(c.friction_J.back()) << " | "
          << percent_small(100 * c.closure_relative_to_work()) << " % | " << err << " |\n";
     } catch (const std::out_of_range&) {
       md << "| " << name << " | — | no energy columns in this result | | | | | |\n";

@@ -356,14 +356,18 @@ TEST_CASE("report: every number in the figure notes is the fixture's", "[report]
     }
     CHECK(n.find("as in the paper for the loose sample") != std::string::npos);
     CHECK(n.find("unlike the paper for the dense one") != std::string::npos);
+    // Fig. 14 quotes the same slopes and verdicts.
+    const std::string n14 = note(v, "fig14_strong_fabric_all.png");
+    CHECK(n14.find(v.at("fig13.slope_dense")) != std::string::npos);
+    CHECK(n14.find("as in the paper / as in the paper / unlike the paper") != std::string::npos);
   }
   SECTION("energy: the work of Test 1 from the common row, the gap relative to it (0, 0.1 %, 0)") {
     const std::string n = note(v, "fig_energy.png");
     // The curves start from row 1 (t = 0.1 s): work = W(T) - W(0.1), T = 1.0 s (row 10).
     const double w = Fixture::work(1.0) - Fixture::work(0.1);
-    const auto x = captured(n, "does " + num + " / " + num + " / " + num + " J of work");
+    const std::string sci = R"(([-+0-9.e]+))";  // small energies and rounding-level gaps are written as 1.10e-03
+    const auto x = captured(n, "does " + sci + " / " + sci + " / " + sci + " J of work");
     for (double xi : x) CHECK(xi == Approx(w).epsilon(5e-3));  // three significant digits
-    const std::string sci = R"(([-+0-9.e]+))";  // rounding-level gaps are written as 2.0e-14
     const auto gap = captured(n, "differ by at most " + sci + " / " + sci + " / " + sci + " %");
     // medium: gap(t) - gap(0.1) = 1e-3 (W(t) - W(0.1)): at most 0.1 % of the run's work; loose and
     // dense close exactly but for the rounding of sums of a few doubles of ~0.04 J (~1e-17 J of ~1e-3 J)
