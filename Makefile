@@ -1,7 +1,7 @@
 # cyclic-triax: the two commands a user needs are `make all` and `make test`.
 BUILD    ?= build
 JOBS     ?= $(shell nproc 2>/dev/null || echo 2)
-PACKAGES := g++ cmake make libeigen3-dev libhdf5-dev libyaml-cpp-dev catch2 gnuplot-nox hdf5-tools libboost-math-dev libcli11-dev
+PACKAGES := g++ cmake make libeigen3-dev libhdf5-dev libyaml-cpp-dev catch2 gnuplot-nox hdf5-tools libboost-math-dev libcli11-dev nlohmann-json3-dev
 SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 RESULTS  ?= results/study/paper
@@ -40,7 +40,7 @@ build: deps
 
 # Only what the studies and the report use (not the tests or the benchmark: from nothing, 1 min 11 s
 # instead of 2 min 38 s on this machine).
-TOOLS := dem pipeline validate compare-runs ensemble-cycles figure-data
+TOOLS := dem pipeline validate compare-runs ensemble-cycles figure-data report
 tools: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
 	cmake --build $(BUILD) -j $(JOBS) --target $(TOOLS)
@@ -148,22 +148,31 @@ quick: build
 	  --out $(BUILD)/quick-report --profile quick
 	$(BUILD)/bin/ensemble-cycles results/study/quick $(BUILD)/quick-report/figures/ensemble
 	reports/make_figures.sh $(BUILD)/bin results/study/quick $(BUILD)/quick-report/figures $(strip $(SAMPLE))
-	reports/make_report.sh $(BUILD)/bin results/study/quick $(BUILD)/quick-report
+	-$(BUILD)/bin/figure-data samples-table results/study/quick --references reference_data/paper.yaml --per-sample \
+	  > $(BUILD)/quick-report/samples.md
+	$(BUILD)/bin/report --results results/study/quick --references reference_data/paper.yaml --out $(BUILD)/quick-report \
+	  --profile quick --sample $(strip $(SAMPLE)) $(REPORT_SOURCE)
 
 # Validation table, figures, the convergence, stability, critical-state and liquefaction sections
 # and reports/index.md from the results of the full studies (a section whose study has not run
-# says so; a missing or unfinished one does not fail the report).
+# says so; a missing or unfinished one does not fail the report). build/bin/report writes
+# index.md from reports/templates/ and computes every number in its prose (validation/report.hpp);
+# BASELINE is an earlier baseline's validation.json it compares every row with.
+BASELINE ?= reports/baselines/orthorhombic_validation.json
+REPORT_SOURCE = --source "commit $$(git rev-parse --short=12 HEAD 2>/dev/null || echo unknown)$$(git diff --quiet HEAD -- . ':!reports' 2>/dev/null || echo ' (with uncommitted changes)')"
 report: tools
 	-$(MAKE) --no-print-directory decisions-report
 	-$(BUILD)/bin/validate --results $(RESULTS) --references reference_data/paper.yaml --out reports \
 	  --decisions reports/decisions/decisions.json
 	$(BUILD)/bin/ensemble-cycles $(RESULTS) reports/figures/ensemble
 	reports/make_figures.sh $(BUILD)/bin $(RESULTS) reports/figures $(strip $(SAMPLE))
+	-$(BUILD)/bin/figure-data samples-table $(RESULTS) --references reference_data/paper.yaml --per-sample > reports/samples.md
 	-reports/convergence/make_section.sh $(BUILD)/bin $(CONVERGENCE) reports/convergence
 	reports/stability/make_section.sh $(BUILD)/bin $(STABILITY) reports/stability
 	-reports/critical_state/make_section.sh $(BUILD)/bin $(CRITICAL_STATE) reports/critical_state
 	-reports/liquefaction/make_section.sh $(BUILD)/bin reports/liquefaction $(LIQUEFACTION)
-	CONVERGENCE=$(CONVERGENCE) DECISIONS=$(DECISIONS) STABILITY=$(STABILITY) reports/make_report.sh $(BUILD)/bin $(RESULTS) reports
+	$(BUILD)/bin/report --results $(RESULTS) --references reference_data/paper.yaml --out reports --sample $(strip $(SAMPLE)) \
+	  --baseline $(BASELINE) --convergence $(CONVERGENCE) --decisions $(DECISIONS) --stability $(STABILITY) $(REPORT_SOURCE)
 
 # The paper's open choices (SPEC section 7): each reading one at a time from the baseline, 3
 # samples of 1,000 spheres (pipeline/studies/decisions.yaml), then the report's section on them.

@@ -258,10 +258,10 @@ int decisions(const std::vector<ManifestLine>& manifest, const std::vector<std::
     for (auto it = of_group.rbegin(); it != of_group.rend(); ++it) {
       const validation::RowDecision& d = **it;
       md << "| " << cell(d.row.name) << " | "
-         << (d.baseline.valued ? number(d.baseline.spread.mean) + (d.baseline.valued > 1 ? " ± " + number(d.baseline.spread.sd) : "") : "—")
+         << (d.baseline.valued ? (d.baseline.valued > 1 ? validation::mean_pm_sd(d.baseline.spread.mean, d.baseline.spread.sd) : number(d.baseline.spread.mean)) : "—")
          << " " << verdict_mark(d.full ? d.full->verdict : d.baseline.verdict) << " | ";
       for (const auto& e : d.readings)
-        md << (e.shift_sd && std::isfinite(*e.shift_sd) ? signed_fixed(*e.shift_sd) : "—") << " "
+        md << (e.shift_sd && std::isfinite(*e.shift_sd) ? validation::shift_text(*e.shift_sd) : "—") << " "
            << verdict_mark(d.full ? (e.full ? e.full->verdict : validation::Verdict::NotJudged) : e.result.verdict) << " | ";
       md << cell(d.explanation) << " |\n";
     }
@@ -282,11 +282,11 @@ int decisions(const std::vector<ManifestLine>& manifest, const std::vector<std::
     for (const validation::RowDecision& d : decided) {
       const validation::RowResult& big = *d.full;
       const auto ms = [](const validation::RowResult& r) {
-        return r.valued ? number(r.spread.mean) + (r.valued > 1 ? " ± " + number(r.spread.sd) : "") : std::string("—");
+        return r.valued ? (r.valued > 1 ? validation::mean_pm_sd(r.spread.mean, r.spread.sd) : number(r.spread.mean)) : std::string("—");
       };
       std::string diff = "—";
-      if (big.valued > 1 && big.spread.sd > 0 && d.baseline.valued > 0)
-        diff = signed_fixed((d.baseline.spread.mean - big.spread.mean) / big.spread.sd);
+      if (big.valued > 1 && std::max(big.spread.sd, d.row.resolution) > 0 && d.baseline.valued > 0)
+        diff = validation::shift_text(validation::shift_in_sd(d.baseline.spread.mean - big.spread.mean, big.spread.sd, d.row.resolution));
       md << "| " << cell(d.row.name) << " | " << ms(big) << " | " << ms(d.baseline) << " | " << diff << " | "
          << verdict_mark(big.verdict) << " / " << verdict_mark(d.baseline.verdict) << " |\n";
     }

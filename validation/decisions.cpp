@@ -11,6 +11,9 @@ namespace validation {
 
 namespace {
 
+// A shift in the sentences: two decimals, or beyond ±10 the value with that said (format.hpp).
+std::string sd_text(double z) { return std::abs(z) <= 10 ? fixed(z) : shift_text(z); }
+
 // Distance from the interval [low, high] to the paper's region (0 when they overlap).
 double gap(const RowResult& r) {
   if (!r.spread.low) return std::nan("");
@@ -26,7 +29,7 @@ std::string with_shifts(const RowDecision& d, const std::vector<std::string>& na
     s += (i ? ", " : "") + names[i];
     for (const ReadingEffect& e : d.readings)
       if (e.reading == names[i] && e.shift_sd)
-        s += " (" + fixed(*e.shift_sd) + " sd" + (e.t ? ", t = " + fixed(*e.t) : std::string()) + ")";
+        s += " (" + sd_text(*e.shift_sd) + " sd" + (e.t ? ", t = " + fixed(*e.t) : std::string()) + ")";
   }
   return s;
 }
@@ -51,8 +54,8 @@ std::vector<RowDecision> decide(const std::vector<Row>& rows, const std::map<std
       ReadingEffect e;
       e.reading = name;
       e.result = it == readings.end() ? RowResult{} : evaluate(row, it->second);
-      if (e.result.valued > 0 && d.baseline.valued > 1 && d.baseline.spread.sd > 0)
-        e.shift_sd = (e.result.spread.mean - d.baseline.spread.mean) / d.baseline.spread.sd;
+      if (e.result.valued > 0 && d.baseline.valued > 1 && std::max(d.baseline.spread.sd, row.resolution) > 0)
+        e.shift_sd = shift_in_sd(e.result.spread.mean - d.baseline.spread.mean, d.baseline.spread.sd, row.resolution);
       if (d.full && e.result.valued > 0 && d.baseline.valued > 0)
         e.full = shifted(row, *d.full, e.result.spread.mean - d.baseline.spread.mean);
       const Spread& b = d.baseline.spread;
@@ -104,7 +107,7 @@ std::string explain(const RowDecision& d) {
                     "; on " + where + " it holds in " + std::to_string(base.holds) + " of " + std::to_string(base.valued);
     if (best)
       s += "; most: " + best->reading + " (" + std::to_string(judged(*best).holds) + " of " + std::to_string(judged(*best).valued) +
-           (best->shift_sd ? ", mean shifted " + fixed(*best->shift_sd) + " sd" : std::string()) + ")";
+           (best->shift_sd ? ", mean shifted " + sd_text(*best->shift_sd) + " sd" : std::string()) + ")";
     return s + unresolved;
   }
   // Unexplained: say which reading closes most of the gap between our interval and the paper.
@@ -115,7 +118,7 @@ std::string explain(const RowDecision& d) {
   std::string s = "unexplained: no reading makes it consistent; the interval of " + where + " misses the paper by " + fixed(base_gap, 3);
   if (best) {
     s += "; closest: " + best->reading + " (misses by " + fixed(gap(judged(*best)), 3);
-    if (best->shift_sd) s += ", mean shifted " + fixed(*best->shift_sd) + " sd";
+    if (best->shift_sd) s += ", mean shifted " + sd_text(*best->shift_sd) + " sd";
     s += ")";
   }
   return s + unresolved;

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "figures.hpp"
+#include "settings.hpp"
 #include "format.hpp"
 #include "io/atomic_file.hpp"
 #include "io/hdf5.hpp"
@@ -50,46 +51,9 @@ std::string shown(const std::string& p) {
   return rel.empty() ? fs::path(p).filename().string() : rel.string();
 }
 
-// The resolved scene a result ran (its `scene_yaml` attribute), if the result can be read.
-std::optional<dem::SceneConfig> scene_of(const std::string& result) {
-  try {
-    dem::h5::Handle f = dem::h5::open_file_read(result);
-    if (!dem::h5::has_attribute(f, "scene_yaml")) return std::nullopt;
-    return dem::scene_from_text(dem::h5::get_string_attribute(f, "scene_yaml"), result);
-  } catch (const std::exception&) {
-    return std::nullopt;
-  }
-}
-
-const dem::StageConfig* stage_of_type(const dem::SceneConfig& s, dem::StageConfig::Type type) {
-  for (const dem::StageConfig& st : s.stages)
-    if (st.type == type) return &st;
-  return nullptr;
-}
-
-std::string joined(const std::vector<std::string>& v, const std::string& sep) {
-  std::string out;
-  for (const std::string& s : v) out += (out.empty() ? "" : sep) + s;
-  return out;
-}
-
-std::string num(double x) { return validation::number(x); }
-
-// A path as written in a scene ("- TC1\n- {repeat: 5, ...}" or a flow list) on one line: "[TC1, {repeat: 5, ...}]".
-std::string one_line(const std::string& yaml) {
-  std::stringstream in(yaml);
-  std::vector<std::string> items;
-  for (std::string line; std::getline(in, line);) {
-    const auto first = line.find_first_not_of(" \t");
-    if (first == std::string::npos) continue;
-    line = line.substr(first);
-    if (line.rfind("- ", 0) == 0) items.push_back(line.substr(2));
-    else if (items.empty()) items.push_back(line);
-    else items.back() += " " + line;
-  }
-  if (items.size() == 1 && !items[0].empty() && items[0][0] == '[') return items[0];
-  return "[" + joined(items, ", ") + "]";
-}
+using validation::scene_of;
+using validation::stage_of_type;
+using validation::joined;
 
 // ---------------------------------------------------------------------------------------------
 int figures(const std::string& results, const std::string& out, std::string sample, const std::string& references) {
@@ -199,6 +163,17 @@ int figures(const std::string& results, const std::string& out, std::string samp
       if (x.number == t) return &x;
     return nullptr;
   };
+  // Fig. 9: one arrow scale per test across the densities (a panel row of the figure), so that
+  // arrows of different lengths look different: the smallest of the densities' own scales (the one
+  // that keeps the longest increment of any of them at about 0.12).
+  std::map<int, double> fig09_scale;
+  for (int t = 1; t <= 5; ++t)
+    for (const std::string& d : densities)
+      if (const validation::TestResult* test = find_test(chosen->densities.at(d), t)) {
+        const int c2 = std::min(5, validation::last_cycle(test->series));
+        const double sc = validation::arrow_scale(test->series, {1, c2});
+        fig09_scale[t] = fig09_scale.count(t) ? std::min(fig09_scale[t], sc) : sc;
+      }
   std::set<int> targets_done;
   std::vector<Table> fabric_tables, strong_tables;
   for (const std::string& d : densities) {
@@ -243,7 +218,7 @@ int figures(const std::string& results, const std::string& out, std::string samp
       }
       // Fig. 9: cycles 1 and 5 (the last cycle run if fewer), one arrow scale for both.
       const int c2 = std::min(5, validation::last_cycle(s));
-      const double scale = validation::arrow_scale(s, {1, c2});
+      const double scale = fig09_scale.at(t);
       values.number("fig09_scale_" + dt, scale);
       values.number("fig09_cycle5_" + dt, c2);
       for (const auto& [c, tag] : std::vector<std::pair<int, std::string>>{{1, "cycle1"}, {c2, "cycle5"}}) {
@@ -315,69 +290,12 @@ int figures(const std::string& results, const std::string& out, std::string samp
 
 // ---------------------------------------------------------------------------------------------
 int settings(const std::string& results, const std::string& prefix, const std::string& run) {
-  const auto dirs = validation::sample_dirs(results);
-  const std::string dir = dirs.front().second;
-  std::map<std::string, std::string> kv;
-  std::map<std::string, std::vector<std::string>> per_density;
-  bool any = false;
-  // One named run (--run NAME: DIR/NAME.h5) is read as the preparation of a study of one density.
-  for (const std::string& d : run.empty() ? densities : std::vector<std::string>{"run"}) {
-    const auto prep = scene_of((fs::path(dir) / (run.empty() ? prefix + d + "_prepare.h5" : run + ".h5")).string());
-    if (prep) {
-      kv["max_energy_error"] = num(prep->max_energy_error);
-      kv["max_time_step_fraction"] = num(prep->max_time_step_fraction);
-      any = true;
-      per_density["friction_prepare"].push_back(num(dem::friction_coefficient(prep->material.law)));
-      kv["time_step_prepare_s"] = num(prep->time_step_s);
-      kv["grading_basis"] = prep->particles.grading_basis == dem::GradingCurve::Basis::Mass ? "mass" : "count";
-      kv["damping_form"] = prep->damping.form == dem::Damping::Form::Viscous ? "viscous" : "local";
-      kv["damping_translational"] = num(prep->damping.translational);
-      kv["damping_rotational"] = num(prep->damping.rotational);
-      std::visit(
-          [&](const auto& law) {  // the linear law's stiffnesses (other laws name their own constants)
-            using Law = std::decay_t<decltype(law)>;
-            if constexpr (std::is_same_v<typename Law::NormalLaw, dem::LinearNormal>) {
-              kv["kn_N_per_m"] = num(law.normal.kn);
-              if constexpr (Law::has_tangential) kv["ks_N_per_m"] = num(law.tangential.ks);
-            }
-          },
-          prep->material.law);
-      if (prep->particles.kind == dem::ParticleSource::Kind::Lattice) {
-        const dem::LatticeSpec& l = prep->particles.lattice;
-        kv["lattice"] = std::to_string(l.n[0]) + "×" + std::to_string(l.n[1]) + "×" + std::to_string(l.n[2]);
-        kv["particles"] = std::to_string(static_cast<long long>(l.n[0]) * l.n[1] * l.n[2]);
-        kv["lattice_spacing_mm"] = num(1e3 * l.spacing_m);
-      }
-      if (const dem::StageConfig* st = stage_of_type(*prep, dem::StageConfig::Type::Stress)) {
-        kv["target_pressure_kPa"] = num(st->target_Pa.mean() / 1e3);
-        kv["compression_rate_Pa_per_s"] = num(st->stress_rate_Pa_per_s);
-        kv["max_strain_rate_per_s"] = num(st->max_strain_rate_per_s);
-        kv["hold_stress_tolerance"] = num(st->hold.stress_tolerance);
-        kv["hold_unbalanced_force_ratio"] = num(st->hold.unbalanced_force_ratio);
-      }
-    }
-    for (int t = 1; t <= 5; ++t) {
-      const auto test = scene_of((fs::path(dir) / (prefix + d + "_test" + std::to_string(t) + ".h5")).string());
-      if (!test) continue;
-      any = true;
-      if (t == 1 || !kv.count("friction_shear_" + d)) kv["friction_shear_" + d] = num(dem::friction_coefficient(test->material.law));
-      kv["time_step_test_s"] = num(test->time_step_s);
-      if (const dem::StageConfig* st = stage_of_type(*test, dem::StageConfig::Type::StressPath)) {
-        kv["mean_stress_Pa"] = num(st->mean_stress_Pa);
-        kv["stress_ratio"] = num(st->stress_ratio);
-        kv["stress_rate_Pa_per_s"] = num(st->stress_rate_Pa_per_s);
-        kv["test" + std::to_string(t) + "_path"] = one_line(st->path_text);
-      }
-    }
-  }
-  if (!any) {
-    std::fprintf(stderr, "figure-data settings: no result with a scene in %s (%s<density>_prepare.h5 ...)\n", dir.c_str(), prefix.c_str());
+  const std::map<std::string, std::string> kv = validation::run_settings(results, prefix, run);
+  if (kv.empty()) {
+    std::fprintf(stderr, "figure-data settings: no result with a scene in %s (%s<density>_prepare.h5 ...)\n",
+                 validation::sample_dirs(results).front().second.c_str(), prefix.c_str());
     return 1;
   }
-  for (const auto& [k, v] : per_density) kv[k] = joined(v, " / ");
-  for (const std::string& d : densities)
-    if (kv.count("friction_shear_" + d)) per_density["friction_shear"].push_back(kv["friction_shear_" + d]);
-  if (per_density.count("friction_shear")) kv["friction_shear"] = joined(per_density["friction_shear"], " / ");
   for (const auto& [k, v] : kv) std::printf("%s\t%s\n", k.c_str(), v.c_str());
   return 0;
 }

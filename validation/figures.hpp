@@ -87,7 +87,25 @@ Table cycle_stress_path(const Columns& series, int cycle);
 double arrow_scale(const Columns& series, const std::vector<int>& cycles);
 int last_cycle(const Columns& series);
 
-// Energy balance columns of a run, every row.
+// The energy balance of a run, every curve from one common row: the first whose energies are the
+// true state, row 0, unless an engine older than the fix wrote it before any force evaluation
+// (contacts but no elastic energy): then row 1. Work by the cell, dissipation (damping, sliding,
+// rolling) and the change of stored energy (elastic + kinetic) since that row, and the gap
+// work - (dissipated + change of stored), which a closed balance keeps near 0.
+struct EnergyCurves {
+  std::size_t baseline_row = 0;
+  std::vector<double> time_s, work_J, damping_J, friction_J, dissipated_J, stored_change_J, gap_J;
+  double work_total_J() const { return work_J.empty() ? 0 : work_J.back(); }
+  // max |gap| over the run / the run's own work (from the baseline row to the end); NaN without work.
+  double closure_relative_to_work() const;
+  // The first time the gap exceeds `fraction` of the work done by then, once the work is past 1 %
+  // of the run's total (the first rows' tiny work would make any rounding a parting), if ever.
+  std::optional<double> parting_time_s(double fraction) const;
+};
+EnergyCurves energy_curves(const Columns& series);
+
+// The energy figure's data: the curves of energy_curves, every row from the common one, and the
+// engine's own closure error (relative to the stored energy at the start + the work).
 Table energy_balance(const Columns& series);
 
 // Fig. 1: the scene's grading curve, and the one realised in a set of radii (by mass and count).

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include "io/hdf5.hpp"
 
@@ -99,6 +101,23 @@ std::vector<std::pair<std::string, std::string>> sample_dirs(const std::string& 
   std::vector<std::pair<std::string, std::string>> out;
   for (const auto& [seed, name] : seeds) out.emplace_back(name, (fs::path(dir) / name).string());
   if (out.empty()) out.emplace_back("", dir);
+  return out;
+}
+
+std::vector<std::string> listed_samples(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::ifstream runs(fs::path(dir) / "runs.tsv");
+  std::vector<std::string> out;
+  // variant, density, test, run, result, starts_from, may_fail, settings, seed (pipeline/plan/run_plan.cpp)
+  for (std::string line; std::getline(runs, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::vector<std::string> f;
+    std::stringstream ss(line);
+    for (std::string x; std::getline(ss, x, '\t');) f.push_back(x);
+    if (f.size() < 9 || f[8] == "-" || f[8].empty()) continue;
+    const std::string name = "seed" + f[8];
+    if (std::find(out.begin(), out.end(), name) == out.end()) out.push_back(name);
+  }
   return out;
 }
 

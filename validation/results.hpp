@@ -48,6 +48,10 @@ struct Sample {
 // none (a study of one sample).
 std::vector<std::pair<std::string, std::string>> sample_dirs(const std::string& dir);
 
+// The samples a study's DIR/runs.tsv lists (seed<N> from its seed column), in the order met; empty
+// without runs.tsv or without seeds (a study of one sample).
+std::vector<std::string> listed_samples(const std::string& dir);
+
 // load_results of every sample folder.
 std::vector<Sample> load_samples(const std::string& dir, const std::vector<std::string>& densities,
                                  std::vector<std::string>& missing);

@@ -17,6 +17,8 @@ std::vector<Row> load_references(const std::string& file, const std::string& pro
     r.reference = s.number("reference", "", {-1e9, 1e9}, std::nullopt, "reference value");
     r.check = s.choice("check", {"within", "at_least", "at_most"}, std::nullopt, "how measured and reference compare");
     r.tolerance = s.number("tolerance", "", {0, 1e9}, 0.0, "allowed |measured - reference| for check: within");
+    r.resolution = s.number("resolution", "", {0, 1e9}, 0.0,
+                            "the smallest difference that means something (shifts are counted in max(sd, resolution))");
     r.must_pass = s.boolean("must_pass", false, "an inconsistent verdict fails the validation");
     r.reason = s.text("reason", std::nullopt, "why this tolerance");
     r.source = s.text("source", std::nullopt, "table, figure or section of the paper");

@@ -13,6 +13,9 @@ namespace validation {
 struct Row {
   std::string name, quantity, density, check, reason, source;
   double reference = 0, tolerance = 0;
+  // The smallest difference of the quantity that means something (its measurement's resolution):
+  // shifts are counted in units of max(sd, resolution), so a scatter below it cannot inflate them.
+  double resolution = 0;
   int cycle = 0, from_cycle = 0, to_cycle = 0, test = 0;
   bool must_pass = false;
   std::string group;  // the report groups rows (and draws one tornado chart per group)

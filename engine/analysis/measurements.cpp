@@ -38,18 +38,21 @@ ContactCounts count_with(const Law& law, const Simulation& sim, const PairList& 
     const double overlap = rsum - dist;
     const double reduced_radius = Law::needs_reduced_radius ? (p.radius[i] * p.radius[j]) / rsum : 0.0;
     const double fn = law.normal.template force<O>(overlap, reduced_radius);
+    c.elastic_normal_J += law.normal.template energy<O>(fn, overlap);
     Vec3 f = fn / dist * l;
-    double ft = 0;
+    double ft_norm = 0;
     if constexpr (Law::has_tangential) {
-      const Vec3 tangential = scalar_lanes::vec3_of(
-          law.tangential.template force_of<O>(scalar_lanes::lanes_of(history.tangential[k]), overlap, reduced_radius));
+      const auto ft = law.tangential.template force_of<O>(scalar_lanes::lanes_of(history.tangential[k]), overlap, reduced_radius);
+      c.elastic_tangential_J += law.tangential.template energy<O>(ft, overlap, reduced_radius);
+      const Vec3 tangential = scalar_lanes::vec3_of(ft);
       f += tangential;
-      ft = tangential.norm();
+      ft_norm = tangential.norm();
       if (history.sliding[k]) ++c.sliding;
     }
+    if constexpr (Law::has_rolling) c.elastic_rolling_J += law.rolling.template opening_loss<O>(history.rolling[k].squaredNorm());
     if (keep_network) {
       c.pairs.push_back(i), c.pairs.push_back(j);
-      c.tangential_forces_N.push_back(ft);
+      c.tangential_forces_N.push_back(ft_norm);
       c.branches.push_back(l);
     }
     c.stress_Pa += f * l.transpose();

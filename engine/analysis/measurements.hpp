@@ -25,6 +25,9 @@ struct ContactCounts {
   std::vector<std::int64_t> pairs;        // i, j of each contact
   std::vector<double> tangential_forces_N;
   std::vector<Vec3> branches;
+  // The energy the contacts' springs hold at these positions, by the law's own energy functions
+  // [J]: what the time series reports before the first force evaluation of a run (row 0).
+  double elastic_normal_J = 0, elastic_tangential_J = 0, elastic_rolling_J = 0;
 };
 // Surveys the contacts at the current positions: counts, and the stress from the contact law's
 // normal force plus the tangential force its stored history stands for. Evaluated at the state of

@@ -1,7 +1,7 @@
 # One panel of Fig. 9 (called by fig09_strain_increments.gp and fig09_all_tests.gp):
 #   call 'panel_fig09.gp' DENSITY TEST WHICH LABEL     WHICH: 1 = cycle 1, 5 = cycle 5 (or the last run)
 # The arrows start at the measured stress at the end of each leg and are the leg's strain increment
-# in the π-plane times the panel's scale (fig09_scale_<density>_test<t>, the same for both cycles).
+# in the π-plane times the panel's scale (fig09_scale_<density>_test<t>: the same for both cycles and for every density of a test, so arrow lengths compare across a panel row).
 d = ARG1; t = ARG2 + 0; which = ARG3 + 0; lbl = ARG4
 if (!has(d, t)) {
   set title sprintf("%s%s, Test %d, cycle %d", lbl, d, t, which) font ",11"

@@ -1,0 +1,66 @@
+#pragma once
+// The study report (reports/index.md, written by build/bin/report): static text from templates
+// (reports/templates/), every number in it computed here from the results, the validation rows
+// and reference_data/. A figure's note is a template sentence whose numbers come from the same
+// data the figure plots, and whose "as in the paper" / "unlike the paper" comes from the verdict
+// of the validation row about it.
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "figures.hpp"
+#include "results.hpp"
+#include "rows.hpp"
+
+namespace validation {
+
+using Values = std::map<std::string, std::string>;
+
+// `tmpl` with {{key}} replaced by values.at(key) and {{#if key}}A{{else}}B{{/if}} by A when the key
+// is there and not empty, else B ({{else}} optional; blocks nest). An unknown {{key}} throws
+// std::runtime_error naming it (a typo in a template is an error, not an empty gap).
+std::string fill(const std::string& tmpl, const Values& values);
+
+// Numbers as the report writes them.
+// `x` to `digits` significant digits, trailing zeros kept ("0.00016", "0.86", "1.0", "120").
+std::string significant(double x, int digits = 2);
+// "lo–hi" to two significant digits of the larger magnitude, or one value if they print alike.
+std::string range_text(double lo, double hi);
+
+// "as in the paper", "unlike the paper", or "not judged" (the row's verdict; no row: "not judged").
+std::string verdict_phrase(Verdict v);
+
+// What the notes are computed from: the ensemble, the sample the single-run figures show, the
+// rows the validation judges (their verdicts are computed here, on the same samples) and the
+// paper's rows (for the paper's values).
+struct ReportInputs {
+  std::vector<Sample> samples;
+  std::string sample;             // name of the sample of the single-run figures ("" : the first)
+  std::vector<Row> rows;          // the rows judged (the profile's)
+  std::vector<Row> paper;         // every row of reference_data/paper.yaml (the paper's values)
+};
+
+// Every value the figure notes and the energy note use, keyed "figNN.name" (Figs. 2, 3, 4, 6, 7,
+// 10, 11, 13 and "energy.*"); a figure whose data is missing has no keys, and its note says so.
+Values figure_values(const ReportInputs& in);
+
+// The notes of the figures: `notes_tsv` is the template file (file<TAB>sentence); the note of
+// `png` filled from `values`, or a sentence saying which data it lacks.
+std::string figure_note(const std::string& notes_tsv, const std::string& png, const Values& values);
+
+// The energy balance of runs (name, time series), each from its common row: work, change of
+// stored energy, dissipation, the largest gap relative to the run's own work and the engine's
+// closure error (relative to the stored energy at the start plus the work).
+std::string energy_table(const std::vector<std::pair<std::string, const Columns*>>& runs);
+
+// Every row now against an earlier baseline's validation.json: mean ± sd and verdict before and
+// now, and the shift of the mean in units of max(earlier sd, the row's resolution).
+std::string baseline_table(const nlohmann::json& before, const std::vector<Row>& rows, const std::vector<Sample>& samples);
+
+// q/p at state A (the start of shearing: the first row of the sample's first test) of every sample.
+std::string state_a_table(const std::vector<Sample>& samples);
+
+}  // namespace validation
