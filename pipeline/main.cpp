@@ -26,20 +26,6 @@ const char* footer =
     "study files share the -j slots: one study's runs fill the cores while another's last runs finish.\n"
     "Paths on the command line are relative to the current folder; paths in a study file to that file.";
 
-// The engine's source hash and result schema: what a result's reuse depends on.
-std::string engine_version(const std::string& dem) {
-  std::string cmd = "'" + dem + "' --source-hash";
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return "";
-  char buf[256] = {0};
-  const bool ok = std::fgets(buf, sizeof buf, p) != nullptr;
-  const int rc = pclose(p);
-  if (!ok || rc != 0) return "";
-  std::string v = buf;
-  while (!v.empty() && (v.back() == '\n' || v.back() == '\r')) v.pop_back();
-  return v;
-}
-
 // The executor the study files name (pipeline --executor wins): local if none does; files that
 // name different ones are refused, since one call runs all their runs together.
 std::string chosen_executor(const std::vector<pipeline::Study>& studies) {
@@ -141,7 +127,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (dem.empty()) dem = (fs::canonical("/proc/self/exe").parent_path() / "dem").string();
-  const std::string version = engine_version(dem);
+  const std::string version = pipeline::engine_version(dem);  // no shell sees the path
   if (version.empty()) { std::fprintf(stderr, "pipeline: cannot run the engine '%s --source-hash'\n", dem.c_str()); return 2; }
   try {
     // Every study is planned (its scenes checked) and the studies joined (no two runs writing one
@@ -160,6 +146,8 @@ int main(int argc, char** argv) {
     }
     const std::vector<pipeline::PlannedRun> runs = pipeline::join_studies(plans);
     if (executor.empty()) executor = chosen_executor(studies);
+    std::vector<std::unique_ptr<dem::FileLock>> locks;  // one pipeline per results folder, until this one ends
+    for (const std::string& o : outs) locks.push_back(pipeline::lock_results_folder(o));
     for (std::size_t i = 0; i < plans.size(); ++i) {
       pipeline::write_scenes(plans[i].runs);
       pipeline::write_manifest(plans[i].runs, studies[i], outs[i]);

@@ -335,8 +335,8 @@ RunFile read_run(const std::string& result) {
   RunFile f;
   f.series = validation::read_columns(result, "timeseries");
   dem::h5::Handle h = dem::h5::open_file_read(result);
-  if (dem::h5::has_attribute(h, "scene_yaml")) {
-    f.scene = dem::scene_from_text(dem::h5::get_string_attribute(h, "scene_yaml"), result);
+  if (dem::h5::has_text(h, "scene_yaml")) {  // a dataset (schema 3) or an attribute (before)
+    f.scene = dem::scene_from_text(dem::h5::read_text(h, "scene_yaml"), result);
     for (const dem::StageConfig& st : f.scene->stages)
       if (dem::h5::has_attribute(h, "stage_end_" + st.name)) f.stage_end[st.name] = dem::h5::get_string_attribute(h, "stage_end_" + st.name);
   }
@@ -675,7 +675,7 @@ std::vector<CyclicRun> cyclic_runs(const std::string& results) {
     }
     try {
       RunFile f = read_run(l.result);
-      if (!f.scene) throw std::runtime_error(l.result + ": no resolved scene (attribute scene_yaml)");
+      if (!f.scene) throw std::runtime_error(l.result + ": no resolved scene (scene_yaml)");
       r.stage = control_stage(*f.scene);
       if (r.stage < 0) throw std::runtime_error(l.result + ": its scene has no control stage");
       const dem::StageConfig& st = f.scene->stages[static_cast<std::size_t>(r.stage)];

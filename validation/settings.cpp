@@ -18,12 +18,12 @@ std::string num(double x) { return number(x); }
 
 }  // namespace
 
-// The resolved scene a result ran (its `scene_yaml` attribute), if the result can be read.
+// The resolved scene a result ran (its `scene_yaml`), if the result can be read.
 std::optional<dem::SceneConfig> scene_of(const std::string& result) {
   try {
     dem::h5::Handle f = dem::h5::open_file_read(result);
-    if (!dem::h5::has_attribute(f, "scene_yaml")) return std::nullopt;
-    return dem::scene_from_text(dem::h5::get_string_attribute(f, "scene_yaml"), result);
+    if (!dem::h5::has_text(f, "scene_yaml")) return std::nullopt;  // a dataset (schema 3) or an attribute (before)
+    return dem::scene_from_text(dem::h5::read_text(f, "scene_yaml"), result);
   } catch (const std::exception&) {
     return std::nullopt;
   }

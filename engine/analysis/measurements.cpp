@@ -132,10 +132,14 @@ double mean_diameter(const Particles& p) {
   return p.size() ? d / static_cast<double>(p.size()) : 0.0;
 }
 
+double max_strain_rate(const CellRates& rates) {
+  return std::max(rates.axial.cwiseAbs().maxCoeff(), rates.shear.cwiseAbs().maxCoeff());
+}
+
 double inertial_number(const Simulation& sim, double p) {
   if (p <= 0) return 0.0;
   const Particles& parts = sim.particles();
-  return sim.strain_rate().cwiseAbs().maxCoeff() * mean_diameter(parts) * std::sqrt(sim.material().density_kg_per_m3 / p);
+  return max_strain_rate(sim.rates()) * mean_diameter(parts) * std::sqrt(sim.material().density_kg_per_m3 / p);
 }
 
 }  // namespace dem

@@ -47,9 +47,18 @@ double rotational_kinetic_energy(const Particles& p);     // [J]
 
 double mean_diameter(const Particles& p);  // [m]
 
-// Inertial number I = max_k |rate_k| d_mean sqrt(rho / p) with the last applied strain rates and
-// the mean stress p given; 0 if p <= 0.
+// The largest rate of the cell's deformation: max over all six components of |rate|, the three
+// axial strain rates and the three engineering shear strain rates (simple shear at rate g has
+// the shear rate g of the inertial number's definition, GDR MiDi 2004). [1/s]
+double max_strain_rate(const CellRates& rates);
+
+// Inertial number I = max_strain_rate d_mean sqrt(rho / p) with the last applied rates (every
+// component, shear included) and the mean stress p given; 0 if p <= 0.
 double inertial_number(const Simulation& sim, double p_Pa);
+
+// Above this the loading is not quasi-static (GDR MiDi 2004: I < 1e-3); a stage warns when a
+// stress path's leg or a control stage goes above it.
+inline constexpr double quasi_static_inertial_number = 1e-3;
 
 double mean_stress(const Mat3& stress_Pa);        // p = tr(sigma) / 3
 double deviator_stress(const Mat3& stress_Pa);    // q = sqrt(((s1-s2)^2 + (s2-s3)^2 + (s1-s3)^2) / 2), principal values

@@ -64,7 +64,7 @@ const std::vector<SeriesColumn>& series_columns() {
       {"unbalanced_force_ratio", "1", "mean |net force| / mean normal contact force"},
       {"kinetic_energy_translational", "J", "of the fluctuating velocities"},
       {"kinetic_energy_rotational", "J", ""},
-      {"inertial_number", "1", "max|strain rate| d_mean sqrt(rho/p)"},
+      {"inertial_number", "1", "max|strain rate| d_mean sqrt(rho/p), over the axial and shear rates"},
       {"strain_rate_1", "1/s", "applied in the last step, compression positive"},
       {"strain_rate_2", "1/s", ""},
       {"strain_rate_3", "1/s", ""},

@@ -28,6 +28,7 @@
 #include "io/hdf5.hpp"
 #include "io/result_writer.hpp"  // describe_failure
 #include "io/state_io.hpp"
+#include "io/file_lock.hpp"
 #include "run/output_path.hpp"
 #include "run/run_scene.hpp"
 #include "source_hash.hpp"
@@ -126,19 +127,16 @@ int run(const RunArgs& args) {
   // One writer per result: a second `dem run` to the same --out refuses instead of writing into
   // the same partial file and checkpoint. The lock goes with the process, however it ends; names
   // another result's files use (.partial, ...) are refused above, so it covers the whole family.
-  const std::string lock_path = out + ".lock";
-  const int lock = open(lock_path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
-  const int lock_errno = errno;
-  if (lock < 0 || flock(lock, LOCK_EX | LOCK_NB) != 0) {
+  // The lock file is removed however the run ends (refused, failed or complete): io/file_lock.hpp.
+  const dem::FileLock lock(out + ".lock");
+  if (!lock.held()) {
     std::fprintf(stderr, "error: --out %s: %s; nothing was run\n", out.c_str(),
-                 lock < 0 ? ("cannot create the lock file " + lock_path + ": " + std::strerror(lock_errno)).c_str()
-                          : ("another dem run is writing this result (it holds " + lock_path + ")").c_str());
+                 (lock.error().empty() ? "another dem run is writing this result (it holds " + out + ".lock)" : lock.error()).c_str());
     return 2;
   }
   try {
     dem::check_output_replaceable(out, scene, input_hash, force);
   } catch (const dem::OutputPathError& e) {
-    unlink(lock_path.c_str());  // held: nothing of this run is left
     return refused(e);
   }
   omp_set_num_threads(threads);
@@ -164,7 +162,6 @@ int run(const RunArgs& args) {
     line.clear();
     std::fprintf(stderr, "%s: %lld steps in %.1f s (%.3g steps/s) -> %s\n", scene.name.c_str(),
                  static_cast<long long>(s.steps), s.wall_time_s, static_cast<double>(s.steps) / s.wall_time_s, out.c_str());
-    unlink(lock_path.c_str());  // still held: a run waiting for it would find the result complete
     return 0;
   } catch (const dem::ConfigError& e) {
     unlink(lock_path.c_str());  // still held: a refused run leaves no lock file behind

@@ -1,7 +1,11 @@
 #include "config/yaml_section.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <set>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -52,7 +56,92 @@ std::string scalar_text(const YAML::Node& n) {
   return "nothing";
 }
 
+// The text of a failed number: ", got 'x' (line n)" and why, if known.
+std::string got_number(const YAML::Node& n, const std::string& why, const std::string& where_text) {
+  return ", got " + scalar_text(n) + where_text + (why.empty() ? "" : ": " + why);
+}
+
 }  // namespace
+
+namespace {
+// Splits a decimal numeral: sign, digits before the point, digits after, exponent digits.
+// False if `t` is not [+-]digits[.digits][e[+-]digits] / [+-].digits[e...] / [+-]digits.[e...].
+bool decimal_form(const std::string& t, bool integer_only, std::string& int_digits, std::string& frac_digits) {
+  std::size_t i = 0;
+  if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
+  const auto digits = [&](std::string& into) {
+    const std::size_t from = i;
+    while (i < t.size() && t[i] >= '0' && t[i] <= '9') ++i;
+    into = t.substr(from, i - from);
+  };
+  digits(int_digits);
+  if (integer_only) return !int_digits.empty() && i == t.size();
+  if (i < t.size() && t[i] == '.') ++i, digits(frac_digits);
+  if (int_digits.empty() && frac_digits.empty()) return false;
+  if (i < t.size() && (t[i] == 'e' || t[i] == 'E')) {
+    ++i;
+    if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
+    std::string exponent;
+    digits(exponent);
+    if (exponent.empty()) return false;
+  }
+  return i == t.size();
+}
+
+std::string leading_zero(const std::string& t, const std::string& int_digits) {
+  if (int_digits.size() < 2 || int_digits[0] != '0') return "";
+  std::string plain = t;  // the same number without its leading zeros
+  const std::size_t at = plain.find(int_digits), zeros = int_digits.find_first_not_of('0');
+  plain.erase(at, (zeros == std::string::npos ? int_digits.size() - 1 : zeros));
+  return "a leading zero is refused (YAML 1.1 reads it as octal, other readers as decimal; numbers here are decimal): write " + plain;
+}
+}  // namespace
+
+bool parse_decimal(const std::string& t, double& x, std::string& why) {
+  why.clear();
+  static const std::set<std::string> nan = {".nan", ".NaN", ".NAN"};
+  static const std::set<std::string> inf = {".inf", ".Inf", ".INF", "+.inf", "+.Inf", "+.INF"};
+  static const std::set<std::string> minus_inf = {"-.inf", "-.Inf", "-.INF"};
+  if (nan.count(t)) return x = std::numeric_limits<double>::quiet_NaN(), true;
+  if (inf.count(t)) return x = std::numeric_limits<double>::infinity(), true;
+  if (minus_inf.count(t)) return x = -std::numeric_limits<double>::infinity(), true;
+  std::string int_digits, frac_digits;
+  if (!decimal_form(t, false, int_digits, frac_digits)) {
+    if (t.size() > 2 && t[0] == '0' && (t[1] == 'x' || t[1] == 'X' || t[1] == 'o')) why = "hexadecimal and octal forms are refused; numbers are decimal";
+    return false;
+  }
+  if (!(why = leading_zero(t, int_digits)).empty()) return false;
+  errno = 0;
+  char* end = nullptr;
+  x = std::strtod(t.c_str(), &end);
+  if (errno == ERANGE && std::isinf(x)) {
+    why = "beyond the largest double (1.8e308)";
+    return false;
+  }
+  const bool nonzero = (int_digits + frac_digits).find_first_not_of('0') != std::string::npos;
+  if (x == 0 && nonzero) {
+    why = "below the smallest positive double (4.9e-324): it would read as 0; write 0 if 0 is meant";
+    return false;
+  }
+  return true;
+}
+
+bool parse_decimal_integer(const std::string& t, long long& x, std::string& why) {
+  why.clear();
+  std::string int_digits, unused;
+  if (!decimal_form(t, true, int_digits, unused)) {
+    if (t.size() > 2 && t[0] == '0' && (t[1] == 'x' || t[1] == 'X' || t[1] == 'o')) why = "hexadecimal and octal forms are refused; numbers are decimal";
+    return false;
+  }
+  if (!(why = leading_zero(t, int_digits)).empty()) return false;
+  errno = 0;
+  x = std::strtoll(t.c_str(), nullptr, 10);
+  if (errno == ERANGE) {
+    why = "beyond the largest integer";
+    return false;
+  }
+  return true;
+}
 
 Section::Section(YAML::Node node, std::string file, std::string path)
     : node_(std::move(node)), file_(std::move(file)), path_(std::move(path)) {
@@ -215,8 +304,9 @@ double Section::number(const std::string& key, const std::string& unit, Range ra
     fail_missing(key, "a number in " + range_text(range) + (unit.empty() ? "" : " " + unit));
   }
   double x = 0;
-  if (!n.IsScalar() || !YAML::convert<double>::decode(n, x))
-    fail(key, "must be a number" + (unit.empty() ? "" : " [" + unit + "]") + ", got " + scalar_text(n) + where(n));
+  std::string why;
+  if (!n.IsScalar() || !parse_decimal(n.Scalar(), x, why))
+    fail(key, "must be a number" + (unit.empty() ? "" : " [" + unit + "]") + got_number(n, why, where(n)));
   const bool below = range.min_open ? !(x > range.min) : !(x >= range.min);
   const bool above = range.max_open ? !(x < range.max) : !(x <= range.max);
   if (!std::isfinite(x) || below || above)
@@ -234,8 +324,9 @@ std::int64_t Section::integer(const std::string& key, std::int64_t min, std::int
     fail_missing(key, "an " + allowed);
   }
   long long x = 0;
-  if (!n.IsScalar() || !YAML::convert<long long>::decode(n, x))
-    fail(key, "must be an " + allowed + ", got " + scalar_text(n) + where(n));
+  std::string why;
+  if (!n.IsScalar() || !parse_decimal_integer(n.Scalar(), x, why))
+    fail(key, "must be an " + allowed + got_number(n, why, where(n)));
   if (x < min || x > max) fail(key, "must be an " + allowed + ", got " + n.Scalar() + where(n));
   return x;
 }
@@ -303,8 +394,9 @@ std::vector<double> Section::numbers(const std::string& key, const std::string& 
     double x = 0;
     const YAML::Node item = n[i];
     const std::string item_key = key + "[" + std::to_string(i) + "]";
-    if (!item.IsScalar() || !YAML::convert<double>::decode(item, x))
-      fail(item_key, "must be a number, got " + scalar_text(item) + where(item));
+    std::string why;
+    if (!item.IsScalar() || !parse_decimal(item.Scalar(), x, why))
+      fail(item_key, "must be a number" + got_number(item, why, where(item)));
     const bool below = range.min_open ? !(x > range.min) : !(x >= range.min);
     const bool above = range.max_open ? !(x < range.max) : !(x <= range.max);
     if (!std::isfinite(x) || below || above)

@@ -30,6 +30,15 @@ std::map<std::string, KeyDoc>& key_docs();
 // throws ConfigError naming `file` if the path does not fit the document. Returns the node set.
 YAML::Node apply_override(YAML::Node root, const std::string& file, const std::string& path, const std::string& value);
 
+// Numbers are read one way everywhere (scene keys, --set, study files, seeds): decimal. A number
+// is [+-]digits[.digits][e[+-]digits] (or .digits, or YAML's .inf / .nan, which the ranges then
+// refuse); an integer is [+-]digits. Refused, with `why` saying so: a leading zero before a digit
+// (YAML 1.1 reads 010 as octal 8, a decimal reader as 10: neither is assumed), hexadecimal or any
+// other form, a value that overflows (1e400) or a non-zero value that underflows to 0 (1e-400;
+// a subnormal such as 4.9e-324 is kept). Both return false when `text` is not such a number.
+bool parse_decimal(const std::string& text, double& x, std::string& why);
+bool parse_decimal_integer(const std::string& text, long long& x, std::string& why);
+
 struct Range {
   double min, max;
   bool min_open = false;  // true: value must be > min rather than >= min

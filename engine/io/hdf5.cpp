@@ -1,6 +1,8 @@
 #include "io/hdf5.hpp"
 
 #include <algorithm>
+#include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -319,6 +321,181 @@ void FrameSeries<T>::append_frames(const std::vector<T>& values) {
 
 template class FrameSeries<double>;
 template class FrameSeries<std::int64_t>;
+
+void write_text(hid_t parent, const std::string& name, const std::string& text) {
+  if (exists(parent, name)) check(H5Ldelete(parent, name.c_str(), H5P_DEFAULT), "replacing dataset " + name);
+  Handle type(checked(H5Tcopy(H5T_C_S1), "string type"));
+  check(H5Tset_size(type, std::max<std::size_t>(1, text.size())), "string type");
+  check(H5Tset_cset(type, H5T_CSET_UTF8), "string type");
+  Handle space(checked(H5Screate(H5S_SCALAR), "dataspace of " + name));
+  Handle ds(checked(H5Dcreate2(parent, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), "creating dataset " + name));
+  std::string padded = text;
+  padded.resize(std::max<std::size_t>(1, text.size()), '\0');
+  check(H5Dwrite(ds, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, padded.data()), "writing dataset " + name);
+}
+
+bool has_text(hid_t parent, const std::string& name) { return exists(parent, name) || has_attribute(parent, name); }
+
+std::string read_text(hid_t parent, const std::string& name) {
+  if (!exists(parent, name)) {
+    if (has_attribute(parent, name)) return get_string_attribute(parent, name);  // schema 2
+    throw Error("HDF5: dataset '" + name + "' is missing");
+  }
+  Handle ds(checked(H5Dopen2(parent, name.c_str(), H5P_DEFAULT), "opening dataset " + name));
+  Handle type(checked(H5Dget_type(ds), "type of " + name));
+  if (H5Tget_class(type) != H5T_STRING || H5Tis_variable_str(type) > 0)
+    throw Error("HDF5: dataset '" + name + "' is not a fixed-length string");
+  Handle space(H5Dget_space(ds));
+  if (H5Sget_simple_extent_type(space) != H5S_SCALAR) throw Error("HDF5: dataset '" + name + "' is not a scalar");
+  std::string value(H5Tget_size(type), '\0');
+  // Read as the file's own type: no conversion (which would put a terminator in the last byte).
+  check(H5Dread(ds, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, value.data()), "reading dataset " + name);
+  while (!value.empty() && value.back() == '\0') value.pop_back();
+  return value;
+}
+
+namespace {
+Handle variable_string_type() {
+  Handle type(checked(H5Tcopy(H5T_C_S1), "string type"));
+  check(H5Tset_size(type, H5T_VARIABLE), "string type");
+  check(H5Tset_cset(type, H5T_CSET_UTF8), "string type");
+  return type;
+}
+}  // namespace
+
+void append_texts(hid_t parent, const std::string& name, const std::vector<std::string>& items) {
+  if (items.empty()) return;
+  Handle type = variable_string_type();
+  Handle ds;
+  hsize_t old_size = 0;
+  if (exists(parent, name)) {
+    ds = Handle(checked(H5Dopen2(parent, name.c_str(), H5P_DEFAULT), "opening dataset " + name));
+    Handle space(H5Dget_space(ds));
+    H5Sget_simple_extent_dims(space, &old_size, nullptr);
+  } else {
+    const hsize_t zero = 0, unlimited = H5S_UNLIMITED, chunk = 64;
+    Handle space(checked(H5Screate_simple(1, &zero, &unlimited), "dataspace of " + name));
+    Handle props(checked(H5Pcreate(H5P_DATASET_CREATE), "properties of " + name));
+    check(H5Pset_chunk(props, 1, &chunk), "chunking " + name);
+    ds = Handle(checked(H5Dcreate2(parent, name.c_str(), type, space, H5P_DEFAULT, props, H5P_DEFAULT), "creating dataset " + name));
+  }
+  const hsize_t count = items.size(), new_size = old_size + count;
+  check(H5Dset_extent(ds, &new_size), "extending dataset " + name);
+  Handle file_space(checked(H5Dget_space(ds), "dataspace of " + name));
+  check(H5Sselect_hyperslab(file_space, H5S_SELECT_SET, &old_size, nullptr, &count, nullptr), "selecting in " + name);
+  Handle mem_space(checked(H5Screate_simple(1, &count, nullptr), "dataspace of " + name));
+  std::vector<const char*> pointers;
+  for (const std::string& item : items) pointers.push_back(item.c_str());
+  check(H5Dwrite(ds, type, mem_space, file_space, H5P_DEFAULT, pointers.data()), "writing dataset " + name);
+}
+
+std::vector<std::string> read_texts(hid_t parent, const std::string& name) {
+  std::vector<std::string> out;
+  if (!exists(parent, name)) {
+    if (!has_attribute(parent, name)) throw Error("HDF5: dataset '" + name + "' is missing");
+    const std::string text = get_string_attribute(parent, name);  // schema 2: one warning per line
+    std::size_t from = 0;
+    for (std::size_t nl; (nl = text.find('\n', from)) != std::string::npos; from = nl + 1) out.push_back(text.substr(from, nl - from));
+    if (from < text.size()) out.push_back(text.substr(from));
+    return out;
+  }
+  Handle ds(checked(H5Dopen2(parent, name.c_str(), H5P_DEFAULT), "opening dataset " + name));
+  Handle file_type(checked(H5Dget_type(ds), "type of " + name));
+  if (H5Tget_class(file_type) != H5T_STRING || H5Tis_variable_str(file_type) <= 0)
+    throw Error("HDF5: dataset '" + name + "' is not a list of variable-length strings");
+  Handle space(H5Dget_space(ds));
+  if (H5Sget_simple_extent_ndims(space) != 1) throw Error("HDF5: dataset '" + name + "' is not 1-D");
+  hsize_t n = 0;
+  H5Sget_simple_extent_dims(space, &n, nullptr);
+  if (n == 0) return out;
+  Handle type = variable_string_type();
+  std::vector<char*> pointers(n, nullptr);
+  check(H5Dread(ds, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()), "reading dataset " + name);
+  for (char* p : pointers) out.emplace_back(p ? p : "");
+  H5Dvlen_reclaim(type, space, H5P_DEFAULT, pointers.data());
+  return out;
+}
+
+namespace {
+
+struct Fnv {
+  std::uint64_t h = 14695981039346656037ULL;
+  void add(const void* data, std::size_t n) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < n; ++i) h = (h ^ p[i]) * 1099511628211ULL;
+  }
+  void add(const std::string& s) {
+    const std::uint64_t n = s.size();
+    add(&n, sizeof n);  // the length first: "ab"+"c" and "a"+"bc" differ
+    add(s.data(), s.size());
+  }
+};
+
+// The bytes of a dataset or an attribute of `type` and `space`, read by `read(memtype, buf)`.
+template <class Read>
+void add_values(Fnv& d, hid_t type, hid_t space, Read read, const std::string& what) {
+  const hssize_t points = H5Sget_select_npoints(space);
+  if (points < 0) throw Error(failed("size of " + what));
+  if (H5Tget_class(type) == H5T_STRING && H5Tis_variable_str(type) > 0) {
+    std::vector<char*> strings(static_cast<std::size_t>(points), nullptr);
+    if (points > 0) check(read(type, strings.data()), "reading " + what);
+    for (char* p : strings) d.add(std::string(p ? p : ""));
+    if (points > 0) H5Dvlen_reclaim(type, space, H5P_DEFAULT, strings.data());
+    return;
+  }
+  std::vector<unsigned char> bytes(static_cast<std::size_t>(points) * H5Tget_size(type));
+  if (!bytes.empty()) check(read(type, bytes.data()), "reading " + what);
+  d.add(std::string(bytes.begin(), bytes.end()));
+}
+
+struct DigestWalk {
+  Fnv d;
+  std::string skip_object, skip_attribute;
+  std::vector<std::string> paths;
+};
+
+herr_t collect_path(hid_t, const char* name, const H5L_info_t*, void* data) {
+  static_cast<DigestWalk*>(data)->paths.emplace_back(name);
+  return 0;
+}
+
+void add_object(DigestWalk& w, hid_t file, const std::string& path) {
+  Handle obj(checked(H5Oopen(file, path.c_str(), H5P_DEFAULT), "opening " + path));
+  w.d.add(path);
+  // Attributes, in name order.
+  std::vector<std::string> names;
+  const auto collect = [](hid_t, const char* name, const H5A_info_t*, void* data) -> herr_t {
+    static_cast<std::vector<std::string>*>(data)->emplace_back(name);
+    return 0;
+  };
+  hsize_t at = 0;
+  check(H5Aiterate2(obj, H5_INDEX_NAME, H5_ITER_INC, &at, collect, &names), "listing the attributes of " + path);
+  for (const std::string& name : names) {
+    if (path == w.skip_object && name == w.skip_attribute) continue;
+    Handle attr(checked(H5Aopen(obj, name.c_str(), H5P_DEFAULT), "opening attribute " + name));
+    Handle type(checked(H5Aget_type(attr), "type of attribute " + name));
+    Handle space(checked(H5Aget_space(attr), "dataspace of attribute " + name));
+    w.d.add(name);
+    add_values(w.d, type, space, [&](hid_t t, void* buf) { return H5Aread(attr, t, buf); }, "attribute " + name + " of " + path);
+  }
+  if (H5Iget_type(obj) != H5I_DATASET) return;
+  Handle type(checked(H5Dget_type(obj), "type of " + path));
+  Handle space(checked(H5Dget_space(obj), "dataspace of " + path));
+  add_values(w.d, type, space, [&](hid_t t, void* buf) { return H5Dread(obj, t, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf); }, path);
+}
+
+}  // namespace
+
+std::string digest(hid_t file, const std::string& skip_object, const std::string& skip_attribute) {
+  DigestWalk w;
+  w.skip_object = skip_object, w.skip_attribute = skip_attribute;
+  check(H5Lvisit(file, H5_INDEX_NAME, H5_ITER_INC, collect_path, &w), "listing the file's objects");
+  add_object(w, file, "/");
+  for (const std::string& p : w.paths) add_object(w, file, p);
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(w.d.h));
+  return buf;
+}
 
 std::vector<hsize_t> shape(hid_t parent, const std::string& name) {
   if (!exists(parent, name)) throw Error("HDF5: dataset '" + name + "' is missing");

@@ -67,6 +67,24 @@ double get_double_attribute(hid_t obj, const std::string& name);
 std::int64_t get_int_attribute(hid_t obj, const std::string& name);
 bool has_attribute(hid_t obj, const std::string& name);
 
+// Text of any size, as a dataset: an attribute's object header holds at most 64 KiB, which a long
+// resolved scene or many warnings exceed (issue 38). write_text writes (or replaces) a scalar
+// fixed-length string dataset; read_text reads it, or, in a file written before schema 3, the
+// attribute of that name on `parent`. append_texts grows a 1-D dataset of variable-length
+// strings (chunked, unlimited: one item per call's element, nothing rewritten); read_texts reads
+// it, or splits at newlines such an older attribute.
+void write_text(hid_t parent, const std::string& name, const std::string& text);
+std::string read_text(hid_t parent, const std::string& name);
+bool has_text(hid_t parent, const std::string& name);  // a dataset or (schema 2) an attribute of that name
+void append_texts(hid_t parent, const std::string& name, const std::vector<std::string>& items);
+std::vector<std::string> read_texts(hid_t parent, const std::string& name);
+
+// A digest (FNV-1a 64, core/content_hash.hpp) of everything in an open file: every object's
+// path, every attribute's name and bytes and every dataset's bytes (variable-length strings by
+// their text), in name order; the attribute `skip_attribute` of the object `skip_object` is left
+// out (it holds the digest). Any value changed changes it.
+std::string digest(hid_t file, const std::string& skip_object, const std::string& skip_attribute);
+
 // A whole dataset of rows x cols values (cols = 1 writes a 1-D dataset). The unit goes into the
 // attribute `unit_key`: `units` in our own groups, `unit` in H5MD ones.
 template <class T>

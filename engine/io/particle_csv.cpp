@@ -1,5 +1,8 @@
 #include "io/particle_csv.hpp"
 
+#include "config/yaml_section.hpp"
+
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -17,11 +20,24 @@ std::string trim(const std::string& s) {
 }
 }  // namespace
 
-void read_particle_csv(const std::string& file, const PeriodicCell& cell, double density_kg_per_m3, Particles& particles) {
+std::string read_whole_file(const std::string& file) {
   std::error_code ec;
   if (std::filesystem::is_directory(file, ec)) throw std::runtime_error(file + ": is a directory, expected a CSV file");
-  std::ifstream in(file);
+  std::ifstream in(file, std::ios::binary);
   if (!in) throw std::runtime_error(file + ": cannot be read");
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  if (in.bad()) throw std::runtime_error(file + ": cannot be read");
+  return bytes.str();
+}
+
+void read_particle_csv(const std::string& file, const PeriodicCell& cell, double density_kg_per_m3, Particles& particles) {
+  parse_particle_csv(read_whole_file(file), file, cell, density_kg_per_m3, particles);
+}
+
+void parse_particle_csv(const std::string& text, const std::string& file, const PeriodicCell& cell, double density_kg_per_m3,
+                        Particles& particles) {
+  std::istringstream in(text);
   std::string line;
   if (!std::getline(in, line)) throw std::runtime_error(file + ": the file is empty (expected header x,y,z,radius)");
   {
@@ -41,15 +57,15 @@ void read_particle_csv(const std::string& file, const PeriodicCell& cell, double
     std::string field;
     while (std::getline(ss, field, ',')) {
       const std::string t = trim(field);
-      std::size_t used = 0;
       double x = 0;
-      try {
-        x = std::stod(t, &used);
-      } catch (const std::exception&) {
-        used = 0;
-      }
-      if (t.empty() || used != t.size())
-        throw std::runtime_error(file + ": line " + std::to_string(line_no) + ": '" + t + "' is not a number");
+      std::string why;  // numbers are read one way everywhere: decimal (config/yaml_section.hpp)
+      std::string word = t.substr(!t.empty() && (t[0] == '+' || t[0] == '-') ? 1 : 0);
+      for (char& ch : word) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+      if (word == "nan" || word == "inf" || word == "infinity")
+        throw std::runtime_error(file + ": line " + std::to_string(line_no) + ": non-finite value '" + t + "'");
+      if (t.empty() || !parse_decimal(t, x, why))
+        throw std::runtime_error(file + ": line " + std::to_string(line_no) + ": '" + t + "' is not a number" +
+                                 (why.empty() ? "" : " (" + why + ")"));
       if (!std::isfinite(x))
         throw std::runtime_error(file + ": line " + std::to_string(line_no) + ": non-finite value '" + t + "'");
       v.push_back(x);

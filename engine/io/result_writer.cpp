@@ -50,7 +50,7 @@ ResultWriter::ResultWriter(std::string out_path, const SceneConfig& scene)
     h5::set_attribute(file_, "software_version", std::string(software_version));
     h5::set_attribute(file_, "schema_version", static_cast<std::int64_t>(schema_version));
     h5::set_attribute(file_, "scene_file", scene.file);
-    h5::set_attribute(file_, "scene_yaml", scene.resolved_yaml);
+    h5::write_text(file_, "scene_yaml", scene.resolved_yaml);  // a dataset: no size limit
     h5::set_attribute(file_, "damping_form", std::string(scene.damping.form == Damping::Form::Viscous ? "viscous" : "local"));
     tables_.emplace_back(file_, "timeseries", series_columns());
     tables_.emplace_back(file_, "legs", leg_columns());
@@ -71,7 +71,6 @@ ResultWriter::ResultWriter(std::string out_path, const SceneConfig& scene, const
     tables_.emplace_back(file_, "timeseries", series_columns(), ColumnTable::Reopen{});
     tables_.emplace_back(file_, "legs", leg_columns(), ColumnTable::Reopen{});
     if (h5::exists(file_, "particles/all")) frames_ = std::make_unique<H5mdWriter>(file_);
-    if (h5::has_attribute(file_, "warnings")) warnings_ = h5::get_string_attribute(file_, "warnings");
     h5::flush_file(file_, partial_);
   } catch (const std::exception& e) {
     fail(describe_failure(e));
@@ -96,11 +95,14 @@ void ResultWriter::set_attribute(const std::string& name, const std::string& val
   h5::set_attribute(file_, name, value);
 }
 
-void ResultWriter::add_warning(const std::string& warning) { warnings_ += warning + "\n"; }
+void ResultWriter::add_warning(const std::string& warning) { warnings_.push_back(warning); }
 
 void ResultWriter::write_pending() {
   for (ColumnTable& t : tables_) t.flush();
-  if (!warnings_.empty()) h5::set_attribute(file_, "warnings", warnings_);
+  // Appended, never rewritten: any number of warnings of any length (an attribute stopped a run
+  // at 64 KiB of them, issue 38).
+  h5::append_texts(file_, "warnings", warnings_);
+  warnings_.clear();
 }
 
 void ResultWriter::flush() {

@@ -50,7 +50,7 @@ class ResultWriter {
 
   void append_row(const std::vector<double>& row);  // /timeseries; flushed every `flush_rows` rows
   void append_leg(const std::vector<double>& row);  // /legs (stress-path stages)
-  void add_warning(const std::string& warning);     // kept in the `warnings` attribute
+  void add_warning(const std::string& warning);     // appended to the dataset /warnings (one string each)
   void set_attribute(const std::string& name, const std::string& value);  // a root attribute
   void flush();  // everything so far is written to the file (checked; not fsync'd) when it returns
   void write_state(const class Simulation& sim);
@@ -74,7 +74,7 @@ class ResultWriter {
   h5::Handle file_;
   std::vector<ColumnTable> tables_;  // [0] time series, [1] legs
   std::unique_ptr<H5mdWriter> frames_;  // created by the first frame
-  std::string warnings_;
+  std::vector<std::string> warnings_;  // not yet written
   bool done_ = false;
   bool closed_cleanly_ = false;  // the file was closed without error (fail() may reopen it)
 };

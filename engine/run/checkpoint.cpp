@@ -162,13 +162,10 @@ StageCursor read_cursor(hid_t g, const std::string& file) {
 
 std::string checkpoint_path(const std::string& out_path) { return out_path + ".checkpoint"; }
 
-std::string run_identity(const SceneConfig& scene, const std::string& input_hash) {
+std::string run_identity(const SceneConfig& scene, const std::string& input_hash, const std::string& source_bytes) {
   std::ostringstream text;
   text << engine_source_hash << " schema " << schema_version << "\n" << input_hash << "\n" << scene.resolved_yaml;
-  if (scene.particles.kind != ParticleSource::Kind::Lattice) {
-    std::ifstream in(scene.particles.path, std::ios::binary);
-    text << "\n" << in.rdbuf();
-  }
+  if (scene.particles.kind != ParticleSource::Kind::Lattice) text << "\n" << source_bytes;
   return content_hash(text.str());
 }
 
@@ -189,6 +186,10 @@ void write_checkpoint(const std::string& partial_path, const std::string& out_pa
       write_list(state, sim.verlet_list().saved(), sim.history());
       write_energy(state, sim.energy());
       write_cursor(h5::create_group(g, "cursor"), cursor);
+      h5::flush_file(f, tmp);
+      // The checksum of everything in the checkpoint, read back from the file: one value changed
+      // afterwards (an edit, a flipped bit) and read_checkpoint refuses it.
+      h5::set_attribute(g, "checksum", h5::digest(f, "checkpoint", "checksum"));
       h5::flush_file(f, tmp);  // checked while the groups are open: closing them then writes nothing
     }
     h5::close_file(f, tmp);
@@ -215,6 +216,12 @@ Checkpoint read_checkpoint(const std::string& file) {
     c.list = read_list(state, file, c.state.particles.size(), c.list_history);
     c.energy = read_energy(state, file);
     c.cursor = read_cursor(h5::open_group(g, "cursor"), file);
+    // Last, so that a value out of range is named as such; any other change is caught here.
+    if (!h5::has_attribute(g, "checksum")) throw h5::Error(file + ": /checkpoint has no checksum (written before checksums)");
+    const std::string recorded = h5::get_string_attribute(g, "checksum"), found = h5::digest(f, "checkpoint", "checksum");
+    if (found != recorded)
+      throw h5::Error(file + ": checksum " + found + " differs from the one written with it, " + recorded +
+                      ": the checkpoint was changed after it was written (an edit or a damaged disk)");
     return c;
   });
 }

@@ -6,7 +6,8 @@
 // The checkpoint of RESULT.h5 is RESULT.h5.checkpoint: a copy of RESULT.h5.partial at that moment
 // (time series, legs, particle frames and warnings so far, all flushed) plus one group:
 //
-//   /checkpoint             attributes identity, step, time, wall_time_s (of the run so far)
+//   /checkpoint             attributes identity, step, time, wall_time_s (of the run so far),
+//                           checksum (of the whole file but this attribute)
 //     state/                particles, cell and strain rate as in a result's /state, plus the
 //                           whole Verlet list (verlet_*) and the energy balance (energy_*)
 //     cursor/               where the stage loop is (run/run_scene.hpp, StageCursor)
@@ -19,7 +20,11 @@
 // checkpoint are dropped and written again, with the same values.
 //
 // A checkpoint resumes only the run that wrote it: its identity hashes the engine source, the
-// resolved scene, the pipeline's input hash and the bytes of the particle source file.
+// resolved scene, the pipeline's input hash and the bytes of the particle source file. And only as
+// written: /checkpoint@checksum is a digest of everything else in the file (h5::digest), so one
+// value changed afterwards makes read_checkpoint refuse it (dem run then starts over with a
+// warning, or, with --resume, stops with exit 2 naming the checkpoint).
+
 #include <string>
 
 #include "io/state_io.hpp"
@@ -38,7 +43,8 @@ struct Checkpoint {
 };
 
 std::string checkpoint_path(const std::string& out_path);  // out_path + ".checkpoint"
-std::string run_identity(const SceneConfig& scene, const std::string& input_hash);
+// `source_bytes`: the particle file's bytes (read_particle_source), read once by the run.
+std::string run_identity(const SceneConfig& scene, const std::string& input_hash, const std::string& source_bytes);
 
 // Writes the checkpoint of `out_path` from its partial file (which the caller has flushed); throws
 // std::runtime_error "checkpoint at step N not written: <reason>" (see above).

@@ -118,12 +118,12 @@ void check_output_replaceable(const std::string& out, const SceneConfig& scene, 
   try {
     h5::Handle f = h5::open_file_read(out);
     const std::string status = h5::has_attribute(f, "status") ? h5::get_string_attribute(f, "status") : "";
-    if (status.empty() || !h5::has_attribute(f, "scene_yaml")) {
+    if (status.empty() || !h5::has_text(f, "scene_yaml")) {
       holds = "a file that is not a dem result";
     } else if (status != "complete") {
       holds = "a result with status '" + status + "'";
     } else {
-      const std::string yaml = h5::get_string_attribute(f, "scene_yaml");
+      const std::string yaml = h5::read_text(f, "scene_yaml");
       const std::string hash = h5::has_attribute(f, "input_hash") ? h5::get_string_attribute(f, "input_hash") : "";
       const std::string file = h5::has_attribute(f, "scene_file") ? h5::get_string_attribute(f, "scene_file") : "?";
       if (yaml == scene.resolved_yaml && hash == input_hash) return;  // this scene's: a run again replaces it

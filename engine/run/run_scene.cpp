@@ -1,5 +1,6 @@
 #include "run/run_scene.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -21,7 +22,44 @@
 
 namespace dem {
 
-Simulation build_simulation(const SceneConfig& scene) {
+namespace {
+const char* source_key(const ParticleSource& src) {
+  return src.kind == ParticleSource::Kind::Lattice ? "particles.lattice/grading"
+         : src.kind == ParticleSource::Kind::Csv   ? "particles.csv"
+                                                    : "particles.state";
+}
+}  // namespace
+
+std::string read_particle_source(const SceneConfig& scene) {
+  const ParticleSource& src = scene.particles;
+  if (src.kind == ParticleSource::Kind::Lattice) return "";
+  try {
+    if (src.kind == ParticleSource::Kind::State) {
+      // HDF5 reads the file itself, by seeking: only a regular file. One that cannot be read is
+      // left to read_state, whose message says why (not found, not HDF5, ...).
+      std::error_code ec;
+      const auto type = std::filesystem::status(src.path, ec).type();
+      if (type == std::filesystem::file_type::not_found || type == std::filesystem::file_type::directory || ec) return "";
+      if (type != std::filesystem::file_type::regular)
+        throw std::runtime_error(src.path + ": not a regular file (a FIFO, device or socket): a saved state is an HDF5 file, "
+                                 "read by seeking in it; give a regular file");
+      try {
+        return read_whole_file(src.path);
+      } catch (const std::runtime_error&) {
+        return "";
+      }
+    }
+    return read_whole_file(src.path);
+  } catch (const std::bad_alloc&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw ConfigError(scene.file + ": " + source_key(src) + ": " + e.what());
+  }
+}
+
+Simulation build_simulation(const SceneConfig& scene) { return build_simulation(scene, read_particle_source(scene)); }
+
+Simulation build_simulation(const SceneConfig& scene, const std::string& source_bytes) {
   const ParticleSource& src = scene.particles;
   Particles particles;
   PeriodicCell cell;
@@ -34,7 +72,7 @@ Simulation build_simulation(const SceneConfig& scene) {
         break;
       case ParticleSource::Kind::Csv:
         cell = PeriodicCell(src.cell_m);
-        read_particle_csv(src.path, cell, scene.material.density_kg_per_m3, particles);
+        parse_particle_csv(source_bytes, src.path, cell, scene.material.density_kg_per_m3, particles);
         break;
       case ParticleSource::Kind::State:
         saved = read_state(src.path);
@@ -45,10 +83,7 @@ Simulation build_simulation(const SceneConfig& scene) {
   } catch (const std::bad_alloc&) {
     throw;  // not bad input: the run failed (exit 1), "out of memory"
   } catch (const std::exception& e) {
-    const char* key = src.kind == ParticleSource::Kind::Lattice ? "particles.lattice/grading"
-                      : src.kind == ParticleSource::Kind::Csv   ? "particles.csv"
-                                                                 : "particles.state";
-    throw ConfigError(scene.file + ": " + key + ": " + e.what());
+    throw ConfigError(scene.file + ": " + source_key(src) + ": " + e.what());
   }
   const double dt_crit = critical_time_step(scene.material.law, particles, scene.material.density_kg_per_m3);
   if (scene.time_step_s > scene.max_time_step_fraction * dt_crit) {
@@ -180,10 +215,18 @@ void run_stress_stage(Simulation& sim, const SceneConfig& scene, int index, cons
       if (h.met && at_rest) return;
     }
     if (done >= max_steps) {
+      // Measured now, at the last step (the hold's last check may be up to check_interval steps
+      // old, or, if the ramp never ended, never made).
+      const HoldStatus now = hold_status(sim, st);
+      const Vec3 reached = sim.sums().stress_Pa.diagonal();
       std::ostringstream msg;
       msg << "stage '" << st.name << "' did not reach equilibrium within hold.max_duration = " << st.hold.max_duration_s
-          << " s: largest stress error " << 100 * hold.stress_error << " % (allowed " << 100 * st.hold.stress_tolerance
-          << " %), unbalanced force ratio " << hold.unbalanced << " (allowed " << st.hold.unbalanced_force_ratio << ")";
+          << " s: stresses " << reached[0] << ", " << reached[1] << ", " << reached[2] << " Pa against targets "
+          << st.target_Pa[0] << ", " << st.target_Pa[1] << ", " << st.target_Pa[2] << " Pa, largest stress error "
+          << 100 * now.stress_error << " % (allowed " << 100 * st.hold.stress_tolerance << " %), unbalanced force ratio "
+          << now.unbalanced_force_ratio << " (allowed " << st.hold.unbalanced_force_ratio << ")";
+      if (t_done < ramp_end)
+        msg << "; the ramp itself needs " << ramp_end << " s at rate = " << st.stress_rate_Pa_per_s << " Pa/s";
       if (creep) msg << ", creep rate " << hold.creep_rate << " 1/s (allowed " << st.hold.creep_rate_per_s << ")";
       throw StageError(msg.str());
     }
@@ -246,7 +289,7 @@ void run_stress_path_stage(Simulation& sim, const SceneConfig& scene, int index,
       const double p_now = s.trace() / 3;
       if (p_now > 0)
         rec.max_inertial_number = std::max(rec.max_inertial_number,
-                                           sim.strain_rate().cwiseAbs().maxCoeff() * inertia_scale / std::sqrt(p_now));
+                                           max_strain_rate(sim.rates()) * inertia_scale / std::sqrt(p_now));
       ++done_steps;
       const bool last = i + 1 == n;
       if (hooks.row && (last || output_due(sim, scene)))
@@ -260,7 +303,7 @@ void run_stress_path_stage(Simulation& sim, const SceneConfig& scene, int index,
     rec.end_step = sim.step_count();
     rec.rms_error = (sum_sq / static_cast<double>(n)).cwiseSqrt() / p;
     if (hooks.leg) hooks.leg(rec);
-    if (hooks.warning && rec.max_inertial_number > 1e-3) {
+    if (hooks.warning && rec.max_inertial_number > quasi_static_inertial_number) {
       std::ostringstream msg;
       msg << "stage '" << st.name << "' leg " << leg.index << " (cycle " << leg.cycle << "): inertial number reached "
           << rec.max_inertial_number << " > 1e-3, the loading is not quasi-static";
@@ -275,6 +318,35 @@ double component_strain(const PeriodicCell& cell, int k) { return k < 3 ? cell.s
 
 // The mean stress of the two axes other than k.
 double lateral_stress(const Mat3& s, int k) { return 0.5 * (s((k + 1) % 3, (k + 1) % 3) + s((k + 2) % 3, (k + 2) % 3)); }
+
+// The stress targets of a control stage that its end stress `s` misses by more than
+// control_target_tolerance of their scale (the largest of |target|, the mean stress at the end
+// and at the stage start p0, so that a zero shear target is judged against p): "" when none does. The cycled component (`cycled`)
+// moves by design and is not judged.
+constexpr double control_target_tolerance = 0.25;
+std::string missed_targets(const Mat3& s, double p0, const StageConfig& st, int cycled) {
+  static const int row[6] = {0, 1, 2, 0, 0, 1}, col[6] = {0, 1, 2, 1, 2, 2};
+  const double p = s.trace() / 3;
+  std::ostringstream msg;
+  const auto judge = [&](const std::string& what, double reached, double target) {
+    const double scale = std::max({std::abs(target), std::abs(p), std::abs(p0)});
+    if (std::abs(reached - target) > control_target_tolerance * scale)
+      msg << (msg.tellp() > 0 ? "; " : "") << what << " reached " << reached << " Pa against its target " << target << " Pa";
+  };
+  for (int k = 0; k < 6; ++k) {
+    const AxisTarget& t = st.control.component[static_cast<std::size_t>(k)];
+    if (t.mode == AxisTarget::Mode::Stress && k != cycled)
+      judge(std::string("stress ") + component_names[static_cast<std::size_t>(k)], s(row[k], col[k]), t.stress_Pa);
+  }
+  if (st.control.constraint.kind == CellConstraint::Kind::ConstantMeanStress)
+    judge("the mean stress (constant_mean_stress)", p, st.control.constraint.mean_stress_Pa);
+  if (msg.tellp() == 0) return "";
+  std::ostringstream out;
+  out << msg.str() << ": the stage did not reach what it was asked (more than " << control_target_tolerance * 100
+      << " % off); a target beyond what max_strain_rate = " << st.max_strain_rate_per_s
+      << " 1/s reaches in the stage's duration, or a loading too fast for the servo";
+  return out.str();
+}
 
 void run_control_stage(Simulation& sim, const SceneConfig& scene, int index, const StageHooks& hooks,
                        const StageCursor* resume) {
@@ -302,13 +374,18 @@ void run_control_stage(Simulation& sim, const SceneConfig& scene, int index, con
     return component_strain(sim.cell(), k) - start.strain_at_start[static_cast<std::size_t>(k)];
   };
   double low = start.cycle_low, high = start.cycle_high;
+  // The largest inertial number of the stage (every rate component), carried by a checkpoint.
+  const double inertia_scale = mean_diameter(sim.particles()) * std::sqrt(sim.material().density_kg_per_m3);
+  double max_inertial = resume ? resume->max_inertial_number : 0.0;
   const double omega = cyclic ? 2 * std::numbers::pi / cyc.period_s : 0;
   const auto cycle_of = [&](std::int64_t step) { return static_cast<int>(std::floor(static_cast<double>(step) * dt / cyc.period_s)) + 1; };
   std::string ended = "duration reached";
+  bool liquefied = false;
   for (std::int64_t i = resume ? resume->i : 0; i < n; ++i) {
     if (i > 0 && checkpoint_due(hooks, sim)) {
       StageCursor here = start;
       here.stage = index, here.i = i, here.servo = servo.state(), here.cycle_low = low, here.cycle_high = high;
+      here.max_inertial_number = max_inertial;
       hooks.checkpoint(sim, here);
     }
     CellControl control = st.control;
@@ -338,6 +415,7 @@ void run_control_stage(Simulation& sim, const SceneConfig& scene, int index, con
       if (cycle_of(i + 1) > cycle) low = high = e;  // the next step starts a cycle
     }
     const double p = sim.sums().stress_Pa.trace() / 3;
+    if (p > 0) max_inertial = std::max(max_inertial, max_strain_rate(sim.rates()) * inertia_scale / std::sqrt(p));
     if (st.until.pore_pressure_ratio > 0 && p0 > 0 && 1 - p / p0 >= st.until.pore_pressure_ratio) stop = "pore_pressure_ratio";
     if (st.until.strain > 0 && std::abs(strain_since_start(st.until.component)) >= st.until.strain) stop = "strain";
     if (hooks.row && (output_due(sim, scene) || !stop.empty() || i + 1 == n)) hooks.row(sim, where);
@@ -352,10 +430,24 @@ void run_control_stage(Simulation& sim, const SceneConfig& scene, int index, con
       why << "until." << stop << " met at time " << sim.time() << " s";
       if (cyclic) why << " after " << static_cast<double>(i + 1) * dt / cyc.period_s << " cycles";
       ended = why.str();
+      liquefied = stop == "pore_pressure_ratio" || stop == "double_amplitude_strain";
       break;
     }
   }
   if (hooks.attribute) hooks.attribute("stage_end_" + st.name, ended);
+  if (hooks.warning && max_inertial > quasi_static_inertial_number) {
+    std::ostringstream msg;
+    msg << "stage '" << st.name << "': inertial number reached " << max_inertial << " > 1e-3, the loading is not quasi-static";
+    hooks.warning(msg.str());
+  }
+  // Were the stress targets reached? A target the stage never got near (beyond the cell's
+  // strain-rate cap in its duration, or a mean stress that ran away) fails the stage instead of
+  // ending it as if done. A liquefied sample (until.pore_pressure_ratio, double_amplitude_strain)
+  // cannot hold its targets: that end is the outcome asked for.
+  if (!liquefied) {
+    const std::string miss = missed_targets(sim.sums().stress_Pa, p0, st, cyclic ? kc : -1);
+    if (!miss.empty()) throw StageError("stage '" + st.name + "' (" + ended + "): " + miss);
+  }
 }
 
 }  // namespace
@@ -484,8 +576,9 @@ RunSummary run_scene(const SceneConfig& scene, const std::string& out_path, cons
                      const std::string& input_hash, Resume resume) {
   using clock = std::chrono::steady_clock;
   auto start = clock::now();
-  Simulation sim = build_simulation(scene);  // all input checks happen before the output file exists
-  const std::string identity = run_identity(scene, input_hash);
+  const std::string source_bytes = read_particle_source(scene);  // the particle file, read once
+  Simulation sim = build_simulation(scene, source_bytes);       // all input checks happen before the output file exists
+  const std::string identity = run_identity(scene, input_hash, source_bytes);
   std::optional<Checkpoint> from = checkpoint_to_resume(scene, out_path, identity, resume, observer);
   std::unique_ptr<ResultWriter> writer;
   // From here on every failure, whatever it is (a stage, a full disk, memory), is written into the

@@ -11,9 +11,18 @@
 
 namespace dem {
 
+// The bytes of the scene's particle file (particles.csv or particles.state; "" for a lattice),
+// read once: a run parses and hashes these same bytes, so a FIFO as the CSV file works and a file
+// changed between the two cannot give a run the identity of other particles. Throws ConfigError
+// naming the scene key (a directory, an unreadable file, a state file that is not a regular file:
+// HDF5 seeks in it).
+std::string read_particle_source(const SceneConfig& scene);
+
 // Builds the simulation of a scene. Refuses (ConfigError) a time step above
-// max_time_step_fraction x the critical step, giving both numbers.
+// max_time_step_fraction x the critical step, giving both numbers. The first form reads the
+// particle file itself; the second parses `source_bytes` from read_particle_source.
 Simulation build_simulation(const SceneConfig& scene);
+Simulation build_simulation(const SceneConfig& scene, const std::string& source_bytes);
 
 struct StageProgress {
   int stage = 0;

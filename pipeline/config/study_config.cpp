@@ -23,6 +23,25 @@ void require_file(const dem::Section& s, const std::string& key, const std::stri
   if (!std::filesystem::is_regular_file(path, ec)) s.fail(key, "no such file: " + path);
 }
 
+// Every name of a study that becomes part of a file name (densities, tests, variants: results,
+// scenes and logs are <out>/<variant>_<density>_<test>.h5, ...) is checked here, once: one path
+// component of its own, so that two names can never map to one file (`loose` and `x/../loose`)
+// nor a run write outside its study's folder. Refused: empty, a separator (/ or \), `..`
+// anywhere, a leading dot (hidden files, `.` and `..`), control characters (a tab or newline would
+// also break runs.tsv).
+void check_path_name(const dem::Section& s, const std::string& key, const std::string& name) {
+  std::string why;
+  if (name.empty()) why = "is empty";
+  else if (name.find_first_of("/\\") != std::string::npos) why = "contains a path separator";
+  else if (name.find("..") != std::string::npos) why = "contains '..'";
+  else if (name[0] == '.') why = "starts with a dot";
+  else if (std::any_of(name.begin(), name.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; }))
+    why = "contains a control character";
+  if (!why.empty())
+    s.fail(key, "'" + name + "' " + why + "; it becomes part of file names (results, scenes, logs), so it must be one plain "
+                "name: no / or \\, no '..', no leading dot, no control characters");
+}
+
 // A mapping of scene key paths to values (`numerics.time_step: 2.0e-6`, `stages[0].rate: 4.0e6`),
 // as `dem run --set` takes them. The keys' form is checked here; whether each is a scene key is
 // checked when the plan parses the resolved scenes (the engine's parser names what is allowed).
@@ -66,15 +85,24 @@ std::vector<std::int64_t> read_seeds(dem::Section& s, const std::vector<std::int
   }
   const YAML::Node n = s.raw("seeds", "an integer in [1, 1000] or a list of distinct integers >= 0", doc);
   std::vector<std::int64_t> out;
+  // Decimal, as every number (dem::parse_decimal_integer): `010` is refused, not octal 8.
+  const auto integer = [&](const YAML::Node& e) {
+    long long v = 0;
+    std::string why;
+    if (!e.IsScalar() || !dem::parse_decimal_integer(e.Scalar(), v, why))
+      s.fail("seeds", "must be an integer in [1, 1000] or a list of integers >= 0, got " +
+                          (e.IsScalar() ? "'" + e.Scalar() + "'" : std::string("a list or mapping")) + (why.empty() ? "" : ": " + why));
+    return v;
+  };
   try {
     if (n.IsScalar()) {
-      const long long count = n.as<long long>();
+      const long long count = integer(n);
       if (count < 1 || count > 1000) s.fail("seeds", "must be in [1, 1000], got " + n.Scalar());
       for (long long i = 1; i <= count; ++i) out.push_back(i);
     } else if (n.IsSequence() && n.size() > 0) {
       std::set<std::int64_t> seen;
       for (const YAML::Node& e : n) {
-        const long long seed = e.as<long long>();
+        const long long seed = integer(e);
         if (seed < 0) s.fail("seeds", "seeds must be >= 0, got " + e.Scalar());
         if (!seen.insert(seed).second) s.fail("seeds", "seed " + e.Scalar() + " is listed twice");
         out.push_back(seed);
@@ -104,6 +132,33 @@ const std::vector<std::pair<std::vector<std::string>, std::string>>& pipeline_sb
   return options;
 }
 
+// Which of the pipeline's own options `arg` sets, as sbatch reads it ("" if none): sbatch parses
+// with getopt_long, which takes any unambiguous prefix of a long option (`--outp=x` is --output)
+// and a cluster of short flags (`-vJ name` is -v -J name). A long prefix of an owned option is
+// refused even where it is ambiguous (sbatch would refuse it too). Returns "set by <owner>
+// (<option>)" to name what was recognised.
+std::string pipeline_owned_option(const std::string& arg) {
+  if (arg.rfind("--", 0) == 0) {
+    const std::string option = arg.substr(0, arg.find('='));
+    if (option.size() < 3) return "";
+    for (const auto& [names, owner] : pipeline_sbatch_options())
+      for (const std::string& name : names)
+        if (name.rfind("--", 0) == 0 && name.compare(0, option.size(), option) == 0)
+          return "set by " + owner + (option == name ? "" : " (" + option + " abbreviates " + name + ")");
+    return "";
+  }
+  // Short options: the flags that take no value may be followed by more options in one cluster.
+  static const std::string flags = "hHkOQsuvVW";
+  for (std::size_t i = 1; i < arg.size(); ++i) {
+    const std::string option = std::string("-") + arg[i];
+    for (const auto& [names, owner] : pipeline_sbatch_options())
+      if (std::find(names.begin(), names.end(), option) != names.end())
+        return "set by " + owner + (i == 1 ? "" : " (" + option + " in the cluster " + arg + ")");
+    if (flags.find(arg[i]) == std::string::npos) break;  // the rest is this option's value
+  }
+  return "";
+}
+
 SlurmOptions read_slurm(dem::Section& root) {
   SlurmOptions o;
   dem::Section s = root.optional_child("slurm", "options of the SLURM executor (pipeline --executor slurm)");
@@ -127,11 +182,8 @@ SlurmOptions read_slurm(dem::Section& root) {
       const std::string arg = a.IsScalar() ? a.Scalar() : "";
       if (arg.size() < 2 || arg[0] != '-')
         s.fail("sbatch_args", "'" + arg + "' is not an sbatch option (write each as one item, e.g. --mem=4G)");
-      const std::string option = arg.rfind("--", 0) == 0 ? arg.substr(0, arg.find('=')) : arg.substr(0, 2);
-      for (const auto& [names, owner] : pipeline_sbatch_options())
-        if (std::find(names.begin(), names.end(), option) != names.end())
-          s.fail("sbatch_args", "'" + arg + "' is set by " + owner +
-                                    "; allowed: other sbatch options (--qos, --mem, --constraint, --gres, ...)");
+      if (const std::string owned = pipeline_owned_option(arg); !owned.empty())
+        s.fail("sbatch_args", "'" + arg + "' is " + owned + "; allowed: other sbatch options (--qos, --mem, --constraint, --gres, ...)");
       o.sbatch_args.push_back(arg);
     }
   } else {
@@ -199,7 +251,8 @@ Study load_study(const std::string& file) {
   std::set<std::string> names;
   for (dem::Section& d : root.list("densities", "the samples: name and friction during preparation")) {
     Density den;
-    den.name = d.text("name", std::nullopt, "sample name (loose, medium, dense)");
+    den.name = d.text("name", std::nullopt, "sample name (loose, medium, dense); part of file names");
+    check_path_name(d, "name", den.name);
     den.friction = d.number("friction", "", {0, 10}, std::nullopt, "mu during isotropic compression");
     d.finish();
     if (!names.insert(den.name).second) d.fail("name", "duplicate name '" + den.name + "'");
@@ -211,7 +264,8 @@ Study load_study(const std::string& file) {
   if (!has_variants || root.has("tests")) tests = root.list("tests", "the cyclic tests: name and scene file");
   for (dem::Section& t : tests) {
     TestCase tc;
-    tc.name = t.text("name", std::nullopt, "test name");
+    tc.name = t.text("name", std::nullopt, "test name; part of file names");
+    check_path_name(t, "name", tc.name);
     tc.scene = resolve(file, t.text("scene", std::nullopt, "scene file of the test, relative to the study file"));
     require_file(t, "scene", tc.scene);
     tc.set = read_overrides(t, "set", true, "scene overrides of this test in every variant");
@@ -248,6 +302,7 @@ Study load_study(const std::string& file) {
     for (dem::Section& v : root.list("variants", "settings of the study, each a set of scene overrides")) {
       Variant var;
       var.name = v.text("name", std::nullopt, "variant name (letters, digits, _ and -; part of the run names)");
+      check_path_name(v, "name", var.name);
       if (!std::regex_match(var.name, name_re)) v.fail("name", "must be letters, digits, _ and -, got '" + var.name + "'");
       if (!variant_names.insert(var.name).second) v.fail("name", "duplicate name '" + var.name + "'");
       var.set = read_overrides(v, "set", false, "scene overrides of the preparation and the tests");

@@ -1,12 +1,14 @@
 #include "exec/scheduler.hpp"
 
 #include <fcntl.h>
+#include <spawn.h>
 #include <sys/prctl.h>
 #include <sys/wait.h>
 #include <csignal>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -16,6 +18,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "config/yaml_section.hpp"
 #include "exec/tracker.hpp"
 #include "io/hdf5.hpp"
 
@@ -87,6 +90,56 @@ std::optional<Stop> recorded_stop(const std::string& result, const std::string& 
   auto s = read_stop(result);
   if (s && s->input_hash == hash) return s;
   return std::nullopt;
+}
+
+std::unique_ptr<dem::FileLock> lock_results_folder(const std::string& out_dir) {
+  std::filesystem::create_directories(out_dir);
+  const std::string path = (std::filesystem::path(out_dir) / ".pipeline.lock").string();
+  auto lock = std::make_unique<dem::FileLock>(path);
+  if (!lock->held()) {
+    if (!lock->error().empty()) throw dem::ConfigError(out_dir + ": " + lock->error());
+    std::string holder = dem::FileLock::read_note(path);
+    while (!holder.empty() && holder.back() == '\n') holder.pop_back();
+    throw dem::ConfigError("another pipeline is running in " + out_dir + (holder.empty() ? "" : " (" + holder + ")") +
+                           ": two would run the same runs at once and write the same logs; wait for it to end, or stop it "
+                           "(it resumes where it stopped); nothing was run");
+  }
+  char host[256] = {0};
+  gethostname(host, sizeof host - 1);
+  lock->note("pid " + std::to_string(getpid()) + " on " + host + "\n");
+  return lock;
+}
+
+std::string engine_version(const std::string& dem) {
+  int out[2];
+  if (pipe2(out, O_CLOEXEC) != 0) return "";
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, out[1], STDOUT_FILENO);
+  std::string path = dem, flag = "--source-hash";
+  char* argv[] = {path.data(), flag.data(), nullptr};
+  pid_t pid = -1;
+  const int spawned = posix_spawn(&pid, path.c_str(), &actions, nullptr, argv, environ);
+  posix_spawn_file_actions_destroy(&actions);
+  close(out[1]);
+  std::string text;
+  if (spawned == 0) {
+    char buf[256];
+    for (ssize_t n; (n = read(out[0], buf, sizeof buf)) != 0;) {
+      if (n < 0 && errno == EINTR) continue;
+      if (n < 0) break;
+      text.append(buf, static_cast<std::size_t>(n));
+    }
+  }
+  close(out[0]);
+  if (spawned != 0) return "";
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) return "";
+  text = text.substr(0, text.find('\n'));
+  while (!text.empty() && text.back() == '\r') text.pop_back();
+  return text;
 }
 
 namespace {

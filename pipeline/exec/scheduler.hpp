@@ -6,10 +6,12 @@
 // stops with a message (refused input, exit 2; or a failed run, exit 1) is an outcome: recorded in
 // <result>.outcome with its input hash, reused like a result, and not a failure of the study.
 // What the SLURM executor (exec/slurm.hpp) shares with it is in exec/tracker.hpp.
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "io/file_lock.hpp"
 #include "plan/run_plan.hpp"
 
 namespace pipeline {
@@ -22,6 +24,18 @@ struct Outcome {
   bool interrupted = false;  // SIGINT/SIGTERM stopped the SLURM executor (it cancelled its jobs)
   double wall_time_s = 0;
 };
+
+// The engine's source hash and result schema (`dem --source-hash`), what a result's reuse depends
+// on; "" if `dem` cannot be run or fails. The path goes to the kernel as one argument
+// (posix_spawn), never through a shell: any folder name works, none is run as a command.
+std::string engine_version(const std::string& dem);
+
+// One pipeline per results folder: holds <out_dir>/.pipeline.lock (io/file_lock.hpp; created with
+// the folder, removed when the pipeline ends). A second pipeline on the same folder would run the
+// same runs at once (dem refuses the second writer of a result, so runs the first finishes are
+// reported FAILED by the second) and write into the same logs; it is refused instead
+// (dem::ConfigError naming the folder and the holder's pid, exit 2), before it writes anything.
+std::unique_ptr<dem::FileLock> lock_results_folder(const std::string& out_dir);
 
 // True if `result` is a complete result whose `input_hash` attribute equals `hash`.
 bool up_to_date(const std::string& result, const std::string& hash);

@@ -36,7 +36,7 @@ void copy_result(const PlannedRun& from, const PlannedRun& to) {
     dem::h5::Handle f = dem::h5::open_file_write(partial);
     dem::h5::set_attribute(f, "input_hash", to.hash);
     dem::h5::set_attribute(f, "scene_file", to.scene_file);
-    dem::h5::set_attribute(f, "scene_yaml", to.scene_text);
+    dem::h5::write_text(f, "scene_yaml", to.scene_text);
     dem::h5::set_attribute(f, "copied_from", from.result);
   }
   std::filesystem::rename(partial, to.result);

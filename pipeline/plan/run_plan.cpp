@@ -37,8 +37,13 @@ void cap_repeats(YAML::Node scene, int max_repeat) {
   if (max_repeat <= 0 || !scene["stages"] || !scene["stages"].IsSequence()) return;
   for (YAML::Node stage : scene["stages"]) {
     if (!stage["path"] || !stage["path"].IsSequence()) continue;
-    for (YAML::Node item : stage["path"])
-      if (item.IsMap() && item["repeat"] && item["repeat"].as<int>() > max_repeat) item["repeat"] = max_repeat;
+    for (YAML::Node item : stage["path"]) {
+      long long n = 0;
+      std::string why;  // read as the engine reads it; a count it refuses is left for it to refuse
+      if (item.IsMap() && item["repeat"] && item["repeat"].IsScalar() && dem::parse_decimal_integer(item["repeat"].Scalar(), n, why) &&
+          n > max_repeat)
+        item["repeat"] = max_repeat;
+    }
   }
 }
 
@@ -119,6 +124,12 @@ auto in_context(const Study& study, const std::string& where, F&& f) {
 // lattice), so the hashes of such runs are what they were before files were hashed.
 std::string read_files(const dem::SceneConfig& scene) {
   if (scene.particles.kind == dem::ParticleSource::Kind::Lattice) return "";
+  // Read here for the hash and again by dem: a FIFO or device would give its bytes to one of them.
+  std::error_code ec;
+  if (fs::exists(scene.particles.path, ec) && !fs::is_regular_file(scene.particles.path, ec))
+    throw dem::ConfigError(scene.file + ": particles: " + scene.particles.path +
+                           " is not a regular file (a FIFO, device or folder): the pipeline reads it for the input hash and "
+                           "dem reads it again; give a regular file");
   std::ifstream in(scene.particles.path, std::ios::binary);
   std::stringstream bytes;
   bytes << in.rdbuf();

@@ -3,9 +3,9 @@
 
     python3 tests/clients/h5py_client.py DEM RESULT.h5
 
-Checked: the status attribute, the units attribute of each column read (and the `name [unit]`
-header of `dem table`), several /timeseries columns and a /legs column against `dem table` (and
-`dem table --legs`), and the particle count of
+Checked: the status attribute, the resolved scene and the warnings (datasets), the units attribute
+of each column read (and the `name [unit]` header of `dem table`), several /timeseries columns and
+a /legs column against `dem table` (and `dem table --legs`), and the particle count of
 the H5MD frames against `dem state`. `dem table` prints 10 significant digits (%.10g), so a value
 read by h5py may differ from its printed form by at most half a unit in the 10th digit:
 |h5py - table| <= 5e-10 |h5py|. (Python is a client here only: the project's code is C++.)
@@ -48,6 +48,12 @@ def main():
     dem, result = sys.argv[1], sys.argv[2]
     with h5py.File(result, "r") as f:
         assert text(f.attrs["status"]) == "complete", f"status {f.attrs['status']!r}"
+        # The resolved scene is a dataset (schema 3), a string of any length; the warnings, if any,
+        # a list of strings.
+        scene = text(f["scene_yaml"][()])
+        assert scene.startswith("name: ") and "\nstages:" in scene, f"scene_yaml {scene[:80]!r}"
+        warnings = [text(w) for w in f["warnings"][()]] if "warnings" in f else []
+        assert all(w for w in warnings), "an empty warning"
         n_rows = compare(f["timeseries"], dem, result, SERIES)
         n_legs = compare(f["legs"], dem, result, LEGS, legs=True)
         assert n_rows > 2 and n_legs > 0, "the result should have rows and legs"

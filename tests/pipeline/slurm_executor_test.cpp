@@ -129,6 +129,43 @@ TEST_CASE("slurm: the executor and slurm: keys of a study", "[pipeline][slurm]")
   }
 }
 
+TEST_CASE("slurm: every spelling sbatch reads as an option the pipeline sets is refused", "[pipeline][slurm][input]") {
+  // Issue 38: `--outp=x`, `--wra=x`, `--dep=x` passed the refusal list, but sbatch (getopt_long)
+  // takes any unambiguous prefix of a long option: they are --output, --wrap, --dependency. The
+  // class swept: every prefix of every long option the pipeline sets (from "--" and one letter up
+  // to the whole name; a short prefix that is ambiguous, which sbatch refuses too, is refused as
+  // well), with and without a value, and every short one alone, with its value attached, and
+  // after flags in one cluster (`-vJ name` is -v -J name). The list is sbatch's options that the
+  // pipeline writes into each job (pipeline/README.md, "On a cluster"), written out here.
+  const fs::path dir = study_dir("slurm_prefixes");
+  const std::vector<std::string> owned_long = {"--partition", "--account", "--time", "--cpus-per-task", "--dependency",
+                                               "--kill-on-invalid-dep", "--job-name", "--output", "--error", "--open-mode",
+                                               "--chdir", "--parsable", "--array", "--wrap", "--test-only", "--ntasks", "--nodes"};
+  const std::string owned_short = "pAtcdJoeDanN";
+  std::vector<std::string> refused;
+  for (const std::string& name : owned_long)
+    for (std::size_t n = 3; n <= name.size(); ++n) refused.push_back(name.substr(0, n)), refused.push_back(name.substr(0, n) + "=x");
+  for (const char c : owned_short)
+    for (const std::string& form : {std::string("-") + c, std::string("-") + c + "x", std::string("-v") + c, std::string("-vQ") + c + "x"})
+      refused.push_back(form);
+  for (const std::string& a : {std::string("--outp=x"), std::string("--wra=x"), std::string("--dep=x")}) refused.push_back(a);
+  int checked = 0;
+  for (const std::string& arg : refused) {
+    const std::string msg = refusal(dir, "slurm: {sbatch_args: [\"" + arg + "\"]}\n");
+    INFO(arg << " -> " << msg);
+    CHECK(msg.find("slurm.sbatch_args") != std::string::npos);
+    CHECK(msg.find("'" + arg + "' is set by") != std::string::npos);
+    ++checked;
+  }
+  CHECK(checked > 300);
+  // Options of sbatch the pipeline leaves to the study, whole or as sbatch reads them: accepted.
+  for (const char* arg : {"--qos=normal", "--mem=4G", "--mem-per-cpu=1G", "--time-min=5", "--constraint=x", "--gres=gpu:1",
+                                 "--exclusive", "--export=ALL", "--nice=5", "--comment=x", "-q", "-vq", "--requeue", "--tmp=1G"}) {
+    INFO(arg);
+    CHECK(refusal(dir, "slurm: {sbatch_args: [\"" + std::string(arg) + "\"]}\n") == "accepted");
+  }
+}
+
 TEST_CASE("slurm: a run's sbatch command line and job script", "[pipeline][slurm]") {
   SlurmOptions o;  // 2.5e7 particle-steps/s, factor 3, floor 10 min
   SECTION("time limit: factor x estimated time, at least the floor, at most the ceiling") {

@@ -70,13 +70,29 @@ const std::vector<BadStudy> catalogue = {
     {"duplicate variant", head + density + good_tail + "variants: [{name: a}, {name: a}]\n",
      {"variants[1].name", "duplicate name 'a'"}},
     {"variant name with a slash", head + density + good_tail + "variants: [{name: a/b}]\n",
-     {"variants[0].name", "letters, digits, _ and -", "'a/b'"}},
+     {"variants[0].name", "'a/b' contains a path separator"}},  // the rule of every name that becomes a path
     {"empty override mapping", head + density + good_tail + "variants: [{name: a, set: {}}]\n",
      {"variants[0].set", "non-empty mapping of scene key paths"}},
     {"may_fail not a boolean", head + density + good_tail + "variants: [{name: a, may_fail: maybe}]\n",
      {"variants[0].may_fail", "true or false", "maybe"}},
     {"test override of the run name", head + density + "tests: [{name: t1, scene: t.yaml, set: {name: x}}]\n" +
      "profiles: {paper: {lattice: 20}, quick: {lattice: 10}}\n", {"tests[0].set.name", "is set by the pipeline"}},
+    // issue 38: names that become paths; numbers read one way
+    {"density name with a path in it", head + "densities: [{name: loose, friction: 0.5}, {name: x/../loose, friction: 0}]\n" + good_tail,
+     {"densities[1].name", "'x/../loose' contains a path separator", "part of file names"}},
+    {"density name '..'", head + "densities: [{name: .., friction: 0.5}]\n" + good_tail, {"densities[0].name", "contains '..'"}},
+    {"hidden density name", head + "densities: [{name: .loose, friction: 0.5}]\n" + good_tail, {"densities[0].name", "starts with a dot"}},
+    {"test name with a separator", head + density + "tests: [{name: 'a\\b', scene: t.yaml}]\nprofiles: {paper: {}, quick: {}}\n",
+     {"tests[0].name", "contains a path separator"}},
+    {"test name with a tab", head + density + "tests: [{name: \"a\\tb\", scene: t.yaml}]\nprofiles: {paper: {}, quick: {}}\n",
+     {"tests[0].name", "contains a control character"}},
+    {"seeds with a leading zero", head + density + good_tail + "seeds: 010\n", {"seeds", "'010'", "a leading zero is refused", "write 10"}},
+    {"a seed with a leading zero", head + density + good_tail + "seeds: [1, 010]\n", {"seeds", "'010'", "a leading zero is refused"}},
+    {"hexadecimal seeds", head + density + good_tail + "seeds: 0x10\n", {"seeds", "'0x10'", "hexadecimal"}},
+    {"friction that underflows", head + "densities: [{name: loose, friction: 1e-400}]\n" + good_tail,
+     {"densities[0].friction", "'1e-400'", "would read as 0"}},
+    {"lattice with a leading zero", head + density + "tests: [{name: t1, scene: t.yaml}]\nprofiles: {paper: {lattice: 020}, quick: {}}\n",
+     {"profiles.paper.lattice", "'020'", "a leading zero is refused", "write 20"}},
 };
 
 }  // namespace
@@ -110,5 +126,59 @@ TEST_CASE("bad study files are refused naming the file, the key and what is allo
   SECTION("a directory or a missing file instead of a study") {
     CHECK_THROWS_WITH(pipeline::load_study(dir.string()), Catch::Matchers::Contains("is a directory"));
     CHECK_THROWS_WITH(pipeline::load_study((dir / "absent.yaml").string()), Catch::Matchers::Contains("absent.yaml"));
+  }
+}
+
+TEST_CASE("every study name that becomes part of a file name is checked, by one rule", "[pipeline][input][names]") {
+  // Issue 38, case 6: densities `loose` and `x/../loose` mapped to one result file (4 runs "ran",
+  // 2 files existed, one density's test ran from the other's sample). The class swept: each name
+  // that becomes a path (densities[].name, tests[].name, variants[].name: results, scenes and
+  // logs are <variant>_<density>_<test>.h5) against each way a name can leave its folder or
+  // collide: a separator, '..', a leading dot, a control character (a newline would also break
+  // runs.tsv), nothing at all.
+  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "study_names";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "prep.yaml") << "name: p\n";
+  std::ofstream(dir / "t.yaml") << "name: t\n";
+  struct Bad {
+    std::string name, why;  // the name as YAML (double-quoted), what the message says
+  };
+  const std::vector<Bad> names = {{"x/../loose", "contains a path separator"}, {"a/b", "contains a path separator"},
+                                  {"a\\\\b", "contains a path separator"}, {"..", "contains '..'"},
+                                  {"a..b", "contains '..'"},                {".", "starts with a dot"},
+                                  {".hidden", "starts with a dot"},         {"a\\nb", "contains a control character"},
+                                  {"a\\tb", "contains a control character"}};
+  const auto study = [&](const std::string& d, const std::string& t, const std::string& v) {
+    return head + "densities: [{name: \"" + d + "\", friction: 0.5}]\ntests: [{name: \"" + t + "\", scene: t.yaml}]\n" +
+           "profiles: {paper: {lattice: 20}, quick: {lattice: 10}}\nvariants: [{name: \"" + v + "\"}]\n";
+  };
+  const std::string file = (dir / "s.yaml").string();
+  std::ofstream(file) << study("loose", "t1", "v1");
+  REQUIRE_NOTHROW(pipeline::load_study(file));  // the base: each case changes one name
+  int refused = 0;
+  for (const std::string key : {"densities[0].name", "tests[0].name", "variants[0].name"})
+    for (const Bad& b : names) {
+      INFO(key << " = " << b.name);
+      std::ofstream(file, std::ios::trunc) << (key[0] == 'd' ? study(b.name, "t1", "v1")
+                                               : key[0] == 't' ? study("loose", b.name, "v1")
+                                                               : study("loose", "t1", b.name));
+      try {
+        pipeline::load_study(file);
+        FAIL("accepted");
+      } catch (const dem::ConfigError& e) {
+        const std::string msg = e.what();
+        INFO(msg);
+        CHECK(msg.find(file + ": " + key + ": ") != std::string::npos);
+        CHECK(msg.find(b.why) != std::string::npos);
+        CHECK(msg.find("no / or \\, no '..', no leading dot") != std::string::npos);
+        ++refused;
+      }
+    }
+  CHECK(refused == 27);
+  // Names that are plain file names stay allowed (the critical-state study's `extension_mu0.5`).
+  for (const std::string ok : {"extension_mu0.5", "hold_ufr_1e-2", "Dichte"}) {
+    std::ofstream(file, std::ios::trunc) << study(ok, ok + std::string("_t"), "v1");  // density and test names differ
+    CHECK_NOTHROW(pipeline::load_study(file));
   }
 }

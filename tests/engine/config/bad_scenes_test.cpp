@@ -324,6 +324,33 @@ std::vector<BadScene> catalogue() {
        {"bad.yaml: numerics.time_step: must be in (0, 1] s, got .inf (line 6)"}},
       {"NaN in a list", Yaml{.stages = "\n  - {name: a, type: strain_rate, strain_rate: [0.1, .nan, 0.1], duration: 1.0e-4}"}.text(), C,
        {"bad.yaml: stages[0].strain_rate[1]: must be in [-1000, 1000] 1/s, got .nan (line 8)"}},
+      // --- numbers read one way (issue 38): decimal; no leading zeros, no other bases, no underflow --
+      // `010` was octal 8 where yaml-cpp read an integer (seeds, --set) and 10 in a list of numbers.
+      {"a leading zero in an integer", Yaml{.lattice = "{n: [3, 3, 3], spacing: 5.0e-3, seed: 010}"}.text(), C,
+       {"bad.yaml: particles.lattice.seed: must be an integer", "got '010' (line 3): a leading zero is refused", "write 10"}},
+      {"a leading zero in a list of numbers", Yaml{.lattice = "{n: [010, 3, 3], spacing: 5.0e-3, seed: 1}"}.text(), C,
+       {"bad.yaml: particles.lattice.n[0]: must be a number, got '010' (line 3): a leading zero is refused", "write 10"}},
+      {"a leading zero in a number", Yaml{.numerics = "{time_step: 01.0e-6}"}.text(), C,
+       {"bad.yaml: numerics.time_step: must be a number [s], got '01.0e-6' (line 6): a leading zero is refused", "write 1.0e-6"}},
+      {"a hexadecimal integer", Yaml{.lattice = "{n: [3, 3, 3], spacing: 5.0e-3, seed: 0x10}"}.text(), C,
+       {"bad.yaml: particles.lattice.seed: must be an integer", "got '0x10' (line 3): hexadecimal and octal forms are refused"}},
+      // 1e-400 read as 0 turned the damping off without a word.
+      {"a number that underflows to 0", Yaml{.extra = "damping: {form: viscous, translational: 1e-400}\n"}.text(), C,
+       {"bad.yaml: damping.translational: must be a number, got '1e-400' (line 9): below the smallest positive double"}},
+      {"a leading zero in a path state", Yaml{.stages = "\n  - {name: a, type: stress_path, rate: 2.0e6, path: [[0120000, 90000, 90000]]}"}.text(), C,
+       {"bad.yaml: stages[0].path[0]: stresses must be positive numbers (Pa)", "'0120000': a leading zero is refused"}},
+      {"a leading zero in a repeat count", Yaml{.stages = "\n  - {name: a, type: stress_path, rate: 2.0e6, path: [TC1, {repeat: 010, path: [TC2, TC1]}]}"}.text(), C,
+       {"bad.yaml: stages[0].path[1].repeat: must be an integer in [1, 100000]", "'010': a leading zero is refused"}},
+      // --- control stages: targets a packing can reach (issue 38) --------------------------------
+      {"a tensile axial stress target", Yaml{.stages = "\n  - {name: a, type: control, duration: 1, control: {xx: {stress: -5.0e4}, yy: {strain_rate: 0}, zz: {strain_rate: 0}}}"}.text(), C,
+       {"bad.yaml: stages[0].control.xx.stress: is tensile (compression is positive), got -50000 Pa", "allowed: >= 0 Pa"}},
+      {"a cyclic stress that swings into tension", Yaml{.stages = "\n  - {name: a, type: control, duration: 1, control: {xx: {stress: 1.0e5}, yy: {strain_rate: 0}, zz: {strain_rate: 0}}, cyclic: {component: xx, amplitude: 1.5e5, period: 0.1}}"}.text(), C,
+       {"bad.yaml: stages[0].cyclic.amplitude: takes xx's stress target 100000 Pa to -50000 Pa, a tension", "allowed: at most 100000 Pa"}},
+      // --- checkpoints every step (issue 38): 33 steps/s, 30 MB after 1,877 steps ----------------------
+      {"a checkpoint every step", Yaml{.extra = "output: {checkpoint_interval: 1}\n"}.text(), C,
+       {"bad.yaml: output.checkpoint_interval: must be 0 (none by steps) or at least 10, got 1", "each checkpoint copies the whole result"}},
+      {"a checkpoint every 9 steps", Yaml{.extra = "output: {checkpoint_interval: 9}\n"}.text(), C,
+       {"bad.yaml: output.checkpoint_interval: must be 0 (none by steps) or at least 10, got 9"}},
       // --- step counts (issue 24): every duration a stage turns into steps gives 1 ... 1e12 ---------
       // numerics.time_step = 1e-21 with a 0.01 s stage overflowed the count: 0 steps, exit 0.
       {"a time step so small that the steps overflow", Yaml{.numerics = "{time_step: 1.0e-21}",

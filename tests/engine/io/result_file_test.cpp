@@ -87,7 +87,7 @@ TEST_CASE("a complete run writes a complete, self-describing result file", "[io]
     CHECK(h5::get_double_attribute(f, "wall_time_s") > 0);
     // The recorded scene is the resolved one, and it is itself a valid scene that resolves to
     // the same text (so the run can be repeated from the result file alone).
-    const std::string yaml = h5::get_string_attribute(f, "scene_yaml");
+    const std::string yaml = h5::read_text(f, "scene_yaml");  // a dataset (schema 3)
     CHECK(yaml == scene.resolved_yaml);
     CHECK(scene_from_text(yaml, "again.yaml").resolved_yaml == yaml);
   }

@@ -9,6 +9,9 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
+#include <functional>
+#include <vector>
 #include <filesystem>
 #include <string>
 
@@ -276,4 +279,80 @@ TEST_CASE("a stress stage's hold with a creep criterion resumes from its checkpo
   CHECK(step[static_cast<std::size_t>(hold_start - stage.begin())] == 117000);  // the creep stage ended after the checkpoint
 
   resume_bit_for_bit(dir, 100000);
+}
+
+namespace {
+
+// Adds one unit in the last place to the first value of a dataset of doubles, in place.
+void nudge_dataset(const std::string& file, const std::string& path) {
+  dem::h5::Handle f = dem::h5::open_file_write(file);
+  dem::h5::Handle ds(H5Dopen2(f, path.c_str(), H5P_DEFAULT));
+  REQUIRE(ds.id() >= 0);
+  dem::h5::Handle space(H5Dget_space(ds));
+  std::vector<double> v(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space)));
+  REQUIRE(!v.empty());
+  REQUIRE(H5Dread(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) >= 0);
+  v[0] = std::nextafter(v[0], 1e300);
+  REQUIRE(H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) >= 0);
+}
+
+// The same for a double attribute.
+void nudge_attribute(const std::string& file, const std::string& object, const std::string& name) {
+  dem::h5::Handle f = dem::h5::open_file_write(file);
+  dem::h5::Handle o(H5Oopen(f, object.c_str(), H5P_DEFAULT));
+  REQUIRE(o.id() >= 0);
+  const double v = dem::h5::get_double_attribute(o, name);
+  H5Adelete(o, name.c_str());
+  dem::h5::set_attribute(o, name, std::nextafter(v, 1e300));
+}
+
+}  // namespace
+
+TEST_CASE("a checkpoint with any one value changed is not resumed: it carries a checksum", "[run][checkpoint][input][checksum]") {
+  // Issue 38: a checkpoint with one value changed, still readable and in range, resumed silently
+  // into a "complete" result with another /state. The class swept: one value, changed by one unit
+  // in its last place, in each part of a checkpoint (the state, the Verlet list, the energy
+  // balance, the stage cursor, an attribute of /checkpoint, the time series and the particle
+  // frames copied from the partial result, a root attribute). Each: --resume refuses (exit 2,
+  // naming the checksum); by default the run warns and starts over from step 0 (and here ends as
+  // the stopping scene does, exit 1).
+  const std::string dir = dem::test::scratch_dir("checkpoint_checksum");
+  dem::test::write_text(dir + "/s.yaml", stopping_scene());
+  const std::string out = dir + "/r.h5", run = "run '" + dir + "/s.yaml' --out '" + out + "'";
+  REQUIRE(dem_stderr(run).exit_code == 1);
+  const std::string good = dir + "/good.checkpoint";
+  fs::copy_file(out + ".checkpoint", good);
+  {  // the untouched checkpoint resumes
+    const auto r = dem_stderr(run + " --resume");
+    CHECK(r.exit_code == 1);
+    CHECK_THAT(r.out, Catch::Matchers::Contains("resuming from"));
+  }
+  struct Change {
+    std::string what;
+    std::function<void(const std::string&)> apply;
+  };
+  const std::vector<Change> changes = {
+      {"a particle position of the state", [](const std::string& f) { nudge_dataset(f, "checkpoint/state/position"); }},
+      {"a velocity of the state", [](const std::string& f) { nudge_dataset(f, "checkpoint/state/velocity"); }},
+      {"the Verlet list's positions at its build", [](const std::string& f) { nudge_dataset(f, "checkpoint/state/verlet_position_fractional_at_build"); }},
+      {"the stage cursor", [](const std::string& f) { nudge_dataset(f, "checkpoint/cursor/strain_at_start"); }},
+      {"an attribute of /checkpoint", [](const std::string& f) { nudge_attribute(f, "checkpoint", "time"); }},
+      {"a time-series value", [](const std::string& f) { nudge_dataset(f, "timeseries/p"); }},
+      {"a particle frame", [](const std::string& f) { nudge_dataset(f, "particles/all/position/value"); }},
+      {"an energy attribute of the state", [](const std::string& f) { nudge_attribute(f, "checkpoint/state", "energy_work_by_cell"); }},
+  };
+  for (const Change& c : changes) {
+    INFO(c.what);
+    fs::copy_file(good, out + ".checkpoint", fs::copy_options::overwrite_existing);
+    c.apply(out + ".checkpoint");
+    const auto refused = dem_stderr(run + " --resume");
+    INFO(refused.out);
+    CHECK(refused.exit_code == 2);
+    CHECK_THAT(refused.out, Catch::Matchers::Contains("cannot resume: " + out + ".checkpoint: checksum ") &&
+                                Catch::Matchers::Contains("the checkpoint was changed after it was written"));
+    const auto fresh = dem_stderr(run);
+    CHECK(fresh.exit_code == 1);
+    CHECK_THAT(fresh.out, Catch::Matchers::Contains("warning: not resuming: " + out + ".checkpoint: checksum "));
+    CHECK_THAT(fresh.out, !Catch::Matchers::Contains("resuming from"));
+  }
 }

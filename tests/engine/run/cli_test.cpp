@@ -616,4 +616,166 @@ TEST_CASE("dem run: paths typed on the command line are relative to the current 
   INFO(r.out);
   REQUIRE(r.exit_code == 0);
   CHECK(count(dir + "/work/from_cli_map.h5") == 3);
+TEST_CASE("dem run reads each particle file once: a FIFO as the CSV runs, a FIFO as the state is refused", "[run][cli][input][fifo]") {
+  // Issue 38, case 1: dem opened particles.csv twice (to parse it, then to hash it into the
+  // checkpoint identity), so a FIFO fed once by `cat` hung forever in the second open. The run
+  // reads it once now; a saved state (HDF5, read by seeking) must be a regular file. Each source
+  // that is a file is swept: csv runs to the same result as from the regular file, state is
+  // refused with exit 2 before any output exists.
+  if (!have_dem()) return;
+  const std::string dir = dem::test::scratch_dir("cli_fifo");
+  const std::string csv_folder = std::string(DEM_SOURCE_DIR) + "/tests/data/csv_scene";
+  REQUIRE(mkfifo((dir + "/p.csv").c_str(), 0644) == 0);
+  dem::test::write_text(dir + "/scene.yaml", "name: csv_scene\nparticles: {csv: p.csv, cell: [0.02, 0.02, 0.02]}\n"
+                                             "material: {kn: 1.0e6, ks: 1.0e6, friction: 0.5}\nnumerics: {time_step: 1.0e-6}\n"
+                                             "output: {interval: 100}\nstages:\n"
+                                             "  - {name: squeeze, type: strain_rate, strain_rate: [1.0, 1.0, 1.0], duration: 5.0e-4}\n");
+  // The writer feeds the FIFO once; `timeout` turns a hang into exit 124 instead of a stuck test.
+  const auto r = dem::test::run_command("cat '" + csv_folder + "/particles.csv' > '" + dir + "/p.csv' & timeout 60 '" + dem_exe +
+                                        "' run '" + dir + "/scene.yaml' --out '" + dir + "/fifo.h5' --quiet 2>&1 >/dev/null; "
+                                        "s=$?; wait; exit $s");
+  INFO(r.out);
+  CHECK(r.exit_code == 0);
+  CHECK(dem::test::h5_status(dir + "/fifo.h5") == "complete");
+  // The same run from the regular file: the same time series.
+  const auto regular = dem_stderr("run '" + csv_folder + "/scene.yaml' --out '" + dir + "/regular.h5' --quiet");
+  REQUIRE(regular.exit_code == 0);
+  for (const char* column : {"p", "void_ratio", "kinetic_energy_centred"}) CHECK(series(dir + "/fifo.h5", column) == series(dir + "/regular.h5", column));
+
+  REQUIRE(mkfifo((dir + "/state.h5").c_str(), 0644) == 0);
+  dem::test::write_text(dir + "/s.yaml", "name: s\nparticles: {state: state.h5}\nmaterial: {kn: 1.0e6, ks: 1.0e6, friction: 0.5}\n"
+                                         "numerics: {time_step: 1.0e-6}\nstages:\n" + tiny_stage);
+  const auto s = dem::test::run_command("timeout 60 '" + dem_exe + "' run '" + dir + "/s.yaml' --out '" + dir + "/s.h5' 2>&1 >/dev/null");
+  INFO(s.out);
+  CHECK(s.exit_code == 2);
+  CHECK_THAT(s.out, Catch::Matchers::Contains("particles.state: " + dir + "/state.h5: not a regular file"));
+  CHECK_FALSE(fs::exists(dir + "/s.h5.partial"));
+}
+
+TEST_CASE("dem run keeps a resolved scene and warnings of any size: neither is an attribute", "[run][cli][integrity][text]") {
+  // Issue 38, case 5: the resolved scene and the warnings were root attributes, whose object
+  // header holds 64 KiB: 603 warnings stopped a valid run at step 217,720 ("object header message
+  // is too large", exit 1, the result lost), and a scene over 64 KiB failed before its first step.
+  // Both are datasets now. The class swept: every text a run records that grows with its input
+  // (the scene) or its length (the warnings), each taken past 64 KiB: a long scene with many
+  // warnings, and many warnings from a short scene.
+  if (!have_dem()) return;
+  const std::string dir = dem::test::scratch_dir("cli_text");
+  // 64 spheres of 4.0-4.5 mm at 100 kPa (the stress-path tests' sample).
+  dem::test::write_text(dir + "/sample.yaml",
+                        "name: sample\nparticles:\n  lattice: {n: [4, 4, 4], spacing: 4.5e-3, seed: 3}\n"
+                        "  grading: {diameters: [4.0e-3, 4.5e-3], percent_finer: [0, 100]}\n"
+                        "material: {density: 2650, kn: 1.0e6, ks: 1.0e6, friction: 0.5}\nnumerics: {time_step: 2.0e-6}\n"
+                        "output: {interval: 5000}\nstages:\n"
+                        "  - {name: compress, type: stress, target: [1.0e5, 1.0e5, 1.0e5], rate: 1.0e7, max_strain_rate: 5.0,\n"
+                        "     hold: {stress_tolerance: 0.005, unbalanced_force_ratio: 1.0e-2, max_duration: 2.0}}\n");
+  REQUIRE(dem_stderr("run '" + dir + "/sample.yaml' --out '" + dir + "/sample.h5' --quiet").exit_code == 0);
+  // A stress path whose every leg is one step at a rate no servo follows: the cell moves at its
+  // cap of 5/s, I ~ 5 x 4.25 mm x sqrt(2650 / 1e5) ~ 3.5e-3 > 1e-3, and such a leg warns.
+  const auto path_scene = [&](const std::string& path) {
+    return "name: jolt\nparticles: {state: sample.h5}\nmaterial: {density: 2650, kn: 1.0e6, ks: 1.0e6, friction: 0.5}\n"
+           "numerics: {time_step: 2.0e-6}\noutput: {interval: 1000000}\nstages:\n"
+           "  - {name: jolt, type: stress_path, rate: 1.0e12, max_strain_rate: 5, path: " + path + "}\n";
+  };
+  std::string explicit_states = "[";
+  for (int i = 0; i < 4000; ++i) explicit_states += i % 2 ? "[1.0e5, 1.0e5, 1.0e5], " : "[1.2e5, 0.9e5, 0.9e5], ";
+  explicit_states += "A]";
+  struct Case {
+    std::string what, path;
+    bool big_scene;
+  };
+  for (const Case& c : {Case{"a resolved scene over 64 KiB, 4,000 legs", explicit_states, true},
+                        Case{"1,001 legs of a small scene", "[TC1, {repeat: 500, path: [TC2, TC1]}]", false}}) {
+    INFO(c.what);
+    dem::test::write_text(dir + "/s.yaml", path_scene(c.path));
+    const std::string out = dir + "/r.h5";
+    const auto r = dem_stderr("run '" + dir + "/s.yaml' --out '" + out + "' --quiet --force");
+    CHECK(r.exit_code == 0);
+    CHECK_THAT(r.out, !Catch::Matchers::Contains("too large") && !Catch::Matchers::Contains("out of memory"));
+    REQUIRE(dem::test::h5_status(out) == "complete");
+    dem::h5::Handle f = dem::h5::open_file_read(out);
+    const std::string yaml = dem::h5::read_text(f, "scene_yaml");
+    CHECK(yaml == dem::load_scene(dir + "/s.yaml").resolved_yaml);
+    if (c.big_scene) CHECK(yaml.size() > 65536);
+    // One warning per leg above 1e-3, as /legs records them, in order.
+    std::size_t cols = 0;
+    const std::vector<double> leg_max = dem::h5::read<double>(dem::h5::open_group(f, "legs"), "max_inertial_number", cols);
+    std::size_t fast = 0;
+    for (const double i : leg_max) fast += i > 1e-3 ? 1 : 0;
+    // A -> 4,000 states -> A: the last state is A itself, a leg of length 0 that is not run.
+    CHECK(leg_max.size() == (c.big_scene ? 4000u : 1001u));
+    const std::vector<std::string> warnings = dem::h5::read_texts(f, "warnings");
+    CHECK(warnings.size() == fast);
+    CHECK(fast > 600);  // more warnings than stopped the run before
+    std::size_t bytes = 0;
+    for (const std::string& w : warnings) bytes += w.size();
+    CHECK(bytes > 65536);
+    CHECK_THAT(warnings.back(), Catch::Matchers::EndsWith("the loading is not quasi-static"));
+    CHECK_FALSE(dem::h5::has_attribute(f, "warnings"));
+    CHECK_FALSE(dem::h5::has_attribute(f, "scene_yaml"));
+  }
+}
+
+TEST_CASE("dem run leaves no lock file, however it ends after taking the lock", "[run][cli][integrity][lock]") {
+  // Issue 38: a run refused after it took OUT.lock (bad input found when the particles are made,
+  // --resume without a checkpoint) left an empty OUT.lock behind. The class swept: every end of a
+  // run that took the lock, refused (exit 2: a result of another scene without --force, a time
+  // step above the critical step, --resume with nothing to resume), failed (exit 1) or complete
+  // (exit 0). None leaves OUT.lock; a lock held by another process is left alone.
+  if (!have_dem()) return;
+  const std::string dir = dem::test::scratch_dir("cli_lock");
+  std::string too_fast = dem::test::tiny_scene(tiny_stage);
+  too_fast.replace(too_fast.find("time_step: 1.0e-6"), 17, "time_step: 1.0e-4");
+  dem::test::write_text(dir + "/dt.yaml", too_fast);
+  dem::test::write_text(dir + "/ok.yaml", dem::test::tiny_scene(tiny_stage));
+  dem::test::write_text(dir + "/other.yaml", dem::test::tiny_scene(tiny_stage, "{kn: 2.0e6, ks: 2.0e6, friction: 0.5}"));
+  dem::test::write_text(dir + "/fails.yaml",
+                        dem::test::tiny_scene("  - {name: consolidate, type: stress, target: [1.0e5, 1.0e5, 1.0e5], rate: 1.0e6,"
+                                              " hold: {max_duration: 1.0e-5}}\n"));
+  struct End {
+    std::string what, scene, args;
+    int exit_code;
+  };
+  const std::string out = dir + "/r.h5";
+  REQUIRE(dem_stderr("run '" + dir + "/ok.yaml' --out '" + out + "' --quiet").exit_code == 0);
+  const std::vector<End> ends = {
+      {"complete", "ok.yaml", "", 0},
+      {"refused: another scene's result without --force", "other.yaml", "", 2},
+      {"refused: the time step above the critical step", "dt.yaml", "--force", 2},
+      {"refused: --resume without a checkpoint", "ok.yaml", "--resume --force", 2},
+      {"failed: a hold that never settles", "fails.yaml", "--force", 1},
+  };
+  for (const End& e : ends) {
+    INFO(e.what);
+    const auto r = dem_stderr("run '" + dir + "/" + e.scene + "' --out '" + out + "' --quiet " + e.args);
+    INFO(r.out);
+    CHECK(r.exit_code == e.exit_code);
+    CHECK_FALSE(fs::exists(out + ".lock"));
+  }
+  // Held by another process: refused, and its lock file stays where it is.
+  const int fd = open((out + ".lock").c_str(), O_RDWR | O_CREAT, 0644);
+  REQUIRE(fd >= 0);
+  REQUIRE(flock(fd, LOCK_EX | LOCK_NB) == 0);
+  const auto busy = dem_stderr("run '" + dir + "/ok.yaml' --out '" + out + "' --quiet --force");
+  CHECK(busy.exit_code == 2);
+  CHECK_THAT(busy.out, Catch::Matchers::Contains("another dem run is writing this result"));
+  CHECK(fs::exists(out + ".lock"));
+  close(fd);
+}
+
+TEST_CASE("dem run: a hold that fails gives the stresses it reached, measured at the end", "[run][cli][hold]") {
+  // Issue 38: the message said "stress error 0 %, unbalanced force ratio 1" (the values before the
+  // hold's first check) while p was far from the target. The 27 spheres of the tiny lattice do not
+  // touch (5 mm apart, at most 4.5 mm wide): in 10 steps of a ramp that needs 0.1 s the stress
+  // stays 0, so every axis is 100 % off its target of 100 kPa.
+  if (!have_dem()) return;
+  const std::string dir = dem::test::scratch_dir("cli_hold_message");
+  dem::test::write_text(dir + "/s.yaml",
+                        dem::test::tiny_scene("  - {name: consolidate, type: stress, target: [1.0e5, 1.0e5, 1.0e5], rate: 1.0e6,"
+                                              " hold: {max_duration: 1.0e-5}}\n"));
+  const auto r = dem_stderr("run '" + dir + "/s.yaml' --out '" + dir + "/r.h5' --quiet");
+  INFO(r.out);
+  CHECK(r.exit_code == 1);
+  CHECK_THAT(r.out, Catch::Matchers::Contains("stresses 0, 0, 0 Pa against targets 100000, 100000, 100000 Pa, largest stress error 100 %"));
+  CHECK_THAT(r.out, Catch::Matchers::Contains("the ramp itself needs 0.1 s at rate = 1e+06 Pa/s"));
 }
