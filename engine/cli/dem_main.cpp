@@ -164,11 +164,9 @@ int run(const RunArgs& args) {
                  static_cast<long long>(s.steps), s.wall_time_s, static_cast<double>(s.steps) / s.wall_time_s, out.c_str());
     return 0;
   } catch (const dem::ConfigError& e) {
-    unlink(lock_path.c_str());  // still held: a refused run leaves no lock file behind
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;
   } catch (const std::exception& e) {
-    unlink(lock_path.c_str());  // still held; the partial result and its checkpoint stay for a resume
     std::fprintf(stderr, "error: %s: %s\n", scene_file.c_str(), dem::describe_failure(e).c_str());
     if (std::filesystem::exists(out + ".partial")) std::fprintf(stderr, "(partial result kept in %s.partial)\n", out.c_str());
     return 1;
