@@ -616,6 +616,8 @@ TEST_CASE("dem run: paths typed on the command line are relative to the current 
   INFO(r.out);
   REQUIRE(r.exit_code == 0);
   CHECK(count(dir + "/work/from_cli_map.h5") == 3);
+}
+
 TEST_CASE("dem run reads each particle file once: a FIFO as the CSV runs, a FIFO as the state is refused", "[run][cli][input][fifo]") {
   // Issue 38, case 1: dem opened particles.csv twice (to parse it, then to hash it into the
   // checkpoint identity), so a FIFO fed once by `cat` hung forever in the second open. The run
