@@ -7,7 +7,7 @@
 # (Python only as a client script: the project's own code is C++.)
 import sys
 
-from paraview.simple import (ColorBy, GetActiveViewOrCreate, GetColorTransferFunction, GetScalarBar, Glyph, Render,
+from paraview.simple import (CellDatatoPointData, ColorBy, GetActiveViewOrCreate, GetColorTransferFunction, GetScalarBar, Glyph, Render,
                              SaveScreenshot, Show, Text, Tube, XDMFReader)
 
 if len(sys.argv) < 3:
@@ -56,16 +56,22 @@ spheres.GlyphMode = "All Points"
 spheres.GlyphType.ThetaResolution = 16
 spheres.GlyphType.PhiResolution = 12
 display = Show(spheres, view)
-ColorBy(display, ("POINTS", "radius"))
-lut = GetColorTransferFunction("radius")
-lut.ApplyPreset("Viridis (matplotlib)", True)
-display.SetScalarBarVisibility(view, True)
-bar = GetScalarBar(lut, view)
-bar.Title = "radius (m)"
-bar.ComponentTitle = ""
-bar.TitleColor = [0, 0, 0]
-bar.LabelColor = [0, 0, 0]
-bar.RangeLabelFormat = "%-#.2e"
+
+
+def colour(shown, array, preset, title):
+    """Colours `shown` by the point array `array` with a black-on-white scalar bar; returns the bar."""
+    ColorBy(shown, ("POINTS", array))
+    lut = GetColorTransferFunction(array)
+    lut.ApplyPreset(preset, True)
+    shown.SetScalarBarVisibility(view, True)
+    bar = GetScalarBar(lut, view)
+    bar.Title = title
+    bar.ComponentTitle = ""
+    bar.TitleColor = bar.LabelColor = [0, 0, 0]
+    return bar
+
+
+colour(display, "radius", "Viridis (matplotlib)", "radius (m)").RangeLabelFormat = "%-#.2e"
 
 # The cell, and the contact network as tubes (radius and colour by the normal force), if present.
 cell = grid("cell")
@@ -82,7 +88,6 @@ if contacts is not None:
     if lines > 0:
         display.Opacity = 0.15  # the spheres fade so that the force chains show
         fmax = contacts.CellData["normal_force"].GetRange()[1]
-        from paraview.simple import CellDatatoPointData
         tubes = Tube(Input=CellDatatoPointData(Input=contacts))
         tubes.Scalars = ["POINTS", "normal_force"]
         tubes.VaryRadius = "By Absolute Scalar"
@@ -90,15 +95,7 @@ if contacts is not None:
         tubes.RadiusFactor = 1.0e-3 / fmax if fmax > 0 else 1.0  # the largest force: a tube of 1 mm radius
         tubes.NumberofSides = 8
         tube_display = Show(tubes, view)
-        ColorBy(tube_display, ("POINTS", "normal_force"))
-        force_lut = GetColorTransferFunction("normal_force")
-        force_lut.ApplyPreset("Inferno (matplotlib)", True)
-        tube_display.SetScalarBarVisibility(view, True)
-        force_bar = GetScalarBar(force_lut, view)
-        force_bar.Title = "normal force (N)"
-        force_bar.ComponentTitle = ""
-        force_bar.TitleColor = force_bar.LabelColor = [0, 0, 0]
-        force_bar.WindowLocation = "Upper Right Corner"
+        colour(tube_display, "normal_force", "Inferno (matplotlib)", "normal force (N)").WindowLocation = "Upper Right Corner"
         forces = f", {lines} contacts as tubes (radius by the normal force, largest {fmax:.3g} N)"
 
 label = Text(Text=f"{title}\n{points} spheres at t = {times[-1]:.4g} s{forces} (ParaView, XDMF)")
