@@ -1,5 +1,6 @@
 #pragma once
-// Text the validation tools write: JSON strings, Markdown table cells, numbers, file names.
+// Text the validation tools write: Markdown table cells, numbers, file names. (JSON is written with
+// nlohmann-json, never by hand.)
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -8,17 +9,6 @@
 #include <string>
 
 namespace validation {
-
-inline std::string json_string(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\', out += c;
-    else if (c == '\n') out += "\\n";
-    else if (static_cast<unsigned char>(c) < 0x20) out += ' ';
-    else out += c;
-  }
-  return out + "\"";
-}
 
 // A Markdown table cell: '|' would end the cell, a newline the row.
 inline std::string cell(const std::string& s) {

@@ -1,0 +1,241 @@
+// compare-runs decisions: the decisions study (SPEC section 7). Every validation row on every
+// reading's ensemble, the shift of the mean in baseline standard deviations, a tornado chart per
+// group of rows, and the reading that explains each inconsistent row. Writes OUT/table.md,
+// decisions.json and, per group, tornado_<group>.dat and tornado_values.gp
+// (reports/gnuplot/tornado.gp draws tornado_<group>.png).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "compare_runs/modes.hpp"
+#include "decisions.hpp"
+#include "figures.hpp"
+#include "format.hpp"
+#include "io/atomic_file.hpp"
+#include "markdown_table.hpp"
+#include "results.hpp"
+
+namespace fs = std::filesystem;
+
+namespace compare_runs {
+namespace {
+
+using validation::number;
+using validation::RowDecision;
+using validation::RowResult;
+using validation::Verdict;
+
+const char* verdict_mark(Verdict v) { return v == Verdict::Consistent ? "✅" : v == Verdict::Inconsistent ? "❌" : "—"; }
+
+// "mean ± sd" of a row's result (one sample: the mean alone; none: "—").
+std::string mean_sd(const RowResult& r) {
+  return r.valued ? (r.valued > 1 ? validation::mean_pm_sd(r.spread.mean, r.spread.sd) : number(r.spread.mean)) : std::string("—");
+}
+
+bool finite_shift(const validation::ReadingEffect& e) { return e.shift_sd && std::isfinite(*e.shift_sd); }
+
+// Every reading's results, by reading, read from the manifest: reading -> its samples (one per seed).
+std::map<std::string, validation::ReadingResults> read_readings(const Manifest& manifest, std::vector<std::string>& missing) {
+  // reading -> seed -> density -> (preparation, test number -> result)
+  struct Files {
+    std::string preparation;
+    std::map<int, std::string> tests;
+  };
+  std::map<std::string, std::map<std::string, std::map<std::string, Files>>> files;
+  for (const ManifestLine& l : manifest.lines) {
+    Files& f = files[l.variant][l.seed][l.density];
+    if (l.test == "-") f.preparation = l.result;
+    else if (l.test.rfind("test", 0) == 0) f.tests[std::atoi(l.test.c_str() + 4)] = l.result;
+  }
+  std::map<std::string, validation::ReadingResults> readings;
+  for (const auto& [reading, seeds] : files)
+    for (const auto& [seed, densities] : seeds) {
+      std::map<std::string, validation::DensityResults> of_seed;
+      for (const auto& [density, f] : densities) of_seed[density] = validation::load_density(f.preparation, f.tests, missing);
+      readings[reading].push_back({"seed" + seed, "", std::move(of_seed)});
+    }
+  return readings;
+}
+
+// One group's section of table.md (its tornado chart and table), and its tornado_<group>.dat and
+// the values tornado.gp needs of it.
+std::string group_section(const std::string& g, const std::vector<RowDecision>& decided, const std::vector<std::string>& others,
+                          const std::string& out, validation::GnuplotValues& gp_values) {
+  const std::string key = "tornado_" + validation::file_safe(g);
+  // Tornado data: rows of the group, largest shift first.
+  std::vector<const RowDecision*> of_group;
+  for (const RowDecision& d : decided)
+    if (d.row.group == g) of_group.push_back(&d);
+  const auto largest = [](const RowDecision* d) {
+    double m = 0;
+    for (const auto& e : d->readings)
+      if (finite_shift(e)) m = std::max(m, std::abs(*e.shift_sd));
+    return m;
+  };
+  std::stable_sort(of_group.begin(), of_group.end(), [&](auto* a, auto* b) { return largest(a) < largest(b); });
+  std::ofstream dat(fs::path(out) / (key + ".dat"));
+  dat << "# row_index\treading_index\tshift_sd\trow\treading\n";
+  for (std::size_t i = 0; i < of_group.size(); ++i)
+    for (std::size_t k = 0; k < of_group[i]->readings.size(); ++k) {
+      const auto& e = of_group[i]->readings[k];
+      if (finite_shift(e)) dat << i << '\t' << k << '\t' << *e.shift_sd << "\t\"" << of_group[i]->row.name << "\"\t" << e.reading << "\n";
+    }
+  // What the static script (reports/gnuplot/tornado.gp) needs of this group: its title, the row
+  // names as labels (not tic labels: a tic label is a format, whose '%' would need doubling, and
+  // gnuplot cut long ones short), the left margin they take and the chart's height.
+  std::size_t longest = 0;
+  gp_values.text(key + "_title", g);
+  std::vector<std::string> labels;
+  for (const RowDecision* d : of_group) {
+    std::string label = d->row.name;
+    for (char& c : label)
+      if (c == '"') c = '\'';
+    longest = std::max(longest, label.size());
+    labels.push_back(label);
+  }
+  gp_values.texts(key + "_row", labels);
+  gp_values.number(key + "_lmargin", static_cast<double>(longest * 9 / 10 + 2));
+  gp_values.number(key + "_height", static_cast<double>(220 + 34 * of_group.size() * std::max<std::size_t>(1, others.size() / 3)));
+
+  std::vector<std::string> headings = {"row", "baseline: mean ± sd"};
+  headings.insert(headings.end(), others.begin(), others.end());
+  headings.push_back("explanation");
+  validation::MarkdownTable table(headings);
+  for (auto it = of_group.rbegin(); it != of_group.rend(); ++it) {
+    const RowDecision& d = **it;
+    std::vector<std::string> cells = {d.row.name, mean_sd(d.baseline) + " " + verdict_mark(d.full ? d.full->verdict : d.baseline.verdict)};
+    for (const auto& e : d.readings)
+      cells.push_back((finite_shift(e) ? validation::shift_text(*e.shift_sd) : "—") + " " +
+                      verdict_mark(d.full ? (e.full ? e.full->verdict : Verdict::NotJudged) : e.result.verdict));
+    cells.push_back(d.explanation);
+    table.row(cells);
+  }
+  return "\n### " + g + "\n\n![tornado chart: " + g + "](" + key + ".png)\n\n" + table.text();
+}
+
+// The size check: the baseline of this study against the paper study's ensemble (its own sample
+// size), row by row, in units of the paper ensemble's standard deviation.
+std::string size_check(const std::vector<RowDecision>& decided, std::size_t samples) {
+  validation::MarkdownTable table({"row", "paper study: mean ± sd", "this study's baseline: mean ± sd", "difference / sd", "verdicts"});
+  for (const RowDecision& d : decided) {
+    const RowResult& big = *d.full;
+    std::string diff = "—";
+    if (big.valued > 1 && std::max(big.spread.sd, d.row.resolution) > 0 && d.baseline.valued > 0)
+      diff = validation::shift_text(validation::shift_in_sd(d.baseline.spread.mean - big.spread.mean, big.spread.sd, d.row.resolution));
+    table.row({d.row.name, mean_sd(big), mean_sd(d.baseline), diff,
+               std::string(verdict_mark(big.verdict)) + " / " + verdict_mark(d.baseline.verdict)});
+  }
+  return "\n### Size check: this study's baseline against the paper study's ensemble\n\n"
+         "The same rows on the paper study's samples (" + std::to_string(samples) + " per density, its size) and on this study's "
+         "baseline; the difference of the means in units of the paper ensemble's standard deviation, and both verdicts. "
+         "A reading's shift is trusted at this study's size where the two agree.\n\n" + table.text();
+}
+
+// A value of decisions.json: six significant digits, as this file has always had (the values of a
+// few samples; more digits would be noise), or null.
+nlohmann::ordered_json six_digits(double x) {
+  const double v = std::strtod(number(x).c_str(), nullptr);
+  return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
+}
+
+nlohmann::ordered_json decisions_json(const std::string& baseline, const std::vector<RowDecision>& decided, std::size_t missing) {
+  using json = nlohmann::ordered_json;
+  json rows = json::array();
+  for (const RowDecision& d : decided) {
+    json readings = json::object();
+    for (const auto& e : d.readings)
+      readings[e.reading] = {{"mean", e.result.valued ? six_digits(e.result.spread.mean) : json(nullptr)},
+                             {"shift_sd", finite_shift(e) ? six_digits(*e.shift_sd) : json(nullptr)},
+                             {"verdict", validation::to_string(e.result.verdict)}};
+    rows.push_back({{"name", d.row.name},
+                    {"group", d.row.group},
+                    {"baseline_mean", d.baseline.valued ? six_digits(d.baseline.spread.mean) : json(nullptr)},
+                    {"baseline_sd", d.baseline.valued > 1 ? six_digits(d.baseline.spread.sd) : json(nullptr)},
+                    {"baseline_verdict", validation::to_string(d.baseline.verdict)},
+                    {"readings", readings},
+                    {"explanation", d.explanation}});
+  }
+  return {{"baseline", baseline}, {"rows", rows}, {"missing_results", missing}};
+}
+
+}  // namespace
+
+int decisions(const Manifest& manifest, const std::string& out, const std::string& references, const std::string& baseline,
+              const std::string& ensemble) {
+  std::vector<validation::Row> rows;
+  try {
+    rows = validation::load_references(references, "paper");
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 2;
+  }
+  std::vector<std::string> missing;
+  const std::map<std::string, validation::ReadingResults> readings = read_readings(manifest, missing);
+  std::map<std::string, std::string> settings;  // reading -> its settings
+  for (const ManifestLine& l : manifest.lines) settings[l.variant] = l.settings;
+  // The paper study's ensemble (full size), if given: the verdicts and causes are judged on it.
+  std::vector<validation::Sample> full_samples;
+  std::map<std::string, RowResult> full;
+  if (!ensemble.empty()) {
+    std::vector<std::string> missing_ensemble;
+    full_samples = validation::load_samples(ensemble, {"loose", "medium", "dense"}, missing_ensemble);
+    for (const validation::Row& r : rows) full[r.name] = validation::evaluate(r, full_samples);
+  }
+  std::vector<RowDecision> decided;
+  try {
+    decided = validation::decide(rows, readings, manifest.variants, baseline, full);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "compare-runs: %s\n", e.what());
+    return 1;
+  }
+  std::vector<std::string> others;
+  for (const std::string& r : manifest.variants)
+    if (r != baseline) others.push_back(r);
+  std::vector<std::string> groups;
+  for (const validation::Row& r : rows)
+    if (std::find(groups.begin(), groups.end(), r.group) == groups.end()) groups.push_back(r.group);
+
+  validation::MarkdownTable reading_table({"reading", "settings"});
+  for (const std::string& r : manifest.variants) reading_table.row({r, settings[r]});
+  std::string md = "Readings (each one change from the baseline, `pipeline/studies/decisions.yaml`):\n\n" + reading_table.text() +
+                   "\nEach cell: the shift of the ensemble mean from the baseline's, in baseline standard deviations, and the verdict "
+                   "under that reading (✅ consistent, ❌ inconsistent, — not judged)" +
+                   (full.empty() ? std::string(".\n")
+                                 : std::string(" of the paper study's full-size ensemble with that shift of the mean applied to each of its "
+                                               "samples; the baseline column gives this study's mean ± sd and the full-size ensemble's verdict.\n"));
+  validation::GnuplotValues gp_values;  // tornado_values.gp, read by reports/gnuplot/tornado.gp
+  gp_values.texts("tornado_reading", others);
+  std::string group_names;
+  for (const std::string& g : groups) {
+    md += group_section(g, decided, others, out, gp_values);
+    if (!group_names.empty()) group_names += ' ';
+    group_names += validation::file_safe(g);
+  }
+  gp_values.text("tornado_groups", group_names);
+  dem::write_file_atomically((fs::path(out) / "tornado_values.gp").string(),
+                             gp_values.text_file("Written by compare-runs decisions: what reports/gnuplot/tornado.gp draws, one chart "
+                                                 "per group from tornado_<group>.dat"));
+  if (!ensemble.empty()) md += size_check(decided, full_samples.size());
+  try {
+    dem::write_file_atomically((fs::path(out) / "table.md").string(), md);
+    dem::write_file_atomically((fs::path(out) / "decisions.json").string(),
+                               decisions_json(baseline, decided, missing.size()).dump(2) + "\n");
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
+  }
+  std::printf("decisions: %zu readings, %zu rows, %zu result files missing -> %s\n", manifest.variants.size(), rows.size(), missing.size(),
+              (fs::path(out) / "table.md").c_str());
+  return 0;
+}
+
+}  // namespace compare_runs

@@ -1,0 +1,246 @@
+// compare-runs liquefaction: the undrained cyclic triaxial tests of one or more study folders and
+// their unloaded holds. CSR against N_L of each cyclic test, r_u against cycles of every run, and
+// the hold's r_u beside each test's. Writes OUT/table.md, csr_nl.dat, ru.dat and values.gp (what
+// reports/gnuplot/liquefaction_*.gp need).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "compare_runs/modes.hpp"
+#include "figures.hpp"
+#include "format.hpp"
+#include "io/atomic_file.hpp"
+#include "liquefaction.hpp"
+#include "markdown_table.hpp"
+
+namespace fs = std::filesystem;
+
+namespace compare_runs {
+namespace {
+
+using validation::fixed;
+using validation::number;
+
+// One run of a liquefaction study: <density>_csr<CSR> (cyclic) or <density>_hold.
+struct CyclicRun {
+  std::string run, density;
+  bool hold = false;
+  double csr_name = NAN;      // from the name
+  std::string note;           // why it has no values, or what to know of them
+  bool finished = false;
+  int stage = -1;             // index of its control stage
+  double period_s = NAN;      // of the cyclic loading (a hold: of its density's cyclic runs)
+  double amplitude_Pa = NAN;
+  double ru_limit = NAN, strain_limit = NAN;  // the scene's until.pore_pressure_ratio, until.double_amplitude_strain
+  std::string stage_end;      // its stage_end_<stage> attribute
+  validation::ControlStage control;
+  validation::Columns series;
+};
+
+// The control stage of a scene: the first stage of type control (-1 if none).
+int control_stage(const dem::SceneConfig& scene) {
+  for (std::size_t k = 0; k < scene.stages.size(); ++k)
+    if (scene.stages[k].type == dem::StageConfig::Type::Control) return static_cast<int>(k);
+  return -1;
+}
+
+// The runs of one liquefaction study folder (its manifest), read and summarised.
+std::vector<CyclicRun> cyclic_runs(const std::string& results) {
+  std::vector<CyclicRun> runs;
+  for (const ManifestLine& l : read_manifest(results).lines) {
+    if (l.test == "-") continue;  // the preparation
+    CyclicRun& r = runs.emplace_back();
+    r.run = l.run, r.density = l.density, r.hold = l.test == "hold";
+    if (!r.hold) {
+      const auto csr = validation::csr_from_name(l.run);
+      if (!csr) {
+        r.note = "not analysed: test '" + l.test + "' is neither hold nor csr<CSR>";
+        continue;
+      }
+      r.csr_name = *csr;
+    }
+    if (!validation::is_complete(l.result)) {
+      r.note = "missing: " + fs::path(l.result).filename().string() + " is not finished";
+      continue;
+    }
+    try {
+      RunFile f = read_run(l.result);
+      if (!f.scene) throw std::runtime_error(l.result + ": no resolved scene (scene_yaml)");
+      r.stage = control_stage(*f.scene);
+      if (r.stage < 0) throw std::runtime_error(l.result + ": its scene has no control stage");
+      const dem::StageConfig& st = f.scene->stages[static_cast<std::size_t>(r.stage)];
+      if (!r.hold && st.cyclic.component < 0) throw std::runtime_error(l.result + ": stages[" + std::to_string(r.stage) + "] has no cyclic loading");
+      if (!r.hold) r.period_s = st.cyclic.period_s, r.amplitude_Pa = st.cyclic.amplitude;
+      r.ru_limit = st.until.pore_pressure_ratio, r.strain_limit = st.until.double_amplitude_strain;
+      r.stage_end = f.stage_end.count(st.name) ? f.stage_end.at(st.name) : "";
+      r.series = std::move(f.series);
+      r.control = validation::summarise_control_stage(r.series, r.stage, r.period_s);
+      r.finished = true;
+    } catch (const std::exception& e) {
+      r.note = "unreadable: " + std::string(e.what());
+    }
+  }
+  // A hold has no period of its own: its cycles are those of its density's cyclic tests.
+  for (CyclicRun& h : runs) {
+    if (!h.hold || !h.finished) continue;
+    for (const CyclicRun& c : runs)
+      if (!c.hold && c.finished && c.density == h.density) h.period_s = c.period_s;
+    if (std::isfinite(h.period_s)) h.control.cycles = (h.control.end_time_s - h.control.start_time_s) / h.period_s;
+    else h.note = "no finished cyclic test of " + h.density + " to take the period from";
+  }
+  return runs;
+}
+
+// The outcome of a cyclic test in words: liquefied by which criterion, or a censored point.
+std::string outcome(const CyclicRun& r) {
+  const std::string c = validation::stop_criterion(r.stage_end);
+  if (c == "pore_pressure_ratio") return "liquefied: r_u ≥ " + number(r.ru_limit);
+  if (c == "double_amplitude_strain") return "liquefied: double-amplitude strain ≥ " + number(100 * r.strain_limit) + " %";
+  if (!c.empty()) return "stopped by until." + c;
+  return "not liquefied in " + fixed(r.control.cycles, 1) + " cycles" + (r.stage_end.empty() ? " (no stage_end attribute)" : "");
+}
+
+const CyclicRun* hold_of(const std::vector<CyclicRun>& runs, const std::string& density) {
+  for (const CyclicRun& r : runs)
+    if (r.hold && r.finished && r.density == density) return &r;
+  return nullptr;
+}
+
+// A hold that reached the r_u limit with nothing applied: the N_L of its density's tests that
+// liquefied no later than it did are bounded by that collapse, not set by the loading alone.
+std::string collapse_notes(const std::vector<CyclicRun>& runs) {
+  std::string notes;
+  for (const CyclicRun& h : runs) {
+    if (!h.hold || !h.finished || validation::stop_criterion(h.stage_end) != "pore_pressure_ratio") continue;
+    double low = INFINITY, high = -INFINITY;
+    for (const CyclicRun& r : runs)
+      if (!r.hold && r.finished && r.density == h.density && !validation::stop_criterion(r.stage_end).empty())
+        low = std::min(low, r.control.cycles), high = std::max(high, r.control.cycles);
+    notes += "\n⚠ " + h.run + " reached r_u ≥ " + number(h.ru_limit) + " with nothing applied after " +
+             fixed(h.control.end_time_s - h.control.start_time_s, 4) + " s (" + fixed(h.control.cycles, 2) + " cycles of " +
+             number(h.period_s) + " s)";
+    if (std::isfinite(low))
+      notes += "; its density's cyclic tests liquefied after " + fixed(low, 2) + " – " + fixed(high, 2) + " cycles" +
+               (high <= h.control.cycles ? ", no later than the hold: their N_L are bounded by the sample's own collapse at constant "
+                                           "volume, not set by the loading alone"
+                                         : "");
+    notes += ".\n";
+  }
+  return notes;
+}
+
+std::string liquefaction_table(const std::vector<CyclicRun>& runs, const std::vector<std::string>& folders) {
+  std::ostringstream md;
+  std::size_t finished = 0;
+  for (const CyclicRun& r : runs) finished += r.finished;
+  md << "Undrained cyclic triaxial tests (`scenes/tests/undrained_cyclic.yaml`) and their unloaded twins "
+        "(`scenes/tests/undrained_hold.yaml`) from " << folders.size() << " study folder(s); " << finished << " of " << runs.size()
+     << " runs finished. CSR from the name and from the resolved scene (the cyclic stage's `cyclic.amplitude` / 2 p0, p0 = p at "
+        "its start); N_L = (end − start of the cyclic stage) / period; a test that did not liquefy is a censored point "
+        "(N_L > N). The last column is the r_u its density's hold had after the same time with nothing applied: the part of the "
+        "test's r_u that the loading does not cause.\n\n";
+  validation::MarkdownTable tests({"run", "CSR (name)", "CSR (scene)", "p0 (kPa)", "N_L (cycles)", "outcome", "r_u at the end",
+                                   "hold's r_u at the same time"});
+  for (const CyclicRun& r : runs) {
+    if (r.hold) continue;
+    if (!r.finished) {
+      tests.row({r.run, fixed(r.csr_name, 3), "—", "—", "—", r.note, "—", "—"});
+      continue;
+    }
+    const double csr = validation::cyclic_stress_ratio(r.amplitude_Pa, r.control.p0_Pa);
+    // The consolidation holds every principal stress within 0.5 % of its target, so p0 and the
+    // scene's CSR are within about 0.5 % of the nominal; more than 1 % means name and scene disagree.
+    const bool agrees = std::abs(csr - r.csr_name) <= 0.01 * r.csr_name;
+    std::string at_hold = "—";
+    if (const CyclicRun* h = hold_of(runs, r.density)) {
+      const double ru = validation::value_since_start(h->series, h->stage, "pore_pressure_ratio", r.control.end_time_s - r.control.start_time_s);
+      at_hold = std::isfinite(ru) ? fixed(ru, 3) : "— (the hold lasted " + fixed(h->control.end_time_s - h->control.start_time_s, 3) + " s)";
+    }
+    const bool censored = validation::stop_criterion(r.stage_end).empty();
+    tests.row({r.run, fixed(r.csr_name, 3), fixed(csr, 4) + (agrees ? "" : " ⚠ differs from the name by more than 1 %"),
+               fixed(r.control.p0_Pa / 1e3, 2), (censored ? "> " : "") + fixed(r.control.cycles, 2), outcome(r), fixed(r.control.ru_end, 3),
+               at_hold});
+  }
+  validation::MarkdownTable holds({"run", "held for (s)", "cycles", "r_u at the end", "largest r_u", "how it ended"});
+  for (const CyclicRun& r : runs) {
+    if (!r.hold) continue;
+    if (!r.finished) {
+      holds.row({r.run, "—", "—", "—", "—", r.note});
+      continue;
+    }
+    holds.row({r.run, fixed(r.control.end_time_s - r.control.start_time_s, 3), fixed(r.control.cycles, 1), fixed(r.control.ru_end, 4),
+               fixed(r.control.ru_max, 4), (r.stage_end.empty() ? "no stage_end attribute" : r.stage_end) + (r.note.empty() ? "" : "; " + r.note)});
+  }
+  md << tests.text() << "\nThe holds (nothing applied after the same consolidation; cycles of the density's cyclic period):\n\n" << holds.text();
+  md << collapse_notes(runs);
+  md << "\n![CSR against the number of cycles to liquefaction](csr_nl.png)\n\n![r_u against the number of cycles](ru.png)\n";
+  return md.str();
+}
+
+}  // namespace
+
+int liquefaction(const std::string& out, const std::vector<std::string>& folders) {
+  std::vector<CyclicRun> runs;
+  std::vector<std::string> densities;
+  try {
+    for (const std::string& dir : folders)
+      for (CyclicRun& r : cyclic_runs(dir)) {
+        if (std::find(densities.begin(), densities.end(), r.density) == densities.end()) densities.push_back(r.density);
+        runs.push_back(std::move(r));
+      }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 2;
+  }
+  validation::Table csr;
+  csr.comments = {"compare-runs liquefaction: one row per finished cyclic test; density as in values.gp (liq_density_<n>);",
+                  "liquefied 0: a censored point, the test ended (duration) before either criterion: N_L > n_cycles"};
+  csr.columns = {"density [1]", "csr_name [1]", "csr_scene [1]", "n_cycles [1]", "liquefied [1]", "p0 [kPa]"};
+  validation::Table ru;
+  ru.comments = {"compare-runs liquefaction: r_u against cycles since the start of the control stage, one block per run (values.gp: liq_run_<k>)"};
+  validation::GnuplotValues values;
+  std::vector<std::string> run_names, run_density, run_hold;
+  for (const CyclicRun& r : runs) {
+    if (!r.finished) continue;
+    const double d = static_cast<double>(std::find(densities.begin(), densities.end(), r.density) - densities.begin() + 1);
+    if (!r.hold) {
+      csr.labels.push_back(r.run);
+      csr.rows.push_back({d, r.csr_name, validation::cyclic_stress_ratio(r.amplitude_Pa, r.control.p0_Pa), r.control.cycles,
+                          validation::stop_criterion(r.stage_end).empty() ? 0.0 : 1.0, r.control.p0_Pa / 1e3});
+    }
+    if (!std::isfinite(r.period_s)) continue;  // a hold without a cyclic test to count its cycles by
+    const validation::Table t = validation::ru_against_cycles(r.series, r.stage, r.period_s);
+    if (!ru.rows.empty()) ru.block_starts.push_back(ru.rows.size());
+    for (std::size_t i = 0; i < t.size(); ++i) ru.rows.push_back(t.rows[i]), ru.labels.push_back(r.run);
+    run_names.push_back(r.run), run_density.push_back(std::to_string(static_cast<int>(d))), run_hold.push_back(r.hold ? "1" : "0");
+  }
+  ru.columns = {"cycles [1]", "r_u [1]", "time since the stage start [s]"};
+  values.texts("liq_density", densities);
+  values.texts("liq_run", run_names);
+  values.texts("liq_run_density", run_density);
+  values.texts("liq_run_hold", run_hold);
+  try {
+    fs::create_directories(out);
+    dem::write_file_atomically((fs::path(out) / "table.md").string(), liquefaction_table(runs, folders));
+    dem::write_file_atomically((fs::path(out) / "csr_nl.dat").string(), csr.text());
+    dem::write_file_atomically((fs::path(out) / "ru.dat").string(), ru.text());
+    std::string from;
+    for (const std::string& f : folders) from += (from.empty() ? "" : ", ") + relative_paths(f, f);
+    dem::write_file_atomically((fs::path(out) / "values.gp").string(), values.text_file("Written by compare-runs liquefaction from " + from));
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
+  }
+  std::size_t finished = 0;
+  for (const CyclicRun& r : runs) {
+    finished += r.finished;
+    if (!r.finished) std::fprintf(stderr, "note: %s: %s\n", r.run.c_str(), r.note.c_str());
+  }
+  std::printf("liquefaction: %zu of %zu runs finished -> %s\n", finished, runs.size(), (fs::path(out) / "table.md").c_str());
+  return 0;
+}
+}  // namespace compare_runs

@@ -1,0 +1,34 @@
+#pragma once
+// The modes of compare-runs, one file each (compare_runs/<mode>.cpp); main.cpp parses the
+// arguments and calls one. Each returns the process's exit status: 0; 1 when the mode's judgement
+// fails (a stability case not acceptable, the reference or baseline missing) or its output cannot
+// be written; 2 on bad input (an unreadable manifest or references file).
+#include <string>
+#include <vector>
+
+#include "compare_runs/study_folder.hpp"
+
+namespace compare_runs {
+
+// Errors of every variant against `reference`, with its wall time: OUT/errors.dat, front.dat and
+// table.md (the cheapest variant within 1, 5, 10 %, then every variant).
+int convergence(const Manifest& manifest, const std::string& results, const std::string& out, const std::string& reference);
+
+// What became of each case: OUT/table.md. Exit 1 if a case is not acceptable, unless report_only.
+int stability(const Manifest& manifest, const std::string& results, const std::string& out, bool report_only);
+
+// Every validation row of `references` on every reading's ensemble against the baseline reading's:
+// OUT/table.md, decisions.json, tornado_<group>.dat and tornado_values.gp. `ensemble` (optional):
+// the paper study's results, on which the verdicts and causes are judged.
+int decisions(const Manifest& manifest, const std::string& out, const std::string& references, const std::string& baseline,
+              const std::string& ensemble);
+
+// Peak and critical state of each constant-p shear and the peaks in the pi-plane: OUT/table.md,
+// critical_state.dat, pi_plane.dat and values.gp.
+int critical_state(const Manifest& manifest, const std::string& results, const std::string& out);
+
+// CSR against N_L and r_u against cycles of the undrained cyclic tests of every folder, the holds
+// beside them: OUT/table.md, csr_nl.dat, ru.dat and values.gp.
+int liquefaction(const std::string& out, const std::vector<std::string>& folders);
+
+}  // namespace compare_runs
