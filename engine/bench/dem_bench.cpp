@@ -40,13 +40,16 @@
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
-#include <sstream>
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <sstream>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "bench/tiling.hpp"
 #include "config/scene_config.hpp"
@@ -147,6 +150,13 @@ std::string packing_for(const std::string& dir, double friction) {
   return path;
 }
 
+// Writes `json` (nlohmann-json; build/bin/bench-report reads it back).
+void write_json(const std::string& file, const nlohmann::ordered_json& json) {
+  std::ofstream out(file);
+  out << json.dump(2) << "\n";
+  if (!out.flush()) throw std::runtime_error(file + ": cannot be written");
+}
+
 // Memory of this process from /proc/self/status [MB]: "VmRSS" (now) or "VmHWM" (peak); 0 if unknown.
 double status_MB(const std::string& field) {
   std::ifstream in("/proc/self/status");
@@ -233,15 +243,21 @@ int run_size(const std::string& dir, int tiles, long steps, int reps, double ski
               order.c_str(), steps, reps, skin);
   std::printf("%-9s %-8s %-22s %-24s %-14s %-8s %s\n", "friction", "threads", "particle-steps/s (med)", "min .. max",
               "per CPU-s (1)", "2Nc/Np", "same bits as 1 thread");
-  std::ofstream json(dir + "/size_" + std::to_string(static_cast<long long>(n)) + "_" + order + ".json");
-  // One run per line, as in bench.json (reports/bench/run_bench.sh picks lines with grep).
-  json << "{\n  \"code\": \"cyclic-triax dem\",\n  \"version\": \"" << dem::software_version << "\",\n  \"particles\": "
-       << static_cast<long long>(n) << ",\n  \"tiles\": " << tiles << ",\n  \"order\": \"" << order
-       << "\",\n  \"steps\": " << steps << ",\n  \"warmup_steps\": 200,\n  \"repetitions\": " << reps
-       << ",\n  \"verlet_skin_m\": " << skin << ",\n  \"vector_lanes\": " << dem::simd_width()
-       << ",\n  \"baseline_rss_MB\": " << baseline_MB << ",\n  \"peak_rss_MB\": " << peak_MB
-       << ",\n  \"peak_bytes_per_particle\": " << (peak_MB - baseline_MB) * 1048576.0 / n << ",\n  \"runs\": [";
-  const char* sep = "\n    ";
+  // reports/bench/run_bench.sh reads it with build/bin/bench-report.
+  nlohmann::ordered_json json = {{"code", "cyclic-triax dem"},
+                                 {"version", dem::software_version},
+                                 {"particles", static_cast<long long>(n)},
+                                 {"tiles", tiles},
+                                 {"order", order},
+                                 {"steps", steps},
+                                 {"warmup_steps", 200},
+                                 {"repetitions", reps},
+                                 {"verlet_skin_m", skin},
+                                 {"vector_lanes", dem::simd_width()},
+                                 {"baseline_rss_MB", baseline_MB},
+                                 {"peak_rss_MB", peak_MB},
+                                 {"peak_bytes_per_particle", (peak_MB - baseline_MB) * 1048576.0 / n},
+                                 {"runs", nlohmann::ordered_json::array()}};
   bool all_same = true;
   for (Way& w : ways) {
     std::sort(w.rates.begin(), w.rates.end());
@@ -250,14 +266,19 @@ int run_size(const std::string& dir, int tiles, long steps, int reps, double ski
     const double median = w.rates[w.rates.size() / 2];
     std::printf("%-9.2f %-8d %-22.3e %.3e .. %.3e  %-14.3e %-8.2f %s\n", w.friction, w.threads, median, w.rates.front(),
                 w.rates.back(), w.cpu_rates[w.cpu_rates.size() / 2], w.z, w.same ? "yes" : "NO");
-    json << std::exchange(sep, ",\n    ") << "{\"friction\": " << w.friction << ", \"threads\": " << w.threads
-         << ", \"particle_steps_per_s_median\": " << median << ", \"min\": " << w.rates.front() << ", \"max\": " << w.rates.back()
-         << ", \"cpu_rate_median\": " << w.cpu_rates[w.cpu_rates.size() / 2]
-         << ", \"setup_s_median\": " << w.setup_s[w.setup_s.size() / 2] << ", \"coordination_number\": " << w.z
-         << ", \"timed_rebuilds\": " << w.rebuilds << ", \"same_bits_as_1_thread\": " << (w.same ? "true" : "false") << "}";
+    json["runs"].push_back({{"friction", w.friction},
+                            {"threads", w.threads},
+                            {"particle_steps_per_s_median", median},
+                            {"min", w.rates.front()},
+                            {"max", w.rates.back()},
+                            {"cpu_rate_median", w.cpu_rates[w.cpu_rates.size() / 2]},
+                            {"setup_s_median", w.setup_s[w.setup_s.size() / 2]},
+                            {"coordination_number", w.z},
+                            {"timed_rebuilds", w.rebuilds},
+                            {"same_bits_as_1_thread", w.same}});
     all_same = all_same && w.same;
   }
-  json << "\n  ]\n}\n";
+  write_json(dir + "/size_" + std::to_string(static_cast<long long>(n)) + "_" + order + ".json", json);
   std::printf("peak memory (VmHWM) %.1f MB, %.1f MB before tiling: %.0f bytes per particle\n", peak_MB, baseline_MB,
               (peak_MB - baseline_MB) * 1048576.0 / n);
   return all_same ? 0 : 1;
@@ -296,20 +317,23 @@ int run_shear(const std::string& dir, long steps, int reps, double skin) {
       w.rebuilds += sim.verlet_list().builds() - builds;
     }
   std::printf("dem-bench shear: %.0f spheres, mu = 0.5, one thread, %ld steps x %d repetitions, skin %g m\n", n, steps, reps, skin);
-  std::ofstream json(dir + "/shear.json");
-  json << "{\n  \"code\": \"cyclic-triax dem\",\n  \"version\": \"" << dem::software_version << "\",\n  \"particles\": "
-       << static_cast<long long>(n) << ",\n  \"friction\": 0.5,\n  \"steps\": " << steps << ",\n  \"repetitions\": " << reps
-       << ",\n  \"verlet_skin_m\": " << skin << ",\n  \"runs\": [";
-  const char* sep = "\n    ";
+  nlohmann::ordered_json json = {{"code", "cyclic-triax dem"},
+                                 {"version", dem::software_version},
+                                 {"particles", static_cast<long long>(n)},
+                                 {"friction", 0.5},
+                                 {"steps", steps},
+                                 {"repetitions", reps},
+                                 {"verlet_skin_m", skin},
+                                 {"runs", nlohmann::ordered_json::array()}};
   for (Way& w : ways) {
     std::sort(w.rates.begin(), w.rates.end());
     const double median = w.rates[w.rates.size() / 2];
     std::printf("%-13s %.3e particle-steps per CPU-s (median; %.3e .. %.3e), %zu list builds\n", w.name, median,
                 w.rates.front(), w.rates.back(), w.rebuilds);
-    json << std::exchange(sep, ",\n    ") << "{\"cell\": \"" << w.name << "\", \"cpu_rate_median\": " << median
-         << ", \"min\": " << w.rates.front() << ", \"max\": " << w.rates.back() << ", \"timed_rebuilds\": " << w.rebuilds << "}";
+    json["runs"].push_back(
+        {{"cell", w.name}, {"cpu_rate_median", median}, {"min", w.rates.front()}, {"max", w.rates.back()}, {"timed_rebuilds", w.rebuilds}});
   }
-  json << "\n  ]\n}\n";
+  write_json(dir + "/shear.json", json);
   return 0;
 }
 
@@ -405,29 +429,37 @@ int main(int argc, char** argv) {
     std::printf("%-10.2f %s\n", r.speedup, r.same_as_one_thread ? "yes" : "NO");
   }
   std::printf("peak memory (max RSS): %.1f MB\n", peak_mb);
-  std::ofstream json(dir + "/bench.json");
-  json << "{\n  \"code\": \"cyclic-triax dem\",\n  \"version\": \"" << dem::software_version
-       << "\",\n  \"vector_lanes\": " << dem::simd_width() << ",\n  \"particles\": 8000,\n  \"verlet_skin_m\": " << skin << ",\n  \"steps\": " << steps << ",\n  \"repetitions\": " << reps
-       << ",\n  \"peak_rss_MB\": " << peak_mb << ",\n  \"runs\": [";
   // One list for the runs of one process, one for two runs at once (their rate is both runs').
-  const char* sep = "\n";
+  nlohmann::ordered_json json = {{"code", "cyclic-triax dem"},
+                                 {"version", dem::software_version},
+                                 {"vector_lanes", dem::simd_width()},
+                                 {"particles", 8000},
+                                 {"verlet_skin_m", skin},
+                                 {"steps", steps},
+                                 {"repetitions", reps},
+                                 {"peak_rss_MB", peak_mb},
+                                 {"runs", nlohmann::ordered_json::array()},
+                                 {"two_runs_at_once", nlohmann::ordered_json::array()}};
   for (const auto& r : results)
     if (r.threads > 0)
-      json << std::exchange(sep, ",\n") << "    {\"packing\": \"" << r.packing << "\", \"friction\": " << r.friction
-           << ", \"threads\": " << r.threads
-           << ", \"particle_steps_per_s_median\": " << r.median_rate << ", \"min\": " << r.min_rate
-           << ", \"max\": " << r.max_rate << ", \"coordination_number\": " << r.contacts_per_particle
-           << ", \"same_bits_as_1_thread\": " << (r.same_as_one_thread ? "true" : "false") << "}";
-  json << "\n  ],\n  \"two_runs_at_once\": [";
-  sep = "\n";
-  for (const auto& r : results)
-    if (r.threads == 0)
-      json << std::exchange(sep, ",\n") << "    {\"packing\": \"" << r.packing << "\", \"friction\": " << r.friction
-           << ", \"runs\": 2, \"threads_per_run\": 1"
-           << ", \"total_particle_steps_per_s_median\": " << r.median_rate << ", \"min\": " << r.min_rate
-           << ", \"max\": " << r.max_rate << ", \"same_bits_as_1_thread\": " << (r.same_as_one_thread ? "true" : "false")
-           << "}";
-  json << "\n  ]\n}\n";
+      json["runs"].push_back({{"packing", r.packing},
+                              {"friction", r.friction},
+                              {"threads", r.threads},
+                              {"particle_steps_per_s_median", r.median_rate},
+                              {"min", r.min_rate},
+                              {"max", r.max_rate},
+                              {"coordination_number", r.contacts_per_particle},
+                              {"same_bits_as_1_thread", r.same_as_one_thread}});
+    else
+      json["two_runs_at_once"].push_back({{"packing", r.packing},
+                                          {"friction", r.friction},
+                                          {"runs", 2},
+                                          {"threads_per_run", 1},
+                                          {"total_particle_steps_per_s_median", r.median_rate},
+                                          {"min", r.min_rate},
+                                          {"max", r.max_rate},
+                                          {"same_bits_as_1_thread", r.same_as_one_thread}});
+  write_json(dir + "/bench.json", json);
   for (const auto& r : results)
     if (!r.same_as_one_thread) return 1;
   return 0;
