@@ -136,6 +136,7 @@ struct PairLoop {
   const Vec3* __restrict v;
   const Vec3* __restrict omega;
   const double* __restrict radius;
+  const double* __restrict mass;  // laws with contact dashpots (m*)
   Vec3* __restrict tangential;  // the tangential law's history (frictional laws)
   std::uint8_t* __restrict sliding_flag;
   Vec3* __restrict rolling;     // rolling springs (laws with rolling resistance)
@@ -165,6 +166,7 @@ struct PairLoop {
     v = p.v.data();
     omega = p.omega.data();
     radius = p.radius.data();
+    mass = p.mass.data();
     tangential = history.tangential.data();
     sliding_flag = history.sliding.data();
     rolling = history.rolling.data();
