@@ -136,7 +136,6 @@ struct PairLoop {
   const Vec3* __restrict v;
   const Vec3* __restrict omega;
   const double* __restrict radius;
-  const double* __restrict mass;  // laws with contact dashpots (m*)
   Vec3* __restrict tangential;  // the tangential law's history (frictional laws)
   std::uint8_t* __restrict sliding_flag;
   Vec3* __restrict rolling;     // rolling springs (laws with rolling resistance)
@@ -144,6 +143,7 @@ struct PairLoop {
   Vec3* __restrict torque_i;
   Vec3* __restrict torque_j;
   Sum4* __restrict scattered = nullptr;  // set: add the forces into these particle sums instead (see PairForces)
+  const double* __restrict mass;  // laws with contact dashpots (m*); last, so the other laws' loop reads the fields it did
 
   // Sizes the outputs and points at them.
   PairLoop(const Law& law_, const Particles& p, const PeriodicCell& cell_, const PairList& pairs, ContactHistory& history,
