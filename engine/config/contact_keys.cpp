@@ -67,10 +67,20 @@ AnyContactLaw read_contact_law(Section& m) {
     m.fail("rolling_stiffness", "is read only when rolling_friction > 0 (rolling resistance on); give both or neither");
   }
 
+  const double zeta = m.number("contact_damping", "", {0, 1, false, true}, 0.0,
+                               "contact dashpots, fraction zeta of critical: c_n = 2 zeta sqrt(m* k_n), c_t = 2 zeta sqrt(m* k_t) "
+                               "(tangential while sticking); 0 = none");
+  if (zeta > 0 && rolling.mu_r > 0)
+    m.fail("contact_damping", "and rolling_friction > 0 together are not compiled (no such law); give one of them");
   if (law == "linear") {
     const LinearNormal normal{m.number("kn", "N/m", {0, 1e12, true}, std::nullopt, "normal contact stiffness (law linear)")};
     const double ks = m.number("ks", "N/m", {0, 1e12}, std::nullopt, "tangential contact stiffness (law linear)");
     if (mu > 0 && ks <= 0) m.fail("ks", "must be > 0 when friction > 0, got " + std::to_string(ks));
+    if (zeta > 0) {
+      const Dashpot<LinearNormal> damped{normal, zeta};
+      if (mu == 0) return LinearDashpotLaw{damped, {}, {}};
+      return LinearFrictionDashpotLaw{damped, LinearCoulomb{ks, mu}, {}};
+    }
     if (mu == 0) return LinearLaw{normal, {}, {}};
     return with_rolling(normal, LinearCoulomb{ks, mu}, rolling);
   }
@@ -80,6 +90,10 @@ AnyContactLaw read_contact_law(Section& m) {
   // Open at 0.5: an isotropic elastic solid has -1 < nu <= 0.5, and nu = 0.5 (incompressible) is refused.
   normal.poisson_ratio = m.number("poisson_ratio", "", {-1, 0.5, true, true}, std::nullopt,
                                   "Poisson's ratio nu of the grains (law hertz_mindlin)");
+  if (zeta > 0) {
+    if (mu == 0) m.fail("contact_damping", "with law hertz_mindlin is compiled with friction > 0 only");
+    return HertzMindlinDashpotLaw{Dashpot<HertzNormal>{normal, zeta}, MindlinCoulomb::of(normal, mu), {}};
+  }
   if (mu == 0) return HertzLaw{normal, {}, {}};
   return with_rolling(normal, MindlinCoulomb::of(normal, mu), rolling);
 }
@@ -88,7 +102,7 @@ void emit_contact_law(YAML::Emitter& out, const AnyContactLaw& any) {
   std::visit(
       [&](const auto& law) {
         using Law = std::decay_t<decltype(law)>;
-        if constexpr (std::is_same_v<typename Law::NormalLaw, LinearNormal>) {
+        if constexpr (std::is_base_of_v<LinearNormal, typename Law::NormalLaw>) {
           out << YAML::Key << "law" << YAML::Value << "linear" << YAML::Key << "kn" << YAML::Value << law.normal.kn;
           double ks = 0, mu = 0;
           if constexpr (Law::has_tangential) ks = law.tangential.ks, mu = law.tangential.mu;
@@ -100,6 +114,7 @@ void emit_contact_law(YAML::Emitter& out, const AnyContactLaw& any) {
           if constexpr (Law::has_tangential) mu = law.tangential.mu;
           out << YAML::Key << "friction" << YAML::Value << mu;
         }
+        if constexpr (Law::damped) out << YAML::Key << "contact_damping" << YAML::Value << law.normal.damping_ratio;
         if constexpr (Law::has_rolling)
           out << YAML::Key << "rolling_friction" << YAML::Value << law.rolling.mu_r << YAML::Key << "rolling_stiffness"
               << YAML::Value << law.rolling.kr;

@@ -51,4 +51,13 @@ double damping_stiffness(const AnyContactLaw& law) {
   return std::visit([](const auto& l) { return l.normal.damping_stiffness(); }, law);
 }
 
+double contact_damping_ratio(const AnyContactLaw& law) {
+  return std::visit(
+      [](const auto& l) {
+        if constexpr (std::decay_t<decltype(l)>::damped) return l.normal.damping_ratio;
+        return 0.0;
+      },
+      law);
+}
+
 }  // namespace dem

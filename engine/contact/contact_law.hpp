@@ -8,7 +8,11 @@
 // What each part provides (see contact/linear_spring.hpp for the exemplar):
 //   normal      force<O>(overlap, R*), stiffness<O>(overlap, R*) (d f_n / d overlap, for the servo),
 //               energy<O>(f_n, overlap), critical_time_step(m_min, r_min, density) and its formula,
-//               damping_stiffness() (0: viscous damping cannot be scaled), needs_reduced_radius
+//               damping_stiffness() (0: viscous damping cannot be scaled), needs_reduced_radius,
+//               friction_normal_force<O>(f_n) (the normal force the Coulomb and rolling caps take),
+//               needs_normal_velocity: if true, also damping_force<O>(overlap, R*, d overlap/dt, m*)
+//               (added to f_n) and tangential_coefficient<O>(k_t, m*) (a tangential dashpot while
+//               the contact sticks; see contact/contact_dashpot.hpp)
 //   tangential  has_tangential, history_name / history_unit, needs_reduced_radius,
 //               update<O>(HistoryStep&, f_n, overlap, R*, touch), energy<O>(f_t, overlap, R*),
 //               opening_loss<O>(|history|^2), force_of<O>(history, overlap, R*)
@@ -20,6 +24,7 @@
 #include <string>
 #include <variant>
 
+#include "contact/contact_dashpot.hpp"
 #include "contact/hertz_mindlin.hpp"
 #include "contact/linear_spring.hpp"
 #include "contact/rolling.hpp"
@@ -45,6 +50,7 @@ struct ContactLaw {
   static constexpr bool has_tangential = Tangential::has_tangential;
   static constexpr bool has_rolling = Rolling::has_rolling;
   static constexpr bool rotates = has_tangential || has_rolling;  // torques, spins
+  static constexpr bool damped = Normal::needs_normal_velocity;   // contact dashpots
   static constexpr bool needs_reduced_radius =
       Normal::needs_reduced_radius || Tangential::needs_reduced_radius || has_rolling;
 };
@@ -55,10 +61,13 @@ using LinearRollingLaw = ContactLaw<LinearNormal, LinearCoulomb, RollingSpring>;
 using HertzLaw = ContactLaw<HertzNormal>;
 using HertzMindlinLaw = ContactLaw<HertzNormal, MindlinCoulomb>;
 using HertzMindlinRollingLaw = ContactLaw<HertzNormal, MindlinCoulomb, RollingSpring>;
+using LinearDashpotLaw = ContactLaw<Dashpot<LinearNormal>>;
+using LinearFrictionDashpotLaw = ContactLaw<Dashpot<LinearNormal>, LinearCoulomb>;
+using HertzMindlinDashpotLaw = ContactLaw<Dashpot<HertzNormal>, MindlinCoulomb>;
 
 // Every law a scene can choose; the kernels are compiled for each.
-using AnyContactLaw =
-    std::variant<LinearLaw, LinearFrictionLaw, LinearRollingLaw, HertzLaw, HertzMindlinLaw, HertzMindlinRollingLaw>;
+using AnyContactLaw = std::variant<LinearLaw, LinearFrictionLaw, LinearRollingLaw, HertzLaw, HertzMindlinLaw, HertzMindlinRollingLaw,
+                                   LinearDashpotLaw, LinearFrictionDashpotLaw, HertzMindlinDashpotLaw>;
 
 // The linear law with Coulomb friction if mu > 0 (frictionless otherwise).
 AnyContactLaw linear_law(double kn, double ks, double mu);
@@ -72,5 +81,6 @@ std::string tangential_history_name(const AnyContactLaw& law);
 double critical_time_step(const AnyContactLaw& law, const Particles& p, double density_kg_per_m3);
 std::string critical_time_step_formula(const AnyContactLaw& law);
 double damping_stiffness(const AnyContactLaw& law);  // [N/m]; 0 if the law has none
+double contact_damping_ratio(const AnyContactLaw& law);  // zeta of the contact dashpots; 0 without
 
 }  // namespace dem

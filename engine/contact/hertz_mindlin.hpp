@@ -23,9 +23,14 @@ struct HertzNormal {
   double coefficient() const { return 4.0 / 3.0 * effective_modulus(); }                                  // 4/3 E*
 
   static constexpr bool needs_reduced_radius = true;
+  static constexpr bool needs_normal_velocity = false;
   template <class O>
   [[gnu::always_inline]] inline typename O::Real force(typename O::Real overlap, typename O::Real reduced_radius) const {
     return (O::splat(coefficient()) * O::sqrt(reduced_radius * overlap)) * overlap;
+  }
+  template <class O>
+  [[gnu::always_inline]] inline typename O::Real friction_normal_force(typename O::Real fn) const {
+    return fn;
   }
   // d f_n / d overlap = 3/2 f_n / overlap = 2 E* sqrt(R* overlap) [N/m].
   template <class O>

@@ -16,9 +16,15 @@ struct LinearNormal {
   double kn = 0;  // normal stiffness [N/m]
 
   static constexpr bool needs_reduced_radius = false;
+  static constexpr bool needs_normal_velocity = false;  // no dashpot (contact/contact_dashpot.hpp adds one)
   template <class O>
   [[gnu::always_inline]] inline typename O::Real force(typename O::Real overlap, typename O::Real /*reduced_radius*/) const {
     return O::splat(kn) * overlap;
+  }
+  // The normal force the Coulomb cap takes (a cohesive or damped law changes it): f_n itself.
+  template <class O>
+  [[gnu::always_inline]] inline typename O::Real friction_normal_force(typename O::Real fn) const {
+    return fn;
   }
   // d f_n / d overlap, for the servo [N/m].
   template <class O>
@@ -45,6 +51,12 @@ struct LinearCoulomb {
   static constexpr bool needs_reduced_radius = false;
   double ks = 0;  // tangential stiffness [N/m]
   double mu = 0;  // friction coefficient [-]
+
+  // d f_t / d u_s [N/m] (for a tangential dashpot).
+  template <class O>
+  [[gnu::always_inline]] inline typename O::Real stiffness(typename O::Real /*overlap*/, typename O::Real /*reduced_radius*/) const {
+    return O::splat(ks);
+  }
 
   template <class O>
   [[gnu::always_inline]] inline void update(HistoryStep<O>& s, typename O::Real fn, typename O::Real /*overlap*/, typename O::Real /*reduced_radius*/,

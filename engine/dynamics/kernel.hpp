@@ -143,6 +143,7 @@ struct PairLoop {
   Vec3* __restrict torque_i;
   Vec3* __restrict torque_j;
   Sum4* __restrict scattered = nullptr;  // set: add the forces into these particle sums instead (see PairForces)
+  const double* __restrict mass;  // laws with contact dashpots (m*); last, so the other laws' loop reads the fields it did
 
   // Sizes the outputs and points at them.
   PairLoop(const Law& law_, const Particles& p, const PeriodicCell& cell_, const PairList& pairs, ContactHistory& history,
@@ -165,6 +166,7 @@ struct PairLoop {
     v = p.v.data();
     omega = p.omega.data();
     radius = p.radius.data();
+    mass = p.mass.data();
     tangential = history.tangential.data();
     sliding_flag = history.sliding.data();
     rolling = history.rolling.data();

@@ -3,6 +3,7 @@
 #include <immintrin.h>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cstdio>
 #include <cstdlib>
@@ -19,6 +20,7 @@
 
 namespace dem {
 
+#ifndef DEM_KERNEL_DASHPOT_UNIT
 int simd_width_available() {
   static const int width = __builtin_cpu_supports("avx512f") ? 8 : __builtin_cpu_supports("avx2") ? 4 : 0;
   return width;
@@ -39,6 +41,7 @@ int& simd_cap() {
 
 int simd_width() { return std::min(simd_width_available(), simd_cap()); }
 void cap_simd_width(int lanes) { simd_cap() = lanes; }
+#endif
 
 namespace {
 // The 16 chunk sums as components: the stress column-major (f_a l_b at a + 3 b), the servo
@@ -503,19 +506,35 @@ MotionSums forces_and_motion(int simd_lanes, const Law& law, const DampingPolicy
 
 // forces_and_motion for every law a scene can choose, both damping forms, orthorhombic and
 // sheared: the table's addresses make the compiler emit each instantiation for
-// dynamics/simulation.cpp to call.
+// dynamics/simulation.cpp to call. The laws with contact dashpots are emitted by a unit of their
+// own (dynamics/kernel_simd_dashpot.cpp, which includes this file): GCC's inlining budget is per
+// unit, and with them in this one it stopped inlining Accumulator::add into the other laws' loops
+// (2-3 % slower); apart, the other laws' code is what it was without them.
+#ifdef DEM_KERNEL_DASHPOT_UNIT
+constexpr bool dashpot_unit = true;
+#define DEM_KERNEL_STEPS steps_of_dashpot_laws
+#else
+constexpr bool dashpot_unit = false;
+#define DEM_KERNEL_STEPS steps_of_every_law
+#endif
 namespace {
+template <class Law>
+auto steps_of() {
+  if constexpr (Law::damped == dashpot_unit) {
+    return std::make_tuple(&forces_and_motion<Law, ViscousDamping, false>, &forces_and_motion<Law, ViscousDamping, true>,
+                           &forces_and_motion<Law, LocalDamping, false>, &forces_and_motion<Law, LocalDamping, true>);
+  } else {
+    return std::tuple<>{};
+  }
+}
 template <class Variant>
 struct StepsOfEveryLaw;
 template <class... Laws>
 struct StepsOfEveryLaw<std::variant<Laws...>> {
-  static auto table() {
-    return std::make_tuple(&forces_and_motion<Laws, ViscousDamping, false>..., &forces_and_motion<Laws, ViscousDamping, true>...,
-                           &forces_and_motion<Laws, LocalDamping, false>..., &forces_and_motion<Laws, LocalDamping, true>...);
-  }
+  static auto table() { return std::tuple_cat(steps_of<Laws>()...); }
 };
 }  // namespace
-extern const decltype(StepsOfEveryLaw<AnyContactLaw>::table()) steps_of_every_law;
-const decltype(StepsOfEveryLaw<AnyContactLaw>::table()) steps_of_every_law = StepsOfEveryLaw<AnyContactLaw>::table();
+extern const decltype(StepsOfEveryLaw<AnyContactLaw>::table()) DEM_KERNEL_STEPS;
+const decltype(StepsOfEveryLaw<AnyContactLaw>::table()) DEM_KERNEL_STEPS = StepsOfEveryLaw<AnyContactLaw>::table();
 
 }  // namespace dem

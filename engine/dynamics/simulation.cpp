@@ -22,6 +22,7 @@ StepSums total_of_chunks(const std::vector<StepSums>& chunk_sums, const Periodic
     total.friction_loss_J += chunk.friction_loss_J;
     total.elastic_rolling_J += chunk.elastic_rolling_J;
     total.rolling_loss_J += chunk.rolling_loss_J;
+    total.contact_damping_loss_J += chunk.contact_damping_loss_J;
   }
   const double inv_volume = 1.0 / cell.volume();
   const Mat3 stress = total.stress_Pa;  // a copy: (A + A^T) assigned to A would alias
@@ -184,6 +185,8 @@ void Simulation::advance(const std::function<CellRates()>& rates) {
   kinetic_energy_ = motion.kinetic_half_step;
   energy_.kinetic = motion.kinetic_centred;
   energy_.dissipated_damping += motion.damping_loss;
+  // The contact dashpots' share (+0.0 for a law without, which leaves the sum's bits as they were).
+  energy_.dissipated_damping += sums_.contact_damping_loss_J;
   if (!energy_.started) energy_.stored_at_start = energy_.stored(), energy_.started = true;
   if (!std::isfinite(kinetic_energy_)) {
     std::ostringstream msg;

@@ -64,6 +64,7 @@ struct StepSums {          // by-products of the last force evaluation
   double friction_loss_J = 0;          // spring energy removed by the Coulomb cap (and by contacts opening) in this evaluation
   double elastic_rolling_J = 0;        // sum 1/2 kr |u_r|^2 (rolling resistance)
   double rolling_loss_J = 0;           // rolling spring energy removed by its cap (and by contacts opening)
+  double contact_damping_loss_J = 0;   // taken by the contact dashpots in this step (laws with dashpots)
 };
 
 // The energy balance of a run [J], accumulated step by step from the first step of this
@@ -74,7 +75,7 @@ struct StepSums {          // by-products of the last force evaluation
 // cell shears).
 struct EnergyBalance {
   double work_by_cell = 0;         // integral of V sigma : d(eps), compression positive
-  double dissipated_damping = 0;   // taken by the damping (translational + rotational)
+  double dissipated_damping = 0;   // taken by the damping: body (translational + rotational) and contact dashpots
   double dissipated_friction = 0;  // taken by sliding contacts
   double dissipated_rolling = 0;   // taken by rolling resistance at its cap
   double kinetic = 0;              // time-centred, translational + rotational

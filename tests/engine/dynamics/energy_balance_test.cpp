@@ -286,16 +286,30 @@ TEST_CASE("Energy balance closes for every contact law, at O(dt^2) once Mindlin'
       {"Hertz frictionless", hertz + "friction: 0}", local},
       {"Hertz-Mindlin", hertz + "friction: 0.5}", local},
       {"Hertz-Mindlin + rolling", hertz + "friction: 0.5, rolling_friction: 0.1, rolling_stiffness: 5.0e4}", local},
+      // Contact dashpots (zeta = 0.05), with the body damping off (SPEC section 7's alternative)
+      // where the packing still forms its contacts: frictionless spheres without body damping
+      // stay a rattling gas (93 contacts at most), so that one keeps viscous damping.
+      {"linear + dashpots", linear + "friction: 0, contact_damping: 0.05}", viscous},
+      {"linear + friction + dashpots", linear + "friction: 0.5, contact_damping: 0.05}", "{form: viscous, translational: 0, rotational: 0}"},
+      {"Hertz-Mindlin + dashpots", hertz + "friction: 0.5, contact_damping: 0.05}", "{form: local, translational: 0, rotational: 0}"},
   };
+  // The dashpots' booking error (contact_dashpot_test.cpp) is at most 2 zeta w (1 + e) of what
+  // they take per collision, w = omega dt; the stiffest contact here is kn = 1e6 N/m between the
+  // lightest spheres (3 mm, m* = 1.9e-5 kg), omega = 2.3e5/s (w = 0.46 at 2 us; Hertz's contacts
+  // are softer); the dashpots take at most the energy put in. With e <= 1: |gap| / in <= 4 zeta w.
+  const double m_star = 0.5 * 2650 * sphere_volume(1.5e-3), omega = std::sqrt(1e6 / m_star);
+  const auto dashpot_bound = [&](double dt) { return 4 * 0.05 * omega * dt; };
   std::vector<bool> covered(std::variant_size_v<AnyContactLaw>, false);
   for (const LawCase& c : laws) {
     INFO("law " << c.name);
     std::vector<double> residual;
+    bool damped = false;
     for (const double dt : {2e-6, 1e-6, 5e-7}) {
       const LawBalance b = squeeze_law(c, dt);
       const EnergyBalance& e = b.sim.energy();
       const AnyContactLaw& law = b.sim.material().law;
       covered[law.index()] = true;
+      damped = contact_damping_ratio(law) > 0;
       const double in = e.energy_in();
       const double r = (closure_gap(e) - b.mindlin.S) / in;
       INFO("dt " << dt << ": in " << in << " J, stored " << e.stored() << " J, damping " << e.dissipated_damping
@@ -311,16 +325,27 @@ TEST_CASE("Energy balance closes for every contact law, at O(dt^2) once Mindlin'
       if (!has_rolling(law)) REQUIRE(e.dissipated_rolling == 0.0);
       // The engine's closure error is the same number.
       REQUIRE(std::abs(closure_gap(e)) / in == Approx(e.closure_error()).epsilon(1e-12));
-      if (!std::holds_alternative<HertzMindlinLaw>(law) && !std::holds_alternative<HertzMindlinRollingLaw>(law))
-        REQUIRE(b.mindlin.S == 0.0);
+      if (tangential_history_name(law) != MindlinCoulomb::history_name) REQUIRE(b.mindlin.S == 0.0);
       // Mindlin's term stays within what the Coulomb cap allows (1e-9: the cap leaves
-      // |f_t| = mu f_n up to a few roundings).
-      REQUIRE(std::abs(b.mindlin.S) <= b.mindlin.T * (1 + 1e-9));
+      // |f_t| = mu f_n up to a few roundings). T takes the elastic f_n; with dashpots the cap takes
+      // the total, which this test does not recompute.
+      if (!damped) REQUIRE(std::abs(b.mindlin.S) <= b.mindlin.T * (1 + 1e-9));
       // The run stays far inside the engine's guard (numerics.max_energy_error, 5 %) and the issue's 1 %.
-      REQUIRE(e.closure_error() < 1e-2);
+      // Dashpots: the O(dt) bound below; every other law well inside 1 %.
+      if (!damped) REQUIRE(e.closure_error() < 1e-2);
+      if (damped) REQUIRE(e.closure_error() <= dashpot_bound(dt));
       residual.push_back(std::abs(r));
     }
     INFO("residuals " << residual[0] << ", " << residual[1] << ", " << residual[2]);
+    if (damped) {
+      for (std::size_t k = 0; k < 3; ++k) REQUIRE(residual[k] <= dashpot_bound(2e-6 / double(1 << k)));
+      // Contact dashpots: the engine books c (d overlap/dt)^2 dt with the speed of the half step
+      // before; the work the kinetic energy sees takes the mean of the two half steps. Summed over
+      // a contact that differs by O(dt^2) plus c dt/4 (v_end^2 - v_start^2), the closing speeds
+      // where it opens and closes (contact_dashpot_test.cpp): O(dt), so 4 over two halvings.
+      REQUIRE(residual[0] / residual[2] > 3);
+      continue;
+    }
     // O(dt^2): 16 over two halvings, O(dt) 4. The trajectories are chaotic, so single halvings
     // scatter (2.5 ... 11 measured); over two the ratio was 12.7 (Hertz undamped) ... 24 (Hertz-
     // Mindlin + rolling).

@@ -8,9 +8,12 @@
 #include <cstdint>
 #include <string>
 #include <tuple>
+#include <type_traits>
+#include <utility>
 #include <variant>
 #include <vector>
 
+#include "config/contact_keys.hpp"
 #include "config/scene_config.hpp"
 #include "contact/scalar_lanes.hpp"
 #include "run/run_scene.hpp"
@@ -58,6 +61,37 @@ inline Simulation compressed(double friction, int threads, int steps, int side =
   return sim;
 }
 
+// Example constants of each part of a law. Linear: kn = ks = 1e6 N/m, as in compressed() above.
+// Hertz-Mindlin: E = 1e9 Pa, nu = 0.3, so that at 100 kPa overlaps are ~1 % of a radius; its
+// Rayleigh step pi r_min sqrt(rho/G) / (0.1631 nu + 0.8766) is 17.8 us for r_min = 2 mm
+// (G = E / 2.6), so dt = 1 us is 0.056 of it (the engine refuses more than 0.2). Friction 0.5.
+// Rolling: mu_r = 0.1 with k_r = 5e5 N/m (linear; half of kn) and 5e4 N/m (Hertz; about half the
+// normal stiffness 2 E* sqrt(R* delta) ~ 1.4e5 N/m at 100 kPa): the rolling spring's rotational
+// frequency sqrt(k_r R*^2 / I) stays below the normal one. Contact dashpots: zeta = 0.05.
+// A new kind of part needs its example here; a new combination of parts needs nothing.
+template <class T>
+using part = std::type_identity<T>;
+inline LinearNormal example_normal(part<LinearNormal>) { return {1e6}; }
+inline HertzNormal example_normal(part<HertzNormal>) { return {1e9, 0.3}; }
+template <class Elastic>
+Dashpot<Elastic> example_normal(part<Dashpot<Elastic>>) {
+  return {example_normal(part<Elastic>{}), 0.05};
+}
+inline NoFriction example_tangential(part<NoFriction>, const auto&) { return {}; }
+inline LinearCoulomb example_tangential(part<LinearCoulomb>, const auto&) { return {1e6, 0.5}; }
+inline MindlinCoulomb example_tangential(part<MindlinCoulomb>, const HertzNormal& n) { return MindlinCoulomb::of(n, 0.5); }
+inline NoRolling example_rolling(part<NoRolling>, const auto&) { return {}; }
+template <class Normal>
+RollingSpring example_rolling(part<RollingSpring>, const Normal& n) {
+  return {n.damping_stiffness() > 0 ? 5e5 : 5e4, 0.1};
+}
+template <class Law>
+Law example_law() {
+  const auto normal = example_normal(part<typename Law::NormalLaw>{});
+  return Law{normal, example_tangential(part<typename Law::TangentialLaw>{}, normal),
+             example_rolling(part<typename Law::RollingLaw>{}, normal)};
+}
+
 // A contact law as a scene writes it, with the damping it allows.
 struct LawScene {
   std::string name;
@@ -66,28 +100,26 @@ struct LawScene {
   std::size_t index;     // the alternative of AnyContactLaw the scene must select
 };
 
-// Every law of AnyContactLaw (contact/contact_law.hpp) a scene can write, one per alternative (in
-// variant order). Linear: kn = ks = 1e6 N/m with viscous damping (the engine's default), as in
-// compressed() below. Hertz-Mindlin: E = 1e9 Pa, nu = 0.3, so that at 100 kPa overlaps are ~1 % of
-// a radius; Hertz has no constant stiffness to scale viscous damping with, so Cundall's local
-// damping (alpha = 0.1). Its Rayleigh step pi r_min sqrt(rho/G) / (0.1631 nu + 0.8766) is 17.8 us
-// for r_min = 2 mm (G = E / 2.6), so dt = 1 us is 0.056 of it (the engine refuses more than 0.2).
-// Rolling: mu_r = 0.1 with k_r = 5e5 N/m (linear; half of kn) and 5e4 N/m (Hertz; about half the
-// normal stiffness 2 E* sqrt(R* delta) ~ 1.4e5 N/m at 100 kPa): the rolling spring's rotational
-// frequency sqrt(k_r R*^2 / I) stays below the normal one.
+// A scene's material and damping for a law: its keys as the resolved scene writes them
+// (config/contact_keys.hpp), viscous damping (the engine's default) where the law has a stiffness
+// to scale it with, else Cundall's local damping (alpha = 0.1).
+inline LawScene law_scene(const AnyContactLaw& law) {
+  YAML::Emitter out;
+  out << YAML::Flow << YAML::BeginMap << YAML::Key << "density" << YAML::Value << 2650;
+  emit_contact_law(out, law);
+  out << YAML::EndMap;
+  const std::string damping =
+      damping_stiffness(law) > 0 ? "{form: viscous}" : "{form: local, translational: 0.1, rotational: 0.1}";
+  return {out.c_str(), out.c_str(), damping, law.index()};
+}
+
+// Every law of AnyContactLaw (contact/contact_law.hpp), one per alternative in variant order, as a
+// scene writes it: enumerated from the variant, so a new alternative is tested with no change here.
 inline const std::vector<LawScene>& every_law() {
-  static const std::string linear = "{density: 2650, kn: 1.0e6, ks: 1.0e6, ";
-  static const std::string hertz = "{density: 2650, law: hertz_mindlin, young_modulus: 1.0e9, poisson_ratio: 0.3, ";
-  static const std::string local = "{form: local, translational: 0.1, rotational: 0.1}";
-  static const std::vector<LawScene> laws = {
-      {"linear frictionless", linear + "friction: 0}", "{form: viscous}", 0},
-      {"linear + friction", linear + "friction: 0.5}", "{form: viscous}", 1},
-      {"linear + friction + rolling", linear + "friction: 0.5, rolling_friction: 0.1, rolling_stiffness: 5.0e5}", "{form: viscous}", 2},
-      {"Hertz frictionless", hertz + "friction: 0}", local, 3},
-      {"Hertz-Mindlin", hertz + "friction: 0.5}", local, 4},
-      {"Hertz-Mindlin + rolling", hertz + "friction: 0.5, rolling_friction: 0.1, rolling_stiffness: 5.0e4}", local, 5},
-  };
-  static_assert(std::variant_size_v<AnyContactLaw> == 6, "a new law needs its scene here");
+  static const std::vector<LawScene> laws = []<std::size_t... I>(std::index_sequence<I...>) {
+    return std::vector<LawScene>{law_scene(AnyContactLaw(std::in_place_index<I>,
+                                                         example_law<std::variant_alternative_t<I, AnyContactLaw>>()))...};
+  }(std::make_index_sequence<std::variant_size_v<AnyContactLaw>>{});
   return laws;
 }
 
