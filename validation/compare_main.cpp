@@ -38,6 +38,7 @@
 #include "format.hpp"
 #include "io/hdf5.hpp"
 #include "liquefaction.hpp"
+#include "manifest.hpp"
 #include "results.hpp"
 
 namespace fs = std::filesystem;
@@ -50,29 +51,8 @@ using validation::file_safe;
 using validation::json_string;
 using validation::number;
 
-struct ManifestLine {
-  std::string variant, density, test, run, result, starts_from, settings;
-  bool may_fail = false;
-  std::string seed = "-";  // the sample of an ensemble ("-": a study of one sample)
-};
-
-std::vector<ManifestLine> read_manifest(const std::string& dir) {
-  const fs::path file = fs::path(dir) / "runs.tsv";
-  std::ifstream in(file);
-  if (!in) throw std::runtime_error(file.string() + ": no manifest (run the study with build/bin/pipeline first)");
-  std::vector<ManifestLine> lines;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::vector<std::string> f;
-    std::stringstream ss(line);
-    std::string cell;
-    while (std::getline(ss, cell, '\t')) f.push_back(cell);
-    if (f.size() < 8) throw std::runtime_error(file.string() + ": a line with " + std::to_string(f.size()) + " fields, 8 expected");
-    lines.push_back({f[0], f[1], f[2], f[3], f[4], f[5], f[7], f[6] == "1", f.size() > 8 ? f[8] : "-"});
-  }
-  return lines;
-}
+using validation::ManifestLine;
+using validation::read_manifest;
 
 // The run time recorded in a complete result (0 if there is none).
 double wall_time(const std::string& result) {
@@ -954,7 +934,7 @@ int main(int argc, char** argv) {
         for (const auto& [name, values] : series)
           if (!values.empty()) sample[name] = values.back();
       } else {
-        tests.push_back({l.test, {0, series, validation::read_columns(l.result, "legs")}});
+        tests.push_back({l.test, {0, series, validation::read_columns(l.result, "legs"), l.test}});
       }
     }
     if (complete) r.quantities = validation::convergence_quantities(sample, tests);
