@@ -22,7 +22,7 @@ std::map<std::string, double> convergence_quantities(const std::map<std::string,
   // The preparation's values, through the validation's own definitions.
   for (const auto& [name, quantity] : {std::pair{"e0", "void_ratio_after_preparation"},
                                        std::pair{"coordination", "coordination_after_preparation"}})
-    if (const Measured m = compute({quantity, "", 0, 0, 0}, r); m.value) q[name] = *m.value;
+    if (const Measured m = compute({quantity, "", 0, 0, 0, ""}, r); m.value) q[name] = *m.value;
   const bool several = tests.size() > 1;
   for (const auto& [test, t] : tests) {
     const std::string suffix = several ? " " + test : "";
@@ -35,7 +35,7 @@ std::map<std::string, double> convergence_quantities(const std::map<std::string,
     }
     DensityResults one;
     one.tests.push_back(t);
-    if (const Measured m = compute({"qp_strong_fabric_slope", "", 0, 0, 0}, one); m.value) q["qp_slope" + suffix] = *m.value;
+    if (const Measured m = compute({"qp_strong_fabric_slope", "", 0, 0, 0, ""}, one); m.value) q["qp_slope" + suffix] = *m.value;
   }
   return q;
 }

@@ -1,22 +1,21 @@
-// validate: judges a study's results against the stored references (reference_data/paper.yaml),
-// writes validation.json and validation.md.
-//   validate --results DIR --references FILE --out DIR [--profile paper|quick]
-// Exit status: 0 only when everything asked for was done and judged: every result of every sample
-// (the samples runs.tsv lists) read, every row judged, no must-pass row inconsistent; 1 otherwise
-// (the tables are still written, and stderr says why); 2 for bad arguments, a references file that
-// cannot be read, a results folder that does not exist or an --out that is not a folder.
-// DIR is a study's results: an ensemble (DIR/seed<N>/, one folder per sample) or one sample.
-// Every row is computed per sample; its verdict compares the paper's value, widened by the row's
-// tolerance, with the 95 % prediction interval of a single sample of the ensemble (rows.hpp).
-#include <algorithm>
-#include <cmath>
+// validate: judges a study's results against a reference file (reference_data/paper.yaml, or a
+// user's own: validation/README.md), writes validation.json, validation.md and verdicts.md.
+//   validate --results DIR --references FILE --out DIR [--profile NAME] [--decisions decisions.json]
+// DIR is a study's results folder, with the manifest the pipeline writes (DIR/runs.tsv): an
+// ensemble (DIR/seed<N>/, one folder per sample) or one sample. Each row names the runs it reads by
+// the study's names (variant, density, test; row_runs.hpp), and only those runs are read.
+// Exit status: 0 only when everything asked for was done and judged: every result the rows need
+// read (of every sample runs.tsv lists), every row judged, no must-pass row inconsistent; 1
+// otherwise (the tables are still written, and stderr says why); 2 for bad arguments, a reference
+// file that cannot be read or has a bad row (an unknown key or quantity, a selector naming what the
+// study does not have), a results folder that does not exist or has no runs.tsv, or an --out that
+// is not a folder.
+// Every row is computed per sample; its verdict compares the reference's value, widened by the
+// row's tolerance, with the 95 % prediction interval of a single sample of the ensemble (rows.hpp).
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <limits>
 #include <map>
 #include <optional>
-#include <set>
 #include <sstream>
 #include <string>
 
@@ -25,20 +24,68 @@
 
 #include "io/atomic_file.hpp"
 #include "format.hpp"
+#include "manifest.hpp"
+#include "row_runs.hpp"
 #include "rows.hpp"
+#include "study_results.hpp"
+
+namespace fs = std::filesystem;
 
 namespace {
 
 using validation::cell;
 using validation::number;
+using validation::Verdict;
 
-std::string number_or_dash(const std::optional<double>& x) { return x ? number(*x) : "—"; }
+struct Options {
+  std::string results, references, out, profile = "paper", decisions;
+};
 
-// The paper's statement as a region: "0.73 ± 0.02", "≥ 0.05", "≤ 0".
+// The options, or nothing (after a message) when they are wrong.
+std::optional<Options> parse_options(int argc, char** argv) {
+  Options o;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    const std::string a = argv[i];
+    if (a == "--results") o.results = argv[i + 1];
+    else if (a == "--references") o.references = argv[i + 1];
+    else if (a == "--out") o.out = argv[i + 1];
+    else if (a == "--profile") o.profile = argv[i + 1];
+    else if (a == "--decisions") o.decisions = argv[i + 1];
+    else { std::fprintf(stderr, "validate: unknown option '%s'\n", a.c_str()); return std::nullopt; }
+  }
+  if (o.results.empty() || o.references.empty() || o.out.empty() || o.profile.empty()) {
+    std::fprintf(stderr, "usage: validate --results DIR --references FILE --out DIR [--profile NAME] [--decisions decisions.json]\n");
+    return std::nullopt;
+  }
+  return o;
+}
+
+// The decisions study's explanation of each row (compare-runs decisions), if it has run.
+std::map<std::string, std::string> read_causes(const std::string& file) {
+  std::map<std::string, std::string> cause;
+  if (file.empty() || !fs::exists(file)) return cause;
+  for (const YAML::Node& row : YAML::LoadFile(file)["rows"]) cause[row["name"].as<std::string>()] = row["explanation"].as<std::string>();
+  return cause;
+}
+
+// An error message about --results or --out, or "" when both can be used.
+std::string check_folders(const Options& o) {
+  std::error_code ec;
+  if (!fs::is_directory(o.results, ec))
+    return "--results '" + o.results + "' " + (fs::exists(o.results, ec) ? "is not a folder" : "does not exist") +
+           " (a study's results folder: seed<N>/ folders or one sample's results)";
+  if (fs::exists(o.out, ec) && !fs::is_directory(o.out, ec))
+    return "--out '" + o.out + "' is not a folder (validate writes validation.json, validation.md and verdicts.md into it)";
+  return "";
+}
+
+// The reference's statement as a region: "0.73 ± 0.02", "≥ 0.05", "≤ 0".
 std::string statement(const validation::Row& r) {
   if (r.check == "within") return number(r.reference) + (r.tolerance > 0 ? " ± " + number(r.tolerance) : "");
   return (r.check == "at_least" ? "≥ " : "≤ ") + number(r.reference);
 }
+
+std::string number_or_dash(const std::optional<double>& x) { return x ? number(*x) : "—"; }
 
 nlohmann::json json_number(const std::optional<double>& x) { return x ? nlohmann::json(*x) : nlohmann::json(nullptr); }
 
@@ -54,179 +101,214 @@ std::string interval(const validation::RowResult& e) {
   return "[" + validation::to_scatter(*e.spread.low, e.spread.sd) + ", " + validation::to_scatter(*e.spread.high, e.spread.sd) + "]";
 }
 
+const char* mark(Verdict v) {
+  return v == Verdict::Consistent ? "✅ consistent" : v == Verdict::Inconsistent ? "❌ inconsistent" : "— not judged";
+}
+
+// A row, judged: which runs it read and what they gave.
+struct Judged {
+  validation::Row row;
+  validation::RowRuns runs;
+  validation::RowResult result;
+};
+
+nlohmann::ordered_json json_row(const Judged& j) {
+  const validation::Row& r = j.row;
+  const validation::RowResult& e = j.result;
+  nlohmann::ordered_json row = {{"name", r.name}, {"group", r.group}, {"quantity", r.quantity}, {"density", j.runs.density},
+                                {"reference", r.reference}, {"check", r.check}, {"tolerance", r.tolerance},
+                                {"resolution", r.resolution}};
+  row["per_sample"] = nlohmann::json::array();
+  for (const auto& ps : e.samples)
+    row["per_sample"].push_back({{"sample", ps.sample}, {"value", json_number(ps.measured.value)}, {"note", ps.measured.note}});
+  row["n"] = e.valued;
+  row["mean"] = e.valued ? nlohmann::json(e.spread.mean) : nlohmann::json(nullptr);
+  row["sd"] = e.valued > 1 ? nlohmann::json(e.spread.sd) : nlohmann::json(nullptr);
+  row["prediction_interval"] = {json_number(e.spread.low), json_number(e.spread.high)};
+  row["holds_in"] = e.holds;
+  row["rule"] = r.rule;
+  row["verdict"] = validation::to_string(e.verdict);
+  row["must_pass"] = r.must_pass;
+  row["source"] = r.source;
+  row["reason"] = r.reason;
+  return row;
+}
+
+std::string markdown_row(const Judged& j) {
+  const validation::Row& r = j.row;
+  const validation::RowResult& e = j.result;
+  std::string values;
+  for (std::size_t k = 0; k < e.samples.size(); ++k) {
+    const auto& v = e.samples[k].measured.value;
+    values += (k ? ", " : "") + (e.valued > 1 && v ? validation::to_scatter(*v, e.spread.sd) : number_or_dash(v));
+  }
+  std::ostringstream md;
+  md << "| " << cell(r.name) << " | " << statement(r) << " | " << values << " | " << mean_sd_n(e) << " | " << interval(e) << " | "
+     << e.holds << " of " << e.valued << " | " << (r.rule == "majority" ? "holds in > half" : "interval") << " | " << mark(e.verdict)
+     << " | " << (r.must_pass ? "yes" : "no") << " | " << cell(r.source) << " | " << cell(r.reason) << " |\n";
+  return md.str();
+}
+
+struct Counts {
+  std::map<Verdict, int> verdicts;
+  int must_pass_failed = 0;
+};
+
+// verdicts.md: the counts, the rule, what is missing, and the rows not consistent with their causes.
+std::string verdicts_text(const std::vector<Judged>& judged, const Counts& c, std::size_t samples, std::size_t missing,
+                          std::size_t missing_samples, const std::string& label, const std::string& decisions_file,
+                          const std::map<std::string, std::string>& cause) {
+  // Each row not consistent, with the decisions study's cause when --decisions gave its findings.
+  std::ostringstream misses;
+  for (const Judged& j : judged) {
+    if (j.result.verdict == Verdict::Consistent) continue;
+    misses << "| " << cell(j.row.name) << " | " << mark(j.result.verdict) << " | " << statement(j.row) << " | " << interval(j.result)
+           << " | " << j.result.holds << " of " << j.result.valued << " |";
+    if (!decisions_file.empty()) {
+      const auto it = cause.find(j.row.name);
+      misses << " " << cell(it != cause.end() ? it->second : "the decisions study has not judged this row") << " |";
+    }
+    misses << "\n";
+  }
+  auto n = [&](Verdict v) { return c.verdicts.count(v) ? c.verdicts.at(v) : 0; };
+  std::ostringstream out;
+  out << "Of " << judged.size() << " rows, **" << n(Verdict::Consistent) << " consistent**, **" << n(Verdict::Inconsistent)
+      << " inconsistent**, " << n(Verdict::NotJudged) << " not judged, over " << samples << " sample" << (samples == 1 ? "" : "s")
+      << " per density. A value read from the " << label << " (rule *interval*) is consistent "
+      << "when it, widened by the row's reading tolerance, overlaps the 95 % prediction interval of one sample of ours (mean "
+         "± t(0.975, n−1) · sd · √(1 + 1/n)); a trend or an ordering (rule *holds in > half*) is consistent when it holds in "
+         "more than half of our samples. With fewer than two samples a row is not judged.\n";
+  if (missing || missing_samples)
+    out << "\n**Incomplete:** " << missing << " result file(s) missing or not complete"
+        << (missing_samples ? ", and " + std::to_string(missing_samples) + " sample(s) that `runs.tsv` lists have no folder" : std::string())
+        << "; the rows are judged on what is there.\n";
+  if (!misses.str().empty() && !decisions_file.empty())
+    out << "\nThe rows that are not consistent, and what the decisions study found for each (its own ensemble, "
+           "`make decisions`):\n\n| row | verdict | " << label << " | interval of one sample | holds in | cause |\n|---|---|---|---|---|---|\n"
+        << misses.str();
+  else if (!misses.str().empty())
+    out << "\nThe rows that are not consistent:\n\n| row | verdict | " << label << " | interval of one sample | holds in |\n|---|---|---|---|---|\n"
+        << misses.str();
+  return out.str();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  namespace fs = std::filesystem;
-  using validation::Verdict;
-  std::string results, references, out, profile = "paper", decisions_file;
-  for (int i = 1; i + 1 < argc; i += 2) {
-    const std::string a = argv[i];
-    if (a == "--results") results = argv[i + 1];
-    else if (a == "--references") references = argv[i + 1];
-    else if (a == "--out") out = argv[i + 1];
-    else if (a == "--profile") profile = argv[i + 1];
-    else if (a == "--decisions") decisions_file = argv[i + 1];
-    else { std::fprintf(stderr, "validate: unknown option '%s'\n", a.c_str()); return 2; }
-  }
-  if (results.empty() || references.empty() || out.empty()) {
-    std::fprintf(stderr, "usage: validate --results DIR --references reference_data/paper.yaml --out DIR [--profile paper|quick] [--decisions decisions.json]\n");
-    return 2;
-  }
-  std::vector<validation::Row> rows;
+  const std::optional<Options> opt = parse_options(argc, argv);
+  if (!opt) return 2;
+  const Options& o = *opt;
+  validation::References refs;
+  std::map<std::string, std::string> cause;
+  std::vector<validation::ManifestLine> manifest;
+  std::vector<Judged> judged;
   try {
-    if (profile != "paper" && profile != "quick") throw std::runtime_error("--profile must be paper or quick");
-    rows = validation::load_references(references, profile);
+    refs = validation::read_references(o.references, o.profile);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;
   }
-  // The decisions study's explanation of each row (compare-runs decisions), if it has run.
-  std::map<std::string, std::string> cause;
-  if (!decisions_file.empty() && fs::exists(decisions_file)) {
-    try {
-      for (const YAML::Node& row : YAML::LoadFile(decisions_file)["rows"])
-        cause[row["name"].as<std::string>()] = row["explanation"].as<std::string>();
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "error: %s: %s\n", decisions_file.c_str(), e.what());
-      return 2;
-    }
-  }
-  std::error_code ec;
-  if (!fs::is_directory(results, ec)) {
-    std::fprintf(stderr, "error: --results '%s' %s (a study's results folder: seed<N>/ folders or one sample's results)\n",
-                 results.c_str(), fs::exists(results, ec) ? "is not a folder" : "does not exist");
+  try {
+    cause = read_causes(o.decisions);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s: %s\n", o.decisions.c_str(), e.what());
     return 2;
   }
-  if (fs::exists(out, ec) && !fs::is_directory(out, ec)) {
-    std::fprintf(stderr, "error: --out '%s' is not a folder (validate writes validation.json, validation.md and verdicts.md into it)\n", out.c_str());
+  if (const std::string bad = check_folders(o); !bad.empty()) {
+    std::fprintf(stderr, "error: %s\n", bad.c_str());
     return 2;
   }
   try {
-    fs::create_directories(out);
+    fs::create_directories(o.out);
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "error: --out '%s': cannot create the folder: %s\n", out.c_str(), e.what());
+    std::fprintf(stderr, "error: --out '%s': cannot create the folder: %s\n", o.out.c_str(), e.what());
     return 2;
   }
-  std::vector<std::string> missing;
-  const auto samples = validation::load_samples(results, {"loose", "medium", "dense"}, missing);
-  // A sample the study lists (runs.tsv) whose folder is gone counts as missing too.
-  std::vector<std::string> missing_samples;
-  for (const std::string& name : validation::listed_samples(results))
-    if (std::none_of(samples.begin(), samples.end(), [&](const validation::Sample& s) { return s.name == name; }))
-      missing_samples.push_back(name);
-  std::ostringstream md;
+  // The study's names, and the runs each row reads: a row that names what the study lacks is refused.
+  try {
+    manifest = validation::read_manifest(o.results);
+    const std::string study = (fs::path(o.results) / "runs.tsv").string();
+    for (const validation::Row& r : refs.rows) judged.push_back({r, validation::resolve_runs(r, manifest, study), {}});
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 2;
+  }
+  std::vector<validation::RowRuns> needed;
+  for (const Judged& j : judged) needed.push_back(j.runs);
+  const validation::StudyResults results(o.results, manifest, needed);
+  Counts count;
+  for (Judged& j : judged) {
+    std::vector<std::pair<std::string, const validation::DensityResults*>> of_samples;
+    for (const std::string& s : results.samples()) of_samples.emplace_back(s, results.of(j.runs, s));
+    j.result = validation::evaluate(j.row, of_samples);
+    ++count.verdicts[j.result.verdict];
+    if (j.result.verdict == Verdict::Inconsistent && j.row.must_pass) ++count.must_pass_failed;
+  }
+  const int consistent = count.verdicts[Verdict::Consistent], inconsistent = count.verdicts[Verdict::Inconsistent],
+            not_judged = count.verdicts[Verdict::NotJudged];
+  const std::vector<std::string>& missing = results.missing();
+  const std::vector<std::string>& missing_samples = results.missing_samples();
+
   nlohmann::ordered_json json;
-  json["profile"] = profile;
-  json["references"] = references;
+  json["profile"] = o.profile;
+  json["references"] = o.references;
   json["rules"] = {
-      {"interval", "consistent: the paper's value, widened by the row's tolerance, overlaps the 95 % prediction interval of one sample (mean -/+ t(0.975, n-1) sd sqrt(1 + 1/n))"},
-      {"majority", "consistent: the paper's statement holds in more than half of the samples"},
+      {"interval", "consistent: the " + refs.label + "'s value, widened by the row's tolerance, overlaps the 95 % prediction interval of one sample (mean -/+ t(0.975, n-1) sd sqrt(1 + 1/n))"},
+      {"majority", "consistent: the " + refs.label + "'s statement holds in more than half of the samples"},
       {"both", "not judged with fewer than 2 samples with a value"}};
-  json["samples"] = nlohmann::json::array();
-  for (const validation::Sample& s : samples) json["samples"].push_back(s.name);
+  json["samples"] = results.samples();
   json["missing_samples"] = missing_samples;
   json["missing_results"] = nlohmann::json::array();
-  for (const std::string& m : missing) json["missing_results"].push_back(fs::relative(m, results).string());
+  for (const std::string& m : missing) json["missing_results"].push_back(fs::relative(m, o.results).string());
   json["rows"] = nlohmann::json::array();
-  md << "| check | paper | per sample | mean ± sd (n) | 95 % interval of one sample | holds in | rule | verdict | must pass | source | reason |\n"
+  std::ostringstream md;
+  md << "| check | " << refs.label << " | per sample | mean ± sd (n) | 95 % interval of one sample | holds in | rule | verdict | must pass | source | reason |\n"
      << "|---|---|---|---|---|---|---|---|---|---|---|\n";
-  std::map<Verdict, int> count;
-  int failed_must = 0;
-  std::ostringstream misses;  // the rows not consistent, with what the decisions study says of them
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    const validation::Row& r = rows[i];
-    const validation::RowResult e = validation::evaluate(r, samples);
-    ++count[e.verdict];
-    if (e.verdict == Verdict::Inconsistent && r.must_pass) ++failed_must;
-    std::string values;
-    nlohmann::ordered_json row = {{"name", r.name}, {"group", r.group}, {"quantity", r.quantity}, {"density", r.density},
-                                  {"reference", r.reference}, {"check", r.check}, {"tolerance", r.tolerance},
-                                  {"resolution", r.resolution}};
-    row["per_sample"] = nlohmann::json::array();
-    for (std::size_t k = 0; k < e.samples.size(); ++k) {
-      const auto& ps = e.samples[k];
-      row["per_sample"].push_back({{"sample", ps.sample}, {"value", json_number(ps.measured.value)}, {"note", ps.measured.note}});
-      if (k) values += ", ";
-      values += e.valued > 1 && ps.measured.value ? validation::to_scatter(*ps.measured.value, e.spread.sd) : number_or_dash(ps.measured.value);
-    }
-    row["n"] = e.valued;
-    row["mean"] = e.valued ? nlohmann::json(e.spread.mean) : nlohmann::json(nullptr);
-    row["sd"] = e.valued > 1 ? nlohmann::json(e.spread.sd) : nlohmann::json(nullptr);
-    row["prediction_interval"] = {json_number(e.spread.low), json_number(e.spread.high)};
-    row["holds_in"] = e.holds;
-    row["rule"] = r.rule;
-    row["verdict"] = validation::to_string(e.verdict);
-    row["must_pass"] = r.must_pass;
-    row["source"] = r.source;
-    row["reason"] = r.reason;
-    json["rows"].push_back(row);
-    const char* mark = e.verdict == Verdict::Consistent ? "✅ consistent" : e.verdict == Verdict::Inconsistent ? "❌ inconsistent" : "— not judged";
-    md << "| " << cell(r.name) << " | " << statement(r) << " | " << values << " | "
-       << mean_sd_n(e) << " | " << interval(e) << " | "
-       << e.holds << " of " << e.valued << " | " << (r.rule == "majority" ? "holds in > half" : "interval") << " | " << mark
-       << " | " << (r.must_pass ? "yes" : "no") << " | " << cell(r.source)
-       << " | " << cell(r.reason) << " |\n";
-    if (e.verdict != Verdict::Consistent) {
-      const auto c = cause.find(r.name);
-      misses << "| " << cell(r.name) << " | " << mark << " | " << statement(r) << " | "
-             << interval(e) << " | " << e.holds
-             << " of " << e.valued << " | "
-             << cell(c != cause.end() ? c->second : decisions_file.empty() ? "—" : "the decisions study has not judged this row")
-             << " |\n";
-    }
+  for (const Judged& j : judged) {
+    json["rows"].push_back(json_row(j));
+    md << markdown_row(j);
   }
-  json["consistent"] = count[Verdict::Consistent];
-  json["inconsistent"] = count[Verdict::Inconsistent];
-  json["not_judged"] = count[Verdict::NotJudged];
-  json["total"] = rows.size();
-  json["must_pass_inconsistent"] = failed_must;
+  json["consistent"] = consistent;
+  json["inconsistent"] = inconsistent;
+  json["not_judged"] = not_judged;
+  json["total"] = judged.size();
+  json["must_pass_inconsistent"] = count.must_pass_failed;
   // Everything asked for done and judged (the exit status 0).
-  json["complete"] = missing.empty() && missing_samples.empty() && count[Verdict::NotJudged] == 0;
-  std::ostringstream verdicts;
-  verdicts << "Of " << rows.size() << " rows, **" << count[Verdict::Consistent] << " consistent**, **" << count[Verdict::Inconsistent]
-           << " inconsistent**, " << count[Verdict::NotJudged] << " not judged, over " << samples.size() << " sample"
-           << (samples.size() == 1 ? "" : "s") << " per density. A value read from the paper (rule *interval*) is consistent "
-           << "when it, widened by the row's reading tolerance, overlaps the 95 % prediction interval of one sample of ours (mean "
-              "± t(0.975, n−1) · sd · √(1 + 1/n)); a trend or an ordering (rule *holds in > half*) is consistent when it holds in "
-              "more than half of our samples. With fewer than two samples a row is not judged.\n";
-  if (!missing.empty() || !missing_samples.empty())
-    verdicts << "\n**Incomplete:** " << missing.size() << " result file(s) missing or not complete"
-             << (missing_samples.empty() ? std::string() : ", and " + std::to_string(missing_samples.size()) + " sample(s) that `runs.tsv` lists have no folder")
-             << "; the rows are judged on what is there.\n";
-  if (!misses.str().empty())
-    verdicts << "\nThe rows that are not consistent, and what the decisions study found for each (its own ensemble, "
-                "`make decisions`):\n\n| row | verdict | paper | interval of one sample | holds in | cause |\n|---|---|---|---|---|---|\n"
-             << misses.str();
+  json["complete"] = missing.empty() && missing_samples.empty() && not_judged == 0;
   try {
-    dem::write_file_atomically((fs::path(out) / "verdicts.md").string(), verdicts.str());
-    dem::write_file_atomically((fs::path(out) / "validation.json").string(), json.dump(2) + "\n");
-    dem::write_file_atomically((fs::path(out) / "validation.md").string(), md.str());
+    dem::write_file_atomically((fs::path(o.out) / "verdicts.md").string(),
+                               verdicts_text(judged, count, results.samples().size(), missing.size(), missing_samples.size(),
+                                             refs.label, o.decisions, cause));
+    dem::write_file_atomically((fs::path(o.out) / "validation.json").string(), json.dump(2) + "\n");
+    dem::write_file_atomically((fs::path(o.out) / "validation.md").string(), md.str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 1;
   }
+  const std::size_t n_samples = results.samples().size();
   std::printf("validation of %zu sample%s: %d consistent, %d inconsistent, %d not judged of %zu rows; %d must-pass rows inconsistent; %zu result files missing, %zu samples missing -> %s\n",
-              samples.size(), samples.size() == 1 ? "" : "s", count[Verdict::Consistent], count[Verdict::Inconsistent],
-              count[Verdict::NotJudged], rows.size(), failed_must, missing.size(), missing_samples.size(),
-              (fs::path(out) / "validation.json").c_str());
+              n_samples, n_samples == 1 ? "" : "s", consistent, inconsistent, not_judged, judged.size(), count.must_pass_failed,
+              missing.size(), missing_samples.size(), (fs::path(o.out) / "validation.json").c_str());
   int status = 0;
   if (!missing_samples.empty()) {
     std::string names;
     for (const std::string& m : missing_samples) names += (names.empty() ? "" : ", ") + m;
-    std::fprintf(stderr, "error: %s/runs.tsv lists %zu sample(s) whose folder is gone: %s\n", results.c_str(), missing_samples.size(), names.c_str());
+    std::fprintf(stderr, "error: %s/runs.tsv lists %zu sample(s) whose folder is gone: %s\n", o.results.c_str(), missing_samples.size(), names.c_str());
     status = 1;
   }
   if (!missing.empty()) {
-    std::fprintf(stderr, "error: %zu result file(s) missing or not complete, e.g. %s\n", missing.size(), missing.front().c_str());
+    std::fprintf(stderr, "error: %zu result file(s) missing or not complete (of the runs the rows read), e.g. %s\n", missing.size(), missing.front().c_str());
     status = 1;
   }
-  if (count[Verdict::NotJudged] > 0) {
-    std::fprintf(stderr, "error: %d row(s) not judged (fewer than 2 samples with a value)\n", count[Verdict::NotJudged]);
+  if (not_judged > 0) {
+    std::string names;
+    for (const Judged& j : judged)
+      if (j.result.verdict == Verdict::NotJudged) names += (names.empty() ? "" : "; ") + j.row.name;
+    std::fprintf(stderr, "error: %d row(s) not judged (fewer than 2 samples with a value): %s\n", not_judged, names.c_str());
     status = 1;
   }
-  if (failed_must > 0) {
-    std::fprintf(stderr, "error: %d must-pass row(s) inconsistent with the paper\n", failed_must);
+  if (count.must_pass_failed > 0) {
+    std::fprintf(stderr, "error: %d must-pass row(s) inconsistent with the %s\n", count.must_pass_failed, refs.label.c_str());
     status = 1;
   }
   return status;

@@ -1,10 +1,13 @@
 #include "quantities.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <map>
 #include <numbers>
 #include <sstream>
+
+#include "critical_state.hpp"
 
 namespace validation {
 
@@ -19,8 +22,9 @@ std::optional<double> at_cycle_end(const TestResult& t, const std::string& colum
 
 namespace {
 
-// Mean over the tests of f(test); the note says how many tests contributed.
-Measured mean_over_tests(const DensityResults& r, const std::function<std::optional<double>(const TestResult&)>& f) {
+// Mean over the tests of f(test); the note says which tests contributed, or `none` when none did.
+Measured mean_over_tests(const DensityResults& r, const std::function<std::optional<double>(const TestResult&)>& f,
+                         const std::string& none = "no test reaches the cycles asked for") {
   double sum = 0;
   int n = 0;
   std::string tests;
@@ -29,9 +33,9 @@ Measured mean_over_tests(const DensityResults& r, const std::function<std::optio
       sum += *v;
       ++n;
       if (!tests.empty()) tests += ',';
-      tests += std::to_string(t.number);
+      tests += test_label(t);
     }
-  if (n == 0) return {std::nullopt, "no test reaches the cycles asked for"};
+  if (n == 0) return {std::nullopt, none};
   return {sum / n, "mean of tests " + tests};
 }
 
@@ -81,91 +85,137 @@ std::optional<double> ev_at(const TestResult& t, int c) {
 
 // How far test `n`'s εv after cycle c leads (lead: εv_n - max over the other tests) or lags
 // (εv of the least compacted other test - εv_n): positive when the ordering the paper states holds.
-Measured ev_margin(const DensityResults& r, int n, int c, bool lead) {
+Measured ev_margin(const DensityResults& r, const std::string& n, int c, bool lead) {
   std::optional<double> own, other;
   std::ostringstream note;
   for (const TestResult& t : r.tests)
     if (const auto v = ev_at(t, c)) {
-      note << "test " << t.number << ": " << *v << " %; ";
-      if (t.number == n) own = *v;
+      note << "test " << test_label(t) << ": " << *v << " %; ";
+      if (t.name == n) own = *v;
       else if (!other || (lead ? *v > *other : *v < *other)) other = *v;
     }
-  if (!own || !other) return {std::nullopt, "test " + std::to_string(n) + " or every other test lacks cycle " + std::to_string(c)};
+  if (!own || !other) return {std::nullopt, "test " + test_label(n) + " or every other test lacks cycle " + std::to_string(c)};
   return {lead ? *own - *other : *other - *own, note.str()};
+}
+
+// What a drained shear gives (critical_state.hpp: the peak on stresses smoothed over 1 % of axial
+// strain, the critical state over 30 ... 40 % of it), mean over the tests.
+Measured mean_over_shears(const DensityResults& r, const std::function<std::optional<double>(const ShearSummary&)>& f,
+                          const std::string& none) {
+  return mean_over_tests(r, [&](const TestResult& t) { return f(summarise_shear(t.series)); }, none);
 }
 
 using Fn = std::function<Measured(const QuantityRequest&, const DensityResults&)>;
 
-const std::map<std::string, Fn>& registry() {
-  static const std::map<std::string, Fn> fns = {
+struct Quantity {
+  Reads reads;
+  Fn fn;
+};
+
+constexpr Reads preparation = Reads::Preparation, tests = Reads::Tests;
+
+const std::map<std::string, Quantity>& registry() {
+  static const std::map<std::string, Quantity> fns = {
       {"void_ratio_after_preparation",
-       [](const QuantityRequest&, const DensityResults& r) -> Measured {
-         if (!r.prepared) return {std::nullopt, "no prepared sample"};
-         return {r.sample.at("void_ratio"), ""};
-       }},
+       {preparation, [](const QuantityRequest&, const DensityResults& r) -> Measured {
+          if (!r.prepared) return {std::nullopt, "no prepared sample"};
+          return {r.sample.at("void_ratio"), ""};
+        }}},
       {"coordination_after_preparation",
-       [](const QuantityRequest&, const DensityResults& r) -> Measured {
-         if (!r.prepared) return {std::nullopt, "no prepared sample"};
-         return {r.sample.at("coordination_number"), "without rattlers: " + std::to_string(r.sample.at("coordination_number_mechanical"))};
-       }},
+       {preparation, [](const QuantityRequest&, const DensityResults& r) -> Measured {
+          if (!r.prepared) return {std::nullopt, "no prepared sample"};
+          return {r.sample.at("coordination_number"), "without rattlers: " + std::to_string(r.sample.at("coordination_number_mechanical"))};
+        }}},
       {"cell_side_cm_after_preparation",
-       [](const QuantityRequest&, const DensityResults& r) -> Measured {
-         if (!r.prepared) return {std::nullopt, "no prepared sample"};
-         // The paper's cell holds 8,000 spheres: a sample of N spheres is scaled to that count by
-         // (8,000 / N)^(1/3), so that smaller samples (the decisions study's) compare too.
-         const double v = r.sample.at("cell_length_1") * r.sample.at("cell_length_2") * r.sample.at("cell_length_3");
-         const auto n = r.sample.find("particles");
-         if (n == r.sample.end() || n->second <= 0) return {100 * std::cbrt(v), "cube root of the cell volume (sphere count unknown)"};
-         if (n->second == 8000) return {100 * std::cbrt(v), "cube root of the cell volume"};
-         return {100 * std::cbrt(v * 8000 / n->second), "cube root of the cell volume, scaled to 8,000 spheres from " +
-                                                        std::to_string(static_cast<long>(n->second))};
-       }},
+       {preparation, [](const QuantityRequest&, const DensityResults& r) -> Measured {
+          if (!r.prepared) return {std::nullopt, "no prepared sample"};
+          // The paper's cell holds 8,000 spheres: a sample of N spheres is scaled to that count by
+          // (8,000 / N)^(1/3), so that smaller samples (the decisions study's) compare too.
+          const double v = r.sample.at("cell_length_1") * r.sample.at("cell_length_2") * r.sample.at("cell_length_3");
+          const auto n = r.sample.find("particles");
+          if (n == r.sample.end() || n->second <= 0) return {100 * std::cbrt(v), "cube root of the cell volume (sphere count unknown)"};
+          if (n->second == 8000) return {100 * std::cbrt(v), "cube root of the cell volume"};
+          return {100 * std::cbrt(v * 8000 / n->second), "cube root of the cell volume, scaled to 8,000 spheres from " +
+                                                         std::to_string(static_cast<long>(n->second))};
+        }}},
       {"qp_strong_fabric_slope",
-       [](const QuantityRequest&, const DensityResults& r) -> Measured {
-         double sxy = 0, sxx = 0, syy = 0;
-         std::size_t n = 0;
-         for (const TestResult& t : r.tests) {
-           const auto& x = t.series.at("strong_fabric_ratio");
-           const auto& y = t.series.at("q_over_p");
-           const auto& leg = t.series.at("leg");
-           for (std::size_t i = 0; i < x.size(); ++i)
-             if (leg[i] >= 0) sxy += x[i] * y[i], sxx += x[i] * x[i], syy += y[i] * y[i], ++n;
-         }
-         if (n < 2 || sxx == 0) return {std::nullopt, "no shearing rows"};
-         const double slope = sxy / sxx;
-         const double r2 = 1 - (syy - 2 * slope * sxy + slope * slope * sxx) / syy;  // uncentred, fit through 0
-         std::ostringstream note;
-         note << "least squares through the origin over " << n << " rows of " << r.tests.size() << " tests, R^2 = " << r2;
-         return {slope, note.str()};
-       }},
+       {tests, [](const QuantityRequest&, const DensityResults& r) -> Measured {
+          double sxy = 0, sxx = 0, syy = 0;
+          std::size_t n = 0;
+          for (const TestResult& t : r.tests) {
+            const auto& x = t.series.at("strong_fabric_ratio");
+            const auto& y = t.series.at("q_over_p");
+            const auto& leg = t.series.at("leg");
+            for (std::size_t i = 0; i < x.size(); ++i)
+              if (leg[i] >= 0) sxy += x[i] * y[i], sxx += x[i] * x[i], syy += y[i] * y[i], ++n;
+          }
+          if (n < 2 || sxx == 0) return {std::nullopt, "no shearing rows"};
+          const double slope = sxy / sxx;
+          const double r2 = 1 - (syy - 2 * slope * sxy + slope * slope * sxx) / syy;  // uncentred, fit through 0
+          std::ostringstream note;
+          note << "least squares through the origin over " << n << " rows of " << r.tests.size() << " tests, R^2 = " << r2;
+          return {slope, note.str()};
+        }}},
       {"ev_after_cycle",
-       [](const QuantityRequest& q, const DensityResults& r) {
-         return mean_over_tests(r, [&](const TestResult& t) { return ev_at(t, q.cycle); });
-       }},
+       {tests, [](const QuantityRequest& q, const DensityResults& r) {
+          return mean_over_tests(r, [&](const TestResult& t) { return ev_at(t, q.cycle); });
+        }}},
       {"ev_growth",
-       [](const QuantityRequest& q, const DensityResults& r) {
-         return mean_over_tests(r, [&](const TestResult& t) { return change(t, "volumetric_strain", q.from_cycle, q.to_cycle, 100); });
-       }},
+       {tests, [](const QuantityRequest& q, const DensityResults& r) {
+          return mean_over_tests(r, [&](const TestResult& t) { return change(t, "volumetric_strain", q.from_cycle, q.to_cycle, 100); });
+        }}},
       {"cn_change",
-       [](const QuantityRequest& q, const DensityResults& r) {
-         return mean_over_tests(r, [&](const TestResult& t) { return change(t, "coordination_number", q.from_cycle, q.to_cycle, 1); });
-       }},
+       {tests, [](const QuantityRequest& q, const DensityResults& r) {
+          return mean_over_tests(r, [&](const TestResult& t) { return change(t, "coordination_number", q.from_cycle, q.to_cycle, 1); });
+        }}},
       {"sliding_change",
-       [](const QuantityRequest& q, const DensityResults& r) {
-         return mean_over_tests(r, [&](const TestResult& t) { return change(t, "sliding_fraction", q.from_cycle, q.to_cycle, 100); });
-       }},
-      {"ev_lead", [](const QuantityRequest& q, const DensityResults& r) { return ev_margin(r, q.test, q.cycle, true); }},
-      {"ev_lag", [](const QuantityRequest& q, const DensityResults& r) { return ev_margin(r, q.test, q.cycle, false); }},
+       {tests, [](const QuantityRequest& q, const DensityResults& r) {
+          return mean_over_tests(r, [&](const TestResult& t) { return change(t, "sliding_fraction", q.from_cycle, q.to_cycle, 100); });
+        }}},
+      {"ev_lead", {Reads::TestAmongTests, [](const QuantityRequest& q, const DensityResults& r) { return ev_margin(r, q.test, q.cycle, true); }}},
+      {"ev_lag", {Reads::TestAmongTests, [](const QuantityRequest& q, const DensityResults& r) { return ev_margin(r, q.test, q.cycle, false); }}},
       {"strain_increment_alignment_gain",
-       [](const QuantityRequest& q, const DensityResults& r) {
-         return mean_over_tests(r, [&](const TestResult& t) -> std::optional<double> {
-           const auto a = misalignment(t, q.from_cycle), b = misalignment(t, q.to_cycle);
-           if (!a || !b) return std::nullopt;
-           return *a - *b;
-         });
-       }},
+       {tests, [](const QuantityRequest& q, const DensityResults& r) {
+          return mean_over_tests(r, [&](const TestResult& t) -> std::optional<double> {
+            const auto a = misalignment(t, q.from_cycle), b = misalignment(t, q.to_cycle);
+            if (!a || !b) return std::nullopt;
+            return *a - *b;
+          });
+        }}},
+      // A drained shear (a triaxial compression or extension, a constant-p shear): its last stage.
+      {"peak_friction_angle",
+       {tests, [](const QuantityRequest&, const DensityResults& r) {
+          return mean_over_shears(r, [](const ShearSummary& s) -> std::optional<double> {
+            if (s.rows == 0) return std::nullopt;
+            return s.peak_phi_deg;
+          }, "no test has shearing rows");
+        }}},
+      {"critical_state_friction_angle",
+       {tests, [](const QuantityRequest&, const DensityResults& r) {
+          return mean_over_shears(r, [](const ShearSummary& s) -> std::optional<double> {
+            if (s.cs_rows == 0) return std::nullopt;
+            return s.phi_deg.mean;
+          }, "no test reaches 30 % axial strain");
+        }}},
+      {"critical_state_void_ratio",
+       {tests, [](const QuantityRequest&, const DensityResults& r) {
+          return mean_over_shears(r, [](const ShearSummary& s) -> std::optional<double> {
+            if (s.cs_rows == 0) return std::nullopt;
+            return s.void_ratio.mean;
+          }, "no test reaches 30 % axial strain");
+        }}},
   };
   return fns;
+}
+
+// The tests a quantity reads: all of the density's, or only the one the row names.
+DensityResults only_test(const DensityResults& r, const std::string& name) {
+  DensityResults out;
+  out.prepared = r.prepared;
+  out.sample = r.sample;
+  for (const TestResult& t : r.tests)
+    if (t.name == name) out.tests.push_back(t);
+  return out;
 }
 
 }  // namespace
@@ -181,9 +231,19 @@ std::string base_name(const std::string& name) {
 
 bool known_quantity(const std::string& name) { return registry().count(base_name(name)) > 0; }
 
+Reads reads_of(const std::string& name) { return registry().at(base_name(name)).reads; }
+
+std::vector<std::string> known_quantities() {
+  std::vector<std::string> out;
+  for (const auto& [name, q] : registry()) out.push_back(name);
+  return out;
+}
+
 Measured compute(const QuantityRequest& q, const DensityResults& r) {
   try {
-    Measured m = registry().at(base_name(q.quantity))(q, r);
+    const Quantity& quantity = registry().at(base_name(q.quantity));
+    const bool one_test = quantity.reads == Reads::Tests && !q.test.empty();
+    Measured m = quantity.fn(q, one_test ? only_test(r, q.test) : r);
     if (m.value && base_name(q.quantity) != q.quantity) m.value = std::abs(*m.value);
     return m;
   } catch (const std::out_of_range&) {

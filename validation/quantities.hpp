@@ -1,7 +1,8 @@
 #pragma once
-// The quantities the paper's statements are checked on, computed from the results.
+// The quantities a reference row is checked on, computed from the results of the runs it selects.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "results.hpp"
 
@@ -10,7 +11,9 @@ namespace validation {
 struct QuantityRequest {
   std::string quantity, density;
   int cycle = 0, from_cycle = 0, to_cycle = 0;
-  int test = 0;  // the test an ordering row is about (ev_lead, ev_lag)
+  // The test the row names ("" for none). A quantity that reads tests reads only this one; an
+  // ordering (ev_lead, ev_lag) reads every test of the density and is about this one.
+  std::string test;
 };
 
 struct Measured {
@@ -20,8 +23,14 @@ struct Measured {
 
 Measured compute(const QuantityRequest& q, const DensityResults& r);
 
-// The names compute() knows, for the reference file's validation.
+// Which runs of a density a quantity reads: its preparation, its tests (all of them, or the one
+// the row names), or all of its tests with one named (an ordering: that test against the others).
+enum class Reads { Preparation, Tests, TestAmongTests };
+
+// The names compute() knows, for the reference file's validation, and what each reads.
 bool known_quantity(const std::string& name);
+Reads reads_of(const std::string& name);  // throws std::out_of_range for an unknown name
+std::vector<std::string> known_quantities();  // without the <name>_magnitude forms
 
 // Value of `column` at the end of cycle `c` (the row with cycle_end = 1 and cycle = c), if any.
 std::optional<double> at_cycle_end(const TestResult& t, const std::string& column, int c);

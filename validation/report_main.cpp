@@ -4,7 +4,7 @@
 // (validation/report.hpp) or by the tool that wrote the table included (validate, figure-data,
 // compare-runs). The figure notes are reports/templates/figure_notes.tsv, filled from the data the
 // figures plot and the verdicts of the validation rows about them.
-//   report --results DIR --references FILE --out REPORT_DIR [--profile paper|quick] [--sample NAME]
+//   report --results DIR --references FILE --out REPORT_DIR [--profile NAME] [--sample NAME]
 //          [--templates DIR] [--baseline FILE] [--convergence DIR] [--decisions DIR] [--stability DIR]
 //          [--source TEXT] [--note TEXT]
 // REPORT_DIR holds what the other tools wrote (validation.md, verdicts.md, figures/, samples.md,
@@ -40,7 +40,7 @@ namespace fs = std::filesystem;
 namespace {
 
 const char* usage =
-    "usage: report --results DIR --references FILE --out REPORT_DIR [--profile paper|quick] [--sample NAME]\n"
+    "usage: report --results DIR --references FILE --out REPORT_DIR [--profile NAME] [--sample NAME]\n"
     "              [--templates DIR] [--baseline FILE] [--convergence DIR] [--decisions DIR] [--stability DIR]\n"
     "              [--source TEXT] [--note TEXT]\n";
 

@@ -1,9 +1,8 @@
 #include "results.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "io/hdf5.hpp"
 
@@ -45,28 +44,46 @@ bool is_complete(const std::string& file) {
   }
 }
 
+std::string test_label(const std::string& name) {
+  const bool numbered = name.size() > 4 && name.compare(0, 4, "test") == 0 &&
+                        name.find_first_not_of("0123456789", 4) == std::string::npos;
+  return numbered ? name.substr(4) : name;
+}
+
+std::string test_label(const TestResult& t) { return t.name.empty() ? std::to_string(t.number) : test_label(t.name); }
+
+void load_preparation(const std::string& file, DensityResults& r) {
+  dem::h5::Handle f = dem::h5::open_file_read(file);
+  if (!complete(f)) throw std::runtime_error("not complete");
+  for (const auto& [name, values] : read_group(f, "timeseries"))
+    if (!values.empty()) r.sample[name] = values.back();
+  // The number of spheres, from the particle frames (frames x particles x 3).
+  if (dem::h5::exists(f, "particles/all/position/value")) {
+    const std::vector<hsize_t> shape = dem::h5::shape(f, "particles/all/position/value");
+    if (shape.size() == 3) r.sample["particles"] = static_cast<double>(shape[1]);
+  }
+  r.prepared = true;
+}
+
+TestResult load_test(const std::string& file, const std::string& name) {
+  dem::h5::Handle f = dem::h5::open_file_read(file);
+  if (!complete(f)) throw std::runtime_error("not complete");
+  const std::string label = test_label(name);
+  const int number = label != name ? std::atoi(label.c_str()) : 0;
+  return {number, read_group(f, "timeseries"), read_group(f, "legs"), name};
+}
+
 DensityResults load_density(const std::string& preparation, const std::map<int, std::string>& tests,
                             std::vector<std::string>& missing) {
   DensityResults r;
   try {
-    dem::h5::Handle f = dem::h5::open_file_read(preparation);
-    if (!complete(f)) throw std::runtime_error("not complete");
-    for (const auto& [name, values] : read_group(f, "timeseries"))
-      if (!values.empty()) r.sample[name] = values.back();
-    // The number of spheres, from the particle frames (frames x particles x 3).
-    if (dem::h5::exists(f, "particles/all/position/value")) {
-      const std::vector<hsize_t> shape = dem::h5::shape(f, "particles/all/position/value");
-      if (shape.size() == 3) r.sample["particles"] = static_cast<double>(shape[1]);
-    }
-    r.prepared = true;
+    load_preparation(preparation, r);
   } catch (const std::exception&) {
     missing.push_back(preparation);
   }
   for (const auto& [n, file] : tests) {
     try {
-      dem::h5::Handle f = dem::h5::open_file_read(file);
-      if (!complete(f)) throw std::runtime_error("not complete");
-      r.tests.push_back({n, read_group(f, "timeseries"), read_group(f, "legs")});
+      r.tests.push_back(load_test(file, "test" + std::to_string(n)));
     } catch (const std::exception&) {
       missing.push_back(file);
     }
@@ -101,23 +118,6 @@ std::vector<std::pair<std::string, std::string>> sample_dirs(const std::string& 
   std::vector<std::pair<std::string, std::string>> out;
   for (const auto& [seed, name] : seeds) out.emplace_back(name, (fs::path(dir) / name).string());
   if (out.empty()) out.emplace_back("", dir);
-  return out;
-}
-
-std::vector<std::string> listed_samples(const std::string& dir) {
-  namespace fs = std::filesystem;
-  std::ifstream runs(fs::path(dir) / "runs.tsv");
-  std::vector<std::string> out;
-  // variant, density, test, run, result, starts_from, may_fail, settings, seed (pipeline/plan/run_plan.cpp)
-  for (std::string line; std::getline(runs, line);) {
-    if (line.empty() || line[0] == '#') continue;
-    std::vector<std::string> f;
-    std::stringstream ss(line);
-    for (std::string x; std::getline(ss, x, '\t');) f.push_back(x);
-    if (f.size() < 9 || f[8] == "-" || f[8].empty()) continue;
-    const std::string name = "seed" + f[8];
-    if (std::find(out.begin(), out.end(), name) == out.end()) out.push_back(name);
-  }
   return out;
 }
 

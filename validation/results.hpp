@@ -10,10 +10,15 @@ namespace validation {
 using Columns = std::map<std::string, std::vector<double>>;
 
 struct TestResult {
-  int number = 0;  // 1..5
-  Columns series;  // /timeseries
-  Columns legs;    // /legs
+  int number = 0;    // N of a test named test<N> (the paper's tests 1..5), else 0
+  Columns series;    // /timeseries
+  Columns legs;      // /legs
+  std::string name;  // the study's name of the test: test1, compression, ...
 };
+
+// How notes name a test: "3" for test3 (the paper's tests), else its name.
+std::string test_label(const TestResult& t);
+std::string test_label(const std::string& name);
 
 struct DensityResults {
   bool prepared = false;
@@ -27,10 +32,15 @@ Columns read_columns(const std::string& file, const std::string& group);
 // True if the file is a complete result.
 bool is_complete(const std::string& file);
 
-// A density's results from its preparation's result and its tests' (test number -> result file);
-// files that are missing or not complete are left out and listed in `missing`.
+// A density's results from its preparation's result and its tests' (test number -> result file,
+// the tests named test<N>); files that are missing or not complete are left out and listed in `missing`.
 DensityResults load_density(const std::string& preparation, const std::map<int, std::string>& tests,
                             std::vector<std::string>& missing);
+
+// One complete result: the preparation's last time-series row (and `particles`, the sphere count)
+// into `r.sample`, or a test's series and legs; throws if the file is missing or not complete.
+void load_preparation(const std::string& file, DensityResults& r);
+TestResult load_test(const std::string& file, const std::string& name);
 
 // Reads DIR/<density>_prepare.h5 and DIR/<density>_test<N>.h5 (N = 1..5) for each density; files
 // that are missing or not complete are left out and listed in `missing`.
@@ -47,10 +57,6 @@ struct Sample {
 // The folders of an ensemble's samples: DIR/seed<N>/ in the order of N, or DIR itself when it has
 // none (a study of one sample).
 std::vector<std::pair<std::string, std::string>> sample_dirs(const std::string& dir);
-
-// The samples a study's DIR/runs.tsv lists (seed<N> from its seed column), in the order met; empty
-// without runs.tsv or without seeds (a study of one sample).
-std::vector<std::string> listed_samples(const std::string& dir);
 
 // load_results of every sample folder.
 std::vector<Sample> load_samples(const std::string& dir, const std::vector<std::string>& densities,

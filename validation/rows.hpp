@@ -1,6 +1,7 @@
 #pragma once
-// The rows of reference_data/paper.yaml and their evaluation on an ensemble of samples: each
-// row's value per sample, the spread, and the verdict against the paper's statement.
+// The rows of a reference file (reference_data/paper.yaml, or a user's own: validation/README.md)
+// and their evaluation on an ensemble of samples: each row's value per sample, the spread, and the
+// verdict against the reference's statement.
 #include <string>
 #include <vector>
 
@@ -11,24 +12,38 @@
 namespace validation {
 
 struct Row {
-  std::string name, quantity, density, check, reason, source;
+  std::string name, quantity, check, reason, source;
+  // Which runs the row reads, by the names the study gives them (runs.tsv); "" leaves the choice to
+  // the study when it has only one (row_runs.hpp). `test` is, for an ordering (ev_lead, ev_lag), the
+  // test the ordering is about; for another quantity that reads tests, the one test it reads.
+  std::string variant, density, test;
   double reference = 0, tolerance = 0;
   // The smallest difference of the quantity that means something (its measurement's resolution):
   // shifts are counted in units of max(sd, resolution), so a scatter below it cannot inflate them.
   double resolution = 0;
-  int cycle = 0, from_cycle = 0, to_cycle = 0, test = 0;
+  int cycle = 0, from_cycle = 0, to_cycle = 0;
   bool must_pass = false;
   std::string group;  // the report groups rows (and draws one tornado chart per group)
   // How the row is judged: "interval" (a value read from the paper: consistent when the paper's
   // region overlaps the 95 % prediction interval of one sample) or "majority" (a trend or an
   // ordering: consistent when the statement holds in more than half of the samples).
   std::string rule = "interval";
+  std::string origin;  // where the row is written, for messages: `FILE: rows[i] ("NAME")`
 };
 
-// Rows of the reference file; with profile "quick" only rows that have a `quick` entry, with its
-// tolerance and must_pass (the quick profile's samples are smaller and its tests shorter).
-// Throws dem::ConfigError naming the key on bad input.
-std::vector<Row> load_references(const std::string& file, const std::string& profile);
+struct References {
+  std::string source;  // where the values come from
+  std::string label;   // what the tables call the reference: "paper" in paper.yaml, "reference" by default
+  std::vector<Row> rows;
+};
+
+// The rows of a reference file for a profile. A row may carry per-profile entries (`profiles:
+// {NAME: {tolerance, must_pass, reason}}`). If any row has one for `profile`, only those rows are
+// kept, with that entry's values (paper.yaml's `quick`: its samples are smaller and its tests
+// shorter); otherwise every row, with its own values. Throws dem::ConfigError naming the file, the
+// row and the key on bad input (an unknown key lists a row's keys, an unknown quantity the known ones).
+References read_references(const std::string& file, const std::string& profile);
+std::vector<Row> load_references(const std::string& file, const std::string& profile);  // read_references().rows
 
 struct RowResult {
   struct PerSample {

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -50,7 +51,8 @@ TEST_CASE("validate: an --out or --results that cannot be used is a clear error,
 }
 
 TEST_CASE("validate: missing results and a deleted sample make exit 1, and are listed", "[validate][cli]") {
-  // A 3-seed study whose runs.tsv lists seeds 1-3; seed1/ and seed2/ are there but empty, seed3/ is gone.
+  // A 3-seed study of the paper's layout whose runs.tsv lists seeds 1-3; seed1/ and seed2/ are
+  // there but empty, seed3/ is gone.
   const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "validate_cli_missing";
   fs::remove_all(dir);
   fs::create_directories(dir / "results" / "seed1");
@@ -59,19 +61,87 @@ TEST_CASE("validate: missing results and a deleted sample make exit 1, and are l
     std::ofstream runs(dir / "results" / "runs.tsv");
     runs << "# variant\tdensity\ttest\trun\tresult\tstarts_from\tmay_fail\tsettings\tseed\n";
     for (int seed = 1; seed <= 3; ++seed)
-      runs << "-\tloose\t-\tseed" << seed << "/loose_prepare\t/x/seed" << seed << "/loose_prepare.h5\t-\t0\tas written\t" << seed << "\n";
+      for (const std::string d : {"loose", "medium", "dense"})
+        for (const std::string t : {"-", "test1", "test2", "test3", "test4", "test5"}) {
+          const std::string run = "seed" + std::to_string(seed) + "/" + d + "_" + (t == "-" ? "prepare" : t);
+          runs << "-\t" << d << "\t" << t << "\t" << run << "\t/x/" << run << ".h5\t-\t0\tas written\t" << seed << "\n";
+        }
   }
-  const auto r = validate("--results '" + (dir / "results").string() + "' --references '" + refs + "' --out '" + (dir / "out").string() +
-                          "' --profile quick");
-  CHECK(r.exit_code == 1);
-  CHECK(r.out.find("lists 1 sample(s) whose folder is gone: seed3") != std::string::npos);
-  CHECK(r.out.find("36 result file(s) missing") != std::string::npos);  // 2 samples x 3 densities x 6 runs
-  CHECK(r.out.find("row(s) not judged") != std::string::npos);
-  // The tables are written all the same, and say what is missing.
-  std::ifstream f(dir / "out" / "validation.json");
-  const nlohmann::json j = nlohmann::json::parse(f);
-  CHECK(j.at("missing_samples") == nlohmann::json::array({"seed3"}));
-  CHECK(j.at("missing_results").size() == 36);
-  CHECK(j.at("complete") == false);
-  CHECK(j.at("samples").size() == 2);
+  const auto validate_profile = [&](const std::string& profile) {
+    return validate("--results '" + (dir / "results").string() + "' --references '" + refs + "' --out '" + (dir / profile).string() +
+                    "' --profile " + profile);
+  };
+  // Only the runs the rows read count: the quick rows read the preparations alone (2 samples x 3
+  // densities); every row of the paper profile reads the preparation and the 5 tests (x 6).
+  for (const auto& [profile, files] : {std::pair{"quick", 6}, std::pair{"paper", 36}}) {
+    INFO(profile);
+    const auto r = validate_profile(profile);
+    CHECK(r.exit_code == 1);
+    CHECK(r.out.find("lists 1 sample(s) whose folder is gone: seed3") != std::string::npos);
+    CHECK(r.out.find(std::to_string(files) + " result file(s) missing") != std::string::npos);
+    CHECK(r.out.find("row(s) not judged") != std::string::npos);
+    // The tables are written all the same, and say what is missing.
+    std::ifstream f(dir / profile / "validation.json");
+    const nlohmann::json j = nlohmann::json::parse(f);
+    CHECK(j.at("missing_samples") == nlohmann::json::array({"seed3"}));
+    CHECK(j.at("missing_results").size() == static_cast<std::size_t>(files));
+    CHECK(j.at("missing_results").front() == "seed1/loose_prepare.h5");
+    CHECK(j.at("complete") == false);
+    CHECK(j.at("samples").size() == 2);
+  }
+}
+
+TEST_CASE("validate: a study without runs.tsv, and rows that name what the study lacks, exit 2", "[validate][cli][references]") {
+  // A study of one density (dense) and one test (compression), no variants, two samples.
+  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "validate_cli_selectors";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "results" / "seed1");
+  fs::create_directories(dir / "results" / "seed2");
+  fs::create_directories(dir / "bare");
+  {
+    std::ofstream runs(dir / "results" / "runs.tsv");
+    runs << "# variant\tdensity\ttest\trun\tresult\tstarts_from\tmay_fail\tsettings\tseed\n";
+    for (int seed = 1; seed <= 2; ++seed) {
+      const std::string s = "seed" + std::to_string(seed);
+      runs << "-\tdense\t-\t" << s << "/dense_prepare\t/x/" << s << "/dense_prepare.h5\t-\t0\tas written\t" << seed << "\n";
+      runs << "-\tdense\tcompression\t" << s << "/dense_compression\t/x/" << s << "/dense_compression.h5\t" << s
+           << "/dense_prepare\t0\tas written\t" << seed << "\n";
+    }
+  }
+  const auto run = [&](const std::string& row, const std::string& results = "results") {
+    const fs::path file = dir / "refs.yaml";
+    std::ofstream(file) << "source: lab\nrows:\n  - {name: \"my row\", reference: 30, check: within, source: lab, reason: r, " << row << "}\n";
+    return validate("--results '" + (dir / results).string() + "' --references '" + file.string() + "' --out '" + (dir / "out").string() +
+                    "' --profile small");
+  };
+  const std::string at = (dir / "refs.yaml").string() + ": rows[0] (\"my row\")";
+  const std::string study = "the study (" + (dir / "results" / "runs.tsv").string() + ")";
+  struct Case {
+    std::string row, message;
+  };
+  for (const Case& c : std::vector<Case>{
+           {"quantity: peak_friction_angle, density: loose", at + ".density: " + study + " has no density 'loose'; its densities: dense"},
+           {"quantity: peak_friction_angle, test: extension", at + ".test: " + study + " has no test 'extension' of density dense; its tests: compression"},
+           {"quantity: peak_friction_angle, variant: fast", at + ".variant: " + study + " has no variants, so 'fast' names nothing; leave `variant` out"},
+           {"quantity: phi_peak", at + ".quantity: unknown quantity 'phi_peak'; known: "},
+           {"quantity: peak_friction_angle, tolerence: 2", at + ": unknown key 'tolerence'"},
+       }) {
+    INFO(c.row);
+    const auto r = run(c.row);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.out, Catch::Contains(c.message));
+  }
+  CHECK_THAT(run("quantity: tolerence").out, Catch::Contains("peak_friction_angle"));  // the known quantities are listed
+  CHECK_THAT(run("quantity: peak_friction_angle, tolerence: 2").out, Catch::Contains("a row's keys: name, group, quantity"));
+  // The selectors are checked before any result is read or any table written.
+  CHECK_FALSE(fs::exists(dir / "out" / "validation.json"));
+  // A folder without the study's manifest: exit 2, naming it.
+  const auto bare = run("quantity: peak_friction_angle", "bare");
+  CHECK(bare.exit_code == 2);
+  CHECK_THAT(bare.out, Catch::Contains((dir / "bare" / "runs.tsv").string() + ": no manifest"));
+  // Any profile name is taken; a row whose runs are all missing is not judged (exit 1).
+  const auto missing = run("quantity: peak_friction_angle, test: compression");
+  CHECK(missing.exit_code == 1);
+  CHECK_THAT(missing.out, Catch::Contains("2 result file(s) missing"));
+  CHECK_THAT(missing.out, Catch::Contains("1 row(s) not judged (fewer than 2 samples with a value): my row"));
 }

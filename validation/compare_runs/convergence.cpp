@@ -75,7 +75,7 @@ Variant read_variant(const std::string& name, const std::vector<ManifestLine>& l
       for (const auto& [column, values] : series)
         if (!values.empty()) sample[column] = values.back();
     } else {
-      tests.push_back({l.test, {0, series, validation::read_columns(l.result, "legs")}});
+      tests.push_back({l.test, {0, series, validation::read_columns(l.result, "legs"), l.test}});
     }
   }
   if (complete) r.quantities = validation::convergence_quantities(sample, tests);

@@ -14,20 +14,8 @@ namespace fs = std::filesystem;
 namespace compare_runs {
 
 Manifest read_manifest(const std::string& dir) {
-  const fs::path file = fs::path(dir) / "runs.tsv";
-  std::ifstream in(file);
-  if (!in) throw std::runtime_error(file.string() + ": no manifest (run the study with build/bin/pipeline first)");
   Manifest m;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::vector<std::string> f;
-    std::stringstream ss(line);
-    std::string field;
-    while (std::getline(ss, field, '\t')) f.push_back(field);
-    if (f.size() < 8) throw std::runtime_error(file.string() + ": a line with " + std::to_string(f.size()) + " fields, 8 expected");
-    m.lines.push_back({f[0], f[1], f[2], f[3], f[4], f[5], f[7], f[6] == "1", f.size() > 8 ? f[8] : "-"});
-  }
+  m.lines = validation::read_manifest(dir);
   for (const ManifestLine& l : m.lines) {
     if (!m.by_variant.count(l.variant)) m.variants.push_back(l.variant);
     m.by_variant[l.variant].push_back(l);

@@ -8,17 +8,14 @@
 #include <vector>
 
 #include "compare.hpp"
+#include "manifest.hpp"
 #include "config/scene_config.hpp"
 #include "results.hpp"
 
 namespace compare_runs {
 
-// One line of runs.tsv: variant, density, test, run, result, starts_from, may_fail, settings[, seed].
-struct ManifestLine {
-  std::string variant, density, test, run, result, starts_from, settings;
-  bool may_fail = false;
-  std::string seed = "-";  // the sample of an ensemble ("-": a study of one sample)
-};
+// One line of runs.tsv (validation/manifest.hpp).
+using validation::ManifestLine;
 
 // The manifest, and its runs grouped by variant in the order of the study.
 struct Manifest {
