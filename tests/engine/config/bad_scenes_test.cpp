@@ -529,7 +529,7 @@ TEST_CASE("a misspelt required key gets a did-you-mean suggestion", "[config]") 
   // A key that is read (declared) is never offered as the look-alike of another: 'kn' and 'ks'
   // are one substitution apart, and with ks missing the present kn is not suggested.
   const Outcome ks = refuse(Yaml{.material = "{kn: 1.0e6, friction: 0.5}"}.text());
-  CHECK(ks.message == "bad.yaml: material.ks: missing (a number in [0, 1e+12] N/m)");
+  CHECK(ks.message == "bad.yaml: material.ks: missing (a number in [0, 1e+12] N/m); needed because material.friction = 0.5 > 0");
 }
 
 TEST_CASE("a misspelt optional section gets a did-you-mean suggestion", "[config]") {
