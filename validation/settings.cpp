@@ -80,7 +80,7 @@ std::map<std::string, std::string> run_settings(const std::string& results, cons
       std::visit(
           [&](const auto& law) {  // the linear law's stiffnesses (other laws name their own constants)
             using Law = std::decay_t<decltype(law)>;
-            if constexpr (std::is_same_v<typename Law::NormalLaw, dem::LinearNormal>) {
+            if constexpr (std::is_base_of_v<dem::LinearNormal, typename Law::NormalLaw>) {  // with or without dashpots
               kv["kn_N_per_m"] = num(law.normal.kn);
               if constexpr (Law::has_tangential) kv["ks_N_per_m"] = num(law.tangential.ks);
             }

@@ -1,12 +1,110 @@
 #include "config/contact_keys.hpp"
 
+#include <algorithm>
+#include <map>
+#include <set>
 #include <sstream>
 #include <string>
 #include <type_traits>
+#include <utility>
+#include <vector>
 
 namespace dem {
 
 namespace {
+
+// What a part of a law declares (contact/parameter.hpp); parts without keys declare nothing.
+template <class Part>
+constexpr auto parameters_of() {
+  if constexpr (requires { Part::parameters; }) return Part::parameters;
+  else return std::array<Parameter, 0>{};
+}
+template <class Part>
+constexpr const char* switch_of() {
+  if constexpr (requires { Part::switched_by; }) return Part::switched_by;
+  else return nullptr;
+}
+template <class Part>
+Part part_from(const ParameterValues& v) {
+  if constexpr (requires { Part::from(v); }) return Part::from(v);
+  else return Part{};
+}
+template <class Part>
+void write_part(const Part& part, ParameterValues& v) {
+  if constexpr (requires { part.write(v); }) part.write(v);
+}
+
+// One alternative of AnyContactLaw as the reader sees it: its law name, its keys (each once),
+// the keys that switch its parts on, and for each key the switch of the part that reads it ("":
+// a part always in the law).
+struct LawEntry {
+  std::size_t index;
+  std::string law;
+  std::vector<Parameter> keys;
+  std::set<std::string> switches;
+  std::map<std::string, std::string> switch_of_key;
+};
+
+template <class Law>
+LawEntry entry_of(std::size_t index) {
+  LawEntry e{index, Law::NormalLaw::law_name, {}, {}, {}};
+  auto add = [&]<class Part>(std::type_identity<Part>) {
+    const char* s = switch_of<Part>();
+    for (const Parameter& p : parameters_of<Part>()) {
+      if (e.switch_of_key.count(p.name)) continue;  // a shared key, declared once, read once
+      e.keys.push_back(p);
+      e.switch_of_key[p.name] = s ? s : "";
+    }
+    if (s) e.switches.insert(s);
+  };
+  add(std::type_identity<typename Law::NormalLaw>{});
+  add(std::type_identity<typename Law::TangentialLaw>{});
+  add(std::type_identity<typename Law::RollingLaw>{});
+  return e;
+}
+
+// Every alternative of AnyContactLaw, in variant order.
+const std::vector<LawEntry>& every_law() {
+  static const std::vector<LawEntry> laws = []<std::size_t... I>(std::index_sequence<I...>) {
+    return std::vector<LawEntry>{entry_of<std::variant_alternative_t<I, AnyContactLaw>>(I)...};
+  }(std::make_index_sequence<std::variant_size_v<AnyContactLaw>>{});
+  return laws;
+}
+
+// Alternative I of AnyContactLaw from the values of its keys.
+template <std::size_t I>
+AnyContactLaw law_from(const ParameterValues& v) {
+  using Law = std::variant_alternative_t<I, AnyContactLaw>;
+  return AnyContactLaw(std::in_place_index<I>, Law{part_from<typename Law::NormalLaw>(v), part_from<typename Law::TangentialLaw>(v),
+                                                   part_from<typename Law::RollingLaw>(v)});
+}
+AnyContactLaw law_from(std::size_t index, const ParameterValues& v) {
+  static const auto table = []<std::size_t... I>(std::index_sequence<I...>) {
+    return std::array<AnyContactLaw (*)(const ParameterValues&), sizeof...(I)>{&law_from<I>...};
+  }(std::make_index_sequence<std::variant_size_v<AnyContactLaw>>{});
+  return table[index](v);
+}
+
+// The first complaint of the parts of alternative I about values their ranges allow.
+template <class Part>
+std::pair<const char*, std::string> problem_of(const ParameterValues& v) {
+  if constexpr (requires { Part::problem(v); }) return Part::problem(v);
+  else return {"", ""};
+}
+template <std::size_t I>
+std::pair<const char*, std::string> problem_of_law(const ParameterValues& v) {
+  using Law = std::variant_alternative_t<I, AnyContactLaw>;
+  for (const auto& p : {problem_of<typename Law::NormalLaw>(v), problem_of<typename Law::TangentialLaw>(v),
+                        problem_of<typename Law::RollingLaw>(v)})
+    if (*p.first) return p;
+  return {"", ""};
+}
+std::pair<const char*, std::string> problem_of(std::size_t index, const ParameterValues& v) {
+  static const auto table = []<std::size_t... I>(std::index_sequence<I...>) {
+    return std::array<std::pair<const char*, std::string> (*)(const ParameterValues&), sizeof...(I)>{&problem_of_law<I>...};
+  }(std::make_index_sequence<std::variant_size_v<AnyContactLaw>>{});
+  return table[index](v);
+}
 
 std::string format_number(double x) {  // as the range messages print numbers (default stream format)
   std::ostringstream s;
@@ -14,110 +112,148 @@ std::string format_number(double x) {  // as the range messages print numbers (d
   return s.str();
 }
 
-// The keys that belong to each law, for the message when one is given to another law.
-struct LawKeys {
-  const char* law;
-  std::vector<std::string> keys;
-};
-const LawKeys law_keys[] = {{"linear", {"kn", "ks"}}, {"hertz_mindlin", {"young_modulus", "poisson_ratio"}}};
-
-void refuse_keys_of_other_laws(const Section& m, const std::string& law) {
-  for (const LawKeys& other : law_keys)
-    if (other.law != law)
-      for (const std::string& key : other.keys)
-        if (m.has(key)) {
-          std::string own;
-          for (const LawKeys& mine : law_keys)
-            if (mine.law == law)
-              for (const std::string& k : mine.keys) own += (own.empty() ? "" : " and ") + m.key_path(k);
-          m.fail(key, "belongs to " + m.key_path("law") + ": " + other.law + "; law " + law + " reads " + own);
-        }
+double read(Section& m, const Parameter& p) {
+  const std::optional<double> def = p.required() ? std::nullopt : std::optional<double>(p.default_value);
+  return m.number(p.name, p.unit, {p.min, p.max, p.min_open, p.max_open}, def, p.doc);
 }
 
-template <class Normal, class Tangential>
-AnyContactLaw with_rolling(const Normal& normal, const Tangential& tangential, const RollingSpring& rolling) {
-  if (rolling.mu_r > 0) return ContactLaw<Normal, Tangential, RollingSpring>{normal, tangential, rolling};
-  return ContactLaw<Normal, Tangential>{normal, tangential, {}};
+bool contains(const std::vector<Parameter>& keys, const std::string& name) {
+  for (const Parameter& p : keys)
+    if (name == p.name) return true;
+  return false;
+}
+
+// The keys every law called `law` reads (its elastic constants), for messages.
+std::vector<std::string> common_keys(const std::string& law) {
+  std::vector<std::string> out;
+  bool first = true;
+  for (const LawEntry& e : every_law()) {
+    if (e.law != law) continue;
+    if (first) {
+      for (const Parameter& p : e.keys)
+        if (!e.switches.count(p.name)) out.push_back(p.name);
+      first = false;
+    } else {
+      std::erase_if(out, [&](const std::string& k) { return !contains(e.keys, k); });
+    }
+  }
+  return out;
+}
+
+// Records every key of every law in `dem keys` (Section records a key as it reads it): each is
+// read from an empty mapping, and a required key's "missing" error dropped.
+void document_every_key(const Section& material) {
+  Section empty(YAML::Node(YAML::NodeType::Map), material.file(), material.path());
+  for (const LawEntry& e : every_law())
+    for (const Parameter& p : e.keys) try {
+        read(empty, p);
+      } catch (const ConfigError&) {
+      }
 }
 
 }  // namespace
 
-AnyContactLaw read_contact_law(Section& m) {
-  const std::string law = m.choice("law", {"linear", "hertz_mindlin"}, "linear",
-                                   "contact law: linear springs (kn, ks) or Hertz-Mindlin (young_modulus, poisson_ratio)");
-  refuse_keys_of_other_laws(m, law);
-  const double mu = m.number("friction", "", {0, 10}, std::nullopt, "Coulomb friction coefficient mu; 0 = frictionless kernel");
-  RollingSpring rolling;
-  rolling.mu_r = m.number("rolling_friction", "", {0, 10}, 0.0,
-                          "rolling friction coefficient mu_r: rolling moment capped at mu_r R* f_n; 0 = no rolling resistance");
-  if (rolling.mu_r > 0) {
-    try {
-      rolling.kr = m.number("rolling_stiffness", "N/m", {0, 1e12, true}, std::nullopt,
-                            "stiffness k_r of the rolling spring (moment R* k_r u_r); needed when rolling_friction > 0");
-    } catch (const ConfigError& e) {
-      // A key that is optional elsewhere: say why it is missing here.
-      if (m.has("rolling_stiffness")) throw;
-      throw ConfigError(std::string(e.what()) + "; needed because " + m.key_path("rolling_friction") + " = " +
-                        format_number(rolling.mu_r) + " > 0 turns rolling resistance on");
-    }
-    if (mu == 0)
-      m.fail("rolling_friction", "needs " + m.key_path("friction") + " > 0 (a frictionless contact has no rolling), got " +
-                                     m.key_path("friction") + " = 0");
-  } else if (m.has("rolling_stiffness")) {
-    m.fail("rolling_stiffness", "is read only when rolling_friction > 0 (rolling resistance on); give both or neither");
+// The keys of every law called `law`, each once, in declaration order, with the switch of the part
+// that reads each; and the switches of its parts.
+struct NamedLaw {
+  std::vector<Parameter> keys;
+  std::map<std::string, std::string> switch_of_key;
+  std::set<std::string> switches;
+};
+NamedLaw named_law(const std::string& law) {
+  NamedLaw n;
+  for (const LawEntry& e : every_law()) {
+    if (e.law != law) continue;
+    for (const Parameter& p : e.keys)
+      if (!contains(n.keys, p.name)) n.keys.push_back(p), n.switch_of_key[p.name] = e.switch_of_key.at(p.name);
+    n.switches.insert(e.switches.begin(), e.switches.end());
   }
+  return n;
+}
 
-  const double zeta = m.number("contact_damping", "", {0, 1, false, true}, 0.0,
-                               "contact dashpots, fraction zeta of critical: c_n = 2 zeta sqrt(m* k_n), c_t = 2 zeta sqrt(m* k_t) "
-                               "(tangential while sticking); 0 = none");
-  if (zeta > 0 && rolling.mu_r > 0)
-    m.fail("contact_damping", "and rolling_friction > 0 together are not compiled (no such law); give one of them");
-  if (law == "linear") {
-    const LinearNormal normal{m.number("kn", "N/m", {0, 1e12, true}, std::nullopt, "normal contact stiffness (law linear)")};
-    const double ks = m.number("ks", "N/m", {0, 1e12}, std::nullopt, "tangential contact stiffness (law linear)");
-    if (mu > 0 && ks <= 0) m.fail("ks", "must be > 0 when friction > 0, got " + std::to_string(ks));
-    if (zeta > 0) {
-      const Dashpot<LinearNormal> damped{normal, zeta};
-      if (mu == 0) return LinearDashpotLaw{damped, {}, {}};
-      return LinearFrictionDashpotLaw{damped, LinearCoulomb{ks, mu}, {}};
+AnyContactLaw read_contact_law(Section& m) {
+  document_every_key(m);
+  std::vector<std::string> names;
+  for (const LawEntry& e : every_law())
+    if (std::find(names.begin(), names.end(), e.law) == names.end()) names.push_back(e.law);
+  std::string doc = "contact law:";
+  for (const std::string& n : names) {
+    std::string keys;
+    for (const std::string& k : common_keys(n)) keys += (keys.empty() ? "" : ", ") + k;
+    doc += (n == names.front() ? " " : " or ") + n + " (" + keys + ")";
+  }
+  const std::string law = m.choice("law", names, names.front(), doc);
+  const NamedLaw named = named_law(law);
+
+  // A key that only laws of another name read is refused, naming them and what this law reads.
+  for (const LawEntry& e : every_law())
+    for (const Parameter& p : e.keys)
+      if (!contains(named.keys, p.name) && m.has(p.name)) {
+        std::string owners, own;
+        for (const std::string& n : names)
+          if (contains(named_law(n).keys, p.name)) owners += (owners.empty() ? "" : " or ") + n;
+        for (const std::string& k : common_keys(law)) own += (own.empty() ? "" : " and ") + m.key_path(k);
+        m.fail(p.name, "belongs to " + m.key_path("law") + ": " + owners + "; law " + law + " reads " + own);
+      }
+
+  // The switches (friction, rolling_friction, contact_damping) choose the alternative.
+  ParameterValues values;
+  for (const Parameter& p : named.keys)
+    if (named.switches.count(p.name)) values[p.name] = read(m, p);
+  const LawEntry* chosen = nullptr;
+  for (const LawEntry& e : every_law()) {
+    bool fits = e.law == law;
+    for (const std::string& s : named.switches) fits = fits && ((values.at(s) > 0) == (e.switches.count(s) > 0));
+    if (fits) chosen = &e;
+  }
+  if (!chosen) {
+    std::string on, off, first_on;
+    for (const std::string& s : named.switches) {
+      std::string& list = values.at(s) > 0 ? on : off;
+      list += (list.empty() ? "" : " and ") + m.key_path(s) + " = " + format_number(values.at(s));
+      if (values.at(s) > 0 && first_on.empty()) first_on = s;
     }
-    if (mu == 0) return LinearLaw{normal, {}, {}};
-    return with_rolling(normal, LinearCoulomb{ks, mu}, rolling);
+    m.fail(first_on, "no law " + law + " combines " + on + (off.empty() ? "" : " with " + off) +
+                         " (the engine is compiled for the laws of AnyContactLaw, contact/contact_law.hpp)");
   }
-  HertzNormal normal;
-  normal.young_modulus_Pa = m.number("young_modulus", "Pa", {0, 1e13, true}, std::nullopt,
-                                     "Young's modulus E of the grains (law hertz_mindlin)");
-  // Open at 0.5: an isotropic elastic solid has -1 < nu <= 0.5, and nu = 0.5 (incompressible) is refused.
-  normal.poisson_ratio = m.number("poisson_ratio", "", {-1, 0.5, true, true}, std::nullopt,
-                                  "Poisson's ratio nu of the grains (law hertz_mindlin)");
-  if (zeta > 0) {
-    if (mu == 0) m.fail("contact_damping", "with law hertz_mindlin is compiled with friction > 0 only");
-    return HertzMindlinDashpotLaw{Dashpot<HertzNormal>{normal, zeta}, MindlinCoulomb::of(normal, mu), {}};
+  // The chosen law's keys. A key of a part it does not have is an error, unless that key accepts it.
+  for (const Parameter& p : named.keys) {
+    if (named.switches.count(p.name)) continue;
+    const std::string& s = named.switch_of_key.at(p.name);
+    if (contains(chosen->keys, p.name)) {
+      try {
+        values[p.name] = read(m, p);
+      } catch (const ConfigError& e) {
+        // A key optional elsewhere: say why it is needed here.
+        if (m.has(p.name) || s.empty()) throw;
+        throw ConfigError(std::string(e.what()) + "; needed because " + m.key_path(s) + " = " + format_number(values.at(s)) + " > 0");
+      }
+    } else if (m.has(p.name)) {
+      if (!p.accepted_when_off) m.fail(p.name, "is read only when " + s + " > 0; give both or neither");
+      read(m, p);  // checked, unused
+    }
   }
-  if (mu == 0) return HertzLaw{normal, {}, {}};
-  return with_rolling(normal, MindlinCoulomb::of(normal, mu), rolling);
+  if (const auto [key, what] = problem_of(chosen->index, values); *key) m.fail(key, what);
+  return law_from(chosen->index, values);
 }
 
 void emit_contact_law(YAML::Emitter& out, const AnyContactLaw& any) {
   std::visit(
       [&](const auto& law) {
         using Law = std::decay_t<decltype(law)>;
-        if constexpr (std::is_base_of_v<LinearNormal, typename Law::NormalLaw>) {
-          out << YAML::Key << "law" << YAML::Value << "linear" << YAML::Key << "kn" << YAML::Value << law.normal.kn;
-          double ks = 0, mu = 0;
-          if constexpr (Law::has_tangential) ks = law.tangential.ks, mu = law.tangential.mu;
-          out << YAML::Key << "ks" << YAML::Value << ks << YAML::Key << "friction" << YAML::Value << mu;
-        } else {
-          out << YAML::Key << "law" << YAML::Value << "hertz_mindlin" << YAML::Key << "young_modulus" << YAML::Value
-              << law.normal.young_modulus_Pa << YAML::Key << "poisson_ratio" << YAML::Value << law.normal.poisson_ratio;
-          double mu = 0;
-          if constexpr (Law::has_tangential) mu = law.tangential.mu;
-          out << YAML::Key << "friction" << YAML::Value << mu;
+        ParameterValues v;
+        write_part(law.normal, v);
+        write_part(law.tangential, v);
+        write_part(law.rolling, v);
+        out << YAML::Key << "law" << YAML::Value << Law::NormalLaw::law_name;
+        // In the order the laws of this name declare them; a required switch (friction) is
+        // written as 0 when its part is off.
+        const NamedLaw named = named_law(Law::NormalLaw::law_name);
+        for (const Parameter& p : named.keys) {
+          const auto it = v.find(p.name);
+          if (it != v.end()) out << YAML::Key << p.name << YAML::Value << it->second;
+          else if (p.required() && named.switches.count(p.name)) out << YAML::Key << p.name << YAML::Value << 0.0;
         }
-        if constexpr (Law::damped) out << YAML::Key << "contact_damping" << YAML::Value << law.normal.damping_ratio;
-        if constexpr (Law::has_rolling)
-          out << YAML::Key << "rolling_friction" << YAML::Value << law.rolling.mu_r << YAML::Key << "rolling_stiffness"
-              << YAML::Value << law.rolling.kr;
       },
       any);
 }

@@ -444,14 +444,14 @@ static SceneConfig parse_scene(Section root, const std::string& file) {
     if (c.damping.form == Damping::Form::Viscous && !(damping_stiffness(c.material.law) > 0) &&
         (c.damping.translational > 0 || c.damping.rotational > 0))
       d.fail("form", "viscous (the default) scales the damping with a contact stiffness, and material.law " +
-                         std::string("hertz_mindlin has none: use damping: {form: local}"));
+                         law_name(c.material.law) + " has none: use damping: {form: local}");
     d.finish();
   }
 
   Section n = root.child("numerics", "time integration and neighbour search");
   c.time_step_s = n.number("time_step", "s", {0, 1, true}, std::nullopt, "fixed time step");
   c.max_time_step_fraction = n.number("max_time_step_fraction", "", {0, 10, true}, 0.2,
-                                      "largest allowed time_step / critical step 2 sqrt(m_min/kn); raise only on purpose");
+                                      "largest allowed time_step / the law's critical step (linear: 2 sqrt(m_min/kn)); raise only on purpose");
   c.max_energy_error = n.number("max_energy_error", "", {0, 1e6, true}, 0.05,
                                 "a run stops when its energy closure error exceeds this (checked at output rows)");
   c.verlet_skin_m = n.number("verlet_skin", "m", {0, 1, true}, 2e-4, "Verlet list skin distance");

@@ -2,7 +2,14 @@
 // What a contact's history does in one step, written once for any lanes (contact/lane_ops.inc):
 // the step's state (`HistoryStep`) and the linear spring capped by a Coulomb limit that both the
 // linear tangential law and the rolling spring use.
+#include "contact/parameter.hpp"
+
 namespace dem {
+
+// The Coulomb friction coefficient, read by every tangential law with a cap (and the switch that
+// puts one in the law).
+inline constexpr Parameter friction_key{"friction", "", 0, 10, false, false, no_default,
+                                        "Coulomb friction coefficient mu; 0 = frictionless kernel"};
 
 // One step of a contact's tangential (or rolling) history, for a block of lanes.
 template <class O>

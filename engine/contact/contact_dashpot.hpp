@@ -25,12 +25,25 @@
 #include <cmath>
 #include <string>
 
+#include "contact/parameter.hpp"
+
 namespace dem {
 
 // A normal part with a dashpot in parallel with the elastic normal part `Elastic`.
 template <class Elastic>
 struct Dashpot : Elastic {
   double damping_ratio = 0;  // zeta: c = 2 zeta sqrt(m* k), a fraction of critical damping [-]
+
+  // Scene keys (contact/parameter.hpp): the elastic part's and contact_damping, which turns the
+  // dashpots on. Open at 1: the closed forms above are for an underdamped contact.
+  static constexpr Parameter contact_damping_key{
+      "contact_damping", "", 0, 1, false, true, 0.0,
+      "contact dashpots, fraction zeta of critical: c_n = 2 zeta sqrt(m* k_n), c_t = 2 zeta sqrt(m* k_t) while sticking; 0 = none"};
+  static constexpr const char* law_name = Elastic::law_name;
+  static constexpr const char* switched_by = contact_damping_key.name;
+  static constexpr auto parameters = joined(Elastic::parameters, std::array{contact_damping_key});
+  static Dashpot from(const ParameterValues& v) { return {Elastic::from(v), v.at(contact_damping_key.name)}; }
+  void write(ParameterValues& v) const { Elastic::write(v), v[contact_damping_key.name] = damping_ratio; }
 
   // The pair loop computes the closing speed d(overlap)/dt and the reduced mass m* for this part.
   static constexpr bool needs_normal_velocity = true;

@@ -51,6 +51,10 @@ double damping_stiffness(const AnyContactLaw& law) {
   return std::visit([](const auto& l) { return l.normal.damping_stiffness(); }, law);
 }
 
+std::string law_name(const AnyContactLaw& law) {
+  return std::visit([](const auto& l) -> std::string { return std::decay_t<decltype(l)>::NormalLaw::law_name; }, law);
+}
+
 double contact_damping_ratio(const AnyContactLaw& law) {
   return std::visit(
       [](const auto& l) {

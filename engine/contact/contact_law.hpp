@@ -17,10 +17,14 @@
 //               update<O>(HistoryStep&, f_n, overlap, R*, touch), energy<O>(f_t, overlap, R*),
 //               opening_loss<O>(|history|^2), force_of<O>(history, overlap, R*)
 //   rolling     has_rolling, update<O>(HistoryStep&, f_n, touch), energy<O>(f_r), opening_loss<O>
+// and, each part, its scene keys (contact/parameter.hpp): `parameters`, `from`, `write`, and
+// `law_name` (an elastic normal part) or `switched_by` (a part a key turns on).
 //
-// To add a law: write its parts in a header here, add the combination to AnyContactLaw below,
-// and read its keys in config/contact_keys.cpp. The kernels are instantiated for every
-// alternative of AnyContactLaw (dynamics/kernel_simd.cpp, dynamics/simulation.cpp).
+// To add a law: write its parts in a header here (their keys with them) and add the combination
+// to AnyContactLaw below. config/contact_keys.cpp reads, documents and writes the keys of every
+// alternative from the parts' declarations; the kernels are instantiated for every alternative
+// (dynamics/kernel_simd.cpp, dynamics/simulation.cpp), and the tests enumerate them
+// (tests/engine/dynamics/packing_support.hpp).
 #include <string>
 #include <variant>
 
@@ -82,5 +86,6 @@ double critical_time_step(const AnyContactLaw& law, const Particles& p, double d
 std::string critical_time_step_formula(const AnyContactLaw& law);
 double damping_stiffness(const AnyContactLaw& law);  // [N/m]; 0 if the law has none
 double contact_damping_ratio(const AnyContactLaw& law);  // zeta of the contact dashpots; 0 without
+std::string law_name(const AnyContactLaw& law);          // the scene's material.law
 
 }  // namespace dem

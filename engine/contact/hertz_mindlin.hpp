@@ -18,6 +18,17 @@ struct HertzNormal {
   double young_modulus_Pa = 0;
   double poisson_ratio = 0;
 
+  // Scene keys (contact/parameter.hpp). Poisson's ratio open at 0.5: an isotropic elastic solid
+  // has -1 < nu <= 0.5, and nu = 0.5 (incompressible) is refused.
+  static constexpr const char* law_name = "hertz_mindlin";
+  static constexpr Parameter young_modulus_key{"young_modulus", "Pa", 0, 1e13, true, false, no_default,
+                                               "Young's modulus E of the grains (law hertz_mindlin)"};
+  static constexpr Parameter poisson_ratio_key{"poisson_ratio", "", -1, 0.5, true, true, no_default,
+                                               "Poisson's ratio nu of the grains (law hertz_mindlin)"};
+  static constexpr std::array parameters{young_modulus_key, poisson_ratio_key};
+  static HertzNormal from(const ParameterValues& v) { return {v.at(young_modulus_key.name), v.at(poisson_ratio_key.name)}; }
+  void write(ParameterValues& v) const { v[young_modulus_key.name] = young_modulus_Pa, v[poisson_ratio_key.name] = poisson_ratio; }
+
   double effective_modulus() const { return young_modulus_Pa / (2 * (1 - poisson_ratio * poisson_ratio)); }  // E*
   double shear_modulus() const { return young_modulus_Pa / (2 * (1 + poisson_ratio)); }                     // G
   double coefficient() const { return 4.0 / 3.0 * effective_modulus(); }                                  // 4/3 E*
@@ -62,6 +73,11 @@ struct MindlinCoulomb {
   static MindlinCoulomb of(const HertzNormal& n, double mu) {
     return {8 * n.shear_modulus() / (2 * (2 - n.poisson_ratio)), mu};
   }
+  // Scene keys: on when friction > 0; the stiffness comes from the normal part's E and nu.
+  static constexpr const char* switched_by = friction_key.name;
+  static constexpr std::array parameters{friction_key};
+  static MindlinCoulomb from(const ParameterValues& v) { return of(HertzNormal::from(v), v.at(friction_key.name)); }
+  void write(ParameterValues& v) const { v[friction_key.name] = mu; }
   template <class O>
   [[gnu::always_inline]] inline typename O::Real stiffness(typename O::Real overlap, typename O::Real reduced_radius) const {
     return O::splat(shear_coefficient) * O::sqrt(reduced_radius * overlap);

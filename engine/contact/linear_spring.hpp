@@ -7,6 +7,8 @@
 // Each part is written once for any lanes `O` (contact/lane_ops.inc); contact/contact_law.hpp
 // says what a law provides.
 #include <cmath>
+#include <string>
+#include <utility>
 
 #include "contact/capped_spring.hpp"
 
@@ -14,6 +16,13 @@ namespace dem {
 
 struct LinearNormal {
   double kn = 0;  // normal stiffness [N/m]
+
+  // Scene keys (contact/parameter.hpp).
+  static constexpr const char* law_name = "linear";
+  static constexpr Parameter kn_key{"kn", "N/m", 0, 1e12, true, false, no_default, "normal contact stiffness (law linear)"};
+  static constexpr std::array parameters{kn_key};
+  static LinearNormal from(const ParameterValues& v) { return {v.at(kn_key.name)}; }
+  void write(ParameterValues& v) const { v[kn_key.name] = kn; }
 
   static constexpr bool needs_reduced_radius = false;
   static constexpr bool needs_normal_velocity = false;  // no dashpot (contact/contact_dashpot.hpp adds one)
@@ -51,6 +60,18 @@ struct LinearCoulomb {
   static constexpr bool needs_reduced_radius = false;
   double ks = 0;  // tangential stiffness [N/m]
   double mu = 0;  // friction coefficient [-]
+
+  // Scene keys: on when friction > 0. ks is accepted (and unused) with friction 0.
+  static constexpr const char* switched_by = friction_key.name;
+  static constexpr Parameter ks_key{"ks", "N/m", 0, 1e12, false, false, no_default, "tangential contact stiffness (law linear)", true};
+  static constexpr std::array parameters{friction_key, ks_key};
+  static LinearCoulomb from(const ParameterValues& v) { return {v.at(ks_key.name), v.at(friction_key.name)}; }
+  void write(ParameterValues& v) const { v[ks_key.name] = ks, v[friction_key.name] = mu; }
+  // What the keys' ranges cannot say: "" or the key and the complaint.
+  static std::pair<const char*, std::string> problem(const ParameterValues& v) {
+    if (!(v.at(ks_key.name) > 0)) return {ks_key.name, "must be > 0 when friction > 0, got " + std::to_string(v.at(ks_key.name))};
+    return {"", ""};
+  }
 
   // d f_t / d u_s [N/m] (for a tangential dashpot).
   template <class O>

@@ -18,6 +18,17 @@ struct RollingSpring {
   double kr = 0;  // rolling stiffness [N/m]
   double mu_r = 0;  // rolling friction coefficient [-]
 
+  // Scene keys (contact/parameter.hpp): on when rolling_friction > 0.
+  static constexpr Parameter rolling_friction_key{
+      "rolling_friction", "", 0, 10, false, false, 0.0,
+      "rolling friction coefficient mu_r: rolling moment capped at mu_r R* f_n; 0 = no rolling resistance"};
+  static constexpr Parameter rolling_stiffness_key{"rolling_stiffness", "N/m", 0, 1e12, true, false, no_default,
+                                                   "stiffness k_r of the rolling spring (moment R* k_r u_r); needed when rolling_friction > 0"};
+  static constexpr const char* switched_by = rolling_friction_key.name;
+  static constexpr std::array parameters{rolling_friction_key, rolling_stiffness_key};
+  static RollingSpring from(const ParameterValues& v) { return {v.at(rolling_stiffness_key.name), v.at(rolling_friction_key.name)}; }
+  void write(ParameterValues& v) const { v[rolling_friction_key.name] = mu_r, v[rolling_stiffness_key.name] = kr; }
+
   template <class O>
   [[gnu::always_inline]] inline void update(HistoryStep<O>& s, typename O::Real fn, typename O::Bool touch) const {
     capped_linear_spring<O>(kr, mu_r, s, fn, touch);

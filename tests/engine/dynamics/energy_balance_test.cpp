@@ -26,6 +26,7 @@
 
 #include "config/scene_config.hpp"
 #include "contact/scalar_lanes.hpp"
+#include "engine/dynamics/packing_support.hpp"
 #include "engine/io/io_test_support.hpp"
 #include "run/run_scene.hpp"
 
