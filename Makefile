@@ -226,8 +226,13 @@ cyclic-tests: study
 # virtual display started if there is none) and its spheres rendered to a PNG the report shows
 # (about 20 s; not in make test: ParaView is a large install).
 RENDER ?= $(RESULTS)/$(strip $(SAMPLE))/dense_prepare.xdmf
-render:
+render: tools
 	reports/render/render.sh $(RENDER) reports/figures/render_dense_prepare.png "dense sample $(strip $(SAMPLE)), after isotropic compression"
+	@mkdir -p $(BUILD)/render
+	$(BUILD)/bin/dem run scenes/examples/triaxial_compression.yaml --out $(BUILD)/render/triaxial.h5 --force --quiet --threads 1 \
+	  --set 'stages[0].until.strain=0.02' --set output.frames.interval=2000 --set output.frames.contacts=true
+	reports/render/render.sh $(BUILD)/render/triaxial.xdmf reports/figures/render_triaxial_contacts.png \
+	  "drained triaxial compression of the shipped 1,000-sphere dense sample, last frame with contacts"
 
 clean:
 	rm -rf $(BUILD)

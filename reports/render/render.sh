@@ -22,7 +22,7 @@ trap '[ -z "$xvfb_pid" ] || kill "$xvfb_pid" 2> /dev/null || true' EXIT
 if [ -z "${DISPLAY:-}" ]; then
   for n in $(seq 90 120); do   # the first free display number
     [ -e "/tmp/.X$n-lock" ] || [ -e "/tmp/.X11-unix/X$n" ] && continue
-    Xvfb ":$n" -screen 0 1280x1024x24 -nolisten tcp > /dev/null 2>&1 &
+    Xvfb ":$n" -screen 0 1280x1024x24 +extension GLX -nolisten tcp > /dev/null 2>&1 &
     xvfb_pid=$!
     for _ in $(seq 50); do [ -e "/tmp/.X11-unix/X$n" ] && break; sleep 0.1; done
     if kill -0 "$xvfb_pid" 2> /dev/null; then export DISPLAY=":$n"; break; fi
@@ -32,8 +32,16 @@ if [ -z "${DISPLAY:-}" ]; then
 fi
 mkdir -p "$(dirname "$png")"
 # ParaView's log goes to a file; its own message or the error is what we show.
+# Mesa's software OpenGL (Xvfb has no GPU). A fresh Xvfb sometimes refuses pvbatch's first
+# connection ("bad X server connection"): try up to three times.
+export LIBGL_ALWAYS_SOFTWARE=1
 log=$(mktemp)
-if ! pvbatch "$here/render_spheres.py" "$xdmf" "$png" "$title" > "$log" 2>&1; then
+for attempt in 1 2 3; do
+  pvbatch "$here/render_spheres.py" "$xdmf" "$png" "$title" > "$log" 2>&1 && break
+  grep -q 'bad X server connection' "$log" || break
+  sleep 2
+done
+if ! grep -q '^rendered' "$log"; then
   grep -v '^ *[0-9]\+ \+0x' "$log" | tail -20 >&2; rm -f "$log"; exit 1
 fi
 grep '^rendered' "$log"; rm -f "$log"

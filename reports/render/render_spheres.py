@@ -7,7 +7,7 @@
 # (Python only as a client script: the project's own code is C++.)
 import sys
 
-from paraview.simple import (CellDatatoPointData, ColorBy, GetActiveViewOrCreate, GetColorTransferFunction, GetScalarBar, Glyph, Render,
+from paraview.simple import (Calculator, CellDatatoPointData, ColorBy, ExtractSurface, GetActiveViewOrCreate, GetColorTransferFunction, GetScalarBar, Glyph, Render,
                              SaveScreenshot, Show, Text, Tube, XDMFReader)
 
 if len(sys.argv) < 3:
@@ -88,11 +88,16 @@ if contacts is not None:
     if lines > 0:
         display.Opacity = 0.15  # the spheres fade so that the force chains show
         fmax = contacts.CellData["normal_force"].GetRange()[1]
-        tubes = Tube(Input=CellDatatoPointData(Input=contacts))
-        tubes.Scalars = ["POINTS", "normal_force"]
+        # The XDMF's lines arrive as an unstructured grid; the tube filter takes polygonal data only,
+        # and "By Absolute Scalar" makes the scalar the radius itself [m]: the largest force 1 mm.
+        radius = Calculator(Input=ExtractSurface(Input=CellDatatoPointData(Input=contacts)))
+        radius.AttributeType = "Point Data"
+        radius.ResultArrayName = "tube_radius"
+        radius.Function = f"normal_force * {1.0e-3 / fmax if fmax > 0 else 0.0}"
+        tubes = Tube(Input=radius)
+        tubes.Scalars = ["POINTS", "tube_radius"]
         tubes.VaryRadius = "By Absolute Scalar"
-        tubes.Radius = 0.0
-        tubes.RadiusFactor = 1.0e-3 / fmax if fmax > 0 else 1.0  # the largest force: a tube of 1 mm radius
+        tubes.Radius = 1.0e-5  # the thinnest tube (zero forces)
         tubes.NumberofSides = 8
         tube_display = Show(tubes, view)
         colour(tube_display, "normal_force", "Inferno (matplotlib)", "normal force (N)").WindowLocation = "Upper Right Corner"
