@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "analysis/time_series.hpp"
+#include "analysis/columns.hpp"
 #include "core/types.hpp"
 
 namespace dem {
@@ -20,6 +20,6 @@ struct LegRecord {
 };
 
 const std::vector<SeriesColumn>& leg_columns();
-std::vector<double> leg_row(const LegRecord& r);  // in the order of leg_columns()
+std::vector<double> leg_row(const LegRecord& r);  // in the order of leg_columns() (both from one table, legs.cpp)
 
 }  // namespace dem

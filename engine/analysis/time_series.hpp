@@ -1,15 +1,12 @@
 #pragma once
 // The columns of the time series a run writes, and one row of them measured from a simulation.
-#include <string>
+// Each column is declared once, with its value (time_series.cpp; analysis/columns.hpp).
 #include <vector>
 
+#include "analysis/columns.hpp"
 #include "dynamics/simulation.hpp"
 
 namespace dem {
-
-struct SeriesColumn {
-  std::string name, units, doc;
-};
 
 const std::vector<SeriesColumn>& series_columns();
 

@@ -2,6 +2,7 @@
 // answers --help).
 //   dem run SCENE.yaml --out RESULT.h5     run a scene, write its result
 //   dem keys                               the reference of every scene key
+//   dem columns [--legs]                   the columns of a result's /timeseries (/legs), as engine/README.md lists them
 //   dem table | state | summary RESULT.h5  read a result
 #include <fcntl.h>
 #include <omp.h>
@@ -305,6 +306,10 @@ int main(int argc, char** argv) {
 
   CLI::App* keys_cmd = app.add_subcommand("keys", "list every scene key with its unit, allowed range, default and meaning");
 
+  bool column_legs = false;
+  CLI::App* columns_cmd = app.add_subcommand("columns", "list the time-series columns of a result with unit and meaning (Markdown)");
+  columns_cmd->add_flag("--legs", column_legs, "the per-leg table /legs instead of /timeseries");
+
   TableArgs ta;
   CLI::App* table_cmd = app.add_subcommand("table", "print a result's time-series (or per-leg) columns, 'name [unit]' headers");
   table_cmd->add_option("result", ta.file, "the result file")->required();
@@ -328,6 +333,10 @@ int main(int argc, char** argv) {
   }
   if (*run_cmd) return run(ra);
   if (*keys_cmd) { std::fputs(dem::scene_key_reference().c_str(), stdout); return 0; }
+  if (*columns_cmd) {
+    std::fputs(dem::columns_markdown(column_legs ? dem::leg_columns() : dem::series_columns()).c_str(), stdout);
+    return 0;
+  }
   if (*table_cmd) return table(ta);
   if (*state_cmd) return state(state_file);
   if (*summary_cmd) return summary(summary_files);

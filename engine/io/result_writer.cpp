@@ -3,8 +3,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <new>
+#include <stdexcept>
 
 #include "analysis/legs.hpp"
+#include "analysis/time_series.hpp"
 #include "io/atomic_file.hpp"
 #include "io/state_io.hpp"
 #include "io/xdmf.hpp"
@@ -26,6 +28,9 @@ ColumnTable::ColumnTable(hid_t file, const std::string& group, const std::vector
 }
 
 void ColumnTable::append(const std::vector<double>& row) {
+  if (row.size() != columns_.size())  // a row measured for another table: a bug, never bad input
+    throw std::logic_error("a row of " + std::to_string(row.size()) + " values for a table of " +
+                           std::to_string(columns_.size()) + " columns");
   for (std::size_t c = 0; c < columns_.size(); ++c) pending_[c].push_back(row[c]);
 }
 

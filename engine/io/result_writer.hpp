@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/time_series.hpp"
+#include "analysis/columns.hpp"
 #include "config/scene_config.hpp"
 #include "io/h5md.hpp"
 #include "io/hdf5.hpp"
@@ -30,7 +30,7 @@ class ColumnTable {
   ColumnTable(hid_t file, const std::string& group, const std::vector<SeriesColumn>& columns);
   struct Reopen {};
   ColumnTable(hid_t file, const std::string& group, const std::vector<SeriesColumn>& columns, Reopen);
-  void append(const std::vector<double>& row);
+  void append(const std::vector<double>& row);  // one value per column (std::logic_error otherwise)
   std::size_t pending_rows() const { return pending_.empty() ? 0 : pending_[0].size(); }
   void flush();  // writes pending rows (the caller flushes the file)
 

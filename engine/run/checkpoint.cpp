@@ -16,18 +16,6 @@ namespace dem {
 
 namespace {
 
-void write_vec3(hid_t g, const std::string& name, const Vec3& v, const std::string& units) {
-  h5::write(g, name, std::vector<double>{v[0], v[1], v[2]}, 1, units);
-}
-
-Vec3 read_one_vec3(hid_t g, const std::string& file, const std::string& name) {
-  std::size_t cols = 0;
-  const std::vector<double> d = h5::read<double>(g, name, cols);
-  if (d.size() != 3 || !std::isfinite(d[0]) || !std::isfinite(d[1]) || !std::isfinite(d[2]))
-    throw h5::Error(file + ": /checkpoint: " + name + " must be 3 finite values");
-  return {d[0], d[1], d[2]};
-}
-
 double finite_attribute(hid_t g, const std::string& file, const std::string& name) {
   const double v = h5::get_double_attribute(g, name);
   if (!std::isfinite(v)) throw h5::Error(file + ": /checkpoint: attribute " + name + " is not finite");
@@ -42,121 +30,123 @@ std::int64_t int_attribute(hid_t g, const std::string& file, const std::string& 
   return v;
 }
 
-void write_list(hid_t g, const VerletList::Saved& list, const ContactHistory& history) {
-  write_pairs(g, "verlet", list.pairs, history);
-  h5::write(g, "verlet_position_fractional_at_build", flatten(list.s_at_build), 3, "1");
-  write_vec3(g, "verlet_cell_lengths_at_build", list.lengths_at_build, "m");
-  if (list.tilts_at_build != Vec3::Zero()) write_vec3(g, "verlet_cell_tilts_at_build", list.tilts_at_build, "m");
-  h5::set_attribute(g, "verlet_builds", static_cast<std::int64_t>(list.builds));
-}
+constexpr std::int64_t most = std::numeric_limits<std::int64_t>::max();
 
-VerletList::Saved read_list(hid_t g, const std::string& file, std::size_t n, ContactHistory& history) {
-  VerletList::Saved list;
-  SavedPairs pairs = read_pairs(g, file, "verlet", n);
-  list.pairs = std::move(pairs.pairs);
-  history = std::move(pairs.history);
-  list.s_at_build = read_vec3(g, file, "verlet_position_fractional_at_build");
-  list.lengths_at_build = read_one_vec3(g, file, "verlet_cell_lengths_at_build");
-  if (h5::exists(g, "verlet_cell_tilts_at_build")) list.tilts_at_build = read_one_vec3(g, file, "verlet_cell_tilts_at_build");
-  list.builds = static_cast<std::size_t>(int_attribute(g, file, "verlet_builds", 0, std::numeric_limits<std::int64_t>::max()));
-  if (list.s_at_build.size() != n)
-    throw h5::Error(file + ": /checkpoint/state: verlet_position_fractional_at_build has " +
-                    std::to_string(list.s_at_build.size()) + " rows for " + std::to_string(n) + " particles");
-  for (const Vec3& s : list.s_at_build)
-    if (!s.allFinite()) throw h5::Error(file + ": /checkpoint/state: a non-finite position at the last list build");
-  return list;
+// The fields of a checkpoint, each named once, with how it is stored: `io` is a FieldWriter or a
+// FieldReader, which go through them in this order (the order of the file). A field kept for
+// resuming is one line here (and, for the cursor, its member of StageCursor).
+//   real:     a double attribute (read: finite)
+//   integer:  an int64 attribute (read: within [min, max])
+//   values:   a 1-D dataset of a fixed number of doubles with its unit (read: that many, finite)
+//   optional: the same, written only when not zero (read: zero when absent)
+//   rows:     an N x 3 dataset, one row per particle (read: N rows, finite)
+//   pairs:    a pair list and its history (io/state_io.hpp, write_pairs / read_pairs)
+
+// The Verlet list as the simulation holds it, with the history of every listed pair.
+template <class IO, class List, class History>
+void list_fields(IO& io, List& list, History& history) {
+  io.pairs("verlet", list.pairs, history);
+  io.rows("verlet_position_fractional_at_build", list.s_at_build);
+  io.values("verlet_cell_lengths_at_build", list.lengths_at_build, "m");
+  io.optional("verlet_cell_tilts_at_build", list.tilts_at_build, "m");
+  io.integer("verlet_builds", list.builds, 0, most);
 }
 
 // The energy balance: one attribute per accumulated quantity.
-void write_energy(hid_t g, const EnergyBalance& e) {
-  h5::set_attribute(g, "energy_work_by_cell", e.work_by_cell);
-  h5::set_attribute(g, "energy_dissipated_damping", e.dissipated_damping);
-  h5::set_attribute(g, "energy_dissipated_friction", e.dissipated_friction);
-  h5::set_attribute(g, "energy_dissipated_rolling", e.dissipated_rolling);
-  h5::set_attribute(g, "energy_kinetic", e.kinetic);
-  h5::set_attribute(g, "energy_elastic", e.elastic);
-  h5::set_attribute(g, "energy_stored_at_start", e.stored_at_start);
-  h5::set_attribute(g, "energy_started", static_cast<std::int64_t>(e.started));
-  write_vec3(g, "energy_virial", e.virial, "J");
-  if (e.shear_virial != Vec3::Zero()) write_vec3(g, "energy_shear_virial", e.shear_virial, "J");
+template <class IO, class Energy>
+void energy_fields(IO& io, Energy& e) {
+  io.real("energy_work_by_cell", e.work_by_cell);
+  io.real("energy_dissipated_damping", e.dissipated_damping);
+  io.real("energy_dissipated_friction", e.dissipated_friction);
+  io.real("energy_dissipated_rolling", e.dissipated_rolling);
+  io.real("energy_kinetic", e.kinetic);
+  io.real("energy_elastic", e.elastic);
+  io.real("energy_stored_at_start", e.stored_at_start);
+  io.integer("energy_started", e.started, 0, 1);
+  io.values("energy_virial", e.virial, "J");
+  io.optional("energy_shear_virial", e.shear_virial, "J");
 }
 
-EnergyBalance read_energy(hid_t g, const std::string& file) {
-  EnergyBalance e;
-  e.work_by_cell = finite_attribute(g, file, "energy_work_by_cell");
-  e.dissipated_damping = finite_attribute(g, file, "energy_dissipated_damping");
-  e.dissipated_friction = finite_attribute(g, file, "energy_dissipated_friction");
-  e.dissipated_rolling = finite_attribute(g, file, "energy_dissipated_rolling");
-  e.kinetic = finite_attribute(g, file, "energy_kinetic");
-  e.elastic = finite_attribute(g, file, "energy_elastic");
-  e.stored_at_start = finite_attribute(g, file, "energy_stored_at_start");
-  e.started = int_attribute(g, file, "energy_started", 0, 1) == 1;
-  e.virial = read_one_vec3(g, file, "energy_virial");
-  if (h5::exists(g, "energy_shear_virial")) e.shear_virial = read_one_vec3(g, file, "energy_shear_virial");
-  return e;
+// Where the stage loop is (run/run_scene.hpp).
+template <class IO, class Cursor>
+void cursor_fields(IO& io, Cursor& c) {
+  io.integer("stage", c.stage, 0, 1 << 30);
+  io.integer("iteration", c.i, 1, most);
+  io.integer("leg", c.leg, 0, 1 << 30);
+  io.integer("done_steps", c.done_steps, 0, most);
+  io.real("stress_error", c.stress_error);
+  io.real("unbalanced", c.unbalanced);
+  io.integer("creep_window_start", c.creep_window_start, -1, most);
+  io.real("creep_volume_at_start", c.creep_volume_at_start);
+  io.real("creep_rate", c.creep_rate);
+  io.real("max_inertial_number", c.max_inertial_number);
+  io.integer("servo_steps", c.servo.steps, -1, 1 << 30);
+  io.values("from", c.from_Pa, "Pa");
+  io.values("sum_sq", c.sum_sq, "Pa^2");
+  io.values("strain_at_leg_start", c.strain_at_leg_start, "1");
+  io.values("servo_kappa", c.servo.kappa, "1");
+  io.values("servo_predicted", c.servo.predicted, "Pa");
+  io.values("servo_window_start", c.servo.window_start, "Pa");
+  io.real("servo_kappa_shear", c.servo.kappa_shear);
+  io.values("servo_predicted_shear", c.servo.predicted_shear, "Pa");
+  io.values("servo_window_start_shear", c.servo.window_start_shear, "Pa");
+  io.real("mean_stress_at_start", c.mean_stress_at_start);
+  io.real("deviator_at_start", c.deviator_at_start);
+  io.real("cycle_low", c.cycle_low);
+  io.real("cycle_high", c.cycle_high);
+  io.values("strain_at_start", c.strain_at_start, "1");
 }
 
-void write_cursor(hid_t g, const StageCursor& c) {
-  h5::set_attribute(g, "stage", static_cast<std::int64_t>(c.stage));
-  h5::set_attribute(g, "iteration", c.i);
-  h5::set_attribute(g, "leg", static_cast<std::int64_t>(c.leg));
-  h5::set_attribute(g, "done_steps", c.done_steps);
-  h5::set_attribute(g, "stress_error", c.stress_error);
-  h5::set_attribute(g, "unbalanced", c.unbalanced);
-  h5::set_attribute(g, "creep_window_start", c.creep_window_start);
-  h5::set_attribute(g, "creep_volume_at_start", c.creep_volume_at_start);
-  h5::set_attribute(g, "creep_rate", c.creep_rate);
-  h5::set_attribute(g, "max_inertial_number", c.max_inertial_number);
-  h5::set_attribute(g, "servo_steps", static_cast<std::int64_t>(c.servo.steps));
-  write_vec3(g, "from", c.from_Pa, "Pa");
-  write_vec3(g, "sum_sq", c.sum_sq, "Pa^2");
-  write_vec3(g, "strain_at_leg_start", c.strain_at_leg_start, "1");
-  write_vec3(g, "servo_kappa", c.servo.kappa, "1");
-  write_vec3(g, "servo_predicted", c.servo.predicted, "Pa");
-  write_vec3(g, "servo_window_start", c.servo.window_start, "Pa");
-  h5::set_attribute(g, "servo_kappa_shear", c.servo.kappa_shear);
-  write_vec3(g, "servo_predicted_shear", c.servo.predicted_shear, "Pa");
-  write_vec3(g, "servo_window_start_shear", c.servo.window_start_shear, "Pa");
-  h5::set_attribute(g, "mean_stress_at_start", c.mean_stress_at_start);
-  h5::set_attribute(g, "deviator_at_start", c.deviator_at_start);
-  h5::set_attribute(g, "cycle_low", c.cycle_low);
-  h5::set_attribute(g, "cycle_high", c.cycle_high);
-  h5::write(g, "strain_at_start", std::vector<double>(c.strain_at_start.begin(), c.strain_at_start.end()), 1, "1");
-}
+struct FieldWriter {
+  hid_t g;
+  void real(const char* name, double v) { h5::set_attribute(g, name, v); }
+  template <class T>
+  void integer(const char* name, T v, std::int64_t, std::int64_t) { h5::set_attribute(g, name, static_cast<std::int64_t>(v)); }
+  template <class V>  // Vec3 or std::array<double, N>
+  void values(const char* name, const V& v, const char* units) {
+    h5::write(g, name, std::vector<double>(v.data(), v.data() + v.size()), 1, units);
+  }
+  void optional(const char* name, const Vec3& v, const char* units) {
+    if (v != Vec3::Zero()) values(name, v, units);
+  }
+  void rows(const char* name, const std::vector<Vec3>& v) { h5::write(g, name, flatten(v), 3, "1"); }
+  void pairs(const char* prefix, const PairList& pairs, const ContactHistory& history) { write_pairs(g, prefix, pairs, history); }
+};
 
-StageCursor read_cursor(hid_t g, const std::string& file) {
-  StageCursor c;
-  c.stage = static_cast<int>(int_attribute(g, file, "stage", 0, 1 << 30));
-  c.i = int_attribute(g, file, "iteration", 1, std::numeric_limits<std::int64_t>::max());
-  c.leg = static_cast<int>(int_attribute(g, file, "leg", 0, 1 << 30));
-  c.done_steps = int_attribute(g, file, "done_steps", 0, std::numeric_limits<std::int64_t>::max());
-  c.stress_error = finite_attribute(g, file, "stress_error");
-  c.unbalanced = finite_attribute(g, file, "unbalanced");
-  c.creep_window_start = int_attribute(g, file, "creep_window_start", -1, std::numeric_limits<std::int64_t>::max());
-  c.creep_volume_at_start = finite_attribute(g, file, "creep_volume_at_start");
-  c.creep_rate = finite_attribute(g, file, "creep_rate");
-  c.max_inertial_number = finite_attribute(g, file, "max_inertial_number");
-  c.servo.steps = static_cast<int>(int_attribute(g, file, "servo_steps", -1, 1 << 30));
-  c.from_Pa = read_one_vec3(g, file, "from");
-  c.sum_sq = read_one_vec3(g, file, "sum_sq");
-  c.strain_at_leg_start = read_one_vec3(g, file, "strain_at_leg_start");
-  c.servo.kappa = read_one_vec3(g, file, "servo_kappa");
-  c.servo.predicted = read_one_vec3(g, file, "servo_predicted");
-  c.servo.window_start = read_one_vec3(g, file, "servo_window_start");
-  c.servo.kappa_shear = finite_attribute(g, file, "servo_kappa_shear");
-  c.servo.predicted_shear = read_one_vec3(g, file, "servo_predicted_shear");
-  c.servo.window_start_shear = read_one_vec3(g, file, "servo_window_start_shear");
-  c.mean_stress_at_start = finite_attribute(g, file, "mean_stress_at_start");
-  c.deviator_at_start = finite_attribute(g, file, "deviator_at_start");
-  c.cycle_low = finite_attribute(g, file, "cycle_low");
-  c.cycle_high = finite_attribute(g, file, "cycle_high");
-  std::size_t cols = 0;
-  const std::vector<double> strains = h5::read<double>(g, "strain_at_start", cols);
-  if (strains.size() != 6 || !std::all_of(strains.begin(), strains.end(), [](double e) { return std::isfinite(e); }))
-    throw h5::Error(file + ": /checkpoint: strain_at_start must be 6 finite values");
-  std::copy(strains.begin(), strains.end(), c.strain_at_start.begin());
-  return c;
-}
+struct FieldReader {
+  hid_t g;
+  const std::string& file;
+  std::size_t particles;  // of the state: the rows of the list's positions
+  void real(const char* name, double& v) { v = finite_attribute(g, file, name); }
+  template <class T>
+  void integer(const char* name, T& v, std::int64_t min, std::int64_t max) {
+    v = static_cast<T>(int_attribute(g, file, name, min, max));
+  }
+  template <class V>
+  void values(const char* name, V& v, const char*) {
+    std::size_t cols = 0;
+    const std::vector<double> d = h5::read<double>(g, name, cols);
+    if (d.size() != static_cast<std::size_t>(v.size()) || !std::all_of(d.begin(), d.end(), [](double x) { return std::isfinite(x); }))
+      throw h5::Error(file + ": /checkpoint: " + name + " must be " + std::to_string(v.size()) + " finite values");
+    std::copy(d.begin(), d.end(), v.data());
+  }
+  void optional(const char* name, Vec3& v, const char* units) {
+    if (h5::exists(g, name)) values(name, v, units);
+  }
+  void rows(const char* name, std::vector<Vec3>& v) {
+    v = read_vec3(g, file, name);
+    if (v.size() != particles)
+      throw h5::Error(file + ": /checkpoint/state: " + name + " has " + std::to_string(v.size()) + " rows for " +
+                      std::to_string(particles) + " particles");
+    for (const Vec3& s : v)
+      if (!s.allFinite()) throw h5::Error(file + ": /checkpoint/state: a non-finite position at the last list build");
+  }
+  void pairs(const char* prefix, PairList& pairs, ContactHistory& history) {
+    SavedPairs saved = read_pairs(g, file, prefix, particles);
+    pairs = std::move(saved.pairs);
+    history = std::move(saved.history);
+  }
+};
 
 }  // namespace
 
@@ -183,9 +173,13 @@ void write_checkpoint(const std::string& partial_path, const std::string& out_pa
       h5::set_attribute(g, "wall_time_s", wall_time_s);
       h5::Handle state = h5::create_group(g, "state");
       write_state(state, sim);
-      write_list(state, sim.verlet_list().saved(), sim.history());
-      write_energy(state, sim.energy());
-      write_cursor(h5::create_group(g, "cursor"), cursor);
+      FieldWriter to_state{state};
+      const VerletList::Saved list = sim.verlet_list().saved();
+      list_fields(to_state, list, sim.history());
+      energy_fields(to_state, sim.energy());
+      const h5::Handle cursor_group = h5::create_group(g, "cursor");
+      FieldWriter to_cursor{cursor_group};
+      cursor_fields(to_cursor, cursor);
       h5::flush_file(f, tmp);
       // The checksum of everything in the checkpoint, read back from the file: one value changed
       // afterwards (an edit, a flipped bit) and read_checkpoint refuses it.
@@ -213,9 +207,12 @@ Checkpoint read_checkpoint(const std::string& file) {
     c.wall_time_s = finite_attribute(g, file, "wall_time_s");
     h5::Handle state = h5::open_group(g, "state");
     c.state = read_state(state, file);
-    c.list = read_list(state, file, c.state.particles.size(), c.list_history);
-    c.energy = read_energy(state, file);
-    c.cursor = read_cursor(h5::open_group(g, "cursor"), file);
+    FieldReader from_state{state, file, c.state.particles.size()};
+    list_fields(from_state, c.list, c.list_history);
+    energy_fields(from_state, c.energy);
+    const h5::Handle cursor_group = h5::open_group(g, "cursor");
+    FieldReader from_cursor{cursor_group, file, 0};
+    cursor_fields(from_cursor, c.cursor);
     // Last, so that a value out of range is named as such; any other change is caught here.
     if (!h5::has_attribute(g, "checksum")) throw h5::Error(file + ": /checkpoint has no checksum (written before checksums)");
     const std::string recorded = h5::get_string_attribute(g, "checksum"), found = h5::digest(f, "checkpoint", "checksum");

@@ -139,8 +139,34 @@ StageCursor cursor_at(int stage, std::int64_t i) {
   return c;
 }
 
-bool checkpoint_due(const StageHooks& hooks, const Simulation& sim) {
-  return hooks.checkpoint_due && hooks.checkpoint_due(sim);
+// What a stage type does in the loop all stages share (run_steps), as callables that the loop
+// inlines (no virtual call, no std::function): each stage's run_<type>_stage builds one from
+// lambdas over its own variables, the loop's iteration `i` among them.
+template <class Cursor, class Step, class Where, class Progress, class Done>
+struct StageLoop {
+  Cursor cursor;      // () -> StageCursor: what a checkpoint before iteration i saves to continue from it
+  Step step;          // () -> bool: the targets, sim.step and what the stage tracks per step; true if
+                      //    the step's state gets a row even off the output interval (a leg end, a stop)
+  Where where;        // () -> RowContext of that row
+  Progress progress;  // () -> StageProgress
+  Done done;          // () -> bool, after the row: the stage's end criteria (it may throw StageError);
+                      //    advances i; true when the loop is over
+};
+
+// The loop of every stage (ARCHITECTURE.md, "One time step"): a checkpoint if one is due (never
+// at the loop's first iteration), the stage's step, a row at output steps and where the stage asks
+// for one, progress at the loop's first step and every progress_every steps after, then the
+// stage's end of the step. `i` is the stage's iteration, which its callables advance. The stage
+// runs at least one step (the step counts of a scene are checked when it is read).
+template <class Loop>
+void run_steps(Simulation& sim, const SceneConfig& scene, const StageHooks& hooks, const std::int64_t& i, Loop loop) {
+  for (std::int64_t k = 0;; ++k) {
+    if (i > 0 && hooks.checkpoint_due && hooks.checkpoint_due(sim)) hooks.checkpoint(sim, loop.cursor());
+    const bool row = loop.step();
+    if (hooks.row && (row || output_due(sim, scene))) hooks.row(sim, loop.where());
+    if (hooks.progress && k % progress_every == 0) hooks.progress(sim, loop.progress());
+    if (loop.done()) return;
+  }
 }
 
 void run_strain_rate_stage(Simulation& sim, const SceneConfig& scene, int index, const StageHooks& hooks,
@@ -149,13 +175,16 @@ void run_strain_rate_stage(Simulation& sim, const SceneConfig& scene, int index,
   CellTargets targets;
   for (int k = 0; k < 3; ++k) targets[static_cast<std::size_t>(k)] = {AxisTarget::Mode::StrainRate, st.strain_rate_per_s[k], 0, 0};
   const std::int64_t n = steps_in(st.duration_s, sim.time_step());
-  for (std::int64_t i = resume ? resume->i : 0; i < n; ++i) {
-    if (i > 0 && checkpoint_due(hooks, sim)) hooks.checkpoint(sim, cursor_at(index, i));
-    sim.step(targets, scene.servo);
-    if (hooks.row && output_due(sim, scene)) hooks.row(sim, {index});
-    if (hooks.progress && i % progress_every == 0)
-      hooks.progress(sim, {index, static_cast<double>(i) / static_cast<double>(n), ""});
-  }
+  std::int64_t i = resume ? resume->i : 0;
+  run_steps(sim, scene, hooks, i, StageLoop{
+      .cursor = [&] { return cursor_at(index, i); },
+      .step = [&] {
+        sim.step(targets, scene.servo);
+        return false;
+      },
+      .where = [&] { return RowContext{index}; },
+      .progress = [&] { return StageProgress{index, static_cast<double>(i) / static_cast<double>(n), ""}; },
+      .done = [&] { return ++i >= n; }});
 }
 
 void run_stress_stage(Simulation& sim, const SceneConfig& scene, int index, const StageHooks& hooks,
@@ -176,68 +205,77 @@ void run_stress_stage(Simulation& sim, const SceneConfig& scene, int index, cons
   if (resume) servo.restore(resume->servo), hold = *resume;
   const bool creep = st.hold.creep_rate_per_s > 0;
   const std::int64_t creep_window_steps = std::max<std::int64_t>(1, steps_in(st.hold.creep_window_s, dt));
-  for (std::int64_t i = resume ? resume->i : 0;; ++i) {
-    if (i > 0 && checkpoint_due(hooks, sim)) {
-      hold.i = i, hold.from_Pa = from, hold.servo = servo.state();
-      hooks.checkpoint(sim, hold);
-    }
-    const double t = static_cast<double>(i) * dt;
-    for (int k = 0; k < 3; ++k) {
-      const double sign = st.target_Pa[k] >= from[k] ? 1.0 : -1.0;
-      const bool ramping = t < ramp_time[k];
-      targets[static_cast<std::size_t>(k)] = {AxisTarget::Mode::Stress, 0,
-                                              ramping ? from[k] + sign * st.stress_rate_Pa_per_s * t : st.target_Pa[k],
-                                              ramping ? sign * st.stress_rate_Pa_per_s : 0.0};
-    }
-    if (st.zero_shear_stress) {
-      for (std::size_t k = 0; k < 3; ++k) control.component[k] = targets[k];
-      sim.step(control, servo);
-    } else {
-      sim.step(targets, servo);
-    }
-    const std::int64_t done = i + 1;
-    if (hooks.row && output_due(sim, scene)) hooks.row(sim, {index});
-    const double t_done = static_cast<double>(done) * dt;
-    if (creep && t_done >= ramp_end) {  // consecutive windows from the end of the ramp
-      if (hold.creep_window_start < 0) {
-        hold.creep_window_start = done, hold.creep_volume_at_start = sim.cell().volume();
-      } else if (done - hold.creep_window_start >= creep_window_steps) {
-        const double elapsed = static_cast<double>(done - hold.creep_window_start) * dt;
-        hold.creep_rate = std::abs(std::log(sim.cell().volume() / hold.creep_volume_at_start)) / elapsed;
-        hold.creep_window_start = done, hold.creep_volume_at_start = sim.cell().volume();
-      }
-    }
-    if (t_done >= ramp_end && done % st.hold.check_interval_steps == 0) {
-      const HoldStatus h = hold_status(sim, st);
-      hold.stress_error = h.stress_error;
-      hold.unbalanced = h.unbalanced_force_ratio;
-      const bool at_rest = !creep || (hold.creep_rate >= 0 && hold.creep_rate <= st.hold.creep_rate_per_s);
-      if (h.met && at_rest) return;
-    }
-    if (done >= max_steps) {
-      // Measured now, at the last step (the hold's last check may be up to check_interval steps
-      // old, or, if the ramp never ended, never made).
-      const HoldStatus now = hold_status(sim, st);
-      const Vec3 reached = sim.sums().stress_Pa.diagonal();
-      std::ostringstream msg;
-      msg << "stage '" << st.name << "' did not reach equilibrium within hold.max_duration = " << st.hold.max_duration_s
-          << " s: stresses " << reached[0] << ", " << reached[1] << ", " << reached[2] << " Pa against targets "
-          << st.target_Pa[0] << ", " << st.target_Pa[1] << ", " << st.target_Pa[2] << " Pa, largest stress error "
-          << 100 * now.stress_error << " % (allowed " << 100 * st.hold.stress_tolerance << " %), unbalanced force ratio "
-          << now.unbalanced_force_ratio << " (allowed " << st.hold.unbalanced_force_ratio << ")";
-      if (t_done < ramp_end)
-        msg << "; the ramp itself needs " << ramp_end << " s at rate = " << st.stress_rate_Pa_per_s << " Pa/s";
-      if (creep) msg << ", creep rate " << hold.creep_rate << " 1/s (allowed " << st.hold.creep_rate_per_s << ")";
-      throw StageError(msg.str());
-    }
-    if (hooks.progress && i % progress_every == 0) {
-      std::ostringstream status;
-      status << "p = " << mean_stress(sim.sums().stress_Pa) / 1e3 << " kPa";
-      if (t_done >= ramp_end) status << ", holding: stress error " << 100 * hold.stress_error << " %, unbalanced " << hold.unbalanced;
-      if (creep && hold.creep_rate >= 0) status << ", creep " << hold.creep_rate << " 1/s";
-      hooks.progress(sim, {index, t_done < ramp_end ? t_done / std::max(ramp_end, dt) : -1.0, status.str()});
-    }
-  }
+  std::int64_t i = resume ? resume->i : 0;
+  bool held = false;  // the hold's criteria met at its last check
+  run_steps(sim, scene, hooks, i, StageLoop{
+      .cursor = [&] {
+        hold.i = i, hold.from_Pa = from, hold.servo = servo.state();
+        return hold;
+      },
+      .step = [&] {
+        const double t = static_cast<double>(i) * dt;
+        for (int k = 0; k < 3; ++k) {
+          const double sign = st.target_Pa[k] >= from[k] ? 1.0 : -1.0;
+          const bool ramping = t < ramp_time[k];
+          targets[static_cast<std::size_t>(k)] = {AxisTarget::Mode::Stress, 0,
+                                                  ramping ? from[k] + sign * st.stress_rate_Pa_per_s * t : st.target_Pa[k],
+                                                  ramping ? sign * st.stress_rate_Pa_per_s : 0.0};
+        }
+        if (st.zero_shear_stress) {
+          for (std::size_t k = 0; k < 3; ++k) control.component[k] = targets[k];
+          sim.step(control, servo);
+        } else {
+          sim.step(targets, servo);
+        }
+        // The hold, from the state after the step (which the step's row, if any, also reads).
+        const std::int64_t done = i + 1;
+        const double t_done = static_cast<double>(done) * dt;
+        if (creep && t_done >= ramp_end) {  // consecutive windows from the end of the ramp
+          if (hold.creep_window_start < 0) {
+            hold.creep_window_start = done, hold.creep_volume_at_start = sim.cell().volume();
+          } else if (done - hold.creep_window_start >= creep_window_steps) {
+            const double elapsed = static_cast<double>(done - hold.creep_window_start) * dt;
+            hold.creep_rate = std::abs(std::log(sim.cell().volume() / hold.creep_volume_at_start)) / elapsed;
+            hold.creep_window_start = done, hold.creep_volume_at_start = sim.cell().volume();
+          }
+        }
+        if (t_done >= ramp_end && done % st.hold.check_interval_steps == 0) {
+          const HoldStatus h = hold_status(sim, st);
+          hold.stress_error = h.stress_error;
+          hold.unbalanced = h.unbalanced_force_ratio;
+          const bool at_rest = !creep || (hold.creep_rate >= 0 && hold.creep_rate <= st.hold.creep_rate_per_s);
+          held = h.met && at_rest;
+        }
+        return false;
+      },
+      .where = [&] { return RowContext{index}; },
+      .progress = [&] {
+        const double t_done = static_cast<double>(i + 1) * dt;
+        std::ostringstream status;
+        status << "p = " << mean_stress(sim.sums().stress_Pa) / 1e3 << " kPa";
+        if (t_done >= ramp_end) status << ", holding: stress error " << 100 * hold.stress_error << " %, unbalanced " << hold.unbalanced;
+        if (creep && hold.creep_rate >= 0) status << ", creep " << hold.creep_rate << " 1/s";
+        return StageProgress{index, t_done < ramp_end ? t_done / std::max(ramp_end, dt) : -1.0, status.str()};
+      },
+      .done = [&] {
+        if (held) return true;
+        const double t_done = static_cast<double>(++i) * dt;
+        if (i < max_steps) return false;
+        // Measured now, at the last step (the hold's last check may be up to check_interval steps
+        // old, or, if the ramp never ended, never made).
+        const HoldStatus now = hold_status(sim, st);
+        const Vec3 reached = sim.sums().stress_Pa.diagonal();
+        std::ostringstream msg;
+        msg << "stage '" << st.name << "' did not reach equilibrium within hold.max_duration = " << st.hold.max_duration_s
+            << " s: stresses " << reached[0] << ", " << reached[1] << ", " << reached[2] << " Pa against targets "
+            << st.target_Pa[0] << ", " << st.target_Pa[1] << ", " << st.target_Pa[2] << " Pa, largest stress error "
+            << 100 * now.stress_error << " % (allowed " << 100 * st.hold.stress_tolerance << " %), unbalanced force ratio "
+            << now.unbalanced_force_ratio << " (allowed " << st.hold.unbalanced_force_ratio << ")";
+        if (t_done < ramp_end)
+          msg << "; the ramp itself needs " << ramp_end << " s at rate = " << st.stress_rate_Pa_per_s << " Pa/s";
+        if (creep) msg << ", creep rate " << hold.creep_rate << " 1/s (allowed " << st.hold.creep_rate_per_s << ")";
+        throw StageError(msg.str());
+      }});
 }
 
 
@@ -268,38 +306,43 @@ void run_stress_path_stage(Simulation& sim, const SceneConfig& scene, int index,
     LegRecord rec{index, leg.index, leg.cycle, leg.ends_cycle, leg.to_Pa, static_cast<double>(n) * dt, n, 0, Vec3::Zero(),
                   resumed_leg ? resume->max_inertial_number : 0.0};
     Vec3 sum_sq = resumed_leg ? resume->sum_sq : Vec3::Zero();
-    for (std::int64_t i = resumed_leg ? resume->i : 0; i < n; ++i) {
-      if (i > 0 && checkpoint_due(hooks, sim)) {
-        StageCursor here = cursor_at(index, i);
-        here.servo = servo.state(), here.leg = static_cast<int>(leg_index), here.done_steps = done_steps;
-        here.sum_sq = sum_sq, here.max_inertial_number = rec.max_inertial_number, here.strain_at_leg_start = strain_at_leg_start;
-        hooks.checkpoint(sim, here);
-      }
-      const Vec3 target = leg.from_Pa + (leg.to_Pa - leg.from_Pa) * (static_cast<double>(i) / static_cast<double>(n));
-      for (int k = 0; k < 3; ++k)
-        targets[static_cast<std::size_t>(k)] = {AxisTarget::Mode::Stress, 0, target[k], rate[k]};
-      if (st.zero_shear_stress) {
-        for (std::size_t k = 0; k < 3; ++k) control.component[k] = targets[k];
-        sim.step(control, servo);
-      } else {
-        sim.step(targets, servo);
-      }
-      const Mat3& s = sim.sums().stress_Pa;  // at this step's positions, i.e. at time t_i
-      for (int k = 0; k < 3; ++k) sum_sq[k] += (s(k, k) - target[k]) * (s(k, k) - target[k]);
-      const double p_now = s.trace() / 3;
-      if (p_now > 0)
-        rec.max_inertial_number = std::max(rec.max_inertial_number,
-                                           max_strain_rate(sim.rates()) * inertia_scale / std::sqrt(p_now));
-      ++done_steps;
-      const bool last = i + 1 == n;
-      if (hooks.row && (last || output_due(sim, scene)))
-        hooks.row(sim, {index, leg.cycle, leg.index, last, last && leg.ends_cycle, strain_at_leg_start});
-      if (hooks.progress && done_steps % progress_every == 0) {
-        std::ostringstream status;
-        status << "cycle " << leg.cycle << ", leg " << leg.index + 1 << "/" << legs.size() << " -> " << leg.to_label;
-        hooks.progress(sim, {index, static_cast<double>(done_steps) / static_cast<double>(total_steps), status.str()});
-      }
-    }
+    std::int64_t i = resumed_leg ? resume->i : 0;  // one loop per leg
+    run_steps(sim, scene, hooks, i, StageLoop{
+        .cursor = [&] {
+          StageCursor here = cursor_at(index, i);
+          here.servo = servo.state(), here.leg = static_cast<int>(leg_index), here.done_steps = done_steps;
+          here.sum_sq = sum_sq, here.max_inertial_number = rec.max_inertial_number, here.strain_at_leg_start = strain_at_leg_start;
+          return here;
+        },
+        .step = [&] {
+          const Vec3 target = leg.from_Pa + (leg.to_Pa - leg.from_Pa) * (static_cast<double>(i) / static_cast<double>(n));
+          for (int k = 0; k < 3; ++k)
+            targets[static_cast<std::size_t>(k)] = {AxisTarget::Mode::Stress, 0, target[k], rate[k]};
+          if (st.zero_shear_stress) {
+            for (std::size_t k = 0; k < 3; ++k) control.component[k] = targets[k];
+            sim.step(control, servo);
+          } else {
+            sim.step(targets, servo);
+          }
+          const Mat3& s = sim.sums().stress_Pa;  // at this step's positions, i.e. at time t_i
+          for (int k = 0; k < 3; ++k) sum_sq[k] += (s(k, k) - target[k]) * (s(k, k) - target[k]);
+          const double p_now = s.trace() / 3;
+          if (p_now > 0)
+            rec.max_inertial_number = std::max(rec.max_inertial_number,
+                                               max_strain_rate(sim.rates()) * inertia_scale / std::sqrt(p_now));
+          ++done_steps;
+          return i + 1 == n;  // a leg ends with a row
+        },
+        .where = [&] {
+          const bool last = i + 1 == n;
+          return RowContext{index, leg.cycle, leg.index, last, last && leg.ends_cycle, strain_at_leg_start};
+        },
+        .progress = [&] {
+          std::ostringstream status;
+          status << "cycle " << leg.cycle << ", leg " << leg.index + 1 << "/" << legs.size() << " -> " << leg.to_label;
+          return StageProgress{index, static_cast<double>(done_steps) / static_cast<double>(total_steps), status.str()};
+        },
+        .done = [&] { return ++i >= n; }});
     rec.end_step = sim.step_count();
     rec.rms_error = (sum_sq / static_cast<double>(n)).cwiseSqrt() / p;
     if (hooks.leg) hooks.leg(rec);
@@ -380,60 +423,67 @@ void run_control_stage(Simulation& sim, const SceneConfig& scene, int index, con
   const double omega = cyclic ? 2 * std::numbers::pi / cyc.period_s : 0;
   const auto cycle_of = [&](std::int64_t step) { return static_cast<int>(std::floor(static_cast<double>(step) * dt / cyc.period_s)) + 1; };
   std::string ended = "duration reached";
-  bool liquefied = false;
-  for (std::int64_t i = resume ? resume->i : 0; i < n; ++i) {
-    if (i > 0 && checkpoint_due(hooks, sim)) {
-      StageCursor here = start;
-      here.stage = index, here.i = i, here.servo = servo.state(), here.cycle_low = low, here.cycle_high = high;
-      here.max_inertial_number = max_inertial;
-      hooks.checkpoint(sim, here);
-    }
-    CellControl control = st.control;
-    const int cycle = cyclic ? cycle_of(i) : 0;
-    if (cyclic) {
-      const double t = static_cast<double>(i) * dt;
-      const double wave = cyc.amplitude * std::sin(omega * t), wave_rate = cyc.amplitude * omega * std::cos(omega * t);
-      AxisTarget& c = control.component[static_cast<std::size_t>(kc)];
-      switch (cyc.quantity) {
-        case CyclicLoading::Quantity::Stress: c.stress_Pa += wave, c.stress_rate_Pa_per_s = wave_rate; break;
-        case CyclicLoading::Quantity::Deviator:  // about the other axes' stress at the last evaluation
-          c.stress_Pa = lateral_stress(sim.sums().stress_Pa, kc) + start.deviator_at_start + wave;
-          c.stress_rate_Pa_per_s = wave_rate;
-          break;
-        case CyclicLoading::Quantity::Strain: c.strain_rate_per_s += wave_rate; break;
-      }
-    }
-    sim.step(control, servo);
-    RowContext where{index, cycle};
-    where.mean_stress_at_stage_start = p0;
-    std::string stop;
-    if (cyclic) {
-      const double e = strain_since_start(kc);
-      low = std::min(low, e), high = std::max(high, e);
-      where.double_amplitude_strain = high - low;
-      if (st.until.double_amplitude_strain > 0 && high - low >= st.until.double_amplitude_strain) stop = "double_amplitude_strain";
-      if (cycle_of(i + 1) > cycle) low = high = e;  // the next step starts a cycle
-    }
-    const double p = sim.sums().stress_Pa.trace() / 3;
-    if (p > 0) max_inertial = std::max(max_inertial, max_strain_rate(sim.rates()) * inertia_scale / std::sqrt(p));
-    if (st.until.pore_pressure_ratio > 0 && p0 > 0 && 1 - p / p0 >= st.until.pore_pressure_ratio) stop = "pore_pressure_ratio";
-    if (st.until.strain > 0 && std::abs(strain_since_start(st.until.component)) >= st.until.strain) stop = "strain";
-    if (hooks.row && (output_due(sim, scene) || !stop.empty() || i + 1 == n)) hooks.row(sim, where);
-    if (hooks.progress && i % progress_every == 0) {
-      std::ostringstream status;
-      if (cyclic) status << "cycle " << cycle << ", ";
-      status << "r_u " << (p0 > 0 ? 1 - p / p0 : 0.0);
-      hooks.progress(sim, {index, static_cast<double>(i) / static_cast<double>(n), status.str()});
-    }
-    if (!stop.empty()) {
-      std::ostringstream why;
-      why << "until." << stop << " met at time " << sim.time() << " s";
-      if (cyclic) why << " after " << static_cast<double>(i + 1) * dt / cyc.period_s << " cycles";
-      ended = why.str();
-      liquefied = stop == "pore_pressure_ratio" || stop == "double_amplitude_strain";
-      break;
-    }
-  }
+  bool liquefied = false, stopped = false;
+  int cycle = 0;       // of the step
+  RowContext where;    // of the step's row
+  std::int64_t i = resume ? resume->i : 0;
+  run_steps(sim, scene, hooks, i, StageLoop{
+      .cursor = [&] {
+        StageCursor here = start;
+        here.stage = index, here.i = i, here.servo = servo.state(), here.cycle_low = low, here.cycle_high = high;
+        here.max_inertial_number = max_inertial;
+        return here;
+      },
+      .step = [&] {
+        CellControl control = st.control;
+        cycle = cyclic ? cycle_of(i) : 0;
+        if (cyclic) {
+          const double t = static_cast<double>(i) * dt;
+          const double wave = cyc.amplitude * std::sin(omega * t), wave_rate = cyc.amplitude * omega * std::cos(omega * t);
+          AxisTarget& c = control.component[static_cast<std::size_t>(kc)];
+          switch (cyc.quantity) {
+            case CyclicLoading::Quantity::Stress: c.stress_Pa += wave, c.stress_rate_Pa_per_s = wave_rate; break;
+            case CyclicLoading::Quantity::Deviator:  // about the other axes' stress at the last evaluation
+              c.stress_Pa = lateral_stress(sim.sums().stress_Pa, kc) + start.deviator_at_start + wave;
+              c.stress_rate_Pa_per_s = wave_rate;
+              break;
+            case CyclicLoading::Quantity::Strain: c.strain_rate_per_s += wave_rate; break;
+          }
+        }
+        sim.step(control, servo);
+        where = RowContext{index, cycle};
+        where.mean_stress_at_stage_start = p0;
+        std::string stop;
+        if (cyclic) {
+          const double e = strain_since_start(kc);
+          low = std::min(low, e), high = std::max(high, e);
+          where.double_amplitude_strain = high - low;
+          if (st.until.double_amplitude_strain > 0 && high - low >= st.until.double_amplitude_strain) stop = "double_amplitude_strain";
+          if (cycle_of(i + 1) > cycle) low = high = e;  // the next step starts a cycle
+        }
+        const double p = sim.sums().stress_Pa.trace() / 3;
+        if (p > 0) max_inertial = std::max(max_inertial, max_strain_rate(sim.rates()) * inertia_scale / std::sqrt(p));
+        if (st.until.pore_pressure_ratio > 0 && p0 > 0 && 1 - p / p0 >= st.until.pore_pressure_ratio) stop = "pore_pressure_ratio";
+        if (st.until.strain > 0 && std::abs(strain_since_start(st.until.component)) >= st.until.strain) stop = "strain";
+        if (!stop.empty()) {
+          std::ostringstream why;
+          why << "until." << stop << " met at time " << sim.time() << " s";
+          if (cyclic) why << " after " << static_cast<double>(i + 1) * dt / cyc.period_s << " cycles";
+          ended = why.str();
+          liquefied = stop == "pore_pressure_ratio" || stop == "double_amplitude_strain";
+          stopped = true;
+        }
+        return stopped || i + 1 == n;  // the stage's last row is its end
+      },
+      .where = [&] { return where; },
+      .progress = [&] {
+        const double p = sim.sums().stress_Pa.trace() / 3;
+        std::ostringstream status;
+        if (cyclic) status << "cycle " << cycle << ", ";
+        status << "r_u " << (p0 > 0 ? 1 - p / p0 : 0.0);
+        return StageProgress{index, static_cast<double>(i) / static_cast<double>(n), status.str()};
+      },
+      .done = [&] { return stopped || ++i >= n; }});
   if (hooks.attribute) hooks.attribute("stage_end_" + st.name, ended);
   if (hooks.warning && max_inertial > quasi_static_inertial_number) {
     std::ostringstream msg;
