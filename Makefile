@@ -9,6 +9,9 @@ SAMPLE   ?= seed1                       # the sample whose runs the single-run f
 CONVERGENCE ?= results/convergence/paper
 STABILITY   ?= results/stability/paper
 DECISIONS   ?= results/decisions/paper
+# The studies of readings at the paper's size (pipeline/studies/readings_<name>.yaml): their
+# results are results/readings_<name>/paper, their tables reports/readings/<name>/.
+READINGS    ?= loose medium_dense
 CRITICAL_STATE ?= results/critical_state/paper
 LIQUEFACTION   ?= results/liquefaction_loose/paper results/liquefaction_medium/paper
 # The studies of the cell under full control (constant-p shear to the critical state, undrained
@@ -17,7 +20,7 @@ LIQUEFACTION   ?= results/liquefaction_loose/paper results/liquefaction_medium/p
 CELL_STUDIES   ?= pipeline/studies/critical_state.yaml pipeline/studies/liquefaction_loose.yaml pipeline/studies/liquefaction_medium.yaml
 EXECUTOR    ?=                          # local or slurm (pipeline --executor); empty: the study files' executor key, else local
 
-.PHONY: all deps build tools examples example-samples install test kill-test slurm-test sanitize fuzz bench quick study report decisions decisions-report critical-state liquefaction samples samples-study cyclic-tests render clean
+.PHONY: all deps build tools examples example-samples install test kill-test slurm-test sanitize fuzz bench quick study report decisions decisions-report readings-report critical-state liquefaction samples samples-study cyclic-tests render clean
 
 # Everything: install, build the tools, run the full study (an ensemble of 5 samples per density,
 # reusing finished runs), validate it, draw the figures and write reports/index.md (the tests are
@@ -162,8 +165,9 @@ BASELINE ?= reports/baselines/orthorhombic_validation.json
 REPORT_SOURCE = --source "commit $$(git rev-parse --short=12 HEAD 2>/dev/null || echo unknown)$$(git diff --quiet HEAD -- . ':!reports' 2>/dev/null || echo ' (with uncommitted changes)')"
 report: tools
 	-$(MAKE) --no-print-directory decisions-report
+	-$(MAKE) --no-print-directory readings-report
 	-$(BUILD)/bin/validate --results $(RESULTS) --references reference_data/paper.yaml --out reports \
-	  --decisions reports/decisions/decisions.json
+	  --decisions reports/decisions/decisions.json $(foreach r,$(READINGS),--decisions reports/readings/$(r)/decisions.json)
 	$(BUILD)/bin/ensemble-cycles $(RESULTS) reports/figures/ensemble
 	reports/make_figures.sh $(BUILD)/bin $(RESULTS) reports/figures $(strip $(SAMPLE))
 	-$(BUILD)/bin/figure-data samples-table $(RESULTS) --references reference_data/paper.yaml --per-sample > reports/samples.md
@@ -186,6 +190,22 @@ decisions-report: tools
 	  $(BUILD)/bin/compare-runs decisions $(DECISIONS) reports/decisions --references reference_data/paper.yaml --ensemble $(RESULTS) && \
 	  (cd reports/decisions && GNUPLOT_LIB=$(CURDIR)/reports/gnuplot gnuplot $(CURDIR)/reports/gnuplot/tornado.gp); \
 	else echo "decisions: no results in $(DECISIONS) yet (make decisions)"; fi
+
+# The readings that explain the misses, measured again at the paper's size (8,000 spheres; the
+# studies pipeline/studies/readings_<name>.yaml, run with build/bin/pipeline ... --profile paper):
+# each reading against the paper study's samples of the same seeds (--baseline-results), judged
+# on its full ensemble, into reports/readings/<name>/. A study not run yet is said so and skipped;
+# a run not finished leaves its reading not judged on the rows that read it. validate (make
+# report) takes each row's cause from the largest size that judged it.
+readings-report: tools
+	@for r in $(READINGS); do \
+	  dir=results/readings_$$r/paper; \
+	  if [ -f $$dir/runs.tsv ]; then \
+	    $(BUILD)/bin/compare-runs decisions $$dir reports/readings/$$r --references reference_data/paper.yaml \
+	      --baseline-results $(RESULTS) --ensemble $(RESULTS) && \
+	    (cd reports/readings/$$r && GNUPLOT_LIB=$(CURDIR)/reports/gnuplot gnuplot $(CURDIR)/reports/gnuplot/tornado.gp); \
+	  else echo "readings: no results in $$dir yet (build/bin/pipeline pipeline/studies/readings_$$r.yaml --profile paper)"; fi; \
+	done
 
 # Drained shear at constant p of the dense sample to the critical state, compression and
 # extension against the shearing friction and the b series (pipeline/studies/critical_state.yaml),

@@ -1,18 +1,32 @@
 #include "decisions.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
 
 #include "ensemble.hpp"
 #include "format.hpp"
+#include "quantities.hpp"
 
 namespace validation {
 
 namespace {
 
-// A shift in the sentences: two decimals, or beyond ±10 the value with that said (format.hpp).
-std::string sd_text(double z) { return std::abs(z) <= 10 ? fixed(z) : shift_text(z); }
+// The row on samples that lack runs it reads: no value in any of them, so not judged.
+RowResult without_runs(const Row& row, const ReadingResults& samples) {
+  std::vector<RowResult::PerSample> none;
+  for (const Sample& s : samples) none.push_back({s.name, {std::nullopt, "runs missing"}});
+  return judge_values(row, std::move(none));
+}
+
+// "seed1 test2, seed2 test1": at most `shown` of them, then how many more.
+std::string listed(const std::vector<std::string>& runs, std::size_t shown = 4) {
+  std::string s;
+  for (std::size_t i = 0; i < runs.size() && i < shown; ++i) s += (i ? ", " : "") + runs[i];
+  if (runs.size() > shown) s += " and " + std::to_string(runs.size() - shown) + " more";
+  return s;
+}
 
 // Distance from the interval [low, high] to the paper's region (0 when they overlap).
 double gap(const RowResult& r) {
@@ -29,12 +43,32 @@ std::string with_shifts(const RowDecision& d, const std::vector<std::string>& na
     s += (i ? ", " : "") + names[i];
     for (const ReadingEffect& e : d.readings)
       if (e.reading == names[i] && e.shift_sd)
-        s += " (" + sd_text(*e.shift_sd) + " sd" + (e.t ? ", t = " + fixed(*e.t) : std::string()) + ")";
+        s += " (" + shift_phrase(*e.shift_sd) + (e.t ? ", t = " + fixed(*e.t) : std::string()) + ")";
   }
   return s;
 }
 
 }  // namespace
+
+std::vector<std::string> missing_runs(const Row& row, const ReadingResults& samples) {
+  std::vector<std::string> out;
+  const Reads reads = reads_of(row.quantity);
+  for (const Sample& s : samples) {
+    const std::string who = s.name.empty() ? "the sample" : s.name;
+    const auto it = s.densities.find(row.density);
+    if (it == s.densities.end()) {
+      out.push_back(who + " " + row.density);
+      continue;
+    }
+    for (const std::string& run : it->second.missing_runs) {
+      const bool reads_it = reads == Reads::Preparation
+                                ? run == "prepare"
+                                : run != "prepare" && (reads == Reads::TestAmongTests || row.test.empty() || run == row.test);
+      if (reads_it) out.push_back(who + " " + run);
+    }
+  }
+  return out;
+}
 
 std::vector<RowDecision> decide(const std::vector<Row>& rows, const std::map<std::string, ReadingResults>& readings,
                                 const std::vector<std::string>& order, const std::string& baseline,
@@ -45,7 +79,8 @@ std::vector<RowDecision> decide(const std::vector<Row>& rows, const std::map<std
   for (const Row& row : rows) {
     RowDecision d;
     d.row = row;
-    d.baseline = evaluate(row, base->second);
+    d.baseline_missing = missing_runs(row, base->second);
+    d.baseline = d.baseline_missing.empty() ? evaluate(row, base->second) : without_runs(row, base->second);
     if (const auto f = full.find(row.name); f != full.end()) d.full = f->second;
     const Verdict reference = d.full ? d.full->verdict : d.baseline.verdict;
     for (const std::string& name : order) {
@@ -53,7 +88,8 @@ std::vector<RowDecision> decide(const std::vector<Row>& rows, const std::map<std
       const auto it = readings.find(name);
       ReadingEffect e;
       e.reading = name;
-      e.result = it == readings.end() ? RowResult{} : evaluate(row, it->second);
+      if (it != readings.end()) e.missing = missing_runs(row, it->second);
+      e.result = it == readings.end() ? RowResult{} : e.missing.empty() ? evaluate(row, it->second) : without_runs(row, it->second);
       if (e.result.valued > 0 && d.baseline.valued > 1 && std::max(d.baseline.spread.sd, row.resolution) > 0)
         e.shift_sd = shift_in_sd(e.result.spread.mean - d.baseline.spread.mean, d.baseline.spread.sd, row.resolution);
       if (d.full && e.result.valued > 0 && d.baseline.valued > 0)
@@ -71,13 +107,33 @@ std::vector<RowDecision> decide(const std::vector<Row>& rows, const std::map<std
         (e.resolved ? d.made_consistent_by : d.unresolved_by).push_back(name);
       d.readings.push_back(std::move(e));
     }
+    d.judged = d.baseline_missing.empty() &&
+               std::any_of(d.readings.begin(), d.readings.end(), [](const ReadingEffect& e) { return e.result.valued > 0; });
     d.explanation = explain(d);
     out.push_back(std::move(d));
   }
   return out;
 }
 
+namespace {
+// The explanation of a row the study judged (explain() adds the readings that lack runs).
+std::string explain_judged(const RowDecision& d);
+}  // namespace
+
 std::string explain(const RowDecision& d) {
+  if (!d.baseline_missing.empty()) return "not judged: the baseline lacks runs this row reads (" + listed(d.baseline_missing) + ")";
+  // The readings not judged for runs they lack, said after the rest.
+  std::string lacking;
+  for (const ReadingEffect& e : d.readings)
+    if (!e.missing.empty()) lacking += (lacking.empty() ? "" : "; ") + e.reading + " lacks " + listed(e.missing);
+  if (!d.judged && !lacking.empty()) return "not judged: no reading has every run this row reads (" + lacking + ")";
+  const std::string not_judged = lacking.empty() ? "" : "; not judged under a reading that lacks runs this row reads (" + lacking + ")";
+  return explain_judged(d) + not_judged;
+}
+
+namespace {
+
+std::string explain_judged(const RowDecision& d) {
   const RowResult& base = d.full ? *d.full : d.baseline;
   const std::string where = d.full ? "the full-size ensemble" : "the baseline";
   if (base.verdict == Verdict::NotJudged) return "not judged: fewer than 2 samples with a value";
@@ -107,7 +163,7 @@ std::string explain(const RowDecision& d) {
                     "; on " + where + " it holds in " + std::to_string(base.holds) + " of " + std::to_string(base.valued);
     if (best)
       s += "; most: " + best->reading + " (" + std::to_string(judged(*best).holds) + " of " + std::to_string(judged(*best).valued) +
-           (best->shift_sd ? ", mean shifted " + sd_text(*best->shift_sd) + " sd" : std::string()) + ")";
+           (best->shift_sd ? ", mean shifted " + shift_phrase(*best->shift_sd) : std::string()) + ")";
     return s + unresolved;
   }
   // Unexplained: say which reading closes most of the gap between our interval and the paper.
@@ -118,10 +174,12 @@ std::string explain(const RowDecision& d) {
   std::string s = "unexplained: no reading makes it consistent; the interval of " + where + " misses the paper by " + fixed(base_gap, 3);
   if (best) {
     s += "; closest: " + best->reading + " (misses by " + fixed(gap(judged(*best)), 3);
-    if (best->shift_sd) s += ", mean shifted " + sd_text(*best->shift_sd) + " sd";
+    if (best->shift_sd) s += ", mean shifted " + shift_phrase(*best->shift_sd);
     s += ")";
   }
   return s + unresolved;
 }
+
+}  // namespace
 
 }  // namespace validation

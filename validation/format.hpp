@@ -79,15 +79,56 @@ inline double shift_in_sd(double delta, double sd, double resolution) {
   return unit > 0 ? delta / unit : std::nan("");
 }
 
+// `x` to `digits` significant digits, trailing zeros kept ("0.00016", "0.86", "1.0", "120").
+inline std::string significant(double x, int digits = 2) {
+  if (!std::isfinite(x)) return "—";
+  if (x == 0) return "0";
+  int e = static_cast<int>(std::floor(std::log10(std::abs(x))));
+  double unit = std::pow(10.0, e - digits + 1);
+  if (std::abs(std::round(x / unit)) >= std::pow(10.0, digits)) ++e, unit *= 10;  // 0.0996 -> 0.10
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", std::max(0, digits - 1 - e), std::round(x / unit) * unit);
+  std::string s = buf;
+  if (s.find_first_not_of("-0.") == std::string::npos && s[0] == '-') s.erase(0, 1);  // "-0.00" -> "0.00"
+  return s;
+}
+
+// The largest shift (in sd units) shown as it is; beyond it the tables and sentences say so and
+// write the value, and the tornado charts cut the bar there (reports/gnuplot/tornado.gp: clip()).
+constexpr double shift_clip = 10;
+
 // A shift in sd units as the tables print it: two decimals within ±10, else the value with a
 // marker that the chart clips it ("+1267 (beyond ±10)").
 inline std::string shift_text(double z) {
   if (!std::isfinite(z)) return "—";
   char buf[64];
-  if (std::abs(z) <= 10) std::snprintf(buf, sizeof buf, "%+.2f", z);
-  else std::snprintf(buf, sizeof buf, "%+.0f (beyond ±10)", z);
+  if (std::abs(z) <= shift_clip) std::snprintf(buf, sizeof buf, "%+.2f", z);
+  else std::snprintf(buf, sizeof buf, "%+.0f (beyond ±%.0f)", z, shift_clip);
   return buf;
 }
+
+// A shift in sd units as the sentences say it (the decisions study's explanations): two
+// significant digits with its sign and unit ("-3.7 sd", "+0.61 sd"), or beyond ±10 that said, with
+// the value to two significant digits ("beyond +10 sd (+57)").
+inline std::string shift_phrase(double z) {
+  if (!std::isfinite(z)) return "—";
+  if (z == 0) return "0 sd";
+  const std::string sign = z < 0 ? "-" : "+";
+  if (std::abs(z) <= shift_clip) return sign + significant(std::abs(z), 2) + " sd";
+  return "beyond " + sign + significant(shift_clip, 2) + " sd (" + sign + significant(std::abs(z), 2) + ")";
+}
+
+// Digits grouped by thousands: "8000" -> "8,000"; "" -> "?"; text that is not digits as it is.
+inline std::string thousands(const std::string& digits) {
+  if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos) return digits.empty() ? "?" : digits;
+  std::string out;
+  for (std::size_t i = 0; i < digits.size(); ++i) {
+    if (i && (digits.size() - i) % 3 == 0) out += ',';
+    out += digits[i];
+  }
+  return out;
+}
+inline std::string thousands(long n) { return n < 0 ? "-" + thousands(std::to_string(-n)) : thousands(std::to_string(n)); }
 
 // Letters and digits kept, anything else '_': "volumetric strain" -> "volumetric_strain".
 inline std::string file_safe(const std::string& s) {

@@ -1,6 +1,6 @@
 // validate: judges a study's results against a reference file (reference_data/paper.yaml, or a
 // user's own: validation/README.md), writes validation.json, validation.md and verdicts.md.
-//   validate --results DIR --references FILE --out DIR [--profile NAME] [--decisions decisions.json]
+//   validate --results DIR --references FILE --out DIR [--profile NAME] [--decisions decisions.json]...
 // DIR is a study's results folder, with the manifest the pipeline writes (DIR/runs.tsv): an
 // ensemble (DIR/seed<N>/, one folder per sample) or one sample. Each row names the runs it reads by
 // the study's names (variant, density, test; row_runs.hpp), and only those runs are read.
@@ -10,6 +10,9 @@
 // file that cannot be read or has a bad row (an unknown key or quantity, a selector naming what the
 // study does not have), a results folder that does not exist or has no runs.tsv, or an --out that
 // is not a folder.
+// --decisions may be given several times (the decisions study, the readings at the paper's size):
+// each row's cause is the finding of the largest size that judged it, said with that size
+// (decisions_file.hpp).
 // Every row is computed per sample; its verdict compares the reference's value, widened by the
 // row's tolerance, with the 95 % prediction interval of a single sample of the ensemble (rows.hpp).
 #include <cstdio>
@@ -18,11 +21,12 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
-#include <yaml-cpp/yaml.h>
 
 #include "io/atomic_file.hpp"
+#include "decisions_file.hpp"
 #include "format.hpp"
 #include "manifest.hpp"
 #include "row_runs.hpp"
@@ -38,7 +42,8 @@ using validation::number;
 using validation::Verdict;
 
 struct Options {
-  std::string results, references, out, profile = "paper", decisions;
+  std::string results, references, out, profile = "paper";
+  std::vector<std::string> decisions;  // decisions.json files, in the order given
 };
 
 // The options, or nothing (after a message) when they are wrong.
@@ -50,22 +55,29 @@ std::optional<Options> parse_options(int argc, char** argv) {
     else if (a == "--references") o.references = argv[i + 1];
     else if (a == "--out") o.out = argv[i + 1];
     else if (a == "--profile") o.profile = argv[i + 1];
-    else if (a == "--decisions") o.decisions = argv[i + 1];
+    else if (a == "--decisions") o.decisions.push_back(argv[i + 1]);
     else { std::fprintf(stderr, "validate: unknown option '%s'\n", a.c_str()); return std::nullopt; }
   }
   if (o.results.empty() || o.references.empty() || o.out.empty() || o.profile.empty()) {
-    std::fprintf(stderr, "usage: validate --results DIR --references FILE --out DIR [--profile NAME] [--decisions decisions.json]\n");
+    std::fprintf(stderr, "usage: validate --results DIR --references FILE --out DIR [--profile NAME] [--decisions decisions.json]...\n");
     return std::nullopt;
   }
   return o;
 }
 
-// The decisions study's explanation of each row (compare-runs decisions), if it has run.
-std::map<std::string, std::string> read_causes(const std::string& file) {
-  std::map<std::string, std::string> cause;
-  if (file.empty() || !fs::exists(file)) return cause;
-  for (const YAML::Node& row : YAML::LoadFile(file)["rows"]) cause[row["name"].as<std::string>()] = row["explanation"].as<std::string>();
-  return cause;
+// The decisions studies' findings (compare-runs decisions), of the files that are there (a study
+// not run yet has none).
+std::vector<validation::DecisionsFile> read_findings(const std::vector<std::string>& files, const std::vector<validation::Row>& rows) {
+  std::vector<validation::DecisionsFile> out;
+  for (const std::string& file : files) {
+    if (!fs::exists(file)) continue;
+    try {
+      out.push_back(validation::read_decisions_file(file, rows));
+    } catch (const std::exception& e) {
+      throw std::runtime_error(file + ": " + e.what());
+    }
+  }
+  return out;
 }
 
 // An error message about --results or --out, or "" when both can be used.
@@ -156,17 +168,17 @@ struct Counts {
 
 // verdicts.md: the counts, the rule, what is missing, and the rows not consistent with their causes.
 std::string verdicts_text(const std::vector<Judged>& judged, const Counts& c, std::size_t samples, std::size_t missing,
-                          std::size_t missing_samples, const std::string& label, const std::string& decisions_file,
-                          const std::map<std::string, std::string>& cause) {
+                          std::size_t missing_samples, const std::string& label, bool with_causes,
+                          const std::vector<validation::DecisionsFile>& findings) {
   // Each row not consistent, with the decisions study's cause when --decisions gave its findings.
   std::ostringstream misses;
   for (const Judged& j : judged) {
     if (j.result.verdict == Verdict::Consistent) continue;
     misses << "| " << cell(j.row.name) << " | " << mark(j.result.verdict) << " | " << statement(j.row) << " | " << interval(j.result)
            << " | " << j.result.holds << " of " << j.result.valued << " |";
-    if (!decisions_file.empty()) {
-      const auto it = cause.find(j.row.name);
-      misses << " " << cell(it != cause.end() ? it->second : "the decisions study has not judged this row") << " |";
+    if (with_causes) {
+      const std::string text = validation::cause_text(findings, j.row.name);  // the largest size's, named when several
+      misses << " " << cell(text) << " |";
     }
     misses << "\n";
   }
@@ -182,7 +194,13 @@ std::string verdicts_text(const std::vector<Judged>& judged, const Counts& c, st
     out << "\n**Incomplete:** " << missing << " result file(s) missing or not complete"
         << (missing_samples ? ", and " + std::to_string(missing_samples) + " sample(s) that `runs.tsv` lists have no folder" : std::string())
         << "; the rows are judged on what is there.\n";
-  if (!misses.str().empty() && !decisions_file.empty())
+  if (!misses.str().empty() && with_causes && findings.size() > 1)
+    out << "\nThe rows that are not consistent, and what the decisions studies found for each (each its own ensemble: "
+           "`make decisions`, `make readings-report`): the finding of the largest size that judged the row, that size first "
+           "(from the file's own record; \"size not recorded\": a file written before it recorded its size):\n\n| row | verdict | "
+        << label << " | interval of one sample | holds in | cause |\n|---|---|---|---|---|---|\n"
+        << misses.str();
+  else if (!misses.str().empty() && with_causes)
     out << "\nThe rows that are not consistent, and what the decisions study found for each (its own ensemble, "
            "`make decisions`):\n\n| row | verdict | " << label << " | interval of one sample | holds in | cause |\n|---|---|---|---|---|---|\n"
         << misses.str();
@@ -199,7 +217,7 @@ int main(int argc, char** argv) {
   if (!opt) return 2;
   const Options& o = *opt;
   validation::References refs;
-  std::map<std::string, std::string> cause;
+  std::vector<validation::DecisionsFile> findings;
   std::vector<validation::ManifestLine> manifest;
   std::vector<Judged> judged;
   try {
@@ -209,9 +227,9 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    cause = read_causes(o.decisions);
+    findings = read_findings(o.decisions, refs.rows);
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "error: %s: %s\n", o.decisions.c_str(), e.what());
+    std::fprintf(stderr, "error: --decisions %s\n", e.what());
     return 2;
   }
   if (const std::string bad = check_folders(o); !bad.empty()) {
@@ -278,7 +296,7 @@ int main(int argc, char** argv) {
   try {
     dem::write_file_atomically((fs::path(o.out) / "verdicts.md").string(),
                                verdicts_text(judged, count, results.samples().size(), missing.size(), missing_samples.size(),
-                                             refs.label, o.decisions, cause));
+                                             refs.label, !o.decisions.empty(), findings));
     dem::write_file_atomically((fs::path(o.out) / "validation.json").string(), json.dump(2) + "\n");
     dem::write_file_atomically((fs::path(o.out) / "validation.md").string(), md.str());
   } catch (const std::exception& e) {

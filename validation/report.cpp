@@ -126,15 +126,6 @@ std::string fill(const std::string& t, const Values& values) {
   return out;
 }
 
-std::string significant(double x, int digits) {
-  if (!std::isfinite(x)) return "—";
-  if (x == 0) return "0";
-  int e = static_cast<int>(std::floor(std::log10(std::abs(x))));
-  double unit = std::pow(10.0, e - digits + 1);
-  if (std::abs(std::round(x / unit)) >= std::pow(10.0, digits)) ++e, unit *= 10;  // 0.0996 -> 0.10
-  return fixed_text(std::round(x / unit) * unit, std::max(0, digits - 1 - e));
-}
-
 std::string range_text(double lo, double hi) {
   const double m = std::max(std::abs(lo), std::abs(hi));
   if (!(m > 0) || !std::isfinite(m)) return range_fixed(lo, hi, 0);

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "figures.hpp"
+#include "format.hpp"
 #include "results.hpp"
 #include "rows.hpp"
 
@@ -24,9 +25,7 @@ using Values = std::map<std::string, std::string>;
 // std::runtime_error naming it (a typo in a template is an error, not an empty gap).
 std::string fill(const std::string& tmpl, const Values& values);
 
-// Numbers as the report writes them.
-// `x` to `digits` significant digits, trailing zeros kept ("0.00016", "0.86", "1.0", "120").
-std::string significant(double x, int digits = 2);
+// Numbers as the report writes them (and significant(), format.hpp).
 // "lo–hi" to two significant digits of the larger magnitude, or one value if they print alike.
 std::string range_text(double lo, double hi);
 

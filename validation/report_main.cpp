@@ -27,6 +27,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "decisions_file.hpp"
 #include "format.hpp"
 #include "io/atomic_file.hpp"
 #include "io/hdf5.hpp"
@@ -57,17 +58,6 @@ std::string read_text(const fs::path& p) {
 std::string shown(const std::string& p) {
   const fs::path rel = fs::absolute(p).lexically_normal().lexically_relative(fs::current_path());
   return rel.empty() || rel.string().rfind("..", 0) == 0 ? fs::absolute(p).lexically_normal().string() : rel.string();
-}
-
-// 8000 -> "8,000".
-std::string thousands(const std::string& digits) {
-  if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos) return digits.empty() ? "?" : digits;
-  std::string out;
-  for (std::size_t i = 0; i < digits.size(); ++i) {
-    if (i && (digits.size() - i) % 3 == 0) out += ',';
-    out += digits[i];
-  }
-  return out;
 }
 
 // A number from a settings value scaled: "100000" / 1e3 -> "100".
@@ -212,7 +202,7 @@ int main(int argc, char** argv) {
     v["setting.stress_rate_MPa_per_s"] = scaled(settings, "stress_rate_Pa_per_s", 1e6);
     v["setting.time_step_prepare_us"] = scaled(settings, "time_step_prepare_s", 1e-6);
     v["setting.time_step_test_us"] = scaled(settings, "time_step_test_s", 1e-6);
-    v["setting.particles_text"] = thousands(settings.count("particles") ? settings.at("particles") : "");
+    v["setting.particles_text"] = validation::thousands(settings.count("particles") ? settings.at("particles") : "");
     {
       static const std::regex visits(R"((TC1, A, [A-Z0-9]+, A, [A-Z0-9]+))");
       std::smatch m;
@@ -239,22 +229,52 @@ int main(int argc, char** argv) {
     v["file.critical_state"] = fs::exists(report / "critical_state" / "table.md") ? section_table(report, "critical_state") : "";
     v["file.liquefaction"] = fs::exists(report / "liquefaction" / "table.md") ? section_table(report, "liquefaction") : "";
     v["convergence_plot"] = fs::exists(report / "convergence" / "error_vs_time.png") ? "yes" : "";
-    if (!opt["--decisions"].empty()) {
-      v["decisions.samples"] = std::to_string(seeds_in(opt["--decisions"], "baseline"));
+    // The size each decisions table was measured at: its decisions.json's own record, else (the
+    // decisions study) what its results say; never assumed.
+    const auto recorded_size = [&](const fs::path& json) -> std::string {
+      try {
+        if (fs::exists(json, ec)) {
+          const validation::DecisionsFile f = validation::read_decisions_file(json.string(), in.paper);
+          if (f.particles) return validation::size_label(f);
+        }
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "report: %s: %s\n", json.c_str(), e.what());
+      }
+      return "";
+    };
+    v["decisions.size"] = recorded_size(report / "decisions" / "decisions.json");
+    if (v["decisions.size"].empty() && !opt["--decisions"].empty()) {
+      const std::size_t n = seeds_in(opt["--decisions"], "baseline");
       const auto ds = validation::run_settings(opt["--decisions"], "baseline_");
-      v["decisions.particles"] = thousands(ds.count("particles") ? ds.at("particles") : "");
-    } else {
-      v["decisions.samples"] = "?", v["decisions.particles"] = "?";
+      if (n > 0 && ds.count("particles"))
+        v["decisions.size"] = validation::thousands(ds.at("particles")) + " spheres, " + std::to_string(n) + " sample" + (n == 1 ? "" : "s");
+    }
+    if (v["decisions.size"].empty()) v["decisions.size"] = "size not recorded";
+    // The readings measured again at the paper's size (make readings-report): reports/readings/<name>/.
+    {
+      std::vector<std::string> names;
+      for (const auto& e : fs::directory_iterator(report / "readings", ec))
+        if (fs::exists(e.path() / "table.md", ec)) names.push_back(e.path().filename().string());
+      std::sort(names.begin(), names.end());
+      std::string readings;
+      for (const std::string& name : names) {
+        const std::string size = recorded_size(report / "readings" / name / "decisions.json");
+        // Its groups one level down, under this heading.
+        readings += "### Readings of the " + std::regex_replace(name, std::regex("_"), " and ") + " sample" +
+                    (name.find('_') != std::string::npos ? "s" : "") + " (" + (size.empty() ? "size not recorded" : size) + ")\n\n" +
+                    std::regex_replace(section_table(report, "readings/" + name), std::regex("(^|\n)### "), "$1#### ") + "\n";
+      }
+      v["file.readings"] = readings;
     }
     {
       const auto cs = opt["--convergence"].empty() ? std::map<std::string, std::string>{}
                                                    : validation::run_settings(opt["--convergence"], "reference_");
-      v["convergence.particles"] = thousands(cs.count("particles") ? cs.at("particles") : "");
+      v["convergence.particles"] = validation::thousands(cs.count("particles") ? cs.at("particles") : "");
       v["convergence.time_step_us"] = scaled(cs, "time_step_test_s", 1e-6);
       v["convergence.stress_rate_MPa_per_s"] = scaled(cs, "stress_rate_Pa_per_s", 1e6);
       const auto ss = opt["--stability"].empty() ? std::map<std::string, std::string>{}
                                                  : validation::run_settings(opt["--stability"], "", "base");
-      v["stability.particles"] = thousands(ss.count("particles") ? ss.at("particles") : "");
+      v["stability.particles"] = validation::thousands(ss.count("particles") ? ss.at("particles") : "");
       v["stability.target_pressure_kPa"] = ss.count("target_pressure_kPa") ? ss.at("target_pressure_kPa") : "?";
       v["stability.max_energy_error_percent"] = scaled(ss, "max_energy_error", 0.01);
       v["stability.max_time_step_fraction"] = ss.count("max_time_step_fraction") ? ss.at("max_time_step_fraction") : "?";

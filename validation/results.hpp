@@ -24,6 +24,10 @@ struct DensityResults {
   bool prepared = false;
   std::map<std::string, double> sample;  // last time-series row of the preparation
   std::vector<TestResult> tests;
+  // The runs the study lists for this density whose results are missing or not complete
+  // ("prepare", "test1", ...), where the reader records them (compare-runs decisions): a row that
+  // reads one of them has no value for this sample (decisions.hpp).
+  std::vector<std::string> missing_runs;
 };
 
 // One group (timeseries or legs) of a result file, complete or not (.partial results of stopped

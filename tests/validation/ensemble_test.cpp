@@ -162,7 +162,7 @@ TEST_CASE("decisions: shifts in baseline standard deviations and the reading tha
   CHECK(d[0].baseline.verdict == Verdict::Inconsistent);
   CHECK(d[0].made_consistent_by == std::vector<std::string>{"baseline", "looser"});
   // t = 0.06 / sqrt(2 x 0.01^2 / 3) = 7.35 and 0.08 / 0.008165 = 9.80, both above t(0.95, 4) = 2.13.
-  CHECK(d[0].explanation == "consistent under baseline (6.00 sd, t = 7.35), looser (8.00 sd, t = 9.80)");
+  CHECK(d[0].explanation == "consistent under baseline (+6.0 sd, t = 7.35), looser (+8.0 sd, t = 9.80)");
   // A paper value no reading reaches: unexplained, naming the reading that comes closest.
   row.reference = 0.90;
   d = validation::decide({row}, readings, {"denser", "baseline", "looser"}, "denser");
@@ -198,7 +198,7 @@ TEST_CASE("decisions: shifts in baseline standard deviations and the reading tha
   CHECK(d[0].readings[0].full->spread.mean == Approx(0.711));
   CHECK(d[0].readings[1].full->verdict == Verdict::Consistent);
   CHECK(d[0].made_consistent_by == std::vector<std::string>{"loosest"});
-  CHECK(d[0].explanation.find("consistent under loosest (4.00 sd, t = 4.90)") == 0);
+  CHECK(d[0].explanation.find("consistent under loosest (+4.0 sd, t = 4.90)") == 0);
 }
 
 TEST_CASE("a trend judged by the majority rule: it must hold in more than half of the samples", "[ensemble]") {

@@ -23,6 +23,7 @@
 #include "io/atomic_file.hpp"
 #include "markdown_table.hpp"
 #include "results.hpp"
+#include "settings.hpp"
 
 namespace fs = std::filesystem;
 
@@ -43,28 +44,51 @@ std::string mean_sd(const RowResult& r) {
 
 bool finite_shift(const validation::ReadingEffect& e) { return e.shift_sd && std::isfinite(*e.shift_sd); }
 
-// Every reading's results, by reading, read from the manifest: reading -> its samples (one per seed).
-std::map<std::string, validation::ReadingResults> read_readings(const Manifest& manifest, std::vector<std::string>& missing) {
+// Every reading's results, by reading, read from the manifest (`dir`: the folder it is in; the
+// results are found under it wherever the study ran): reading -> its samples (one per seed). A run
+// whose result is missing or not complete is listed in `missing` and in its density's missing_runs.
+std::map<std::string, validation::ReadingResults> read_readings(const std::vector<ManifestLine>& lines, const std::string& dir,
+                                                                std::vector<std::string>& missing) {
   // reading -> seed -> density -> (preparation, test number -> result)
   struct Files {
     std::string preparation;
     std::map<int, std::string> tests;
   };
   std::map<std::string, std::map<std::string, std::map<std::string, Files>>> files;
-  for (const ManifestLine& l : manifest.lines) {
+  for (const ManifestLine& l : lines) {
     Files& f = files[l.variant][l.seed][l.density];
-    if (l.test == "-") f.preparation = l.result;
-    else if (l.test.rfind("test", 0) == 0) f.tests[std::atoi(l.test.c_str() + 4)] = l.result;
+    if (l.test == "-") f.preparation = validation::result_under(dir, l);
+    else if (l.test.rfind("test", 0) == 0) f.tests[std::atoi(l.test.c_str() + 4)] = validation::result_under(dir, l);
   }
   std::map<std::string, validation::ReadingResults> readings;
   for (const auto& [reading, seeds] : files)
     for (const auto& [seed, densities] : seeds) {
       std::map<std::string, validation::DensityResults> of_seed;
-      for (const auto& [density, f] : densities) of_seed[density] = validation::load_density(f.preparation, f.tests, missing);
-      readings[reading].push_back({"seed" + seed, "", std::move(of_seed)});
+      for (const auto& [density, f] : densities) {
+        const std::size_t before = missing.size();
+        validation::DensityResults r = validation::load_density(f.preparation, f.tests, missing);
+        for (std::size_t k = before; k < missing.size(); ++k) {
+          if (missing[k] == f.preparation) r.missing_runs.push_back("prepare");
+          for (const auto& [n, file] : f.tests)
+            if (missing[k] == file) r.missing_runs.push_back("test" + std::to_string(n));
+        }
+        of_seed[density] = std::move(r);
+      }
+      readings[reading].push_back({seed == "-" ? "" : "seed" + seed, "", std::move(of_seed)});
     }
   return readings;
 }
+
+// The number of spheres of the first prepared sample of `samples` (0 if none says).
+long particles_of(const validation::ReadingResults& samples) {
+  for (const validation::Sample& s : samples)
+    for (const auto& [density, r] : s.densities)
+      if (r.prepared && r.sample.count("particles")) return std::lround(r.sample.at("particles"));
+  return 0;
+}
+
+// A reading's cell when one of its samples lacks a run the row reads (it is not judged on the row).
+const char* lacks_runs = "runs missing";
 
 // One group's section of table.md (its tornado chart and table), and its tornado_<group>.dat and
 // the values tornado.gp needs of it.
@@ -114,8 +138,9 @@ std::string group_section(const std::string& g, const std::vector<RowDecision>& 
     const RowDecision& d = **it;
     std::vector<std::string> cells = {d.row.name, mean_sd(d.baseline) + " " + verdict_mark(d.full ? d.full->verdict : d.baseline.verdict)};
     for (const auto& e : d.readings)
-      cells.push_back((finite_shift(e) ? validation::shift_text(*e.shift_sd) : "—") + " " +
-                      verdict_mark(d.full ? (e.full ? e.full->verdict : Verdict::NotJudged) : e.result.verdict));
+      cells.push_back(!e.missing.empty() ? std::string(lacks_runs) + " —"
+                                         : (finite_shift(e) ? validation::shift_text(*e.shift_sd) : "—") + " " +
+                                               verdict_mark(d.full ? (e.full ? e.full->verdict : Verdict::NotJudged) : e.result.verdict));
     cells.push_back(d.explanation);
     table.row(cells);
   }
@@ -147,30 +172,47 @@ nlohmann::ordered_json six_digits(double x) {
   return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
 }
 
-nlohmann::ordered_json decisions_json(const std::string& baseline, const std::vector<RowDecision>& decided, std::size_t missing) {
+// What the study was measured at, for the readers of decisions.json (validate --decisions).
+struct Size {
+  long particles = 0;      // spheres per sample (0: unknown)
+  std::size_t samples = 0;  // the baseline's samples
+};
+
+nlohmann::ordered_json decisions_json(const std::string& baseline, const std::string& baseline_results, const Size& size,
+                                      const std::vector<RowDecision>& decided, std::size_t missing) {
   using json = nlohmann::ordered_json;
   json rows = json::array();
   for (const RowDecision& d : decided) {
     json readings = json::object();
-    for (const auto& e : d.readings)
+    for (const auto& e : d.readings) {
       readings[e.reading] = {{"mean", e.result.valued ? six_digits(e.result.spread.mean) : json(nullptr)},
                              {"shift_sd", finite_shift(e) ? six_digits(*e.shift_sd) : json(nullptr)},
                              {"verdict", validation::to_string(e.result.verdict)}};
+      if (!e.missing.empty()) readings[e.reading]["missing_runs"] = e.missing;
+    }
     rows.push_back({{"name", d.row.name},
                     {"group", d.row.group},
                     {"baseline_mean", d.baseline.valued ? six_digits(d.baseline.spread.mean) : json(nullptr)},
                     {"baseline_sd", d.baseline.valued > 1 ? six_digits(d.baseline.spread.sd) : json(nullptr)},
                     {"baseline_verdict", validation::to_string(d.baseline.verdict)},
                     {"readings", readings},
+                    {"judged", d.judged},
                     {"explanation", d.explanation}});
   }
-  return {{"baseline", baseline}, {"rows", rows}, {"missing_results", missing}};
+  json out = {{"schema", 2}, {"baseline", baseline}};
+  if (!baseline_results.empty()) out["baseline_results"] = baseline_results;
+  out["particles"] = size.particles > 0 ? json(size.particles) : json(nullptr);
+  out["samples"] = size.samples;
+  out["shift_unit"] = "max(baseline sd, the row's resolution)";
+  out["rows"] = rows;
+  out["missing_results"] = missing;
+  return out;
 }
 
 }  // namespace
 
-int decisions(const Manifest& manifest, const std::string& out, const std::string& references, const std::string& baseline,
-              const std::string& ensemble) {
+int decisions(const Manifest& manifest, const std::string& results, const std::string& out, const std::string& references,
+              const std::string& baseline, const std::string& ensemble, const std::string& baseline_results) {
   std::vector<validation::Row> rows;
   try {
     rows = validation::load_references(references, "paper");
@@ -179,9 +221,49 @@ int decisions(const Manifest& manifest, const std::string& out, const std::strin
     return 2;
   }
   std::vector<std::string> missing;
-  const std::map<std::string, validation::ReadingResults> readings = read_readings(manifest, missing);
+  std::map<std::string, validation::ReadingResults> readings = read_readings(manifest.lines, results, missing);
+  std::vector<std::string> order = manifest.variants;  // the readings, the baseline among them
+  // The baseline from another study's results (a study of readings only): its samples of the
+  // seeds this study has, so that every reading is compared with the same samples.
+  if (!baseline_results.empty()) {
+    if (readings.count(baseline)) {
+      std::fprintf(stderr, "error: %s has a reading named '%s' of its own; --baseline-results gives the baseline from another "
+                           "study (name this study's baseline with --reference, or leave --baseline-results out)\n",
+                   results.c_str(), baseline.c_str());
+      return 2;
+    }
+    std::vector<ManifestLine> lines;
+    try {
+      lines = validation::read_manifest(baseline_results);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "error: --baseline-results: %s\n", e.what());
+      return 2;
+    }
+    const std::vector<std::string> seeds = validation::samples_of(manifest.lines);
+    std::vector<ManifestLine> of_seeds;
+    for (const ManifestLine& l : lines)
+      if ((l.variant == "-" || l.variant == baseline) && std::find(seeds.begin(), seeds.end(), validation::sample_of(l)) != seeds.end())
+        of_seeds.push_back(l);
+    for (const std::string& seed : seeds)
+      if (std::none_of(of_seeds.begin(), of_seeds.end(), [&](const ManifestLine& l) { return validation::sample_of(l) == seed; })) {
+        std::fprintf(stderr, "error: --baseline-results %s has no runs of sample '%s' (this study's samples must be among its own)\n",
+                     baseline_results.c_str(), seed.c_str());
+        return 1;
+      }
+    for (auto& [name, samples] : read_readings(of_seeds, baseline_results, missing)) readings[baseline] = std::move(samples);
+    order.insert(order.begin(), baseline);
+  }
+  // The rows of the densities this study's readings run (a study of one density judges its rows only).
+  std::vector<std::string> densities;
+  for (const ManifestLine& l : manifest.lines)
+    if (l.variant != baseline && std::find(densities.begin(), densities.end(), l.density) == densities.end()) densities.push_back(l.density);
+  const std::size_t all_rows = rows.size();
+  rows.erase(std::remove_if(rows.begin(), rows.end(),
+                            [&](const validation::Row& r) { return std::find(densities.begin(), densities.end(), r.density) == densities.end(); }),
+             rows.end());
   std::map<std::string, std::string> settings;  // reading -> its settings
   for (const ManifestLine& l : manifest.lines) settings[l.variant] = l.settings;
+  if (!baseline_results.empty()) settings[baseline] = "as written (" + relative_paths(baseline_results, baseline_results) + ")";
   // The paper study's ensemble (full size), if given: the verdicts and causes are judged on it.
   std::vector<validation::Sample> full_samples;
   std::map<std::string, RowResult> full;
@@ -192,26 +274,39 @@ int decisions(const Manifest& manifest, const std::string& out, const std::strin
   }
   std::vector<RowDecision> decided;
   try {
-    decided = validation::decide(rows, readings, manifest.variants, baseline, full);
+    decided = validation::decide(rows, readings, order, baseline, full);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "compare-runs: %s\n", e.what());
     return 1;
   }
+  Size size;
+  size.particles = particles_of(readings.at(baseline));
+  size.samples = readings.at(baseline).size();
   std::vector<std::string> others;
-  for (const std::string& r : manifest.variants)
+  for (const std::string& r : order)
     if (r != baseline) others.push_back(r);
   std::vector<std::string> groups;
   for (const validation::Row& r : rows)
     if (std::find(groups.begin(), groups.end(), r.group) == groups.end()) groups.push_back(r.group);
 
   validation::MarkdownTable reading_table({"reading", "settings"});
-  for (const std::string& r : manifest.variants) reading_table.row({r, settings[r]});
-  std::string md = "Readings (each one change from the baseline, `pipeline/studies/decisions.yaml`):\n\n" + reading_table.text() +
-                   "\nEach cell: the shift of the ensemble mean from the baseline's, in baseline standard deviations, and the verdict "
-                   "under that reading (✅ consistent, ❌ inconsistent, — not judged)" +
+  for (const std::string& r : order) reading_table.row({r, settings[r]});
+  const std::string measured = (size.particles > 0 ? validation::thousands(size.particles) + " spheres" : std::string("spheres not recorded")) +
+                               ", " + std::to_string(size.samples) + " sample" + (size.samples == 1 ? "" : "s");
+  std::string md = "Measured at " + measured + " per reading. Readings (each one change from the baseline" +
+                   (baseline_results.empty() ? std::string(")")
+                                             : "; the baseline is the samples of the same seeds in `" + relative_paths(baseline_results, baseline_results) +
+                                                   "`, the same scenes and engine)") +
+                   ":\n\n" + reading_table.text() +
+                   "\nEach cell: the shift of the ensemble mean from the baseline's, in units of max(baseline sd, the row's resolution), "
+                   "and the verdict under that reading (✅ consistent, ❌ inconsistent, — not judged; \"" + lacks_runs +
+                   "\": a sample lacks a run the row reads, so the reading is not judged on it)" +
                    (full.empty() ? std::string(".\n")
                                  : std::string(" of the paper study's full-size ensemble with that shift of the mean applied to each of its "
                                                "samples; the baseline column gives this study's mean ± sd and the full-size ensemble's verdict.\n"));
+  if (rows.size() < all_rows)
+    md += "\nOnly the rows of the densities this study runs (" + validation::joined(densities, ", ") + "): " + std::to_string(rows.size()) +
+          " of " + std::to_string(all_rows) + ".\n";
   validation::GnuplotValues gp_values;  // tornado_values.gp, read by reports/gnuplot/tornado.gp
   gp_values.texts("tornado_reading", others);
   std::string group_names;
@@ -227,14 +322,18 @@ int decisions(const Manifest& manifest, const std::string& out, const std::strin
   if (!ensemble.empty()) md += size_check(decided, full_samples.size());
   try {
     dem::write_file_atomically((fs::path(out) / "table.md").string(), md);
-    dem::write_file_atomically((fs::path(out) / "decisions.json").string(),
-                               decisions_json(baseline, decided, missing.size()).dump(2) + "\n");
+    dem::write_file_atomically(
+        (fs::path(out) / "decisions.json").string(),
+        decisions_json(baseline, baseline_results.empty() ? "" : relative_paths(baseline_results, baseline_results), size, decided, missing.size()).dump(2) +
+            "\n");
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 1;
   }
-  std::printf("decisions: %zu readings, %zu rows, %zu result files missing -> %s\n", manifest.variants.size(), rows.size(), missing.size(),
-              (fs::path(out) / "table.md").c_str());
+  std::size_t not_judged = 0;
+  for (const RowDecision& d : decided) not_judged += !d.judged;
+  std::printf("decisions: %zu readings, %zu rows (%zu not judged), %s, %zu result files missing -> %s\n", others.size(), rows.size(),
+              not_judged, measured.c_str(), missing.size(), (fs::path(out) / "table.md").c_str());
   return 0;
 }
 

@@ -2,6 +2,7 @@
 //   compare-runs convergence RESULTS_DIR OUT_DIR [--reference NAME]
 //   compare-runs stability RESULTS_DIR OUT_DIR [--report-only]
 //   compare-runs decisions RESULTS_DIR OUT_DIR [--reference NAME] [--references FILE] [--ensemble PAPER_RESULTS]
+//                          [--baseline-results DIR]
 //   compare-runs critical-state RESULTS_DIR OUT_DIR
 //   compare-runs liquefaction OUT_DIR RESULTS_DIR...
 // Each mode is a file of compare_runs/ (what it writes: modes.hpp); this one parses the arguments
@@ -42,7 +43,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   Folders convergence_f, stability_f, decisions_f, critical_f;
-  std::string reference = "reference", baseline = "baseline", references = "reference_data/paper.yaml", ensemble;
+  std::string reference = "reference", baseline = "baseline", references = "reference_data/paper.yaml", ensemble, baseline_results;
   bool report_only = false;
   CLI::App* convergence = study_mode(app, "convergence",
                                      "errors of every variant against the reference, with its wall time: errors.dat, front.dat, table.md",
@@ -59,6 +60,9 @@ int main(int argc, char** argv) {
   decisions->add_option("--reference", baseline, "the baseline reading")->capture_default_str();
   decisions->add_option("--references", references, "the validation rows (the paper's values)")->capture_default_str();
   decisions->add_option("--ensemble", ensemble, "the paper study's results: verdicts and causes are judged on its full-size ensemble");
+  decisions->add_option("--baseline-results", baseline_results,
+                        "for a study of readings only (no baseline of its own): the study whose samples of the same seeds are the "
+                        "baseline (e.g. results/study/paper)");
 
   CLI::App* critical = study_mode(app, "critical-state",
                                   "peak and critical state of each constant-p shear, the peaks in the pi-plane: table.md, "
@@ -101,7 +105,7 @@ int main(int argc, char** argv) {
     std::filesystem::create_directories(f.out);
     if (*convergence) return compare_runs::convergence(manifest, f.results, f.out, reference);
     if (*stability) return compare_runs::stability(manifest, f.results, f.out, report_only);
-    if (*decisions) return compare_runs::decisions(manifest, f.out, references, baseline, ensemble);
+    if (*decisions) return compare_runs::decisions(manifest, f.results, f.out, references, baseline, ensemble, baseline_results);
     if (*critical) return compare_runs::critical_state(manifest, f.results, f.out);
     return 2;  // not reached: parse() requires one sub-command
   } catch (const std::exception& e) {  // a result that cannot be read, a folder that cannot be made

@@ -18,10 +18,15 @@ int convergence(const Manifest& manifest, const std::string& results, const std:
 int stability(const Manifest& manifest, const std::string& results, const std::string& out, bool report_only);
 
 // Every validation row of `references` on every reading's ensemble against the baseline reading's:
-// OUT/table.md, decisions.json, tornado_<group>.dat and tornado_values.gp. `ensemble` (optional):
-// the paper study's results, on which the verdicts and causes are judged.
-int decisions(const Manifest& manifest, const std::string& out, const std::string& references, const std::string& baseline,
-              const std::string& ensemble);
+// OUT/table.md, decisions.json, tornado_<group>.dat and tornado_values.gp. `results`: the folder
+// of `manifest`. `ensemble` (optional): the paper study's results, on which the verdicts and
+// causes are judged. `baseline_results` (optional): a study of readings only (no baseline of its
+// own, e.g. pipeline/studies/readings_loose.yaml) takes its baseline from that study's results,
+// the samples of the seeds it has itself. Only the rows of the densities the readings run are
+// judged; a reading lacking a run a row reads is not judged on it. decisions.json records the size
+// (`particles`, from the baseline's preparations, and `samples`).
+int decisions(const Manifest& manifest, const std::string& results, const std::string& out, const std::string& references,
+              const std::string& baseline, const std::string& ensemble, const std::string& baseline_results = "");
 
 // Peak and critical state of each constant-p shear and the peaks in the pi-plane: OUT/table.md,
 // critical_state.dat, pi_plane.dat and values.gp.

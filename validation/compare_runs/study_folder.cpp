@@ -56,7 +56,7 @@ RunFile read_run(const std::string& result) {
 std::string relative_paths(std::string s, const std::string& results) {
   std::vector<std::string> roots = {fs::current_path().string() + "/"};
   std::error_code ec;  // the real folder: a results/ that is a link to another checkout's names that one
-  const std::string abs = fs::weakly_canonical(fs::absolute(results), ec).string();
+  const std::string abs = results.empty() ? "" : fs::weakly_canonical(fs::absolute(results, ec), ec).string();
   if (const auto at = abs.rfind("/results/"); !results.empty() && at != std::string::npos) roots.push_back(abs.substr(0, at + 1));
   for (const std::string& root : roots)
     for (std::size_t at; (at = s.find(root)) != std::string::npos;) s.erase(at, root.size());

@@ -1,0 +1,115 @@
+// What validate reads back of the decisions studies (decisions_file.hpp): the cause of a row is the
+// finding of the largest size that judged it, named from the file's own record; a file written
+// before shifts had a floor has its shifts restated from its own numbers.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "decisions_file.hpp"
+#include "format.hpp"
+
+namespace fs = std::filesystem;
+using validation::DecisionsFile;
+
+namespace {
+
+std::string write_json(const fs::path& file, const nlohmann::json& j) {
+  fs::create_directories(file.parent_path());
+  std::ofstream(file) << j.dump(2);
+  return file.string();
+}
+
+validation::Row row_named(const std::string& name, double resolution) {
+  validation::Row r;
+  r.name = name;
+  r.resolution = resolution;
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("shift phrases: two significant digits, beyond ±10 said with the value", "[decisions][format]") {
+  CHECK(validation::shift_phrase(-3.714) == "-3.7 sd");
+  CHECK(validation::shift_phrase(0.6) == "+0.60 sd");
+  CHECK(validation::shift_phrase(10.0) == "+10 sd");  // the clip itself is still shown as it is
+  CHECK(validation::shift_phrase(28.4) == "beyond +10 sd (+28)");
+  CHECK(validation::shift_phrase(-1266.68) == "beyond -10 sd (-1300)");
+  CHECK(validation::shift_phrase(0) == "0 sd");
+  CHECK(validation::thousands(8000L) == "8,000");
+  CHECK(validation::thousands(1000000L) == "1,000,000");
+}
+
+TEST_CASE("validate --decisions: a row's cause is the largest size that judged it, that size named", "[decisions][validate]") {
+  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "decisions_file";
+  fs::remove_all(dir);
+  // The 1,000-sphere file as committed: no schema, no size, no `judged`.
+  const std::string small = write_json(
+      dir / "small.json",
+      {{"baseline", "baseline"},
+       {"rows",
+        {{{"name", "A"}, {"explanation", "consistent under r (1.50 sd, t = 2.52)"}},
+         {{"name", "B"}, {"explanation", "unexplained: no reading makes it consistent"}},
+         {{"name", "C"}, {"explanation", "not judged: fewer than 2 samples with a value"}}}}});
+  // A readings file at 8,000 spheres: it judged A, not B (a run missing), and has no C.
+  const std::string big = write_json(
+      dir / "big.json",
+      {{"schema", 2},
+       {"baseline", "baseline"},
+       {"particles", 8000},
+       {"samples", 3},
+       {"rows",
+        {{{"name", "A"}, {"judged", true}, {"explanation", "consistent under r (-2.0 sd, t = 4.10)"}},
+         {{"name", "B"}, {"judged", false}, {"explanation", "not judged: no reading has every run this row reads (r lacks seed3 test1)"}}}}});
+  const std::vector<validation::Row> rows = {row_named("A", 0), row_named("B", 0), row_named("C", 0)};
+  const DecisionsFile s = validation::read_decisions_file(small, rows), b = validation::read_decisions_file(big, rows);
+  CHECK(validation::size_label(s) == "size not recorded");
+  CHECK(validation::size_label(b) == "8,000 spheres, 3 samples");
+  CHECK(s.rows.at("A").judged);
+  CHECK_FALSE(s.rows.at("C").judged);  // an old file: "not judged" at the start of its explanation
+
+  for (const std::vector<DecisionsFile>& files : {std::vector<DecisionsFile>{s, b}, std::vector<DecisionsFile>{b, s}}) {
+    // A: both judged it; 8,000 spheres is the larger size, whichever file is given first.
+    const DecisionsFile* f = validation::finding_for(files, "A");
+    REQUIRE(f);
+    CHECK(f->particles == 8000L);
+    CHECK(validation::cause_text(files, "A") == "8,000 spheres, 3 samples: consistent under r (-2.0 sd, t = 4.10)");
+    // B: only the 1,000-sphere file judged it.
+    CHECK(validation::cause_text(files, "B") == "size not recorded: unexplained: no reading makes it consistent");
+    // C: no file judged it; the one that has it says why.
+    CHECK(validation::cause_text(files, "C") == "size not recorded: not judged: fewer than 2 samples with a value");
+    CHECK(validation::cause_text(files, "D") == "no decisions study has judged this row");
+  }
+  // One file: its finding as before (no size), its shift restated (resolution 0 here: the sd is the unit, the
+  // file has no numbers, so the value is rephrased only).
+  CHECK(validation::cause_text({s}, "A") == "consistent under r (+1.5 sd, t = 2.52)");
+  CHECK(validation::cause_text({}, "A") == "the decisions study has not judged this row");
+}
+
+TEST_CASE("an explanation written before the floor: its shifts restated from its own numbers", "[decisions][validate]") {
+  // The committed 1,000-sphere file's "medium: εv grows" row: baseline 0.000447401 ± 0.0002257 %, the
+  // reading 0.286338 %; the row's resolution 0.005 %. (0.286338 - 0.000447401) / 0.005 = 57.18.
+  const nlohmann::json medium = {{"baseline_mean", 0.000447401},
+                                 {"baseline_sd", 0.0002257},
+                                 {"readings", {{"shear_prep_friction", {{"mean", 0.286338}, {"shift_sd", 1266.68}}}}}};
+  CHECK(validation::restate_shifts("consistent under shear_prep_friction (1266.68 sd, t = 2.76), its shift of the mean applied",
+                                   medium, 0.005) ==
+        "consistent under shear_prep_friction (beyond +10 sd (+57), t = 2.76), its shift of the mean applied");
+  // The dense slope: sd 0.118947 above the resolution 0.01, so the sd is the unit:
+  // (0.954353 - 1.39596) / 0.118947 = -3.713.
+  const nlohmann::json slope = {{"baseline_mean", 1.39596}, {"baseline_sd", 0.118947}, {"readings", {{"shear_prep_friction", {{"mean", 0.954353}}}}}};
+  CHECK(validation::restate_shifts("consistent under shear_prep_friction (-3.71 sd, t = 5.94)", slope, 0.01) ==
+        "consistent under shear_prep_friction (-3.7 sd, t = 5.94)");
+  // "mean shifted X sd" inside a reading's parentheses, and a reading the row does not list (its value kept,
+  // rephrased): Test 3's lead, (0.14732 + 0.0336248) / 0.181819 = 0.995.
+  const nlohmann::json lead = {{"baseline_mean", -0.0336248}, {"baseline_sd", 0.181819}, {"readings", {{"test3_directions", {{"mean", 0.14732}}}}}};
+  CHECK(validation::restate_shifts("most: test3_directions (5 of 5, mean shifted 1.00 sd); would be under other (0.34 sd, t = 0.57)", lead,
+                                   0.005) == "most: test3_directions (5 of 5, mean shifted +1.0 sd); would be under other (+0.34 sd, t = 0.57)");
+  // Nothing to restate: as it is.
+  CHECK(validation::restate_shifts("consistent on the full-size ensemble (within the scatter of one sample)", lead, 0.005) ==
+        "consistent on the full-size ensemble (within the scatter of one sample)");
+}
