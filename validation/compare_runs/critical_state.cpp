@@ -439,13 +439,22 @@ std::vector<RateSeries> rate_series(const std::vector<ShearRun>& rates, const st
   for (RateSeries& s : out) {
     std::sort(s.points.begin(), s.points.end(), [](const RatePoint& a, const RatePoint& b) { return a.run->rate_per_s > b.run->rate_per_s; });
     std::vector<double> x, y;
+    std::vector<std::string> unfinished, not_held, no_value;  // the runs left out, by why (each run's note is in the table)
     for (const RatePoint& p : s.points) {
-      if (!p.run->summary) s.problems += p.run->run + " not used (" + p.run->note + "); ";
-      else if (!p.run->held) s.problems += p.run->run + " not used: not the test its name says; ";
-      else if (!std::isfinite(p.inertial) || !p.run->summary->q_over_p.n)
-        s.problems += p.run->run + " not used: no inertial number or no critical-state rows (radii or scene missing); ";
+      if (!p.run->summary) unfinished.push_back(p.run->run);
+      else if (!p.run->held) not_held.push_back(p.run->run);
+      else if (!std::isfinite(p.inertial) || !p.run->summary->q_over_p.n) no_value.push_back(p.run->run);
       else x.push_back(std::sqrt(p.inertial)), y.push_back(p.run->summary->q_over_p.mean);
     }
+    const auto left_out = [&](const std::vector<std::string>& names, const std::string& why) {
+      if (names.empty()) return;
+      std::string list;
+      for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+      s.problems += list + " left out (" + why + "); ";
+    };
+    left_out(unfinished, "not finished or unreadable");
+    left_out(not_held, "not the test its name says: p or b not held, see its note");
+    left_out(no_value, "no inertial number or no critical-state rows: radii or scene missing");
     if (x.size() < 2) {
       s.problems += "no fit: " + std::to_string(x.size()) + " usable point(s); ";
       continue;
@@ -501,7 +510,8 @@ std::string rates_section(const std::vector<RateSeries>& series, const std::stri
   md << "The rates study (`" << folder << "`, `pipeline/studies/critical_state_rates.yaml`) shears the same sample in compression at "
         "slower axial strain rates; with the run of the table above at its own rate, each μ has a series. I = rate · d · √(ρ/p): "
         "the resolved scene's axial strain rate and particle density, d the mean diameter of the run's spheres, p its mean stress at "
-        "the critical state. A least-squares line of the critical q/p against √I, taken to I → 0, gives the quasi-static q/p with "
+        "the critical state; q/p at cs is the window mean ± the row-to-row sd, as above. A least-squares line of the window means "
+        "against √I, taken to I → 0, gives the quasi-static q/p with "
         "the intercept's standard error (n − 2 degrees of freedom), and φ from it (triaxial compression: sin φ = 3η/(6 + η), η = q/p; "
         "its se to first order).\n\n";
   validation::MarkdownTable t({"μ", "run", "strain rate (s⁻¹)", "d (mm)", "ρ (kg/m³)", "p at cs (kPa)", "I", "√I", "q/p at cs",
@@ -514,7 +524,7 @@ std::string rates_section(const std::vector<RateSeries>& series, const std::stri
              has ? fixed(r.summary->p_Pa.mean / 1e3, 1) : "—", std::isfinite(p.inertial) ? validation::significant(p.inertial, 3) : "—",
              std::isfinite(p.inertial) ? validation::significant(std::sqrt(p.inertial), 3) : "—", has ? mean_sd(r.summary->q_over_p, 3) : "—",
              has ? fixed(validation::compression_friction_deg(r.summary->q_over_p.mean), 2) : "—",
-             !r.summary ? r.note : r.held ? "" : "⚠ not the test its name says: left out"});
+             !r.summary ? r.note : r.held ? "" : "left out of the fit: " + r.note.substr(0, r.note.size() >= 2 ? r.note.size() - 2 : 0)});
     }
     if (s.fit)
       t.row({number(s.mu), "**I → 0** (fit of " + std::to_string(s.fit->n) + " points)", "0", "", "", "", "0", "0",
