@@ -11,7 +11,7 @@
 # Runs in reports/liquefaction/.
 load 'style.gp'
 load 'values.gp'
-set terminal pngcairo size 1000,750 font ",11" enhanced
+set terminal pngcairo size 1000,850 font ",11" enhanced   # taller: the key sits below
 set output 'csr_nl.png'
 set title sprintf("Undrained cyclic triaxial tests: cyclic stress ratio against the number of cycles to liquefaction\n(%s; median and range over up to %d samples per CSR)", liq_criteria, liq_samples_max)
 set logscale x
@@ -19,7 +19,8 @@ set xrange [0.5:200]
 set yrange [0:*]
 set xlabel "number of cycles N_L"
 set ylabel "CSR = q_{amp} / (2 p_0')"
-set key top right
+set key below
+set offsets graph 0, graph 0, graph 0.08, graph 0   # the highest CSR off the frame
 if (liq_run_n == 0) { set yrange [0:0.4]; eval not_run }
 d(i) = value(sprintf("liq_density_%d", i))
 plot for [i = 1:liq_density_n] "csr_nl_summary.dat" u 7:(column(2) == i ? $3 : 1/0):10:12 w xerrorbars pt -1 lw 1.5 lc rgb density_colour(d(i)) notitle, \
