@@ -204,7 +204,8 @@ std::string liquefaction_table(const std::vector<CyclicRun>& runs, const std::ve
                  validation::censored_text(s.least) + " – " + validation::censored_text(s.largest)});
   }
   md << "Per density and CSR over the samples: the median N_L and its range, censored tests counted as N_L > N (a censored median "
-        "is written \"> N\": more than half the samples did not liquefy within the test).\n\n"
+        "is written \"> N\": at least half the samples did not liquefy within the test, and the median's order statistic is one "
+        "of them).\n\n"
      << summary.text() << "\n";
   for (const std::string& d : densities) {
     int tests = 0, liquefied = 0, csrs = 0;
