@@ -13,6 +13,10 @@ DECISIONS   ?= results/decisions/paper
 # results are results/readings_<name>/paper, their tables reports/readings/<name>/.
 READINGS    ?= loose medium_dense
 CRITICAL_STATE ?= results/critical_state/paper
+# The critical state at μ = 0.5 on 3 samples (pipeline/studies/critical_state_ensemble.yaml) and at
+# two slower rates (critical_state_rates.yaml): the section passes each when it has run.
+CRITICAL_STATE_ENSEMBLE ?= results/critical_state_ensemble/paper
+CRITICAL_STATE_RATES    ?= results/critical_state_rates/paper
 LIQUEFACTION   ?= results/liquefaction_loose/paper results/liquefaction_medium/paper
 # The studies of the cell under full control (constant-p shear to the critical state, undrained
 # cyclic tests to liquefaction): `make study`, and so `make all`, runs them beside the others
@@ -173,7 +177,7 @@ report: tools
 	-$(BUILD)/bin/figure-data samples-table $(RESULTS) --references reference_data/paper.yaml --per-sample > reports/samples.md
 	-reports/convergence/make_section.sh $(BUILD)/bin $(CONVERGENCE) reports/convergence
 	reports/stability/make_section.sh $(BUILD)/bin $(STABILITY) reports/stability
-	-reports/critical_state/make_section.sh $(BUILD)/bin $(CRITICAL_STATE) reports/critical_state
+	-reports/critical_state/make_section.sh $(BUILD)/bin $(CRITICAL_STATE) reports/critical_state $(CRITICAL_STATE_ENSEMBLE) $(CRITICAL_STATE_RATES)
 	-reports/liquefaction/make_section.sh $(BUILD)/bin reports/liquefaction $(LIQUEFACTION)
 	$(BUILD)/bin/report --results $(RESULTS) --references reference_data/paper.yaml --out reports --sample $(strip $(SAMPLE)) \
 	  --baseline $(BASELINE) --convergence $(CONVERGENCE) --decisions $(DECISIONS) --stability $(STABILITY) $(REPORT_SOURCE)
@@ -209,14 +213,19 @@ readings-report: tools
 
 # Drained shear at constant p of the dense sample to the critical state, compression and
 # extension against the shearing friction and the b series (pipeline/studies/critical_state.yaml),
-# then its section (reports/critical_state/: table, friction angles, e and CN, the pi-plane).
+# μ = 0.5 on 3 samples (critical_state_ensemble.yaml) and μ = 0 and 0.5 at two slower rates
+# (critical_state_rates.yaml), in one call so that they share the cores, then its section
+# (reports/critical_state/: table, friction angles with the ensemble's sd and the quasi-static
+# limit, e and CN, the pi-plane, q/p against sqrt(I)).
 critical-state: tools
-	$(BUILD)/bin/pipeline pipeline/studies/critical_state.yaml --profile paper -j $(JOBS) $(if $(strip $(EXECUTOR)),--executor $(strip $(EXECUTOR)))
-	reports/critical_state/make_section.sh $(BUILD)/bin $(CRITICAL_STATE) reports/critical_state
+	$(BUILD)/bin/pipeline pipeline/studies/critical_state.yaml pipeline/studies/critical_state_ensemble.yaml \
+	  pipeline/studies/critical_state_rates.yaml --profile paper -j $(JOBS) $(if $(strip $(EXECUTOR)),--executor $(strip $(EXECUTOR)))
+	reports/critical_state/make_section.sh $(BUILD)/bin $(CRITICAL_STATE) reports/critical_state $(CRITICAL_STATE_ENSEMBLE) $(CRITICAL_STATE_RATES)
 
 # Undrained cyclic triaxial tests of the loose and the medium sample to liquefaction, and their
-# unloaded holds (pipeline/studies/liquefaction_{loose,medium}.yaml, in one call), then their
-# section (reports/liquefaction/: table, CSR against N_L, r_u against cycles).
+# unloaded holds, on 3 samples each (pipeline/studies/liquefaction_{loose,medium}.yaml, in one
+# call), then their section (reports/liquefaction/: per density and CSR the median N_L over the
+# samples with its range, every test, CSR against N_L, r_u against cycles).
 liquefaction: tools
 	$(BUILD)/bin/pipeline pipeline/studies/liquefaction_loose.yaml pipeline/studies/liquefaction_medium.yaml --profile paper \
 	  -j $(JOBS) $(if $(strip $(EXECUTOR)),--executor $(strip $(EXECUTOR)))

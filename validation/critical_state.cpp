@@ -147,4 +147,29 @@ ShearSummary summarise_shear(const Columns& series, double cs_from, double cs_to
   return out;
 }
 
+ShearEnsemble shear_ensemble(const std::vector<ShearSummary>& samples) {
+  ShearEnsemble out;
+  out.samples = static_cast<int>(samples.size());
+  std::vector<double> phi, qp, e, cn, peak;
+  for (const ShearSummary& s : samples) {
+    peak.push_back(s.peak_phi_deg);
+    if (s.cs_rows == 0) continue;
+    phi.push_back(s.phi_deg.mean), qp.push_back(s.q_over_p.mean), e.push_back(s.void_ratio.mean), cn.push_back(s.coordination.mean);
+  }
+  out.phi_cs_deg = spread(phi), out.q_over_p_cs = spread(qp), out.void_ratio_cs = spread(e), out.coordination_cs = spread(cn);
+  out.peak_phi_deg = spread(peak);
+  return out;
+}
+
+double inertial_number(double rate_per_s, double diameter_m, double density_kg_per_m3, double p_Pa) {
+  return p_Pa > 0 ? std::abs(rate_per_s) * diameter_m * std::sqrt(density_kg_per_m3 / p_Pa) : std::nan("");
+}
+
+double compression_friction_deg(double q_over_p) { return std::asin(3 * q_over_p / (6 + q_over_p)) * 180 / std::numbers::pi; }
+
+double compression_friction_slope_deg(double q_over_p) {
+  const double sin_phi = 3 * q_over_p / (6 + q_over_p);
+  return 18 / ((6 + q_over_p) * (6 + q_over_p)) / std::sqrt(1 - sin_phi * sin_phi) * 180 / std::numbers::pi;
+}
+
 }  // namespace validation

@@ -77,4 +77,25 @@ struct ShearSummary {
 // width of the window of axial strain over which the peak's stresses are averaged.
 ShearSummary summarise_shear(const Columns& series, double cs_from = 0.3, double cs_to = 0.4, double smoothing_strain = 0.01);
 
+// The mean and the sample sd over an ensemble's samples of what a shear's critical state and peak
+// give (each sample's critical state its window mean): compare-runs critical-state --ensemble.
+// Samples whose critical state has no row are left out of every quantity but peak_phi_deg.
+struct ShearEnsemble {
+  int samples = 0;
+  Spread phi_cs_deg, q_over_p_cs, void_ratio_cs, coordination_cs, peak_phi_deg;
+};
+ShearEnsemble shear_ensemble(const std::vector<ShearSummary>& samples);
+
+// The inertial number of a shear at strain rate `rate_per_s` of grains of mean diameter
+// `diameter_m` and particle density `density_kg_per_m3` under mean stress p (GDR MiDi 2004):
+// I = rate d sqrt(rho / p). NaN for p <= 0.
+double inertial_number(double rate_per_s, double diameter_m, double density_kg_per_m3, double p_Pa);
+
+// The mobilised friction angle [deg] of triaxial compression (s2 = s3, q = s1 - s3) at stress
+// ratio eta = q/p: s1 = p + 2q/3, s3 = p - q/3, so sin phi = (s1 - s3)/(s1 + s3) = 3 eta / (6 + eta).
+double compression_friction_deg(double q_over_p);
+// Its derivative d phi / d eta [deg per unit eta]: d(3 eta / (6 + eta)) / d eta = 18 / (6 + eta)^2,
+// over cos phi; what a standard error of eta becomes in phi (to first order).
+double compression_friction_slope_deg(double q_over_p);
+
 }  // namespace validation

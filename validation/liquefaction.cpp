@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <stdexcept>
+
+#include "format.hpp"
 
 namespace validation {
 
@@ -77,6 +80,53 @@ Table ru_against_cycles(const Columns& series, int stage, double period_s) {
   out.columns = {"cycles [1]", "r_u [1]", "time since the stage start [s]"};
   for (std::size_t i = r.first; i <= r.last; ++i) out.rows.push_back({(t[i] - t[r.first]) / period_s, ru[i], t[i] - t[r.first]});
   return out;
+}
+
+namespace {
+
+// The median of values (sorted here).
+double median_of(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  if (n % 2) return v[n / 2];
+  // Both middle values infinite: the median is too (inf + inf is inf, never NaN).
+  return std::isinf(v[n / 2 - 1]) ? v[n / 2 - 1] : v[n / 2 - 1] / 2 + v[n / 2] / 2;
+}
+
+}  // namespace
+
+CensoredSummary summarise_censored(const std::vector<CensoredCycles>& samples) {
+  if (samples.empty()) throw std::invalid_argument("summarise_censored: no samples");
+  CensoredSummary s;
+  s.samples = static_cast<int>(samples.size());
+  std::vector<double> low, high;
+  for (const CensoredCycles& c : samples) {
+    (c.censored ? s.censored : s.liquefied) += 1;
+    low.push_back(c.cycles);
+    high.push_back(c.censored ? std::numeric_limits<double>::infinity() : c.cycles);
+  }
+  s.median_low = median_of(low);
+  s.median_high = median_of(high);
+  s.median_censored = s.median_high != s.median_low;
+  // The least and the largest of the values as measured (a censored sample at its N; at a tie the
+  // liquefied one is the least, the censored one the largest). A censored least is a bound, "> N";
+  // so is a censored largest. With tests of different durations a censored N below the largest
+  // liquefied N_L leaves that largest a lower bound, written as the value (not the case here:
+  // every test of a study runs the same number of cycles).
+  s.least = samples.front(), s.largest = samples.front();
+  for (const CensoredCycles& c : samples) {
+    if (c.cycles < s.least.cycles || (c.cycles == s.least.cycles && !c.censored)) s.least = c;
+    if (c.cycles > s.largest.cycles || (c.cycles == s.largest.cycles && c.censored)) s.largest = c;
+  }
+  return s;
+}
+
+std::string censored_text(const CensoredCycles& c, int digits) { return (c.censored ? "> " : "") + fixed(c.cycles, digits); }
+
+std::string median_text(const CensoredSummary& s, int digits) {
+  if (!s.median_censored) return fixed(s.median_low, digits);
+  if (std::isinf(s.median_high)) return "> " + fixed(s.median_low, digits);
+  return fixed(s.median_low, digits) + " – " + fixed(s.median_high, digits);
 }
 
 }  // namespace validation

@@ -6,6 +6,7 @@
 // control stage, as the engine's pore_pressure_ratio column.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "figures.hpp"
 #include "results.hpp"
@@ -49,5 +50,34 @@ double value_since_start(const Columns& series, int stage, const std::string& co
 
 // r_u against the number of cycles (time since the stage start / period) of every row of a stage.
 Table ru_against_cycles(const Columns& series, int stage, double period_s);
+
+// N_L of one sample: liquefied after `cycles`, or censored (did not liquefy within the test, whose
+// N cycles it lasted: N_L > cycles).
+struct CensoredCycles {
+  double cycles = 0;
+  bool censored = false;
+};
+
+// N_L over the samples of one density and CSR, censored ones counted as > N. The median is bounded
+// by two medians: `median_low` with every censored N_L at its N, `median_high` with every censored
+// N_L at +inf (order statistics only grow when values do). When they agree the median is known
+// (median_censored false); otherwise it is censored: written "> median_low" when median_high is
+// infinite (the median's own sample did not liquefy; with every censored test at the same N, the
+// tests' duration, and every liquefied N_L below it, the true median then exceeds N), or as the
+// bracket "median_low – median_high" when both are finite. The range is the least and the largest
+// N_L, each with its censoring (the largest censored: "> N"; the least censored: every sample is).
+struct CensoredSummary {
+  int samples = 0, liquefied = 0, censored = 0;
+  double median_low = 0, median_high = 0;
+  bool median_censored = false;
+  CensoredCycles least, largest;
+};
+// Throws std::invalid_argument without samples.
+CensoredSummary summarise_censored(const std::vector<CensoredCycles>& samples);
+
+// "12.34" or "> 50.00" (`digits` decimals).
+std::string censored_text(const CensoredCycles& c, int digits = 2);
+// The median as the section writes it: "12.34", "> 50.00" or "12.34 – 20.00".
+std::string median_text(const CensoredSummary& s, int digits = 2);
 
 }  // namespace validation

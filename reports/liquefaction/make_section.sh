@@ -2,7 +2,7 @@
 # The liquefaction studies' table and figures from their results (the loose and the medium sample).
 # Usage: reports/liquefaction/make_section.sh [BIN_DIR|-] [OUT_DIR] [RESULTS_DIR...]
 #   BIN_DIR      holds compare-runs (default, or "-": build/bin of this repository)
-#   OUT_DIR      receives table.md, csr_nl.dat, ru.dat, values.gp and csr_nl.png, ru.png (drawn by
+#   OUT_DIR      receives table.md, csr_nl.dat, csr_nl_summary.dat, ru.dat, values.gp and csr_nl.png, ru.png (drawn by
 #                the static reports/gnuplot/liquefaction_*.gp) (default: reports/liquefaction)
 #   RESULTS_DIR  the studies' results, each with the pipeline's runs.tsv (default:
 #                results/liquefaction_loose/paper results/liquefaction_medium/paper)
@@ -22,7 +22,7 @@ done
 [ ${#folders[@]} -gt 0 ] || exit 0
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
-"$bin/compare-runs" liquefaction "$out" "${folders[@]}"   # table.md, csr_nl.dat, ru.dat, values.gp
+"$bin/compare-runs" liquefaction "$out" "${folders[@]}"   # table.md, csr_nl.dat, csr_nl_summary.dat, ru.dat, values.gp
 command -v gnuplot > /dev/null || { echo "error: gnuplot not found" >&2; exit 2; }
 for figure in csr_nl ru; do
   (cd "$out" && GNUPLOT_LIB="$here/reports/gnuplot" gnuplot "$here/reports/gnuplot/liquefaction_$figure.gp")

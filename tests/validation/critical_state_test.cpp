@@ -6,9 +6,11 @@
 #include <Eigen/Geometry>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "analysis/time_series.hpp"
 #include "critical_state.hpp"
+#include "format.hpp"
 
 using validation::Criterion;
 
@@ -139,4 +141,55 @@ TEST_CASE("peak and critical state of a synthetic constant-p shear", "[critical-
   CHECK(s.p_max_Pa == Approx(1e5).epsilon(1e-12));
   CHECK(s.p_Pa.mean == Approx(1e5).epsilon(1e-12));
   CHECK(s.b.mean == Approx(0).margin(1e-12));  // compression: s2 = s3
+}
+
+TEST_CASE("mean ± sd over an ensemble's samples of the critical state", "[critical-state][report-sections]") {
+  // Three samples: critical phi 30.1, 30.5, 30.9 (mean 30.5, deviations -0.4, 0, +0.4:
+  // sample sd sqrt(0.32 / 2) = 0.4); q/p 0.55, 0.56, 0.60 (mean 0.57, deviations -0.02, -0.01,
+  // +0.03: sd sqrt(0.0014 / 2) = 0.0264575...). A fourth sample without critical-state rows (it
+  // stopped short) counts for its peak only: peak phi 40, 41, 42, 45 -> mean 42, sd sqrt(14/3).
+  std::vector<validation::ShearSummary> s(4);
+  const double phi[] = {30.1, 30.5, 30.9}, qp[] = {0.55, 0.56, 0.60}, peak[] = {40, 41, 42, 45};
+  for (int k = 0; k < 4; ++k) {
+    s[k].peak_phi_deg = peak[k];
+    if (k == 3) continue;
+    s[k].cs_rows = 51;
+    s[k].phi_deg = validation::spread({phi[k] - 1, phi[k] + 1});  // a window mean with its row scatter
+    s[k].q_over_p = validation::spread({qp[k]});
+    s[k].void_ratio = validation::spread({0.6});
+    s[k].coordination = validation::spread({4.0});
+  }
+  const validation::ShearEnsemble e = validation::shear_ensemble(s);
+  CHECK(e.samples == 4);
+  CHECK(e.phi_cs_deg.n == 3);
+  CHECK(e.phi_cs_deg.mean == Approx(30.5).epsilon(1e-12));
+  CHECK(e.phi_cs_deg.sd == Approx(0.4).epsilon(1e-12));  // the samples' sd, not the rows' (1.41 each)
+  CHECK(e.q_over_p_cs.sd == Approx(std::sqrt(0.0007)).epsilon(1e-12));
+  CHECK(e.void_ratio_cs.sd == Approx(0).margin(1e-15));
+  CHECK(e.peak_phi_deg.n == 4);
+  CHECK(e.peak_phi_deg.mean == Approx(42).epsilon(1e-12));
+  CHECK(e.peak_phi_deg.sd == Approx(std::sqrt(14.0 / 3)).epsilon(1e-12));
+  // As the table writes them: the sd to two significant digits, the mean to the same decimal.
+  CHECK(validation::mean_pm_sd(e.phi_cs_deg.mean, e.phi_cs_deg.sd) == "30.50 ± 0.40");
+  CHECK(validation::mean_pm_sd(e.q_over_p_cs.mean, e.q_over_p_cs.sd) == "0.570 ± 0.026");
+  CHECK(validation::mean_pm_sd(e.peak_phi_deg.mean, e.peak_phi_deg.sd) == "42.0 ± 2.2");
+}
+
+TEST_CASE("inertial number and the friction angle of a compression q/p", "[critical-state][report-sections]") {
+  // I = rate d sqrt(rho / p): 4 /s x 2 mm x sqrt(2500 / 1e4) = 0.008 x 0.5 = 0.004.
+  CHECK(validation::inertial_number(4, 0.002, 2500, 1e4) == Approx(0.004).epsilon(1e-14));
+  CHECK(validation::inertial_number(-4, 0.002, 2500, 1e4) == Approx(0.004).epsilon(1e-14));  // extension: |rate|
+  CHECK(std::isnan(validation::inertial_number(1, 0.002, 2500, 0)));
+  // The issue's figure: 1 /s, d about 3.75 mm (the grading's middle), 2650 kg/m3, 100 kPa: ~6e-4.
+  CHECK(validation::inertial_number(1, 3.75e-3, 2650, 1e5) == Approx(6.1e-4).epsilon(0.01));
+  // q/p = 1.2 in compression is phi = 30 deg (sin phi = 3.6/7.2); q/p = 0: 0.
+  CHECK(validation::compression_friction_deg(1.2) == Approx(30).epsilon(1e-12));
+  CHECK(validation::compression_friction_deg(0) == Approx(0).margin(1e-12));
+  // The derivative against a central difference (step 1e-5: its error ~ h^2 phi''' / 6 ~ 1e-10,
+  // its rounding ~ 1e-16 / 1e-5 ~ 1e-11 relative; 1e-7 relative is far above both).
+  for (double eta : {0.2, 0.29, 0.6, 1.2}) {
+    const double h = 1e-5;
+    const double numeric = (validation::compression_friction_deg(eta + h) - validation::compression_friction_deg(eta - h)) / (2 * h);
+    CHECK(validation::compression_friction_slope_deg(eta) == Approx(numeric).epsilon(1e-7));
+  }
 }

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <stdexcept>
 
 #include "analysis/time_series.hpp"
 #include "liquefaction.hpp"
@@ -80,4 +81,50 @@ TEST_CASE("what ended a cyclic stage, and the CSR of a name and of a scene", "[l
   // The study's loose CSR 0.01: q amplitude 2,000 Pa about p0 = 100 kPa.
   CHECK(validation::cyclic_stress_ratio(2000, 1e5) == Approx(0.01).epsilon(1e-15));
   CHECK(std::isnan(validation::cyclic_stress_ratio(2000, 0)));
+}
+
+TEST_CASE("median and range of N_L over samples with censored tests", "[liquefaction][report-sections]") {
+  using validation::CensoredCycles;
+  // Three samples, one did not liquefy in its 50 cycles (N_L > 50): the median is the middle
+  // value, 5, known whatever the censored N_L is (it can only be above 50, above the other two);
+  // the range runs from 2 to "> 50".
+  validation::CensoredSummary s = validation::summarise_censored({{5, false}, {50, true}, {2, false}});
+  CHECK(s.samples == 3);
+  CHECK(s.liquefied == 2);
+  CHECK(s.censored == 1);
+  CHECK_FALSE(s.median_censored);
+  CHECK(s.median_low == 5);
+  CHECK(validation::median_text(s) == "5.00");
+  CHECK(validation::censored_text(s.least) == "2.00");
+  CHECK(validation::censored_text(s.largest) == "> 50.00");
+
+  // Two of three did not liquefy: the median's own sample is censored, "> 50".
+  s = validation::summarise_censored({{2, false}, {50, true}, {50, true}});
+  CHECK(s.median_censored);
+  CHECK(std::isinf(s.median_high));
+  CHECK(validation::median_text(s) == "> 50.00");
+
+  // Four samples, two censored at 50: the median is (4 + T)/2 with T > 50, so > 27.
+  s = validation::summarise_censored({{4, false}, {50, true}, {2, false}, {50, true}});
+  CHECK(s.median_censored);
+  CHECK(validation::median_text(s) == "> 27.00");
+
+  // Four samples, one censored: the median is (4 + 6)/2 = 5 whatever T > 50 is.
+  s = validation::summarise_censored({{4, false}, {50, true}, {2, false}, {6, false}});
+  CHECK_FALSE(s.median_censored);
+  CHECK(validation::median_text(s) == "5.00");
+
+  // A censored N below liquefied ones (tests of different durations): N_L > 5 may be anywhere
+  // above 5, so the median of {>5, 10, 20} lies between 10 (N_L just above 5) and 20 (N_L above 20).
+  s = validation::summarise_censored({{5, true}, {10, false}, {20, false}});
+  CHECK(s.median_censored);
+  CHECK(validation::median_text(s) == "10.00 – 20.00");
+  CHECK(validation::censored_text(s.least) == "> 5.00");
+
+  // Every sample liquefied: the plain median and range.
+  s = validation::summarise_censored({{3, false}, {1, false}, {2, false}});
+  CHECK(s.censored == 0);
+  CHECK(validation::median_text(s) == "2.00");
+  CHECK(validation::censored_text(s.least) + " – " + validation::censored_text(s.largest) == "1.00 – 3.00");
+  CHECK_THROWS_AS(validation::summarise_censored({}), std::invalid_argument);
 }

@@ -1,8 +1,11 @@
 // compare-runs critical-state: the critical-state study (drained shear at constant p of the dense
 // sample). Peak and critical-state friction angle, void ratio and coordination number of each
 // run, and the peaks in the pi-plane beside Mohr-Coulomb, Lade-Duncan and Matsuoka-Nakai through
-// the compression peak. Writes OUT/table.md, critical_state.dat, pi_plane.dat and values.gp (what
-// reports/gnuplot/critical_state_*.gp need).
+// the compression peak. With --ensemble, the mean and sd over samples of the ensemble study's runs
+// (pipeline/studies/critical_state_ensemble.yaml); with --rates, the critical q/p of compression
+// against the inertial number over the rates study's runs and the main study's own (1/s), fitted
+// linearly in sqrt(I) and taken to I -> 0. Writes OUT/table.md, critical_state.dat, pi_plane.dat,
+// ensemble.dat, rates.dat, rates_qs.dat and values.gp (what reports/gnuplot/critical_state_*.gp need).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -20,6 +23,7 @@
 #include "figures.hpp"
 #include "format.hpp"
 #include "io/atomic_file.hpp"
+#include "line_fit.hpp"
 #include "markdown_table.hpp"
 
 namespace fs = std::filesystem;
@@ -44,11 +48,15 @@ std::string mean_sd(const validation::Spread& s, int digits) {
   return s.n == 0 ? "—" : fixed(s.mean, digits) + (s.n > 1 ? " ± " + fixed(s.sd, digits) : "");
 }
 
-// One run of the critical-state study, as its name says: compression_mu<μ>, extension_mu<μ>, b<b>.
+// One run of the critical-state study, as its name says: compression_mu<μ>, extension_mu<μ>, b<b>
+// (or the rates study's rate<rate>_mu<μ>, a compression).
 struct ShearRun {
   std::string run, loading;  // loading: compression, extension or "b series" (true triaxial)
   double mu = NAN, b = NAN;  // μ; b the target of the constraint (principal b: 1 in extension)
   double p_target_Pa = NAN;  // the constraint's mean stress
+  double rate_per_s = NAN;   // |axial strain rate| of the leading component (the resolved scene's)
+  double diameter_m = NAN;   // mean diameter of the run's spheres
+  double density_kg_per_m3 = NAN;  // particle density (the resolved scene's)
   std::optional<validation::ShearSummary> summary;
   bool held = true;          // p and b as the name says (see held_as_named)
   std::string note;          // why it has no values, or what to know of them
@@ -85,6 +93,13 @@ bool parse_shear_test(const std::string& test, ShearRun& r) {
         return true;
       }
   }
+  // The rates study's rate<rate>_mu<μ>: compression at that axial strain rate (the scene's is used).
+  if (const auto at = test.find("_mu"); test.rfind("rate", 0) == 0 && at != std::string::npos)
+    if (whole_number(test.substr(4, at - 4)))
+      if (const auto mu = whole_number(test.substr(at + 3))) {
+        r.loading = "compression", r.mu = *mu, r.b = 0;
+        return true;
+      }
   if (test.rfind("b", 0) == 0)
     if (const auto b = whole_number(test.substr(1))) {
       r.loading = "b series", r.b = *b;
@@ -93,29 +108,37 @@ bool parse_shear_test(const std::string& test, ShearRun& r) {
   return false;
 }
 
-// The critical-state analysis of the runs of a study's manifest; cs_to the axial strain the
-// critical state is averaged up to (a run that stops short of it is noted).
-std::vector<ShearRun> shear_runs(const Manifest& manifest, double cs_to) {
+// The critical-state analysis of the runs of a study's manifest (its folder `results`); cs_to the
+// axial strain the critical state is averaged up to (a run that stops short of it is noted).
+std::vector<ShearRun> shear_runs(const Manifest& manifest, const std::string& results, double cs_to) {
   std::vector<ShearRun> runs;
   for (const ManifestLine& l : manifest.lines) {
     if (l.test == "-") continue;  // the preparation
     ShearRun& r = runs.emplace_back();
     r.run = l.run;
     if (!parse_shear_test(l.test, r)) {
-      r.note = "not analysed: test '" + l.test + "' is none of compression_mu<μ>, extension_mu<μ>, b<b>";
+      r.note = "not analysed: test '" + l.test + "' is none of compression_mu<μ>, extension_mu<μ>, b<b>, rate<rate>_mu<μ>";
       continue;
     }
-    if (!validation::is_complete(l.result)) {
-      r.note = "missing: " + fs::path(l.result).filename().string() + " is not finished";
+    const std::string result = validation::result_under(results, l);  // wherever the folder is now
+    if (!validation::is_complete(result)) {
+      r.note = "missing: " + fs::path(result).filename().string() + " is not finished";
       continue;
     }
     try {
-      const RunFile f = read_run(l.result);
+      const RunFile f = read_run(result);
+      if (!f.radius_m.empty()) {
+        double sum = 0;
+        for (double radius : f.radius_m) sum += 2 * radius;
+        r.diameter_m = sum / static_cast<double>(f.radius_m.size());  // the engine's mean_diameter
+      }
       r.summary = validation::summarise_shear(f.series, 0.3, cs_to);
       if (f.scene) {  // μ, p and b as run: the scene's; a name that says otherwise is noted
         const double mu = dem::friction_coefficient(f.scene->material.law);
         if (std::isfinite(r.mu) && std::abs(mu - r.mu) > 1e-9) r.note += "the scene's friction is " + number(mu) + ", not the name's; ";
         r.mu = mu;
+        r.density_kg_per_m3 = f.scene->material.density_kg_per_m3;
+        r.rate_per_s = std::abs(f.scene->stages.back().control.component[2].strain_rate_per_s);
         const dem::CellConstraint& c = f.scene->stages.back().control.constraint;
         if (c.kind == dem::CellConstraint::Kind::ConstantMeanStress) r.p_target_Pa = c.mean_stress_Pa;
         if (r.loading == "b series" && c.b != r.b) r.note += "the scene's b is " + number(c.b) + ", not the name's; ";
@@ -219,7 +242,8 @@ std::string signed_fixed(double x) {
   return buf;
 }
 
-std::string critical_state_table(const std::vector<ShearRun>& runs, const ShearRun* through, const std::string& settings) {
+std::string critical_state_table(const std::vector<ShearRun>& runs, const ShearRun* through, const std::string& settings,
+                                 const std::string& ensemble_and_rates) {
   validation::MarkdownTable runs_table({"run", "μ", "loading", "peak φ (°)", "at axial strain", "p at peak (kPa)", "b at peak", "critical φ (°)",
                                         "e_cs", "CN_cs (2Nc/Np)", "CN_cs mechanical", "q/p at cs", "p at cs (kPa)", "b at cs", "note"});
   for (const ShearRun& r : runs) {
@@ -253,6 +277,7 @@ std::string critical_state_table(const std::vector<ShearRun>& runs, const ShearR
         "at the critical state more than 5 % from the constraint's, or b at the critical state more than 0.05 from the target: the "
         "run is not the test its name says (p at the critical state is at most " << fixed(100 * worst_p, 1)
      << " % from the constraint's in this study); its values are shown, but they are not that test's.\n";
+  md << ensemble_and_rates;
   md << "\n![peak and critical-state friction angle against μ](phi_mu.png)\n\n![critical-state void ratio and coordination number against μ](e_cn_mu.png)\n";
   md << "\n### The peaks in the π-plane\n\n";
   if (!through) {
@@ -286,19 +311,273 @@ std::string critical_state_table(const std::vector<ShearRun>& runs, const ShearR
   return md.str();
 }
 
+// ---- the ensemble (--ensemble): mean ± sd over samples --------------------------------------
+
+// One (loading, μ) of the ensemble study: its samples' runs.
+struct EnsembleGroup {
+  std::string loading;
+  double mu = NAN;
+  std::vector<const ShearRun*> runs;  // every sample's run, finished or not
+  std::vector<validation::ShearSummary> used;  // the finished ones that held their p and b
+  validation::ShearEnsemble stats;
+};
+
+std::vector<EnsembleGroup> ensemble_groups(const std::vector<ShearRun>& runs) {
+  std::vector<EnsembleGroup> groups;
+  for (const ShearRun& r : runs) {
+    if (r.loading != "compression" && r.loading != "extension") continue;  // the b series is one sample's (main study)
+    auto g = std::find_if(groups.begin(), groups.end(), [&](const EnsembleGroup& x) { return x.loading == r.loading && x.mu == r.mu; });
+    if (g == groups.end()) g = groups.insert(groups.end(), EnsembleGroup{r.loading, r.mu, {}, {}, {}});
+    g->runs.push_back(&r);
+    if (r.summary && r.held) g->used.push_back(*r.summary);
+  }
+  for (EnsembleGroup& g : groups) g.stats = validation::shear_ensemble(g.used);
+  return groups;
+}
+
+// "mean ± sd" of a spread over samples: the sd to two significant digits, the mean to the same
+// decimal (validation::mean_pm_sd); one sample: its value, said so.
+std::string over_samples(const validation::Spread& s) {
+  if (s.n == 0) return "—";
+  return validation::mean_pm_sd(s.mean, s.sd) + (s.n == 1 ? " (one sample)" : "");
+}
+
+// The main study's run of the same loading and μ (seed 1's, the one the table above shows).
+const ShearRun* main_run(const std::vector<ShearRun>& runs, const std::string& loading, double mu) {
+  for (const ShearRun& r : runs)
+    if (r.loading == loading && r.mu == mu && r.summary) return &r;
+  return nullptr;
+}
+
+validation::Table ensemble_data(const std::vector<EnsembleGroup>& groups) {
+  validation::Table t;
+  t.comments = {"compare-runs critical-state --ensemble: one row per loading and mu of the ensemble study; mean and sample sd over",
+                "its samples (each sample's critical state its window mean); loading 1 compression, 2 extension"};
+  t.columns = {"mu [1]", "loading [1]", "samples [1]", "phi_cs [deg]", "phi_cs_sd [deg]", "q_over_p_cs [1]", "q_over_p_cs_sd [1]",
+               "e_cs [1]", "e_cs_sd [1]", "cn_cs [1]", "cn_cs_sd [1]", "peak_phi [deg]", "peak_phi_sd [deg]"};
+  const auto m = [](const validation::Spread& s) { return s.n ? s.mean : NAN; };
+  const auto sd = [](const validation::Spread& s) { return s.n > 1 ? s.sd : NAN; };
+  for (const EnsembleGroup& g : groups) {
+    const validation::ShearEnsemble& e = g.stats;
+    t.labels.push_back(g.loading + "_mu" + number(g.mu));
+    t.rows.push_back({g.mu, g.loading == "compression" ? 1.0 : 2.0, static_cast<double>(e.samples), m(e.phi_cs_deg), sd(e.phi_cs_deg),
+                      m(e.q_over_p_cs), sd(e.q_over_p_cs), m(e.void_ratio_cs), sd(e.void_ratio_cs), m(e.coordination_cs),
+                      sd(e.coordination_cs), m(e.peak_phi_deg), sd(e.peak_phi_deg)});
+  }
+  return t;
+}
+
+std::string ensemble_section(const std::vector<EnsembleGroup>& groups, const std::vector<ShearRun>& main_runs, const std::string& folder,
+                             std::size_t samples, double cs_from, double cs_to) {
+  std::ostringstream md;
+  md << "\n### The critical state on " << samples << " samples\n\n";
+  std::size_t finished = 0, runs = 0, used = 0;
+  for (const EnsembleGroup& g : groups) {
+    runs += g.runs.size(), used += g.used.size();
+    for (const ShearRun* r : g.runs) finished += r->summary.has_value();
+  }
+  md << "The ensemble study (`" << folder << "`, `pipeline/studies/critical_state_ensemble.yaml`): " << samples
+     << " samples of the dense sample, each sheared as above; " << finished << " of " << runs << " runs finished, " << used
+     << " of them held their p and b and are counted. Mean ± sd over the samples (the sample sd, n − 1; the sd to two significant "
+        "digits, the mean to the same decimal); each sample's critical state is its mean over " << number(cs_from) << " ≤ |ε3| ≤ "
+     << number(cs_to) << ". The last two columns are the one-sample study's run above, for comparison; the figure draws the "
+        "ensemble's means with the samples' sd as error bars beside it.\n\n";
+  validation::MarkdownTable t({"loading", "μ", "samples", "critical φ (°)", "q/p at cs", "e_cs", "CN_cs (2Nc/Np)", "peak φ (°)",
+                               "one-sample critical φ (°)", "one-sample peak φ (°)", "note"});
+  for (const EnsembleGroup& g : groups) {
+    const validation::ShearEnsemble& e = g.stats;
+    std::string note;
+    for (const ShearRun* r : g.runs)
+      if (!r->summary) note += r->run + ": " + r->note + "; ";
+      else if (!r->held) note += r->run + ": left out, not the test its name says (" + r->note + "); ";
+    if (note.size() >= 2) note.resize(note.size() - 2);
+    const ShearRun* one = main_run(main_runs, g.loading, g.mu);
+    t.row({g.loading, number(g.mu), std::to_string(e.samples), over_samples(e.phi_cs_deg), over_samples(e.q_over_p_cs),
+           over_samples(e.void_ratio_cs), over_samples(e.coordination_cs), over_samples(e.peak_phi_deg),
+           one && one->summary->phi_deg.n ? fixed(one->summary->phi_deg.mean, 2) : "—", one ? fixed(one->summary->peak_phi_deg, 2) : "—",
+           note});
+  }
+  md << t.text();
+  return md.str();
+}
+
+// ---- rate convergence (--rates): q/p against sqrt(I), taken to I -> 0 ----------------------
+
+struct RatePoint {
+  const ShearRun* run;
+  std::string study;  // which folder it came from
+  double inertial = NAN;
+};
+
+struct RateSeries {
+  double mu = NAN;
+  std::vector<RatePoint> points;  // fastest first
+  std::optional<validation::LineFit> fit;
+  double phi_deg = NAN, phi_se_deg = NAN;  // the quasi-static φ (compression) from the intercept, and its se
+  std::string problems;           // why the fit is poor, or why there is none
+};
+
+double inertial_of(const ShearRun& r) {
+  if (!r.summary || !r.summary->p_Pa.n) return NAN;
+  return validation::inertial_number(r.rate_per_s, r.diameter_m, r.density_kg_per_m3, r.summary->p_Pa.mean);
+}
+
+// Every μ of the rates study's compression runs, with the main study's compression run at that μ.
+std::vector<RateSeries> rate_series(const std::vector<ShearRun>& rates, const std::vector<ShearRun>& main_runs, const std::string& rates_name,
+                                    const std::string& main_name) {
+  std::vector<RateSeries> out;
+  const auto add = [&](const ShearRun& r, const std::string& study) {
+    if (r.loading != "compression") return;
+    auto s = std::find_if(out.begin(), out.end(), [&](const RateSeries& x) { return x.mu == r.mu; });
+    if (s == out.end()) s = out.insert(out.end(), RateSeries{r.mu, {}, std::nullopt, NAN, NAN, ""});
+    s->points.push_back({&r, study, inertial_of(r)});
+  };
+  for (const ShearRun& r : rates) add(r, rates_name);
+  for (RateSeries& s : out)
+    for (const ShearRun& r : main_runs)
+      if (r.loading == "compression" && r.mu == s.mu) s.points.push_back({&r, main_name, inertial_of(r)});
+  for (RateSeries& s : out) {
+    std::sort(s.points.begin(), s.points.end(), [](const RatePoint& a, const RatePoint& b) { return a.run->rate_per_s > b.run->rate_per_s; });
+    std::vector<double> x, y;
+    std::vector<std::string> unfinished, not_held, no_value;  // the runs left out, by why (each run's note is in the table)
+    for (const RatePoint& p : s.points) {
+      if (!p.run->summary) unfinished.push_back(p.run->run);
+      else if (!p.run->held) not_held.push_back(p.run->run);
+      else if (!std::isfinite(p.inertial) || !p.run->summary->q_over_p.n) no_value.push_back(p.run->run);
+      else x.push_back(std::sqrt(p.inertial)), y.push_back(p.run->summary->q_over_p.mean);
+    }
+    const auto left_out = [&](const std::vector<std::string>& names, const std::string& why) {
+      if (names.empty()) return;
+      std::string list;
+      for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+      s.problems += list + " left out (" + why + "); ";
+    };
+    left_out(unfinished, "not finished or unreadable");
+    left_out(not_held, "not the test its name says: p or b not held, see its note");
+    left_out(no_value, "no inertial number or no critical-state rows: radii or scene missing");
+    if (x.size() < 2) {
+      s.problems += "no fit: " + std::to_string(x.size()) + " usable point(s); ";
+      continue;
+    }
+    s.fit = validation::fit_line(x, y);
+    s.phi_deg = validation::compression_friction_deg(s.fit->intercept);
+    s.phi_se_deg = validation::compression_friction_slope_deg(s.fit->intercept) * s.fit->intercept_se;
+    if (!s.fit->monotonic) s.problems += "poor fit: q/p does not change monotonically with I; ";
+    if (s.fit->slope < 0) s.problems += "q/p falls as I grows (slope " + validation::significant(s.fit->slope, 2) + "): the line is no rate effect of the usual sign; ";
+    if (s.fit->n == 2) s.problems += "two points: the line goes through both, no standard error; ";
+  }
+  for (RateSeries& s : out)
+    if (s.problems.size() >= 2) s.problems.resize(s.problems.size() - 2);
+  return out;
+}
+
+validation::Table rates_data(const std::vector<RateSeries>& series) {
+  validation::Table t;
+  t.comments = {"compare-runs critical-state --rates: one row per compression run of a rate series (values.gp rate_mu_<k>);",
+                "I = rate d sqrt(rho / p_cs); q/p at cs the window mean and its row-to-row sd; used 0: left out of the fit"};
+  t.columns = {"series [1]", "mu [1]", "strain_rate [1/s]", "diameter [m]", "density [kg/m3]", "p_cs [kPa]", "inertial_number [1]",
+               "sqrt_inertial_number [1]", "q_over_p_cs [1]", "q_over_p_cs_sd [1]", "used [1]"};
+  for (std::size_t k = 0; k < series.size(); ++k)
+    for (const RatePoint& p : series[k].points) {
+      const ShearRun& r = *p.run;
+      const bool has = r.summary && r.summary->q_over_p.n;
+      t.labels.push_back(r.run);
+      t.rows.push_back({static_cast<double>(k + 1), r.mu, r.rate_per_s, r.diameter_m, r.density_kg_per_m3,
+                        has ? r.summary->p_Pa.mean / 1e3 : NAN, p.inertial, std::sqrt(p.inertial), has ? r.summary->q_over_p.mean : NAN,
+                        has && r.summary->q_over_p.n > 1 ? r.summary->q_over_p.sd : NAN,
+                        has && r.held && std::isfinite(p.inertial) ? 1.0 : 0.0});
+    }
+  return t;
+}
+
+validation::Table rates_quasi_static_data(const std::vector<RateSeries>& series) {
+  validation::Table t;
+  t.comments = {"compare-runs critical-state --rates: the quasi-static limit of each rate series, the fit of q/p against sqrt(I) at I = 0;",
+                "phi from q/p in triaxial compression, sin phi = 3 eta / (6 + eta); its se to first order from the intercept's"};
+  t.columns = {"mu [1]", "q_over_p [1]", "q_over_p_se [1]", "phi [deg]", "phi_se [deg]", "slope [1]", "points [1]", "monotonic [1]"};
+  for (const RateSeries& s : series) {
+    if (!s.fit) continue;
+    t.labels.push_back("mu" + number(s.mu));
+    t.rows.push_back({s.mu, s.fit->intercept, s.fit->intercept_se, s.phi_deg, s.phi_se_deg, s.fit->slope, static_cast<double>(s.fit->n),
+                      s.fit->monotonic ? 1.0 : 0.0});
+  }
+  return t;
+}
+
+std::string rates_section(const std::vector<RateSeries>& series, const std::string& folder) {
+  std::ostringstream md;
+  md << "\n### Rate convergence: the critical state at I → 0\n\n";
+  md << "The rates study (`" << folder << "`, `pipeline/studies/critical_state_rates.yaml`) shears the same sample in compression at "
+        "slower axial strain rates; with the run of the table above at its own rate, each μ has a series. I = rate · d · √(ρ/p): "
+        "the resolved scene's axial strain rate and particle density, d the mean diameter of the run's spheres, p its mean stress at "
+        "the critical state; q/p at cs is the window mean ± the row-to-row sd, as above. A least-squares line of the window means "
+        "against √I, taken to I → 0, gives the quasi-static q/p with "
+        "the intercept's standard error (n − 2 degrees of freedom), and φ from it (triaxial compression: sin φ = 3η/(6 + η), η = q/p; "
+        "its se to first order).\n\n";
+  validation::MarkdownTable t({"μ", "run", "strain rate (s⁻¹)", "d (mm)", "ρ (kg/m³)", "p at cs (kPa)", "I", "√I", "q/p at cs",
+                               "φ from q/p (°)", "note"});
+  for (const RateSeries& s : series) {
+    for (const RatePoint& p : s.points) {
+      const ShearRun& r = *p.run;
+      const bool has = r.summary && r.summary->q_over_p.n;
+      t.row({number(s.mu), r.run + " (" + p.study + ")", number(r.rate_per_s), fixed(1e3 * r.diameter_m, 3), number(r.density_kg_per_m3),
+             has ? fixed(r.summary->p_Pa.mean / 1e3, 1) : "—", std::isfinite(p.inertial) ? validation::significant(p.inertial, 3) : "—",
+             std::isfinite(p.inertial) ? validation::significant(std::sqrt(p.inertial), 3) : "—", has ? mean_sd(r.summary->q_over_p, 3) : "—",
+             has ? fixed(validation::compression_friction_deg(r.summary->q_over_p.mean), 2) : "—",
+             !r.summary ? r.note : r.held ? "" : "left out of the fit: " + r.note.substr(0, r.note.size() >= 2 ? r.note.size() - 2 : 0)});
+    }
+    if (s.fit)
+      t.row({number(s.mu), "**I → 0** (fit of " + std::to_string(s.fit->n) + " points)", "0", "", "", "", "0", "0",
+             "**" + (s.fit->n > 2 ? validation::mean_pm_sd(s.fit->intercept, s.fit->intercept_se) : fixed(s.fit->intercept, 3)) + "**",
+             "**" + (s.fit->n > 2 ? validation::mean_pm_sd(s.phi_deg, s.phi_se_deg) : fixed(s.phi_deg, 2)) + "**", s.problems});
+    else
+      t.row({number(s.mu), "I → 0", "—", "", "", "", "", "", "—", "—", s.problems});
+  }
+  md << t.text() << "\n";
+  for (const RateSeries& s : series) {
+    if (!s.fit) {
+      md << "μ = " << number(s.mu) << ": " << s.problems << ".\n\n";
+      continue;
+    }
+    const validation::LineFit& f = *s.fit;
+    const RatePoint* fastest = nullptr;  // the fastest point used (the rate the table above is at)
+    for (const RatePoint& p : s.points)
+      if (p.run->summary && p.run->held && std::isfinite(p.inertial) && p.run->summary->q_over_p.n) {
+        fastest = &p;
+        break;
+      }
+    md << "μ = " << number(s.mu) << ": q/p = " << validation::significant(f.intercept, 3) << " + " << validation::significant(f.slope, 3)
+       << " √I over " << f.n << " rates (R² = " << fixed(f.r_squared, 3) << ")";
+    if (fastest) {
+      const double at = fastest->run->summary->q_over_p.mean;
+      md << "; the quasi-static q/p is " << fixed(100 * (f.intercept / at - 1), 1) << " % from the " << number(fastest->run->rate_per_s)
+         << " s⁻¹ value (" << fixed(at, 3) << "), φ " << fixed(s.phi_deg, 2) << "° against "
+         << fixed(validation::compression_friction_deg(at), 2) << "°";
+    }
+    if (f.n > 2)
+      md << ". The standard error rests on " << f.n - 2 << " degree(s) of freedom: a 95 % interval is ± "
+         << validation::significant(validation::t_quantile(0.975, f.n - 2), 3) << " se (± " << validation::significant(validation::t_quantile(0.975, f.n - 2) * f.intercept_se, 2)
+         << " in q/p)";
+    md << (s.problems.empty() ? ". q/p changes monotonically with I." : ". ⚠ " + s.problems + ".") << "\n\n";
+  }
+  md << "![critical q/p against the square root of the inertial number, with the fits](rates.png)\n";
+  return md.str();
+}
+
 }  // namespace
 
-int critical_state(const Manifest& manifest, const std::string& results, const std::string& out) {
-  constexpr double cs_to = 0.4;
-  const std::vector<ShearRun> runs = shear_runs(manifest, cs_to);
+int critical_state(const Manifest& manifest, const std::string& results, const std::string& out, const std::string& ensemble,
+                   const std::string& rates) {
+  constexpr double cs_from = 0.3, cs_to = 0.4;
+  const std::vector<ShearRun> runs = shear_runs(manifest, results, cs_to);
   const ShearRun* through = compression_peak(runs);
   std::size_t finished = 0;
   for (const ShearRun& r : runs) finished += r.summary.has_value();
   // The settings the table quotes, from a finished run's resolved scene.
   std::string settings = "Drained shear at constant p of the dense sample (`scenes/tests/constant_p_shear.yaml`).";
   for (const ManifestLine& l : manifest.lines)
-    if (l.test != "-" && validation::is_complete(l.result)) {
-      const RunFile f = read_run(l.result);
+    if (l.test != "-" && validation::is_complete(validation::result_under(results, l))) {
+      const RunFile f = read_run(validation::result_under(results, l));
       if (!f.scene) continue;
       const dem::StageConfig& st = f.scene->stages.back();
       settings = "Drained shear of the dense sample at constant p = " + number(st.control.constraint.mean_stress_Pa / 1e3) +
@@ -307,6 +586,23 @@ int critical_state(const Manifest& manifest, const std::string& results, const s
                  std::to_string(runs.size()) + " runs finished.";
       break;
     }
+  // The ensemble and the rates studies, each from its own folder (a folder without a manifest is
+  // an error: make_section.sh passes only folders that have one).
+  std::vector<ShearRun> ensemble_runs, rate_runs;
+  std::vector<EnsembleGroup> groups;
+  std::vector<RateSeries> series;
+  std::string extra;
+  if (!ensemble.empty()) {
+    const Manifest m = read_manifest(ensemble);
+    ensemble_runs = shear_runs(m, ensemble, cs_to);
+    groups = ensemble_groups(ensemble_runs);
+    extra += ensemble_section(groups, runs, relative_paths(ensemble, ensemble), validation::samples_of(m.lines).size(), cs_from, cs_to);
+  }
+  if (!rates.empty()) {
+    rate_runs = shear_runs(read_manifest(rates), rates, cs_to);
+    series = rate_series(rate_runs, runs, "rates study", "table above");
+    extra += rates_section(series, relative_paths(rates, rates));
+  }
   validation::GnuplotValues values;
   values.number("has_compression_peak", through ? 1 : 0);
   double largest = 0.1;  // the pi-plane's half-width: the largest radius drawn, with a margin
@@ -315,19 +611,38 @@ int critical_state(const Manifest& manifest, const std::string& results, const s
   values.number("pi_r", std::ceil(11 * largest) / 10);
   values.number("runs_finished", static_cast<double>(finished));
   values.number("runs_total", static_cast<double>(runs.size()));
+  values.number("has_ensemble", groups.empty() ? 0 : 1);
+  values.number("ensemble_samples", ensemble.empty() ? 0 : static_cast<double>(validation::samples_of(read_manifest(ensemble).lines).size()));
+  const validation::Table qs = rates_quasi_static_data(series);
+  values.number("has_rates", qs.size() ? 1 : 0);
+  values.number("rate_series_n", static_cast<double>(series.size()));
+  for (std::size_t k = 0; k < series.size(); ++k) {
+    const std::string i = std::to_string(k + 1);
+    values.number("rate_mu_" + i, series[k].mu);
+    values.number("rate_fitted_" + i, series[k].fit ? 1 : 0);
+    values.number("rate_intercept_" + i, series[k].fit ? series[k].fit->intercept : NAN);
+    values.number("rate_slope_" + i, series[k].fit ? series[k].fit->slope : NAN);
+    values.number("rate_intercept_se_" + i, series[k].fit ? series[k].fit->intercept_se : NAN);
+  }
   try {
     fs::create_directories(out);
-    dem::write_file_atomically((fs::path(out) / "table.md").string(), critical_state_table(runs, through, settings));
+    dem::write_file_atomically((fs::path(out) / "table.md").string(), critical_state_table(runs, through, settings, extra));
     dem::write_file_atomically((fs::path(out) / "critical_state.dat").string(), critical_state_data(runs).text());
     dem::write_file_atomically((fs::path(out) / "pi_plane.dat").string(), pi.text());
-    dem::write_file_atomically((fs::path(out) / "values.gp").string(),
-                               values.text_file("Written by compare-runs critical-state from " + relative_paths(results, results)));
+    dem::write_file_atomically((fs::path(out) / "ensemble.dat").string(), ensemble_data(groups).text());
+    dem::write_file_atomically((fs::path(out) / "rates.dat").string(), rates_data(series).text());
+    dem::write_file_atomically((fs::path(out) / "rates_qs.dat").string(), qs.text());
+    std::string from = relative_paths(results, results);
+    if (!ensemble.empty()) from += ", --ensemble " + relative_paths(ensemble, ensemble);
+    if (!rates.empty()) from += ", --rates " + relative_paths(rates, rates);
+    dem::write_file_atomically((fs::path(out) / "values.gp").string(), values.text_file("Written by compare-runs critical-state from " + from));
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 1;
   }
-  for (const ShearRun& r : runs)
-    if (!r.summary) std::fprintf(stderr, "note: %s: %s\n", r.run.c_str(), r.note.c_str());
+  for (const std::vector<ShearRun>* set : std::vector<const std::vector<ShearRun>*>{&runs, &ensemble_runs, &rate_runs})
+    for (const ShearRun& r : *set)
+      if (!r.summary) std::fprintf(stderr, "note: %s: %s\n", r.run.c_str(), r.note.c_str());
   std::printf("critical-state: %zu of %zu runs finished -> %s\n", finished, runs.size(), (fs::path(out) / "table.md").c_str());
   return 0;
 }

@@ -3,7 +3,7 @@
 //   compare-runs stability RESULTS_DIR OUT_DIR [--report-only]
 //   compare-runs decisions RESULTS_DIR OUT_DIR [--reference NAME] [--references FILE] [--ensemble PAPER_RESULTS]
 //                          [--baseline-results DIR]
-//   compare-runs critical-state RESULTS_DIR OUT_DIR
+//   compare-runs critical-state RESULTS_DIR OUT_DIR [--ensemble DIR] [--rates DIR]
 //   compare-runs liquefaction OUT_DIR RESULTS_DIR...
 // Each mode is a file of compare_runs/ (what it writes: modes.hpp); this one parses the arguments
 // (every sub-command answers --help) and calls it.
@@ -68,6 +68,13 @@ int main(int argc, char** argv) {
                                   "peak and critical state of each constant-p shear, the peaks in the pi-plane: table.md, "
                                   "critical_state.dat, pi_plane.dat, values.gp",
                                   critical_f);
+  std::string critical_ensemble, critical_rates;
+  critical->add_option("--ensemble", critical_ensemble,
+                       "an ensemble study's results (pipeline/studies/critical_state_ensemble.yaml): mean ± sd over its samples "
+                       "of each loading and μ (ensemble.dat)");
+  critical->add_option("--rates", critical_rates,
+                       "a rates study's results (pipeline/studies/critical_state_rates.yaml): critical q/p against sqrt(I) with "
+                       "this study's runs of the same μ, taken to I -> 0 (rates.dat, rates_qs.dat)");
 
   std::string liquefaction_out;
   std::vector<std::string> liquefaction_folders;
@@ -106,7 +113,16 @@ int main(int argc, char** argv) {
     if (*convergence) return compare_runs::convergence(manifest, f.results, f.out, reference);
     if (*stability) return compare_runs::stability(manifest, f.results, f.out, report_only);
     if (*decisions) return compare_runs::decisions(manifest, f.results, f.out, references, baseline, ensemble, baseline_results);
-    if (*critical) return compare_runs::critical_state(manifest, f.results, f.out);
+    if (*critical) {
+      for (const std::string& dir : {critical_ensemble, critical_rates})
+        if (!dir.empty()) try {
+            compare_runs::read_manifest(dir);
+          } catch (const std::exception& e) {
+            std::fprintf(stderr, "error: %s\n", e.what());
+            return 2;
+          }
+      return compare_runs::critical_state(manifest, f.results, f.out, critical_ensemble, critical_rates);
+    }
     return 2;  // not reached: parse() requires one sub-command
   } catch (const std::exception& e) {  // a result that cannot be read, a folder that cannot be made
     std::fprintf(stderr, "error: %s\n", e.what());

@@ -29,8 +29,14 @@ int decisions(const Manifest& manifest, const std::string& results, const std::s
               const std::string& baseline, const std::string& ensemble, const std::string& baseline_results = "");
 
 // Peak and critical state of each constant-p shear and the peaks in the pi-plane: OUT/table.md,
-// critical_state.dat, pi_plane.dat and values.gp.
-int critical_state(const Manifest& manifest, const std::string& results, const std::string& out);
+// critical_state.dat, pi_plane.dat and values.gp. `ensemble` (optional): an ensemble study's
+// results (pipeline/studies/critical_state_ensemble.yaml), the mean and sd over its samples of each
+// loading and μ (ensemble.dat). `rates` (optional): a rates study's results
+// (pipeline/studies/critical_state_rates.yaml), the critical q/p of compression against sqrt(I)
+// with the main study's runs of the same μ, fitted and taken to I -> 0 (rates.dat, rates_qs.dat).
+// ensemble.dat, rates.dat and rates_qs.dat are written either way (no rows without the option).
+int critical_state(const Manifest& manifest, const std::string& results, const std::string& out, const std::string& ensemble = "",
+                   const std::string& rates = "");
 
 // CSR against N_L and r_u against cycles of the undrained cyclic tests of every folder, the holds
 // beside them: OUT/table.md, csr_nl.dat, ru.dat and values.gp.

@@ -50,6 +50,10 @@ RunFile read_run(const std::string& result) {
     for (const dem::StageConfig& st : f.scene->stages)
       if (dem::h5::has_attribute(h, "stage_end_" + st.name)) f.stage_end[st.name] = dem::h5::get_string_attribute(h, "stage_end_" + st.name);
   }
+  if (dem::h5::exists(h, "particles/all/radius")) {
+    std::size_t cols = 0;
+    f.radius_m = dem::h5::read<double>(h, "particles/all/radius", cols);
+  }
   return f;
 }
 

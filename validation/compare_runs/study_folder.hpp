@@ -34,12 +34,13 @@ double wall_time(const std::string& result);
 // and message go into `run`.
 void read_stop(const std::string& result, validation::CaseRun& run);
 
-// A result's time series, resolved scene and the stage_end_<stage> attributes that say why each
-// stage ended.
+// A result's time series, resolved scene, the stage_end_<stage> attributes that say why each
+// stage ended, and its spheres' radii (H5MD /particles/all/radius; empty if it has none).
 struct RunFile {
   validation::Columns series;
   std::optional<dem::SceneConfig> scene;
   std::map<std::string, std::string> stage_end;  // stage name -> stage_end_<name>
+  std::vector<double> radius_m;                  // [m]
 };
 
 // A complete result; throws naming the file if it cannot be read.

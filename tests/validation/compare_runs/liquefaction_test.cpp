@@ -1,0 +1,97 @@
+// compare-runs liquefaction on an ensemble folder (seed<N>/, as the pipeline writes a study with
+// `seeds`): per density and CSR the median N_L over the samples with its range and the counts
+// liquefied / censored, a median that is itself censored written "> N", and every test in the
+// per-sample table with its seed. The results are hand-made HDF5 files whose N_L are set exactly.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "io/hdf5.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string bin = std::string(DEM_BINARY_DIR) + "/bin/compare-runs";
+constexpr double period_s = 0.02;  // the scene's cyclic period
+
+std::string read_file(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// A complete undrained cyclic test at `csr` (the shipped scene with its amplitude set, 2 CSR p0):
+// a consolidation row, then the cyclic stage from t = 0.1 s for `cycles` periods; it stopped on
+// r_u (liquefied) or ran to its duration (censored).
+void write_test(const fs::path& file, double csr, double cycles, bool liquefied) {
+  fs::create_directories(file.parent_path());
+  const std::string scene_file = std::string(DEM_SOURCE_DIR) + "/scenes/tests/undrained_cyclic.yaml";
+  std::string scene = read_file(scene_file);
+  const std::string amplitude = "amplitude: 2.0e4";
+  REQUIRE(scene.find(amplitude) != std::string::npos);
+  scene.replace(scene.find(amplitude), amplitude.size(), "amplitude: " + std::to_string(2 * csr * 1e5));
+  dem::h5::Handle f = dem::h5::create_file(file.string());
+  dem::h5::set_attribute(f, "status", std::string("complete"));
+  dem::h5::write_text(f, "scene_yaml", scene);
+  const double t0 = 0.1, t1 = t0 + cycles * period_s, ru1 = liquefied ? 0.95 : 0.4;
+  dem::h5::set_attribute(f, "stage_end_cyclic", liquefied ? "until.pore_pressure_ratio met at time " + std::to_string(t1) + " s"
+                                                           : std::string("duration reached"));
+  dem::h5::Handle g = dem::h5::create_group(f, "timeseries");
+  dem::h5::write<double>(g, "stage", {0, 1, 1}, 1, "1");
+  dem::h5::write<double>(g, "time", {0, t0, t1}, 1, "s");
+  dem::h5::write<double>(g, "p", {1e5, 1e5, 1e5 * (1 - ru1)}, 1, "Pa");
+  dem::h5::write<double>(g, "pore_pressure_ratio", {0, 0, ru1}, 1, "1");
+}
+
+}  // namespace
+
+TEST_CASE("compare-runs liquefaction: median and range of N_L over an ensemble's samples, censored ones as > N",
+          "[liquefaction][compare-runs]") {
+  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "compare_runs_liquefaction";
+  fs::remove_all(dir);
+  // CSR 0.02: seed 1 liquefied after 2 cycles, seeds 2 and 3 ran their 50 cycles without: the
+  // median is seed 2's or 3's, censored: "> 50.00"; the range 2.00 – > 50.00.
+  // CSR 0.05: 1, 3, 2 cycles, all liquefied: median 2.00, range 1.00 – 3.00.
+  const struct {
+    int seed;
+    double csr, cycles;
+    bool liquefied;
+  } tests[] = {{1, 0.02, 2, true}, {2, 0.02, 50, false}, {3, 0.02, 50, false}, {1, 0.05, 1, true}, {2, 0.05, 3, true}, {3, 0.05, 2, true}};
+  fs::create_directories(dir / "results");
+  std::ofstream runs(dir / "results" / "runs.tsv");
+  runs << "# variant\tdensity\ttest\trun\tresult\tstarts_from\tmay_fail\tsettings\tseed\n";
+  for (int s = 1; s <= 3; ++s)
+    runs << "-\tloose\t-\tseed" << s << "/loose_prepare\t/elsewhere/seed" << s << "/loose_prepare.h5\t-\t0\tas written\t" << s << "\n";
+  for (const auto& t : tests) {
+    std::ostringstream csr;
+    csr << t.csr;
+    const std::string run = "seed" + std::to_string(t.seed) + "/loose_csr" + csr.str();
+    // The manifest records where the pipeline wrote; compare-runs finds the file under the folder.
+    runs << "-\tloose\tcsr" << csr.str() << "\t" << run << "\t/elsewhere/" << run << ".h5\tseed" << t.seed
+         << "/loose_prepare\t0\tas written\t" << t.seed << "\n";
+    write_test(dir / "results" / ("seed" + std::to_string(t.seed)) / ("loose_csr" + csr.str() + ".h5"), t.csr, t.cycles, t.liquefied);
+  }
+  runs.close();
+  const std::string cmd = bin + " liquefaction " + (dir / "out").string() + " " + (dir / "results").string() + " > " +
+                          (dir / "log").string() + " 2>&1";
+  REQUIRE(std::system(cmd.c_str()) == 0);
+  const std::string table = read_file(dir / "out" / "table.md");
+  INFO(table);
+  CHECK(table.find("Samples: loose 3 (seeds 1, 2, 3)") != std::string::npos);
+  CHECK(table.find("| loose | 0.02 | 3 | 1 | 2 | > 50.00 (the median is censored) | 2.00 – > 50.00 |") != std::string::npos);
+  CHECK(table.find("| loose | 0.05 | 3 | 3 | 0 | 2.00 | 1.00 – 3.00 |") != std::string::npos);
+  CHECK(table.find("loose: 4 of 6 tests liquefied over 2 CSR(s).") != std::string::npos);
+  // Every sample's test, with its seed; a censored one as "> N".
+  CHECK(table.find("| seed2/loose_csr0.02 | 2 | 0.020 | 0.0200 | 100.00 | > 50.00 | not liquefied in 50.0 cycles |") != std::string::npos);
+  CHECK(table.find("| seed3/loose_csr0.05 | 3 | 0.050 | 0.0500 | 100.00 | 2.00 | liquefied: r_u ≥ 0.95 |") != std::string::npos);
+  // The figure's data: one row per density and CSR, the censored median's upper bound NaN (infinite).
+  const std::string summary = read_file(dir / "out" / "csr_nl_summary.dat");
+  INFO(summary);
+  CHECK(summary.find("\"loose_csr0.02\"\t1\t0.02\t3\t1\t2\t50\tNaN\t1\t2\t0\t50\t1") != std::string::npos);
+  CHECK(summary.find("\"loose_csr0.05\"\t1\t0.05\t3\t3\t0\t2\t2\t0\t1\t0\t3\t0") != std::string::npos);
+}
