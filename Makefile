@@ -24,7 +24,7 @@ LIQUEFACTION   ?= results/liquefaction_loose/paper results/liquefaction_medium/p
 CELL_STUDIES   ?= pipeline/studies/critical_state.yaml pipeline/studies/liquefaction_loose.yaml pipeline/studies/liquefaction_medium.yaml
 EXECUTOR    ?=                          # local or slurm (pipeline --executor); empty: the study files' executor key, else local
 
-.PHONY: all deps build tools examples example-samples install test kill-test slurm-test sanitize fuzz bench quick study report decisions decisions-report readings-report critical-state liquefaction samples samples-study cyclic-tests render clean
+.PHONY: all deps build tools examples example-samples install test kill-test slurm-test sanitize fuzz bench quick study report decisions decisions-report readings-report literature literature-report critical-state liquefaction samples samples-study cyclic-tests render clean
 
 # Everything: install, build the tools, run the full study (an ensemble of 5 samples per density,
 # reusing finished runs), validate it, draw the figures and write reports/index.md (the tests are
@@ -179,8 +179,21 @@ report: tools
 	reports/stability/make_section.sh $(BUILD)/bin $(STABILITY) reports/stability
 	-reports/critical_state/make_section.sh $(BUILD)/bin $(CRITICAL_STATE) reports/critical_state $(CRITICAL_STATE_ENSEMBLE) $(CRITICAL_STATE_RATES)
 	-reports/liquefaction/make_section.sh $(BUILD)/bin reports/liquefaction $(LIQUEFACTION)
+	-$(MAKE) --no-print-directory literature-report
 	$(BUILD)/bin/report --results $(RESULTS) --references reference_data/paper.yaml --out reports --sample $(strip $(SAMPLE)) \
 	  --baseline $(BASELINE) --convergence $(CONVERGENCE) --decisions $(DECISIONS) --stability $(STABILITY) $(REPORT_SOURCE)
+
+# Published DEM values (reference_data/literature.yaml) against the critical-state ensemble
+# (pipeline/studies/critical_state_ensemble.yaml, run by `make critical-state`); a study not run yet
+# is said so. `literature` runs the study first.
+LITERATURE_RESULTS ?= results/critical_state_ensemble/paper
+literature: tools
+	$(BUILD)/bin/pipeline pipeline/studies/critical_state_ensemble.yaml --profile paper -j $(JOBS) $(if $(strip $(EXECUTOR)),--executor $(strip $(EXECUTOR)))
+	$(MAKE) --no-print-directory literature-report
+literature-report: tools
+	@if [ -f $(LITERATURE_RESULTS)/runs.tsv ]; then mkdir -p reports/literature && \
+	  $(BUILD)/bin/validate --results $(LITERATURE_RESULTS) --references reference_data/literature.yaml --out reports/literature; \
+	else echo "literature: no results in $(LITERATURE_RESULTS) yet (make literature)"; fi
 
 # The paper's open choices (SPEC section 7): each reading one at a time from the baseline, 3
 # samples of 1,000 spheres (pipeline/studies/decisions.yaml), then the report's section on them.

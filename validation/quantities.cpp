@@ -126,6 +126,12 @@ const std::map<std::string, Quantity>& registry() {
           if (!r.prepared) return {std::nullopt, "no prepared sample"};
           return {r.sample.at("coordination_number"), "without rattlers: " + std::to_string(r.sample.at("coordination_number_mechanical"))};
         }}},
+      {"coordination_without_rattlers_after_preparation",
+       {preparation, [](const QuantityRequest&, const DensityResults& r) -> Measured {
+          if (!r.prepared) return {std::nullopt, "no prepared sample"};
+          // (2 Nc - N1) / (Np - N0 - N1): the spheres with no contact or one leave the count (Thornton 2000).
+          return {r.sample.at("coordination_number_mechanical"), "rattlers included: " + std::to_string(r.sample.at("coordination_number"))};
+        }}},
       {"cell_side_cm_after_preparation",
        {preparation, [](const QuantityRequest&, const DensityResults& r) -> Measured {
           if (!r.prepared) return {std::nullopt, "no prepared sample"};

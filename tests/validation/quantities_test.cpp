@@ -78,7 +78,23 @@ TEST_CASE("peak and critical-state friction angles and void ratio of drained she
   }
 }
 
+TEST_CASE("the coordination of a prepared sample with and without its rattlers", "[quantities]") {
+  validation::DensityResults r;
+  SECTION("no prepared sample: no value") {
+    CHECK_FALSE(compute("coordination_without_rattlers_after_preparation", r).value);
+  }
+  SECTION("the mechanical coordination is read, not the one with rattlers") {
+    // 10 spheres, 2 of them with no contact and 1 with one contact, 25 contacts: 2 Nc / Np = 5 and
+    // (2 Nc - N1) / (Np - N0 - N1) = 49 / 7 = 7, as the engine's columns hold them.
+    r.prepared = true;
+    r.sample = {{"coordination_number", 5.0}, {"coordination_number_mechanical", 49.0 / 7.0}};
+    CHECK(compute("coordination_without_rattlers_after_preparation", r).value == Approx(7).epsilon(1e-12));
+    CHECK(compute("coordination_after_preparation", r).value == Approx(5).epsilon(1e-12));
+  }
+}
+
 TEST_CASE("what each quantity reads decides which runs a row needs", "[quantities]") {
+  CHECK(validation::reads_of("coordination_without_rattlers_after_preparation") == Reads::Preparation);
   CHECK(validation::reads_of("void_ratio_after_preparation") == Reads::Preparation);
   CHECK(validation::reads_of("cell_side_cm_after_preparation") == Reads::Preparation);
   CHECK(validation::reads_of("ev_growth") == Reads::Tests);

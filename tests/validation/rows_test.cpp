@@ -84,6 +84,24 @@ TEST_CASE("references: paper.yaml's quick rows are its rows with a quick entry",
   for (const validation::Row& r : quick.rows) CHECK((r.quantity == "void_ratio_after_preparation" || r.quantity == "coordination_after_preparation"));
 }
 
+TEST_CASE("references: literature.yaml reads, every row with its source and reason", "[references]") {
+  // Counted from the file's text: each row starts with "  - name:" and names a source.
+  const std::string file = std::string(DEM_SOURCE_DIR) + "/reference_data/literature.yaml";
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::size_t rows = 0;
+  for (std::size_t at = text.str().find("\n  - name:"); at != std::string::npos; at = text.str().find("\n  - name:", at + 1)) ++rows;
+  const validation::References literature = validation::read_references(file, "paper");
+  CHECK(literature.label == "literature");
+  REQUIRE(literature.rows.size() == rows);
+  for (const validation::Row& r : literature.rows) {
+    CHECK_FALSE(r.source.empty());
+    CHECK_FALSE(r.reason.empty());
+    CHECK(r.density == "dense");  // the rows read the critical-state ensemble's only density
+  }
+}
+
 TEST_CASE("references: a bad row is refused naming the file, the row and the key, with what is allowed", "[references]") {
   SECTION("an unknown key lists a row's keys") {
     const std::string file = reference_file("typo.yaml", "  - {name: peak, quantity: peak_friction_angle, reference: 35, check: within, tolerence: 1, source: lab, reason: r}\n");
