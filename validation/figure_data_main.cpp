@@ -28,6 +28,8 @@
 #include "figures.hpp"
 #include "settings.hpp"
 #include "format.hpp"
+#include "markdown_table.hpp"
+#include "quantities.hpp"
 #include "io/atomic_file.hpp"
 #include "io/hdf5.hpp"
 #include "io/state_io.hpp"
@@ -307,12 +309,20 @@ struct Preparation {
   double wall_s = 0, particles = 0;
 };
 
-// mean ± sd of a column of the group's preparations ("0.558 ± 0.005"; one value: "0.558").
+// A column of the group's preparations: one sample, the value with `digits` decimals ("0.558");
+// several, mean ± sd with the digits from the scatter (the sd to two significant digits, the mean
+// to the same decimal: "0.5581 ± 0.0047"; format.hpp).
 std::string mean_sd(const std::vector<double>& v, int digits) {
   const validation::Spread s = validation::spread(v);
-  char buf[96];
-  if (s.n < 2) std::snprintf(buf, sizeof buf, "%.*f", digits, s.mean);
-  else std::snprintf(buf, sizeof buf, "%.*f ± %.*f", digits, s.mean, digits, s.sd);
+  if (s.n < 2 || !(s.sd > 0)) return validation::fixed(s.mean, digits);
+  return validation::mean_pm_sd(s.mean, s.sd);
+}
+
+// A signed value with `digits` decimals ("+0.012").
+std::string signed_fixed(double x, int digits) {
+  if (!std::isfinite(x)) return "—";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%+.*f", digits, x);
   return buf;
 }
 
@@ -372,18 +382,20 @@ int samples_table(const std::vector<std::string>& folders, const std::string& re
     return v;
   };
   const auto mean = [](const std::vector<double>& v) { return validation::spread(v).mean; };
-  const auto side = [](const Preparation& p) {  // cm, scaled to the paper's 8,000 spheres
+  const auto side = [](const Preparation& p) {  // cm, scaled to the paper's sample size
     const double v = p.last.at("cell_length_1") * p.last.at("cell_length_2") * p.last.at("cell_length_3");
-    return 100 * std::cbrt(p.particles > 0 ? v * 8000 / p.particles : v);
+    return 100 * std::cbrt(p.particles > 0 ? v * validation::paper_particles / p.particles : v);
   };
   const bool deltas = !baseline.empty();
-  std::string header = "| sample | particles | ";
-  if (!per_sample) header += "seeds | ";
-  header += "e0 (paper) | Δe0 | cell side cm, 8,000-sphere equivalent (paper) | CN (paper) | ΔCN |";
-  if (deltas) header += " Δe0 vs " + baseline + " | ΔCN vs " + baseline + " |";
-  header += " CN w/o rattlers | sliding % | mean f_n (N) | unbalanced | steps | wall time (s) |\n";
-  std::fputs(header.c_str(), stdout);
-  std::printf("|---|---|%s---|---|---|---|---|%s---|---|---|---|---|---|\n", per_sample ? "" : "---|", deltas ? "---|---|" : "");
+  std::vector<std::string> headings = {"sample", "particles"};
+  if (!per_sample) headings.push_back("seeds");
+  const std::string side_heading =
+      "cell side cm, " + validation::thousands(std::lround(validation::paper_particles)) + "-sphere equivalent (paper)";
+  for (const std::string& h : {std::string("e0 (paper)"), std::string("Δe0"), side_heading, std::string("CN (paper)"), std::string("ΔCN")})
+    headings.push_back(h);
+  if (deltas) headings.push_back("Δe0 vs " + baseline), headings.push_back("ΔCN vs " + baseline);
+  for (const char* h : {"CN w/o rattlers", "sliding %", "mean f_n (N)", "unbalanced", "steps", "wall time (s)"}) headings.push_back(h);
+  validation::MarkdownTable table(headings);
   for (const std::string& key : order) {
     const auto& g = groups[key];
     const Preparation& first = *g.front();
@@ -396,28 +408,31 @@ int samples_table(const std::vector<std::string>& folders, const std::string& re
     std::string label = d;
     if (!first.group.empty()) label += ", " + first.group;
     if (per_sample && !first.sample.empty()) label += ", " + first.sample;
-    std::string versus;
+    std::vector<std::string> cells = {label, validation::fixed(first.particles, 0)};
+    if (!per_sample) cells.push_back(std::to_string(g.size()));
+    cells.push_back(mean_sd(e, 3) + " (" + validation::fixed(e_paper, 2) + ")");
+    cells.push_back(signed_fixed(mean(e) - e_paper, 3));
+    cells.push_back(mean_sd(values(g, side), 2) + " (" + validation::fixed(l_paper, 1) + ")");
+    cells.push_back(mean_sd(z, 2) + " (" + validation::fixed(z_paper, 2) + ")");
+    cells.push_back(signed_fixed(mean(z) - z_paper, 2));
     if (deltas) {
       const std::string base_key = d + "\t" + baseline + "\t" + key.substr(key.rfind('\t') + 1);
       if (groups.count(base_key)) {
-        char buf[64];
-        std::snprintf(buf, sizeof buf, " %+.4f | %+.3f |", mean(e) - mean(values(groups[base_key], [](const Preparation& p) { return p.last.at("void_ratio"); })),
-                      mean(z) - mean(values(groups[base_key], [](const Preparation& p) { return p.last.at("coordination_number"); })));
-        versus = buf;
+        cells.push_back(signed_fixed(mean(e) - mean(values(groups[base_key], [](const Preparation& p) { return p.last.at("void_ratio"); })), 4));
+        cells.push_back(signed_fixed(mean(z) - mean(values(groups[base_key], [](const Preparation& p) { return p.last.at("coordination_number"); })), 3));
       } else {
-        versus = " | |";
+        cells.push_back(""), cells.push_back("");
       }
     }
-    std::printf("| %s | %.0f | %s%s (%.2f) | %+.3f | %s (%.1f) | %s (%.2f) | %+.2f |%s %s | %s | %s | %s | %s | %s |\n", label.c_str(),
-                first.particles, per_sample ? "" : (std::to_string(g.size()) + " | ").c_str(), mean_sd(e, 3).c_str(), e_paper,
-                mean(e) - e_paper, mean_sd(values(g, side), 2).c_str(), l_paper, mean_sd(z, 2).c_str(), z_paper, mean(z) - z_paper,
-                versus.c_str(), mean_sd(values(g, [](const Preparation& p) { return p.last.at("coordination_number_mechanical"); }), 2).c_str(),
-                mean_sd(values(g, [](const Preparation& p) { return 100 * p.last.at("sliding_fraction"); }), 1).c_str(),
-                mean_sd(values(g, [](const Preparation& p) { return p.last.at("mean_normal_force"); }), 3).c_str(),
-                mean_sd(values(g, [](const Preparation& p) { return p.last.at("unbalanced_force_ratio"); }), 5).c_str(),
-                mean_sd(values(g, [](const Preparation& p) { return p.last.at("step"); }), 0).c_str(),
-                mean_sd(values(g, [](const Preparation& p) { return p.wall_s; }), 0).c_str());
+    cells.push_back(mean_sd(values(g, [](const Preparation& p) { return p.last.at("coordination_number_mechanical"); }), 2));
+    cells.push_back(mean_sd(values(g, [](const Preparation& p) { return 100 * p.last.at("sliding_fraction"); }), 1));
+    cells.push_back(mean_sd(values(g, [](const Preparation& p) { return p.last.at("mean_normal_force"); }), 3));
+    cells.push_back(mean_sd(values(g, [](const Preparation& p) { return p.last.at("unbalanced_force_ratio"); }), 5));
+    cells.push_back(mean_sd(values(g, [](const Preparation& p) { return p.last.at("step"); }), 0));
+    cells.push_back(mean_sd(values(g, [](const Preparation& p) { return p.wall_s; }), 0));
+    table.row(cells);
   }
+  std::fputs(table.text().c_str(), stdout);
   return 0;
 }
 

@@ -29,6 +29,7 @@
 #include "decisions_file.hpp"
 #include "format.hpp"
 #include "manifest.hpp"
+#include "markdown_table.hpp"
 #include "row_runs.hpp"
 #include "rows.hpp"
 #include "study_results.hpp"
@@ -37,7 +38,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-using validation::cell;
 using validation::number;
 using validation::Verdict;
 
@@ -113,6 +113,9 @@ std::string interval(const validation::RowResult& e) {
   return "[" + validation::to_scatter(*e.spread.low, e.spread.sd) + ", " + validation::to_scatter(*e.spread.high, e.spread.sd) + "]";
 }
 
+// "3 of 5": the samples in which the row holds, of those with a value.
+std::string holds_in(const validation::RowResult& e) { return std::to_string(e.holds) + " of " + std::to_string(e.valued); }
+
 const char* mark(Verdict v) {
   return v == Verdict::Consistent ? "✅ consistent" : v == Verdict::Inconsistent ? "❌ inconsistent" : "— not judged";
 }
@@ -146,7 +149,8 @@ nlohmann::ordered_json json_row(const Judged& j) {
   return row;
 }
 
-std::string markdown_row(const Judged& j) {
+// The row's cells in validation.md, in the order of validation_headings().
+std::vector<std::string> markdown_cells(const Judged& j) {
   const validation::Row& r = j.row;
   const validation::RowResult& e = j.result;
   std::string values;
@@ -154,11 +158,13 @@ std::string markdown_row(const Judged& j) {
     const auto& v = e.samples[k].measured.value;
     values += (k ? ", " : "") + (e.valued > 1 && v ? validation::to_scatter(*v, e.spread.sd) : number_or_dash(v));
   }
-  std::ostringstream md;
-  md << "| " << cell(r.name) << " | " << statement(r) << " | " << values << " | " << mean_sd_n(e) << " | " << interval(e) << " | "
-     << e.holds << " of " << e.valued << " | " << (r.rule == "majority" ? "holds in > half" : "interval") << " | " << mark(e.verdict)
-     << " | " << (r.must_pass ? "yes" : "no") << " | " << cell(r.source) << " | " << cell(r.reason) << " |\n";
-  return md.str();
+  return {r.name, statement(r), values, mean_sd_n(e), interval(e), holds_in(e), r.rule == "majority" ? "holds in > half" : "interval",
+          mark(e.verdict), r.must_pass ? "yes" : "no", r.source, r.reason};
+}
+
+std::vector<std::string> validation_headings(const std::string& label) {
+  return {"check", label, "per sample", "mean ± sd (n)", "95 % interval of one sample", "holds in", "rule", "verdict", "must pass",
+          "source", "reason"};
 }
 
 struct Counts {
@@ -171,16 +177,14 @@ std::string verdicts_text(const std::vector<Judged>& judged, const Counts& c, st
                           std::size_t missing_samples, const std::string& label, bool with_causes,
                           const std::vector<validation::DecisionsFile>& findings) {
   // Each row not consistent, with the decisions study's cause when --decisions gave its findings.
-  std::ostringstream misses;
+  std::vector<std::string> headings = {"row", "verdict", label, "interval of one sample", "holds in"};
+  if (with_causes) headings.push_back("cause");
+  validation::MarkdownTable misses(headings);
   for (const Judged& j : judged) {
     if (j.result.verdict == Verdict::Consistent) continue;
-    misses << "| " << cell(j.row.name) << " | " << mark(j.result.verdict) << " | " << statement(j.row) << " | " << interval(j.result)
-           << " | " << j.result.holds << " of " << j.result.valued << " |";
-    if (with_causes) {
-      const std::string text = validation::cause_text(findings, j.row.name);  // the largest size's, named when several
-      misses << " " << cell(text) << " |";
-    }
-    misses << "\n";
+    std::vector<std::string> cells = {j.row.name, mark(j.result.verdict), statement(j.row), interval(j.result), holds_in(j.result)};
+    if (with_causes) cells.push_back(validation::cause_text(findings, j.row.name));  // the largest size's, named when several
+    misses.row(cells);
   }
   auto n = [&](Verdict v) { return c.verdicts.count(v) ? c.verdicts.at(v) : 0; };
   std::ostringstream out;
@@ -194,19 +198,16 @@ std::string verdicts_text(const std::vector<Judged>& judged, const Counts& c, st
     out << "\n**Incomplete:** " << missing << " result file(s) missing or not complete"
         << (missing_samples ? ", and " + std::to_string(missing_samples) + " sample(s) that `runs.tsv` lists have no folder" : std::string())
         << "; the rows are judged on what is there.\n";
-  if (!misses.str().empty() && with_causes && findings.size() > 1)
+  if (misses.rows() && with_causes && findings.size() > 1)
     out << "\nThe rows that are not consistent, and what the decisions studies found for each (each its own ensemble: "
            "`make decisions`, `make readings-report`): the finding of the largest size that judged the row, that size first "
-           "(from the file's own record; \"size not recorded\": a file written before it recorded its size):\n\n| row | verdict | "
-        << label << " | interval of one sample | holds in | cause |\n|---|---|---|---|---|---|\n"
-        << misses.str();
-  else if (!misses.str().empty() && with_causes)
+           "(from the file's own record; \"size not recorded\": a file written before it recorded its size):\n\n"
+        << misses.text();
+  else if (misses.rows() && with_causes)
     out << "\nThe rows that are not consistent, and what the decisions study found for each (its own ensemble, "
-           "`make decisions`):\n\n| row | verdict | " << label << " | interval of one sample | holds in | cause |\n|---|---|---|---|---|---|\n"
-        << misses.str();
-  else if (!misses.str().empty())
-    out << "\nThe rows that are not consistent:\n\n| row | verdict | " << label << " | interval of one sample | holds in |\n|---|---|---|---|---|\n"
-        << misses.str();
+           "`make decisions`):\n\n" << misses.text();
+  else if (misses.rows())
+    out << "\nThe rows that are not consistent:\n\n" << misses.text();
   return out.str();
 }
 
@@ -279,12 +280,10 @@ int main(int argc, char** argv) {
   json["missing_results"] = nlohmann::json::array();
   for (const std::string& m : missing) json["missing_results"].push_back(fs::relative(m, o.results).string());
   json["rows"] = nlohmann::json::array();
-  std::ostringstream md;
-  md << "| check | " << refs.label << " | per sample | mean ± sd (n) | 95 % interval of one sample | holds in | rule | verdict | must pass | source | reason |\n"
-     << "|---|---|---|---|---|---|---|---|---|---|---|\n";
+  validation::MarkdownTable md(validation_headings(refs.label));
   for (const Judged& j : judged) {
     json["rows"].push_back(json_row(j));
-    md << markdown_row(j);
+    md.row(markdown_cells(j));
   }
   json["consistent"] = consistent;
   json["inconsistent"] = inconsistent;
@@ -298,7 +297,7 @@ int main(int argc, char** argv) {
                                verdicts_text(judged, count, results.samples().size(), missing.size(), missing_samples.size(),
                                              refs.label, !o.decisions.empty(), findings));
     dem::write_file_atomically((fs::path(o.out) / "validation.json").string(), json.dump(2) + "\n");
-    dem::write_file_atomically((fs::path(o.out) / "validation.md").string(), md.str());
+    dem::write_file_atomically((fs::path(o.out) / "validation.md").string(), md.text());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 1;

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "critical_state.hpp"
+#include "format.hpp"
 
 namespace validation {
 
@@ -140,9 +141,10 @@ const std::map<std::string, Quantity>& registry() {
           const double v = r.sample.at("cell_length_1") * r.sample.at("cell_length_2") * r.sample.at("cell_length_3");
           const auto n = r.sample.find("particles");
           if (n == r.sample.end() || n->second <= 0) return {100 * std::cbrt(v), "cube root of the cell volume (sphere count unknown)"};
-          if (n->second == 8000) return {100 * std::cbrt(v), "cube root of the cell volume"};
-          return {100 * std::cbrt(v * 8000 / n->second), "cube root of the cell volume, scaled to 8,000 spheres from " +
-                                                         std::to_string(static_cast<long>(n->second))};
+          if (n->second == paper_particles) return {100 * std::cbrt(v), "cube root of the cell volume"};
+          return {100 * std::cbrt(v * paper_particles / n->second),
+                  "cube root of the cell volume, scaled to " + thousands(std::lround(paper_particles)) + " spheres from " +
+                      std::to_string(static_cast<long>(n->second))};
         }}},
       {"qp_strong_fabric_slope",
        {tests, [](const QuantityRequest&, const DensityResults& r) -> Measured {

@@ -8,6 +8,11 @@
 
 namespace validation {
 
+// The paper's sample size: a cell side is scaled to it, (paper_particles / N)^(1/3) for a sample of
+// N spheres, so that smaller samples compare (cell_side_cm_after_preparation, the samples table,
+// the report's Fig. 2 note).
+constexpr double paper_particles = 8000;
+
 struct QuantityRequest {
   std::string quantity, density;
   int cycle = 0, from_cycle = 0, to_cycle = 0;

@@ -11,6 +11,7 @@
 #include "analysis/measurements.hpp"
 #include "ensemble.hpp"
 #include "format.hpp"
+#include "markdown_table.hpp"
 #include "quantities.hpp"
 
 namespace validation {
@@ -140,6 +141,17 @@ std::string verdict_phrase(Verdict v) {
 
 Values figure_values(const ReportInputs& in) {
   Values v;
+  // The constants the computations below use, for the sentences that quote them.
+  v["paper.particles"] = thousands(std::lround(paper_particles));
+  v["cycles.shown"] = std::to_string(paper_cycles);
+  v["energy.parting_percent"] = significant(100 * energy_parting_fraction, 2);
+  v["shift.clip"] = significant(shift_clip, 2);
+  // The cycles a paper row reads, for the sentences about it ("after 5 cycles", "from cycle 1 to 5").
+  for (const Row& r : in.paper) {
+    if (r.quantity == "ev_after_cycle" && r.density == "loose") v["fig06.paper_cycle"] = std::to_string(r.cycle);
+    if (r.quantity == "strain_increment_alignment_gain" && r.density == "loose")
+      v["fig09.from_cycle"] = std::to_string(r.from_cycle), v["fig09.to_cycle"] = std::to_string(r.to_cycle);
+  }
   if (in.samples.empty()) return v;
   auto chosen = std::find_if(in.samples.begin(), in.samples.end(), [&](const Sample& s) { return s.name == in.sample; });
   if (chosen == in.samples.end()) chosen = in.samples.begin();
@@ -182,13 +194,13 @@ Values figure_values(const ReportInputs& in) {
     return x ? number(*x) : std::string("—");
   };
 
-  // Fig. 2: the cell side of each prepared sample, scaled to the paper's 8,000 spheres.
+  // Fig. 2: the cell side of each prepared sample, scaled to the paper's sample size.
   for (const std::string& d : densities) {
     const DensityResults* r = results_of(d);
     if (!r || !r->prepared) continue;
     const double volume = r->sample.at("cell_length_1") * r->sample.at("cell_length_2") * r->sample.at("cell_length_3");
     const auto n = r->sample.find("particles");
-    const double scale = n != r->sample.end() && n->second > 0 ? 8000 / n->second : 1;
+    const double scale = n != r->sample.end() && n->second > 0 ? paper_particles / n->second : 1;
     v["fig02.side_" + d] = fixed_text(100 * std::cbrt(volume * scale), 2);
     v["fig02.paper_" + d] = paper("cell_side_cm_after_preparation", d);
     v["fig02.verdict_" + d] = phrase("cell_side_cm_after_preparation", d);
@@ -225,10 +237,10 @@ Values figure_values(const ReportInputs& in) {
   if (q_target.any()) v["fig04.q_target"] = fixed_text(q_target.hi, 1);
   if (p_target_n) v["fig04.p_target"] = fixed_text(p_target_sum / p_target_n, 1);
 
-  // Fig. 6: εv (%) at the end of the last cycle shown (5, or fewer if a test ran fewer) of each
+  // Fig. 6: εv (%) at the end of the last cycle shown (the paper's, or fewer if a test ran fewer) of each
   // test of the chosen sample.
   {
-    int c = 5;
+    int c = paper_cycles;
     for (const std::string& d : densities)
       if (const DensityResults* r = results_of(d))
         for (const TestResult& t : r->tests) c = std::min(c, last_cycle(t.series));
@@ -254,8 +266,8 @@ Values figure_values(const ReportInputs& in) {
     return cycle_statistics(tests, q);
   };
   const auto& quantities = cycle_quantities();
-  // The last cycle every test of every sample reached (at most 5).
-  int c_all = 5;
+  // The last cycle every test of every sample reached (at most the paper's).
+  int c_all = paper_cycles;
   bool any_test = false;
   for (const Sample& s : in.samples)
     for (const auto& [d, r] : s.densities)
@@ -306,8 +318,8 @@ Values figure_values(const ReportInputs& in) {
   }
   v["fig13.paper"] = paper("qp_strong_fabric_slope", "loose");
 
-  // Fig. 5: the largest εd (%) of each density's tests, cycles <= 5. Fig. 12: the largest fabric
-  // ratio and q/p of the chosen sample's tests, cycles <= 5. Fig. 8: Test 5's εv after its last cycle.
+  // Fig. 5: the largest εd (%) of each density's tests, cycles <= paper_cycles. Fig. 12: the largest
+  // fabric ratio and q/p of the chosen sample's tests, the same cycles. Fig. 8: Test 5's εv after its last cycle.
   {
     MinMax fabric_all, qp_all;
     for (const std::string& d : densities) {
@@ -318,7 +330,7 @@ Values figure_values(const ReportInputs& in) {
         if (!t.series.count("cycle")) continue;
         const auto& cyc = t.series.at("cycle");
         for (std::size_t i = 0; i < cyc.size(); ++i) {
-          if (cyc[i] > 5) continue;
+          if (cyc[i] > paper_cycles) continue;
           if (t.series.count("deviatoric_strain")) ed.add(100 * t.series.at("deviatoric_strain")[i]);
           if (t.series.count("fabric_ratio")) fabric_all.add(t.series.at("fabric_ratio")[i]);
           if (t.series.count("q_over_p")) qp_all.add(t.series.at("q_over_p")[i]);
@@ -354,7 +366,7 @@ Values figure_values(const ReportInputs& in) {
       old_first_row = old_first_row || c.baseline_row > 0;
       v["energy.work_" + d] = energy_text(c.work_total_J());
       v["energy.closure_" + d] = percent_small(100 * c.closure_relative_to_work());
-      if (const auto at = c.parting_time_s(0.01)) v["energy.parts_at_" + d] = significant(*at, 3);
+      if (const auto at = c.parting_time_s(energy_parting_fraction)) v["energy.parts_at_" + d] = significant(*at, 3);
     } catch (const std::out_of_range&) {
       // a result without the energy columns: no keys, the note says the data is missing
     }
@@ -403,10 +415,8 @@ std::string figure_note(const std::string& notes_tsv, const std::string& png, co
 }
 
 std::string energy_table(const std::vector<std::pair<std::string, const Columns*>>& runs) {
-  std::ostringstream md;
-  md << "| run | curves from | work by the cell (J) | change of stored (J) | dissipated by damping (J) | by sliding (J) | "
-        "largest gap / the run's work | largest closure error (engine: / (stored at start + work)) |\n"
-        "|---|---|---|---|---|---|---|---|\n";
+  MarkdownTable md({"run", "curves from", "work by the cell (J)", "change of stored (J)", "dissipated by damping (J)", "by sliding (J)",
+                    "largest gap / the run's work", "largest closure error (engine: / (stored at start + work))"});
   for (const auto& [name, series] : runs) {
     try {
       const EnergyCurves c = energy_curves(*series);
@@ -415,24 +425,21 @@ std::string energy_table(const std::vector<std::pair<std::string, const Columns*
       for (double e : series->at("energy_closure_error")) engine_worst = std::max(engine_worst, e);
       char err[32];
       std::snprintf(err, sizeof err, "%.1e", engine_worst);
-      md << "| " << name << " | row " << c.baseline_row + 1 << " (t = " << number(c.time_s.front()) << " s) | "
-         << energy_text(c.work_total_J()) << " | " << energy_text(c.stored_change_J.back()) << " | "
-         << energy_text(c.damping_J.back()) << " | " << energy_text(c.friction_J.back()) << " | "
-         << percent_small(100 * c.closure_relative_to_work()) << " % | " << err << " |\n";
+      md.row({name, "row " + std::to_string(c.baseline_row + 1) + " (t = " + number(c.time_s.front()) + " s)",
+              energy_text(c.work_total_J()), energy_text(c.stored_change_J.back()), energy_text(c.damping_J.back()),
+              energy_text(c.friction_J.back()), percent_small(100 * c.closure_relative_to_work()) + " %", err});
     } catch (const std::out_of_range&) {
-      md << "| " << name << " | — | no energy columns in this result | | | | | |\n";
+      md.row({name, "—", "no energy columns in this result", "", "", "", "", ""});
     }
   }
-  return md.str();
+  return md.text();
 }
 
 std::string baseline_table(const nlohmann::json& before, const std::vector<Row>& rows, const std::vector<Sample>& samples) {
   std::map<std::string, const nlohmann::json*> old;
   if (before.contains("rows"))
     for (const auto& r : before.at("rows")) old[r.value("name", "")] = &r;
-  std::ostringstream md;
-  md << "| row | earlier baseline: mean ± sd (verdict) | now: mean ± sd (verdict) | shift / max(earlier sd, resolution) |\n"
-        "|---|---|---|---|\n";
+  MarkdownTable md({"row", "earlier baseline: mean ± sd (verdict)", "now: mean ± sd (verdict)", "shift / max(earlier sd, resolution)"});
   const auto mark = [](const std::string& verdict) {
     return verdict == "consistent" ? "✅" : verdict == "inconsistent" ? "❌" : "—";
   };
@@ -449,16 +456,17 @@ std::string baseline_table(const nlohmann::json& before, const std::vector<Row>&
       before_text += std::string(" ") + mark(o.value("verdict", ""));
       if (has_mean && now.valued) shift = shift_text(shift_in_sd(now.spread.mean - o.at("mean").get<double>(), sd, r.resolution));
     }
-    md << "| " << cell(r.name) << " | " << before_text << " | " << now_text << " " << mark(to_string(now.verdict)) << " | " << shift << " |\n";
+    md.row({r.name, before_text, now_text + " " + mark(to_string(now.verdict)), shift});
   }
-  return md.str();
+  return md.text();
 }
 
 std::string state_a_table(const std::vector<Sample>& samples) {
-  std::ostringstream md;
-  md << "| sample | loose | medium | dense |\n|---|---|---|---|\n";
+  std::vector<std::string> headings = {"sample"};
+  headings.insert(headings.end(), densities.begin(), densities.end());
+  MarkdownTable md(headings);
   for (const Sample& s : samples) {
-    md << "| " << (s.name.empty() ? "the sample" : s.name) << " |";
+    std::vector<std::string> cells = {s.name.empty() ? "the sample" : s.name};
     for (const std::string& d : densities) {
       const auto it = s.densities.find(d);
       std::string text = "—";
@@ -468,11 +476,11 @@ std::string state_a_table(const std::vector<Sample>& samples) {
         if (t && t->series.count("q_over_p") && !t->series.at("q_over_p").empty()) text = significant(t->series.at("q_over_p").front(), 2);
         else if (it->second.prepared && it->second.sample.count("q_over_p")) text = significant(it->second.sample.at("q_over_p"), 2);
       }
-      md << " " << text << " |";
+      cells.push_back(text);
     }
-    md << "\n";
+    md.row(cells);
   }
-  return md.str();
+  return md.text();
 }
 
 }  // namespace validation

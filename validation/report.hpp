@@ -13,6 +13,7 @@
 
 #include "figures.hpp"
 #include "format.hpp"
+#include "quantities.hpp"
 #include "results.hpp"
 #include "rows.hpp"
 
@@ -24,6 +25,12 @@ using Values = std::map<std::string, std::string>;
 // is there and not empty, else B ({{else}} optional; blocks nest). An unknown {{key}} throws
 // std::runtime_error naming it (a typo in a template is an error, not an empty gap).
 std::string fill(const std::string& tmpl, const Values& values);
+
+// The cycles the paper's figures show (Figs. 5-12): what the notes say of "the last cycle" stops there.
+constexpr int paper_cycles = 5;
+// The energy curves "part" where work and dissipated + change of stored differ by more than this
+// fraction of the work done by then.
+constexpr double energy_parting_fraction = 0.01;
 
 // Numbers as the report writes them (and significant(), format.hpp).
 // "lo–hi" to two significant digits of the larger magnitude, or one value if they print alike.
@@ -44,6 +51,8 @@ struct ReportInputs {
 
 // Every value the figure notes and the energy note use, keyed "figNN.name" (Figs. 2, 3, 4, 6, 7,
 // 10, 11, 13 and "energy.*"); a figure whose data is missing has no keys, and its note says so.
+// The constants the text quotes are keys too, always there: "paper.particles" (8,000),
+// "cycles.shown" (5), "energy.parting_percent" (1) and "shift.clip" (10, format.hpp).
 Values figure_values(const ReportInputs& in);
 
 // The notes of the figures: `notes_tsv` is the template file (file<TAB>sentence); the note of

@@ -31,6 +31,7 @@
 #include "format.hpp"
 #include "io/atomic_file.hpp"
 #include "io/hdf5.hpp"
+#include "markdown_table.hpp"
 #include "report.hpp"
 #include "settings.hpp"
 #include "source_hash.hpp"
@@ -155,9 +156,8 @@ int main(int argc, char** argv) {
 
     // What was run: per sample, the runs, their steps and wall time; the engines that wrote them.
     std::map<std::string, int> engines;
-    std::ostringstream runs_md;
+    validation::MarkdownTable runs_md({"sample", "runs", "steps", "wall time of the runs (s)"});
     double total_wall = 0;
-    runs_md << "| sample | runs | steps | wall time of the runs (s) |\n|---|---|---|---|\n";
     std::vector<std::pair<std::string, validation::Columns>> energy_series;  // the chosen sample's runs
     const std::string chosen = v.count("sample") ? v["sample"] : "";
     for (const validation::Sample& s : in.samples) {
@@ -184,11 +184,9 @@ int main(int argc, char** argv) {
         }
       }
       total_wall += wall;
-      char line[160];
-      std::snprintf(line, sizeof line, "| %s | %d | %.0f | %.0f |\n", s.name.empty() ? "the sample" : s.name.c_str(), n, steps, wall);
-      runs_md << line;
+      runs_md.row({s.name.empty() ? "the sample" : s.name, std::to_string(n), validation::fixed(steps, 0), validation::fixed(wall, 0)});
     }
-    v["runs_table"] = runs_md.str();
+    v["runs_table"] = runs_md.text();
     v["total_wall_s"] = validation::number(std::round(total_wall));
     std::string engine_list;
     for (const auto& [version, count] : engines)

@@ -6,6 +6,8 @@
 //   bench-report BENCH_DIR OUT_DIR --steps N --reps N --skin TEXT --cases "mu05:0.5 mu0:0 mu0:0.5"
 //                [--sizes "8000 64000 ..."] [--size-plan TEXT] [--cores N] [--cpu TEXT]
 //                [--load-start TEXT] [--load-end TEXT]
+//   bench-report lammps-json LOG_DIR OUT.json ...   (lammps_bench.sh's JSON from its LAMMPS logs:
+//                engine/bench/bench_report_lammps.cpp)
 //
 // BENCH_DIR holds, from dem-bench: bench.json, shear.json and size_<N>_tiled.json for each of
 // --sizes; from reports/bench/lammps_bench.sh: lammps_<packing>_<friction>.json for each case
@@ -249,7 +251,10 @@ int report(const Options& o) {
 
 }  // namespace
 
+int lammps_json_main(int argc, char** argv);  // bench_report_lammps.cpp
+
 int main(int argc, char** argv) {
+  if (argc > 1 && std::string(argv[1]) == "lammps-json") return lammps_json_main(argc - 1, argv + 1);
   CLI::App app{"bench-report: bench.json and bench.md from the JSON files of a `make bench` run (reports/bench/run_bench.sh)"};
   Options o;
   app.add_option("BENCH_DIR", o.bench_dir, "the benchmark's folder (dem-bench's and lammps_bench.sh's JSON files)")->required();

@@ -23,7 +23,8 @@
 # spins too), so the box being fixed, the mu = 0.5 packing still relaxes slowly; mu = 0 unjams
 # at once (as it does in the engine at fixed volume; dem-bench's stress servo re-compacts it).
 # The table shows contacts per sphere (2Nc/N) and pressure after the warm-up -> after the timed run.
-# Set LMP to use another launcher, e.g. LMP="mpirun -np 1 lmp".
+# Set LMP to use another launcher, e.g. LMP="mpirun -np 1 lmp". The logs are read and OUT.json written
+# by `bench-report lammps-json` (BENCH_REPORT, default build/bin/bench-report; run_bench.sh passes its own).
 #
 # TILES=n (default 1) times the packing tiled n x n x n (LAMMPS's `replicate n n n` after reading
 # it: n^3 times the spheres in a box n times as long, the same packing as `dem-bench size`). Like
@@ -38,6 +39,8 @@ particles=$1 lx=$2 ly=$3 lz=$4 steps=$5 reps=$6 out=$7
 [ -r "$particles" ] || die "cannot read $particles"
 [[ $steps =~ ^[1-9][0-9]*$ && $reps =~ ^[1-9][0-9]*$ ]] || die "STEPS and REPS must be positive integers"
 LMP=${LMP:-lmp}
+BENCH_REPORT=${BENCH_REPORT:-$(cd "$(dirname "$0")/../.." && pwd)/build/bin/bench-report}
+[ -x "$BENCH_REPORT" ] || die "'$BENCH_REPORT' not found (make tools; or set BENCH_REPORT)"
 command -v "${LMP%% *}" >/dev/null || die "'${LMP%% *}' not found: install the Debian package lammps (apt-get install -y lammps)"
 export OMP_NUM_THREADS=1
 
@@ -105,9 +108,7 @@ clear
 EOF
 done >"$tmp/in.bench"
 
-# 3. Run mu = 0.5 and mu = 0; parse each log.
-printf '%-9s %-23s %-25s %-14s %-16s %-11s %s\n' friction "particle-steps/s (med)" "min .. max" "2Nc/N" "p (kPa)" "neigh/atom" "list builds"
-runs=""
+# 3. Run mu = 0.5 and mu = 0, each log kept in $tmp (log.mu<mu>, and GNU time's rss.mu<mu>).
 frictions=${FRICTIONS:-0.5 0}
 for mu in $frictions; do
   log=$tmp/log.mu$mu
@@ -119,51 +120,13 @@ for mu in $frictions; do
     tail -n 25 "$log" "$tmp/stdout" >&2 2>/dev/null || true
     exit 1
   fi
-  # Means over repetitions of contacts, pressure and neighbours; list builds summed over timed runs.
-  row=$(awk -v reps="$reps" -v mu="$mu" '
-    /^BENCH timed/ { timed = 1 }
-    /^Loop time of/ && timed { rate[++n] = $9 * $12 / $4 }
-    /% CPU use with/ && timed { c = $1; sub(/%/, "", c); cpu[n] = c > 0 ? rate[n] * 100 / c : rate[n] }
-    /^Ave neighs\/atom/ && timed { neigh += $4 / reps }
-    /^Neighbor list builds/ && timed { builds += $5 }
-    /^Dangerous builds/ { dangerous += $4; timed = 0 }
-    /^BENCH warm/ { z0 += $4 / reps; p0 += $6 / reps }
-    /^BENCH end/ { z1 += $4 / reps; p1 += $6 / reps }
-    END {
-      if (n != reps) { print "lammps_bench: expected " reps " timed runs in the log" > "/dev/stderr"; exit 1 }
-      for (i = 1; i <= n; i++) for (j = i + 1; j <= n; j++) if (rate[j] < rate[i]) { t = rate[i]; rate[i] = rate[j]; rate[j] = t }
-      med = rate[int(n / 2) + 1]
-      for (i = 1; i <= n; i++) for (j = i + 1; j <= n; j++) if (cpu[j] < cpu[i]) { t = cpu[i]; cpu[i] = cpu[j]; cpu[j] = t }
-      printf "%-9s %-23.3e %.3e .. %.3e %5.2f -> %-5.2f %6.1f -> %-6.1f %-11.2f %d (dangerous %d)\n", mu, med, rate[1], rate[n], z0, z1, p0 / 1e3, p1 / 1e3, 2 * neigh, builds, dangerous > "/dev/stderr"
-      printf "{\"friction\": %s, \"particle_steps_per_s_median\": %.6g, \"min\": %.6g, \"max\": %.6g, ", mu, med, rate[1], rate[n]
-      printf "\"cpu_rate_median\": %.6g, ", cpu[int(n / 2) + 1]
-      printf "\"coordination_number_start\": %.6g, \"coordination_number_end\": %.6g, \"neighbours_per_atom\": %.6g, ", z0, z1, 2 * neigh
-      printf "\"pressure_Pa_start\": %.6g, \"pressure_Pa_end\": %.6g, \"neighbour_list_builds\": %d, \"dangerous_builds\": %d}", p0, p1, builds, dangerous
-    }' "$log" 2>"$tmp/row") || die "could not parse $log"
-  [ -s "$tmp/rss.mu$mu" ] && row="${row%\}}, \"peak_rss_MB\": $(awk '{ printf "%.1f", $1 / 1024 }' "$tmp/rss.mu$mu")}"
-  cat "$tmp/row"
-  runs="$runs${runs:+,
-    }$row"
 done
 
-# 4. JSON; the version is LAMMPS's banner plus the Debian package version.
-version=$(head -n 1 "$tmp/log.mu${frictions%% *}" | sed 's/^LAMMPS (\(.*\))$/\1/')
+# 4. The JSON: bench-report reads the logs (rates, contacts, pressure, neighbours, list builds:
+#    engine/bench/lammps_log.hpp) and writes OUT.json with nlohmann-json; the version is LAMMPS's
+#    banner plus the Debian package version.
 pkg=$(dpkg-query -W -f='${Version}' lammps 2>/dev/null || echo unknown)
-mkdir -p "$(dirname "$out")"
-cat >"$out" <<EOF
-{
-  "code": "LAMMPS",
-  "version": "$version (Debian lammps $pkg)",
-  "particles": $((natoms * tiles * tiles * tiles)),
-  "tiles": $tiles,
-  "steps": $steps,
-  "repetitions": $reps,
-  "threads": 1,
-  "settings": "pair_style gran/hooke/history $kn $kt $gamman $gammat MU 1; fix nve/sphere; fix viscous $gammav; fixed periodic box",
-  "runs": [
-    $runs
-  ]
-}
-EOF
-if command -v jq >/dev/null; then jq empty "$out" || die "$out is not valid JSON"; fi
-echo "LAMMPS $version, $((natoms * tiles * tiles * tiles)) spheres, $steps steps x $reps repetitions, 1 core -> $out"
+"$BENCH_REPORT" lammps-json "$tmp" "$out" --frictions "$frictions" --atoms "$natoms" --tiles "$tiles" --steps "$steps" \
+  --reps "$reps" --package "$pkg" \
+  --settings "pair_style gran/hooke/history $kn $kt $gamman $gammat MU 1; fix nve/sphere; fix viscous $gammav; fixed periodic box" ||
+  die "could not write $out from the logs"

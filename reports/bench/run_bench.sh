@@ -18,7 +18,7 @@
 # codes (each repetition: the packing again, 200 warm-up steps, then STEPS timed); the steps shrink
 # with the size so that the whole benchmark stays near a quarter of an hour. SIZE_PLAN="" skips it.
 #
-# Every program writes JSON (dem-bench with nlohmann-json, lammps_bench.sh its own checked lines);
+# Every program writes JSON with nlohmann-json (dem-bench; lammps_bench.sh through `bench-report lammps-json`);
 # build/bin/bench-report reads them all and writes bench.json and bench.md.
 set -euo pipefail
 build=${1:?usage: run_bench.sh BUILD_DIR OUT_DIR [STEPS] [REPS]}
@@ -29,6 +29,7 @@ reps=${4:-7}
 # case: LAMMPS 1.00e7, 9.8e6 and 9.5e6 particle-steps/s with 2.5e-5, 5e-5 and 2e-4 m (so this is
 # also its fastest of the three); our engine 14 % faster with 2.5e-5 than with 2e-4.
 export SKIN=${SKIN:-2.5e-5}
+export BENCH_REPORT=$build/bin/bench-report   # lammps_bench.sh writes its JSON with it
 size_plan=${SIZE_PLAN-"1:4000:5 2:600:5 4:100:3 5:60:3"}
 here=$(cd "$(dirname "$0")" && pwd)
 # The machine is shared: its load before and after says how far the figures are the code's.

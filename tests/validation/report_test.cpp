@@ -447,3 +447,93 @@ TEST_CASE("energy curves: every curve from the same row, the true state (issue 3
     CHECK(*c.parting_time_s(0.01) == Approx(2e-3));
   }
 }
+
+namespace {
+
+// A Markdown table read back: one vector of cells per line (heading, delimiter, rows), split at
+// the '|' that are not escaped, each cell trimmed and "\|" turned back into '|'.
+std::vector<std::vector<std::string>> read_table(const std::string& text) {
+  std::vector<std::vector<std::string>> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    REQUIRE(line.size() >= 2);
+    REQUIRE(line.front() == '|');
+    REQUIRE(line.back() == '|');
+    std::vector<std::string> cells;
+    std::string c;
+    for (std::size_t i = 1; i < line.size(); ++i) {
+      if (line[i] == '\\' && i + 1 < line.size() && line[i + 1] == '|') c += '|', ++i;
+      else if (line[i] == '|') {
+        const auto a = c.find_first_not_of(' '), b = c.find_last_not_of(' ');
+        cells.push_back(a == std::string::npos ? "" : c.substr(a, b - a + 1));
+        c.clear();
+      } else c += line[i];
+    }
+    out.push_back(cells);
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("report: its tables read back cell by cell, a '|' in a name kept in its cell", "[report][markdown-table]") {
+  Fixture f;
+  std::vector<Sample> samples = f.samples();
+  samples[1].name = "seed|2";  // a name that would end its cell unescaped
+
+  SECTION("q/p at state A: a row per sample, the first row of its first test to two significant digits") {
+    const auto t = read_table(state_a_table(samples));
+    REQUIRE(t.size() == 2 + samples.size());
+    CHECK(t[0] == std::vector<std::string>{"sample", "loose", "medium", "dense"});
+    for (const auto& line : t) CHECK(line.size() == 4);
+    CHECK(t[3][0] == "seed|2");
+    // q/p of sample k's first row is 0.001 (k + 1) (the fixture), for every density.
+    CHECK(t[3] == std::vector<std::string>{"seed|2", "0.0020", "0.0020", "0.0020"});
+  }
+  SECTION("energy: every run a row of eight cells, a run without energy columns too") {
+    Columns bare = {{"time", {0.0, 1.0}}};
+    const Columns& full = samples[0].densities.at("loose").tests.front().series;
+    const auto t = read_table(energy_table({{"loose|test1", &full}, {"bare", &bare}}));
+    REQUIRE(t.size() == 4);
+    for (const auto& line : t) CHECK(line.size() == 8);
+    CHECK(t[2][0] == "loose|test1");
+    // The fixture's first row was written the old way (no elastic energy): the curves start at row 2.
+    CHECK(t[2][1] == "row 2 (t = 0.1 s)");
+    // Work from row 2 (t = 0.1 s) to the last (t = 1.0 s): W(1.0) - W(0.1) = 1.2e-3 - 1.02e-4 =
+    // 1.098e-3 J, three significant digits in powers of ten below 0.01 J.
+    CHECK(t[2][2] == "1.10e-03");
+    CHECK(t[3] == std::vector<std::string>{"bare", "—", "no energy columns in this result", "", "", "", "", ""});
+  }
+  SECTION("the earlier baseline: mean ± sd from the scatter, the shift against max(sd, resolution), clipped beyond ±10") {
+    Row row;
+    row.name = "e0 | loose";  // a row's name with a '|'
+    row.quantity = "void_ratio_after_preparation";
+    row.density = "loose";
+    row.check = "within";
+    row.reference = 0.7;
+    row.tolerance = 0.02;
+    row.resolution = 0.005;
+    Row far = row;
+    far.name = "e0 far";
+    // Three samples of void ratio 0.7000, 0.7012, 0.7024: mean 0.7012, sd 0.0012.
+    std::vector<Sample> ensemble;
+    for (int k = 0; k < 3; ++k) {
+      DensityResults r;
+      r.prepared = true;
+      r.sample["void_ratio"] = 0.7 + 0.0012 * k;
+      ensemble.push_back({"seed" + std::to_string(k + 1), "", {{"loose", r}}});
+    }
+    const nlohmann::json before = nlohmann::json::parse(R"({"rows": [
+      {"name": "e0 | loose", "mean": 0.69, "sd": 0.002, "verdict": "consistent"},
+      {"name": "e0 far", "mean": 0.6, "sd": 0.001, "verdict": "inconsistent"}]})");
+    const auto t = read_table(baseline_table(before, {row, far}, ensemble));
+    REQUIRE(t.size() == 4);
+    for (const auto& line : t) CHECK(line.size() == 4);
+    // sd 0.0020 to two significant digits, the mean to the same decimal; now 0.7012 ± 0.0012 (the
+    // 95 % interval of one sample, 0.7012 ± 4.303 x 0.0012 x sqrt(4/3), overlaps 0.7 ± 0.02: ✅).
+    // Shift: (0.7012 - 0.69) / max(0.002, 0.005) = 2.24.
+    CHECK(t[2] == std::vector<std::string>{"e0 | loose", "0.6900 ± 0.0020 ✅", "0.7012 ± 0.0012 ✅", "+2.24"});
+    // (0.7012 - 0.6) / max(0.001, 0.005) = 20.24: beyond ±10, written with its value.
+    CHECK(t[3] == std::vector<std::string>{"e0 far", "0.6000 ± 0.0010 ❌", "0.7012 ± 0.0012 ✅", "+20 (beyond ±10)"});
+  }
+}

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -144,4 +145,79 @@ TEST_CASE("validate: a study without runs.tsv, and rows that name what the study
   CHECK(missing.exit_code == 1);
   CHECK_THAT(missing.out, Catch::Contains("2 result file(s) missing"));
   CHECK_THAT(missing.out, Catch::Contains("1 row(s) not judged (fewer than 2 samples with a value): my row"));
+}
+
+namespace {
+
+// The cells of each line of a Markdown table in `text` (the lines that start with '|'), split at
+// the '|' that are not escaped, trimmed, "\|" read back as '|'.
+std::vector<std::vector<std::string>> table_lines(const std::string& text) {
+  std::vector<std::vector<std::string>> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] != '|') continue;
+    std::vector<std::string> cells;
+    std::string c;
+    for (std::size_t i = 1; i < line.size(); ++i) {
+      if (line[i] == '\\' && i + 1 < line.size() && line[i + 1] == '|') c += '|', ++i;
+      else if (line[i] == '|') {
+        const auto a = c.find_first_not_of(' '), b = c.find_last_not_of(' ');
+        cells.push_back(a == std::string::npos ? "" : c.substr(a, b - a + 1));
+        c.clear();
+      } else c += line[i];
+    }
+    out.push_back(cells);
+  }
+  return out;
+}
+
+std::string text_of(const fs::path& p) {
+  std::ifstream in(p);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+}  // namespace
+
+TEST_CASE("validate: validation.md and verdicts.md read back cell by cell, a '|' in the reference's texts kept in its cell", "[validate][cli][markdown-table]") {
+  // Two samples whose results are not there: every row is written, not judged (exit 1).
+  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "validate_cli_tables";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "results" / "seed1");
+  fs::create_directories(dir / "results" / "seed2");
+  {
+    std::ofstream runs(dir / "results" / "runs.tsv");
+    runs << "# variant\tdensity\ttest\trun\tresult\tstarts_from\tmay_fail\tsettings\tseed\n";
+    for (int seed = 1; seed <= 2; ++seed) {
+      const std::string s = "seed" + std::to_string(seed);
+      runs << "-\tdense\t-\t" << s << "/dense_prepare\t/x/" << s << "/dense_prepare.h5\t-\t0\tas written\t" << seed << "\n";
+      runs << "-\tdense\tcompression\t" << s << "/dense_compression\t/x/" << s << "/dense_compression.h5\t" << s
+           << "/dense_prepare\t0\tas written\t" << seed << "\n";
+    }
+  }
+  // The label (a heading of both tables), a row's name, source and reason each with a '|'.
+  const fs::path refs_file = dir / "refs.yaml";
+  std::ofstream(refs_file) << "source: lab\nlabel: \"lab|2020\"\nrows:\n"
+                              "  - {name: \"peak | dense\", quantity: peak_friction_angle, test: compression, reference: 30, tolerance: 2,"
+                              " check: within, source: \"Table 1 | col. 2\", reason: \"read | off\"}\n";
+  const auto r = validate("--results '" + (dir / "results").string() + "' --references '" + refs_file.string() + "' --out '" +
+                          (dir / "out").string() + "' --profile small");
+  INFO(r.out);
+  CHECK(r.exit_code == 1);
+  const auto v = table_lines(text_of(dir / "out" / "validation.md"));
+  REQUIRE(v.size() == 3);  // heading, delimiter, the row
+  for (const auto& line : v) CHECK(line.size() == 11);
+  CHECK(v[0][1] == "lab|2020");
+  CHECK(v[2][0] == "peak | dense");
+  CHECK(v[2][1] == "30 ± 2");
+  CHECK(v[2][5] == "0 of 0");
+  CHECK(v[2][7] == "— not judged");
+  CHECK(v[2][9] == "Table 1 | col. 2");
+  CHECK(v[2][10] == "read | off");
+  const auto m = table_lines(text_of(dir / "out" / "verdicts.md"));
+  REQUIRE(m.size() == 3);
+  for (const auto& line : m) CHECK(line.size() == 5);
+  CHECK(m[0] == std::vector<std::string>{"row", "verdict", "lab|2020", "interval of one sample", "holds in"});
+  CHECK(m[2] == std::vector<std::string>{"peak | dense", "— not judged", "30 ± 2", "—", "0 of 0"});
 }
