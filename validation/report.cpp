@@ -84,6 +84,40 @@ const std::vector<double>* cycle_row(const Table& t, int c) {
 
 }  // namespace
 
+namespace {
+
+// The text before the first level-2 heading, then each "## heading" section in order.
+std::pair<std::string, std::vector<std::pair<std::string, std::string>>> sections_of(const std::string& text) {
+  std::pair<std::string, std::vector<std::pair<std::string, std::string>>> out;
+  std::size_t at = 0;
+  while (at < text.size()) {
+    std::size_t end = text.find('\n', at);
+    end = end == std::string::npos ? text.size() : end + 1;
+    const std::string line = text.substr(at, end - at);
+    if (line.rfind("## ", 0) == 0) out.second.emplace_back(line.substr(0, line.find_last_not_of("\r\n") + 1), "");
+    (out.second.empty() ? out.first : out.second.back().second) += line;
+    at = end;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string keep_sections_without_inputs(const std::string& fresh, const std::string& previous, std::vector<std::string>& kept) {
+  const auto now = sections_of(fresh), before = sections_of(previous);
+  std::string out = now.first;
+  for (const auto& [heading, text] : now.second) {
+    const auto old = std::find_if(before.second.begin(), before.second.end(), [&](const auto& s) { return s.first == heading; });
+    if (text.find(inputs_not_here) != std::string::npos && old != before.second.end()) {
+      out += old->second;
+      kept.push_back(heading.substr(3));
+    } else {
+      out += text;
+    }
+  }
+  return out;
+}
+
 std::string fill(const std::string& t, const Values& values) {
   std::string out;
   std::size_t i = 0;

@@ -32,6 +32,16 @@ constexpr int paper_cycles = 5;
 // fraction of the work done by then.
 constexpr double energy_parting_fraction = 0.01;
 
+// What a template writes in a section whose inputs are not on this machine (the study's results,
+// say): `report --previous FILE` then takes that section from FILE, an earlier report, instead.
+inline constexpr const char* inputs_not_here = "<!-- inputs not here -->";
+
+// `fresh` (a report just written) with every level-2 section ("## heading" up to the next) that
+// holds inputs_not_here replaced by `previous`'s section of the same heading, if it has one. The
+// headings taken from `previous` are appended to `kept`. The text before the first heading is
+// `fresh`'s.
+std::string keep_sections_without_inputs(const std::string& fresh, const std::string& previous, std::vector<std::string>& kept);
+
 // Numbers as the report writes them (and significant(), format.hpp).
 // "lo–hi" to two significant digits of the larger magnitude, or one value if they print alike.
 std::string range_text(double lo, double hi);

@@ -6,7 +6,7 @@
 // figures plot and the verdicts of the validation rows about them.
 //   report --results DIR --references FILE --out REPORT_DIR [--profile NAME] [--sample NAME]
 //          [--templates DIR] [--baseline FILE] [--convergence DIR] [--decisions DIR] [--stability DIR]
-//          [--source TEXT] [--note TEXT]
+//          [--source TEXT] [--note TEXT] [--previous FILE]
 // REPORT_DIR holds what the other tools wrote (validation.md, verdicts.md, figures/, samples.md,
 // decisions/, convergence/, stability/, critical_state/, liquefaction/, bench.md); a part that is
 // missing is said so in its section. --baseline: an earlier baseline's validation.json, compared
@@ -44,7 +44,9 @@ namespace {
 const char* usage =
     "usage: report --results DIR --references FILE --out REPORT_DIR [--profile NAME] [--sample NAME]\n"
     "              [--templates DIR] [--baseline FILE] [--convergence DIR] [--decisions DIR] [--stability DIR]\n"
-    "              [--source TEXT] [--note TEXT]\n";
+    "              [--source TEXT] [--note TEXT] [--previous FILE]\n"
+    "--previous FILE: an earlier report; each section whose inputs are not here (e.g. the paper study's results)\n"
+    "is taken from it, and the header names those sections and that report's date.\n";
 
 const std::vector<std::string> densities = {"loose", "medium", "dense"};
 
@@ -108,7 +110,7 @@ std::size_t seeds_in(const std::string& dir, const std::string& variant) {
 int main(int argc, char** argv) {
   std::map<std::string, std::string> opt = {{"--profile", "paper"}, {"--templates", "reports/templates"}};
   const std::set<std::string> known = {"--results", "--references", "--out", "--profile", "--sample", "--templates", "--baseline",
-                                       "--convergence", "--decisions", "--stability", "--source", "--note"};
+                                       "--convergence", "--decisions", "--stability", "--source", "--note", "--previous"};
   for (int i = 1; i < argc; i += 2) {
     if (!known.count(argv[i]) || i + 1 >= argc) {
       std::fprintf(stderr, "report: %s '%s'\n%s", known.count(argv[i]) ? "no value for" : "unknown option", argv[i], usage);
@@ -326,7 +328,23 @@ int main(int argc, char** argv) {
 
     const std::string tmpl = read_text(fs::path(opt["--templates"]) / "index.md");
     if (tmpl.empty()) throw std::runtime_error(opt["--templates"] + "/index.md is missing or empty");
-    dem::write_file_atomically((report / "index.md").string(), validation::fill(tmpl, v));
+    std::string text = validation::fill(tmpl, v);
+    // Sections whose inputs are not here (the paper study's results, on a machine that ran only
+    // some studies) from the previous report, said so in the header.
+    if (!opt["--previous"].empty()) {
+      const std::string previous = read_text(opt["--previous"]);
+      if (previous.empty()) throw std::runtime_error("--previous '" + opt["--previous"] + "' is missing or empty");
+      std::vector<std::string> kept;
+      validation::keep_sections_without_inputs(text, previous, kept);
+      if (!kept.empty()) {
+        std::smatch m;
+        v["kept_from"] = std::regex_search(previous, m, std::regex(R"(Generated on (\S+))")) ? m[1].str() : "date not written";
+        v["kept"] = "\"" + validation::joined(kept, "\", \"") + "\"";
+        kept.clear();
+        text = validation::keep_sections_without_inputs(validation::fill(tmpl, v), previous, kept);
+      }
+    }
+    dem::write_file_atomically((report / "index.md").string(), text);
     std::fprintf(stderr, "report written to %s (%zu sample(s) of %s%s)\n", (report / "index.md").c_str(), in.samples.size(),
                  shown(results).c_str(), missing.empty() ? "" : (", " + std::to_string(missing.size()) + " result files missing").c_str());
   } catch (const std::exception& e) {

@@ -537,3 +537,21 @@ TEST_CASE("report: its tables read back cell by cell, a '|' in a name kept in it
     CHECK(t[3] == std::vector<std::string>{"e0 far", "0.6000 ± 0.0010 ❌", "0.7012 ± 0.0012 ✅", "+20 (beyond ±10)"});
   }
 }
+
+TEST_CASE("report --previous: a section whose inputs are not here is the previous report's", "[report]") {
+  const std::string marker = validation::inputs_not_here;
+  const std::string fresh = "# Title\nGenerated on 2026-11-26\n\n## A\nnew A\n\n## B\n" + marker + "\nno results\n\n## C\nnew C " + marker + "\n";
+  const std::string previous = "# Title\nGenerated on 2026-11-20\n\n## A\nold A\n\n## B\nold B\n";
+  std::vector<std::string> kept;
+  const std::string out = validation::keep_sections_without_inputs(fresh, previous, kept);
+  // A has its inputs: the fresh one; B has none: the previous one; C has none, but the previous
+  // report has no C: the fresh one (which says so). The header is the fresh one's.
+  CHECK(out == "# Title\nGenerated on 2026-11-26\n\n## A\nnew A\n\n## B\nold B\n## C\nnew C " + marker + "\n");
+  REQUIRE(kept.size() == 1);
+  CHECK(kept[0] == "B");
+  SECTION("a heading must match as a whole line") {
+    std::vector<std::string> none;
+    CHECK(validation::keep_sections_without_inputs("## Bee\n" + marker + "\n", previous, none) == "## Bee\n" + marker + "\n");
+    CHECK(none.empty());
+  }
+}
