@@ -24,7 +24,7 @@ LIQUEFACTION   ?= results/liquefaction_loose/paper results/liquefaction_medium/p
 CELL_STUDIES   ?= pipeline/studies/critical_state.yaml pipeline/studies/liquefaction_loose.yaml pipeline/studies/liquefaction_medium.yaml
 EXECUTOR    ?=                          # local or slurm (pipeline --executor); empty: the study files' executor key, else local
 
-.PHONY: all deps build tools examples example-samples install test kill-test slurm-test sanitize fuzz bench quick study report decisions decisions-report readings-report literature literature-report critical-state liquefaction samples samples-study cyclic-tests render clean
+.PHONY: all deps build tools examples example-samples install test kill-test slurm-test sanitize fuzz bench quick study report decisions decisions-report readings-report report-sections literature literature-report critical-state liquefaction samples samples-study cyclic-tests render clean
 
 # Everything: install, build the tools, run the full study (an ensemble of 5 samples per density,
 # reusing finished runs), validate it, draw the figures and write reports/index.md (the tests are
@@ -194,6 +194,20 @@ literature-report: tools
 	@if [ -f $(LITERATURE_RESULTS)/runs.tsv ]; then mkdir -p reports/literature && \
 	  $(BUILD)/bin/validate --results $(LITERATURE_RESULTS) --references reference_data/literature.yaml --out reports/literature; \
 	else echo "literature: no results in $(LITERATURE_RESULTS) yet (make literature)"; fi
+
+# The report from the studies that are here, every other section kept from the report before
+# (`report --previous`; its header names those sections): after running one study (make
+# critical-state, make literature, ...) on a machine without the paper study's results.
+report-sections: tools
+	-$(MAKE) --no-print-directory decisions-report
+	-$(MAKE) --no-print-directory readings-report
+	-reports/critical_state/make_section.sh $(BUILD)/bin $(CRITICAL_STATE) reports/critical_state $(CRITICAL_STATE_ENSEMBLE) $(CRITICAL_STATE_RATES)
+	-reports/liquefaction/make_section.sh $(BUILD)/bin reports/liquefaction $(LIQUEFACTION)
+	-$(MAKE) --no-print-directory literature-report
+	cp reports/index.md $(BUILD)/previous_index.md
+	$(BUILD)/bin/report --results $(RESULTS) --references reference_data/paper.yaml --out reports --sample $(strip $(SAMPLE)) \
+	  --baseline $(BASELINE) --convergence $(CONVERGENCE) --decisions $(DECISIONS) --stability $(STABILITY) \
+	  --previous $(BUILD)/previous_index.md $(REPORT_SOURCE)
 
 # The paper's open choices (SPEC section 7): each reading one at a time from the baseline, 3
 # samples of 1,000 spheres (pipeline/studies/decisions.yaml), then the report's section on them.
