@@ -251,6 +251,7 @@ int report(const Options& o) {
 
 int main(int argc, char** argv) {
   CLI::App app{"bench-report: bench.json and bench.md from the JSON files of a `make bench` run (reports/bench/run_bench.sh)"};
+  app.name("bench-report");
   Options o;
   app.add_option("BENCH_DIR", o.bench_dir, "the benchmark's folder (dem-bench's and lammps_bench.sh's JSON files)")->required();
   app.add_option("OUT_DIR", o.out_dir, "where bench.json and bench.md go")->required();
