@@ -11,17 +11,26 @@
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
+
 #include "figures.hpp"
 #include "io/atomic_file.hpp"
 #include "results.hpp"
 
 int main(int argc, char** argv) {
   namespace fs = std::filesystem;
-  if (argc != 3) {
-    std::fprintf(stderr, "usage: ensemble-cycles RESULTS_DIR OUT_DIR\n");
-    return 2;
+  CLI::App app{"ensemble-cycles: per-cycle statistics of an ensemble (eps_v, coordination number, sliding fraction: mean, "
+               "sd, samples, min, max per cycle), one file per density, test and quantity"};
+  app.name("ensemble-cycles");
+  std::string results, out;
+  app.add_option("RESULTS_DIR", results, "the study's results folder (an ensemble: seed<N>/)")->required();
+  app.add_option("OUT_DIR", out, "where <quantity>_<density>_test<N>.dat go (made if missing)")->required();
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int rc = app.exit(e);  // prints the help, or the error naming the option
+    return rc == 0 ? 0 : 2;      // bad arguments: exit 2, as always
   }
-  const std::string results = argv[1], out = argv[2];
   std::vector<std::string> missing;
   const auto samples = validation::load_samples(results, {"loose", "medium", "dense"}, missing);
   // The results folder as written into the files: relative, never an absolute path of this machine.

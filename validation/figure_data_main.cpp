@@ -25,6 +25,8 @@
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
+
 #include "figures.hpp"
 #include "settings.hpp"
 #include "format.hpp"
@@ -38,12 +40,6 @@ namespace fs = std::filesystem;
 using validation::Table;
 
 namespace {
-
-const char* usage =
-    "usage:\n"
-    "  figure-data figures RESULTS_DIR FIG_DIR [--sample NAME] [--references FILE]\n"
-    "  figure-data settings RESULTS_DIR [--prefix P | --run NAME]\n"
-    "  figure-data samples-table RESULTS_DIR... --references FILE [--per-sample] [--baseline VARIANT]\n";
 
 const std::vector<std::string> densities = {"loose", "medium", "dense"};
 
@@ -439,37 +435,47 @@ int samples_table(const std::vector<std::string>& folders, const std::string& re
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 3) {
-    std::fputs(usage, stderr);
-    return 2;
-  }
-  const std::string cmd = argv[1];
-  std::vector<std::string> positional;
-  std::string sample, references, prefix, baseline, run;
+  CLI::App app{"figure-data: the data behind the report's figures and the numbers its text quotes, from a study's results, "
+               "its resolved scenes and reference_data/paper.yaml"};
+  app.name("figure-data");
+  app.require_subcommand(1);
+  std::string results, figs, sample, references = "reference_data/paper.yaml", prefix, run, table_references, baseline;
+  std::vector<std::string> folders;
   bool per_sample = false;
-  for (int i = 2; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--sample" && i + 1 < argc) sample = argv[++i];
-    else if (a == "--references" && i + 1 < argc) references = argv[++i];
-    else if (a == "--prefix" && i + 1 < argc) prefix = argv[++i];
-    else if (a == "--run" && i + 1 < argc) run = argv[++i];
-    else if (a == "--baseline" && i + 1 < argc) baseline = argv[++i];
-    else if (a == "--per-sample") per_sample = true;
-    else if (!a.empty() && a[0] == '-') { std::fprintf(stderr, "figure-data: unknown option '%s'\n%s", a.c_str(), usage); return 2; }
-    else positional.push_back(a);
+
+  CLI::App* fig = app.add_subcommand("figures", "every figure's data files (figNN_*.dat, columns named with units) and values.gp, "
+                                                "the numbers the static scripts in reports/gnuplot/ read");
+  fig->add_option("RESULTS_DIR", results, "the study's results folder")->required();
+  fig->add_option("FIG_DIR", figs, "where the data files go (made if missing)")->required();
+  fig->add_option("--sample", sample, "the sample whose runs the single-run figures show (default: the first)");
+  fig->add_option("--references", references, "the paper's values")->capture_default_str();
+
+  CLI::App* set = app.add_subcommand("settings", "the settings the runs used, from the resolved scenes of the first sample's "
+                                                 "P<density>_prepare.h5 and P<density>_test<N>.h5, or of NAME.h5 alone "
+                                                 "(key<TAB>value on stdout)");
+  set->add_option("RESULTS_DIR", results, "the study's results folder")->required();
+  CLI::Option* prefix_opt = set->add_option("--prefix", prefix, "P: the runs' file name prefix");
+  set->add_option("--run", run, "NAME: read NAME.h5 alone")->excludes(prefix_opt);
+
+  CLI::App* table = app.add_subcommand("samples-table", "Markdown table of the prepared samples, mean ± sd over seeds per density, "
+                                                        "variant and size (or one row per sample), with the paper's values, on stdout");
+  table->add_option("RESULTS_DIR", folders, "the studies' results folders")->required();
+  table->add_option("--references", table_references, "the paper's values")->required();
+  table->add_flag("--per-sample", per_sample, "one row per sample");
+  table->add_option("--baseline", baseline, "VARIANT: add the shift of each row from that variant");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int rc = app.exit(e);  // prints the help, or the error naming the option
+    return rc == 0 ? 0 : 2;      // bad arguments: exit 2, as always
   }
   try {
-    if (cmd == "figures" && positional.size() == 2) {
-      if (references.empty()) references = "reference_data/paper.yaml";
-      return figures(positional[0], positional[1], sample, references);
-    }
-    if (cmd == "settings" && positional.size() == 1) return settings(positional[0], prefix, run);
-    if (cmd == "samples-table" && !positional.empty() && !references.empty())
-      return samples_table(positional, references, per_sample, baseline);
+    if (*fig) return figures(results, figs, sample, references);
+    if (*set) return settings(results, prefix, run);
+    return samples_table(folders, table_references, per_sample, baseline);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "figure-data: %s\n", e.what());
     return 1;
   }
-  std::fputs(usage, stderr);
-  return 2;
 }

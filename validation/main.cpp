@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include "io/atomic_file.hpp"
@@ -46,20 +47,31 @@ struct Options {
   std::vector<std::string> decisions;  // decisions.json files, in the order given
 };
 
-// The options, or nothing (after a message) when they are wrong.
-std::optional<Options> parse_options(int argc, char** argv) {
+// The options, or nothing when they are wrong or --help was asked (`code`: the exit status, 0 for
+// --help, 2 for bad arguments; CLI11 has printed the help, or the error naming the option).
+std::optional<Options> parse_options(int argc, char** argv, int& code) {
   Options o;
-  for (int i = 1; i + 1 < argc; i += 2) {
-    const std::string a = argv[i];
-    if (a == "--results") o.results = argv[i + 1];
-    else if (a == "--references") o.references = argv[i + 1];
-    else if (a == "--out") o.out = argv[i + 1];
-    else if (a == "--profile") o.profile = argv[i + 1];
-    else if (a == "--decisions") o.decisions.push_back(argv[i + 1]);
-    else { std::fprintf(stderr, "validate: unknown option '%s'\n", a.c_str()); return std::nullopt; }
+  CLI::App app{"validate: judges a study's results against a reference file (the paper's, reference_data/paper.yaml, or "
+               "your own: validation/README.md); writes validation.json, validation.md and verdicts.md into --out"};
+  app.name("validate");
+  app.add_option("--results", o.results, "the study's results folder (its runs.tsv, written by build/bin/pipeline)")->required();
+  app.add_option("--references", o.references, "the reference file: the rows to judge")->required();
+  app.add_option("--out", o.out, "the folder the tables go to (made if missing)")->required();
+  app.add_option("--profile", o.profile, "the reference file's profile (its rows' `profiles` entries)")->capture_default_str();
+  app.add_option("--decisions", o.decisions,
+                 "a decisions study's decisions.json (compare-runs decisions); may be given several times, each row's cause "
+                 "is the finding of the largest size that judged it")
+      ->allow_extra_args(false);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int rc = app.exit(e);  // prints the help, or the error naming the option
+    code = rc == 0 ? 0 : 2;      // bad arguments: exit 2, as always
+    return std::nullopt;
   }
-  if (o.results.empty() || o.references.empty() || o.out.empty() || o.profile.empty()) {
-    std::fprintf(stderr, "usage: validate --results DIR --references FILE --out DIR [--profile NAME] [--decisions decisions.json]...\n");
+  if (o.profile.empty()) {
+    std::fprintf(stderr, "validate: --profile: must not be empty\n");
+    code = 2;
     return std::nullopt;
   }
   return o;
@@ -214,8 +226,9 @@ std::string verdicts_text(const std::vector<Judged>& judged, const Counts& c, st
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::optional<Options> opt = parse_options(argc, argv);
-  if (!opt) return 2;
+  int code = 2;
+  const std::optional<Options> opt = parse_options(argc, argv, code);
+  if (!opt) return code;
   const Options& o = *opt;
   validation::References refs;
   std::vector<validation::DecisionsFile> findings;

@@ -25,6 +25,7 @@
 #include <sstream>
 #include <string>
 
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include "decisions_file.hpp"
@@ -40,13 +41,6 @@
 namespace fs = std::filesystem;
 
 namespace {
-
-const char* usage =
-    "usage: report --results DIR --references FILE --out REPORT_DIR [--profile NAME] [--sample NAME]\n"
-    "              [--templates DIR] [--baseline FILE] [--convergence DIR] [--decisions DIR] [--stability DIR]\n"
-    "              [--source TEXT] [--note TEXT] [--previous FILE]\n"
-    "--previous FILE: an earlier report; each section whose inputs are not here (e.g. the paper study's results)\n"
-    "is taken from it, and the header names those sections and that report's date.\n";
 
 const std::vector<std::string> densities = {"loose", "medium", "dense"};
 
@@ -109,18 +103,34 @@ std::size_t seeds_in(const std::string& dir, const std::string& variant) {
 
 int main(int argc, char** argv) {
   std::map<std::string, std::string> opt = {{"--profile", "paper"}, {"--templates", "reports/templates"}};
-  const std::set<std::string> known = {"--results", "--references", "--out", "--profile", "--sample", "--templates", "--baseline",
-                                       "--convergence", "--decisions", "--stability", "--source", "--note", "--previous"};
-  for (int i = 1; i < argc; i += 2) {
-    if (!known.count(argv[i]) || i + 1 >= argc) {
-      std::fprintf(stderr, "report: %s '%s'\n%s", known.count(argv[i]) ? "no value for" : "unknown option", argv[i], usage);
-      return 2;
-    }
-    opt[argv[i]] = argv[i + 1];
+  CLI::App app{"report: writes the study report REPORT_DIR/index.md from a study's results, the validation output, the figures, "
+               "the other studies' tables, the resolved scenes and reference_data/ (the text: TEMPLATES/index.md, every number "
+               "computed)"};
+  app.name("report");
+  const auto option = [&](const std::string& name, const std::string& what) { return app.add_option(name, opt[name], what); };
+  option("--results", "the study's results folder (its runs.tsv)")->required();
+  option("--references", "the reference file (reference_data/paper.yaml)")->required();
+  option("--out", "REPORT_DIR: holds what the other tools wrote (validation.md, figures/, ...); index.md goes there")->required();
+  option("--profile", "the reference file's profile of the rows")->capture_default_str();
+  option("--sample", "the sample whose runs the single-run figures show (e.g. seed1)");
+  option("--templates", "the folder of index.md and figure_notes.tsv")->capture_default_str();
+  option("--baseline", "an earlier baseline's validation.json, compared row by row");
+  option("--convergence", "the convergence study's results folder (its settings for the text)");
+  option("--decisions", "the decisions study's results folder (its settings for the text)");
+  option("--stability", "the stability study's results folder (its settings for the text)");
+  option("--source", "what the report was made from (e.g. the commit)");
+  option("--note", "a note printed at the top of the report");
+  option("--previous", "an earlier report: each section whose inputs are not here (e.g. the paper study's results) is taken "
+                       "from it, and the header names those sections and that report's date");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int rc = app.exit(e);  // prints the help, or the error naming the option
+    return rc == 0 ? 0 : 2;      // bad arguments: exit 2, as always
   }
   for (const char* k : {"--results", "--references", "--out"})
     if (opt[k].empty()) {
-      std::fprintf(stderr, "report: %s is required\n%s", k, usage);
+      std::fprintf(stderr, "report: %s must not be empty\n", k);
       return 2;
     }
   const std::string results = opt["--results"], out = opt["--out"];

@@ -256,6 +256,7 @@ int lammps_json_main(int argc, char** argv);  // bench_report_lammps.cpp
 int main(int argc, char** argv) {
   if (argc > 1 && std::string(argv[1]) == "lammps-json") return lammps_json_main(argc - 1, argv + 1);
   CLI::App app{"bench-report: bench.json and bench.md from the JSON files of a `make bench` run (reports/bench/run_bench.sh)"};
+  app.name("bench-report");
   Options o;
   app.add_option("BENCH_DIR", o.bench_dir, "the benchmark's folder (dem-bench's and lammps_bench.sh's JSON files)")->required();
   app.add_option("OUT_DIR", o.out_dir, "where bench.json and bench.md go")->required();

@@ -112,15 +112,29 @@ std::string format_number(double x) {  // as the range messages print numbers (d
   return s.str();
 }
 
-double read(Section& m, const Parameter& p) {
-  const std::optional<double> def = p.required() ? std::nullopt : std::optional<double>(p.default_value);
-  return m.number(p.name, p.unit, {p.min, p.max, p.min_open, p.max_open}, def, p.doc);
-}
-
 bool contains(const std::vector<Parameter>& keys, const std::string& name) {
   for (const Parameter& p : keys)
     if (name == p.name) return true;
   return false;
+}
+
+// The key's doc, with the laws that read it when not every law does ("(law linear)"): from the
+// alternatives, so a law added to AnyContactLaw is named beside the keys it shares.
+std::string documented(const Parameter& p) {
+  std::vector<std::string> names, readers;
+  for (const LawEntry& e : every_law()) {
+    if (std::find(names.begin(), names.end(), e.law) == names.end()) names.push_back(e.law);
+    if (contains(e.keys, p.name) && std::find(readers.begin(), readers.end(), e.law) == readers.end()) readers.push_back(e.law);
+  }
+  if (readers.size() == names.size()) return p.doc;
+  std::string doc = std::string(p.doc) + (readers.size() == 1 ? " (law " : " (laws ");
+  for (std::size_t k = 0; k < readers.size(); ++k) doc += (k ? ", " : "") + readers[k];
+  return doc + ")";
+}
+
+double read(Section& m, const Parameter& p) {
+  const std::optional<double> def = p.required() ? std::nullopt : std::optional<double>(p.default_value);
+  return m.number(p.name, p.unit, {p.min, p.max, p.min_open, p.max_open}, def, documented(p));
 }
 
 // The keys every law called `law` reads (its elastic constants), for messages.

@@ -30,6 +30,7 @@
 
 #include "contact/contact_dashpot.hpp"
 #include "contact/hertz_mindlin.hpp"
+#include "contact/linear_cohesive.hpp"
 #include "contact/linear_spring.hpp"
 #include "contact/rolling.hpp"
 #include "core/particles.hpp"
@@ -68,10 +69,13 @@ using HertzMindlinRollingLaw = ContactLaw<HertzNormal, MindlinCoulomb, RollingSp
 using LinearDashpotLaw = ContactLaw<Dashpot<LinearNormal>>;
 using LinearFrictionDashpotLaw = ContactLaw<Dashpot<LinearNormal>, LinearCoulomb>;
 using HertzMindlinDashpotLaw = ContactLaw<Dashpot<HertzNormal>, MindlinCoulomb>;
+using LinearCohesiveLaw = ContactLaw<LinearCohesiveNormal>;
+using LinearCohesiveFrictionLaw = ContactLaw<LinearCohesiveNormal, LinearCoulomb>;
 
 // Every law a scene can choose; the kernels are compiled for each.
 using AnyContactLaw = std::variant<LinearLaw, LinearFrictionLaw, LinearRollingLaw, HertzLaw, HertzMindlinLaw, HertzMindlinRollingLaw,
-                                   LinearDashpotLaw, LinearFrictionDashpotLaw, HertzMindlinDashpotLaw>;
+                                   LinearDashpotLaw, LinearFrictionDashpotLaw, HertzMindlinDashpotLaw, LinearCohesiveLaw,
+                                   LinearCohesiveFrictionLaw>;
 
 // The linear law with Coulomb friction if mu > 0 (frictionless otherwise).
 AnyContactLaw linear_law(double kn, double ks, double mu);

@@ -22,9 +22,9 @@ struct HertzNormal {
   // has -1 < nu <= 0.5, and nu = 0.5 (incompressible) is refused.
   static constexpr const char* law_name = "hertz_mindlin";
   static constexpr Parameter young_modulus_key{"young_modulus", "Pa", 0, 1e13, true, false, no_default,
-                                               "Young's modulus E of the grains (law hertz_mindlin)"};
+                                               "Young's modulus E of the grains"};
   static constexpr Parameter poisson_ratio_key{"poisson_ratio", "", -1, 0.5, true, true, no_default,
-                                               "Poisson's ratio nu of the grains (law hertz_mindlin)"};
+                                               "Poisson's ratio nu of the grains"};
   static constexpr std::array parameters{young_modulus_key, poisson_ratio_key};
   static HertzNormal from(const ParameterValues& v) { return {v.at(young_modulus_key.name), v.at(poisson_ratio_key.name)}; }
   void write(ParameterValues& v) const { v[young_modulus_key.name] = young_modulus_Pa, v[poisson_ratio_key.name] = poisson_ratio; }

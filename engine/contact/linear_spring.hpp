@@ -19,7 +19,7 @@ struct LinearNormal {
 
   // Scene keys (contact/parameter.hpp).
   static constexpr const char* law_name = "linear";
-  static constexpr Parameter kn_key{"kn", "N/m", 0, 1e12, true, false, no_default, "normal contact stiffness (law linear)"};
+  static constexpr Parameter kn_key{"kn", "N/m", 0, 1e12, true, false, no_default, "normal contact stiffness"};
   static constexpr std::array parameters{kn_key};
   static LinearNormal from(const ParameterValues& v) { return {v.at(kn_key.name)}; }
   void write(ParameterValues& v) const { v[kn_key.name] = kn; }
@@ -63,7 +63,7 @@ struct LinearCoulomb {
 
   // Scene keys: on when friction > 0. ks is accepted (and unused) with friction 0.
   static constexpr const char* switched_by = friction_key.name;
-  static constexpr Parameter ks_key{"ks", "N/m", 0, 1e12, false, false, no_default, "tangential contact stiffness (law linear)", true};
+  static constexpr Parameter ks_key{"ks", "N/m", 0, 1e12, false, false, no_default, "tangential contact stiffness", true};
   static constexpr std::array parameters{friction_key, ks_key};
   static LinearCoulomb from(const ParameterValues& v) { return {v.at(ks_key.name), v.at(friction_key.name)}; }
   void write(ParameterValues& v) const { v[ks_key.name] = ks, v[friction_key.name] = mu; }

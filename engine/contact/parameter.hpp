@@ -10,6 +10,8 @@
 // `void write(ParameterValues&) const`. A part that a key turns on names it in `switched_by`
 // (the part is in the law exactly when that key is > 0: friction, rolling_friction,
 // contact_damping). An elastic normal part names its law (`law_name`, the value of material.law).
+// A key of a new part gives an `example`: the tests that run every law (SIMD against scalar, 1
+// against 2 threads, the energy balance) build the part from it (tests/engine/dynamics/packing_support.hpp).
 #include <array>
 #include <limits>
 #include <map>
@@ -27,6 +29,7 @@ struct Parameter {
   double default_value;  // no_default: required (when its part is in the law)
   const char* doc;
   bool accepted_when_off = false;  // given while its part is off: read and checked, not an error
+  double example = no_default;     // a typical value (the tests' packings of every law); no_default: the tests' own
   bool required() const { return default_value != default_value; }
 };
 

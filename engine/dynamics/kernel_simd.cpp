@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <string_view>
 #include <tuple>
+#include <type_traits>
 #include <variant>
 
 #include "contact/scalar_lanes.hpp"
@@ -20,7 +21,7 @@
 
 namespace dem {
 
-#ifndef DEM_KERNEL_DASHPOT_UNIT
+#ifndef DEM_KERNEL_UNIT  // the first unit: what is compiled once
 int simd_width_available() {
   static const int width = __builtin_cpu_supports("avx512f") ? 8 : __builtin_cpu_supports("avx2") ? 4 : 0;
   return width;
@@ -506,21 +507,33 @@ MotionSums forces_and_motion(int simd_lanes, const Law& law, const DampingPolicy
 
 // forces_and_motion for every law a scene can choose, both damping forms, orthorhombic and
 // sheared: the table's addresses make the compiler emit each instantiation for
-// dynamics/simulation.cpp to call. The laws with contact dashpots are emitted by a unit of their
-// own (dynamics/kernel_simd_dashpot.cpp, which includes this file): GCC's inlining budget is per
-// unit, and with them in this one it stopped inlining Accumulator::add into the other laws' loops
-// (2-3 % slower); apart, the other laws' code is what it was without them.
-#ifdef DEM_KERNEL_DASHPOT_UNIT
-constexpr bool dashpot_unit = true;
+// dynamics/simulation.cpp to call. Each law is emitted by one of three units: this one the laws of
+// the studies (normal part LinearNormal or HertzNormal), dynamics/kernel_simd_dashpot.cpp the laws
+// with contact dashpots, dynamics/kernel_simd_other.cpp every other law (a new law lands there with
+// no change here). GCC's inlining budget is per unit: with the dashpot laws in this one it stopped
+// inlining Accumulator::add into the other laws' loops (2-3 % slower); apart, the studies' laws'
+// code is what it was without them, whatever laws are added.
+#ifndef DEM_KERNEL_UNIT
+#define DEM_KERNEL_UNIT 0
+#endif
+#if DEM_KERNEL_UNIT == 0
+#define DEM_KERNEL_STEPS steps_of_study_laws
+#elif DEM_KERNEL_UNIT == 1
 #define DEM_KERNEL_STEPS steps_of_dashpot_laws
 #else
-constexpr bool dashpot_unit = false;
-#define DEM_KERNEL_STEPS steps_of_every_law
+#define DEM_KERNEL_STEPS steps_of_other_laws
 #endif
 namespace {
 template <class Law>
+constexpr int kernel_unit() {
+  using Normal = typename Law::NormalLaw;
+  if constexpr (Law::damped) return 1;
+  else if constexpr (std::is_same_v<Normal, LinearNormal> || std::is_same_v<Normal, HertzNormal>) return 0;
+  else return 2;
+}
+template <class Law>
 auto steps_of() {
-  if constexpr (Law::damped == dashpot_unit) {
+  if constexpr (kernel_unit<Law>() == DEM_KERNEL_UNIT) {
     return std::make_tuple(&forces_and_motion<Law, ViscousDamping, false>, &forces_and_motion<Law, ViscousDamping, true>,
                            &forces_and_motion<Law, LocalDamping, false>, &forces_and_motion<Law, LocalDamping, true>);
   } else {

@@ -241,17 +241,18 @@ std::vector<BadScene> catalogue() {
        {"bad.yaml: material.ks: must be > 0 when friction > 0"}},
       // --- contact laws (engine/config/contact_keys.cpp, issue 22) ---------------------------------
       // Each law reads its own stiffness keys; another law's key is refused, naming the law it
-      // belongs to and the keys this one reads (not silently ignored).
+      // belongs to and the keys this one reads (not silently ignored). The lists of laws are
+      // matched up to their ends: a law added to AnyContactLaw is named after these.
       {"hertz_mindlin with kn", Yaml{.material = "{law: hertz_mindlin, young_modulus: 1.0e9, poisson_ratio: 0.3, kn: 1.0e6, friction: 0.5}",
                                      .extra = "damping: {form: local}\n"}.text(), C,
-       {"bad.yaml: material.kn: belongs to material.law: linear; law hertz_mindlin reads material.young_modulus and material.poisson_ratio"}},
+       {"bad.yaml: material.kn: belongs to material.law: linear", "; law hertz_mindlin reads material.young_modulus and material.poisson_ratio"}},
       {"hertz_mindlin with ks", Yaml{.material = "{law: hertz_mindlin, young_modulus: 1.0e9, poisson_ratio: 0.3, ks: 1.0e6, friction: 0.5}",
                                      .extra = "damping: {form: local}\n"}.text(), C,
-       {"bad.yaml: material.ks: belongs to material.law: linear; law hertz_mindlin reads material.young_modulus and material.poisson_ratio"}},
+       {"bad.yaml: material.ks: belongs to material.law: linear", "; law hertz_mindlin reads material.young_modulus and material.poisson_ratio"}},
       {"linear with young_modulus", Yaml{.material = "{kn: 1.0e6, ks: 1.0e6, young_modulus: 1.0e9, friction: 0.5}"}.text(), C,
        {"bad.yaml: material.young_modulus: belongs to material.law: hertz_mindlin; law linear reads material.kn"}},
       {"an unknown law", Yaml{.material = "{law: hertz, young_modulus: 1.0e9, poisson_ratio: 0.3, friction: 0.5}"}.text(), C,
-       {"bad.yaml: material.law: must be one of: linear, hertz_mindlin, got 'hertz' (line 5)"}},
+       {"bad.yaml: material.law: must be one of: linear, hertz_mindlin", ", got 'hertz' (line 5)"}},
       // Rolling resistance is an elastic-plastic spring: its cap mu_r R* f_n needs its stiffness.
       // rolling_stiffness is optional otherwise, so the message says why it is needed here.
       {"rolling_friction > 0 without rolling_stiffness", Yaml{.material = "{kn: 1.0e6, ks: 1.0e6, friction: 0.5, rolling_friction: 0.1}"}.text(), C,

@@ -301,16 +301,27 @@ TEST_CASE("Energy balance closes for every contact law, at O(dt^2) once Mindlin'
   const double m_star = 0.5 * 2650 * sphere_volume(1.5e-3), omega = std::sqrt(1e6 / m_star);
   const auto dashpot_bound = [&](double dt) { return 4 * 0.05 * omega * dt; };
   std::vector<bool> covered(std::variant_size_v<AnyContactLaw>, false);
-  for (const LawCase& c : laws) {
+  // The laws above with the damping each needs, then every other alternative of AnyContactLaw as
+  // the tests' packings run it (packing_support.hpp: its example constants and body damping), so
+  // that a new law is covered with no change here.
+  std::vector<LawCase> cases = laws;
+  for (std::size_t n = 0;; ++n) {
+    if (n == laws.size())  // the list is done: the alternatives it left out
+      for (const dem::test::LawScene& l : dem::test::every_law())
+        if (!covered[l.index]) cases.push_back({"every_law() #" + std::to_string(l.index) + " " + l.material, l.material, l.damping});
+    if (n >= cases.size()) break;
+    const LawCase c = cases[n];
     INFO("law " << c.name);
     std::vector<double> residual;
-    bool damped = false;
+    bool damped = false, jumps = false;
     for (const double dt : {2e-6, 1e-6, 5e-7}) {
       const LawBalance b = squeeze_law(c, dt);
       const EnergyBalance& e = b.sim.energy();
       const AnyContactLaw& law = b.sim.material().law;
       covered[law.index()] = true;
       damped = contact_damping_ratio(law) > 0;
+      // A normal force that is not 0 at first touch (a pull-off force) jumps there.
+      jumps = std::visit([](const auto& l) { return l.normal.template force<scalar_lanes::Ops>(0.0, 1e-3) != 0.0; }, law);
       const double in = e.energy_in();
       const double r = (closure_gap(e) - b.mindlin.S) / in;
       INFO("dt " << dt << ": in " << in << " J, stored " << e.stored() << " J, damping " << e.dissipated_damping
@@ -338,6 +349,13 @@ TEST_CASE("Energy balance closes for every contact law, at O(dt^2) once Mindlin'
       residual.push_back(std::abs(r));
     }
     INFO("residuals " << residual[0] << ", " << residual[1] << ", " << residual[2]);
+    if (jumps) {
+      // The force jumps by f_c where a contact closes and opens, at a point of the step the
+      // leapfrog does not see: each such event leaves O(f_c |v| dt) open, so the balance closes at
+      // O(dt), 4 over two halvings (and within the issue's 1 %, required above).
+      REQUIRE(residual[0] / residual[2] > 3);
+      continue;
+    }
     if (damped) {
       for (std::size_t k = 0; k < 3; ++k) REQUIRE(residual[k] <= dashpot_bound(2e-6 / double(1 << k)));
       // Contact dashpots: the engine books c (d overlap/dt)^2 dt with the speed of the half step

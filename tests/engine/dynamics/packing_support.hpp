@@ -68,9 +68,29 @@ inline Simulation compressed(double friction, int threads, int steps, int side =
 // Rolling: mu_r = 0.1 with k_r = 5e5 N/m (linear; half of kn) and 5e4 N/m (Hertz; about half the
 // normal stiffness 2 E* sqrt(R* delta) ~ 1.4e5 N/m at 100 kPa): the rolling spring's rotational
 // frequency sqrt(k_r R*^2 / I) stays below the normal one. Contact dashpots: zeta = 0.05.
-// A new kind of part needs its example here; a new combination of parts needs nothing.
+// A new kind of part needs nothing here either: it is built by its own `from` from these values
+// and, for a key of its own, the `example` its declaration gives (contact/parameter.hpp).
 template <class T>
 using part = std::type_identity<T>;
+inline ParameterValues example_values() {
+  return {{"kn", 1e6}, {"ks", 1e6}, {"friction", 0.5}, {"young_modulus", 1e9}, {"poisson_ratio", 0.3},
+          {"rolling_friction", 0.1}, {"rolling_stiffness", 5e5}, {"contact_damping", 0.05}};
+}
+template <class Part>
+Part example_part() {
+  ParameterValues v = example_values();
+  for (const Parameter& p : Part::parameters)
+    if (!v.count(p.name)) v[p.name] = p.example == p.example ? p.example : p.default_value;  // NaN: the scene refuses it
+  return Part::from(v);
+}
+template <class Normal>
+Normal example_normal(part<Normal>) {
+  return example_part<Normal>();
+}
+template <class Tangential>
+Tangential example_tangential(part<Tangential>, const auto&) {
+  return example_part<Tangential>();
+}
 inline LinearNormal example_normal(part<LinearNormal>) { return {1e6}; }
 inline HertzNormal example_normal(part<HertzNormal>) { return {1e9, 0.3}; }
 template <class Elastic>
