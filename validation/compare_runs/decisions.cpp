@@ -2,7 +2,8 @@
 // reading's ensemble, the shift of the mean in baseline standard deviations, a tornado chart per
 // group of rows, and the reading that explains each inconsistent row. Writes OUT/table.md,
 // decisions.json and, per group, tornado_<group>.dat and tornado_values.gp
-// (reports/gnuplot/tornado.gp draws tornado_<group>.png).
+// (reports/gnuplot/tornado.gp draws tornado_<group>.png). With --from-json, the same table.md,
+// tornado_<group>.dat and tornado_values.gp re-drawn from a decisions.json alone (decisions_from_json).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -10,6 +11,8 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
+#include <stdexcept>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -18,6 +21,7 @@
 
 #include "compare_runs/modes.hpp"
 #include "decisions.hpp"
+#include "decisions_file.hpp"
 #include "figures.hpp"
 #include "format.hpp"
 #include "io/atomic_file.hpp"
@@ -145,6 +149,36 @@ std::string group_section(const std::string& g, const std::vector<RowDecision>& 
     table.row(cells);
   }
   return "\n### " + g + "\n\n![tornado chart: " + g + "](" + key + ".png)\n\n" + table.text();
+}
+
+// What a cell of the tables says. `full_size`: the verdicts are those of the paper study's full-size
+// ensemble with each reading's shift applied (compare-runs decisions --ensemble).
+std::string cell_legend(bool full_size) {
+  return std::string("Each cell: the shift of the ensemble mean from the baseline's, in units of max(baseline sd, the row's resolution), "
+                     "and the verdict under that reading (✅ consistent, ❌ inconsistent, — not judged; \"") + lacks_runs +
+         "\": a sample lacks a run the row reads, so the reading is not judged on it)" +
+         (full_size ? std::string(" of the paper study's full-size ensemble with that shift of the mean applied to each of its "
+                                  "samples; the baseline column gives this study's mean ± sd and the full-size ensemble's verdict.\n")
+                    : std::string(".\n"));
+}
+
+// Every group's section of table.md (group_section) in the order of `groups`, and
+// OUT/tornado_values.gp, which reports/gnuplot/tornado.gp reads: both modes draw with this.
+std::string group_sections(const std::vector<std::string>& groups, const std::vector<RowDecision>& decided,
+                           const std::vector<std::string>& others, const std::string& out) {
+  validation::GnuplotValues gp_values;
+  gp_values.texts("tornado_reading", others);
+  std::string md, group_names;
+  for (const std::string& g : groups) {
+    md += group_section(g, decided, others, out, gp_values);
+    if (!group_names.empty()) group_names += ' ';
+    group_names += validation::file_safe(g);
+  }
+  gp_values.text("tornado_groups", group_names);
+  dem::write_file_atomically((fs::path(out) / "tornado_values.gp").string(),
+                             gp_values.text_file("Written by compare-runs decisions: what reports/gnuplot/tornado.gp draws, one chart "
+                                                 "per group from tornado_<group>.dat"));
+  return md;
 }
 
 // The size check: the baseline of this study against the paper study's ensemble (its own sample
@@ -297,28 +331,11 @@ int decisions(const Manifest& manifest, const std::string& results, const std::s
                    (baseline_results.empty() ? std::string(")")
                                              : "; the baseline is the samples of the same seeds in `" + relative_paths(baseline_results, baseline_results) +
                                                    "`, the same scenes and engine)") +
-                   ":\n\n" + reading_table.text() +
-                   "\nEach cell: the shift of the ensemble mean from the baseline's, in units of max(baseline sd, the row's resolution), "
-                   "and the verdict under that reading (✅ consistent, ❌ inconsistent, — not judged; \"" + lacks_runs +
-                   "\": a sample lacks a run the row reads, so the reading is not judged on it)" +
-                   (full.empty() ? std::string(".\n")
-                                 : std::string(" of the paper study's full-size ensemble with that shift of the mean applied to each of its "
-                                               "samples; the baseline column gives this study's mean ± sd and the full-size ensemble's verdict.\n"));
+                   ":\n\n" + reading_table.text() + "\n" + cell_legend(!full.empty());
   if (rows.size() < all_rows)
     md += "\nOnly the rows of the densities this study runs (" + validation::joined(densities, ", ") + "): " + std::to_string(rows.size()) +
           " of " + std::to_string(all_rows) + ".\n";
-  validation::GnuplotValues gp_values;  // tornado_values.gp, read by reports/gnuplot/tornado.gp
-  gp_values.texts("tornado_reading", others);
-  std::string group_names;
-  for (const std::string& g : groups) {
-    md += group_section(g, decided, others, out, gp_values);
-    if (!group_names.empty()) group_names += ' ';
-    group_names += validation::file_safe(g);
-  }
-  gp_values.text("tornado_groups", group_names);
-  dem::write_file_atomically((fs::path(out) / "tornado_values.gp").string(),
-                             gp_values.text_file("Written by compare-runs decisions: what reports/gnuplot/tornado.gp draws, one chart "
-                                                 "per group from tornado_<group>.dat"));
+  md += group_sections(groups, decided, others, out);
   if (!ensemble.empty()) md += size_check(decided, full_samples.size());
   try {
     dem::write_file_atomically((fs::path(out) / "table.md").string(), md);
@@ -334,6 +351,138 @@ int decisions(const Manifest& manifest, const std::string& results, const std::s
   for (const RowDecision& d : decided) not_judged += !d.judged;
   std::printf("decisions: %zu readings, %zu rows (%zu not judged), %s, %zu result files missing -> %s\n", others.size(), rows.size(),
               not_judged, measured.c_str(), missing.size(), (fs::path(out) / "table.md").c_str());
+  return 0;
+}
+
+namespace {
+
+// A number of decisions.json, or none (null, absent).
+std::optional<double> json_number(const nlohmann::ordered_json& j, const char* key) {
+  return j.contains(key) && j.at(key).is_number() ? std::optional<double>(j.at(key).get<double>()) : std::nullopt;
+}
+
+Verdict verdict_of(const nlohmann::ordered_json& j, const char* key) {
+  const std::string v = j.contains(key) && j.at(key).is_string() ? j.at(key).get<std::string>() : "";
+  return v == validation::to_string(Verdict::Consistent) ? Verdict::Consistent
+         : v == validation::to_string(Verdict::Inconsistent) ? Verdict::Inconsistent
+                                                              : Verdict::NotJudged;
+}
+
+// A result as decisions.json records it: its mean and sd. `samples`: how many samples it had, when
+// the file says (mean_sd() prints a mean ± sd for more than one; a recorded sd means at least two).
+RowResult recorded_result(std::optional<double> mean, std::optional<double> sd, Verdict verdict, std::size_t samples) {
+  RowResult r;
+  r.verdict = verdict;
+  if (!mean) return r;
+  r.spread.mean = *mean;
+  r.spread.sd = sd.value_or(0.0);
+  r.valued = sd ? static_cast<int>(std::max<std::size_t>(2, samples)) : 1;
+  r.spread.n = r.valued;
+  return r;
+}
+
+}  // namespace
+
+int decisions_from_json(const std::string& file, const std::string& out, const std::string& references) {
+  using json = nlohmann::ordered_json;  // ordered: the readings in the file's order, as the study ran them
+  std::vector<validation::Row> rows;
+  validation::DecisionsFile findings;
+  json j;
+  try {
+    rows = validation::load_references(references, "paper");
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 2;
+  }
+  try {
+    std::ifstream in(file);
+    if (!in) throw std::runtime_error("cannot be read");
+    j = json::parse(in);
+    if (!j.contains("rows") || !j.at("rows").is_array()) throw std::runtime_error("has no list of rows");
+    // The explanations and whether each row was judged, read as validate reads them (a file of
+    // schema 1 has its explanations' shifts restated there).
+    findings = validation::read_decisions_file(file, rows);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: --from-json %s: %s\n", file.c_str(), e.what());
+    return 2;
+  }
+  std::map<std::string, const validation::Row*> row_of;
+  for (const validation::Row& r : rows) row_of[r.name] = &r;
+  const std::string baseline = j.contains("baseline") && j.at("baseline").is_string() ? j.at("baseline").get<std::string>() : "baseline";
+  const std::size_t samples = findings.samples.value_or(0);
+
+  // The readings in the file's order (every row's, first seen first) and the groups likewise.
+  std::vector<std::string> others, groups;
+  for (const json& row : j.at("rows")) {
+    if (row.contains("readings"))
+      for (const auto& [reading, value] : row.at("readings").items())
+        if (std::find(others.begin(), others.end(), reading) == others.end()) others.push_back(reading);
+    const std::string g = row.value("group", std::string("rows"));
+    if (std::find(groups.begin(), groups.end(), g) == groups.end()) groups.push_back(g);
+  }
+
+  std::vector<RowDecision> decided;
+  std::vector<std::string> unknown;  // rows the references do not have: shifts in baseline sd alone
+  std::size_t clipped = 0;
+  for (const json& row : j.at("rows")) {
+    RowDecision d;
+    d.row.name = row.at("name").get<std::string>();
+    d.row.group = row.value("group", std::string("rows"));
+    if (row_of.count(d.row.name)) d.row.resolution = row_of.at(d.row.name)->resolution;
+    else unknown.push_back(d.row.name);
+    const std::optional<double> base = json_number(row, "baseline_mean");
+    const std::optional<double> base_sd = json_number(row, "baseline_sd");
+    d.baseline = recorded_result(base, base_sd, verdict_of(row, "baseline_verdict"), samples);
+    for (const std::string& reading : others) {
+      validation::ReadingEffect e;
+      e.reading = reading;
+      if (row.contains("readings") && row.at("readings").contains(reading)) {
+        const json& r = row.at("readings").at(reading);
+        const std::optional<double> mean = json_number(r, "mean");
+        e.result = recorded_result(mean, std::nullopt, verdict_of(r, "verdict"), samples);
+        if (r.contains("missing_runs")) e.missing = r.at("missing_runs").get<std::vector<std::string>>();
+        // The shift restated from the recorded means, whatever shift_sd the file holds (a file of
+        // schema 1 counted it in baseline sd alone: +116979 where the sd is far below the resolution).
+        if (mean && base && e.missing.empty()) {
+          const double z = validation::shift_in_sd(*mean - *base, base_sd.value_or(0.0), d.row.resolution);
+          if (std::isfinite(z)) e.shift_sd = z;
+          if (std::isfinite(z) && std::abs(z) > validation::shift_clip) ++clipped;
+        }
+      }
+      d.readings.push_back(std::move(e));
+    }
+    if (const auto it = findings.rows.find(d.row.name); it != findings.rows.end()) {
+      d.judged = it->second.judged;
+      d.explanation = it->second.explanation;
+    }
+    decided.push_back(std::move(d));
+  }
+
+  // What this table is, computed from the file: where it comes from, its size, and what of the
+  // section drawn from the results it cannot show.
+  // Its size as the file records it (size_label: "size not recorded" when it does not).
+  const std::string size = findings.particles ? "measured at " + validation::size_label(findings) + " per reading" : validation::size_label(findings);
+  std::string md = "Re-drawn from `" + file + "` alone, without the study's results (not on the machine that drew it); " + size +
+                   ". Each shift is restated from the means the file records, "
+                   "(reading mean − baseline mean) / max(baseline sd, the row's resolution in `" + references +
+                   "`), and so are the shifts the explanations quote. What needs the results and is not re-drawn: the readings' settings; "
+                   "the verdicts of the paper study's full-size ensemble (each mark below is the verdict on this study's own samples, as "
+                   "the file records it; an explanation judged on the full-size ensemble may disagree with it); and the size check of this study's baseline against the paper study's ensemble.\n\n"
+                   "Readings (each one change from the baseline, `" + baseline + "`): " + validation::joined(others, ", ") + ".\n\n" +
+                   cell_legend(false);
+  if (!unknown.empty())
+    md += "\nRows not in `" + references + "` (their shifts in baseline sd alone, no resolution known): " + validation::joined(unknown, "; ") + ".\n";
+  try {
+    fs::create_directories(out);
+    md += group_sections(groups, decided, others, out);
+    dem::write_file_atomically((fs::path(out) / "table.md").string(), md);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
+  }
+  std::printf("decisions: re-drawn from %s: %zu readings, %zu rows, %s; shifts beyond ±%.0f sd (written with their value): %zu -> %s\n",
+              file.c_str(), others.size(), decided.size(), validation::size_label(findings).c_str(), validation::shift_clip, clipped,
+              (fs::path(out) / "table.md").c_str());
   return 0;
 }
 

@@ -3,6 +3,7 @@
 //   compare-runs stability RESULTS_DIR OUT_DIR [--report-only]
 //   compare-runs decisions RESULTS_DIR OUT_DIR [--reference NAME] [--references FILE] [--ensemble PAPER_RESULTS]
 //                          [--baseline-results DIR]
+//   compare-runs decisions --from-json DECISIONS_JSON OUT_DIR [--references FILE]
 //   compare-runs critical-state RESULTS_DIR OUT_DIR [--ensemble DIR] [--rates DIR]
 //   compare-runs liquefaction OUT_DIR RESULTS_DIR...
 // Each mode is a file of compare_runs/ (what it writes: modes.hpp); this one parses the arguments
@@ -53,16 +54,30 @@ int main(int argc, char** argv) {
   CLI::App* stability = study_mode(app, "stability", "what became of each case: table.md (exit 1 if a case is not acceptable)", stability_f);
   stability->add_flag("--report-only", report_only, "mark a case that is not acceptable in the table, and exit 0");
 
-  CLI::App* decisions = study_mode(app, "decisions",
-                                   "every validation row on every reading's ensemble against the baseline's: table.md, decisions.json, "
-                                   "tornado_<group>.dat, tornado_values.gp",
-                                   decisions_f);
-  decisions->add_option("--reference", baseline, "the baseline reading")->capture_default_str();
+  // Not study_mode(): with --from-json the one folder given is OUT_DIR (checked after parsing).
+  std::string from_json;
+  CLI::App* decisions = app.add_subcommand("decisions",
+                                           "every validation row on every reading's ensemble against the baseline's: table.md, decisions.json, "
+                                           "tornado_<group>.dat, tornado_values.gp");
+  decisions->add_option("RESULTS_DIR", decisions_f.results,
+                        "the study's results folder (its runs.tsv, written by build/bin/pipeline); left out with --from-json");
+  decisions->add_option("OUT_DIR", decisions_f.out, "where the tables and the figures' data go (made if missing)");
+  CLI::Option* reference_opt = decisions->add_option("--reference", baseline, "the baseline reading")->capture_default_str();
   decisions->add_option("--references", references, "the validation rows (the paper's values)")->capture_default_str();
-  decisions->add_option("--ensemble", ensemble, "the paper study's results: verdicts and causes are judged on its full-size ensemble");
-  decisions->add_option("--baseline-results", baseline_results,
-                        "for a study of readings only (no baseline of its own): the study whose samples of the same seeds are the "
-                        "baseline (e.g. results/study/paper)");
+  CLI::Option* ensemble_opt =
+      decisions->add_option("--ensemble", ensemble, "the paper study's results: verdicts and causes are judged on its full-size ensemble");
+  CLI::Option* baseline_results_opt =
+      decisions->add_option("--baseline-results", baseline_results,
+                            "for a study of readings only (no baseline of its own): the study whose samples of the same seeds are the "
+                            "baseline (e.g. results/study/paper)");
+  decisions
+      ->add_option("--from-json", from_json,
+                   "re-draw table.md, tornado_<group>.dat and tornado_values.gp from this decisions.json alone, without the study's "
+                   "results (compare-runs decisions --from-json FILE OUT_DIR): shifts restated against the rows' resolutions")
+      ->check(CLI::ExistingFile)
+      ->excludes(reference_opt)
+      ->excludes(ensemble_opt)
+      ->excludes(baseline_results_opt);
 
   CLI::App* critical = study_mode(app, "critical-state",
                                   "peak and critical state of each constant-p shear, the peaks in the pi-plane: table.md, "
@@ -99,8 +114,19 @@ int main(int argc, char** argv) {
     const int rc = app.exit(e);  // prints the help, or the error naming the option
     return rc == 0 ? 0 : 2;      // bad arguments: exit 2, as always
   }
+  // decisions: RESULTS_DIR and OUT_DIR, or OUT_DIR alone with --from-json (then in `results`).
+  if (*decisions) {
+    const bool both = !decisions_f.out.empty(), none = decisions_f.results.empty();
+    const char* error = !from_json.empty() ? (both ? "--from-json takes OUT_DIR alone (no RESULTS_DIR)" : none ? "--from-json needs OUT_DIR" : nullptr)
+                                           : (!both ? "decisions needs RESULTS_DIR and OUT_DIR (or --from-json FILE OUT_DIR)" : nullptr);
+    if (error) {
+      std::fprintf(stderr, "compare-runs: %s\nRun with --help for more information.\n", error);
+      return 2;
+    }
+  }
   try {
     if (*liquefaction) return compare_runs::liquefaction(liquefaction_out, liquefaction_folders);
+    if (*decisions && !from_json.empty()) return compare_runs::decisions_from_json(from_json, decisions_f.results, references);
     const Folders& f = *convergence ? convergence_f : *stability ? stability_f : *decisions ? decisions_f : critical_f;
     compare_runs::Manifest manifest;
     try {
