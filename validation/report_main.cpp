@@ -281,11 +281,13 @@ int main(int argc, char** argv) {
     {
       const auto cs = opt["--convergence"].empty() ? std::map<std::string, std::string>{}
                                                    : validation::run_settings(opt["--convergence"], "reference_");
+      v["have_convergence"] = cs.empty() ? "" : "yes";  // its results are here (else report --previous keeps the section)
       v["convergence.particles"] = validation::thousands(cs.count("particles") ? cs.at("particles") : "");
       v["convergence.time_step_us"] = scaled(cs, "time_step_test_s", 1e-6);
       v["convergence.stress_rate_MPa_per_s"] = scaled(cs, "stress_rate_Pa_per_s", 1e6);
       const auto ss = opt["--stability"].empty() ? std::map<std::string, std::string>{}
                                                  : validation::run_settings(opt["--stability"], "", "base");
+      v["have_stability"] = ss.empty() ? "" : "yes";
       v["stability.particles"] = validation::thousands(ss.count("particles") ? ss.at("particles") : "");
       v["stability.target_pressure_kPa"] = ss.count("target_pressure_kPa") ? ss.at("target_pressure_kPa") : "?";
       v["stability.max_energy_error_percent"] = scaled(ss, "max_energy_error", 0.01);
