@@ -183,17 +183,22 @@ report: tools
 	$(BUILD)/bin/report --results $(RESULTS) --references reference_data/paper.yaml --out reports --sample $(strip $(SAMPLE)) \
 	  --baseline $(BASELINE) --convergence $(CONVERGENCE) --decisions $(DECISIONS) --stability $(STABILITY) $(REPORT_SOURCE)
 
-# Published DEM values (reference_data/literature.yaml) against the critical-state ensemble
-# (pipeline/studies/critical_state_ensemble.yaml, run by `make critical-state`); a study not run yet
-# is said so. `literature` runs the study first.
+# Published DEM values: reference_data/literature.yaml against the critical-state ensemble
+# (pipeline/studies/critical_state_ensemble.yaml, also run by `make critical-state`), and
+# reference_data/literature_fcc.yaml against Thornton's FCC array (pipeline/studies/fcc_thornton.yaml,
+# 108 spheres, seconds); a study not run yet is said so. `literature` runs the studies first.
 LITERATURE_RESULTS ?= results/critical_state_ensemble/paper
+FCC_RESULTS ?= results/fcc_thornton/paper
 literature: tools
-	$(BUILD)/bin/pipeline pipeline/studies/critical_state_ensemble.yaml --profile paper -j $(JOBS) $(if $(strip $(EXECUTOR)),--executor $(strip $(EXECUTOR)))
+	$(BUILD)/bin/pipeline pipeline/studies/critical_state_ensemble.yaml pipeline/studies/fcc_thornton.yaml --profile paper -j $(JOBS) $(if $(strip $(EXECUTOR)),--executor $(strip $(EXECUTOR)))
 	$(MAKE) --no-print-directory literature-report
 literature-report: tools
 	@if [ -f $(LITERATURE_RESULTS)/runs.tsv ]; then mkdir -p reports/literature && \
 	  $(BUILD)/bin/validate --results $(LITERATURE_RESULTS) --references reference_data/literature.yaml --out reports/literature; \
 	else echo "literature: no results in $(LITERATURE_RESULTS) yet (make literature)"; fi
+	@if [ -f $(FCC_RESULTS)/runs.tsv ]; then mkdir -p reports/literature/fcc && \
+	  $(BUILD)/bin/validate --results $(FCC_RESULTS) --references reference_data/literature_fcc.yaml --out reports/literature/fcc; \
+	else echo "literature: no results in $(FCC_RESULTS) yet (make literature)"; fi
 
 # The report from the studies that are here, every other section kept from the report before
 # (`report --previous`; its header names those sections): after running one study (make

@@ -117,6 +117,7 @@ ShearSummary summarise_shear(const Columns& series, double cs_from, double cs_to
     const double strain = std::abs(axial[rows[k]]);
     out.max_axial_strain = std::max(out.max_axial_strain, strain);
     out.peak_phi_raw_deg = std::max(out.peak_phi_raw_deg, mobilised_friction_deg(principal[k]));
+    if (principal[k][2] > 0) out.peak_ratio_raw = std::max(out.peak_ratio_raw, principal[k][0] / principal[k][2]);
     out.p_min_Pa = std::min(out.p_min_Pa, principal[k].sum() / 3), out.p_max_Pa = std::max(out.p_max_Pa, principal[k].sum() / 3);
     dem::Vec3 mean = dem::Vec3::Zero();
     int n = 0;

@@ -62,6 +62,7 @@ struct ShearSummary {
   double max_axial_strain = 0;     // largest |strain_3| reached
   // The peak: the row where the smoothed mobilised friction angle is largest (see .cpp).
   double peak_phi_deg = 0, peak_phi_raw_deg = 0, peak_axial_strain = 0;
+  double peak_ratio_raw = 0;  // the largest sigma_1 / sigma_3 of any row, unsmoothed
   dem::Vec3 peak_principal_Pa = dem::Vec3::Zero();  // smoothed, at the peak
   double peak_b = 0;
   PiPoint peak_pi;

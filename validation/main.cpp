@@ -170,7 +170,7 @@ std::vector<std::string> markdown_cells(const Judged& j) {
     const auto& v = e.samples[k].measured.value;
     values += (k ? ", " : "") + (e.valued > 1 && v ? validation::to_scatter(*v, e.spread.sd) : number_or_dash(v));
   }
-  return {r.name, statement(r), values, mean_sd_n(e), interval(e), holds_in(e), r.rule == "majority" ? "holds in > half" : "interval",
+  return {r.name, statement(r), values, mean_sd_n(e), interval(e), holds_in(e), r.rule == "majority" ? "holds in > half" : r.rule == "every" ? "holds in every" : "interval",
           mark(e.verdict), r.must_pass ? "yes" : "no", r.source, r.reason};
 }
 
@@ -287,7 +287,8 @@ int main(int argc, char** argv) {
   json["rules"] = {
       {"interval", "consistent: the " + refs.label + "'s value, widened by the row's tolerance, overlaps the 95 % prediction interval of one sample (mean -/+ t(0.975, n-1) sd sqrt(1 + 1/n))"},
       {"majority", "consistent: the " + refs.label + "'s statement holds in more than half of the samples"},
-      {"both", "not judged with fewer than 2 samples with a value"}};
+      {"every", "consistent: the " + refs.label + "'s statement holds in every sample with a value, one or more (a case without scatter)"},
+      {"both", "interval and majority: not judged with fewer than 2 samples with a value"}};
   json["samples"] = results.samples();
   json["missing_samples"] = missing_samples;
   json["missing_results"] = nlohmann::json::array();

@@ -198,6 +198,15 @@ const std::map<std::string, Quantity>& registry() {
             return s.peak_phi_deg;
           }, "no test has shearing rows");
         }}},
+      // The largest sigma_1 / sigma_3 of the shear, unsmoothed (a crystal's peak comes at ~1e-3 strain,
+      // well inside the peak angle's 1 % smoothing window): Thornton's FCC strength.
+      {"peak_principal_stress_ratio",
+       {tests, [](const QuantityRequest&, const DensityResults& r) {
+          return mean_over_shears(r, [](const ShearSummary& s) -> std::optional<double> {
+            if (s.rows == 0 || s.peak_ratio_raw == 0) return std::nullopt;
+            return s.peak_ratio_raw;
+          }, "no test has shearing rows");
+        }}},
       {"critical_state_friction_angle",
        {tests, [](const QuantityRequest&, const DensityResults& r) {
           return mean_over_shears(r, [](const ShearSummary& s) -> std::optional<double> {

@@ -238,6 +238,8 @@ int main(int argc, char** argv) {
     include("file.stability", fs::path("stability") / "table.md");
     include("file.literature", fs::path("literature") / "validation.md");
     include("file.literature_verdicts", fs::path("literature") / "verdicts.md");
+    include("file.literature_fcc", fs::path("literature") / "fcc" / "validation.md");
+    include("file.literature_fcc_verdicts", fs::path("literature") / "fcc" / "verdicts.md");
     v["file.critical_state"] = fs::exists(report / "critical_state" / "table.md") ? section_table(report, "critical_state") : "";
     v["file.liquefaction"] = fs::exists(report / "liquefaction" / "table.md") ? section_table(report, "liquefaction") : "";
     v["convergence_plot"] = fs::exists(report / "convergence" / "error_vs_time.png") ? "yes" : "";

@@ -66,9 +66,10 @@ Row read_row(dem::Section& s, const std::string& name) {
   r.reason = s.text("reason", std::nullopt, "why this tolerance");
   r.source = s.text("source", std::nullopt, "where the value comes from: a table, figure or section of the paper, a lab report");
   r.group = s.text("group", std::string("other"), "the report's group of rows (one tornado chart each)");
-  r.rule = s.choice("rule", {"interval", "majority"}, std::string("interval"),
+  r.rule = s.choice("rule", {"interval", "majority", "every"}, std::string("interval"),
                     "interval: the reference's region overlaps the 95 % prediction interval of one sample; "
-                    "majority: the statement holds in more than half of the samples (trends, orderings)");
+                    "majority: the statement holds in more than half of the samples (trends, orderings); "
+                    "every: it holds in every sample, one or more (a case without scatter, such as a perfect lattice)");
   r.cycle = static_cast<int>(s.integer("cycle", 0, 1000, 0, "cycle for per-cycle quantities"));
   r.from_cycle = static_cast<int>(s.integer("from_cycle", 0, 1000, 0, "first cycle of a change"));
   r.to_cycle = static_cast<int>(s.integer("to_cycle", 0, 1000, 0, "last cycle of a change"));
@@ -133,6 +134,8 @@ RowResult judge_values(const Row& row, std::vector<RowResult::PerSample> samples
   out.spread = spread(values);
   if (row.rule == "majority")
     out.verdict = out.valued < 2 ? Verdict::NotJudged : 2 * out.holds > out.valued ? Verdict::Consistent : Verdict::Inconsistent;
+  else if (row.rule == "every")
+    out.verdict = out.valued < 1 ? Verdict::NotJudged : out.holds == out.valued ? Verdict::Consistent : Verdict::Inconsistent;
   else
     out.verdict = judge(out.spread, out.paper);
   return out;

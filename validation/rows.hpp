@@ -26,7 +26,8 @@ struct Row {
   std::string group;  // the report groups rows (and draws one tornado chart per group)
   // How the row is judged: "interval" (a value read from the paper: consistent when the paper's
   // region overlaps the 95 % prediction interval of one sample) or "majority" (a trend or an
-  // ordering: consistent when the statement holds in more than half of the samples).
+  // ordering: consistent when the statement holds in more than half of the samples) or "every"
+  // (no scatter, e.g. a perfect lattice: consistent when it holds in every sample, one or more).
   std::string rule = "interval";
   std::string origin;  // where the row is written, for messages: `FILE: rows[i] ("NAME")`
 };

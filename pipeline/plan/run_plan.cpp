@@ -17,6 +17,8 @@
 #include "control/stress_path.hpp"
 #include "dynamics/simulation.hpp"
 #include "generate/grading.hpp"
+#include "io/particle_csv.hpp"
+#include "io/state_io.hpp"
 
 namespace pipeline {
 
@@ -137,6 +139,17 @@ std::string read_files(const dem::SceneConfig& scene) {
   return "\nreads " + scene.particles.path + " " + content_hash(bytes.str());
 }
 
+// The number of spheres a preparation starts from: the lattice's sites, the CSV file's rows or the
+// saved state's spheres (for the cost estimate; the files are read again by dem).
+double particles_of(const dem::SceneConfig& scene) {
+  const dem::ParticleSource& src = scene.particles;
+  if (src.kind == dem::ParticleSource::Kind::Lattice) return static_cast<double>(src.lattice.n[0]) * src.lattice.n[1] * src.lattice.n[2];
+  if (src.kind == dem::ParticleSource::Kind::State) return static_cast<double>(dem::read_state(src.path).particles.size());
+  dem::Particles p;
+  dem::parse_particle_csv(dem::read_whole_file(src.path), src.path, dem::PeriodicCell(src.cell_m), scene.material.density_kg_per_m3, p);
+  return static_cast<double>(p.size());
+}
+
 }  // namespace
 
 std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, const std::string& out_dir,
@@ -179,13 +192,28 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
       paths(prep);
       YAML::Node scene = load_yaml(study.preparation);
       const std::string n = std::to_string(profile.lattice);
+      // A preparation from particles.csv or particles.state starts from its file's spheres: the
+      // profile's lattice does not apply, and there is no sampler for a seed to change.
+      const bool from_lattice = scene["particles"] && scene["particles"]["lattice"];
+      // The resolved scene is written elsewhere: a file it reads is named from the template's folder.
+      for (const char* key : {"csv", "state"})
+        if (scene["particles"] && scene["particles"][key] && scene["particles"][key].IsScalar()) {
+          const fs::path file = scene["particles"][key].as<std::string>();
+          if (file.is_relative())
+            scene["particles"][key] = (fs::absolute(study.preparation).parent_path() / file).lexically_normal().string();
+        }
+      if (!from_lattice && sample_of.seed)
+        throw dem::ConfigError(study.file + ": profiles." + profile.name + ".seeds: the preparation " + study.preparation +
+                               " reads its spheres from a file (particles.csv or particles.state), which no seed changes; "
+                               "give seeds only with a particles.lattice preparation");
       dem::Particles sample;  // only for time_step_fraction
       in_context(study, where, [&] {
         dem::apply_override(scene, study.preparation, "name", prep.name);
         std::ostringstream mu;
         mu << d.friction;
         dem::apply_override(scene, study.preparation, "material.friction", mu.str());
-        dem::apply_override(scene, study.preparation, "particles.lattice.n", "[" + n + ", " + n + ", " + n + "]");
+        if (from_lattice)
+          dem::apply_override(scene, study.preparation, "particles.lattice.n", "[" + n + ", " + n + ", " + n + "]");
         if (sample_of.seed)
           dem::apply_override(scene, study.preparation, "particles.lattice.seed", std::to_string(*sample_of.seed));
         for (const auto& [key, value] : v.set) dem::apply_override(scene, study.preparation, key, value);
@@ -211,8 +239,7 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
             in_context(study, where, [&] { return dem::scene_from_text(prep.scene_text, prep.scene_file); });
         prep.hash = content_hash(engine_version + "\n" + prep.scene_text + read_files(parsed));
         prep_index = static_cast<int>(runs.size());
-        const auto& lat = parsed.particles.lattice;
-        particles[prep_index] = static_cast<double>(lat.n[0]) * lat.n[1] * lat.n[2];
+        particles[prep_index] = particles_of(parsed);
         prep.cost = particles[prep_index] * estimated_steps(parsed);
         prep.family = d.name + " " + study.preparation;
         prep.variants = {v.name};

@@ -9,6 +9,7 @@
 #include "config/scene_config.hpp"
 #include "config/study_config.hpp"
 #include "exec/scheduler.hpp"
+#include "io/particle_csv.hpp"
 #include "plan/run_plan.hpp"
 
 namespace {
@@ -97,4 +98,68 @@ TEST_CASE("a study with an unknown profile or a missing scene is refused naming 
          "tests: [{name: t, scene: nowhere.yaml}]\nprofiles: {paper: {}, quick: {}}\n";
   }
   CHECK_THROWS_WITH(pipeline::load_study(bad), Catch::Matchers::Contains("preparation: no such file"));
+}
+
+// A preparation may read its spheres from a file (pipeline/studies/fcc_thornton.yaml reads a CSV of
+// an FCC array): the profile's lattice must not be added to it (a scene with both is refused), the
+// file is named from the template's folder (the resolved scene lives elsewhere), the cost counts
+// the file's spheres, and a seed, which no file obeys, is refused naming the key.
+TEST_CASE("a preparation from a particle CSV keeps its file's spheres", "[pipeline]") {
+  const std::string fcc = std::string(DEM_SOURCE_DIR) + "/pipeline/studies/fcc_thornton.yaml";
+  const pipeline::Study study = pipeline::load_study(fcc);
+  const auto runs = pipeline::plan_study(study, study.profile("paper"), out + "_fcc", "engine-A");
+  REQUIRE(runs.size() == 1 + 4);
+  const dem::SceneConfig prep = dem::scene_from_text(runs[0].scene_text, runs[0].scene_file);
+  CHECK(prep.particles.kind == dem::ParticleSource::Kind::Csv);
+  CHECK(prep.particles.path ==
+        (std::filesystem::path(DEM_SOURCE_DIR) / "scenes/literature/fcc_108.csv").lexically_normal().string());
+  CHECK(runs[0].scene_text.find("lattice") == std::string::npos);
+  // 108 spheres (3^3 cells of 4) times the steps: the cost of a test is 108 x 0.3 s / 1 us.
+  CHECK(runs[1].cost == Approx(108.0 * 300000).epsilon(1e-9));
+
+  const std::filesystem::path dir = std::filesystem::path(out) / "fcc_seeded";
+  std::filesystem::create_directories(dir);
+  std::ifstream in(fcc);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string from = "paper: {lattice: 20}";
+  REQUIRE(text.find(from) != std::string::npos);
+  text.replace(text.find(from), from.size(), "paper: {lattice: 20, seeds: 2}");
+  const std::string relative = "../../scenes/literature/";
+  for (std::size_t at; (at = text.find(relative)) != std::string::npos;)
+    text.replace(at, relative.size(), std::string(DEM_SOURCE_DIR) + "/scenes/literature/");
+  std::ofstream(dir / "seeded.yaml") << text;
+  const pipeline::Study seeded = pipeline::load_study((dir / "seeded.yaml").string());
+  try {
+    pipeline::plan_study(seeded, seeded.profile("paper"), (dir / "out").string(), "engine-A");
+    FAIL("a seeded CSV preparation was planned");
+  } catch (const std::exception& e) {
+    CHECK_THAT(e.what(), Catch::Contains("profiles.paper.seeds") && Catch::Contains("particles.lattice"));
+  }
+}
+
+// The CSV the FCC study prepares from is Thornton's array: 3^3 cubic cells of 4 spheres of 4 mm in
+// the scene's cell, each touching exactly 12 neighbours (at distance d, within round-off of the
+// 17-digit positions) and no two closer. The FCC's next shell is at sqrt(2) d.
+TEST_CASE("the FCC study's CSV is a touching face-centred cubic array", "[pipeline]") {
+  const std::string dir = std::string(DEM_SOURCE_DIR) + "/scenes/literature/";
+  const dem::SceneConfig prep = dem::load_scene(dir + "fcc_prepare.yaml");
+  REQUIRE(prep.particles.kind == dem::ParticleSource::Kind::Csv);
+  const dem::PeriodicCell cell(prep.particles.cell_m);
+  dem::Particles p;
+  dem::read_particle_csv(prep.particles.path, cell, prep.material.density_kg_per_m3, p);
+  REQUIRE(p.size() == 108);
+  const double d = 4e-3;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    CHECK(p.radius[i] == d / 2);
+    int touching = 0;
+    double nearest_other = 1;
+    for (std::size_t j = 0; j < p.size(); ++j) {
+      if (j == i) continue;
+      const double r = cell.branch(p.s[i], p.s[j]).norm();
+      if (std::abs(r - d) < 1e-15) ++touching;
+      else nearest_other = std::min(nearest_other, r);
+    }
+    CHECK(touching == 12);
+    CHECK(nearest_other == Approx(std::sqrt(2.0) * d).epsilon(1e-12));
+  }
 }

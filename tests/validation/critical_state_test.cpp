@@ -120,6 +120,9 @@ TEST_CASE("peak and critical state of a synthetic constant-p shear", "[critical-
   CHECK(s.rows == 201);
   CHECK(s.max_axial_strain == Approx(0.4));
   CHECK(s.peak_phi_raw_deg == Approx(45).epsilon(1e-12));
+  // The spike's sigma_1 / sigma_3 = (1 + sin 45)/(1 - sin 45) = 3 + 2 sqrt 2, unsmoothed; the
+  // earlier stage's 64 deg row is not part of the shear.
+  CHECK(s.peak_ratio_raw == Approx(3 + 2 * std::sqrt(2.0)).epsilon(1e-12));
   CHECK(s.peak_phi_deg == Approx(40).epsilon(1e-12));
   // The window (rows i-2 ... i+2) lies in the plateau for 0.044 <= e <= 0.056.
   CHECK(s.peak_axial_strain >= 0.044 - 1e-12);

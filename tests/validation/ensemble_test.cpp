@@ -235,4 +235,11 @@ TEST_CASE("a trend judged by the majority rule: it must hold in more than half o
   CHECK(validation::evaluate(row, samples).verdict == Verdict::Consistent);
   row.rule = "majority";  // one sample: not judged
   CHECK(validation::evaluate(row, {samples[0]}).verdict == Verdict::NotJudged);
+  // every (a case without scatter): one sample is judged, and every sample must hold.
+  row.rule = "every";
+  CHECK(validation::evaluate(row, {samples[2]}).verdict == Verdict::Consistent);    // 0.30 >= 0.10
+  CHECK(validation::evaluate(row, {samples[0]}).verdict == Verdict::Inconsistent);  // 0.02 < 0.10
+  CHECK(validation::evaluate(row, samples).verdict == Verdict::Inconsistent);       // 1 of 3
+  row.reference = 0.01;
+  CHECK(validation::evaluate(row, samples).verdict == Verdict::Consistent);         // 3 of 3
 }
