@@ -83,7 +83,8 @@ bool all_finite(const Columns& c) {
 }
 
 // The energy balance is checked once energy has come in: while the energy in (stored at the start
-// plus the cell's work) is below 1 % of its largest value, the ratio is a quotient of round-offs.
+// plus the cell's work) is below closure_onset_fraction of its largest value, the ratio is a
+// quotient of round-offs.
 std::optional<double> largest_closure_error(const Columns& c) {
   const auto err = c.find("energy_closure_error");
   if (err == c.end() || err->second.empty()) return std::nullopt;
@@ -101,7 +102,7 @@ std::optional<double> largest_closure_error(const Columns& c) {
   const double top = *std::max_element(in.begin(), in.end());
   double worst = 0;
   for (std::size_t i = 0; i < in.size(); ++i)
-    if (in[i] >= 0.01 * top) worst = std::max(worst, err->second[i]);
+    if (in[i] >= closure_onset_fraction * top) worst = std::max(worst, err->second[i]);
   return worst;
 }
 

@@ -54,6 +54,11 @@ struct CaseOutcome {
   std::string message;
 };
 
-CaseOutcome classify_case(const CaseRun& run, double closure_limit = 0.01);
+// A case's energy closure is read once the energy in has reached this fraction of its largest
+// value (before, the ratio is a quotient of round-offs), and must stay within the limit.
+inline constexpr double closure_onset_fraction = 0.01;
+inline constexpr double closure_limit = 0.01;
+
+CaseOutcome classify_case(const CaseRun& run, double closure_limit = validation::closure_limit);
 
 }  // namespace validation

@@ -30,7 +30,9 @@ struct Spread {
 double t_quantile(double p, int dof);
 
 // mean, sd and the two-sided `level` prediction interval mean -/+ t sd sqrt(1 + 1/n).
-Spread spread(const std::vector<double>& values, double level = 0.95);
+// The coverage of the prediction interval the verdicts use (rule interval).
+inline constexpr double prediction_level = 0.95;
+Spread spread(const std::vector<double>& values, double level = prediction_level);
 
 enum class Verdict { Consistent, Inconsistent, NotJudged };
 const char* to_string(Verdict v);

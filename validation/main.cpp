@@ -175,7 +175,7 @@ std::vector<std::string> markdown_cells(const Judged& j) {
 }
 
 std::vector<std::string> validation_headings(const std::string& label) {
-  return {"check", label, "per sample", "mean ± sd (n)", "95 % interval of one sample", "holds in", "rule", "verdict", "must pass",
+  return {"check", label, "per sample", "mean ± sd (n)", validation::number(100 * validation::prediction_level) + " % interval of one sample", "holds in", "rule", "verdict", "must pass",
           "source", "reason"};
 }
 
@@ -203,9 +203,11 @@ std::string verdicts_text(const std::vector<Judged>& judged, const Counts& c, st
   out << "Of " << judged.size() << " rows, **" << n(Verdict::Consistent) << " consistent**, **" << n(Verdict::Inconsistent)
       << " inconsistent**, " << n(Verdict::NotJudged) << " not judged, over " << samples << " sample" << (samples == 1 ? "" : "s")
       << " per density. A value read from the " << label << " (rule *interval*) is consistent "
-      << "when it, widened by the row's reading tolerance, overlaps the 95 % prediction interval of one sample of ours (mean "
-         "± t(0.975, n−1) · sd · √(1 + 1/n)); a trend or an ordering (rule *holds in > half*) is consistent when it holds in "
-         "more than half of our samples. With fewer than two samples a row is not judged.\n";
+      << "when it, widened by the row's reading tolerance, overlaps the " << validation::number(100 * validation::prediction_level)
+      << " % prediction interval of one sample of ours (mean ± t(" << validation::number(0.5 + validation::prediction_level / 2)
+      << ", n−1) · sd · √(1 + 1/n)); a trend or an ordering (rule *holds in > half*) is consistent when it holds in "
+         "more than half of our samples; a case without scatter (rule *holds in every*) when it holds in every sample. "
+         "Otherwise, with fewer than two samples a row is not judged.\n";
   if (missing || missing_samples)
     out << "\n**Incomplete:** " << missing << " result file(s) missing or not complete"
         << (missing_samples ? ", and " + std::to_string(missing_samples) + " sample(s) that `runs.tsv` lists have no folder" : std::string())
@@ -285,7 +287,9 @@ int main(int argc, char** argv) {
   json["profile"] = o.profile;
   json["references"] = o.references;
   json["rules"] = {
-      {"interval", "consistent: the " + refs.label + "'s value, widened by the row's tolerance, overlaps the 95 % prediction interval of one sample (mean -/+ t(0.975, n-1) sd sqrt(1 + 1/n))"},
+      {"interval", "consistent: the " + refs.label + "'s value, widened by the row's tolerance, overlaps the " +
+                       validation::number(100 * validation::prediction_level) + " % prediction interval of one sample (mean -/+ t(" +
+                       validation::number(0.5 + validation::prediction_level / 2) + ", n-1) sd sqrt(1 + 1/n))"},
       {"majority", "consistent: the " + refs.label + "'s statement holds in more than half of the samples"},
       {"every", "consistent: the " + refs.label + "'s statement holds in every sample with a value, one or more (a case without scatter)"},
       {"both", "interval and majority: not judged with fewer than 2 samples with a value"}};

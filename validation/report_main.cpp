@@ -28,7 +28,9 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "compare.hpp"
 #include "decisions_file.hpp"
+#include "ensemble.hpp"
 #include "format.hpp"
 #include "io/atomic_file.hpp"
 #include "io/hdf5.hpp"
@@ -287,6 +289,7 @@ int main(int argc, char** argv) {
       v["convergence.particles"] = validation::thousands(cs.count("particles") ? cs.at("particles") : "");
       v["convergence.time_step_us"] = scaled(cs, "time_step_test_s", 1e-6);
       v["convergence.stress_rate_MPa_per_s"] = scaled(cs, "stress_rate_Pa_per_s", 1e6);
+      v["convergence.test1_cycles"] = cs.count("test1_cycles") ? cs.at("test1_cycles") : "?";
       const auto ss = opt["--stability"].empty() ? std::map<std::string, std::string>{}
                                                  : validation::run_settings(opt["--stability"], "", "base");
       v["have_stability"] = ss.empty() ? "" : "yes";
@@ -294,6 +297,9 @@ int main(int argc, char** argv) {
       v["stability.target_pressure_kPa"] = ss.count("target_pressure_kPa") ? ss.at("target_pressure_kPa") : "?";
       v["stability.max_energy_error_percent"] = scaled(ss, "max_energy_error", 0.01);
       v["stability.max_time_step_fraction"] = ss.count("max_time_step_fraction") ? ss.at("max_time_step_fraction") : "?";
+      v["stability.closure_onset_percent"] = validation::number(100 * validation::closure_onset_fraction);
+      v["stability.closure_limit_percent"] = validation::number(100 * validation::closure_limit);
+      v["validation.prediction_percent"] = validation::number(100 * validation::prediction_level);
     }
 
     // The earlier baseline (orthorhombic cell) row by row, and q/p at state A of every sample.

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "control/stress_path.hpp"
 #include "format.hpp"
 #include "io/hdf5.hpp"
 #include "results.hpp"
@@ -111,6 +112,11 @@ std::map<std::string, std::string> run_settings(const std::string& results, cons
         kv["stress_ratio"] = num(st->stress_ratio);
         kv["stress_rate_Pa_per_s"] = num(st->stress_rate_Pa_per_s);
         kv["test" + std::to_string(t) + "_path"] = one_line(st->path_text);
+        int cycles = 0;
+        for (const dem::PathLeg& leg : dem::expand_path(st->path, dem::named_state("A", st->mean_stress_Pa, st->stress_ratio),
+                                                        st->stress_rate_Pa_per_s))
+          cycles += leg.ends_cycle;
+        kv["test" + std::to_string(t) + "_cycles"] = std::to_string(cycles);
       }
     }
   }

@@ -23,7 +23,7 @@ std::string one_line(const std::string& yaml);
 // Keys: grading_basis, damping_form, damping_translational, friction_prepare ("a / b / c"),
 // friction_shear_<density>, friction_shear, lattice, particles, target_pressure_kPa,
 // time_step_prepare_s, time_step_test_s, mean_stress_Pa, stress_ratio, stress_rate_Pa_per_s,
-// test<N>_path, hold_*, max_strain_rate_per_s, max_energy_error, max_time_step_fraction, ...
+// test<N>_path, test<N>_cycles (the cycles its path makes), hold_*, max_strain_rate_per_s, max_energy_error, max_time_step_fraction, ...
 std::map<std::string, std::string> run_settings(const std::string& results, const std::string& prefix = "",
                                                 const std::string& run = "");
 
