@@ -77,7 +77,7 @@ for plan in $size_plan; do
 done
 
 # bench.json (every run's JSON file in one) and bench.md (the tables and what they were measured
-# on): build/bin/bench-report reads the files with nlohmann-json (engine/bench/bench_report.cpp).
+# on): build/bin/bench-report reads the files with nlohmann-json (validation/bench_report.cpp).
 "$build/bin/bench-report" "$work" "$out" --steps "$steps" --reps "$reps" --skin "$SKIN" --cases "$cases" \
   --sizes "$size_files" --size-plan "$size_plan" --cores "$(nproc)" \
   --cpu "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')" \

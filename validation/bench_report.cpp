@@ -7,7 +7,7 @@
 //                [--sizes "8000 64000 ..."] [--size-plan TEXT] [--cores N] [--cpu TEXT]
 //                [--load-start TEXT] [--load-end TEXT]
 //   bench-report lammps-json LOG_DIR OUT.json ...   (lammps_bench.sh's JSON from its LAMMPS logs:
-//                engine/bench/bench_report_lammps.cpp)
+//                validation/bench_report_lammps.cpp)
 //
 // BENCH_DIR holds, from dem-bench: bench.json, shear.json and size_<N>_tiled.json for each of
 // --sizes; from reports/bench/lammps_bench.sh: lammps_<packing>_<friction>.json for each case
@@ -24,6 +24,8 @@
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
+
+#include "markdown_table.hpp"
 
 namespace {
 
@@ -100,10 +102,9 @@ std::vector<std::string> words(const std::string& s) {
 
 // The side-by-side table (8,000 spheres) and what it was measured on.
 std::string side_by_side(const Options& o, const std::vector<Case>& cases, const json& engine, const std::string& engine_file) {
-  std::string md =
-      "| packing jammed with | friction | 2Nc/N (ours / LAMMPS at start → end) | ours, 1 thread | ours, 2 threads | 2 / 1 thread | "
-      "ours, 2 runs at once (1 thread each), total | 2 runs / 1 thread | LAMMPS, 1 core | ours (1 thread) / LAMMPS |\n"
-      "|---|---|---|---|---|---|---|---|---|---|\n";
+  validation::MarkdownTable table({"packing jammed with", "friction", "2Nc/N (ours / LAMMPS at start → end)", "ours, 1 thread",
+                                   "ours, 2 threads", "2 / 1 thread", "ours, 2 runs at once (1 thread each), total", "2 runs / 1 thread",
+                                   "LAMMPS, 1 core", "ours (1 thread) / LAMMPS"});
   for (const Case& c : cases) {
     const auto run = [&](int threads) -> const json& {
       return run_where(engine, "runs", {{"packing", c.packing}, {"friction", c.mu}, {"threads", threads}}, engine_file);
@@ -117,10 +118,13 @@ std::string side_by_side(const Options& o, const std::vector<Case>& cases, const
     const json lammps = read_json(lammps_file);
     const json& lr = run_where(lammps, "runs", {{"friction", c.mu}}, lammps_file);
     const double l = number(lr, "particle_steps_per_s_median", lammps_file);
-    md += format("| %s | %s | %.2f / %.2f → %.2f | %.3g | %.3g | %.2f | %.3g | %.2f | %.3g | %.2f |\n",
-                 c.packing == "mu0" ? "μ = 0" : "μ = 0.5", c.friction.c_str(), ze, number(lr, "coordination_number_start", lammps_file),
-                 number(lr, "coordination_number_end", lammps_file), e1, e2, e2 / e1, r2, r2 / e1, l, e1 / l);
+    table.row({c.packing == "mu0" ? "μ = 0" : "μ = 0.5", c.friction,
+               format("%.2f / %.2f → %.2f", ze, number(lr, "coordination_number_start", lammps_file),
+                      number(lr, "coordination_number_end", lammps_file)),
+               format("%.3g", e1), format("%.3g", e2), format("%.2f", e2 / e1), format("%.3g", r2), format("%.2f", r2 / e1),
+               format("%.3g", l), format("%.2f", e1 / l)});
   }
+  std::string md = table.text();
   md += "\nParticle-steps per second, medians of " + std::to_string(o.reps) + " repetitions of " + std::to_string(o.steps) +
         " steps (dt = 1 µs, 8,000 spheres,\nVerlet skin " + o.skin + " m in both codes),\nmeasured by `make bench` on " +
         std::to_string(o.cores) + " cores (" + o.cpu + "),\n" +
@@ -147,30 +151,32 @@ std::string cost_against_size(const Options& o, const std::vector<long long>& si
     return number(run_where(engine[k], "runs", {{"friction", mu}, {"threads", threads}}, engine_file(k)), key, engine_file(k));
   };
   const std::vector<std::pair<double, const char*>> frictions = {{0.5, "0.5"}, {0.0, "0"}};
-  std::string md =
-      "\n### Cost against size\n\n"
-      "| spheres | friction | ours, 1 thread (min – max) | vs 8,000 | ours, 2 threads (min – max) | vs 8,000 | 2 / 1 thread | "
-      "LAMMPS, 1 core (min – max) | vs 8,000 | ours (1 thread) / LAMMPS |\n"
-      "|---|---|---|---|---|---|---|---|---|---|\n";
+  // "median (min – max)" of size k's runs of friction mu on `threads`.
+  const auto spread = [&](std::size_t k, double mu, int threads) {
+    return format("%.3g (%.3g – %.3g)", value(k, mu, threads, "particle_steps_per_s_median"), value(k, mu, threads, "min"),
+                  value(k, mu, threads, "max"));
+  };
+  validation::MarkdownTable rates({"spheres", "friction", "ours, 1 thread (min – max)", "vs 8,000", "ours, 2 threads (min – max)",
+                                   "vs 8,000", "2 / 1 thread", "LAMMPS, 1 core (min – max)", "vs 8,000", "ours (1 thread) / LAMMPS"});
   for (const auto& [mu, mu_text] : frictions)
     for (std::size_t k = 0; k < sizes.size(); ++k) {
       const std::string m = "particle_steps_per_s_median";
       const double e1 = value(k, mu, 1, m), e2 = value(k, mu, 2, m), l = value(k, mu, 0, m);
-      md += format("| %s | %s | %.3g (%.3g – %.3g) | %.2f | %.3g (%.3g – %.3g) | %.2f | %.2f | %.3g (%.3g – %.3g) | %.2f | %.2f |\n",
-                   commas(sizes[k]).c_str(), mu_text, e1, value(k, mu, 1, "min"), value(k, mu, 1, "max"), e1 / value(0, mu, 1, m), e2,
-                   value(k, mu, 2, "min"), value(k, mu, 2, "max"), e2 / value(0, mu, 2, m), e2 / e1, l, value(k, mu, 0, "min"),
-                   value(k, mu, 0, "max"), l / value(0, mu, 0, m), e1 / l);
+      rates.row({commas(sizes[k]), mu_text, spread(k, mu, 1), format("%.2f", e1 / value(0, mu, 1, m)), spread(k, mu, 2),
+                 format("%.2f", e2 / value(0, mu, 2, m)), format("%.2f", e2 / e1), spread(k, mu, 0),
+                 format("%.2f", l / value(0, mu, 0, m)), format("%.2f", e1 / l)});
     }
-  md += "\nThe same on one thread per CPU-second of the timed steps (ours: the thread's CPU time; LAMMPS: its \"% CPU\n"
-        "use\"), which a busy machine's time-slicing does not inflate (its sharing of caches and memory still counts):\n\n"
-        "| spheres | friction | ours, 1 thread | vs 8,000 | LAMMPS, 1 core | vs 8,000 | ours / LAMMPS |\n"
-        "|---|---|---|---|---|---|---|\n";
+  validation::MarkdownTable per_cpu({"spheres", "friction", "ours, 1 thread", "vs 8,000", "LAMMPS, 1 core", "vs 8,000", "ours / LAMMPS"});
   for (const auto& [mu, mu_text] : frictions)
     for (std::size_t k = 0; k < sizes.size(); ++k) {
       const double e = value(k, mu, 1, "cpu_rate_median"), l = value(k, mu, 0, "cpu_rate_median");
-      md += format("| %s | %s | %.3g | %.2f | %.3g | %.2f | %.2f |\n", commas(sizes[k]).c_str(), mu_text, e,
-                   e / value(0, mu, 1, "cpu_rate_median"), l, l / value(0, mu, 0, "cpu_rate_median"), e / l);
+      per_cpu.row({commas(sizes[k]), mu_text, format("%.3g", e), format("%.2f", e / value(0, mu, 1, "cpu_rate_median")),
+                   format("%.3g", l), format("%.2f", l / value(0, mu, 0, "cpu_rate_median")), format("%.2f", e / l)});
     }
+  std::string md = "\n### Cost against size\n\n" + rates.text();
+  md += "\nThe same on one thread per CPU-second of the timed steps (ours: the thread's CPU time; LAMMPS: its \"% CPU\n"
+        "use\"), which a busy machine's time-slicing does not inflate (its sharing of caches and memory still counts):\n\n" +
+        per_cpu.text();
   // LAMMPS's peak memory: the larger of its runs' (each friction in its own process); 0 if none has one.
   const auto lammps_peak = [&](std::size_t k) {
     double peak = 0;
@@ -178,15 +184,17 @@ std::string cost_against_size(const Options& o, const std::vector<long long>& si
       if (r.contains("peak_rss_MB") && r.at("peak_rss_MB").is_number()) peak = std::max(peak, r.at("peak_rss_MB").get<double>());
     return peak;
   };
-  md += "\n| spheres | ours: peak memory (MB) | ours: bytes per sphere beyond 8,000 | LAMMPS: peak memory (MB) | LAMMPS: bytes per sphere "
-        "beyond 8,000 |\n|---|---|---|---|---|\n";
+  validation::MarkdownTable memory({"spheres", "ours: peak memory (MB)", "ours: bytes per sphere beyond 8,000", "LAMMPS: peak memory (MB)",
+                                    "LAMMPS: bytes per sphere beyond 8,000"});
   const double e8 = number(engine[0], "peak_rss_MB", engine_file(0)), l8 = lammps_peak(0);
   for (std::size_t k = 0; k < sizes.size(); ++k) {
     const double e = number(engine[k], "peak_rss_MB", engine_file(k)), l = lammps_peak(k);
     const auto beyond = static_cast<double>(sizes[k] - sizes[0]);
-    if (sizes[k] == sizes[0]) md += format("| %s | %.0f | – | %.0f | – |\n", commas(sizes[k]).c_str(), e, l);
-    else md += format("| %s | %.0f | %.0f | %.0f | %.0f |\n", commas(sizes[k]).c_str(), e, (e - e8) * 1048576 / beyond, l, (l - l8) * 1048576 / beyond);
+    const bool first = sizes[k] == sizes[0];
+    memory.row({commas(sizes[k]), format("%.0f", e), first ? "–" : format("%.0f", (e - e8) * 1048576 / beyond), format("%.0f", l),
+                first ? "–" : format("%.0f", (l - l8) * 1048576 / beyond)});
   }
+  md += "\n" + memory.text();
   md += "\nParticle-steps per second, median (min – max) of REPS repetitions of STEPS steps after 200 warm-up steps,\n"
         "the same for both codes (TILES:STEPS:REPS: " + o.size_plan + "), on the μ = 0 packing above tiled n × n × n\n"
         "(`dem-bench size`, LAMMPS `replicate`): identical contacts and stress at every size; Verlet skin " + o.skin + " m.\n"
@@ -200,13 +208,11 @@ std::string cost_against_size(const Options& o, const std::vector<long long>& si
 // The sheared cell's price (dem-bench shear).
 std::string sheared_cell(const Options& o, const json& shear, const std::string& file) {
   const auto value = [&](const std::string& cell, const std::string& key) { return number(run_where(shear, "runs", {{"cell", cell}}, file), key, file); };
-  std::string md =
-      "\n### The sheared cell\n\n"
-      "| cell | particle-steps per CPU-s (median) | min – max | vs orthorhombic |\n"
-      "|---|---|---|---|\n";
+  validation::MarkdownTable table({"cell", "particle-steps per CPU-s (median)", "min – max", "vs orthorhombic"});
   for (const char* c : {"orthorhombic", "sheared"})
-    md += format("| %s | %.3g | %.3g – %.3g | %.3f |\n", c, value(c, "cpu_rate_median"), value(c, "min"), value(c, "max"),
-                 value(c, "cpu_rate_median") / value("orthorhombic", "cpu_rate_median"));
+    table.row({c, format("%.3g", value(c, "cpu_rate_median")), format("%.3g – %.3g", value(c, "min"), value(c, "max")),
+               format("%.3f", value(c, "cpu_rate_median") / value("orthorhombic", "cpu_rate_median"))});
+  std::string md = "\n### The sheared cell\n\n" + table.text();
   md += "\n`dem-bench shear`: μ = 0.5 on the μ = 0 packing, one thread, the axes held at 100 kPa; \"sheared\" also shears\n"
         "xy at 1/s, so its cell tilts from the first step and every step runs the sheared kernels (nearest image\n"
         "through the tilts, fractional positions in the update). Medians of " + std::to_string(o.reps) + " repetitions of " +
