@@ -89,8 +89,8 @@ std::optional<double> largest_closure_error(const Columns& c) {
   const auto err = c.find("energy_closure_error");
   if (err == c.end() || err->second.empty()) return std::nullopt;
   // The energy that has come in, row by row: what is stored plus what was dissipated (equal to
-  // the engine's energy in up to the closure gap itself; the first row, before any force
-  // evaluation, holds zeros, so the stored energy at the start cannot be read from it).
+  // the engine's energy in, the stored energy of the first row, the state at t = 0, plus the
+  // cell's work, up to the closure gap itself).
   std::vector<double> in(err->second.size(), 1.0);
   const char* terms[] = {"elastic_energy_normal", "elastic_energy_tangential", "kinetic_energy_centred",
                          "dissipated_by_damping", "dissipated_by_friction"};
