@@ -517,4 +517,37 @@ std::string state_a_table(const std::vector<Sample>& samples) {
   return md.text();
 }
 
+std::string shear_control_table(const std::vector<Sample>& samples) {
+  std::vector<std::string> headings = {"sample"};
+  for (const std::string& d : densities) headings.push_back(d + ": max |γ| / max |σ_ij|/p");
+  MarkdownTable md(headings);
+  const char* gammas[] = {"shear_strain_12", "shear_strain_13", "shear_strain_23"};
+  const char* shears[] = {"stress_12", "stress_13", "stress_23"};
+  for (const Sample& s : samples) {
+    std::vector<std::string> cells = {s.name.empty() ? "the sample" : s.name};
+    for (const std::string& d : densities) {
+      const auto it = s.densities.find(d);
+      double gamma = -1, ratio = -1;
+      if (it != s.densities.end())
+        for (const TestResult& t : it->second.tests) {
+          const Columns& c = t.series;
+          const bool have = std::all_of(std::begin(gammas), std::end(gammas), [&](const char* k) { return c.count(k) > 0; }) &&
+                            std::all_of(std::begin(shears), std::end(shears), [&](const char* k) { return c.count(k) > 0; }) &&
+                            c.count("stress_11") && c.count("stress_22") && c.count("stress_33");
+          if (!have) continue;
+          for (std::size_t i = 0; i < c.at("stress_11").size(); ++i) {
+            const double p = (c.at("stress_11")[i] + c.at("stress_22")[i] + c.at("stress_33")[i]) / 3;
+            for (int k = 0; k < 3; ++k) {
+              gamma = std::max(gamma, std::abs(c.at(gammas[k])[i]));
+              if (p > 0) ratio = std::max(ratio, std::abs(c.at(shears[k])[i]) / p);
+            }
+          }
+        }
+      cells.push_back(gamma < 0 ? "—" : significant(gamma, 2) + " / " + (ratio < 0 ? "—" : significant(ratio, 2)));
+    }
+    md.row(cells);
+  }
+  return md.text();
+}
+
 }  // namespace validation

@@ -80,5 +80,9 @@ std::string baseline_table(const nlohmann::json& before, const std::vector<Row>&
 
 // q/p at state A (the start of shearing: the first row of the sample's first test) of every sample.
 std::string state_a_table(const std::vector<Sample>& samples);
+// How well the cell held its shear stresses at zero during each sample's tests: per density, the
+// largest |engineering shear strain| the cell took and the largest |sigma_ij| / p, over every row
+// of its tests ("—" where a column is missing, e.g. results written before the columns existed).
+std::string shear_control_table(const std::vector<Sample>& samples);
 
 }  // namespace validation

@@ -311,6 +311,7 @@ int main(int argc, char** argv) {
       v["baseline.table"] = validation::baseline_table(before, in.rows, in.samples);
     }
     if (!in.samples.empty()) v["state_a.table"] = validation::state_a_table(in.samples);
+    if (!in.samples.empty()) v["shear_control.table"] = validation::shear_control_table(in.samples);
 
     // Figures: the README's table, every figure with its note.
     const std::string notes = read_text(fs::path(opt["--templates"]) / "figure_notes.tsv");

@@ -584,3 +584,22 @@ TEST_CASE("report: the templates type no number of the results", "[report][templ
     }
   }
 }
+
+// Issue 35: the report says how well the cell held its shear stresses at zero, with numbers.
+TEST_CASE("report: the largest shear strain and shear stress over p of the cell during the tests", "[report]") {
+  Sample s;
+  s.name = "seed1";
+  TestResult held;  // p = 100 kPa; sigma_12 reaches -2 kPa (0.02 of p) and gamma_13 -0.003
+  held.series = {{"stress_11", {1e5, 1e5, 1e5}}, {"stress_22", {1e5, 1e5, 1e5}}, {"stress_33", {1e5, 1e5, 1e5}},
+                 {"stress_12", {0, 500, -2000}}, {"stress_13", {0, 0, 0}}, {"stress_23", {0, 100, 0}},
+                 {"shear_strain_12", {0, 0, 0}}, {"shear_strain_13", {0, -0.003, 0.001}}, {"shear_strain_23", {0, 0, 0}}};
+  TestResult other = held;  // a second test with a larger strain and no larger stress
+  other.series["shear_strain_23"] = {0, 0.0041, 0};
+  s.densities["loose"].tests = {held, other};
+  TestResult old;  // a result written before the shear columns existed
+  old.series = {{"stress_11", {1e5}}, {"stress_22", {1e5}}, {"stress_33", {1e5}}};
+  s.densities["medium"].tests = {old};
+  const auto t = read_table(shear_control_table({s}));
+  REQUIRE(t.size() == 3);
+  CHECK(t[2] == std::vector<std::string>{"seed1", "0.0041 / 0.020", "—", "—"});
+}
