@@ -287,7 +287,7 @@ samples-study: tools
 # The five cyclic tests on the full-size samples are the paper study's (make study); their table
 # (steps, wall time, tracking error, eps_v and CN at cycle ends) for one sample.
 cyclic-tests: study
-	reports/samples/tests_table.sh $(BUILD)/bin/dem $(RESULTS)/$(strip $(SAMPLE)) > reports/samples/tests.md
+	$(BUILD)/bin/figure-data tests-table $(RESULTS)/$(strip $(SAMPLE)) > reports/samples/tests.md
 
 # A result's XDMF view opened in ParaView (pvbatch; paraview and xvfb installed by the target, a
 # virtual display started if there is none) and its spheres rendered to a PNG the report shows

@@ -11,6 +11,10 @@
 //       Markdown table of the prepared samples (the preparations of each folder's runs.tsv, or
 //       <sample>/<density>_prepare.h5), mean ± sd over seeds per density, variant and size (or
 //       one row per sample), with the paper's values; --baseline adds the shift from that variant
+//   figure-data tests-table SAMPLE_DIR
+//       Markdown table of one sample's cyclic tests (<density>_test<N>.h5): steps, wall time,
+//       worst tracking error, largest inertial number, εv and CN at the ends of cycle 1 and of
+//       the last cycle (make cyclic-tests)
 // Exit status: 0, 1 if something could not be read or written, 2 for bad arguments.
 #include <algorithm>
 #include <cmath>
@@ -32,6 +36,7 @@
 #include "format.hpp"
 #include "markdown_table.hpp"
 #include "quantities.hpp"
+#include "results.hpp"
 #include "io/atomic_file.hpp"
 #include "io/hdf5.hpp"
 #include "io/state_io.hpp"
@@ -434,6 +439,27 @@ int samples_table(const std::vector<std::string>& folders, const std::string& re
 
 }  // namespace
 
+int tests_table(const std::string& dir) {
+  validation::MarkdownTable md({"density", "test", "steps", "wall time (s)", "worst leg RMS tracking error (% of p)",
+                                "largest inertial number", "last cycle", "εv cycle 1 (%)", "εv last cycle (%)", "CN cycle 0",
+                                "CN cycle 1", "CN last cycle"});
+  for (const char* d : {"loose", "medium", "dense"})
+    for (int t = 1; t <= 5; ++t) {
+      const std::string file = (fs::path(dir) / (std::string(d) + "_test" + std::to_string(t) + ".h5")).string();
+      if (!validation::is_complete(file)) {
+        md.row({d, std::to_string(t), "not run", "", "", "", "", "", "", "", "", ""});
+        continue;
+      }
+      const validation::TestResult r = validation::load_test(file, "test" + std::to_string(t));
+      dem::h5::Handle f = dem::h5::open_file_read(file);
+      const validation::CyclicTestLine l = validation::cyclic_test_line(r.series, r.legs);
+      md.row({d, std::to_string(t), l.steps, validation::fixed(dem::h5::get_double_attribute(f, "wall_time_s"), 0), l.tracking_percent,
+              l.inertial_number, l.last_cycle, l.ev_cycle1, l.ev_last, l.cn_start, l.cn_cycle1, l.cn_last});
+    }
+  std::fputs(md.text().c_str(), stdout);
+  return 0;
+}
+
 int main(int argc, char** argv) {
   CLI::App app{"figure-data: the data behind the report's figures and the numbers its text quotes, from a study's results, "
                "its resolved scenes and reference_data/paper.yaml"};
@@ -464,6 +490,10 @@ int main(int argc, char** argv) {
   table->add_flag("--per-sample", per_sample, "one row per sample");
   table->add_option("--baseline", baseline, "VARIANT: add the shift of each row from that variant");
 
+  CLI::App* tests = app.add_subcommand("tests-table", "Markdown table of one sample's cyclic tests: steps, wall time, tracking "
+                                                    "error, inertial number, εv and CN at cycle ends, on stdout");
+  tests->add_option("SAMPLE_DIR", results, "the sample's folder (<density>_test<N>.h5)")->required();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -473,6 +503,7 @@ int main(int argc, char** argv) {
   try {
     if (*fig) return figures(results, figs, sample, references);
     if (*set) return settings(results, prefix, run);
+    if (*tests) return tests_table(results);
     return samples_table(folders, table_references, per_sample, baseline);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "figure-data: %s\n", e.what());

@@ -246,6 +246,38 @@ int last_cycle(const Columns& series) {
   return static_cast<int>(*std::max_element(it->second.begin(), it->second.end()));
 }
 
+CyclicTestLine cyclic_test_line(const Columns& series, const Columns& legs) {
+  CyclicTestLine line{"—", "—", "—", "—", "—", "—", "—", "—", "—"};
+  const auto has = [](const Columns& c, const char* k) { return c.count(k) && !c.at(k).empty(); };
+  if (has(series, "step")) line.steps = std::to_string(static_cast<long long>(series.at("step").back()));
+  if (has(legs, "rms_error_1") && has(legs, "rms_error_2") && has(legs, "rms_error_3")) {
+    double worst = 0;
+    for (const char* k : {"rms_error_1", "rms_error_2", "rms_error_3"})
+      worst = std::max(worst, *std::max_element(legs.at(k).begin(), legs.at(k).end()));
+    line.tracking_percent = fixed(100 * worst, 3);
+  }
+  if (has(legs, "max_inertial_number")) {
+    const auto& in = legs.at("max_inertial_number");
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.2e", *std::max_element(in.begin(), in.end()));
+    line.inertial_number = buf;
+  }
+  if (has(series, "coordination_number")) line.cn_start = fixed(series.at("coordination_number").front(), 3);
+  if (!(has(series, "cycle") && has(series, "cycle_end") && has(series, "volumetric_strain") && has(series, "coordination_number")))
+    return line;
+  const int last = last_cycle(series);
+  line.last_cycle = std::to_string(last);
+  const auto& cyc = series.at("cycle");
+  const auto& end = series.at("cycle_end");
+  for (std::size_t i = 0; i < cyc.size(); ++i) {
+    if (end[i] != 1) continue;
+    const std::string ev = fixed(100 * series.at("volumetric_strain")[i], 4), cn = fixed(series.at("coordination_number")[i], 3);
+    if (cyc[i] == 1) line.ev_cycle1 = ev, line.cn_cycle1 = cn;
+    if (cyc[i] == last) line.ev_last = ev, line.cn_last = cn;
+  }
+  return line;
+}
+
 Table test5_blocks(const Columns& series, const Columns& legs, std::vector<std::string>& titles) {
   // The loaded axis of each cycle: the largest target of its legs that are not A.
   const auto& lc = column(legs, "cycle");

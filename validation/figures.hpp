@@ -87,6 +87,15 @@ Table cycle_stress_path(const Columns& series, int cycle);
 double arrow_scale(const Columns& series, const std::vector<int>& cycles);
 int last_cycle(const Columns& series);
 
+// One cyclic test's line of `figure-data tests-table`: steps, the worst leg RMS tracking error
+// (% of p) and the largest inertial number of its legs, then εv (%) and the coordination number
+// at the end of cycle 1 and of its last cycle (and CN at the first row, cycle 0). Cells that the
+// columns cannot give are "—".
+struct CyclicTestLine {
+  std::string steps, tracking_percent, inertial_number, last_cycle, ev_cycle1, ev_last, cn_start, cn_cycle1, cn_last;
+};
+CyclicTestLine cyclic_test_line(const Columns& series, const Columns& legs);
+
 // The energy balance of a run, every curve from one common row: the first whose energies are the
 // true state, row 0, unless an engine older than the fix wrote it before any force evaluation
 // (contacts but no elastic energy): then row 1. Work by the cell, dissipation (damping, sliding,

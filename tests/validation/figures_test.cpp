@@ -279,3 +279,29 @@ TEST_CASE("figure-data settings: what the report quotes comes from the resolved 
   CHECK(s.find("target_pressure_kPa\t100\n") != std::string::npos);
   CHECK(s.find("max_energy_error\t0.05\n") != std::string::npos);
 }
+
+// make cyclic-tests' line of one test (figure-data tests-table), on hand-made columns: the worst
+// tracking error over the three axes and every leg, the largest inertial number, and the values
+// at the ends of cycle 1 and of the last cycle (3 here), CN also at the first row.
+TEST_CASE("tests-table: one cyclic test's line from its series and legs", "[figures]") {
+  validation::Columns series = {{"step", {0, 100, 200, 300, 400}},
+                                {"cycle", {0, 1, 2, 3, 3}},
+                                {"cycle_end", {0, 1, 1, 0, 1}},
+                                {"volumetric_strain", {0, 0.001, 0.0015, 0.0019, 0.002}},
+                                {"coordination_number", {4.5, 4.4, 4.35, 4.31, 4.3}}};
+  validation::Columns legs = {{"rms_error_1", {0.001, 0.004}}, {"rms_error_2", {0.002, 0.0005}}, {"rms_error_3", {0.0031, 0.0}},
+                              {"max_inertial_number", {2e-5, 7.5e-5}}};
+  const validation::CyclicTestLine l = validation::cyclic_test_line(series, legs);
+  CHECK(l.steps == "400");
+  CHECK(l.tracking_percent == "0.400");
+  CHECK(l.inertial_number == "7.50e-05");
+  CHECK(l.last_cycle == "3");
+  CHECK(l.ev_cycle1 == "0.1000");
+  CHECK(l.ev_last == "0.2000");
+  CHECK(l.cn_start == "4.500");
+  CHECK(l.cn_cycle1 == "4.400");
+  CHECK(l.cn_last == "4.300");
+  legs.erase("rms_error_2");  // a column missing: its cell is a dash, the rest stays
+  CHECK(validation::cyclic_test_line(series, legs).tracking_percent == "—");
+  CHECK(validation::cyclic_test_line(series, legs).inertial_number == "7.50e-05");
+}
