@@ -105,11 +105,15 @@ slurm-test: build
 
 # The input readers (scene, study, CSV, HDF5 state, checkpoints) and the rest of the unit tests that read input,
 # built with AddressSanitizer and UndefinedBehaviorSanitizer; any finding fails (CI runs this).
+SANITIZE_TAGS := config csv state input io result checkpoint
+empty :=
+comma := ,
+SANITIZE_FILTER := $(subst $(empty) $(empty),$(comma),$(foreach t,$(SANITIZE_TAGS),[$(t)]))
 sanitize: deps
-	cmake -S . -B $(BUILD)-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDEM_SANITIZE=ON >/dev/null
-	cmake --build $(BUILD)-sanitize -j $(JOBS) --target dem_tests
+	cmake -S . -B $(BUILD)-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDEM_SANITIZE=ON -DDEM_SANITIZE_TAGS="$(SANITIZE_TAGS)" >/dev/null
+	cmake --build $(BUILD)-sanitize -j $(JOBS) --target dem_input_tests
 	ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 OMP_NUM_THREADS=1 \
-	  $(BUILD)-sanitize/bin/dem_tests "[config],[csv],[state],[input],[io],[result],[checkpoint]"
+	  $(BUILD)-sanitize/bin/dem_input_tests "$(SANITIZE_FILTER)"
 
 # libFuzzer on the scene YAML, study YAML and particle CSV readers (clang), FUZZ_SECONDS each;
 # crashes are written to build-fuzz/crashes. Corpora start from the project's own files.
