@@ -1,6 +1,6 @@
 # Written by figure-data from results/study/paper (sample seed1) and reference_data/paper.yaml: the numbers the scripts in reports/gnuplot/ read
 sample = "seed1"
-samples_n = 3
+samples_n = 5
 friction_shear = 0.5
 mean_stress_kPa = 100
 stress_ratio = 1.24
