@@ -10,7 +10,9 @@
 #   ENSEMBLE_DIR pipeline/studies/critical_state_ensemble.yaml's results, passed as --ensemble when it
 #                has a runs.tsv (default: results/critical_state_ensemble/paper)
 #   RATES_DIR    pipeline/studies/critical_state_rates.yaml's results, passed as --rates when it has
-#                a runs.tsv (default: results/critical_state_rates/paper)
+#                a runs.tsv (default: results/critical_state_rates/paper); the literature's rows
+#                (reference_data/literature.yaml) are passed beside it, so that the quasi-static φ is
+#                set beside the reference a row judges at the study's rate
 # A study that has not run (no runs.tsv) is said so and is not an error: the report says so too.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/../.." && pwd)
@@ -26,7 +28,7 @@ if [ ! -f "$results/runs.tsv" ]; then
 fi
 extra=()
 if [ -f "$ensemble/runs.tsv" ]; then extra+=(--ensemble "$ensemble"); else echo "critical-state: no ensemble results in $ensemble yet (make critical-state)" >&2; fi
-if [ -f "$rates/runs.tsv" ]; then extra+=(--rates "$rates"); else echo "critical-state: no rates results in $rates yet (make critical-state)" >&2; fi
+if [ -f "$rates/runs.tsv" ]; then extra+=(--rates "$rates" --references "$here/reference_data/literature.yaml"); else echo "critical-state: no rates results in $rates yet (make critical-state)" >&2; fi
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
 rm -f "$out/rates.png"   # drawn again below only with --rates (table.md links it only then)

@@ -25,6 +25,7 @@
 #include "io/atomic_file.hpp"
 #include "line_fit.hpp"
 #include "markdown_table.hpp"
+#include "rows.hpp"
 
 namespace fs = std::filesystem;
 
@@ -504,7 +505,28 @@ validation::Table rates_quasi_static_data(const std::vector<RateSeries>& series)
   return t;
 }
 
-std::string rates_section(const std::vector<RateSeries>& series, const std::string& folder) {
+// A reference row of the critical-state angle that reads the series' run at the study's rate (its
+// density_test is the run's name): its value beside the quasi-static φ, since the row's own verdict is
+// at that rate and the reference holds at I -> 0. Empty when no row reads the run.
+std::string against_reference(const RateSeries& s, const ShearRun& table_run, const std::vector<validation::Row>& rows) {
+  if (!s.fit) return "";
+  for (const validation::Row& row : rows) {
+    if (row.quantity != "critical_state_friction_angle" || row.density + "_" + row.test != table_run.run) continue;
+    const double off = s.phi_deg - row.reference;
+    const double at_rate = validation::compression_friction_deg(table_run.summary->q_over_p.mean) - row.reference;
+    std::ostringstream md;
+    md << " The reference row \"" << row.name << "\" (" << row.source.substr(0, row.source.find(':')) << ") gives " << number(row.reference)
+       << "° with a reading tolerance of " << number(row.tolerance) << "°: the quasi-static φ is " << (off >= 0 ? "+" : "") << fixed(off, 2)
+       << "° from it (" << (std::abs(off) <= row.tolerance ? "within" : "beyond") << " the tolerance";
+    if (s.fit->n > 2) md << "; its se " << fixed(s.phi_se_deg, 2) << "°";
+    md << "), the " << number(table_run.rate_per_s) << " s⁻¹ run's " << (at_rate >= 0 ? "+" : "") << fixed(at_rate, 2)
+       << "° (the literature section judges the row at that rate).";
+    return md.str();
+  }
+  return "";
+}
+
+std::string rates_section(const std::vector<RateSeries>& series, const std::string& folder, const std::vector<validation::Row>& rows) {
   std::ostringstream md;
   md << "\n### Rate convergence: the critical state at I → 0\n\n";
   md << "The rates study (`" << folder << "`, `pipeline/studies/critical_state_rates.yaml`) shears the same sample in compression at "
@@ -550,15 +572,17 @@ std::string rates_section(const std::vector<RateSeries>& series, const std::stri
        << " √I over " << f.n << " rates (R² = " << fixed(f.r_squared, 3) << ")";
     if (fastest) {
       const double at = fastest->run->summary->q_over_p.mean;
-      md << "; the quasi-static q/p is " << fixed(100 * (f.intercept / at - 1), 1) << " % from the " << number(fastest->run->rate_per_s)
+      md << "; the quasi-static q/p is " << fixed(100 * std::abs(f.intercept / at - 1), 1) << (f.intercept < at ? " % below" : " % above") << " the " << number(fastest->run->rate_per_s)
          << " s⁻¹ value (" << fixed(at, 3) << "), φ " << fixed(s.phi_deg, 2) << "° against "
          << fixed(validation::compression_friction_deg(at), 2) << "°";
     }
     if (f.n > 2)
-      md << ". The standard error rests on " << f.n - 2 << " degree(s) of freedom: a 95 % interval is ± "
+      md << ". The standard error rests on " << f.n - 2 << (f.n - 2 == 1 ? " degree" : " degrees") << " of freedom: a 95 % interval is ± "
          << validation::significant(validation::t_quantile(0.975, f.n - 2), 3) << " se (± " << validation::significant(validation::t_quantile(0.975, f.n - 2) * f.intercept_se, 2)
          << " in q/p)";
-    md << (s.problems.empty() ? ". q/p changes monotonically with I." : ". ⚠ " + s.problems + ".") << "\n\n";
+    md << (s.problems.empty() ? ". q/p changes monotonically with I." : ". ⚠ " + s.problems + ".");
+    if (fastest) md << against_reference(s, *fastest->run, rows);
+    md << "\n\n";
   }
   md << "![critical q/p against the square root of the inertial number, with the fits](rates.png)\n";
   return md.str();
@@ -567,7 +591,7 @@ std::string rates_section(const std::vector<RateSeries>& series, const std::stri
 }  // namespace
 
 int critical_state(const Manifest& manifest, const std::string& results, const std::string& out, const std::string& ensemble,
-                   const std::string& rates) {
+                   const std::string& rates, const std::string& references) {
   constexpr double cs_from = 0.3, cs_to = 0.4;
   const std::vector<ShearRun> runs = shear_runs(manifest, results, cs_to);
   const ShearRun* through = compression_peak(runs);
@@ -601,7 +625,14 @@ int critical_state(const Manifest& manifest, const std::string& results, const s
   if (!rates.empty()) {
     rate_runs = shear_runs(read_manifest(rates), rates, cs_to);
     series = rate_series(rate_runs, runs, "rates study", "table above");
-    extra += rates_section(series, relative_paths(rates, rates));
+    std::vector<validation::Row> rows;
+    if (!references.empty()) try {
+        rows = validation::load_references(references, "paper");
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "error: %s\n", e.what());
+        return 2;
+      }
+    extra += rates_section(series, relative_paths(rates, rates), rows);
   }
   validation::GnuplotValues values;
   values.number("has_compression_peak", through ? 1 : 0);

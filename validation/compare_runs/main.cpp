@@ -83,13 +83,18 @@ int main(int argc, char** argv) {
                                   "peak and critical state of each constant-p shear, the peaks in the pi-plane: table.md, "
                                   "critical_state.dat, pi_plane.dat, values.gp",
                                   critical_f);
-  std::string critical_ensemble, critical_rates;
+  std::string critical_ensemble, critical_rates, critical_references;
   critical->add_option("--ensemble", critical_ensemble,
                        "an ensemble study's results (pipeline/studies/critical_state_ensemble.yaml): mean ± sd over its samples "
                        "of each loading and μ (ensemble.dat)");
   critical->add_option("--rates", critical_rates,
                        "a rates study's results (pipeline/studies/critical_state_rates.yaml): critical q/p against sqrt(I) with "
                        "this study's runs of the same μ, taken to I -> 0 (rates.dat, rates_qs.dat)");
+  critical
+      ->add_option("--references", critical_references,
+                   "validation rows (e.g. reference_data/literature.yaml): a critical_state_friction_angle row that reads a rate "
+                   "series' run is compared with the series' quasi-static φ (with --rates)")
+      ->check(CLI::ExistingFile);
 
   std::string liquefaction_out;
   std::vector<std::string> liquefaction_folders;
@@ -147,7 +152,7 @@ int main(int argc, char** argv) {
             std::fprintf(stderr, "error: %s\n", e.what());
             return 2;
           }
-      return compare_runs::critical_state(manifest, f.results, f.out, critical_ensemble, critical_rates);
+      return compare_runs::critical_state(manifest, f.results, f.out, critical_ensemble, critical_rates, critical_references);
     }
     return 2;  // not reached: parse() requires one sub-command
   } catch (const std::exception& e) {  // a result that cannot be read, a folder that cannot be made

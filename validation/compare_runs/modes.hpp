@@ -45,8 +45,11 @@ int decisions_from_json(const std::string& file, const std::string& out, const s
 // (pipeline/studies/critical_state_rates.yaml), the critical q/p of compression against sqrt(I)
 // with the main study's runs of the same μ, fitted and taken to I -> 0 (rates.dat, rates_qs.dat).
 // ensemble.dat, rates.dat and rates_qs.dat are written either way (no rows without the option).
+// `references` (optional, with `rates`): validation rows (reference_data/literature.yaml); a row of
+// critical_state_friction_angle that reads a rate series' run (its density_test is the run's name) is
+// set beside that series' quasi-static φ, since the row's own verdict is at the study's rate.
 int critical_state(const Manifest& manifest, const std::string& results, const std::string& out, const std::string& ensemble = "",
-                   const std::string& rates = "");
+                   const std::string& rates = "", const std::string& references = "");
 
 // CSR against N_L and r_u against cycles of the undrained cyclic tests of every folder, the holds
 // beside them: OUT/table.md, csr_nl.dat, ru.dat and values.gp.
