@@ -275,9 +275,13 @@ int main(int argc, char** argv) {
       std::string readings;
       for (const std::string& name : names) {
         const std::string size = recorded_size(report / "readings" / name / "decisions.json");
-        // Its groups one level down, under this heading.
-        readings += "### Readings of the " + std::regex_replace(name, std::regex("_"), " and ") + " sample" +
-                    (name.find('_') != std::string::npos ? "s" : "") + " (" + (size.empty() ? "size not recorded" : size) + ")\n\n" +
+        // Its groups one level down, under this heading: a study named by its densities
+        // (readings_medium_dense) is "of the medium and dense samples", another by its name.
+        const bool by_density = std::regex_match(name, std::regex("(loose|medium|dense)(_(loose|medium|dense))*"));
+        const std::string title = by_density ? "Readings of the " + std::regex_replace(name, std::regex("_"), " and ") + " sample" +
+                                                   (name.find('_') != std::string::npos ? "s" : "")
+                                             : "Readings: " + std::regex_replace(name, std::regex("_"), " ");
+        readings += "### " + title + " (" + (size.empty() ? "size not recorded" : size) + ")\n\n" +
                     std::regex_replace(section_table(report, "readings/" + name), std::regex("(^|\n)### "), "$1#### ") + "\n";
       }
       v["file.readings"] = readings;
