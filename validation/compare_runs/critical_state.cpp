@@ -368,6 +368,31 @@ validation::Table ensemble_data(const std::vector<EnsembleGroup>& groups) {
   return t;
 }
 
+// Whether the ensemble's samples resolve what the section reads from it: for each μ with both a
+// compression and an extension group, the difference of their mean critical φ against its standard
+// error, sqrt(sd_c^2 / n_c + sd_e^2 / n_e), and Welch's t against t(0.975) at the smaller n - 1.
+std::string samples_suffice(const std::vector<EnsembleGroup>& groups) {
+  std::ostringstream md;
+  for (const EnsembleGroup& c : groups) {
+    if (c.loading != "compression") continue;
+    for (const EnsembleGroup& e : groups) {
+      if (e.loading != "extension" || e.mu != c.mu) continue;
+      const validation::Spread &a = c.stats.phi_cs_deg, &b = e.stats.phi_cs_deg;
+      if (a.n < 2 || b.n < 2) continue;
+      const double diff = b.mean - a.mean, se = std::sqrt(a.sd * a.sd / a.n + b.sd * b.sd / b.n);
+      const int dof = static_cast<int>(std::min(a.n, b.n)) - 1;
+      const double t = diff / se, limit = validation::t_quantile(0.975, dof);
+      md << "\nSample size: at μ = " << number(c.mu) << " the extension's critical φ is " << (diff >= 0 ? "+" : "") << fixed(diff, 2)
+         << "° from the compression's, with a standard error of " << fixed(se, 2) << "° from the samples' sd (" << a.n << " and " << b.n
+         << " samples): t = " << fixed(t, 1) << " against t(0.975, " << dof << ") = " << fixed(limit, 2) << ", so "
+         << (std::abs(t) > limit ? "these samples resolve the difference" : "these samples do not resolve the difference: more are needed")
+         << ". The sd between samples (" << fixed(a.sd, 2) << "° and " << fixed(b.sd, 2)
+         << "°) is the scatter a one-sample value in the table above carries.\n";
+    }
+  }
+  return md.str();
+}
+
 std::string ensemble_section(const std::vector<EnsembleGroup>& groups, const std::vector<ShearRun>& main_runs, const std::string& folder,
                              std::size_t samples, double cs_from, double cs_to) {
   std::ostringstream md;
@@ -399,6 +424,7 @@ std::string ensemble_section(const std::vector<EnsembleGroup>& groups, const std
            note});
   }
   md << t.text();
+  md << samples_suffice(groups);
   return md.str();
 }
 
