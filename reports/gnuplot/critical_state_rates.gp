@@ -14,7 +14,7 @@ set title "Dense sample, compression at constant p: critical q/p against the ine
 set xlabel "√I"
 set ylabel "critical-state q/p"
 set xrange [0:*]
-set key top left
+set key center right box opaque   # between the frictional series (top) and the frictionless one (bottom)
 colour(k) = k == 1 ? "#1f77b4" : k == 2 ? "#d62728" : k == 3 ? "#2ca02c" : "#9467bd"
 mu(k) = value(sprintf("rate_mu_%d", k))
 a(k) = value(sprintf("rate_intercept_%d", k))
