@@ -1,5 +1,19 @@
-# Written by compare-runs critical-state from results/critical_state/paper
+# Written by compare-runs critical-state from results/critical_state/paper, --ensemble results/critical_state_ensemble/paper, --rates results/critical_state_rates/paper
 has_compression_peak = 1
 pi_r = 1.1
 runs_finished = 17
 runs_total = 17
+has_ensemble = 1
+ensemble_samples = 3
+has_rates = 1
+rate_series_n = 2
+rate_mu_1 = 0
+rate_fitted_1 = 1
+rate_intercept_1 = 0.1944736257
+rate_slope_1 = 3.918537639
+rate_intercept_se_1 = 0.01738284097
+rate_mu_2 = 0.5
+rate_fitted_2 = 1
+rate_intercept_2 = 0.6777626316
+rate_slope_2 = 2.841484421
+rate_intercept_se_2 = 0.001935632547
