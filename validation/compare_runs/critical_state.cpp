@@ -370,7 +370,8 @@ validation::Table ensemble_data(const std::vector<EnsembleGroup>& groups) {
 
 // Whether the ensemble's samples resolve what the section reads from it: for each μ with both a
 // compression and an extension group, the difference of their mean critical φ against its standard
-// error, sqrt(sd_c^2 / n_c + sd_e^2 / n_e), and Welch's t against t(0.975) at the smaller n - 1.
+// error, sqrt(sd_c^2 / n_c + sd_e^2 / n_e), and Welch's t against the two-sided quantile of the
+// validation's prediction level at the smaller n - 1.
 std::string samples_suffice(const std::vector<EnsembleGroup>& groups) {
   std::ostringstream md;
   for (const EnsembleGroup& c : groups) {
@@ -381,10 +382,10 @@ std::string samples_suffice(const std::vector<EnsembleGroup>& groups) {
       if (a.n < 2 || b.n < 2) continue;
       const double diff = b.mean - a.mean, se = std::sqrt(a.sd * a.sd / a.n + b.sd * b.sd / b.n);
       const int dof = static_cast<int>(std::min(a.n, b.n)) - 1;
-      const double t = diff / se, limit = validation::t_quantile(0.975, dof);
+      const double tail = 1 - (1 - validation::prediction_level) / 2, t = diff / se, limit = validation::t_quantile(tail, dof);
       md << "\nSample size: at μ = " << number(c.mu) << " the extension's critical φ is " << (diff >= 0 ? "+" : "") << fixed(diff, 2)
          << "° from the compression's, with a standard error of " << fixed(se, 2) << "° from the samples' sd (" << a.n << " and " << b.n
-         << " samples): t = " << fixed(t, 1) << " against t(0.975, " << dof << ") = " << fixed(limit, 2) << ", so "
+         << " samples): t = " << fixed(t, 1) << " against t(" << number(tail) << ", " << dof << ") = " << fixed(limit, 2) << ", so "
          << (std::abs(t) > limit ? "these samples resolve the difference" : "these samples do not resolve the difference: more are needed")
          << ". The sd between samples (" << fixed(a.sd, 2) << "° and " << fixed(b.sd, 2)
          << "°) is the scatter a one-sample value in the table above carries.\n";
@@ -602,10 +603,12 @@ std::string rates_section(const std::vector<RateSeries>& series, const std::stri
          << " s⁻¹ value (" << fixed(at, 3) << "), φ " << fixed(s.phi_deg, 2) << "° against "
          << fixed(validation::compression_friction_deg(at), 2) << "°";
     }
-    if (f.n > 2)
-      md << ". The standard error rests on " << f.n - 2 << (f.n - 2 == 1 ? " degree" : " degrees") << " of freedom: a 95 % interval is ± "
-         << validation::significant(validation::t_quantile(0.975, f.n - 2), 3) << " se (± " << validation::significant(validation::t_quantile(0.975, f.n - 2) * f.intercept_se, 2)
-         << " in q/p)";
+    if (f.n > 2) {
+      const double t = validation::t_quantile(1 - (1 - validation::prediction_level) / 2, f.n - 2);
+      md << ". The standard error rests on " << f.n - 2 << (f.n - 2 == 1 ? " degree" : " degrees") << " of freedom: a "
+         << number(100 * validation::prediction_level) << " % interval is ± " << validation::significant(t, 3) << " se (± "
+         << validation::significant(t * f.intercept_se, 2) << " in q/p)";
+    }
     md << (s.problems.empty() ? ". q/p changes monotonically with I." : ". ⚠ " + s.problems + ".");
     if (fastest) md << against_reference(s, *fastest->run, rows);
     md << "\n\n";
