@@ -113,8 +113,12 @@ SANITIZE_TAGS := config csv state input io result checkpoint
 empty :=
 comma := ,
 SANITIZE_FILTER := $(subst $(empty) $(empty),$(comma),$(foreach t,$(SANITIZE_TAGS),[$(t)]))
+# -O1 with line tables only (enough for the sanitizers' stack traces), assertions on: RelWithDebInfo's
+# -O2 -g made this target half of CI's time (docs/performance.md, CI).
+SANITIZE_FLAGS := -O1 -g1
 sanitize: deps
-	cmake -S . -B $(BUILD)-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDEM_SANITIZE=ON -DDEM_SANITIZE_TAGS="$(SANITIZE_TAGS)" >/dev/null
+	cmake -S . -B $(BUILD)-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="$(SANITIZE_FLAGS)" \
+	  -DDEM_SANITIZE=ON -DDEM_SANITIZE_TAGS="$(SANITIZE_TAGS)" >/dev/null
 	cmake --build $(BUILD)-sanitize -j $(JOBS) --target dem_input_tests
 	ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 OMP_NUM_THREADS=1 \
 	  $(BUILD)-sanitize/bin/dem_input_tests "$(SANITIZE_FILTER)"
