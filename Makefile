@@ -113,8 +113,9 @@ SANITIZE_TAGS := config csv state input io result checkpoint
 empty :=
 comma := ,
 SANITIZE_FILTER := $(subst $(empty) $(empty),$(comma),$(foreach t,$(SANITIZE_TAGS),[$(t)]))
-# -O1 with line tables only (enough for the sanitizers' stack traces), assertions on: RelWithDebInfo's
-# -O2 -g made this target half of CI's time (docs/performance.md, CI).
+# -O1 with line tables only (enough for the sanitizers' stack traces), assertions on: with
+# RelWithDebInfo's -O2 -g this target took 1,019 of CI's 2,081 s on the 2-core VM, now 496 s
+# (docs/performance.md, CI).
 SANITIZE_FLAGS := -O1 -g1
 sanitize: deps
 	cmake -S . -B $(BUILD)-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="$(SANITIZE_FLAGS)" \
