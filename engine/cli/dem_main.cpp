@@ -83,6 +83,22 @@ class ProgressLine {
   double stage_start_s_ = 0;  // [s since the run started]
 };
 
+// The line after a failed run that kept RESULT.h5.partial. Its status says why the run failed;
+// out of memory, HDF5 may not manage to write that status (the file is then "running" or has
+// none; on a full disk the file may be unreadable), which is said too: the file is kept, and being a .partial it is never taken for a result.
+std::string partial_kept_line(const std::string& partial) {
+  std::string status = "missing";
+  try {
+    dem::h5::Handle f = dem::h5::open_file_read(partial);
+    if (dem::h5::has_attribute(f, "status")) status = "'" + dem::h5::get_string_attribute(f, "status") + "'";
+  } catch (const std::exception&) {
+    status = "unreadable";
+  }
+  std::string line = "(partial result kept in " + partial;
+  if (status.rfind("'failed: ", 0) != 0) line += "; its status could not be set to the reason above: it is " + status;
+  return line + ")\n";
+}
+
 struct RunArgs {
   std::string scene_file, out, input_hash;
   std::vector<std::string> sets;  // KEY=VALUE
@@ -169,7 +185,7 @@ int run(const RunArgs& args) {
     return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s: %s\n", scene_file.c_str(), dem::describe_failure(e).c_str());
-    if (std::filesystem::exists(out + ".partial")) std::fprintf(stderr, "(partial result kept in %s.partial)\n", out.c_str());
+    if (std::filesystem::exists(out + ".partial")) std::fputs(partial_kept_line(out + ".partial").c_str(), stderr);
     return 1;
   }
 }

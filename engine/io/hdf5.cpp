@@ -1,6 +1,7 @@
 #include "io/hdf5.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -43,6 +44,7 @@ void silence() { static SilenceOnce once; }
 }  // namespace
 
 std::string last_error() {
+  const int sys_errno = errno;  // before H5Ewalk2, which may change it
   struct Found {
     std::string innermost;
     int sys_errno = 0;
@@ -61,6 +63,10 @@ std::string last_error() {
   }, &found);
   if (found.sys_errno > 0) return std::strerror(found.sys_errno);
   if (found.memory) return "out of memory (" + found.innermost + ")";
+  // Out of memory, HDF5 may fail before it can record why (its error stack allocates too): a call
+  // fails with an empty stack and malloc's ENOMEM is all that is left (a run at 34 MiB did so in
+  // H5Acreate2).
+  if (found.innermost.empty() && sys_errno == ENOMEM) return "out of memory (HDF5 recorded no reason; errno ENOMEM)";
   return found.innermost;
 }
 
