@@ -116,24 +116,36 @@ const CyclicRun* hold_of(const std::vector<CyclicRun>& runs, const std::string& 
   return nullptr;
 }
 
-// A hold that reached the r_u limit with nothing applied: the N_L of its density's tests that
-// liquefied no later than it did are bounded by that collapse, not set by the loading alone.
+// A hold that reached the r_u limit with nothing applied: its sample collapses at constant volume
+// on its own, so no test of that sample can liquefy later than the hold did. A test that liquefied
+// earlier, while the hold's r_u was still small, had its N_L set by the loading; one that liquefied
+// no earlier than the hold had it set by the collapse.
 std::string collapse_notes(const std::vector<CyclicRun>& runs) {
   std::string notes;
   for (const CyclicRun& h : runs) {
     if (!h.hold || !h.finished || validation::stop_criterion(h.stage_end) != "pore_pressure_ratio") continue;
-    double low = INFINITY, high = -INFINITY;
-    for (const CyclicRun& r : runs)
-      if (!r.hold && r.finished && r.density == h.density && r.seed == h.seed && !validation::stop_criterion(r.stage_end).empty())
-        low = std::min(low, r.control.cycles), high = std::max(high, r.control.cycles);
-    notes += "\n⚠ " + h.run + " reached r_u ≥ " + number(h.ru_limit) + " with nothing applied after " +
-             fixed(h.control.end_time_s - h.control.start_time_s, 4) + " s (" + fixed(h.control.cycles, 2) + " cycles of " +
-             number(h.period_s) + " s)";
-    if (std::isfinite(low))
-      notes += "; its sample's cyclic tests liquefied after " + fixed(low, 2) + " – " + fixed(high, 2) + " cycles" +
-               (high <= h.control.cycles ? ", no later than the hold: their N_L are bounded by the sample's own collapse at constant "
-                                           "volume, not set by the loading alone"
-                                         : "");
+    const double hold_s = h.control.end_time_s - h.control.start_time_s;
+    int earlier = 0, later = 0;
+    double low = INFINITY, high = -INFINITY, hold_ru = -INFINITY;  // over the tests that liquefied earlier
+    for (const CyclicRun& r : runs) {
+      if (r.hold || !r.finished || r.density != h.density || r.seed != h.seed || validation::stop_criterion(r.stage_end).empty()) continue;
+      const double test_s = r.control.end_time_s - r.control.start_time_s;
+      if (test_s >= hold_s) {
+        ++later;
+        continue;
+      }
+      ++earlier;
+      low = std::min(low, r.control.cycles), high = std::max(high, r.control.cycles);
+      hold_ru = std::max(hold_ru, validation::value_since_start(h.series, h.stage, "pore_pressure_ratio", test_s));
+    }
+    notes += "\n⚠ " + h.run + " reached r_u ≥ " + number(h.ru_limit) + " with nothing applied after " + fixed(hold_s, 4) + " s (" +
+             fixed(h.control.cycles, 2) + " cycles of " + number(h.period_s) + " s): its sample collapses at constant volume on its own, "
+             "which bounds the N_L of every test of that sample";
+    if (earlier)
+      notes += "; " + std::to_string(earlier) + " of its cyclic tests liquefied earlier, after " + fixed(low, 2) + " – " + fixed(high, 2) +
+               " cycles, when the hold's r_u was at most " + fixed(hold_ru, 3) + ": the loading set their N_L";
+    if (later)
+      notes += "; " + std::to_string(later) + " liquefied no earlier than the hold: their N_L is the sample's collapse, not set by the loading";
     notes += ".\n";
   }
   return notes;

@@ -48,7 +48,53 @@ void write_test(const fs::path& file, double csr, double cycles, bool liquefied)
   dem::h5::write<double>(g, "pore_pressure_ratio", {0, 0, ru1}, 1, "1");
 }
 
+// A complete hold (the shipped scene: nothing applied) from t = 0.1 s: r_u rises linearly to 0.95
+// at `collapse_cycles` periods, where until.pore_pressure_ratio ends it.
+void write_collapsing_hold(const fs::path& file, double collapse_cycles) {
+  fs::create_directories(file.parent_path());
+  dem::h5::Handle f = dem::h5::create_file(file.string());
+  dem::h5::set_attribute(f, "status", std::string("complete"));
+  dem::h5::write_text(f, "scene_yaml", read_file(std::string(DEM_SOURCE_DIR) + "/scenes/tests/undrained_hold.yaml"));
+  const double t0 = 0.1, t1 = t0 + collapse_cycles * period_s;
+  dem::h5::set_attribute(f, "stage_end_hold", "until.pore_pressure_ratio met at time " + std::to_string(t1) + " s");
+  dem::h5::Handle g = dem::h5::create_group(f, "timeseries");
+  dem::h5::write<double>(g, "stage", {0, 1, 1}, 1, "1");
+  dem::h5::write<double>(g, "time", {0, t0, t1}, 1, "s");
+  dem::h5::write<double>(g, "p", {1e5, 1e5, 0.05e5}, 1, "Pa");
+  dem::h5::write<double>(g, "pore_pressure_ratio", {0, 0, 0.95}, 1, "1");
+}
+
 }  // namespace
+
+TEST_CASE("compare-runs liquefaction: a hold that collapses on its own says which tests the loading set and which the collapse did",
+          "[liquefaction][compare-runs]") {
+  // One sample: its hold reaches r_u 0.95 after 10 cycles with nothing applied (r_u linear in
+  // time: 0.095 per cycle). CSR 0.05 liquefied after 1 cycle, CSR 0.03 after 2: earlier, the hold's
+  // r_u then at most 2 x 0.095 = 0.190. CSR 0.01 liquefied after 12 cycles: later than the hold.
+  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "compare_runs_liquefaction_collapse";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "results");
+  std::ofstream runs(dir / "results" / "runs.tsv");
+  runs << "# variant\tdensity\ttest\trun\tresult\tstarts_from\tmay_fail\tsettings\tseed\n"
+       << "-\tloose\t-\tseed1/loose_prepare\t/elsewhere/loose_prepare.h5\t-\t0\tas written\t1\n"
+       << "-\tloose\thold\tseed1/loose_hold\t/elsewhere/loose_hold.h5\tseed1/loose_prepare\t0\tas written\t1\n";
+  write_collapsing_hold(dir / "results" / "seed1" / "loose_hold.h5", 10);
+  for (const auto& [csr, cycles] : std::vector<std::pair<std::string, double>>{{"0.05", 1}, {"0.03", 2}, {"0.01", 12}}) {
+    runs << "-\tloose\tcsr" << csr << "\tseed1/loose_csr" << csr << "\t/elsewhere/loose_csr" << csr
+         << ".h5\tseed1/loose_prepare\t0\tas written\t1\n";
+    write_test(dir / "results" / "seed1" / ("loose_csr" + csr + ".h5"), std::stod(csr), cycles, true);
+  }
+  runs.close();
+  const std::string cmd = bin + " liquefaction " + (dir / "out").string() + " " + (dir / "results").string() + " > " +
+                          (dir / "log").string() + " 2>&1";
+  REQUIRE(std::system(cmd.c_str()) == 0);
+  const std::string table = read_file(dir / "out" / "table.md");
+  INFO(table);
+  CHECK(table.find("⚠ seed1/loose_hold reached r_u ≥ 0.95 with nothing applied after 0.2000 s (10.00 cycles of 0.02 s): its sample "
+                   "collapses at constant volume on its own, which bounds the N_L of every test of that sample; 2 of its cyclic tests "
+                   "liquefied earlier, after 1.00 – 2.00 cycles, when the hold's r_u was at most 0.190: the loading set their N_L; "
+                   "1 liquefied no earlier than the hold: their N_L is the sample's collapse, not set by the loading.") != std::string::npos);
+}
 
 TEST_CASE("compare-runs liquefaction: median and range of N_L over an ensemble's samples, censored ones as > N",
           "[liquefaction][compare-runs]") {
