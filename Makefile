@@ -21,9 +21,9 @@ CRITICAL_STATE_RATES    ?= results/critical_state_rates/paper
 LIQUEFACTION   ?= results/liquefaction_loose/paper results/liquefaction_medium/paper
 # The studies of the cell under full control that `make study`, and so `make all`, runs beside the
 # others (empty: none): the constant-p shear to the critical state (17 runs; 30.6 min for 10 of them
-# on this project's 2-core VM, docs/performance.md). The liquefaction ensembles (36 runs, about
-# 5e11 particle-steps: 2 h on 2 cores at the benchmark's throughput, more on a slower VM) would
-# take make all past 2 h: `make liquefaction` runs them, and the report keeps their committed
+# on this project's 2-core VM, docs/performance.md). The liquefaction ensembles (24 cyclic tests
+# and 6 holds: 196 core-min measured on that VM, about 1 h 40 min on its 2 cores) would take
+# make all past 2 h: `make liquefaction` runs them, and the report keeps their committed
 # section until then; so do the critical state's ensemble and rates studies (`make critical-state`).
 CELL_STUDIES   ?= pipeline/studies/critical_state.yaml
 EXECUTOR    ?=                          # local or slurm (pipeline --executor); empty: the study files' executor key, else local

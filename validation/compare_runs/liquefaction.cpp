@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <sstream>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -308,6 +309,10 @@ int liquefaction(const std::string& out, const std::vector<std::string>& folders
   ru.comments = {"compare-runs liquefaction: r_u against cycles since the start of the control stage, one block per run (values.gp: liq_run_<k>)"};
   validation::GnuplotValues values;
   std::vector<std::string> run_names, run_density, run_hold;
+  // For the r_u figure's colours and key: a cyclic test's CSR by its rank among its density's CSRs
+  // (1, 2, ...; a hold 0), and whether it is the first run drawn of its density and CSR (or hold).
+  std::vector<std::string> run_csr, run_csr_rank, run_first;
+  std::set<std::string> drawn;
   double ru_limit = NAN, strain_limit = NAN;  // the criteria of the first finished cyclic test (one scene for all)
   for (const CyclicRun& r : runs) {
     if (!r.finished) continue;
@@ -324,12 +329,22 @@ int liquefaction(const std::string& out, const std::vector<std::string>& folders
     if (!ru.rows.empty()) ru.block_starts.push_back(ru.rows.size());
     for (std::size_t i = 0; i < t.size(); ++i) ru.rows.push_back(t.rows[i]), ru.labels.push_back(r.run);
     run_names.push_back(r.run), run_density.push_back(std::to_string(static_cast<int>(d))), run_hold.push_back(r.hold ? "1" : "0");
+    int rank = 0;
+    if (!r.hold)
+      for (const CsrGroup& g : groups)
+        if (g.density == r.density && (++rank, g.csr == r.csr_name)) break;
+    run_csr.push_back(r.hold ? "hold" : number(r.csr_name));
+    run_csr_rank.push_back(std::to_string(rank));
+    run_first.push_back(drawn.insert(r.density + "/" + run_csr.back()).second ? "1" : "0");
   }
   ru.columns = {"cycles [1]", "r_u [1]", "time since the stage start [s]"};
   values.texts("liq_density", densities);
   values.texts("liq_run", run_names);
   values.texts("liq_run_density", run_density);
   values.texts("liq_run_hold", run_hold);
+  values.texts("liq_run_csr", run_csr);
+  values.texts("liq_run_csr_rank", run_csr_rank);
+  values.texts("liq_run_first", run_first);
   values.number("liq_summary_n", static_cast<double>(groups.size()));
   int most = 0;
   for (const CsrGroup& g : groups) most = std::max(most, g.summary.samples);

@@ -94,6 +94,22 @@ TEST_CASE("compare-runs liquefaction: a hold that collapses on its own says whic
                    "collapses at constant volume on its own, which bounds the N_L of every test of that sample; 2 of its cyclic tests "
                    "liquefied earlier, after 1.00 – 2.00 cycles, when the hold's r_u was at most 0.190: the loading set their N_L; "
                    "1 liquefied no earlier than the hold: their N_L is the sample's collapse, not set by the loading.") != std::string::npos);
+  // The r_u figure's colours: a test's CSR by its rank in its density (0.01, 0.03, 0.05: 1, 2, 3),
+  // the hold 0; each the first of its CSR (one sample), so each in the key.
+  const std::string values = read_file(dir / "out" / "values.gp");
+  INFO(values);
+  for (const std::string line : {"liq_run_1 = \"seed1/loose_hold\"", "liq_run_csr_1 = \"hold\"", "liq_run_csr_rank_1 = \"0\"",
+                                 "liq_run_csr_2 = \"0.05\"", "liq_run_csr_rank_2 = \"3\"", "liq_run_csr_rank_3 = \"2\"",
+                                 "liq_run_csr_4 = \"0.01\"", "liq_run_csr_rank_4 = \"1\"", "liq_run_first_4 = \"1\""})
+    CHECK(values.find(line + "\n") != std::string::npos);
+  // Both figure scripts draw from this output.
+  if (std::system("command -v gnuplot > /dev/null 2>&1") == 0)
+    for (const std::string figure : {"csr_nl", "ru"}) {
+      const std::string draw = "cd '" + (dir / "out").string() + "' && GNUPLOT_LIB='" + DEM_SOURCE_DIR + "/reports/gnuplot' gnuplot '" +
+                               DEM_SOURCE_DIR + "/reports/gnuplot/liquefaction_" + figure + ".gp' > draw.log 2>&1";
+      CHECK(std::system(draw.c_str()) == 0);
+      CHECK(fs::file_size(dir / "out" / (figure + ".png")) > 0);
+    }
 }
 
 TEST_CASE("compare-runs liquefaction: median and range of N_L over an ensemble's samples, censored ones as > N",
