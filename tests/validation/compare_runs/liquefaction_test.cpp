@@ -64,6 +64,14 @@ void write_collapsing_hold(const fs::path& file, double collapse_cycles) {
   dem::h5::write<double>(g, "pore_pressure_ratio", {0, 0, 0.95}, 1, "1");
 }
 
+// compare-runs liquefaction on <dir>/results into <dir>/out; its table.md.
+std::string liquefaction_table(const fs::path& dir) {
+  const std::string cmd = bin + " liquefaction " + (dir / "out").string() + " " + (dir / "results").string() + " > " +
+                          (dir / "log").string() + " 2>&1";
+  REQUIRE(std::system(cmd.c_str()) == 0);
+  return read_file(dir / "out" / "table.md");
+}
+
 }  // namespace
 
 TEST_CASE("compare-runs liquefaction: a hold that collapses on its own says which tests the loading set and which the collapse did",
@@ -85,10 +93,7 @@ TEST_CASE("compare-runs liquefaction: a hold that collapses on its own says whic
     write_test(dir / "results" / "seed1" / ("loose_csr" + csr + ".h5"), std::stod(csr), cycles, true);
   }
   runs.close();
-  const std::string cmd = bin + " liquefaction " + (dir / "out").string() + " " + (dir / "results").string() + " > " +
-                          (dir / "log").string() + " 2>&1";
-  REQUIRE(std::system(cmd.c_str()) == 0);
-  const std::string table = read_file(dir / "out" / "table.md");
+  const std::string table = liquefaction_table(dir);
   INFO(table);
   CHECK(table.find("⚠ seed1/loose_hold reached r_u ≥ 0.95 with nothing applied after 0.2000 s (10.00 cycles of 0.02 s): its sample "
                    "collapses at constant volume on its own, which bounds the N_L of every test of that sample; 2 of its cyclic tests "
@@ -139,10 +144,7 @@ TEST_CASE("compare-runs liquefaction: median and range of N_L over an ensemble's
     write_test(dir / "results" / ("seed" + std::to_string(t.seed)) / ("loose_csr" + csr.str() + ".h5"), t.csr, t.cycles, t.liquefied);
   }
   runs.close();
-  const std::string cmd = bin + " liquefaction " + (dir / "out").string() + " " + (dir / "results").string() + " > " +
-                          (dir / "log").string() + " 2>&1";
-  REQUIRE(std::system(cmd.c_str()) == 0);
-  const std::string table = read_file(dir / "out" / "table.md");
+  const std::string table = liquefaction_table(dir);
   INFO(table);
   CHECK(table.find("Samples: loose 3 (seeds 1, 2, 3)") != std::string::npos);
   CHECK(table.find("| loose | 0.02 | 3 | 1 | 2 | > 50.00 (the median is censored) | 2.00 – > 50.00 |") != std::string::npos);
