@@ -84,8 +84,9 @@ class ProgressLine {
 };
 
 // The line after a failed run that kept RESULT.h5.partial. Its status says why the run failed;
-// out of memory, HDF5 may not manage to write that status (the file is then "running" or has
-// none; on a full disk the file may be unreadable), which is said too: the file is kept, and being a .partial it is never taken for a result.
+// out of memory or on a full disk HDF5 may not manage to write that status (the file then says
+// "running", has none, or cannot be read), and the line says so. A .partial is never taken for a
+// result either way.
 std::string partial_kept_line(const std::string& partial) {
   std::string status = "missing";
   try {
