@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <regex>
 #include <stdexcept>
@@ -10,10 +11,24 @@
 
 namespace validation {
 
+namespace fs = std::filesystem;
+
 namespace {
 
 std::optional<double> number_at(const nlohmann::json& j, const char* key) {
   return j.contains(key) && j.at(key).is_number() ? std::optional<double>(j.at(key).get<double>()) : std::nullopt;
+}
+
+// The readings explain() names after "consistent under ": "a (-2.1 sd, t = 2.23), b (...), its
+// shift of the mean applied ..." -> {a, b} (each name followed by its parenthesised shift).
+std::vector<std::string> explaining_readings(const std::string& explanation) {
+  const std::string lead = "consistent under ";
+  if (explanation.rfind(lead, 0) != 0) return {};
+  static const std::regex named(R"((?:^|\), )([A-Za-z0-9_.+-]+) \()");
+  const std::string rest = explanation.substr(lead.size());
+  std::vector<std::string> out;
+  for (auto it = std::sregex_iterator(rest.begin(), rest.end(), named); it != std::sregex_iterator(); ++it) out.push_back((*it)[1].str());
+  return out;
 }
 
 }  // namespace
@@ -34,6 +49,12 @@ DecisionsFile read_decisions_file(const std::string& file, const std::vector<Row
     DecisionsFile::Finding finding;
     finding.explanation = row.at("explanation").get<std::string>();
     finding.judged = row.contains("judged") ? row.at("judged").get<bool>() : finding.explanation.rfind("not judged", 0) != 0;
+    finding.explained_by = row.contains("made_consistent_by") ? row.at("made_consistent_by").get<std::vector<std::string>>()
+                                                              : explaining_readings(finding.explanation);
+    if (const auto base = number_at(row, "baseline_mean"); base && row.contains("readings"))
+      for (const auto& [reading, effect] : row.at("readings").items())
+        if (const auto mean = number_at(effect, "mean")) finding.mean_shift[reading] = *mean - *base;
+    finding.baseline_sd = number_at(row, "baseline_sd").value_or(0.0);
     if (restate) finding.explanation = restate_shifts(finding.explanation, row, resolution.count(name) ? resolution.at(name) : 0.0);
     f.rows[name] = std::move(finding);
   }
@@ -47,25 +68,53 @@ std::string size_label(const DecisionsFile& f) {
   return s;
 }
 
-const DecisionsFile* finding_for(const std::vector<DecisionsFile>& files, const std::string& row) {
+std::string study_label(const DecisionsFile& f) {
+  const fs::path p(f.path);
+  const std::string folder = p.parent_path().filename().string();
+  return folder.empty() ? p.stem().string() : folder;
+}
+
+std::vector<const DecisionsFile*> findings_for(const std::vector<DecisionsFile>& files, const std::string& row) {
   std::vector<const DecisionsFile*> by_size;
   for (const DecisionsFile& f : files) by_size.push_back(&f);
-  // Most spheres first, an unrecorded size last; stable: the first given on a tie.
+  // Most spheres first, an unrecorded size last; stable: the order given on a tie.
   std::stable_sort(by_size.begin(), by_size.end(), [](const DecisionsFile* a, const DecisionsFile* b) {
     return a->particles.value_or(-1) > b->particles.value_or(-1);
   });
-  for (const DecisionsFile* f : by_size)
-    if (const auto it = f->rows.find(row); it != f->rows.end() && it->second.judged) return f;
-  for (const DecisionsFile* f : by_size)
-    if (f->rows.count(row)) return f;
-  return nullptr;
+  std::vector<const DecisionsFile*> out;
+  for (const DecisionsFile* f : by_size) {
+    const auto it = f->rows.find(row);
+    if (it == f->rows.end() || !it->second.judged) continue;
+    if (out.empty() || f->particles.value_or(-1) == out.front()->particles.value_or(-1)) out.push_back(f);
+  }
+  std::stable_partition(out.begin(), out.end(), [&](const DecisionsFile* f) { return !f->rows.at(row).explained_by.empty(); });
+  if (out.empty())
+    for (const DecisionsFile* f : by_size)
+      if (f->rows.count(row)) return {f};
+  return out;
 }
 
-std::string cause_text(const std::vector<DecisionsFile>& files, const std::string& row) {
-  const DecisionsFile* f = finding_for(files, row);
-  if (!f) return files.size() > 1 ? "no decisions study has judged this row" : "the decisions study has not judged this row";
-  const std::string& explanation = f->rows.at(row).explanation;
-  return files.size() > 1 ? size_label(*f) + ": " + explanation : explanation;
+std::string cause_text(const std::vector<DecisionsFile>& files, const std::string& row, const TurnsInconsistent& side_effects) {
+  const std::vector<const DecisionsFile*> picked = findings_for(files, row);
+  if (picked.empty()) return files.size() > 1 ? "no decisions study has judged this row" : "the decisions study has not judged this row";
+  std::string text;
+  for (const DecisionsFile* f : picked) {
+    const DecisionsFile::Finding& finding = f->rows.at(row);
+    std::string one = finding.explanation;
+    for (const std::string& reading : side_effects ? finding.explained_by : std::vector<std::string>{}) {
+      const std::vector<std::string> broken = side_effects(*f, reading);
+      if (broken.empty()) {
+        one += "; " + reading + " turns no consistent row inconsistent";
+        continue;
+      }
+      one += "; but " + reading + " turns " + std::to_string(broken.size()) + " consistent row" + (broken.size() == 1 ? "" : "s") +
+             " inconsistent: ";
+      for (std::size_t i = 0; i < broken.size(); ++i) one += (i ? ", " : "") + broken[i];
+    }
+    if (picked.size() > 1) one = "*" + study_label(*f) + "*: " + one;
+    text += (text.empty() ? "" : " · ") + one;
+  }
+  return files.size() > 1 ? size_label(*picked.front()) + ": " + text : text;
 }
 
 std::string restate_shifts(const std::string& explanation, const nlohmann::json& row, double resolution) {

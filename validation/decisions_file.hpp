@@ -2,8 +2,10 @@
 // What the validation reads back of the decisions studies' findings (decisions.json, written by
 // compare-runs decisions): each row's explanation, whether the study judged the row, and the size
 // it was measured at. Several files may be given (the 1,000-sphere decisions study, the readings
-// measured again at 8,000 spheres); a row's cause is the finding of the largest size that judged it.
+// measured again at 8,000 spheres); a row's cause is what every file of the largest size that
+// judged it found, and what the reading that explains it does to the other rows.
 #include <cstddef>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -22,6 +24,13 @@ struct DecisionsFile {
   struct Finding {
     std::string explanation;
     bool judged = false;  // the study judged the row (a file without `judged`: its explanation does not start "not judged")
+    // The readings under which the row is consistent (`made_consistent_by`; a file without it: the
+    // names explain() lists after "consistent under ").
+    std::vector<std::string> explained_by;
+    // Each reading's shift of the row's mean from the baseline's, in the row's units (its `mean`
+    // less `baseline_mean`), and the baseline's sd: what validate applies to the full-size ensemble.
+    std::map<std::string, double> mean_shift;
+    double baseline_sd = 0;
   };
   std::map<std::string, Finding> rows;  // by row name
 };
@@ -35,16 +44,26 @@ DecisionsFile read_decisions_file(const std::string& file, const std::vector<Row
 // "8,000 spheres, 3 samples" from the file's own fields, or "size not recorded" without `particles`.
 std::string size_label(const DecisionsFile& f);
 
-// The file whose finding on `row` is the cause: of those that judged it, the one of most spheres (a
-// file of unrecorded size after every file with one; the first given on a tie). If none judged it,
-// the first in that order that has the row (its explanation says why it is not judged). Null if
-// no file has the row.
-const DecisionsFile* finding_for(const std::vector<DecisionsFile>& files, const std::string& row);
+// "dashpot" for reports/readings/dashpot/decisions.json: the folder that names the study.
+std::string study_label(const DecisionsFile& f);
 
-// What the cause column says of `row`: with one file, its finding as it is; with several, the
-// finding finding_for() picks after its size ("8,000 spheres, 3 samples: consistent under ...").
-// No file, or none with the row: that no decisions study has judged it.
-std::string cause_text(const std::vector<DecisionsFile>& files, const std::string& row);
+// The files whose findings on `row` are the cause: every file that judged it at the largest size
+// any file judged it at (a file of unrecorded size after every file with one), those whose finding
+// explains the row first, otherwise in the order given. If none judged it, the first file in that
+// order that has the row (its explanation says why it is not judged). Empty if no file has the row.
+std::vector<const DecisionsFile*> findings_for(const std::vector<DecisionsFile>& files, const std::string& row);
+
+// The rows consistent on the full-size ensemble that `reading`'s shifts of the means in `file`
+// turn inconsistent, each "<row> (<shift_phrase>)". validate gives it: it has the ensemble.
+using TurnsInconsistent = std::function<std::vector<std::string>(const DecisionsFile& file, const std::string& reading)>;
+
+// What the cause column says of `row`: with one file, its finding as it is; with several, the size
+// of the findings findings_for() picks, then each ("8,000 spheres, 3 samples: consistent under
+// ..."), named by study_label() when there are two or more ("8,000 spheres, 3 samples: *dashpot*:
+// consistent under ... · *loose*: no reading does ..."). After a finding that explains the row,
+// with `side_effects`, the rows its reading turns inconsistent ("; but contact_dashpots turns 2
+// consistent rows inconsistent: ..."). No file, or none with the row: that no study has judged it.
+std::string cause_text(const std::vector<DecisionsFile>& files, const std::string& row, const TurnsInconsistent& side_effects = {});
 
 // `explanation` with each shift "<reading> (... X sd" re-stated from the row's own numbers in
 // decisions.json, (mean - baseline_mean) / max(baseline_sd, resolution), in shift_phrase()'s

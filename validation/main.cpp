@@ -11,8 +11,8 @@
 // study does not have), a results folder that does not exist or has no runs.tsv, or an --out that
 // is not a folder.
 // --decisions may be given several times (the decisions study, the readings at the paper's size):
-// each row's cause is the finding of the largest size that judged it, said with that size
-// (decisions_file.hpp).
+// each row's cause is what the files of the largest size that judged it found, said with that size,
+// and what a reading that explains it does to the rows consistent here (decisions_file.hpp).
 // Every row is computed per sample; its verdict compares the reference's value, widened by the
 // row's tolerance, with the 95 % prediction interval of a single sample of the ensemble (rows.hpp).
 #include <cstdio>
@@ -60,7 +60,7 @@ std::optional<Options> parse_options(int argc, char** argv, int& code) {
   app.add_option("--profile", o.profile, "the reference file's profile (its rows' `profiles` entries)")->capture_default_str();
   app.add_option("--decisions", o.decisions,
                  "a decisions study's decisions.json (compare-runs decisions); may be given several times, each row's cause "
-                 "is the finding of the largest size that judged it")
+                 "is what the files of the largest size that judged it found")
       ->allow_extra_args(false);
   try {
     app.parse(argc, argv);
@@ -191,11 +191,25 @@ std::string verdicts_text(const std::vector<Judged>& judged, const Counts& c, st
   // Each row not consistent, with the decisions study's cause when --decisions gave its findings.
   std::vector<std::string> headings = {"row", "verdict", label, "interval of one sample", "holds in"};
   if (with_causes) headings.push_back("cause");
+  // What a reading that explains a row does to the rows consistent here: its shift of each row's
+  // mean, from the same file, applied to this ensemble's samples and the row judged again.
+  const validation::TurnsInconsistent side_effects = [&](const validation::DecisionsFile& f, const std::string& reading) {
+    std::vector<std::string> broken;
+    for (const Judged& j : judged) {
+      const auto row = f.rows.find(j.row.name);
+      if (j.result.verdict != Verdict::Consistent || row == f.rows.end() || !row->second.judged) continue;
+      const auto by = row->second.mean_shift.find(reading);
+      if (by == row->second.mean_shift.end() || validation::shifted(j.row, j.result, by->second).verdict != Verdict::Inconsistent) continue;
+      broken.push_back(j.row.name + " (" +
+                       validation::shift_phrase(validation::shift_in_sd(by->second, row->second.baseline_sd, j.row.resolution)) + ")");
+    }
+    return broken;
+  };
   validation::MarkdownTable misses(headings);
   for (const Judged& j : judged) {
     if (j.result.verdict == Verdict::Consistent) continue;
     std::vector<std::string> cells = {j.row.name, mark(j.result.verdict), statement(j.row), interval(j.result), holds_in(j.result)};
-    if (with_causes) cells.push_back(validation::cause_text(findings, j.row.name));  // the largest size's, named when several
+    if (with_causes) cells.push_back(validation::cause_text(findings, j.row.name, side_effects));  // the largest size's, named when several
     misses.row(cells);
   }
   auto n = [&](Verdict v) { return c.verdicts.count(v) ? c.verdicts.at(v) : 0; };
@@ -214,12 +228,16 @@ std::string verdicts_text(const std::vector<Judged>& judged, const Counts& c, st
         << "; the rows are judged on what is there.\n";
   if (misses.rows() && with_causes && findings.size() > 1)
     out << "\nThe rows that are not consistent, and what the decisions studies found for each (each its own ensemble: "
-           "`make decisions`, `make readings-report`): the finding of the largest size that judged the row, that size first "
-           "(from the file's own record; \"size not recorded\": a file written before it recorded its size):\n\n"
+           "`make decisions`, `make readings-report`): the findings of the largest size that judged the row, that size first "
+           "(from the file's own record; \"size not recorded\": a file written before it recorded its size), each study named "
+           "when two or more of that size judged the row, a finding that explains it first. After a reading that explains a "
+           "row: the rows consistent here that its shift of their means, from the same study and applied to this ensemble's "
+           "samples, turns inconsistent:\n\n"
         << misses.text();
   else if (misses.rows() && with_causes)
     out << "\nThe rows that are not consistent, and what the decisions study found for each (its own ensemble, "
-           "`make decisions`):\n\n" << misses.text();
+           "`make decisions`; after a reading that explains a row, the rows consistent here that its shift of their means, "
+           "applied to this ensemble's samples, turns inconsistent):\n\n" << misses.text();
   else if (misses.rows())
     out << "\nThe rows that are not consistent:\n\n" << misses.text();
   return out.str();

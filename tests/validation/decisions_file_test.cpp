@@ -1,6 +1,7 @@
-// What validate reads back of the decisions studies (decisions_file.hpp): the cause of a row is the
-// finding of the largest size that judged it, named from the file's own record; a file written
-// before shifts had a floor has its shifts restated from its own numbers.
+// What validate reads back of the decisions studies (decisions_file.hpp): the cause of a row is what
+// the files of the largest size that judged it found, named from the files' own records, with what
+// an explaining reading does to the other rows; a file written before shifts had a floor has its
+// shifts restated from its own numbers.
 #include <catch2/catch.hpp>
 
 #include <filesystem>
@@ -74,9 +75,9 @@ TEST_CASE("validate --decisions: a row's cause is the largest size that judged i
 
   for (const std::vector<DecisionsFile>& files : {std::vector<DecisionsFile>{s, b}, std::vector<DecisionsFile>{b, s}}) {
     // A: both judged it; 8,000 spheres is the larger size, whichever file is given first.
-    const DecisionsFile* f = validation::finding_for(files, "A");
-    REQUIRE(f);
-    CHECK(f->particles == 8000L);
+    const std::vector<const DecisionsFile*> f = validation::findings_for(files, "A");
+    REQUIRE(f.size() == 1);
+    CHECK(f.front()->particles == 8000L);
     CHECK(validation::cause_text(files, "A") == "8,000 spheres, 3 samples: consistent under r (-2.0 sd, t = 4.10)");
     // B: only the 1,000-sphere file judged it.
     CHECK(validation::cause_text(files, "B") == "size not recorded: unexplained: no reading makes it consistent");
@@ -112,4 +113,75 @@ TEST_CASE("an explanation written before the floor: its shifts restated from its
   // Nothing to restate: as it is.
   CHECK(validation::restate_shifts("consistent on the full-size ensemble (within the scatter of one sample)", lead, 0.005) ==
         "consistent on the full-size ensemble (within the scatter of one sample)");
+}
+
+TEST_CASE("validate --decisions: two studies of the same size both said, the one that explains first, with its side effects",
+          "[decisions][validate]") {
+  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "decisions_file_same_size";
+  fs::remove_all(dir);
+  // Two readings studies at 8,000 spheres, as reports/readings/<name>/decisions.json. "grading" (given
+  // first) does not explain row A; "dashpot" does, and shifts row B's mean by 0.5 - 0.25 = +0.25 in
+  // the row's units (baseline sd 0.1: +2.5 sd) and row C's by 0.
+  auto study = [&](const std::string& name, const nlohmann::json& rows) {
+    return write_json(dir / name / "decisions.json",
+                      {{"schema", 2}, {"baseline", "baseline"}, {"particles", 8000}, {"samples", 3}, {"rows", rows}});
+  };
+  const std::string grading = study(
+      "grading", {{{"name", "A"}, {"judged", true}, {"explanation", "no reading does: within scatter; most: grading_by_mass (0 of 5)"}}});
+  // No `made_consistent_by` in A (a file written before it): the reading is read from the explanation.
+  const std::string dashpot = study(
+      "dashpot",
+      {{{"name", "A"}, {"judged", true}, {"explanation", "consistent under contact_dashpots (-2.1 sd, t = 2.23), its shift of the mean applied"}},
+       {{"name", "B"},
+        {"judged", true},
+        {"baseline_mean", 0.25},
+        {"baseline_sd", 0.1},
+        {"readings", {{"contact_dashpots", {{"mean", 0.5}}}}},
+        {"made_consistent_by", nlohmann::json::array()},
+        {"explanation", "consistent on the full-size ensemble"}},
+       {{"name", "C"},
+        {"judged", true},
+        {"baseline_mean", 1.0},
+        {"baseline_sd", 0.1},
+        {"readings", {{"contact_dashpots", {{"mean", 1.0}}}}},
+        {"explanation", "consistent on the full-size ensemble"}}});
+  const std::vector<validation::Row> rows = {row_named("A", 0), row_named("B", 0.01), row_named("C", 0.01)};
+  const std::vector<DecisionsFile> files = {validation::read_decisions_file(grading, rows), validation::read_decisions_file(dashpot, rows)};
+  CHECK(validation::study_label(files[1]) == "dashpot");
+  CHECK(files[1].rows.at("A").explained_by == std::vector<std::string>{"contact_dashpots"});
+  CHECK(files[1].rows.at("B").mean_shift.at("contact_dashpots") == Approx(0.25));
+
+  const std::vector<const DecisionsFile*> picked = validation::findings_for(files, "A");
+  REQUIRE(picked.size() == 2);
+  CHECK(validation::study_label(*picked[0]) == "dashpot");  // the finding that explains the row first
+
+  // The side effects as validate computes them, here a stand-in that says B turns inconsistent under
+  // the shift it is given (validate judges the shifted ensemble; main.cpp, tested by cli_test).
+  const validation::TurnsInconsistent breaks_b = [](const DecisionsFile& f, const std::string& reading) {
+    const double by = f.rows.at("B").mean_shift.at(reading);
+    return std::vector<std::string>{"B (" + validation::shift_phrase(validation::shift_in_sd(by, f.rows.at("B").baseline_sd, 0.01)) + ")"};
+  };
+  CHECK(validation::cause_text(files, "A", breaks_b) ==
+        "8,000 spheres, 3 samples: *dashpot*: consistent under contact_dashpots (-2.1 sd, t = 2.23), its shift of the mean applied; "
+        "but contact_dashpots turns 1 consistent row inconsistent: B (+2.5 sd) · "
+        "*grading*: no reading does: within scatter; most: grading_by_mass (0 of 5)");
+  // No side effect: said so; without the function, the findings alone.
+  const validation::TurnsInconsistent none = [](const DecisionsFile&, const std::string&) { return std::vector<std::string>{}; };
+  CHECK(validation::cause_text(files, "A", none) ==
+        "8,000 spheres, 3 samples: *dashpot*: consistent under contact_dashpots (-2.1 sd, t = 2.23), its shift of the mean applied; "
+        "contact_dashpots turns no consistent row inconsistent · *grading*: no reading does: within scatter; most: grading_by_mass (0 of 5)");
+  CHECK(validation::cause_text({files[0]}, "A") == "no reading does: within scatter; most: grading_by_mass (0 of 5)");
+}
+
+TEST_CASE("the readings an explanation names after \"consistent under\"", "[decisions][validate]") {
+  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "decisions_file_names";
+  fs::remove_all(dir);
+  const std::string file = write_json(
+      dir / "x" / "decisions.json",
+      {{"rows",
+        {{{"name", "A"}, {"explanation", "consistent under a_1 (beyond -10 sd (-14), t = 24.34), b.2 (+1.5 sd, t = 2.52), its shift of the mean applied"}},
+         {{"name", "B"}, {"explanation", "no reading does: within scatter; would be consistent under c (+1.0 sd, t = 1.41), but"}}}}});
+  const DecisionsFile f = validation::read_decisions_file(file, {row_named("A", 0), row_named("B", 0)});
+  CHECK(f.rows.at("A").explained_by == std::vector<std::string>{"a_1", "b.2"});
+  CHECK(f.rows.at("B").explained_by.empty());  // "would be consistent under" explains nothing
 }

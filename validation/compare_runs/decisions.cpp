@@ -231,6 +231,7 @@ nlohmann::ordered_json decisions_json(const std::string& baseline, const std::st
                     {"baseline_verdict", validation::to_string(d.baseline.verdict)},
                     {"readings", readings},
                     {"judged", d.judged},
+                    {"made_consistent_by", d.made_consistent_by},
                     {"explanation", d.explanation}});
   }
   json out = {{"schema", 2}, {"baseline", baseline}};
