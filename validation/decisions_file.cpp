@@ -94,6 +94,15 @@ std::vector<const DecisionsFile*> findings_for(const std::vector<DecisionsFile>&
   return out;
 }
 
+std::optional<std::string> turned_inconsistent(const DecisionsFile& file, const std::string& reading, const Row& row,
+                                               const RowResult& full) {
+  const auto finding = file.rows.find(row.name);
+  if (full.verdict != Verdict::Consistent || finding == file.rows.end() || !finding->second.judged) return std::nullopt;
+  const auto by = finding->second.mean_shift.find(reading);
+  if (by == finding->second.mean_shift.end() || shifted(row, full, by->second).verdict != Verdict::Inconsistent) return std::nullopt;
+  return row.name + " (" + shift_phrase(shift_in_sd(by->second, finding->second.baseline_sd, row.resolution)) + ")";
+}
+
 std::string cause_text(const std::vector<DecisionsFile>& files, const std::string& row, const TurnsInconsistent& side_effects) {
   const std::vector<const DecisionsFile*> picked = findings_for(files, row);
   if (picked.empty()) return files.size() > 1 ? "no decisions study has judged this row" : "the decisions study has not judged this row";

@@ -53,8 +53,15 @@ std::string study_label(const DecisionsFile& f);
 // order that has the row (its explanation says why it is not judged). Empty if no file has the row.
 std::vector<const DecisionsFile*> findings_for(const std::vector<DecisionsFile>& files, const std::string& row);
 
+// "<row> (<shift_phrase>)" when `reading`'s shift of the row's mean in `file`, applied to each
+// sample of `full` (the row on the full-size ensemble; shifted()), turns the row from consistent
+// to inconsistent; none otherwise (not consistent to begin with, not judged by the file, or no
+// mean of the reading recorded). The shift is said in max(the file's baseline sd, the row's resolution).
+std::optional<std::string> turned_inconsistent(const DecisionsFile& file, const std::string& reading, const Row& row,
+                                               const RowResult& full);
+
 // The rows consistent on the full-size ensemble that `reading`'s shifts of the means in `file`
-// turn inconsistent, each "<row> (<shift_phrase>)". validate gives it: it has the ensemble.
+// turn inconsistent (turned_inconsistent() of each). validate gives it: it has the ensemble.
 using TurnsInconsistent = std::function<std::vector<std::string>(const DecisionsFile& file, const std::string& reading)>;
 
 // What the cause column says of `row`: with one file, its finding as it is; with several, the size

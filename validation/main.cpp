@@ -191,18 +191,11 @@ std::string verdicts_text(const std::vector<Judged>& judged, const Counts& c, st
   // Each row not consistent, with the decisions study's cause when --decisions gave its findings.
   std::vector<std::string> headings = {"row", "verdict", label, "interval of one sample", "holds in"};
   if (with_causes) headings.push_back("cause");
-  // What a reading that explains a row does to the rows consistent here: its shift of each row's
-  // mean, from the same file, applied to this ensemble's samples and the row judged again.
+  // What a reading that explains a row does to the rows consistent here (decisions_file.hpp).
   const validation::TurnsInconsistent side_effects = [&](const validation::DecisionsFile& f, const std::string& reading) {
     std::vector<std::string> broken;
-    for (const Judged& j : judged) {
-      const auto row = f.rows.find(j.row.name);
-      if (j.result.verdict != Verdict::Consistent || row == f.rows.end() || !row->second.judged) continue;
-      const auto by = row->second.mean_shift.find(reading);
-      if (by == row->second.mean_shift.end() || validation::shifted(j.row, j.result, by->second).verdict != Verdict::Inconsistent) continue;
-      broken.push_back(j.row.name + " (" +
-                       validation::shift_phrase(validation::shift_in_sd(by->second, row->second.baseline_sd, j.row.resolution)) + ")");
-    }
+    for (const Judged& j : judged)
+      if (auto b = validation::turned_inconsistent(f, reading, j.row, j.result)) broken.push_back(std::move(*b));
     return broken;
   };
   validation::MarkdownTable misses(headings);

@@ -155,11 +155,32 @@ TEST_CASE("validate --decisions: two studies of the same size both said, the one
   REQUIRE(picked.size() == 2);
   CHECK(validation::study_label(*picked[0]) == "dashpot");  // the finding that explains the row first
 
-  // The side effects as validate computes them, here a stand-in that says B turns inconsistent under
-  // the shift it is given (validate judges the shifted ensemble; main.cpp, tested by cli_test).
-  const validation::TurnsInconsistent breaks_b = [](const DecisionsFile& f, const std::string& reading) {
-    const double by = f.rows.at("B").mean_shift.at(reading);
-    return std::vector<std::string>{"B (" + validation::shift_phrase(validation::shift_in_sd(by, f.rows.at("B").baseline_sd, 0.01)) + ")"};
+  // The side effects as validate finds them: a row's full-size samples moved by the shift and judged
+  // again. B is "at most 0.5", held by more than half of the samples. Samples 0.2, 0.25, 0.3 moved by
+  // +0.25 are 0.45, 0.5, 0.55: 2 of 3 hold, still consistent. Samples 0.3, 0.35, 0.4 moved are 0.55,
+  // 0.6, 0.65: none holds, inconsistent. C's shift is 0: consistent still.
+  auto full = [](const validation::Row& row, std::vector<double> values) {
+    std::vector<validation::RowResult::PerSample> samples;
+    for (std::size_t i = 0; i < values.size(); ++i) samples.push_back({"seed" + std::to_string(i + 1), {values[i], ""}});
+    return validation::judge_values(row, std::move(samples));
+  };
+  validation::Row b = rows[1], c = rows[2];
+  b.rule = c.rule = "majority";
+  b.check = c.check = "at_most";
+  b.reference = 0.5, c.reference = 1.5;
+  const validation::RowResult b_keeps = full(b, {0.2, 0.25, 0.3}), b_breaks = full(b, {0.3, 0.35, 0.4}), c_full = full(c, {1.0, 1.1, 0.9});
+  REQUIRE(b_keeps.verdict == validation::Verdict::Consistent);
+  REQUIRE(b_breaks.verdict == validation::Verdict::Consistent);
+  CHECK_FALSE(validation::turned_inconsistent(files[1], "contact_dashpots", b, b_keeps));
+  CHECK(validation::turned_inconsistent(files[1], "contact_dashpots", b, b_breaks) == std::optional<std::string>("B (+2.5 sd)"));
+  CHECK_FALSE(validation::turned_inconsistent(files[1], "contact_dashpots", c, c_full));
+  CHECK_FALSE(validation::turned_inconsistent(files[1], "other_reading", b, b_breaks));  // no mean recorded for it
+  CHECK_FALSE(validation::turned_inconsistent(files[0], "contact_dashpots", b, b_breaks));  // the file has no row B
+  const validation::TurnsInconsistent breaks_b = [&](const DecisionsFile& f, const std::string& reading) {
+    std::vector<std::string> broken;
+    for (const auto& [row, result] : {std::pair{b, b_breaks}, std::pair{c, c_full}})
+      if (auto x = validation::turned_inconsistent(f, reading, row, result)) broken.push_back(*x);
+    return broken;
   };
   CHECK(validation::cause_text(files, "A", breaks_b) ==
         "8,000 spheres, 3 samples: *dashpot*: consistent under contact_dashpots (-2.1 sd, t = 2.23), its shift of the mean applied; "
