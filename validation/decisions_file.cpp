@@ -110,7 +110,8 @@ std::string cause_text(const std::vector<DecisionsFile>& files, const std::strin
   for (const DecisionsFile* f : picked) {
     const DecisionsFile::Finding& finding = f->rows.at(row);
     std::string one = finding.explanation;
-    for (const std::string& reading : side_effects ? finding.explained_by : std::vector<std::string>{}) {
+    for (const std::string& reading : finding.explained_by) {
+      if (!side_effects) break;
       const std::vector<std::string> broken = side_effects(*f, reading);
       if (broken.empty()) {
         one += "; " + reading + " turns no consistent row inconsistent";
