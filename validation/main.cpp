@@ -202,7 +202,7 @@ std::string verdicts_text(const std::vector<Judged>& judged, const Counts& c, st
   for (const Judged& j : judged) {
     if (j.result.verdict == Verdict::Consistent) continue;
     std::vector<std::string> cells = {j.row.name, mark(j.result.verdict), statement(j.row), interval(j.result), holds_in(j.result)};
-    if (with_causes) cells.push_back(validation::cause_text(findings, j.row.name, side_effects));  // the largest size's, named when several
+    if (with_causes) cells.push_back(validation::cause_text(findings, j.row.name, side_effects));  // decisions_file.hpp
     misses.row(cells);
   }
   auto n = [&](Verdict v) { return c.verdicts.count(v) ? c.verdicts.at(v) : 0; };

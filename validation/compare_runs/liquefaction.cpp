@@ -329,7 +329,7 @@ int liquefaction(const std::string& out, const std::vector<std::string>& folders
     if (!ru.rows.empty()) ru.block_starts.push_back(ru.rows.size());
     for (std::size_t i = 0; i < t.size(); ++i) ru.rows.push_back(t.rows[i]), ru.labels.push_back(r.run);
     run_names.push_back(r.run), run_density.push_back(std::to_string(static_cast<int>(d))), run_hold.push_back(r.hold ? "1" : "0");
-    int rank = 0;  // groups holds each density's CSRs once: the rank counts those up to the run's
+    int rank = 0;  // `groups` has each density's CSRs once: the run's rank is how many are at most its own
     if (!r.hold)
       for (const CsrGroup& g : groups) rank += g.density == r.density && g.csr <= r.csr_name;
     run_csr.push_back(r.hold ? "hold" : number(r.csr_name));
