@@ -5,7 +5,7 @@ load 'style.gp'
 load 'values.gp'
 set terminal pngcairo size 1800,1480 font ",11" enhanced
 set output 'fig09_strain_increments.png'
-set multiplot layout 3,4 title "Fig. 9  Strain increment vectors on the normalised π-plane, cycles 1 and 5: one arrow per leg (numbered in order), drawn from the measured stress at the end of the leg\n(A) loose Test 1, (B) dense Test 1, (C) loose Test 2, (D) dense Test 2, (E) loose Test 4, (F) dense Test 4;  1 = 1st cycle, 2 = 5th cycle" font ",13"
+set multiplot layout 3,4 title "Fig. 9  Strain increment vectors on the normalised π-plane, cycles 1 and 5: one arrow per leg (numbered in order), drawn from the measured stress at the end of the leg\n(A) loose Test 1, (B) dense Test 1, (C) loose Test 2, (D) dense Test 2, (E) loose Test 4, (F) dense Test 4;  1 = 1st cycle, 2 = 5th cycle\nEach density and test has its own arrow scale (the same in both cycles), stated on the panel with a bar at its top left" font ",13"
 set xlabel "π-plane x  (stress: /p;  Δε: × scale)" font ",10"; set ylabel "π-plane y" font ",10"; set key bottom right font ",8"
 pi_r = 0.33; eval pi_axes
 k = 0
