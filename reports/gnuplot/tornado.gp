@@ -1,13 +1,14 @@
 # The decisions study's tornado charts, one per group of validation rows (tornado_<group>.png): the
-# shift of the ensemble mean that each reading of the paper's open choices causes, in baseline
-# standard deviations, one bar per reading and row. Data: tornado_<group>.dat (row index, reading
+# shift of the ensemble mean that each reading of the paper's open choices causes, in units of
+# max(baseline standard deviation, the row's resolution) as compare-runs computes it (a row without
+# a resolution in the references: the baseline sd alone), one bar per reading and row. Data: tornado_<group>.dat (row index, reading
 # index, shift) and tornado_values.gp (groups, readings, row names, sizes), both written by
 # build/bin/compare-runs decisions. Runs in reports/decisions/ (make decisions-report).
 load 'style.gp'
 load 'tornado_values.gp'
 unset grid; set grid xtics
 set key outside right noopaque nobox
-set xlabel 'shift of the mean / baseline standard deviation (bars beyond ±10 are cut and labelled with their value)'
+set xlabel "shift of the mean / max(baseline standard deviation, the row's resolution)   (bars beyond ±10 are cut and labelled with their value)"
 set xrange [-11:11]
 clip(x) = x > 10 ? 10 : x < -10 ? -10 : x
 set style fill solid 0.8 noborder
@@ -19,7 +20,7 @@ do for [g in tornado_groups] {
   rows = value(sprintf("tornado_%s_row_n", g))
   set terminal pngcairo size 1400, value(sprintf("tornado_%s_height", g)) font 'Sans,10' noenhanced
   set output sprintf("tornado_%s.png", g)
-  set title sprintf("%s: shift of the ensemble mean by each reading (baseline standard deviations)", value(sprintf("tornado_%s_title", g)))
+  set title sprintf("%s: shift of the ensemble mean by each reading, in max(baseline sd, resolution)", value(sprintf("tornado_%s_title", g)))
   set yrange [-0.6:rows - 0.4]
   set ytics 0, 1 format ""
   unset label
