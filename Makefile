@@ -1,7 +1,7 @@
 # cyclic-triax: the two commands a user needs are `make all` and `make test`.
 BUILD    ?= build
 JOBS     ?= $(shell nproc 2>/dev/null || echo 2)
-PACKAGES := g++ cmake make libeigen3-dev libhdf5-dev libyaml-cpp-dev catch2 gnuplot-nox hdf5-tools libboost-math-dev libcli11-dev nlohmann-json3-dev
+PACKAGES := g++ cmake make libeigen3-dev libhdf5-dev libyaml-cpp-dev catch2 gnuplot-nox hdf5-tools libboost-math-dev libcli11-dev nlohmann-json3-dev cmark-gfm
 SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 RESULTS  ?= results/study/paper
@@ -172,11 +172,13 @@ quick: build
 	  > $(BUILD)/quick-report/samples.md
 	$(BUILD)/bin/report --results results/study/quick --references reference_data/paper.yaml --out $(BUILD)/quick-report \
 	  --profile quick --sample $(strip $(SAMPLE)) $(REPORT_SOURCE)
+	reports/render_html.sh $(BUILD)/quick-report/index.md $(BUILD)/quick-report/index.html
 
 # Validation table, figures, the convergence, stability, critical-state and liquefaction sections
 # and reports/index.md from the results of the full studies (a section whose study has not run
 # says so; a missing or unfinished one does not fail the report). build/bin/report writes
 # index.md from reports/templates/ and computes every number in its prose (validation/report.hpp);
+# reports/render_html.sh renders it into reports/index.html (cmark-gfm), the page a referee opens;
 # BASELINE is an earlier baseline's validation.json it compares every row with.
 BASELINE ?= reports/baselines/orthorhombic_validation.json
 REPORT_SOURCE = --source "commit $$(git rev-parse --short=12 HEAD 2>/dev/null || echo unknown)$$(git diff --quiet HEAD -- . ':!reports' 2>/dev/null || echo ' (with uncommitted changes)')"
@@ -196,6 +198,7 @@ report: tools
 	-$(MAKE) --no-print-directory literature-report
 	$(BUILD)/bin/report --results $(RESULTS) --references reference_data/paper.yaml --out reports --sample $(strip $(SAMPLE)) \
 	  --baseline $(BASELINE) --convergence $(CONVERGENCE) --decisions $(DECISIONS) --stability $(STABILITY) $(REPORT_SOURCE)
+	reports/render_html.sh reports/index.md reports/index.html
 
 # Published DEM values: reference_data/literature.yaml against the critical-state ensemble
 # (pipeline/studies/critical_state_ensemble.yaml, also run by `make critical-state`), and
@@ -227,6 +230,7 @@ report-sections: tools
 	$(BUILD)/bin/report --results $(RESULTS) --references reference_data/paper.yaml --out reports --sample $(strip $(SAMPLE)) \
 	  --baseline $(BASELINE) --convergence $(CONVERGENCE) --decisions $(DECISIONS) --stability $(STABILITY) \
 	  --previous $(BUILD)/previous_index.md $(REPORT_SOURCE)
+	reports/render_html.sh reports/index.md reports/index.html
 
 # The paper's open choices (SPEC section 7): each reading one at a time from the baseline, 3
 # samples of 1,000 spheres (pipeline/studies/decisions.yaml), then the report's section on them.
