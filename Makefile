@@ -80,7 +80,8 @@ PREFIX ?= /usr/local
 install: tools
 	cmake --install $(BUILD) --prefix $(PREFIX)
 
-# Unit tests, then a smoke run of the whole pipeline (quick profile, into the build folder) with
+# Unit tests (ctest: with them the report's web page in headless Chromium, which the test installs
+# if missing: 48 s on this machine), then a smoke run of the whole pipeline (quick profile, into the build folder) with
 # the validation rows that hold at that size, and the stability matrix on 27 spheres (216 for the
 # jammed start): every case must run with its energy balance closed within 1 % or stop with a
 # message (5.6 s on this machine).
