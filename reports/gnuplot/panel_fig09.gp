@@ -19,6 +19,7 @@ if (!has(d, t)) {
   base = sprintf("fig09_%s_test%d_cycle%d", d, t, which)
   longest = 0
   do for [w in "1 5"] {
+    F9_max = 0   # kept by a file without data rows (stats then only warns)
     stats sprintf("fig09_%s_test%d_cycle%s.dat", d, t, w) using (sqrt($3**2 + $4**2)) nooutput name "F9"
     longest = F9_max > longest ? F9_max : longest
   }
