@@ -31,7 +31,7 @@ for gp in "$here"/reports/gnuplot/fig*.gp; do
   if ! (cd "$figs" && GNUPLOT_LIB="$here/reports/gnuplot" gnuplot "$gp") 2> "$err"; then
     echo "error: gnuplot failed for $(basename "$gp"):" >&2; cat "$err" >&2; status=1
   else  # warnings but those of curves and panels without data (runs not run)
-    grep -v -e 'Skipping data file' -e '^ *$' -e 'warning: empty' -e 'empty . range' "$err" | sed "s/^/  gnuplot ($(basename "$gp")): /" >&2 || true
+    grep -v -e 'Skipping data file' -e 'No valid data points' -e '^ *$' -e 'warning: empty' -e 'empty . range' "$err" | sed "s/^/  gnuplot ($(basename "$gp")): /" >&2 || true
   fi
 done
 echo "figures written to $figs" >&2

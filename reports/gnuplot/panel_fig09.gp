@@ -19,9 +19,9 @@ if (!has(d, t)) {
   base = sprintf("fig09_%s_test%d_cycle%d", d, t, which)
   longest = 0
   do for [w in "1 5"] {
-    F9_max = 0   # kept by a file without data rows (stats then only warns)
+    undefine F9_*   # a file without data rows: stats warns and defines nothing, and the file counts as 0
     stats sprintf("fig09_%s_test%d_cycle%s.dat", d, t, w) using (sqrt($3**2 + $4**2)) nooutput name "F9"
-    longest = F9_max > longest ? F9_max : longest
+    longest = !exists("F9_max") ? longest : F9_max > longest ? F9_max : longest
   }
   raw = longest > 0 ? 0.12 / longest : 1
   decade = 10**floor(log10(raw))
