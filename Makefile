@@ -92,7 +92,7 @@ test: build
 	$(BUILD)/bin/pipeline pipeline/studies/stability.yaml --profile quick --out $(BUILD)/smoke-stability -j $(JOBS)
 	$(BUILD)/bin/compare-runs stability $(BUILD)/smoke-stability $(BUILD)/smoke-stability/report
 
-# The long kill tests (issue 8): a run killed 20 times and a study killed 5 times at random
+# The long kill tests: a run killed 20 times and a study killed 5 times at random
 # moments, resumed from checkpoints and compared bit for bit with uninterrupted ones.
 KILLS ?= 20
 kill-test: build
@@ -153,8 +153,8 @@ bench: build
 	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends lammps; }
 	reports/bench/run_bench.sh $(BUILD) reports
 
-# The studies through the pipeline, reusing finished results: the paper's (issue 5: every density
-# x test), error against run time, the stability matrix (issue 7) and CELL_STUDIES, in one call so
+# The studies through the pipeline, reusing finished results: the paper's (every density
+# x test), error against run time, the stability matrix and CELL_STUDIES, in one call so
 # that they share the cores (one study's runs fill them while another's last runs finish).
 study: tools
 	$(BUILD)/bin/pipeline pipeline/studies/paper.yaml pipeline/studies/convergence.yaml \
@@ -228,7 +228,7 @@ report-sections: tools
 	  --baseline $(BASELINE) --convergence $(CONVERGENCE) --decisions $(DECISIONS) --stability $(STABILITY) \
 	  --previous $(BUILD)/previous_index.md $(REPORT_SOURCE)
 
-# The paper's open choices (SPEC section 7): each reading one at a time from the baseline, 3
+# The paper's open choices (docs/method.md#open-choices): each reading one at a time from the baseline, 3
 # samples of 1,000 spheres (pipeline/studies/decisions.yaml), then the report's section on them.
 decisions: tools
 	$(BUILD)/bin/pipeline pipeline/studies/decisions.yaml --profile paper -j $(JOBS) $(if $(strip $(EXECUTOR)),--executor $(strip $(EXECUTOR)))

@@ -39,7 +39,7 @@ ParticleSource read_particles(Section s) {
       g.fail("percent_finer", "must have as many items as 'diameters' (" +
                                   std::to_string(src.grading_diameters_m.size()) + ")");
     src.grading_basis = g.choice("basis", {"mass", "number"}, "mass",
-                                 "mass: percent finer by mass (SPEC section 1); number: percent finer by count") == "mass"
+                                 "mass: percent finer by mass; number: percent finer by count (the baseline, docs/method.md#grading)") == "mass"
                             ? GradingCurve::Basis::Mass
                             : GradingCurve::Basis::Number;
     g.finish();
@@ -434,7 +434,7 @@ static SceneConfig parse_scene(Section root, const std::string& file) {
   m.finish();
 
   {
-    Section d = root.optional_child("damping", "damping of particle motion (SPEC section 5)");
+    Section d = root.optional_child("damping", "damping of particle motion (docs/method.md#damping)");
     c.damping.form = d.choice("form", {"viscous", "local"}, "viscous",
                               "viscous: fraction of critical on the fluctuating velocity; local: Cundall's non-viscous") == "viscous"
                          ? Damping::Form::Viscous

@@ -69,7 +69,7 @@ std::int64_t get_int_attribute(hid_t obj, const std::string& name);
 bool has_attribute(hid_t obj, const std::string& name);
 
 // Text of any size, as a dataset: an attribute's object header holds at most 64 KiB, which a long
-// resolved scene or many warnings exceed (issue 38). write_text writes (or replaces) a scalar
+// resolved scene or many warnings exceed. write_text writes (or replaces) a scalar
 // fixed-length string dataset; read_text reads it, or, in a file written before schema 3, the
 // attribute of that name on `parent`. append_texts grows a 1-D dataset of variable-length
 // strings (chunked, unlimited: one item per call's element, nothing rewritten); read_texts reads

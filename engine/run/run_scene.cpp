@@ -279,7 +279,7 @@ void run_stress_stage(Simulation& sim, const SceneConfig& scene, int index, cons
 }
 
 
-// Straight legs between stress states at constant mean stress (SPEC section 3). Each leg moves
+// Straight legs between stress states at constant mean stress (docs/method.md#stress-paths). Each leg moves
 // the targets linearly so that the principal stress changing most moves at the stage rate; the
 // servo gets the leg's stress rates as feed-forward. Records each leg's tracking error and
 // largest inertial number.

@@ -246,7 +246,7 @@ Study load_study(const std::string& file) {
   st.file = file;
   st.name = root.text("name", std::nullopt, "study name");
   st.output = resolve(file, root.text("output", std::nullopt, "results folder, relative to the study file"));
-  st.preparation = resolve(file, root.text("preparation", std::nullopt, "preparation scene template (SPEC section 2)"));
+  st.preparation = resolve(file, root.text("preparation", std::nullopt, "preparation scene template (docs/method.md#preparation)"));
   require_file(root, "preparation", st.preparation);
   std::set<std::string> names;
   for (dem::Section& d : root.list("densities", "the samples: name and friction during preparation")) {

@@ -157,7 +157,7 @@ TEST_CASE("the key reference lists every key with unit, range and default", "[co
   CHECK_THAT(ref, Catch::Matchers::Contains("numerics.time_step [s]; (0, 1]; required;"));
   CHECK_THAT(ref, Catch::Matchers::Contains("damping.form; one of: viscous, local; viscous;"));
   CHECK_THAT(ref, Catch::Matchers::Contains("stages[].type; one of: strain_rate, stress, stress_path, control; required;"));
-  // The stress-path defaults: p = 100 kPa and R = 1.24 (SPEC section 3).
+  // The stress-path defaults: p = 100 kPa and R = 1.24 (docs/method.md#stress-paths).
   CHECK_THAT(ref, Catch::Matchers::Contains("stages[].mean_stress [Pa]; (0, 1e+10]; 100000;"));
   CHECK_THAT(ref, Catch::Matchers::Contains("stages[].stress_ratio; [1, 100]; 1.24;"));
 }
