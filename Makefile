@@ -1,7 +1,9 @@
 # cyclic-triax: the two commands a user needs are `make all` and `make test`.
 BUILD    ?= build
 JOBS     ?= $(shell nproc 2>/dev/null || echo 2)
-PACKAGES := g++ cmake make libeigen3-dev libhdf5-dev libyaml-cpp-dev catch2 gnuplot-nox hdf5-tools libboost-math-dev libcli11-dev nlohmann-json3-dev
+# python3-h5py and python3-pandas: the README's Python lines and the clients' tests (tests/clients/),
+# with Debian's interpreter, /usr/bin/python3 (a python3 earlier on PATH, e.g. pyenv's, lacks them).
+PACKAGES := g++ cmake make libeigen3-dev libhdf5-dev libyaml-cpp-dev catch2 gnuplot-nox hdf5-tools libboost-math-dev libcli11-dev nlohmann-json3-dev python3-h5py python3-pandas
 SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 RESULTS  ?= results/study/paper

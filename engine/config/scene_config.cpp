@@ -484,12 +484,10 @@ static SceneConfig parse_scene(Section root, const std::string& file) {
     if (o.has("frames")) {
       Section f = o.child("frames", "particle frames for ParaView (RESULT.xdmf) every `interval` steps, off by default");
       c.output.frames_interval_steps = f.integer("interval", 1, 1000000000, std::nullopt,
-          "steps between frames: a multiple of output.interval (frames are written with time-series rows)");
+          "steps between frames, independent of output.interval (a frame is written at every step that is a "
+          "multiple of it, and at the start and the end of the run)");
       c.output.frames_contacts = f.boolean("contacts", false, "also the contact network of each frame (pairs, "
                                            "normal and tangential force, branch vector)");
-      if (c.output.frames_interval_steps % c.output.interval_steps != 0)
-        f.fail("interval", std::to_string(c.output.frames_interval_steps) + " is not a multiple of output.interval = " +
-                               std::to_string(c.output.interval_steps));
       f.finish();
     }
     o.finish();

@@ -56,6 +56,7 @@ struct StageCursor {
 
 struct StageHooks {
   std::function<void(const Simulation&, const RowContext&)> row;          // at output steps and stage/leg ends
+  std::function<void(const Simulation&)> frame;                           // every output.frames.interval steps (if set)
   std::function<void(const Simulation&, const StageProgress&)> progress;  // every few hundred steps
   std::function<void(const LegRecord&)> leg;                              // at each leg end of a stress path
   std::function<void(const std::string&)> warning;                        // e.g. inertial number above 1e-3

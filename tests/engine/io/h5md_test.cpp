@@ -165,6 +165,26 @@ TEST_CASE("a result holds H5MD particle frames at the start and end of the run, 
   }
 }
 
+TEST_CASE("frames come at their own interval, whatever output.interval is", "[io][h5md][frames]") {
+  // 500 steps, rows every 200 steps, frames every 150: frames at 0 (the start), 150, 300, 450 and
+  // 500 (the end); a frame interval that is no multiple of the row interval was refused before
+  // ("not a multiple of output.interval"), and the frames came only with rows. Rows are unchanged:
+  // 0, 200, 400, and the stage's end 500.
+  const std::string dir = test::scratch_dir("h5md_frame_interval");
+  const SceneConfig scene = scene_from_text(
+      test::tiny_scene(squeeze_stage, "{kn: 1.0e6, ks: 1.0e6, friction: 0.5}",
+                       "output: {interval: 200, frames: {interval: 150}}\n"),
+      dir + "/s.yaml");
+  run_scene(scene, dir + "/r.h5");
+  h5::Handle f = h5::open_file_read(dir + "/r.h5");
+  std::size_t cols = 0;
+  CHECK(h5::read<std::int64_t>(f, "particles/all/position/step", cols) == std::vector<std::int64_t>{0, 150, 300, 450, 500});
+  const std::vector<double> row_time = h5::read<double>(f, "timeseries/time", cols);
+  std::vector<long> row_steps;
+  for (double t : row_time) row_steps.push_back(std::lround(t / 1e-6));
+  CHECK(row_steps == std::vector<long>{0, 200, 400, 500});
+}
+
 TEST_CASE("a failed run leaves no XDMF, and its partial result holds only the frames it wrote", "[io][h5md]") {
   // The stress stage cannot finish in 10 us (see result_file_test.cpp): StageError.
   const std::string dir = test::scratch_dir("h5md_failed");
