@@ -482,7 +482,8 @@ static SceneConfig parse_scene(Section root, const std::string& file) {
     c.output.checkpoint_wall_time_s = o.number("checkpoint_wall_time", "s", {0, 1e7}, 600,
         "seconds of wall time between checkpoints (0: none by time)");
     if (o.has("frames")) {
-      Section f = o.child("frames", "particle frames for ParaView (RESULT.xdmf) every `interval` steps, off by default");
+      Section f = o.optional_child("frames", "particle frames for ParaView (RESULT.xdmf) every `interval` steps",
+                                   "optional (absent: frames at the start, each checkpoint and the end only)");
       c.output.frames_interval_steps = f.integer("interval", 1, 1000000000, std::nullopt,
           "steps between frames, independent of output.interval (a frame is written at every step that is a "
           "multiple of it, and at the start and the end of the run)");

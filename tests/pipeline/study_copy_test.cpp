@@ -24,11 +24,11 @@ const std::string paper = std::string(DEM_SOURCE_DIR) + "/pipeline/studies/paper
 std::map<std::string, int> cycles_per_test(const pipeline::Study& study, const pipeline::Profile& profile) {
   std::map<std::string, int> cycles;
   for (const pipeline::PlannedRun& r : pipeline::plan_study(study, profile, std::string(DEM_BINARY_DIR) + "/test_tmp/cycles", "engine-A")) {
-    if (r.name.rfind("seed1_loose_test", 0) != 0) continue;
+    if (r.name.rfind("seed1/loose_test", 0) != 0) continue;
     const dem::SceneConfig s = dem::scene_from_text(r.scene_text, r.scene_file);
     int n = 0;
     for (const dem::PathItem& item : s.stages[0].path) n += item.repeat;
-    cycles[r.name.substr(std::string("seed1_loose_").size())] = n;
+    cycles[r.name.substr(std::string("seed1/loose_").size())] = n;
   }
   return cycles;
 }

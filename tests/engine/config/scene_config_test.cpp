@@ -193,6 +193,9 @@ TEST_CASE("the key reference shows optional sections as optional, with their key
   CHECK_THAT(ref, Catch::Matchers::Contains("\n  servo.gain; (0, 1]; 0.001;"));
   CHECK_THAT(ref, Catch::Matchers::Contains("\n  output.interval; integer in [1, 1000000000]; 1000;"));
   CHECK_THAT(ref, Catch::Matchers::Contains("\n  output.flush_rows; integer in [1, 1000000]; 20;"));
+  // Frames are off unless asked for: their section is optional, its interval needed only with it.
+  CHECK_THAT(ref, Catch::Matchers::Contains("\n  output.frames; mapping; optional (absent: frames at the start, each checkpoint and the end only);"));
+  CHECK_THAT(ref, !Catch::Matchers::Contains("\n  output.frames; mapping; required;"));
   // The sections that must be given stay required.
   CHECK_THAT(ref, Catch::Matchers::Contains("\n  material; mapping; required;"));
   CHECK_THAT(ref, Catch::Matchers::Contains("\n  numerics; mapping; required;"));

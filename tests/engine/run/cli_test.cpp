@@ -127,6 +127,12 @@ TEST_CASE("dem run writes a complete result and dem table prints its columns", "
   CHECK(t.exit_code == 0);
   CHECK(t.out.rfind("# step [1]\tp [Pa]\n0\t", 0) == 0);  // a header with units, then the first row (step 0)
   CHECK(std::count(t.out.begin(), t.out.end(), '\n') == 1 + 6);  // rows at steps 0, 100, ..., 500
+  // summary: one line per result under a header with the same units as table's.
+  const auto sum = dem_stdout("summary '" + dir + "/r.h5'");
+  CHECK(sum.exit_code == 0);
+  CHECK(sum.out.rfind("# file\twall_time [s]\tstep [1]\ttime [s]\t", 0) == 0);
+  CHECK_THAT(sum.out, Catch::Matchers::Contains("\tp [Pa]\t"));
+  CHECK(std::count(sum.out.begin(), sum.out.end(), '\n') == 2);
   const auto bad_column = dem_stderr("table '" + dir + "/r.h5' pressure");
   CHECK(bad_column.exit_code == 2);
   CHECK_THAT(bad_column.out, Catch::Matchers::Contains("has no column 'pressure'"));
