@@ -21,6 +21,11 @@ def text(x):
     return x.decode() if isinstance(x, bytes) else str(x)
 
 
+def unit_of(dataset):
+    """A dataset's unit: `unit` (since 2026-11-27, as in the H5MD groups), or an older file's `units`."""
+    return dataset.attrs["unit"] if "unit" in dataset.attrs else dataset.attrs["units"]
+
+
 def main():
     dem, result, readme = sys.argv[1], sys.argv[2], sys.argv[3]
     csv = subprocess.run([dem, "table", result, "--csv"], capture_output=True, text=True, check=True).stdout
@@ -32,7 +37,7 @@ def main():
             m = re.fullmatch(r"(\S+) \[(\S+)\]", header)
             assert m, f"header {header!r} is not 'name [unit]'"
             name, unit = m.groups()
-            assert text(group[name].attrs["units"]) == unit, f"{name}: header unit {unit!r}, file {group[name].attrs['units']!r}"
+            assert text(unit_of(group[name])) == unit, f"{name}: header unit {unit!r}, file {unit_of(group[name])!r}"
             data = group[name][()]
             assert len(data) == len(frame), f"{name}: {len(data)} rows in the file, {len(frame)} in the CSV"
             assert (frame[header].to_numpy() == data).all(), f"{name}: pandas and h5py differ"
