@@ -3,14 +3,16 @@
 # project started from, or an issue of the tracker by its number. The method is docs/method.md; cite its sections
 # (docs/method.md#damping, ...) or say it in plain words.
 #   tests/docs/references_test.sh SOURCE_DIR
-# The pattern: the word "spec" in any case (not "spectral", "timespec" or "LatticeSpec"), and
-# "issue" or "issues" followed by a number (with or without "#"). Binary files (samples, figures) are not read.
-# Skipped (77) outside a git checkout (git grep needs the index).
+# The pattern: the specification's short name as a word, in any case (not inside "spectral",
+# "timespec" or "LatticeSpec"), and "issue" or "issues" followed by a number (with or without "#").
+# It is spelt in pieces so that this file does not match it itself. Binary files (samples, figures) are not read.
+# Tracked files and untracked ones not ignored are read. Skipped (77) outside a git checkout.
 set -u
 src=$1
 git -C "$src" rev-parse --git-dir > /dev/null 2>&1 || { echo "not a git checkout: $src"; exit 77; }
-pattern='(^|[^[:alpha:]])spec([^[:alnum:]_]|$)|issues? #?[0-9]'
-hits=$(git -C "$src" grep -n -I -i -E "$pattern" -- .)
+w=sp i=iss
+pattern="(^|[^[:alpha:]])${w}ec([^[:alnum:]_]|\$)|${i}ues? #?[0-9]"
+hits=$(git -C "$src" grep --untracked -n -I -i -E "$pattern" -- .)
 if [ -n "$hits" ]; then
   echo "FAIL: files cite the specification or an issue number; cite docs/method.md or use plain words:"
   echo "$hits"
