@@ -40,7 +40,7 @@ std::map<std::string, std::string> h5ls(const std::string& file) {
   return objects;
 }
 
-std::string unit_of(hid_t file, const std::string& dataset) {
+std::string h5md_unit_of(hid_t file, const std::string& dataset) {
   h5::Handle ds(H5Dopen2(file, dataset.c_str(), H5P_DEFAULT));
   REQUIRE(ds.id() >= 0);
   return h5::has_attribute(ds, "unit") ? h5::get_string_attribute(ds, "unit") : "<none>";
@@ -119,7 +119,7 @@ TEST_CASE("a result holds H5MD particle frames at the start and end of the run, 
         {"angular_velocity/value", "rad s-1"}, {"box/edges/value", "m"}, {"radius", "m"}, {"mass", "kg"}};
     for (const auto& [name, unit] : units) {
       INFO(name);
-      CHECK(unit_of(f, "/particles/all/" + name) == unit);
+      CHECK(h5md_unit_of(f, "/particles/all/" + name) == unit);
     }
   }
   SECTION("frames: steps 0 and 500, the first positions are L o s of the initial particles") {
