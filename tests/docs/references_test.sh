@@ -4,7 +4,8 @@
 # (docs/method.md#damping, ...) or say it in plain words.
 #   tests/docs/references_test.sh SOURCE_DIR
 # The pattern: the specification's short name as a word, in any case (not inside "spectral",
-# "timespec" or "LatticeSpec"), and "issue" or "issues" followed by a number (with or without "#").
+# the C library's time struct or a type name ending in it), and "issue" or "issues" followed by a
+# number (with or without "#").
 # It is spelt in pieces so that this file does not match it itself. Binary files (samples, figures) are not read.
 # Tracked files and untracked ones not ignored are read. Skipped (77) outside a git checkout.
 set -u
@@ -24,7 +25,7 @@ S=SP I=ssue
 for probe in "see ${S}EC section 3" "(${S}EC §7)" "the i$I 52 asks" "I$I 3:" "i${I}s 34, 35" "i$I #12"; do
   printf '%s\n' "$probe" | grep -q -i -E "$pattern" || { echo "FAIL: the pattern misses '$probe'"; exit 1; }
 done
-for word in "spectral" "timespec t{};" "LatticeSpec" "specific" "issued"; do
+for word in "spectral" "time${w}ec t{};" "Lattice${w^}ec" "specific" "issued"; do
   printf '%s\n' "$word" | grep -q -i -E "$pattern" && { echo "FAIL: the pattern flags '$word'"; exit 1; }
 done
 echo "no file cites the specification or an issue number"
