@@ -1,7 +1,10 @@
 # cyclic-triax: the two commands a user needs are `make all` and `make test`.
 BUILD    ?= build
 JOBS     ?= $(shell nproc 2>/dev/null || echo 2)
-PACKAGES := g++ cmake make libeigen3-dev libhdf5-dev libyaml-cpp-dev catch2 gnuplot-nox hdf5-tools libboost-math-dev libcli11-dev nlohmann-json3-dev cmark-gfm
+# python3-h5py and python3-pandas: the README's Python lines and the clients' tests (tests/clients/),
+# with Debian's interpreter, /usr/bin/python3 (a python3 earlier on PATH, e.g. pyenv's, lacks them);
+# cmark-gfm: reports/index.html from reports/index.md.
+PACKAGES := g++ cmake make libeigen3-dev libhdf5-dev libyaml-cpp-dev catch2 gnuplot-nox hdf5-tools libboost-math-dev libcli11-dev nlohmann-json3-dev python3-h5py python3-pandas cmark-gfm
 SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 RESULTS  ?= results/study/paper
@@ -93,7 +96,7 @@ test: build
 	$(BUILD)/bin/pipeline pipeline/studies/stability.yaml --profile quick --out $(BUILD)/smoke-stability -j $(JOBS)
 	$(BUILD)/bin/compare-runs stability $(BUILD)/smoke-stability $(BUILD)/smoke-stability/report
 
-# The long kill tests (issue 8): a run killed 20 times and a study killed 5 times at random
+# The long kill tests: a run killed 20 times and a study killed 5 times at random
 # moments, resumed from checkpoints and compared bit for bit with uninterrupted ones.
 KILLS ?= 20
 kill-test: build
@@ -154,8 +157,8 @@ bench: build
 	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends lammps; }
 	reports/bench/run_bench.sh $(BUILD) reports
 
-# The studies through the pipeline, reusing finished results: the paper's (issue 5: every density
-# x test), error against run time, the stability matrix (issue 7) and CELL_STUDIES, in one call so
+# The studies through the pipeline, reusing finished results: the paper's (every density
+# x test), error against run time, the stability matrix and CELL_STUDIES, in one call so
 # that they share the cores (one study's runs fill them while another's last runs finish).
 study: tools
 	$(BUILD)/bin/pipeline pipeline/studies/paper.yaml pipeline/studies/convergence.yaml \
@@ -233,7 +236,7 @@ report-sections: tools
 	  --previous $(BUILD)/previous_index.md $(REPORT_SOURCE)
 	reports/render_html.sh reports/index.md reports/index.html
 
-# The paper's open choices (SPEC section 7): each reading one at a time from the baseline, 3
+# The paper's open choices (docs/method.md#open-choices): each reading one at a time from the baseline, 3
 # samples of 1,000 spheres (pipeline/studies/decisions.yaml), then the report's section on them.
 decisions: tools
 	$(BUILD)/bin/pipeline pipeline/studies/decisions.yaml --profile paper -j $(JOBS) $(if $(strip $(EXECUTOR)),--executor $(strip $(EXECUTOR)))

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "config/study_config.hpp"
+#include "config/study_copy.hpp"
 #include "config/yaml_section.hpp"
 #include "exec/scheduler.hpp"
 #include "exec/slurm.hpp"
@@ -24,7 +25,39 @@ const char* footer =
     "A run whose result is complete with the same input hash (resolved scene, engine version and the\n"
     "sample it starts from) is reused, so an interrupted study continues where it stopped. Several\n"
     "study files share the -j slots: one study's runs fill the cores while another's last runs finish.\n"
-    "Paths on the command line are relative to the current folder; paths in a study file to that file.";
+    "Paths on the command line are relative to the current folder; paths in a study file to that file.\n"
+    "pipeline new MY.yaml --from paper: a study of your own, copied from a shipped one (pipeline new --help).";
+
+// `pipeline new OUT.yaml --from STUDY [--force]`: a copy of a shipped study (or of any study file)
+// whose paths resolve from OUT's folder, named after OUT's stem (config/study_copy.hpp).
+int new_study(int argc, char** argv) {
+  namespace fs = std::filesystem;
+  std::string to, from;
+  bool force = false;
+  CLI::App app{"pipeline new: writes a study of your own, a copy of a shipped study (or of any study file) whose paths "
+               "resolve from the new file's folder, named after the new file, with its results in results/NAME beside it"};
+  app.add_option("study", to, "the new study file (.yaml)")->required();
+  app.add_option("--from", from, "a shipped study's name (paper, decisions, ...) or a study file")->required();
+  app.add_flag("--force", force, "replace an existing file");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int rc = app.exit(e);
+    return rc == 0 ? 0 : 2;
+  }
+  const fs::path bin = fs::canonical("/proc/self/exe").parent_path();
+  try {
+    const std::string source = pipeline::find_study(
+        from, {(bin / "../share/cyclic-triax/pipeline/studies").lexically_normal().string(), PIPELINE_SOURCE_STUDIES});
+    pipeline::write_study_copy(source, to, force);
+    std::printf("%s: a copy of %s (name %s); try: pipeline %s --plan\n", to.c_str(), source.c_str(),
+                fs::path(to).stem().string().c_str(), to.c_str());
+    return 0;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 2;
+  }
+}
 
 // The executor the study files name (pipeline --executor wins): local if none does; files that
 // name different ones are refused, since one call runs all their runs together.
@@ -87,6 +120,7 @@ void print_plan(const std::vector<pipeline::PlannedRun>& runs, double throughput
 
 int main(int argc, char** argv) {
   namespace fs = std::filesystem;
+  if (argc > 1 && std::string(argv[1]) == "new") return new_study(argc - 1, argv + 1);
   std::vector<std::string> study_files;
   std::string profile, out, dem;  // profile "": each study's paper profile if it declares one, else its first
   const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));

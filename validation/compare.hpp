@@ -1,5 +1,5 @@
 #pragma once
-// Comparing the runs of a study of variants (issue 7): errors of each variant against a reference
+// Comparing the runs of a study of variants: errors of each variant against a reference
 // run with their cost (convergence study), and what became of each case (stability study).
 #include <cstdint>
 #include <map>

@@ -1,5 +1,5 @@
 #pragma once
-// What the paper's open choices change (SPEC section 7): every validation row evaluated on the
+// What the paper's open choices change (docs/method.md#open-choices): every validation row evaluated on the
 // ensemble of each reading, the shift of its mean from the baseline's in units of the baseline's
 // standard deviation, and which readings, if any, make a row consistent with the paper.
 #include <map>

@@ -132,6 +132,13 @@ const char* mark(Verdict v) {
   return v == Verdict::Consistent ? "✅ consistent" : v == Verdict::Inconsistent ? "❌ inconsistent" : "— not judged";
 }
 
+// The verdict with the row's warnings after it: "✅ consistent ⚠ samples too few to judge: ...".
+std::string verdict_cell(const validation::RowResult& e) {
+  std::string cell = mark(e.verdict);
+  for (const std::string& w : e.warnings) cell += " ⚠ " + w;
+  return cell;
+}
+
 // A row, judged: which runs it read and what they gave.
 struct Judged {
   validation::Row row;
@@ -158,6 +165,7 @@ nlohmann::ordered_json json_row(const Judged& j) {
   row["must_pass"] = r.must_pass;
   row["source"] = r.source;
   row["reason"] = r.reason;
+  if (!e.warnings.empty()) row["warnings"] = e.warnings;  // rows.hpp: a verdict that cannot mean much
   return row;
 }
 
@@ -171,7 +179,7 @@ std::vector<std::string> markdown_cells(const Judged& j) {
     values += (k ? ", " : "") + (e.valued > 1 && v ? validation::to_scatter(*v, e.spread.sd) : number_or_dash(v));
   }
   return {r.name, statement(r), values, mean_sd_n(e), interval(e), holds_in(e), r.rule == "majority" ? "holds in > half" : r.rule == "every" ? "holds in every" : "interval",
-          mark(e.verdict), r.must_pass ? "yes" : "no", r.source, r.reason};
+          verdict_cell(e), r.must_pass ? "yes" : "no", r.source, r.reason};
 }
 
 std::vector<std::string> validation_headings(const std::string& label) {
@@ -199,6 +207,9 @@ std::string verdicts_text(const std::vector<Judged>& judged, const Counts& c, st
     return broken;
   };
   validation::MarkdownTable misses(headings);
+  validation::MarkdownTable warned({"row", "verdict", "warning"});
+  for (const Judged& j : judged)
+    for (const std::string& w : j.result.warnings) warned.row({j.row.name, mark(j.result.verdict), w});
   for (const Judged& j : judged) {
     if (j.result.verdict == Verdict::Consistent) continue;
     std::vector<std::string> cells = {j.row.name, mark(j.result.verdict), statement(j.row), interval(j.result), holds_in(j.result)};
@@ -233,6 +244,9 @@ std::string verdicts_text(const std::vector<Judged>& judged, const Counts& c, st
            "applied to this ensemble's samples, turns inconsistent):\n\n" << misses.text();
   else if (misses.rows())
     out << "\nThe rows that are not consistent:\n\n" << misses.text();
+  if (warned.rows())
+    out << "\nVerdicts that cannot mean much (a quantity that does not fit the runs it read, or an interval of one sample "
+           "wider than " << validation::number(validation::too_few_width) << " times the row's tolerance):\n\n" << warned.text();
   return out.str();
 }
 
@@ -335,6 +349,8 @@ int main(int argc, char** argv) {
   std::printf("validation of %zu sample%s: %d consistent, %d inconsistent, %d not judged of %zu rows; %d must-pass rows inconsistent; %zu result files missing, %zu samples missing -> %s\n",
               n_samples, n_samples == 1 ? "" : "s", consistent, inconsistent, not_judged, judged.size(), count.must_pass_failed,
               missing.size(), missing_samples.size(), (fs::path(o.out) / "validation.json").c_str());
+  for (const Judged& j : judged)  // warnings change no exit status: the verdict stands, and says it
+    for (const std::string& w : j.result.warnings) std::fprintf(stderr, "warning: %s: %s\n", j.row.name.c_str(), w.c_str());
   int status = 0;
   if (!missing_samples.empty()) {
     std::string names;

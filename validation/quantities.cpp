@@ -111,6 +111,7 @@ using Fn = std::function<Measured(const QuantityRequest&, const DensityResults&)
 struct Quantity {
   Reads reads;
   Fn fn;
+  bool monotonic = false;  // meant for a monotonic shear: a cyclic test does not fit it
 };
 
 constexpr Reads preparation = Reads::Preparation, tests = Reads::Tests;
@@ -197,7 +198,7 @@ const std::map<std::string, Quantity>& registry() {
             if (s.rows == 0) return std::nullopt;
             return s.peak_phi_deg;
           }, "no test has shearing rows");
-        }}},
+        }, true}},
       // The largest sigma_1 / sigma_3 of the shear, unsmoothed (a crystal's peak comes at ~1e-3 strain,
       // well inside the peak angle's 1 % smoothing window): Thornton's FCC strength.
       {"peak_principal_stress_ratio",
@@ -206,21 +207,21 @@ const std::map<std::string, Quantity>& registry() {
             if (s.rows == 0 || s.peak_ratio_raw == 0) return std::nullopt;
             return s.peak_ratio_raw;
           }, "no test has shearing rows");
-        }}},
+        }, true}},
       {"critical_state_friction_angle",
        {tests, [](const QuantityRequest&, const DensityResults& r) {
           return mean_over_shears(r, [](const ShearSummary& s) -> std::optional<double> {
             if (s.cs_rows == 0) return std::nullopt;
             return s.phi_deg.mean;
           }, "no test reaches 30 % axial strain");
-        }}},
+        }, true}},
       {"critical_state_void_ratio",
        {tests, [](const QuantityRequest&, const DensityResults& r) {
           return mean_over_shears(r, [](const ShearSummary& s) -> std::optional<double> {
             if (s.cs_rows == 0) return std::nullopt;
             return s.void_ratio.mean;
           }, "no test reaches 30 % axial strain");
-        }}},
+        }, true}},
   };
   return fns;
 }
@@ -256,12 +257,32 @@ std::vector<std::string> known_quantities() {
   return out;
 }
 
+namespace {
+
+// The cyclic tests among `r`'s, "test1 (10 cycles), ...": a test whose time series counts a cycle.
+std::string cyclic_tests(const DensityResults& r) {
+  std::string out;
+  for (const TestResult& t : r.tests) {
+    const auto c = t.series.find("cycle");
+    if (c == t.series.end() || c->second.empty()) continue;
+    const double cycles = *std::max_element(c->second.begin(), c->second.end());
+    if (cycles >= 1) out += (out.empty() ? "" : ", ") + t.name + " (" + number(cycles) + " cycle" + (cycles == 1 ? "" : "s") + ")";
+  }
+  return out;
+}
+
+}  // namespace
+
 Measured compute(const QuantityRequest& q, const DensityResults& r) {
   try {
     const Quantity& quantity = registry().at(base_name(q.quantity));
     const bool one_test = quantity.reads == Reads::Tests && !q.test.empty();
-    Measured m = quantity.fn(q, one_test ? only_test(r, q.test) : r);
+    const DensityResults& read = one_test ? only_test(r, q.test) : r;
+    Measured m = quantity.fn(q, read);
     if (m.value && base_name(q.quantity) != q.quantity) m.value = std::abs(*m.value);
+    if (quantity.monotonic)
+      if (const std::string cyclic = cyclic_tests(read); !cyclic.empty())
+        m.misfit = q.quantity + " is meant for a monotonic shear; it read cyclic tests: " + cyclic;
     return m;
   } catch (const std::out_of_range&) {
     return {std::nullopt, "a column this quantity needs is missing from the results"};

@@ -24,6 +24,9 @@ struct QuantityRequest {
 struct Measured {
   std::optional<double> value;  // empty: could not be computed (see note)
   std::string note;             // fit quality, tests used, or why it is missing
+  // Not empty when the quantity does not fit the runs it read (a peak friction angle, meant for a
+  // monotonic shear, of a cyclic test): the value is computed all the same, the verdict warns.
+  std::string misfit;
 };
 
 Measured compute(const QuantityRequest& q, const DensityResults& r);

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <map>
+#include <sstream>
 
 #include "config/yaml_section.hpp"
+#include "format.hpp"
 
 namespace validation {
 
@@ -83,6 +85,30 @@ std::string naming_row(std::string message, const dem::Section& s, const std::st
   return message;
 }
 
+std::string three_digits(double x) {
+  std::ostringstream s;
+  s.precision(3);
+  s << x;
+  return s.str();
+}
+
+// judge_values' warnings: each distinct misfit of the samples' values, and an interval too wide
+// for the tolerance (rule interval, check within, a tolerance above 0).
+std::vector<std::string> warnings_of(const Row& row, const RowResult& r) {
+  std::vector<std::string> out;
+  for (const RowResult::PerSample& ps : r.samples)
+    if (!ps.measured.misfit.empty() && std::find(out.begin(), out.end(), ps.measured.misfit) == out.end())
+      out.push_back(ps.measured.misfit);
+  if (row.rule == "interval" && row.check == "within" && row.tolerance > 0 && r.spread.low && r.spread.high) {
+    const double width = *r.spread.high - *r.spread.low;
+    if (width > too_few_width * row.tolerance)
+      out.push_back("samples too few to judge: the interval of one sample (" + three_digits(width) + " wide, " +
+                    std::to_string(r.valued) + " samples) is " + three_digits(width / row.tolerance) +
+                    " times the tolerance " + number(row.tolerance) + " (more than " + number(too_few_width) + ")");
+  }
+  return out;
+}
+
 }  // namespace
 
 References read_references(const std::string& file, const std::string& profile) {
@@ -138,6 +164,7 @@ RowResult judge_values(const Row& row, std::vector<RowResult::PerSample> samples
     out.verdict = out.valued < 1 ? Verdict::NotJudged : out.holds == out.valued ? Verdict::Consistent : Verdict::Inconsistent;
   else
     out.verdict = judge(out.spread, out.paper);
+  out.warnings = warnings_of(row, out);
   return out;
 }
 

@@ -57,7 +57,15 @@ struct RowResult {
   Verdict verdict = Verdict::NotJudged;
   int holds = 0;              // samples whose own value lies in the paper's region
   int valued = 0;             // samples with a value
+  // Why the verdict cannot mean much (judge_values): the quantity does not fit the runs it read,
+  // or the samples are too few for the row's tolerance. The verdict stands; the tables say it.
+  std::vector<std::string> warnings;
 };
+
+// A row of rule interval whose 95 % interval of one sample is wider than this many times its
+// tolerance is judged, but warned about: the paper's value then lies in it almost whatever it is
+// (2 samples: t(0.975, 1) = 12.7 makes it the mean ± 15.6 sd).
+constexpr double too_few_width = 4;
 
 // The spread, the samples that hold and the verdict of a row's per-sample values.
 RowResult judge_values(const Row& row, std::vector<RowResult::PerSample> samples);

@@ -88,7 +88,7 @@ std::map<std::string, std::string> run_settings(const std::string& results, cons
           },
           prep->material.law);
       if (prep->particles.kind == dem::ParticleSource::Kind::Lattice) {
-        const dem::LatticeSpec& l = prep->particles.lattice;
+        const dem::LatticeLayout& l = prep->particles.lattice;
         kv["lattice"] = std::to_string(l.n[0]) + "×" + std::to_string(l.n[1]) + "×" + std::to_string(l.n[2]);
         kv["particles"] = std::to_string(static_cast<long long>(l.n[0]) * l.n[1] * l.n[2]);
         kv["lattice_spacing_mm"] = num(1e3 * l.spacing_m);

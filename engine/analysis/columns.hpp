@@ -18,7 +18,7 @@ struct SeriesColumn {
 // One entry of a table: the column and its value, a pure function of `In` (what a row is computed
 // from). A captureless lambda converts to `value`.
 template <class In>
-struct ColumnSpec {
+struct ColumnDef {
   const char* name;
   const char* units;
   const char* doc;  // "" for a component documented by the entry before it (stress_22 after stress_11)
@@ -26,16 +26,16 @@ struct ColumnSpec {
 };
 
 template <class In, std::size_t N>
-std::vector<SeriesColumn> describe(const ColumnSpec<In> (&table)[N]) {
+std::vector<SeriesColumn> describe(const ColumnDef<In> (&table)[N]) {
   std::vector<SeriesColumn> columns;
   columns.reserve(N);
-  for (const ColumnSpec<In>& c : table) columns.push_back({c.name, c.units, c.doc});
+  for (const ColumnDef<In>& c : table) columns.push_back({c.name, c.units, c.doc});
   return columns;
 }
 
 // One row: every column's value from `in`, in the table's order.
 template <class In, std::size_t N>
-std::vector<double> measure(const ColumnSpec<In> (&table)[N], const In& in) {
+std::vector<double> measure(const ColumnDef<In> (&table)[N], const In& in) {
   std::vector<double> row(N);
   for (std::size_t c = 0; c < N; ++c) row[c] = table[c].value(in);
   return row;

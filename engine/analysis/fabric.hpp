@@ -1,5 +1,5 @@
 #pragma once
-// Contact fabric (SPEC section 4; paper Eqs. 8-10) and the invariants used for stresses too.
+// Contact fabric (docs/method.md#measures; paper Eqs. 8-10) and the invariants used for stresses too.
 #include <span>
 
 #include "core/types.hpp"

@@ -7,7 +7,7 @@ namespace {
 using In = const LegRecord&;
 
 // The columns of /legs, in the file's order: one entry per column.
-const ColumnSpec<LegRecord> columns[] = {
+const ColumnDef<LegRecord> columns[] = {
     {"stage", "1", "stage index", [](In r) { return static_cast<double>(r.stage); }},
     {"leg", "1", "leg index from 0", [](In r) { return static_cast<double>(r.leg); }},
     {"cycle", "1", "cycle of the leg (0 before the first cycle)", [](In r) { return static_cast<double>(r.cycle); }},

@@ -44,7 +44,7 @@ double anisotropy(const Mat3& t) { return mean_invariant(t) > 0 ? deviator_invar
 
 // The columns of /timeseries, in the file's order. A new column is one entry here (and a test of
 // its value in tests/engine/analysis/).
-const ColumnSpec<RowInputs> columns[] = {
+const ColumnDef<RowInputs> columns[] = {
     {"step", "1", "time step index", [](In r) { return static_cast<double>(r.sim.step_count()); }},
     {"time", "s", "simulated time", [](In r) { return r.sim.time(); }},
     {"stage", "1", "stage index (0-based, order of the scene)", [](In r) { return static_cast<double>(r.where.stage); }},

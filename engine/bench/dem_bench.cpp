@@ -1,6 +1,6 @@
 // dem-bench: particle-steps per second of the step loop on the engine's own jammed packings.
 //
-// 1. Builds (once, cached in BENCH_DIR) two 8,000-sphere periodic packings, the SPEC lattice
+// 1. Builds (once, cached in BENCH_DIR) two 8,000-sphere periodic packings, the paper's lattice
 //    compressed isotropically to 100 kPa by the engine itself: one with mu = 0.5 and one with
 //    mu = 0 (a frictionless packing unjams at the mu = 0.5 packing's volume, so each friction is
 //    timed on a packing jammed with it; the mu = 0 one has more contacts).

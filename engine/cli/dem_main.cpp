@@ -198,6 +198,9 @@ std::string unit_of(const std::string& name, bool legs) {
   return "";
 }
 
+// "name [unit]", or the name alone for a column without a unit: the headers of table and summary.
+std::string with_unit(const std::string& name, const std::string& unit) { return unit.empty() ? name : name + " [" + unit + "]"; }
+
 struct TableArgs {
   std::string file;
   std::vector<std::string> columns;
@@ -223,8 +226,7 @@ int table(const TableArgs& args) {
     const char* sep = args.csv ? "," : "\t";
     std::printf("%s", args.csv ? "" : "# ");
     for (std::size_t c = 0; c < names.size(); ++c) {
-      const std::string unit = unit_of(names[c], args.legs);
-      std::printf("%s%s%s", c ? sep : "", names[c].c_str(), unit.empty() ? "" : (" [" + unit + "]").c_str());
+      std::printf("%s%s", c ? sep : "", with_unit(names[c], unit_of(names[c], args.legs)).c_str());
     }
     std::printf("\n");
     const char* number = args.csv ? "%.17g" : "%.10g";
@@ -259,10 +261,11 @@ int state(const std::string& file) {
   }
 }
 
-// One tab-separated line per complete result: file, wall time, then the last time-series row.
+// One tab-separated line per complete result: file, wall time, then the last time-series row;
+// the header names each column with its unit, as table's does.
 int summary(const std::vector<std::string>& files) {
-  std::printf("# file\twall_time_s");
-  for (const auto& c : dem::series_columns()) std::printf("\t%s", c.name.c_str());
+  std::printf("# file\twall_time [s]");
+  for (const auto& c : dem::series_columns()) std::printf("\t%s", with_unit(c.name, c.units).c_str());
   std::printf("\n");
   int status = 0;
   for (const std::string& file : files) {

@@ -15,7 +15,7 @@ namespace dem {
 struct ParticleSource {
   enum class Kind { Lattice, Csv, State };
   Kind kind = Kind::Lattice;
-  LatticeSpec lattice;
+  LatticeLayout lattice;
   std::vector<double> grading_diameters_m, grading_percent_finer;
   GradingCurve::Basis grading_basis = GradingCurve::Basis::Mass;
   std::string path;           // CSV file (x,y,z,radius per row) or saved state (HDF5), resolved against the scene folder

@@ -414,8 +414,8 @@ YAML::Node Section::raw(const std::string& key, const std::string& allowed, cons
   return n;
 }
 
-Section Section::optional_child(const std::string& key, const std::string& doc) {
-  declare(key, "", "mapping", "optional (every key at its default)", doc);
+Section Section::optional_child(const std::string& key, const std::string& doc, const std::string& absent) {
+  declare(key, "", "mapping", absent, doc);
   const YAML::Node n = get(key);
   return sub(n ? n : YAML::Node(YAML::NodeType::Map), key_path(key));
 }

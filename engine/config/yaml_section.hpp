@@ -76,7 +76,9 @@ class Section {
                               std::size_t max_count, const std::string& doc);
   Section child(const std::string& key, const std::string& doc);
   // A mapping that may be left out: then every key in it takes its default.
-  Section optional_child(const std::string& key, const std::string& doc);
+  // `absent` is what `dem keys` says of the mapping when it is left out.
+  Section optional_child(const std::string& key, const std::string& doc,
+                         const std::string& absent = "optional (every key at its default)");
   // The node of a required key whose structure the caller checks itself (e.g. a stress path).
   YAML::Node raw(const std::string& key, const std::string& allowed, const std::string& doc);
   std::vector<Section> list(const std::string& key, const std::string& doc);

@@ -1,6 +1,6 @@
 #pragma once
 // Contact dashpots: a viscous force in each contact, a fraction zeta of the critical damping of the
-// two-body oscillator the contact makes (Cundall & Strack 1979's contact damping; SPEC section 7's
+// two-body oscillator the contact makes (Cundall & Strack 1979's contact damping; docs/method.md#open-choices's
 // alternative to body damping):
 //   normal:     f_n = f_e(overlap) + c_n d(overlap)/dt,   c_n = 2 zeta sqrt(m* k_n),
 //   tangential: f_t = f_spring - c_t v_t while the contact sticks, 0 while it slides (the shear

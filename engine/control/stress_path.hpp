@@ -1,5 +1,5 @@
 #pragma once
-// Cyclic stress paths at constant mean stress (SPEC section 3): named states, and the expansion
+// Cyclic stress paths at constant mean stress (docs/method.md#stress-paths): named states, and the expansion
 // of a path (states, explicit triplets, repeat blocks) into straight legs with cycle numbers.
 #include <string>
 #include <variant>
@@ -9,7 +9,7 @@
 
 namespace dem {
 
-// The named states of SPEC section 3 at mean stress p and ratio R = sigma_max/sigma_min:
+// The named states of docs/method.md#stress-paths at mean stress p and ratio R = sigma_max/sigma_min:
 // A (isotropic), TC1..3 (axis i major: 3pR/(R+2), others 3p/(R+2)), TE1..3 (axis i minor:
 // 3p/(2R+1), others 3pR/(2R+1)). Throws std::invalid_argument for an unknown name.
 Vec3 named_state(const std::string& name, double p_Pa, double R);

@@ -35,7 +35,7 @@ struct Material {
   AnyContactLaw law = linear_law(1e6, 1e6, 0.5);  // the kernel is compiled for the law chosen
 };
 
-// SPEC section 5. Viscous: body force -c v on the fluctuating velocity with c = 2 C_t sqrt(kn m),
+// docs/method.md#damping. Viscous: body force -c v on the fluctuating velocity with c = 2 C_t sqrt(kn m),
 // torque -c_r omega with c_r = 2 C_r sqrt(kn r^2 I) (the rotational analogue), kn the law's
 // damping stiffness (a law without one, Hertz's, needs local damping). Local: Cundall's
 // non-viscous damping, each force component reduced by alpha |F_k| opposing the velocity.

@@ -51,23 +51,23 @@ double GradingCurve::mass_fraction_finer(double diameter_m) const {
   return (P_[k] + t * (P_[k + 1] - P_[k])) / 100.0;
 }
 
-void make_lattice(const LatticeSpec& spec, const GradingCurve& grading, double density_kg_per_m3, Particles& particles,
+void make_lattice(const LatticeLayout& layout, const GradingCurve& grading, double density_kg_per_m3, Particles& particles,
                   PeriodicCell& cell) {
-  if (grading.diameters().back() > spec.spacing_m) {
+  if (grading.diameters().back() > layout.spacing_m) {
     std::ostringstream msg;
-    msg << "lattice spacing " << spec.spacing_m << " m is smaller than the largest diameter "
+    msg << "lattice spacing " << layout.spacing_m << " m is smaller than the largest diameter "
         << grading.diameters().back() << " m: spheres would overlap";
     throw std::invalid_argument(msg.str());
   }
-  std::mt19937_64 rng(spec.seed);
+  std::mt19937_64 rng(layout.seed);
   particles = Particles{};
-  for (int a = 0; a < spec.n[0]; ++a)
-    for (int b = 0; b < spec.n[1]; ++b)
-      for (int c = 0; c < spec.n[2]; ++c) {
-        const Vec3 s((a + 0.5) / spec.n[0], (b + 0.5) / spec.n[1], (c + 0.5) / spec.n[2]);
+  for (int a = 0; a < layout.n[0]; ++a)
+    for (int b = 0; b < layout.n[1]; ++b)
+      for (int c = 0; c < layout.n[2]; ++c) {
+        const Vec3 s((a + 0.5) / layout.n[0], (b + 0.5) / layout.n[1], (c + 0.5) / layout.n[2]);
         particles.add(s, 0.5 * grading.sample(rng), density_kg_per_m3);
       }
-  cell = PeriodicCell(Vec3(spec.n[0], spec.n[1], spec.n[2]) * spec.spacing_m);
+  cell = PeriodicCell(Vec3(layout.n[0], layout.n[1], layout.n[2]) * layout.spacing_m);
 }
 
 }  // namespace dem

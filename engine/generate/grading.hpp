@@ -1,5 +1,5 @@
 #pragma once
-// Particle generation: a grading curve sampled by mass, and the cubic lattice of SPEC section 1.
+// Particle generation: a grading curve sampled by mass, and the cubic lattice of docs/method.md#system.
 #include <cstdint>
 #include <random>
 #include <vector>
@@ -34,7 +34,7 @@ class GradingCurve {
 // Uniform double in [0, 1) from 53 random bits (identical on every platform, unlike std::uniform_real_distribution).
 double uniform01(std::mt19937_64& rng);
 
-struct LatticeSpec {
+struct LatticeLayout {
   int n[3] = {20, 20, 20};  // lattice points per axis
   double spacing_m = 5e-3;  // centre-to-centre distance; the cell side is n * spacing
   std::uint64_t seed = 1;
@@ -42,7 +42,7 @@ struct LatticeSpec {
 
 // Spheres on a simple cubic lattice (one per site, site at the centre of its lattice cube),
 // diameters from the grading curve. Throws if a sampled diameter exceeds the spacing (overlap).
-void make_lattice(const LatticeSpec& spec, const GradingCurve& grading, double density_kg_per_m3, Particles& particles,
+void make_lattice(const LatticeLayout& layout, const GradingCurve& grading, double density_kg_per_m3, Particles& particles,
                   PeriodicCell& cell);
 
 }  // namespace dem

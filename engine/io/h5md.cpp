@@ -37,9 +37,9 @@ H5mdWriter::H5mdWriter(hid_t file, const Simulation& sim) : file_(file) {
   h5::Handle position = h5::create_group(all, "position");
   step_ = h5::FrameSeries<std::int64_t>(position, "step", {});
   time_ = h5::FrameSeries<double>(position, "time", {});
-  h5::set_attribute(time_.id(), "unit", std::string("s"));
+  h5::set_attribute(time_.id(), h5::unit_attribute, std::string("s"));
   position_ = h5::FrameSeries<double>(position, "value", {n, 3});
-  h5::set_attribute(position_.id(), "unit", std::string("m"));
+  h5::set_attribute(position_.id(), h5::unit_attribute, std::string("m"));
 
   // Every other time-dependent element shares position's step and time (hard links).
   auto element = [&](hid_t parent, const std::string& name) {
@@ -50,24 +50,24 @@ H5mdWriter::H5mdWriter(hid_t file, const Simulation& sim) : file_(file) {
   };
   h5::Handle velocity = element(all, "velocity");
   velocity_ = h5::FrameSeries<double>(velocity, "value", {n, 3});
-  h5::set_attribute(velocity_.id(), "unit", std::string("m s-1"));
+  h5::set_attribute(velocity_.id(), h5::unit_attribute, std::string("m s-1"));
   // The engine integrates v relative to the cell's affine deformation (engine/README.md, Model);
   // the total velocity, v - strain_rate o x, depends on where the origin sits, so v is stored.
   h5::set_attribute(velocity_.id(), "doc", std::string("fluctuating velocity: total velocity minus the affine "
                                                        "velocity of the deforming cell"));
   h5::Handle angular_velocity = element(all, "angular_velocity");
   angular_velocity_ = h5::FrameSeries<double>(angular_velocity, "value", {n, 3});
-  h5::set_attribute(angular_velocity_.id(), "unit", std::string("rad s-1"));
+  h5::set_attribute(angular_velocity_.id(), h5::unit_attribute, std::string("rad s-1"));
 
   h5::Handle box = h5::create_group(all, "box");
   h5::set_attribute(box, "dimension", std::int64_t{3});
   h5::set_attribute(box, "boundary", std::vector<std::string>{"periodic", "periodic", "periodic"});
   h5::Handle edges = element(box, "edges");
   edges_ = h5::FrameSeries<double>(edges, "value", {3});
-  h5::set_attribute(edges_.id(), "unit", std::string("m"));
+  h5::set_attribute(edges_.id(), h5::unit_attribute, std::string("m"));
 
-  h5::write(all, "radius", p.radius, 1, "m", "unit");
-  h5::write(all, "mass", p.mass, 1, "kg", "unit");
+  h5::write(all, "radius", p.radius, 1, "m");
+  h5::write(all, "mass", p.mass, 1, "kg");
 }
 
 H5mdWriter::H5mdWriter(hid_t file) : file_(file) {
@@ -102,7 +102,7 @@ H5mdWriter::H5mdWriter(hid_t file) : file_(file) {
 void H5mdWriter::create_views(hid_t file, bool contacts) {
   h5::Handle frames = h5::create_group(file, "frames");
   corners_ = h5::FrameSeries<double>(frames, "cell_corners", {8, 3}, 64);
-  h5::set_attribute(corners_.id(), "units", std::string("m"));
+  h5::set_attribute(corners_.id(), h5::unit_attribute, std::string("m"));
   views_ = true;
   if (!contacts) return;
   contacts_ = true;
@@ -111,13 +111,13 @@ void H5mdWriter::create_views(hid_t file, bool contacts) {
   contact_count_ = h5::FrameSeries<std::int64_t>(c, "count", {});
   pairs_ = h5::FrameSeries<std::int64_t>(c, "pairs", {2}, rows);
   normal_force_ = h5::FrameSeries<double>(c, "normal_force", {}, rows);
-  h5::set_attribute(normal_force_.id(), "units", std::string("N"));
+  h5::set_attribute(normal_force_.id(), h5::unit_attribute, std::string("N"));
   tangential_force_ = h5::FrameSeries<double>(c, "tangential_force", {}, rows);
-  h5::set_attribute(tangential_force_.id(), "units", std::string("N"));
+  h5::set_attribute(tangential_force_.id(), h5::unit_attribute, std::string("N"));
   branch_ = h5::FrameSeries<double>(c, "branch", {3}, rows);
-  h5::set_attribute(branch_.id(), "units", std::string("m"));
+  h5::set_attribute(branch_.id(), h5::unit_attribute, std::string("m"));
   ends_ = h5::FrameSeries<double>(c, "ends", {2, 3}, rows);
-  h5::set_attribute(ends_.id(), "units", std::string("m"));
+  h5::set_attribute(ends_.id(), h5::unit_attribute, std::string("m"));
 }
 
 void H5mdWriter::append_contacts(const Simulation& sim) {

@@ -210,15 +210,21 @@ static T get_numeric_attribute(hid_t obj, const std::string& name) {
 double get_double_attribute(hid_t obj, const std::string& name) { return get_numeric_attribute<double>(obj, name); }
 std::int64_t get_int_attribute(hid_t obj, const std::string& name) { return get_numeric_attribute<std::int64_t>(obj, name); }
 
+std::string unit_of(hid_t parent, const std::string& name) {
+  Handle ds(checked(H5Dopen2(parent, name.c_str(), H5P_DEFAULT), "opening dataset " + name));
+  for (const std::string& key : {unit_attribute, std::string("units")})
+    if (has_attribute(ds, key)) return get_string_attribute(ds, key);
+  return "";
+}
+
 template <class T>
-void write(hid_t parent, const std::string& name, const std::vector<T>& data, std::size_t cols, const std::string& units,
-           const std::string& unit_key) {
+void write(hid_t parent, const std::string& name, const std::vector<T>& data, std::size_t cols, const std::string& units) {
   const hsize_t dims[2] = {cols ? data.size() / cols : 0, cols};
   Handle space(H5Screate_simple(cols == 1 ? 1 : 2, dims, nullptr));
   Handle ds(checked(H5Dcreate2(parent, name.c_str(), native_type<T>(), space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
                     "creating dataset " + name));
   if (!data.empty()) check(H5Dwrite(ds, native_type<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), "writing " + name);
-  set_attribute(ds, unit_key, units);
+  set_attribute(ds, unit_attribute, units);
 }
 
 template <class T>
@@ -236,10 +242,10 @@ std::vector<T> read(hid_t parent, const std::string& name, std::size_t& cols) {
   return out;
 }
 
-template void write(hid_t, const std::string&, const std::vector<double>&, std::size_t, const std::string&, const std::string&);
-template void write(hid_t, const std::string&, const std::vector<std::uint32_t>&, std::size_t, const std::string&, const std::string&);
-template void write(hid_t, const std::string&, const std::vector<std::uint8_t>&, std::size_t, const std::string&, const std::string&);
-template void write(hid_t, const std::string&, const std::vector<std::int64_t>&, std::size_t, const std::string&, const std::string&);
+template void write(hid_t, const std::string&, const std::vector<double>&, std::size_t, const std::string&);
+template void write(hid_t, const std::string&, const std::vector<std::uint32_t>&, std::size_t, const std::string&);
+template void write(hid_t, const std::string&, const std::vector<std::uint8_t>&, std::size_t, const std::string&);
+template void write(hid_t, const std::string&, const std::vector<std::int64_t>&, std::size_t, const std::string&);
 template std::vector<double> read(hid_t, const std::string&, std::size_t&);
 template std::vector<std::uint32_t> read(hid_t, const std::string&, std::size_t&);
 template std::vector<std::uint8_t> read(hid_t, const std::string&, std::size_t&);
@@ -252,7 +258,7 @@ Column::Column(hid_t parent, const std::string& name, const std::string& units) 
   check(H5Pset_chunk(props, 1, chunk), "chunking " + name);
   dataset_ = Handle(checked(H5Dcreate2(parent, name.c_str(), H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, props, H5P_DEFAULT),
                             "creating column " + name));
-  set_attribute(dataset_, "units", units);
+  set_attribute(dataset_, unit_attribute, units);
 }
 
 Column::Column(hid_t parent, const std::string& name) {

@@ -69,7 +69,7 @@ std::int64_t get_int_attribute(hid_t obj, const std::string& name);
 bool has_attribute(hid_t obj, const std::string& name);
 
 // Text of any size, as a dataset: an attribute's object header holds at most 64 KiB, which a long
-// resolved scene or many warnings exceed (issue 38). write_text writes (or replaces) a scalar
+// resolved scene or many warnings exceed. write_text writes (or replaces) a scalar
 // fixed-length string dataset; read_text reads it, or, in a file written before schema 3, the
 // attribute of that name on `parent`. append_texts grows a 1-D dataset of variable-length
 // strings (chunked, unlimited: one item per call's element, nothing rewritten); read_texts reads
@@ -86,11 +86,17 @@ std::vector<std::string> read_texts(hid_t parent, const std::string& name);
 // out (it holds the digest). Any value changed changes it.
 std::string digest(hid_t file, const std::string& skip_object, const std::string& skip_attribute);
 
-// A whole dataset of rows x cols values (cols = 1 writes a 1-D dataset). The unit goes into the
-// attribute `unit_key`: `units` in our own groups, `unit` in H5MD ones.
+// The attribute that holds a dataset's unit, in every group: H5MD's name (H5MD 1.1 requires
+// `unit`). Results written before 2026-11-27 named it `units` outside the H5MD groups; unit_of
+// reads either.
+inline const std::string unit_attribute = "unit";
+// The unit of dataset `name` under `parent`: its `unit` attribute, else an older file's `units`;
+// "" if it has neither.
+std::string unit_of(hid_t parent, const std::string& name);
+
+// A whole dataset of rows x cols values (cols = 1 writes a 1-D dataset), its unit in `unit`.
 template <class T>
-void write(hid_t parent, const std::string& name, const std::vector<T>& data, std::size_t cols, const std::string& units,
-           const std::string& unit_key = "units");
+void write(hid_t parent, const std::string& name, const std::vector<T>& data, std::size_t cols, const std::string& units);
 // Reads a dataset written by write(); `cols` receives the second dimension (1 for 1-D).
 template <class T>
 std::vector<T> read(hid_t parent, const std::string& name, std::size_t& cols);

@@ -105,7 +105,7 @@ void ResultWriter::add_warning(const std::string& warning) { warnings_.push_back
 void ResultWriter::write_pending() {
   for (ColumnTable& t : tables_) t.flush();
   // Appended, never rewritten: any number of warnings of any length (an attribute stopped a run
-  // at 64 KiB of them, issue 38).
+  // at 64 KiB of them).
   h5::append_texts(file_, "warnings", warnings_);
   warnings_.clear();
 }

@@ -1,6 +1,6 @@
 #pragma once
 // Checkpoints: a run's whole state at a moment between two steps, so that a killed run resumes
-// and ends with exactly the result of an uninterrupted one (SPEC: everything needed to continue
+// and ends with exactly the result of an uninterrupted one (everything needed to continue
 // bit for bit).
 //
 // The checkpoint of RESULT.h5 is RESULT.h5.checkpoint: a copy of RESULT.h5.partial at that moment

@@ -130,6 +130,12 @@ bool output_due(const Simulation& sim, const SceneConfig& scene) {
   return sim.step_count() % scene.output.interval_steps == 0;
 }
 
+// Particle frames at their own interval, independent of the time-series rows (0: none).
+bool frame_due(const Simulation& sim, const SceneConfig& scene) {
+  const std::int64_t every = scene.output.frames_interval_steps;
+  return every > 0 && sim.step_count() % every == 0;
+}
+
 constexpr std::int64_t progress_every = 256;
 
 StageCursor cursor_at(int stage, std::int64_t i) {
@@ -164,6 +170,7 @@ void run_steps(Simulation& sim, const SceneConfig& scene, const StageHooks& hook
     if (i > 0 && hooks.checkpoint_due && hooks.checkpoint_due(sim)) hooks.checkpoint(sim, loop.cursor());
     const bool row = loop.step();
     if (hooks.row && (row || output_due(sim, scene))) hooks.row(sim, loop.where());
+    if (hooks.frame && frame_due(sim, scene)) hooks.frame(sim);
     if (hooks.progress && k % progress_every == 0) hooks.progress(sim, loop.progress());
     if (loop.done()) return;
   }
@@ -279,7 +286,7 @@ void run_stress_stage(Simulation& sim, const SceneConfig& scene, int index, cons
 }
 
 
-// Straight legs between stress states at constant mean stress (SPEC section 3). Each leg moves
+// Straight legs between stress states at constant mean stress (docs/method.md#stress-paths). Each leg moves
 // the targets linearly so that the principal stress changing most moves at the stage rate; the
 // servo gets the leg's stress rates as feed-forward. Records each leg's tracking error and
 // largest inertial number.
@@ -555,7 +562,6 @@ RunSummary run_stages(Simulation& sim, const SceneConfig& scene, const Checkpoin
   const std::int64_t frame_every = scene.output.frames_interval_steps;
   hooks.row = [&](const Simulation& s, const RowContext& where) {
     out.append_row(measure_row(s, where));
-    if (frame_every > 0 && s.step_count() % frame_every == 0) out.append_frame(s);
     const double error = s.energy().closure_error();
     if (error > scene.max_energy_error) {
       std::ostringstream msg;
@@ -566,6 +572,7 @@ RunSummary run_stages(Simulation& sim, const SceneConfig& scene, const Checkpoin
       throw StageError(msg.str());
     }
   };
+  if (frame_every > 0) hooks.frame = [&](const Simulation& s) { out.append_frame(s); };
   hooks.leg = [&](const LegRecord& r) { out.append_leg(leg_row(r)); };
   hooks.attribute = [&](const std::string& name, const std::string& value) { out.set_attribute(name, value); };
   // Checkpoints by steps and by wall time (the clock is read every 256 steps); never twice at

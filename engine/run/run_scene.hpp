@@ -56,6 +56,7 @@ struct StageCursor {
 
 struct StageHooks {
   std::function<void(const Simulation&, const RowContext&)> row;          // at output steps and stage/leg ends
+  std::function<void(const Simulation&)> frame;                           // every output.frames.interval steps (if set)
   std::function<void(const Simulation&, const StageProgress&)> progress;  // every few hundred steps
   std::function<void(const LegRecord&)> leg;                              // at each leg end of a stress path
   std::function<void(const std::string&)> warning;                        // e.g. inertial number above 1e-3
@@ -72,7 +73,7 @@ struct StageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// The equilibrium criteria of a stress stage's hold (SPEC section 2), from the last force
+// The equilibrium criteria of a stress stage's hold (docs/method.md#preparation), from the last force
 // evaluation: every principal stress within `hold.stress_tolerance` of its target, and the
 // unbalanced force ratio at most `hold.unbalanced_force_ratio`. The stage checks them every
 // `hold.check_interval` steps once the ramp is over and ends at the first check where they hold.

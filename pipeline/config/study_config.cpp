@@ -246,7 +246,7 @@ Study load_study(const std::string& file) {
   st.file = file;
   st.name = root.text("name", std::nullopt, "study name");
   st.output = resolve(file, root.text("output", std::nullopt, "results folder, relative to the study file"));
-  st.preparation = resolve(file, root.text("preparation", std::nullopt, "preparation scene template (SPEC section 2)"));
+  st.preparation = resolve(file, root.text("preparation", std::nullopt, "preparation scene template (docs/method.md#preparation)"));
   require_file(root, "preparation", st.preparation);
   std::set<std::string> names;
   for (dem::Section& d : root.list("densities", "the samples: name and friction during preparation")) {
@@ -275,10 +275,10 @@ Study load_study(const std::string& file) {
   }
   const std::vector<std::int64_t> seeds = read_seeds(root, {});
   // Profiles: any names, as many as the study needs (pipeline --profile NAME picks one).
-  const YAML::Node profile_node = root.raw("profiles", "a mapping of profile names to {lattice, max_repeat, seeds}",
+  const YAML::Node profile_node = root.raw("profiles", "a mapping of profile names to {lattice, cycles or max_repeat, seeds}",
                                            "named sizes of the study, any names (paper, quick, small, ...)");
   if (!profile_node.IsMap() || profile_node.size() == 0)
-    root.fail("profiles", "must be a non-empty mapping of profile names to {lattice, max_repeat, seeds}");
+    root.fail("profiles", "must be a non-empty mapping of profile names to {lattice, cycles or max_repeat, seeds}");
   dem::Section profiles(profile_node, file, "profiles");
   static const std::regex profile_re("^[A-Za-z0-9_-]+$");  // the results folder <output>/<profile>
   for (const auto& kv : profile_node) {
@@ -289,7 +289,12 @@ Study load_study(const std::string& file) {
     Profile pr;
     pr.name = name;
     pr.lattice = static_cast<int>(p.integer("lattice", 2, 100, 20, "lattice sites per axis of the preparation"));
-    pr.max_repeat = static_cast<int>(p.integer("max_repeat", 0, 1000000, 0, "cap on each repeat block's cycles (0: none)"));
+    pr.max_repeat = static_cast<int>(p.integer("max_repeat", 0, 1000000, 0,
+        "cap on each repeat block's cycles (0: none); Test 1 has two blocks, so max_repeat: 1 runs 2 cycles"));
+    pr.cycles = static_cast<int>(p.integer("cycles", 0, 1000000, 0,
+        "cycles of each test in all (0: every cycle): the repeat blocks in order keep what is left, later ones are dropped"));
+    if (pr.max_repeat > 0 && pr.cycles > 0)
+      p.fail("cycles", "give either cycles (cycles in all) or max_repeat (a cap per repeat block), not both");
     pr.seeds = read_seeds(p, seeds);
     p.finish();
     st.profiles.push_back(pr);

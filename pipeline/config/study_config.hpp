@@ -41,6 +41,7 @@ struct Profile {
   std::string name;
   int lattice = 20;     // lattice sites per axis of the preparation (20 -> 8,000 spheres)
   int max_repeat = 0;   // > 0: each repeat block of a test runs at most this many cycles
+  int cycles = 0;       // > 0: each test (each stress-path stage) runs at most this many cycles in all
   std::vector<std::int64_t> seeds;  // the samples (seeds of the diameter sampler); empty: the template's one sample
 };
 

@@ -49,6 +49,29 @@ void cap_repeats(YAML::Node scene, int max_repeat) {
   }
 }
 
+// Keeps at most `cycles` cycles of every stress-path stage: its repeat blocks in order keep what
+// is left of the budget, and the blocks after it is spent are dropped (legs outside blocks, such
+// as Test 1's first A->TC1, stay: they are cycle 0). Test 1 (5 + 5 cycles) at cycles 1 runs one.
+void cap_cycles(YAML::Node scene, int cycles) {
+  if (cycles <= 0 || !scene["stages"] || !scene["stages"].IsSequence()) return;
+  for (YAML::Node stage : scene["stages"]) {
+    if (!stage["path"] || !stage["path"].IsSequence()) continue;
+    long long left = cycles;
+    YAML::Node kept(YAML::NodeType::Sequence);
+    for (YAML::Node item : stage["path"]) {
+      long long n = 0;
+      std::string why;  // read as the engine reads it; a count it refuses is left for it to refuse
+      if (item.IsMap() && item["repeat"] && item["repeat"].IsScalar() && dem::parse_decimal_integer(item["repeat"].Scalar(), n, why)) {
+        if (left <= 0) continue;
+        if (n > left) item["repeat"] = left;
+        left -= std::min(n, left);
+      }
+      kept.push_back(item);
+    }
+    stage["path"] = kept;
+  }
+}
+
 std::string emit(const YAML::Node& n, const std::string& header) {
   YAML::Emitter out;
   out << n;
@@ -276,6 +299,7 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
             dem::apply_override(ts, t.scene, "material.friction", mu.str());
           }
           cap_repeats(ts, profile.max_repeat);
+          cap_cycles(ts, profile.cycles);
           if (v.time_step_fraction) {  // the test's spheres are the sample's; its kn may differ
             const dem::SceneConfig parsed = dem::scene_from_text(emit(ts, header), run.scene_file);
             const double dt = *v.time_step_fraction * dem::critical_time_step(parsed.material.law, sample, parsed.material.density_kg_per_m3);

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The stability study's table of outcomes (issue 7, part 3) from its results.
+# The stability study's table of outcomes from its results.
 # Usage: reports/stability/make_section.sh [BIN_DIR] [RESULTS_DIR] [OUT_DIR]
 #   defaults: build/bin, results/stability/paper, reports/stability (receives table.md)
 # Exit status 1 if a case is not acceptable (ran without finite values or beyond the closure

@@ -23,6 +23,11 @@ def text(x):
     return x.decode() if isinstance(x, bytes) else str(x)
 
 
+def unit_of(dataset):
+    """A dataset's unit: `unit` (since 2026-11-27, as in the H5MD groups), or an older file's `units`."""
+    return dataset.attrs["unit"] if "unit" in dataset.attrs else dataset.attrs["units"]
+
+
 def table(dem, result, columns, legs=False):
     args = [dem, "table", result] + (["--legs"] if legs else []) + list(columns)
     out = subprocess.run(args, capture_output=True, text=True, check=True).stdout
@@ -36,7 +41,7 @@ def compare(group, dem, result, columns, legs=False):
     rows = table(dem, result, columns, legs)
     for k, (name, unit) in enumerate(columns.items()):
         data = group[name][()]
-        assert text(group[name].attrs["units"]) == unit, f"{name}: units {group[name].attrs['units']!r}, expected {unit!r}"
+        assert text(unit_of(group[name])) == unit, f"{name}: unit {unit_of(group[name])!r}, expected {unit!r}"
         assert len(data) == len(rows), f"{name}: h5py reads {len(data)} rows, dem table prints {len(rows)}"
         for i, v in enumerate(data):
             t = rows[i][k]

@@ -21,6 +21,11 @@ def text(x):
     return x.decode() if isinstance(x, bytes) else str(x)
 
 
+def unit_of(dataset):
+    """A dataset's unit: `unit` (since 2026-11-27, as in the H5MD groups), or an older file's `units`."""
+    return dataset.attrs["unit"] if "unit" in dataset.attrs else dataset.attrs["units"]
+
+
 def main():
     dem, result, readme = sys.argv[1], sys.argv[2], sys.argv[3]
     csv = subprocess.run([dem, "table", result, "--csv"], capture_output=True, text=True, check=True).stdout
@@ -32,14 +37,15 @@ def main():
             m = re.fullmatch(r"(\S+) \[(\S+)\]", header)
             assert m, f"header {header!r} is not 'name [unit]'"
             name, unit = m.groups()
-            assert text(group[name].attrs["units"]) == unit, f"{name}: header unit {unit!r}, file {group[name].attrs['units']!r}"
+            assert text(unit_of(group[name])) == unit, f"{name}: header unit {unit!r}, file {unit_of(group[name])!r}"
             data = group[name][()]
             assert len(data) == len(frame), f"{name}: {len(data)} rows in the file, {len(frame)} in the CSV"
             assert (frame[header].to_numpy() == data).all(), f"{name}: pandas and h5py differ"
     one_liners = [line for line in open(readme, encoding="utf-8") if "python3 -c '" in line]
     assert one_liners, f"{readme} shows no 'python3 -c' one-liner"
     for line in one_liners:
-        command = line.strip().replace("RESULT.h5", result).replace("build/bin/dem", dem).replace("python3", sys.executable)
+        # The README names Debian's /usr/bin/python3; this test runs them with its own interpreter.
+        command = re.sub(r"(/usr/bin/)?python3\b", sys.executable, line.strip().replace("RESULT.h5", result).replace("build/bin/dem", dem))
         out = subprocess.run(["bash", "-c", command], capture_output=True, text=True)
         assert out.returncode == 0, f"README one-liner failed: {command}\n{out.stderr}"
         float(out.stdout.split()[-1])  # each prints a number last

@@ -2,7 +2,9 @@
 # `cmake --install` into a temporary prefix, then, from a folder outside the source and build
 # trees: the installed dem answers --version (the same as the built one), the installed pipeline
 # answers --help, and the installed example (from its shipped sample, shortened) runs to a complete
-# result written in the current folder.
+# result written in the current folder; every tool, the studies, the reference files, the report's
+# templates and the installed layout's README are there, and `pipeline new` copies an installed
+# study into the current folder, which then plans.
 #   tests/install/install_test.sh BUILD_DIR WORKDIR
 set -u
 build=$1 work=$2
@@ -25,5 +27,30 @@ scene=$prefix/share/cyclic-triax/scenes/examples/triaxial_compression.yaml
 status=$(h5dump -a /status result.h5 2> /dev/null | awk -F'"' '/\(0\)/ {print $2}')
 [ "$status" = complete ] || { echo "FAIL: result.h5 in $(pwd) has status '$status'"; fail=1; }
 [ -f "$prefix/share/doc/cyclic-triax/LICENSE" ] || { echo "FAIL: LICENSE not installed"; fail=1; }
+# Everything a study needs: every tool, the studies, validate's reference files, the report's
+# templates and figure scripts, the method, and a README for the installed layout.
+share=$prefix/share/cyclic-triax
+for tool in dem pipeline validate compare-runs ensemble-cycles figure-data report; do
+  [ -x "$prefix/bin/$tool" ] || { echo "FAIL: $prefix/bin/$tool not installed"; fail=1; continue; }
+  "$prefix/bin/$tool" --help > /dev/null 2>&1 || { echo "FAIL: installed $tool --help"; fail=1; }
+done
+for f in pipeline/studies/paper.yaml reference_data/paper.yaml reference_data/literature.yaml reports/templates/index.md \
+         reports/templates/figure_notes.tsv reports/gnuplot/style.gp reports/make_figures.sh docs/method.md README.md \
+         examples/own_references/references.yaml scenes/samples/dense_1k.h5 scenes/tests/test1.yaml; do
+  [ -f "$share/$f" ] || { echo "FAIL: $share/$f not installed"; fail=1; }
+done
+readme=$prefix/share/doc/cyclic-triax/README.md
+cmp -s "$readme" "$share/README.md" || { echo "FAIL: $readme is not the installed layout's README"; fail=1; }
+# It speaks of the installed layout: no build tree, no make targets (both exist only in a clone).
+if grep -n -E 'build/bin|\bmake ' "$readme"; then echo "FAIL: $readme speaks of the source tree"; fail=1; fi
+# A study of your own from the installed studies, in this folder: the copy names the installed
+# paper.yaml, resolves its scenes into the prefix and plans (no run: --plan).
+"$prefix/bin/pipeline" new my_study.yaml --from paper > new.log 2>&1 || { echo "FAIL: pipeline new:"; cat new.log; fail=1; }
+grep -q "$share/pipeline/studies/paper.yaml" new.log || { echo "FAIL: pipeline new did not copy the installed study:"; cat new.log; fail=1; }
+grep -q "^preparation: $share/scenes/prepare_dense.yaml\|^preparation: .*share/cyclic-triax/scenes/prepare_dense.yaml" my_study.yaml ||
+  { echo "FAIL: my_study.yaml's preparation does not lead to the installed scene:"; grep preparation my_study.yaml; fail=1; }
+"$prefix/bin/pipeline" my_study.yaml --plan --profile quick > plan.log 2>&1 || { echo "FAIL: pipeline my_study.yaml --plan:"; cat plan.log; fail=1; }
+grep -q "^seed1/loose_prepare " plan.log || { echo "FAIL: the plan lists no seed1/loose_prepare:"; head plan.log; fail=1; }
+[ -d results/my_study/quick ] || { echo "FAIL: the copy's results folder is not results/my_study/quick beside it"; fail=1; }
 [ $fail = 0 ] && echo "install: $prefix/bin/dem ($installed) ran the installed example in $(pwd)"
 exit $fail

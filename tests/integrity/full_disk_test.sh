@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# A real full disk (issue 24): `dem run` of 64 spheres into a 200 KiB tmpfs, and with checkpoints
+# A real full disk: `dem run` of 64 spheres into a 200 KiB tmpfs, and with checkpoints
 # into tmpfs of several sizes, so that the disk fills up in rows, in frames, in a checkpoint and
 # at the final flush and close. Every run must end with exit 0 and a complete result, or with
 # exit 1, the reason ("No space left on device") on stderr, no RESULT.h5, its

@@ -1,5 +1,5 @@
 #!/bin/bash
-# Kill test (issue 8): kill -9 a run KILLS times at random moments, resume it each time, and
+# Kill test: kill -9 a run KILLS times at random moments, resume it each time, and
 # compare the result with an uninterrupted run of the same scene: the time series, the legs, the
 # final state and the particle frames must be identical bit for bit (h5diff without tolerance).
 #

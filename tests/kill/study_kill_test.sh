@@ -1,5 +1,5 @@
 #!/bin/bash
-# Study kill test (issue 8): kill -9 the pipeline KILLS times at random moments while it runs a
+# Study kill test: kill -9 the pipeline KILLS times at random moments while it runs a
 # small study (tests/kill/study.yaml: a quick 34,500-step preparation and two tests), start it again each time, and compare every result with
 # those of an uninterrupted pipeline: /timeseries, /legs, /state and /particles identical bit for
 # bit. A killed pipeline takes its `dem run`s with it; started again, it reuses the finished

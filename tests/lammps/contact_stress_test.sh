@@ -1,5 +1,5 @@
 #!/bin/bash
-# LAMMPS test (issue 22): the contact stress tensor and the mean normal contact force of one static
+# LAMMPS test: the contact stress tensor and the mean normal contact force of one static
 # packing, evaluated by our engine and by LAMMPS (Debian's `lammps`, /usr/bin/lmp), must agree to
 # 1e-9 relative for the linear law and for Hertz. Skipped (exit 77) where LAMMPS is not installed.
 #
@@ -12,7 +12,7 @@
 #    its own, which is what both codes evaluate).
 # 2. Ours: a scene reading the CSV (`particles: {csv: ..., cell: [...]}`) runs one step; the row
 #    every stage writes at its start, before the first step, is measured from the positions alone
-#    (analysis/measurements.cpp; before issue 22 this row saw no contacts, the neighbour list being
+#    (analysis/measurements.cpp; before the fix this row saw no contacts, the neighbour list being
 #    built only by the first step): stress_11 ... stress_23, mean_normal_force and contacts, read
 #    from the HDF5 file at full precision (h5dump -m %.17g; `dem table` prints only 10 digits).
 # 3. LAMMPS: the same positions (atom_style sphere, periodic box 0..L), `run 0`, with

@@ -1,4 +1,4 @@
-// The pipeline's integrity (issue 38): no shell ever sees a path, one pipeline per results folder,
+// The pipeline's integrity: no shell ever sees a path, one pipeline per results folder,
 // a particle file the pipeline hashes must be a regular file.
 #include <catch2/catch.hpp>
 
@@ -43,7 +43,7 @@ fs::path fresh(const std::string& name) {
 }  // namespace
 
 TEST_CASE("pipeline: no shell sees the engine's path, whatever its folder is called", "[pipeline][integrity][shell]") {
-  // Issue 38, case 8: `pipeline` ran popen("'DEM' --source-hash"): a folder named
+  // Found in review: `pipeline` ran popen("'DEM' --source-hash"): a folder named
   // `inj'; touch INJECTED; echo '` ran touch, and `o'brien` made the pipeline unusable. The class
   // swept: folder names holding each character a shell treats specially (quote, semicolon,
   // command substitution, backquote, glob, newline, a leading dash, spaces). The engine is found
@@ -88,7 +88,7 @@ TEST_CASE("pipeline: no shell sees the engine's path, whatever its folder is cal
 }
 
 TEST_CASE("pipeline: one pipeline per results folder; the second refuses before writing anything", "[pipeline][integrity][lock]") {
-  // Issue 38: two pipelines on one study ran the same runs; the second reported FAILED for a run
+  // two pipelines on one study ran the same runs; the second reported FAILED for a run
   // the first finished, and the log was garbled. The folder's lock is held while a pipeline runs
   // and removed when it ends.
   const fs::path dir = fresh("study_lock");
@@ -121,7 +121,7 @@ TEST_CASE("pipeline: one pipeline per results folder; the second refuses before 
 
 TEST_CASE("pipeline: a particle file that is not a regular file is refused when planned", "[pipeline][integrity][fifo]") {
   // The pipeline reads a preparation's particle file for its input hash, and dem reads it again:
-  // a FIFO would give its bytes to the pipeline and leave dem waiting (issue 38, case 1).
+  // a FIFO would give its bytes to the pipeline and leave dem waiting.
   const fs::path dir = fresh("study_fifo");
   REQUIRE(mkfifo((dir / "p.csv").c_str(), 0644) == 0);
   std::ofstream(dir / "csv.yaml") << "name: tiny\noutput: out\npreparation: prep.yaml\n"

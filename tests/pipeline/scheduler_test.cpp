@@ -60,7 +60,7 @@ TEST_CASE("pipeline: runs once, then reuses, reruns what is missing or corrupt",
 }
 
 TEST_CASE("pipeline: a changed input reruns over the earlier result, which dem replaces only with --force", "[pipeline][scheduler]") {
-  // `dem run` refuses to replace a complete result of another scene without --force (issue 24);
+  // `dem run` refuses to replace a complete result of another scene without --force;
   // the pipeline's results are its own, so it passes --force: a changed test scene reruns the
   // tests in place, and a corrupt result is replaced too.
   const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "scheduler_force";

@@ -130,7 +130,7 @@ TEST_CASE("slurm: the executor and slurm: keys of a study", "[pipeline][slurm]")
 }
 
 TEST_CASE("slurm: every spelling sbatch reads as an option the pipeline sets is refused", "[pipeline][slurm][input]") {
-  // Issue 38: `--outp=x`, `--wra=x`, `--dep=x` passed the refusal list, but sbatch (getopt_long)
+  // `--outp=x`, `--wra=x`, `--dep=x` passed the refusal list, but sbatch (getopt_long)
   // takes any unambiguous prefix of a long option: they are --output, --wrap, --dependency. The
   // class swept: every prefix of every long option the pipeline sets (from "--" and one letter up
   // to the whole name; a short prefix that is ambiguous, which sbatch refuses too, is refused as

@@ -52,7 +52,7 @@ const std::vector<BadStudy> catalogue = {
      {"preparation", "no such file", "gone.yaml"}},
     {"empty density list", head + "densities: []\n" + good_tail, {"densities: must be a non-empty list"}},
     {"broken YAML", head + "densities: [{name: loose, friction: 0.5}\n" + good_tail, {"not valid YAML", "line"}},
-    // variants (issue 7): scene overrides per setting of the study
+    // variants: scene overrides per setting of the study
     {"misspelt variant key", head + density + good_tail + "variants: [{name: a, sett: {numerics.time_step: 1.0e-6}}]\n",
      {"variants[0]", "unknown key 'sett'", "did you mean 'set'"}},
     {"override path not a key path", head + density + good_tail + "variants: [{name: a, set: {\"numerics..time_step\": 1}}]\n",
@@ -77,7 +77,7 @@ const std::vector<BadStudy> catalogue = {
      {"variants[0].may_fail", "true or false", "maybe"}},
     {"test override of the run name", head + density + "tests: [{name: t1, scene: t.yaml, set: {name: x}}]\n" +
      "profiles: {paper: {lattice: 20}, quick: {lattice: 10}}\n", {"tests[0].set.name", "is set by the pipeline"}},
-    // issue 38: names that become paths; numbers read one way
+    // names that become paths; numbers read one way
     {"density name with a path in it", head + "densities: [{name: loose, friction: 0.5}, {name: x/../loose, friction: 0}]\n" + good_tail,
      {"densities[1].name", "'x/../loose' contains a path separator", "part of file names"}},
     {"density name '..'", head + "densities: [{name: .., friction: 0.5}]\n" + good_tail, {"densities[0].name", "contains '..'"}},
@@ -130,7 +130,7 @@ TEST_CASE("bad study files are refused naming the file, the key and what is allo
 }
 
 TEST_CASE("every study name that becomes part of a file name is checked, by one rule", "[pipeline][input][names]") {
-  // Issue 38, case 6: densities `loose` and `x/../loose` mapped to one result file (4 runs "ran",
+  // Found in review: densities `loose` and `x/../loose` mapped to one result file (4 runs "ran",
   // 2 files existed, one density's test ran from the other's sample). The class swept: each name
   // that becomes a path (densities[].name, tests[].name, variants[].name: results, scenes and
   // logs are <variant>_<density>_<test>.h5) against each way a name can leave its folder or

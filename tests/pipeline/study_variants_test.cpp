@@ -1,4 +1,4 @@
-// Studies of variants (issue 7): each variant is the study's runs with its scene overrides; a
+// Studies of variants: each variant is the study's runs with its scene overrides; a
 // variant that changes only the tests shares the preparation; hashes follow the overrides; a
 // may_fail run that stops with a message is an outcome, recorded and reused.
 #include <catch2/catch.hpp>

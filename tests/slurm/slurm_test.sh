@@ -1,5 +1,5 @@
 #!/bin/bash
-# SLURM test (issue 20): the tiny study tests/slurm/study.yaml through a real one-node SLURM
+# SLURM test: the tiny study tests/slurm/study.yaml through a real one-node SLURM
 # (tests/slurm/start_cluster.sh; stopped again at the end), checked against the local executor:
 #  1. the local executor's results, the reference;
 #  2. the SLURM executor with loose_prepare's job cancelled (scancel) after its first checkpoint:

@@ -183,7 +183,7 @@ TEST_CASE("inertial number and the friction angle of a compression q/p", "[criti
   CHECK(validation::inertial_number(4, 0.002, 2500, 1e4) == Approx(0.004).epsilon(1e-14));
   CHECK(validation::inertial_number(-4, 0.002, 2500, 1e4) == Approx(0.004).epsilon(1e-14));  // extension: |rate|
   CHECK(std::isnan(validation::inertial_number(1, 0.002, 2500, 0)));
-  // The issue's figure: 1 /s, d about 3.75 mm (the grading's middle), 2650 kg/m3, 100 kPa: ~6e-4.
+  // An order-of-magnitude check: 1 /s, d about 3.75 mm (the grading's middle), 2650 kg/m3, 100 kPa: ~6e-4.
   CHECK(validation::inertial_number(1, 3.75e-3, 2650, 1e5) == Approx(6.1e-4).epsilon(0.01));
   // q/p = 1.2 in compression is phi = 30 deg (sin phi = 3.6/7.2); q/p = 0: 0.
   CHECK(validation::compression_friction_deg(1.2) == Approx(30).epsilon(1e-12));

@@ -107,3 +107,23 @@ TEST_CASE("what each quantity reads decides which runs a row needs", "[quantitie
   const std::vector<std::string> known = validation::known_quantities();
   CHECK(std::find(known.begin(), known.end(), "critical_state_friction_angle") != known.end());
 }
+
+TEST_CASE("a quantity meant for a monotonic shear warns when it reads a cyclic test", "[quantities][warnings]") {
+  validation::DensityResults r;
+  r.tests = {shear("compression", 40, 30, 0.60)};
+  // A drained shear counts no cycle: no misfit.
+  CHECK(compute("peak_friction_angle", r).misfit.empty());
+  // The same rows marked as 3 cycles of a cyclic path (the time series' cycle column): the value is
+  // computed all the same, and the misfit names the test and its cycles.
+  validation::TestResult cyclic = shear("test1", 40, 30, 0.60);
+  std::vector<double>& cycle = cyclic.series["cycle"];
+  for (std::size_t i = 0; i < cycle.size(); ++i) cycle[i] = static_cast<double>(3 * i / cycle.size() + 1);
+  r.tests.push_back(cyclic);
+  const validation::Measured both = compute("peak_friction_angle", r);
+  CHECK(both.value == Approx(40).epsilon(1e-12));
+  CHECK(both.misfit == "peak_friction_angle is meant for a monotonic shear; it read cyclic tests: test1 (3 cycles)");
+  CHECK(compute("critical_state_void_ratio", r, "test1").misfit.find("test1 (3 cycles)") != std::string::npos);
+  CHECK(compute("peak_friction_angle", r, "compression").misfit.empty());  // the row reads the drained test only
+  // A quantity of cyclic tests has no such warning.
+  CHECK(compute("ev_growth", r).misfit.empty());
+}

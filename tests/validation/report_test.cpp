@@ -185,7 +185,7 @@ TEST_CASE("report: digits from the scatter", "[report][format]") {
 }
 
 TEST_CASE("report: shifts in units of max(sd, resolution), beyond ±10 written with their value", "[report][format]") {
-  // The issue's case: a baseline sd of 2.4e-6 % made a shift of 0.00304 % read +1266.68 sd. With
+  // The case found in review: a baseline sd of 2.4e-6 % made a shift of 0.00304 % read +1266.68 sd. With
   // the strain rows' resolution 0.005 %, it is 0.00304 / 0.005 = 0.608.
   CHECK(shift_in_sd(0.00304, 2.4e-6, 0.005) == Approx(0.608));
   CHECK(shift_in_sd(0.5, 0.25, 0.005) == Approx(2.0));  // a scatter above the resolution is the unit
@@ -397,7 +397,7 @@ TEST_CASE("report: a changed result changes its sentences, and the verdict phras
     CHECK(note(before, png) == note(after, png));
 }
 
-TEST_CASE("energy curves: every curve from the same row, the true state (issue 34)", "[report][energy]") {
+TEST_CASE("energy curves: every curve from the same row, the true state", "[report][energy]") {
   // An exact balance: stored = E0 + W - D. The old figure drew work from row 0 (0 J) and the
   // stored energy from row 2, so the dashed curve sat W(row 2) below the black one.
   Columns s;
@@ -556,8 +556,8 @@ TEST_CASE("report --previous: a section whose inputs are not here is the previou
   }
 }
 
-// Issue 34: no number in the report's text is typed. After taking out what is not a number of the
-// results (keys, code spans, names: SPEC §N, Fig. N, Test N, TC1, σ1, ε3), the digits left in the
+// no number in the report's text is typed. After taking out what is not a number of the
+// results (keys, code spans, names: §N, Fig. N, Test N, TC1, σ1, ε3), the digits left in the
 // templates are the paper's own captions and definitions, listed here one by one; a number typed
 // into a sentence (a note's "reaches 0.22–0.69 %", a method's "limit 1 %") fails this test.
 TEST_CASE("report: the templates type no number of the results", "[report][template]") {
@@ -585,7 +585,7 @@ TEST_CASE("report: the templates type no number of the results", "[report][templ
   }
 }
 
-// Issue 35: the report says how well the cell held its shear stresses at zero, with numbers.
+// the report says how well the cell held its shear stresses at zero, with numbers.
 TEST_CASE("report: the largest shear strain and shear stress over p of the cell during the tests", "[report]") {
   Sample s;
   s.name = "seed1";

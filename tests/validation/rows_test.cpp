@@ -130,3 +130,40 @@ TEST_CASE("references: a bad row is refused naming the file, the row and the key
     CHECK_THAT(error_of(file), Catch::Contains(file + ": rows[2] (\"third\").check: must be one of: within, at_least, at_most"));
   }
 }
+
+namespace {
+
+// A row "within `tolerance` of 10", judged on hand-made per-sample values.
+validation::RowResult judged(const std::vector<double>& values, double tolerance, const std::string& rule = "interval",
+                             const std::string& misfit = "") {
+  validation::Row row;
+  row.name = "x", row.check = "within", row.reference = 10, row.tolerance = tolerance, row.rule = rule;
+  std::vector<validation::RowResult::PerSample> samples;
+  for (double v : values) samples.push_back({"s", {v, "", misfit}});
+  return validation::judge_values(row, samples);
+}
+
+}  // namespace
+
+TEST_CASE("verdicts warn when the samples are too few for the row's tolerance", "[references][warnings]") {
+  // Two samples 10 and 12: mean 11, sd sqrt(2), interval 11 -/+ t(0.975, 1) sqrt(2) sqrt(1.5)
+  // = 11 -/+ 12.706 x 1.7321 = 11 -/+ 22.01: 44.0 wide. Against a tolerance of 1 (44 times) the
+  // verdict, consistent, is near automatic and warned about; against 11.1 (3.97 times), not.
+  const validation::RowResult wide = judged({10, 12}, 1);
+  CHECK(wide.verdict == validation::Verdict::Consistent);
+  REQUIRE(wide.warnings.size() == 1);
+  CHECK(wide.warnings[0].rfind("samples too few to judge: the interval of one sample (44 wide, 2 samples) is 44 times the tolerance 1", 0) == 0);
+  CHECK(judged({10, 12}, 11.1).warnings.empty());
+  CHECK(judged({10, 12}, 10.9).warnings.size() == 1);  // 4.04 times
+  // Five samples 9.9, 10, 10, 10, 10.1: sd 0.0707, interval 10 -/+ 2.776 x 0.0707 x 1.0954 = 0.43
+  // wide, 0.86 times a tolerance of 0.5: no warning.
+  CHECK(judged({9.9, 10, 10, 10, 10.1}, 0.5).warnings.empty());
+  // Trends (rule majority) read no interval, and a check without a tolerance has nothing to compare.
+  CHECK(judged({10, 12}, 1, "majority").warnings.empty());
+  CHECK(judged({10, 12}, 0).warnings.empty());
+}
+
+TEST_CASE("verdicts carry each distinct misfit of their samples' values once", "[references][warnings]") {
+  const validation::RowResult r = judged({10, 10.5, 9.5}, 5, "interval", "does not fit");
+  CHECK(r.warnings == std::vector<std::string>{"does not fit"});
+}

@@ -1,4 +1,4 @@
-// validate's exit status follows one rule (issue 38): 0 only when everything asked for was done and
+// validate's exit status follows one rule: 0 only when everything asked for was done and
 // judged. Missing results, a sample runs.tsv lists whose folder is gone, rows not judged: 1, with
 // the reason on stderr (the tables are still written). Bad arguments, a results folder that is not
 // there, an --out that is not a folder: 2, with a message, never an uncaught exception.

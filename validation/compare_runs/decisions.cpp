@@ -1,4 +1,4 @@
-// compare-runs decisions: the decisions study (SPEC section 7). Every validation row on every
+// compare-runs decisions: the decisions study (docs/method.md#open-choices). Every validation row on every
 // reading's ensemble, the shift of the mean in baseline standard deviations, a tornado chart per
 // group of rows, and the reading that explains each inconsistent row. Writes OUT/table.md,
 // decisions.json and, per group, tornado_<group>.dat and tornado_values.gp

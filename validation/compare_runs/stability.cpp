@@ -1,4 +1,4 @@
-// compare-runs stability: what became of each case of the stability study (SPEC's time step and
+// compare-runs stability: what became of each case of the stability study (the paper's time step and
 // stiffness cases), one row per run: OUT/table.md.
 #include <cstdio>
 #include <filesystem>

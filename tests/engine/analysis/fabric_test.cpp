@@ -1,4 +1,4 @@
-// Contact fabric and the pi-plane (engine/analysis/fabric.hpp; paper Eqs. 8-10, SPEC section 4):
+// Contact fabric and the pi-plane (engine/analysis/fabric.hpp; paper Eqs. 8-10, docs/method.md#measures):
 //   F   = (1/Nc) sum_c n (x) n                        over all contacts,
 //   F^s = (1/Nc) sum_{c: f_n > mean f_n} n (x) n      with the *total* Nc in the denominator,
 // invariants m = tr/3 and d = sqrt(((T11-T22)^2 + (T22-T33)^2 + (T11-T33)^2)/2) on the diagonal,

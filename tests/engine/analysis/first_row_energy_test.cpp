@@ -1,5 +1,5 @@
 // The first row of a run's time series carries the sample's true state at t = 0, energies too
-// (issue 34): before the first step nothing has evaluated the forces, and the row used to report
+//: before the first step nothing has evaluated the forces, and the row used to report
 // 0 J of elastic energy for a sample full of loaded contacts.
 #include <catch2/catch.hpp>
 

@@ -92,7 +92,7 @@ TEST_CASE("simple cubic lattice without overlap carries no stress", "[analysis][
 TEST_CASE("an overlapping lattice is measured before its first step", "[analysis][stress]") {
   // A simulation built from particles has no neighbour list until its first step; the survey
   // (the first row of a run, e.g. of a packing read from a CSV file) must still see the contacts
-  // of the positions. It reported no contacts and zero stress before (issue 22, found by the
+  // of the positions. It reported no contacts and zero stress before (found by the
   // LAMMPS test, tests/lammps/contact_stress_test.sh). Same expectation and tolerance as above.
   const double d = 2e-3, kn = 1e5;
   const std::array<int, 3> n{4, 5, 6};

@@ -170,7 +170,7 @@ std::vector<BadScene> catalogue() {
        {"bad.yaml: numerics.time_step: must be in (0, 1] s, got 0 (line 6)"}},
       {"negative time step", Yaml{.numerics = "{time_step: -1.0e-6}"}.text(), C,
        {"bad.yaml: numerics.time_step: must be in (0, 1] s, got -1.0e-6"}},
-      // SPEC section 5 has two damping forms only.
+      // docs/method.md#damping has two damping forms only.
       {"damping form not viscous/local", Yaml{.extra = "damping: {form: coulomb}\n"}.text(), C,
        {"bad.yaml: damping.form: must be one of: viscous, local, got 'coulomb' (line 9)"}},
       // Lattice site counts are whole numbers in [1, 200].
@@ -239,7 +239,7 @@ std::vector<BadScene> catalogue() {
       // Coulomb friction needs a tangential spring.
       {"friction > 0 with ks = 0", Yaml{.material = "{kn: 1.0e6, ks: 0, friction: 0.5}"}.text(), C,
        {"bad.yaml: material.ks: must be > 0 when friction > 0"}},
-      // --- contact laws (engine/config/contact_keys.cpp, issue 22) ---------------------------------
+      // --- contact laws (engine/config/contact_keys.cpp) --------------------------------------
       // Each law reads its own stiffness keys; another law's key is refused, naming the law it
       // belongs to and the keys this one reads (not silently ignored). The lists of laws are
       // matched up to their ends: a law added to AnyContactLaw is named after these.
@@ -332,7 +332,7 @@ std::vector<BadScene> catalogue() {
        {"bad.yaml: numerics.time_step: must be in (0, 1] s, got .inf (line 6)"}},
       {"NaN in a list", Yaml{.stages = "\n  - {name: a, type: strain_rate, strain_rate: [0.1, .nan, 0.1], duration: 1.0e-4}"}.text(), C,
        {"bad.yaml: stages[0].strain_rate[1]: must be in [-1000, 1000] 1/s, got .nan (line 8)"}},
-      // --- numbers read one way (issue 38): decimal; no leading zeros, no other bases, no underflow --
+      // --- numbers read one way: decimal; no leading zeros, no other bases, no underflow --
       // `010` was octal 8 where yaml-cpp read an integer (seeds, --set) and 10 in a list of numbers.
       {"a leading zero in an integer", Yaml{.lattice = "{n: [3, 3, 3], spacing: 5.0e-3, seed: 010}"}.text(), C,
        {"bad.yaml: particles.lattice.seed: must be an integer", "got '010' (line 3): a leading zero is refused", "write 10"}},
@@ -349,17 +349,17 @@ std::vector<BadScene> catalogue() {
        {"bad.yaml: stages[0].path[0]: stresses must be positive numbers (Pa)", "'0120000': a leading zero is refused"}},
       {"a leading zero in a repeat count", Yaml{.stages = "\n  - {name: a, type: stress_path, rate: 2.0e6, path: [TC1, {repeat: 010, path: [TC2, TC1]}]}"}.text(), C,
        {"bad.yaml: stages[0].path[1].repeat: must be an integer in [1, 100000]", "'010': a leading zero is refused"}},
-      // --- control stages: targets a packing can reach (issue 38) --------------------------------
+      // --- control stages: targets a packing can reach --------------------------------
       {"a tensile axial stress target", Yaml{.stages = "\n  - {name: a, type: control, duration: 1, control: {xx: {stress: -5.0e4}, yy: {strain_rate: 0}, zz: {strain_rate: 0}}}"}.text(), C,
        {"bad.yaml: stages[0].control.xx.stress: is tensile (compression is positive), got -50000 Pa", "allowed: >= 0 Pa"}},
       {"a cyclic stress that swings into tension", Yaml{.stages = "\n  - {name: a, type: control, duration: 1, control: {xx: {stress: 1.0e5}, yy: {strain_rate: 0}, zz: {strain_rate: 0}}, cyclic: {component: xx, amplitude: 1.5e5, period: 0.1}}"}.text(), C,
        {"bad.yaml: stages[0].cyclic.amplitude: takes xx's stress target 100000 Pa to -50000 Pa, a tension", "allowed: at most 100000 Pa"}},
-      // --- checkpoints every step (issue 38): 33 steps/s, 30 MB after 1,877 steps ----------------------
+      // --- checkpoints every step: 33 steps/s, 30 MB after 1,877 steps ----------------------
       {"a checkpoint every step", Yaml{.extra = "output: {checkpoint_interval: 1}\n"}.text(), C,
        {"bad.yaml: output.checkpoint_interval: must be 0 (none by steps) or at least 10, got 1", "each checkpoint copies the whole result"}},
       {"a checkpoint every 9 steps", Yaml{.extra = "output: {checkpoint_interval: 9}\n"}.text(), C,
        {"bad.yaml: output.checkpoint_interval: must be 0 (none by steps) or at least 10, got 9"}},
-      // --- step counts (issue 24): every duration a stage turns into steps gives 1 ... 1e12 ---------
+      // --- step counts: every duration a stage turns into steps gives 1 ... 1e12 ---------
       // numerics.time_step = 1e-21 with a 0.01 s stage overflowed the count: 0 steps, exit 0.
       {"a time step so small that the steps overflow", Yaml{.numerics = "{time_step: 1.0e-21}",
        .stages = "\n  - {name: a, type: strain_rate, strain_rate: [0.1, 0.1, 0.1], duration: 0.01}"}.text(), C,
@@ -479,7 +479,7 @@ TEST_CASE("scene files that cannot be read are refused naming the file", "[confi
 }
 
 TEST_CASE("a time step above the allowed fraction of the critical step is refused with both numbers", "[config]") {
-  // The SPEC material (kn = 1e6 N/m, density 2650) with 3 ... 4.5 mm spheres: the critical step
+  // The paper's material (kn = 1e6 N/m, density 2650) with 3 ... 4.5 mm spheres: the critical step
   // 2 sqrt(m_min/kn) lies between the values of a 3 mm sphere (1.224e-5 s) and a 4.5 mm sphere,
   // so dt = 1e-4 s is far above 0.2 x critical (~2.5e-6 s).
   const double pi = 3.14159265358979323846;

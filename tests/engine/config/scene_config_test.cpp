@@ -157,7 +157,7 @@ TEST_CASE("the key reference lists every key with unit, range and default", "[co
   CHECK_THAT(ref, Catch::Matchers::Contains("numerics.time_step [s]; (0, 1]; required;"));
   CHECK_THAT(ref, Catch::Matchers::Contains("damping.form; one of: viscous, local; viscous;"));
   CHECK_THAT(ref, Catch::Matchers::Contains("stages[].type; one of: strain_rate, stress, stress_path, control; required;"));
-  // The stress-path defaults: p = 100 kPa and R = 1.24 (SPEC section 3).
+  // The stress-path defaults: p = 100 kPa and R = 1.24 (docs/method.md#stress-paths).
   CHECK_THAT(ref, Catch::Matchers::Contains("stages[].mean_stress [Pa]; (0, 1e+10]; 100000;"));
   CHECK_THAT(ref, Catch::Matchers::Contains("stages[].stress_ratio; [1, 100]; 1.24;"));
 }
@@ -193,6 +193,9 @@ TEST_CASE("the key reference shows optional sections as optional, with their key
   CHECK_THAT(ref, Catch::Matchers::Contains("\n  servo.gain; (0, 1]; 0.001;"));
   CHECK_THAT(ref, Catch::Matchers::Contains("\n  output.interval; integer in [1, 1000000000]; 1000;"));
   CHECK_THAT(ref, Catch::Matchers::Contains("\n  output.flush_rows; integer in [1, 1000000]; 20;"));
+  // Frames are off unless asked for: their section is optional, its interval needed only with it.
+  CHECK_THAT(ref, Catch::Matchers::Contains("\n  output.frames; mapping; optional (absent: frames at the start, each checkpoint and the end only);"));
+  CHECK_THAT(ref, !Catch::Matchers::Contains("\n  output.frames; mapping; required;"));
   // The sections that must be given stay required.
   CHECK_THAT(ref, Catch::Matchers::Contains("\n  material; mapping; required;"));
   CHECK_THAT(ref, Catch::Matchers::Contains("\n  numerics; mapping; required;"));

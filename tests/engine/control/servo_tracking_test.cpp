@@ -65,7 +65,7 @@ TEST_CASE("servo: compresses a gas to the target and tracks a stress ramp withou
   // The stress stage uses the adaptive servo, which learns the ratio kappa of the packing's
   // stiffness to the affine one and so removes the ramp lag e = r dt (1 - kappa)/(gain kappa) of a
   // fixed-stiffness servo (measured on this packing before the servo learnt kappa: 1.4 % of p).
-  // SPEC section 5 asks each principal stress to track its target within 1 % of p (RMS over a
+  // docs/method.md#damping asks each principal stress to track its target within 1 % of p (RMS over a
   // leg); once kappa is learnt this small loose packing (216 spheres) must meet it.
   CHECK(rms <= 0.01 * 1e5);
   // Axes whose target does not move stay within the 1 % band.

@@ -1,4 +1,4 @@
-// Stress paths at constant mean stress (engine/control/stress_path.hpp, SPEC section 3): the named
+// Stress paths at constant mean stress (engine/control/stress_path.hpp, docs/method.md#stress-paths): the named
 // states, the expansion of a path into legs and cycles, the scene keys of a stress_path stage,
 // and a short stress-path run on a tiny packing.
 //
@@ -134,7 +134,7 @@ TEST_CASE("stress path: the named states at p = 100 kPa, R = 1.24", "[control][s
   CHECK_THROWS_WITH(named_state("TC4", p, R), Catch::Matchers::Contains("unknown stress state 'TC4'"));
 }
 
-TEST_CASE("stress path: the five test scenes expand into the SPEC's legs and cycles", "[control][stress_path]") {
+TEST_CASE("stress path: the five test scenes expand into the legs and cycles of docs/method.md#stress-paths", "[control][stress_path]") {
   struct Test {
     int number;
     std::vector<Expected> legs;
@@ -164,14 +164,14 @@ TEST_CASE("stress path: the five test scenes expand into the SPEC's legs and cyc
   const std::map<int, std::size_t> leg_count = {{1, 1 + 30}, {2, 30}, {3, 60}, {4, 1 + 30}, {5, 60}};
   for (const Test& t : tests) {
     INFO("Test " << t.number);
-    REQUIRE(t.legs.size() == leg_count.at(t.number));  // the expectation itself, against the SPEC's counts
+    REQUIRE(t.legs.size() == leg_count.at(t.number));  // the expectation itself, against the counts of docs/method.md#stress-paths
     const std::string file = scene_file(t.number);
     REQUIRE(std::filesystem::exists(file));
     const SceneConfig scene = load_scene(file);
     REQUIRE(scene.stages.size() == 1);
     const StageConfig& st = scene.stages[0];
     REQUIRE((st.type == StageConfig::Type::StressPath));
-    // SPEC section 3: p = 100 kPa, R = 1.24, 2 MPa/s, strains from the start of shearing.
+    // docs/method.md#stress-paths: p = 100 kPa, R = 1.24, 2 MPa/s, strains from the start of shearing.
     CHECK(st.mean_stress_Pa == 1e5);
     CHECK(st.stress_ratio == 1.24);
     CHECK(st.stress_rate_Pa_per_s == 2e6);
@@ -207,7 +207,7 @@ TEST_CASE("stress path: the five test scenes expand into the SPEC's legs and cyc
     // Test 1 lasts 7.4 ms + 30 x 11.1 ms = 340.7 ms of simulated time.
     if (t.number == 1) CHECK(total == Approx(14814.81481 / 2e6 + 30 * 22222.22222 / 2e6).epsilon(1e-9));
   }
-  // The durations in round numbers, as quoted in the SPEC discussion.
+  // The durations in round numbers, as quoted in docs/method.md#stress-paths.
   const std::vector<PathLeg> t4 = expand_path(load_scene(scene_file(4)).stages[0].path, Vec3::Constant(1e5), 2e6);
   CHECK(t4[0].duration_s == Approx(7.407e-3).epsilon(1e-4));  // A -> TC1: 14814.8 Pa / 2 MPa/s
   CHECK(t4[1].duration_s == Approx(7.152e-3).epsilon(1e-4));  // TC1 -> TE3: 14303.9 Pa / 2 MPa/s
@@ -372,7 +372,7 @@ TEST_CASE("stress path: a valid stage gets its defaults and its path survives th
       path_scene("    rate: 2.0e6\n    path: [TC1, {repeat: 2, path: [TE3, [1.1e5, 1.0e5, 0.9e5], A]}, TC2]\n"), "/runs/sp.yaml");
   REQUIRE(a.stages.size() == 1);
   const StageConfig& st = a.stages[0];
-  CHECK(st.mean_stress_Pa == 1e5);  // defaults: SPEC section 3
+  CHECK(st.mean_stress_Pa == 1e5);  // defaults: docs/method.md#stress-paths
   CHECK(st.stress_ratio == 1.24);
   CHECK(st.max_strain_rate_per_s == 1.0);
   CHECK_FALSE(st.reset_strain);
@@ -416,7 +416,7 @@ namespace {
 
 // A tiny packing compressed to p = 100 kPa, written into the scratch folder `name` (one per test
 // case: ctest runs test cases in parallel processes): 64 spheres of 4 ... 4.5 mm on a 4 x 4 x 4
-// lattice of spacing 4.5 mm (an 18 mm cube), SPEC material, dt = 2 us (0.2 x the critical step of
+// lattice of spacing 4.5 mm (an 18 mm cube), the paper's material, dt = 2 us (0.2 x the critical step of
 // a 4 mm sphere is 3.8 us). The stress stage's hold criteria end it within 0.5 % of the target on
 // every axis. About 0.1 s of simulated time, 0.7 s of wall time.
 std::string compressed_sample(const std::string& name) {

@@ -9,8 +9,8 @@
 //   divide the error by more than 3 (about 4 expected; 2 would mean a first-order error).
 // * Damped and frictional: the damping and the Coulomb cap take energy out; both are booked
 //   exactly per step (kernel.hpp: from the leapfrog update itself; linear_spring.hpp: the spring
-//   energy the cap removes), so the balance must close to well within the issue's 1 %.
-// * Every contact law (issue 22), below: what the balance leaves open is the integrator's O(dt^2)
+//   energy the cap removes), so the balance must close to well within the stability study's 1 % criterion.
+// * Every contact law, below: what the balance leaves open is the integrator's O(dt^2)
 //   error, plus, for Hertz-Mindlin, a term of the law itself that the test computes.
 #include <catch2/catch.hpp>
 
@@ -287,7 +287,7 @@ TEST_CASE("Energy balance closes for every contact law, at O(dt^2) once Mindlin'
       {"Hertz frictionless", hertz + "friction: 0}", local},
       {"Hertz-Mindlin", hertz + "friction: 0.5}", local},
       {"Hertz-Mindlin + rolling", hertz + "friction: 0.5, rolling_friction: 0.1, rolling_stiffness: 5.0e4}", local},
-      // Contact dashpots (zeta = 0.05), with the body damping off (SPEC section 7's alternative)
+      // Contact dashpots (zeta = 0.05), with the body damping off (docs/method.md#open-choices's alternative)
       // where the packing still forms its contacts: frictionless spheres without body damping
       // stay a rattling gas (93 contacts at most), so that one keeps viscous damping.
       {"linear + dashpots", linear + "friction: 0, contact_damping: 0.05}", viscous},
@@ -342,7 +342,7 @@ TEST_CASE("Energy balance closes for every contact law, at O(dt^2) once Mindlin'
       // |f_t| = mu f_n up to a few roundings). T takes the elastic f_n; with dashpots the cap takes
       // the total, which this test does not recompute.
       if (!damped) REQUIRE(std::abs(b.mindlin.S) <= b.mindlin.T * (1 + 1e-9));
-      // The run stays far inside the engine's guard (numerics.max_energy_error, 5 %) and the issue's 1 %.
+      // The run stays far inside the engine's guard (numerics.max_energy_error, 5 %) and the stability study's 1 % criterion.
       // Dashpots: the O(dt) bound below; every other law well inside 1 %.
       if (!damped) REQUIRE(e.closure_error() < 1e-2);
       if (damped) REQUIRE(e.closure_error() <= dashpot_bound(dt));
@@ -352,7 +352,7 @@ TEST_CASE("Energy balance closes for every contact law, at O(dt^2) once Mindlin'
     if (jumps) {
       // The force jumps by f_c where a contact closes and opens, at a point of the step the
       // leapfrog does not see: each such event leaves O(f_c |v| dt) open, so the balance closes at
-      // O(dt), 4 over two halvings (and within the issue's 1 %, required above).
+      // O(dt), 4 over two halvings (and within the 1 % criterion, required above).
       REQUIRE(residual[0] / residual[2] > 3);
       continue;
     }

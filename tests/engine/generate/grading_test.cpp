@@ -95,10 +95,10 @@ TEST_CASE("grading curve: same seed gives the same diameters, another seed diffe
 }
 
 TEST_CASE("make_lattice: 20^3 spheres in a 0.1 m cell, graded, no overlaps", "[generate][lattice]") {
-  LatticeSpec spec;  // 20 x 20 x 20 at 5 mm spacing
+  LatticeLayout layout;  // 20 x 20 x 20 at 5 mm spacing
   Particles p;
   PeriodicCell cell;
-  make_lattice(spec, curve(), 2650, p, cell);
+  make_lattice(layout, curve(), 2650, p, cell);
   REQUIRE(p.size() == 8000);
   for (int k = 0; k < 3; ++k) REQUIRE(cell.lengths()[k] == Approx(0.1).epsilon(1e-15));
   REQUIRE(cell.reference_lengths() == cell.lengths());
@@ -121,13 +121,13 @@ TEST_CASE("make_lattice: 20^3 spheres in a 0.1 m cell, graded, no overlaps", "[g
   // Same seed, same packing; the diameters are those of the curve's sampler with that seed, in lattice order.
   Particles q;
   PeriodicCell cell_q;
-  make_lattice(spec, curve(), 2650, q, cell_q);
+  make_lattice(layout, curve(), 2650, q, cell_q);
   REQUIRE(q.radius == p.radius);
-  const std::vector<double> d = sample(8000, spec.seed);
+  const std::vector<double> d = sample(8000, layout.seed);
   double worst = 0;
   for (std::size_t i = 0; i < 8000; ++i) worst = std::max(worst, std::abs(2 * p.radius[i] / d[i] - 1));
   REQUIRE(worst <= 1e-15);  // radius = d/2 and back: exact in binary, allow one rounding
   // A spacing below the largest diameter would make spheres overlap: rejected.
-  spec.spacing_m = 4.4e-3;
-  REQUIRE_THROWS_AS(make_lattice(spec, curve(), 2650, q, cell_q), std::invalid_argument);
+  layout.spacing_m = 4.4e-3;
+  REQUIRE_THROWS_AS(make_lattice(layout, curve(), 2650, q, cell_q), std::invalid_argument);
 }

@@ -40,7 +40,7 @@ std::map<std::string, std::string> h5ls(const std::string& file) {
   return objects;
 }
 
-std::string unit_of(hid_t file, const std::string& dataset) {
+std::string h5md_unit_of(hid_t file, const std::string& dataset) {
   h5::Handle ds(H5Dopen2(file, dataset.c_str(), H5P_DEFAULT));
   REQUIRE(ds.id() >= 0);
   return h5::has_attribute(ds, "unit") ? h5::get_string_attribute(ds, "unit") : "<none>";
@@ -108,7 +108,7 @@ TEST_CASE("a result holds H5MD particle frames at the start and end of the run, 
   }
   h5::Handle f = h5::open_file_read(dir + "/r.h5");
   SECTION("metadata and units") {
-    CHECK(h5::get_int_attribute(f, "schema_version") == 3);
+    CHECK(h5::get_int_attribute(f, "schema_version") == schema_version);
     CHECK(h5::get_string_attribute(h5::open_group(f, "h5md/author"), "name") == "cyclic-triax");
     h5::Handle creator = h5::open_group(f, "h5md/creator");
     CHECK(h5::get_string_attribute(creator, "name") == "dem");
@@ -119,7 +119,7 @@ TEST_CASE("a result holds H5MD particle frames at the start and end of the run, 
         {"angular_velocity/value", "rad s-1"}, {"box/edges/value", "m"}, {"radius", "m"}, {"mass", "kg"}};
     for (const auto& [name, unit] : units) {
       INFO(name);
-      CHECK(unit_of(f, "/particles/all/" + name) == unit);
+      CHECK(h5md_unit_of(f, "/particles/all/" + name) == unit);
     }
   }
   SECTION("frames: steps 0 and 500, the first positions are L o s of the initial particles") {
@@ -163,6 +163,26 @@ TEST_CASE("a result holds H5MD particle frames at the start and end of the run, 
     CHECK(count(xml, dir) == 0);                     // no absolute paths
     if (test::have_program("xmllint")) CHECK(test::run_command("xmllint --noout '" + dir + "/r.xdmf' 2>&1").exit_code == 0);
   }
+}
+
+TEST_CASE("frames come at their own interval, whatever output.interval is", "[io][h5md][frames]") {
+  // 500 steps, rows every 200 steps, frames every 150: frames at 0 (the start), 150, 300, 450 and
+  // 500 (the end); a frame interval that is no multiple of the row interval was refused before
+  // ("not a multiple of output.interval"), and the frames came only with rows. Rows are unchanged:
+  // 0, 200, 400, and the stage's end 500.
+  const std::string dir = test::scratch_dir("h5md_frame_interval");
+  const SceneConfig scene = scene_from_text(
+      test::tiny_scene(squeeze_stage, "{kn: 1.0e6, ks: 1.0e6, friction: 0.5}",
+                       "output: {interval: 200, frames: {interval: 150}}\n"),
+      dir + "/s.yaml");
+  run_scene(scene, dir + "/r.h5");
+  h5::Handle f = h5::open_file_read(dir + "/r.h5");
+  std::size_t cols = 0;
+  CHECK(h5::read<std::int64_t>(f, "particles/all/position/step", cols) == std::vector<std::int64_t>{0, 150, 300, 450, 500});
+  const std::vector<double> row_time = h5::read<double>(f, "timeseries/time", cols);
+  std::vector<long> row_steps;
+  for (double t : row_time) row_steps.push_back(std::lround(t / 1e-6));
+  CHECK(row_steps == std::vector<long>{0, 200, 400, 500});
 }
 
 TEST_CASE("a failed run leaves no XDMF, and its partial result holds only the frames it wrote", "[io][h5md]") {

@@ -83,7 +83,7 @@ inline std::string h5_status(const std::string& file) {
 }
 
 // A tiny valid scene: 27 spheres of 3 ... 4.5 mm on a 3x3x3 lattice of spacing 5 mm (a 15 mm
-// cube), the SPEC material (kn = ks = 1e6 N/m, density 2650), dt = 1 us. `stages` is the YAML
+// cube), the paper's material (kn = ks = 1e6 N/m, density 2650), dt = 1 us. `stages` is the YAML
 // of the `stages:` list (block style, items indented by two spaces).
 inline std::string tiny_scene(const std::string& stages, const std::string& material = "{kn: 1.0e6, ks: 1.0e6, friction: 0.5}",
                               const std::string& extra = "") {

@@ -59,10 +59,13 @@ const std::map<std::string, std::string> state_units = {
     {"cell_strain_rate", "1/s"}, {"contact_first", "1"},          {"contact_second", "1"},
     {"contact_tangential_spring", "m"}, {"contact_sliding", "1"}};
 
+// The `unit` attribute itself (not h5::unit_of, which also reads an older file's `units`): every
+// dataset a result writes names its unit as H5MD's do.
 std::string units_of(hid_t group, const std::string& name) {
   h5::Handle ds(H5Dopen2(group, name.c_str(), H5P_DEFAULT));
   REQUIRE(ds.id() >= 0);
-  return h5::has_attribute(ds, "units") ? h5::get_string_attribute(ds, "units") : "<none>";
+  CHECK_FALSE(h5::has_attribute(ds, "units"));
+  return h5::has_attribute(ds, "unit") ? h5::get_string_attribute(ds, "unit") : "<none>";
 }
 
 }  // namespace
@@ -308,4 +311,25 @@ TEST_CASE("an HDF5 call that fails with nothing on HDF5's error stack and errno 
   CHECK(h5::last_error() == "out of memory (HDF5 recorded no reason; errno ENOMEM)");
   errno = 0;
   CHECK(h5::last_error().empty());
+}
+
+TEST_CASE("h5::unit_of reads the unit of a dataset of this version and of an older one", "[io][result]") {
+  // Results written before 2026-11-27 named the attribute `units` outside the H5MD groups; today
+  // every dataset has `unit`. A hand-made file with one of each, and one with neither.
+  const std::string dir = test::scratch_dir("unit_of");
+  {
+    h5::Handle f = h5::create_file(dir + "/u.h5");
+    h5::write(f, "new", std::vector<double>{1, 2}, 1, "Pa");
+    h5::write(f, "old", std::vector<double>{1, 2}, 1, "m");
+    h5::Handle old(H5Dopen2(f, "old", H5P_DEFAULT));
+    REQUIRE(H5Adelete(old, "unit") >= 0);
+    h5::set_attribute(old, "units", std::string("m"));
+    h5::write(f, "none", std::vector<double>{1}, 1, "s");
+    h5::Handle none(H5Dopen2(f, "none", H5P_DEFAULT));
+    REQUIRE(H5Adelete(none, "unit") >= 0);
+  }
+  h5::Handle f = h5::open_file_read(dir + "/u.h5");
+  CHECK(h5::unit_of(f, "new") == "Pa");
+  CHECK(h5::unit_of(f, "old") == "m");
+  CHECK(h5::unit_of(f, "none").empty());
 }

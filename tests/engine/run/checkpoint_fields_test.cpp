@@ -33,7 +33,7 @@ std::set<std::string> attribute_names(hid_t obj) {
 std::string units_of(hid_t group, const std::string& name) {
   h5::Handle ds(H5Dopen2(group, name.c_str(), H5P_DEFAULT));
   REQUIRE(ds.id() >= 0);
-  return h5::get_string_attribute(ds, "units");
+  return h5::get_string_attribute(ds, h5::unit_attribute);
 }
 
 // 64 spheres of 4.0-4.5 mm at 4.5 mm (a frictional linear law: tangential springs, sliding flags)

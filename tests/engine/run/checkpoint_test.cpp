@@ -309,7 +309,7 @@ void nudge_attribute(const std::string& file, const std::string& object, const s
 }  // namespace
 
 TEST_CASE("a checkpoint with any one value changed is not resumed: it carries a checksum", "[run][checkpoint][input][checksum]") {
-  // Issue 38: a checkpoint with one value changed, still readable and in range, resumed silently
+  // a checkpoint with one value changed, still readable and in range, resumed silently
   // into a "complete" result with another /state. The class swept: one value, changed by one unit
   // in its last place, in each part of a checkpoint (the state, the Verlet list, the energy
   // balance, the stage cursor, an attribute of /checkpoint, the time series and the particle

@@ -127,6 +127,12 @@ TEST_CASE("dem run writes a complete result and dem table prints its columns", "
   CHECK(t.exit_code == 0);
   CHECK(t.out.rfind("# step [1]\tp [Pa]\n0\t", 0) == 0);  // a header with units, then the first row (step 0)
   CHECK(std::count(t.out.begin(), t.out.end(), '\n') == 1 + 6);  // rows at steps 0, 100, ..., 500
+  // summary: one line per result under a header with the same units as table's.
+  const auto sum = dem_stdout("summary '" + dir + "/r.h5'");
+  CHECK(sum.exit_code == 0);
+  CHECK(sum.out.rfind("# file\twall_time [s]\tstep [1]\ttime [s]\t", 0) == 0);
+  CHECK_THAT(sum.out, Catch::Matchers::Contains("\tp [Pa]\t"));
+  CHECK(std::count(sum.out.begin(), sum.out.end(), '\n') == 2);
   const auto bad_column = dem_stderr("table '" + dir + "/r.h5' pressure");
   CHECK(bad_column.exit_code == 2);
   CHECK_THAT(bad_column.out, Catch::Matchers::Contains("has no column 'pressure'"));
@@ -180,7 +186,7 @@ TEST_CASE("dem run exits 2 (bad input) for a bad grading curve, lattice, particl
 }
 
 // ---------------------------------------------------------------------------------------------
-// Result integrity (issue 24): nothing lost, nothing stale. Each case below is written to catch
+// Result integrity: nothing lost, nothing stale. Each case below is written to catch
 // the next case of its class: every point at which a disk can fill up, every file a run keeps
 // beside its result, every file key of a scene, every kind of non-regular file.
 
@@ -631,7 +637,7 @@ TEST_CASE("dem run: paths typed on the command line are relative to the current 
 }
 
 TEST_CASE("dem run reads each particle file once: a FIFO as the CSV runs, a FIFO as the state is refused", "[run][cli][input][fifo]") {
-  // Issue 38, case 1: dem opened particles.csv twice (to parse it, then to hash it into the
+  // Found in review: dem opened particles.csv twice (to parse it, then to hash it into the
   // checkpoint identity), so a FIFO fed once by `cat` hung forever in the second open. The run
   // reads it once now; a saved state (HDF5, read by seeking) must be a regular file. Each source
   // that is a file is swept: csv runs to the same result as from the regular file, state is
@@ -667,7 +673,7 @@ TEST_CASE("dem run reads each particle file once: a FIFO as the CSV runs, a FIFO
 }
 
 TEST_CASE("dem run keeps a resolved scene and warnings of any size: neither is an attribute", "[run][cli][integrity][text]") {
-  // Issue 38, case 5: the resolved scene and the warnings were root attributes, whose object
+  // Found in review: the resolved scene and the warnings were root attributes, whose object
   // header holds 64 KiB: 603 warnings stopped a valid run at step 217,720 ("object header message
   // is too large", exit 1, the result lost), and a scene over 64 KiB failed before its first step.
   // Both are datasets now. The class swept: every text a run records that grows with its input
@@ -731,7 +737,7 @@ TEST_CASE("dem run keeps a resolved scene and warnings of any size: neither is a
 }
 
 TEST_CASE("dem run leaves no lock file, however it ends after taking the lock", "[run][cli][integrity][lock]") {
-  // Issue 38: a run refused after it took OUT.lock (bad input found when the particles are made,
+  // a run refused after it took OUT.lock (bad input found when the particles are made,
   // --resume without a checkpoint) left an empty OUT.lock behind. The class swept: every end of a
   // run that took the lock, refused (exit 2: a result of another scene without --force, a time
   // step above the critical step, --resume with nothing to resume), failed (exit 1) or complete
@@ -778,7 +784,7 @@ TEST_CASE("dem run leaves no lock file, however it ends after taking the lock", 
 }
 
 TEST_CASE("dem run: a hold that fails gives the stresses it reached, measured at the end", "[run][cli][hold]") {
-  // Issue 38: the message said "stress error 0 %, unbalanced force ratio 1" (the values before the
+  // the message said "stress error 0 %, unbalanced force ratio 1" (the values before the
   // hold's first check) while p was far from the target. The 27 spheres of the tiny lattice do not
   // touch (5 mm apart, at most 4.5 mm wide): in 10 steps of a ramp that needs 0.1 s the stress
   // stays 0, so every axis is 100 % off its target of 100 kPa.

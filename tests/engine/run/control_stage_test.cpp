@@ -1,4 +1,4 @@
-// Control stages (issue 38): the inertial number counts every rate component, a stage warns when
+// Control stages: the inertial number counts every rate component, a stage warns when
 // it leaves the quasi-static range, and a stress target the stage never reaches fails it.
 #include <catch2/catch.hpp>
 
@@ -43,7 +43,7 @@ SceneConfig control_scene(const std::string& sample, const std::string& stage) {
 }  // namespace
 
 TEST_CASE("the inertial number takes the largest rate of all six components", "[control][inertial]") {
-  // Issue 38, case 4: only the axial rates counted, so simple shear with the axes fixed reported 0.
+  // Found in review: only the axial rates counted, so simple shear with the axes fixed reported 0.
   // The class swept: each of xx yy zz xy xz yz alone at +r and -r. Expected, from the definition
   // (GDR MiDi 2004): I = |r| d sqrt(rho / p), d the mean diameter of the spheres, computed here
   // from their radii.
@@ -71,7 +71,7 @@ TEST_CASE("the inertial number takes the largest rate of all six components", "[
 
 TEST_CASE("a control stage warns when its inertial number leaves the quasi-static range", "[control][inertial]") {
   // Simple shear, the axes fixed: at 50/s, I = 50 x ~4.25 mm x sqrt(2650 / 1e5) ~ 0.035 > 1e-3;
-  // at 0.01/s, ~7e-6. Before issue 38 neither warned (the shear rate did not count).
+  // at 0.01/s, ~7e-6. Before the fix neither warned (the shear rate did not count).
   const std::string sample = compressed_sample("inertial_control_warns");
   for (const double rate : {50.0, 0.01}) {
     INFO("xy strain rate " << rate);
@@ -94,7 +94,7 @@ TEST_CASE("a control stage warns when its inertial number leaves the quasi-stati
 }
 
 TEST_CASE("a control stage fails when it does not reach its stress targets", "[control][targets]") {
-  // Issue 38: unreachable targets ran to the end with exit 0. The class swept: a stress-controlled
+  // unreachable targets ran to the end with exit 0. The class swept: a stress-controlled
   // axis, a stress-controlled shear and constant_mean_stress's p, each once out of reach in the
   // stage's duration (1e-4 s at a cap of 1/s moves a strain of 1e-4: a few hundred Pa on this
   // sample) and once at the stress the sample holds (100 kPa, no shear stress): the first fails

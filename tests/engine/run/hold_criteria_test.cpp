@@ -1,4 +1,4 @@
-// The hold of a stress stage ends when, and only when, the equilibrium criteria hold (SPEC §2).
+// The hold of a stress stage ends when, and only when, the equilibrium criteria hold (docs/method.md#preparation).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
