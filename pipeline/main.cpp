@@ -17,6 +17,7 @@
 #include "exec/slurm.hpp"
 #include "plan/plan_cost.hpp"
 #include "plan/run_plan.hpp"
+#include "io/failure.hpp"
 
 namespace {
 
@@ -85,7 +86,8 @@ void print_plan(const std::vector<pipeline::PlannedRun>& runs, double throughput
 
 }  // namespace
 
-int main(int argc, char** argv) {
+// The tool; main runs it under guarded_main (a file system error names its path, exit 1).
+int tool_main(int argc, char** argv) {
   namespace fs = std::filesystem;
   std::vector<std::string> study_files;
   std::string profile, out, dem;  // profile "": each study's paper profile if it declares one, else its first
@@ -107,8 +109,9 @@ int main(int argc, char** argv) {
   app.add_flag("--plan", plan_only,
       "write the resolved scenes, list the runs with their particle-steps, the critical path and the wall time "
       "on 1, 2, 16 and 64 cores; run nothing");
-  app.add_option("--throughput", throughput, "particle-steps per second of one run on one core, for --plan's estimates")
-      ->check(CLI::PositiveNumber);
+  app.add_option("--throughput", throughput, "particle-steps per second of one run on one core, for --plan's estimates "
+                                             "(1e3 to 1e12 particle-steps/s)")
+      ->check(CLI::Range(1e3, 1e12));
   app.add_option("--executor", executor,
       "local: runs here as child processes; slurm: one sbatch job per run, options in the study's slurm: mapping "
       "(default: the study's executor: key, else local)")
@@ -124,6 +127,10 @@ int main(int argc, char** argv) {
   if (threads == 0) threads = std::max(1, cores / jobs);
   if (study_files.size() > 1 && !out.empty()) {
     std::fprintf(stderr, "pipeline: --out names the results folder of one study; give one study file with it\n");
+    return 2;
+  }
+  if (std::error_code ec; !out.empty() && fs::exists(out, ec) && !fs::is_directory(out, ec)) {
+    std::fprintf(stderr, "pipeline: --out '%s' is not a folder (the results folder of the study: made if missing)\n", out.c_str());
     return 2;
   }
   if (dem.empty()) dem = (fs::canonical("/proc/self/exe").parent_path() / "dem").string();
@@ -190,3 +197,5 @@ int main(int argc, char** argv) {
     return 1;
   }
 }
+
+int main(int argc, char** argv) { return dem::guarded_main("pipeline", [&] { return tool_main(argc, argv); }); }
