@@ -339,10 +339,11 @@ int summary(const std::vector<std::string>& files) {
   return status;
 }
 
-// OpenMP threads that wait for work spin by default (libgomp: about 300,000 iterations), so one
-// that waits while the other's core is taken by another process burns its own core for nothing:
-// beside one busy process, Test 1 (1,000 spheres) took 2 threads 3.5 times as long as 1. Waiting
-// passively (asleep until woken) avoids it. libgomp reads OMP_WAIT_POLICY once, when it is loaded,
+// OpenMP threads that wait for work spin by default (libgomp: 300,000 iterations), so one that
+// waits while the other's core is taken by another process burns its own core for nothing. Test 1
+// (1,000 spheres) cut to its first leg, beside a busy shell loop on a shared 2-core machine (load
+// average 20): 1 thread 3.3 s, 2 threads spinning 90.9 s, 2 threads waiting passively (asleep
+// until woken) 1.4 s. libgomp reads OMP_WAIT_POLICY once, when it is loaded,
 // before main: so a run on several threads starts itself again with it set, unless the caller set
 // it (or GOMP_SPINCOUNT) on purpose. If the new start fails, the run goes on as it is.
 void wait_passively(char** argv) {

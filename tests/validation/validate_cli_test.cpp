@@ -4,6 +4,7 @@
 // there, an --out that is not a folder: 2, with a message, never an uncaught exception.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -262,4 +263,43 @@ TEST_CASE("validate: a reference file or manifest that would be read wrong in si
   CHECK_THAT(r.out, Catch::Contains((dir / "results" / "runs.tsv").string() +
                                     ": line 3: the run 'seed1/dense_prepare' again (line 2 lists it)"));
   CHECK_FALSE(fs::exists(dir / "out" / "validation.json"));  // nothing judged on a misread input
+}
+
+TEST_CASE("validate: a NaN in a result and a copied sample are named, exit 1", "[validate][cli]") {
+  // Three samples of one density: seed2's preparation is seed1's copied, seed3's has a NaN as the
+  // last void ratio. Both would pass as data: the copy counts one sample twice, the NaN spoils the
+  // row's statistics.
+  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "validate_cli_nan_copy";
+  fs::remove_all(dir);
+  const std::string sample = std::string(DEM_SOURCE_DIR) + "/scenes/samples/dense_1k.h5";
+  for (int seed = 1; seed <= 3; ++seed) {
+    fs::create_directories(dir / "results" / ("seed" + std::to_string(seed)));
+    fs::copy_file(sample, dir / "results" / ("seed" + std::to_string(seed)) / "dense_prepare.h5");
+  }
+  {
+    dem::h5::Handle f = dem::h5::open_file_write((dir / "results" / "seed3" / "dense_prepare.h5").string());
+    dem::h5::Handle g = dem::h5::open_group(f, "timeseries");
+    std::size_t cols = 0;
+    std::vector<double> e = dem::h5::read<double>(g, "void_ratio", cols);
+    REQUIRE_FALSE(e.empty());
+    e.back() = std::nan("");
+    REQUIRE(H5Ldelete(g, "void_ratio", H5P_DEFAULT) >= 0);
+    dem::h5::write(g, "void_ratio", e, 1, "1");
+  }
+  {
+    std::ofstream runs(dir / "results" / "runs.tsv");
+    runs << "# variant\tdensity\ttest\trun\tresult\tstarts_from\tmay_fail\tsettings\tseed\n";
+    for (int seed = 1; seed <= 3; ++seed)
+      runs << "-\tdense\t-\tseed" << seed << "/dense_prepare\t/x/seed" << seed << "/dense_prepare.h5\t-\t0\tas written\t" << seed << "\n";
+  }
+  std::ofstream(dir / "refs.yaml") << "source: lab\nrows:\n  - {name: e0, quantity: void_ratio_after_preparation, reference: 0.6, "
+                                      "check: within, tolerance: 0.1, source: lab, reason: r}\n";
+  const auto r = validate("--results '" + (dir / "results").string() + "' --references '" + (dir / "refs.yaml").string() + "' --out '" +
+                          (dir / "out").string() + "'");
+  INFO(r.out);
+  CHECK(r.exit_code == 1);
+  CHECK_THAT(r.out, Catch::Contains("error: seed1 and seed2 have the same dense preparation (every value of its last row)"));
+  CHECK_THAT(r.out, Catch::Contains("error: row 'e0': sample seed3 gives nan, from " + (dir / "results" / "seed3").string() +
+                                    " (dense_prepare): a non-finite number in its results"));
+  CHECK_THAT(r.out, !Catch::Contains("seed3 have the same"));
 }
