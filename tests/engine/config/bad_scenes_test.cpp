@@ -587,5 +587,5 @@ TEST_CASE("a particle-making error names the scene file and the particle source"
   const SceneConfig bad_csv = load_scene(folder + "/bad_csv_scene.yaml");
   REQUIRE_THROWS_MATCHES(build_simulation(bad_csv), ConfigError,
                          Catch::Matchers::Message(folder + "/bad_csv_scene.yaml: particles.csv: " + bad_csv.particles.path +
-                                                  ": line 3: radius must be > 0 m, got -0.002000"));
+                                                  ": line 3: radius must be > 0 m, got -0.002"));
 }

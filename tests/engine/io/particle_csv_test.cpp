@@ -166,9 +166,10 @@ TEST_CASE("a CSV line with a trailing comma (5 fields) is refused", "[io][csv]")
   // Trailing blanks after the comma do not hide it.
   test::write_text(file, "x,y,z,radius\n0.005,0.005,0.005,0.002, \n");
   CHECK_THROWS_WITH(read_particle_csv(file, cell20mm, 2650, p), Catch::Matchers::StartsWith(file + ": line 2: trailing comma"));
-  // Control: the same line without the comma (and with trailing blanks) is read.
-  test::write_text(file, "x,y,z,radius\n0.005,0.005,0.005,0.002 \n");
+  // Control: the same line without the comma (and with trailing blanks) is read (with a second
+  // sphere: a packing needs 2).
+  test::write_text(file, "x,y,z,radius\n0.005,0.005,0.005,0.002 \n0.015,0.005,0.005,0.002\n");
   Particles ok;
   read_particle_csv(file, cell20mm, 2650, ok);
-  CHECK(ok.size() == 1);
+  CHECK(ok.size() == 2);
 }
