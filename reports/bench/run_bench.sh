@@ -85,8 +85,9 @@ done
 # Threads beside other work: the 1,000-sphere Test 1 (scenes/tests/test1.yaml, a whole `dem run`) on 1
 # and 2 threads, on the machine as it is and beside a busy core (a shell loop at the same priority).
 # OpenMP threads that spin while they wait made 2 threads 28 times slower than 1 beside a busy core
-# (Test 1's first leg: 90.9 s against 3.3 s); dem's threads wait passively (engine/cli/dem_main.cpp),
-# and this table shows what that leaves.
+# (Test 1's first leg: 90.9 s against 3.3 s) and, on a machine at load average 8, the whole Test 1
+# 344.7 s against 32.0 s (38.7 s waiting passively); dem's threads wait passively
+# (engine/cli/dem_main.cpp), and this table shows what that leaves.
 echo "== threads beside a busy core (dem run scenes/tests/test1.yaml) =="
 run_seconds() {  # run_seconds THREADS: wall seconds of one run
   rm -f "$work"/threads.h5*
