@@ -18,6 +18,7 @@
 #include "exec/slurm.hpp"
 #include "plan/plan_cost.hpp"
 #include "plan/run_plan.hpp"
+#include "io/failure.hpp"
 
 namespace {
 
@@ -118,7 +119,8 @@ void print_plan(const std::vector<pipeline::PlannedRun>& runs, double throughput
 
 }  // namespace
 
-int main(int argc, char** argv) {
+// The tool; main runs it under guarded_main (a file system error names its path, exit 1).
+int tool_main(int argc, char** argv) {
   namespace fs = std::filesystem;
   if (argc > 1 && std::string(argv[1]) == "new") return new_study(argc - 1, argv + 1);
   std::vector<std::string> study_files;
@@ -141,8 +143,8 @@ int main(int argc, char** argv) {
   app.add_flag("--plan", plan_only,
       "write the resolved scenes, list the runs with their particle-steps, the critical path and the wall time "
       "on 1, 2, 16 and 64 cores; run nothing");
-  app.add_option("--throughput", throughput, "particle-steps per second of one run on one core, for --plan's estimates")
-      ->check(CLI::PositiveNumber);
+  app.add_option("--throughput", throughput, "particle-steps per second of one run on one core, for --plan's estimates "
+                                             "(1e3 to 1e12 particle-steps/s)");
   app.add_option("--executor", executor,
       "local: runs here as child processes; slurm: one sbatch job per run, options in the study's slurm: mapping "
       "(default: the study's executor: key, else local)")
@@ -154,10 +156,19 @@ int main(int argc, char** argv) {
     const int rc = app.exit(e);
     return rc == 0 ? 0 : 2;
   }
+  if (!(throughput >= 1e3 && throughput <= 1e12)) {  // 1e-300 gave estimates of 63 digits
+    std::fprintf(stderr, "pipeline: --throughput %g particle-steps/s is outside 1000 to 1e+12 particle-steps/s (one run on one "
+                 "core; the default, %g, is the engine's on 8,000 spheres)\n", throughput, pipeline::default_throughput);
+    return 2;
+  }
   const bool local_slots_given = jobs_opt->count() > 0 || threads_opt->count() > 0;
   if (threads == 0) threads = std::max(1, cores / jobs);
   if (study_files.size() > 1 && !out.empty()) {
     std::fprintf(stderr, "pipeline: --out names the results folder of one study; give one study file with it\n");
+    return 2;
+  }
+  if (std::error_code ec; !out.empty() && fs::exists(out, ec) && !fs::is_directory(out, ec)) {
+    std::fprintf(stderr, "pipeline: --out '%s' is not a folder (the results folder of the study: made if missing)\n", out.c_str());
     return 2;
   }
   if (dem.empty()) dem = (fs::canonical("/proc/self/exe").parent_path() / "dem").string();
@@ -224,3 +235,5 @@ int main(int argc, char** argv) {
     return 1;
   }
 }
+
+int main(int argc, char** argv) { return dem::guarded_main("pipeline", [&] { return tool_main(argc, argv); }); }

@@ -6,6 +6,9 @@
 // sample standard deviation, number of samples, min, max (validation/figures.hpp,
 // cycle_statistics). Cycle 0 is the first row of the test (the start of shearing); the sliding
 // fraction starts at cycle 1, as the paper's Figure 11.
+// Exit status: 0; 1 if a result file is there but cannot be read as a complete result, no test
+// result was found, or a file cannot be written; 2 for bad arguments or a RESULTS_DIR that is not
+// a folder.
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -16,8 +19,10 @@
 #include "figures.hpp"
 #include "io/atomic_file.hpp"
 #include "results.hpp"
+#include "io/failure.hpp"
 
-int main(int argc, char** argv) {
+// The tool; main runs it under guarded_main (a file system error names its path, exit 1).
+int tool_main(int argc, char** argv) {
   namespace fs = std::filesystem;
   CLI::App app{"ensemble-cycles: per-cycle statistics of an ensemble (eps_v, coordination number, sliding fraction: mean, "
                "sd, samples, min, max per cycle), one file per density, test and quantity"};
@@ -31,8 +36,14 @@ int main(int argc, char** argv) {
     const int rc = app.exit(e);  // prints the help, or the error naming the option
     return rc == 0 ? 0 : 2;      // bad arguments: exit 2, as always
   }
+  if (const std::string bad = validation::folder_problem(results); !bad.empty()) {
+    std::fprintf(stderr, "ensemble-cycles: RESULTS_DIR '%s' %s (a study's results folder: seed<N>/ folders or one sample's results)\n",
+                 results.c_str(), bad.c_str());
+    return 2;
+  }
   std::vector<std::string> missing;
   const auto samples = validation::load_samples(results, {"loose", "medium", "dense"}, missing);
+  if (validation::report_unreadable("ensemble-cycles", missing)) return 1;  // lost, not merely not run
   // The results folder as written into the files: relative, never an absolute path of this machine.
   const fs::path rel = fs::absolute(results).lexically_normal().lexically_relative(fs::current_path());
   const std::string shown = rel.empty() ? fs::path(results).filename().string() : rel.string();
@@ -55,10 +66,16 @@ int main(int argc, char** argv) {
           ++files;
         }
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "error: %s\n", e.what());
+    std::fprintf(stderr, "error: %s\n", dem::describe_failure(e).c_str());
     return 1;
   }
   std::printf("ensemble-cycles: %zu samples, %d files, %zu result files missing -> %s\n", samples.size(), files, missing.size(),
               out.c_str());
+  if (files == 0) {
+    std::fprintf(stderr, "ensemble-cycles: no complete test result in %s (<density>_test<N>.h5): nothing written\n", results.c_str());
+    return 1;
+  }
   return 0;
 }
+
+int main(int argc, char** argv) { return dem::guarded_main("ensemble-cycles", [&] { return tool_main(argc, argv); }); }

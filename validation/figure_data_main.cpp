@@ -40,6 +40,7 @@
 #include "io/atomic_file.hpp"
 #include "io/hdf5.hpp"
 #include "io/state_io.hpp"
+#include "io/failure.hpp"
 
 namespace fs = std::filesystem;
 using validation::Table;
@@ -59,9 +60,28 @@ using validation::stage_of_type;
 using validation::joined;
 
 // ---------------------------------------------------------------------------------------------
+// True if the results folder of a sub-command is a folder; else false, said on stderr (exit status 2).
+bool results_folder_ok(const std::string& what, const std::string& dir) {
+  const std::string bad = validation::folder_problem(dir);
+  if (!bad.empty()) std::fprintf(stderr, "figure-data: %s '%s' %s\n", what.c_str(), dir.c_str(), bad.c_str());
+  return bad.empty();
+}
+
+// True (with a message) when none of the samples has a single complete result.
+bool no_results(const std::vector<validation::Sample>& samples, const std::string& results) {
+  for (const validation::Sample& s : samples)
+    for (const auto& [density, r] : s.densities)
+      if (r.prepared || !r.tests.empty()) return false;
+  std::fprintf(stderr, "figure-data: no complete result in %s (<density>_prepare.h5, <density>_test<N>.h5): nothing written\n",
+               results.c_str());
+  return true;
+}
+
 int figures(const std::string& results, const std::string& out, std::string sample, const std::string& references) {
+  if (!results_folder_ok("RESULTS_DIR", results)) return 2;
   std::vector<std::string> missing;
   const std::vector<validation::Sample> samples = validation::load_samples(results, densities, missing);
+  if (validation::report_unreadable("figure-data", missing) || no_results(samples, results)) return 1;
   if (sample.empty()) sample = samples.front().name;
   const std::string sample_label = sample.empty() ? fs::path(samples.front().dir).filename().string() : sample;
   const auto chosen = std::find_if(samples.begin(), samples.end(), [&](const validation::Sample& s) { return s.name == sample; });
@@ -293,6 +313,7 @@ int figures(const std::string& results, const std::string& out, std::string samp
 
 // ---------------------------------------------------------------------------------------------
 int settings(const std::string& results, const std::string& prefix, const std::string& run) {
+  if (!results_folder_ok("RESULTS_DIR", results)) return 2;
   const std::map<std::string, std::string> kv = validation::run_settings(results, prefix, run);
   if (kv.empty()) {
     std::fprintf(stderr, "figure-data settings: no result with a scene in %s (%s<density>_prepare.h5 ...)\n",
@@ -328,11 +349,17 @@ std::string signed_fixed(double x, int digits) {
 }
 
 int samples_table(const std::vector<std::string>& folders, const std::string& references, bool per_sample, const std::string& baseline) {
+  for (const std::string& results : folders)
+    if (!results_folder_ok("RESULTS_DIR", results)) return 2;
   const std::vector<validation::Row> paper = validation::load_references(references, "paper");
   std::vector<Preparation> preps;
+  std::vector<std::string> lost;
   const auto add = [&](const std::string& group, const std::string& density, const std::string& sample, const std::string& file) {
     try {
-      if (!validation::is_complete(file)) return;
+      if (!validation::is_complete(file)) {
+        lost.push_back(file);  // missing (not run) or there but unreadable: report_unreadable tells
+        return;
+      }
       Preparation p{group, density, sample, {}, 0, 0};
       const validation::Columns c = validation::read_columns(file, "timeseries");
       for (const auto& [name, v] : c)
@@ -342,7 +369,8 @@ int samples_table(const std::vector<std::string>& folders, const std::string& re
       if (dem::h5::exists(f, "particles/all/position/value")) p.particles = static_cast<double>(dem::h5::shape(f, "particles/all/position/value").at(1));
       preps.push_back(p);
     } catch (const std::exception& e) {
-      std::fprintf(stderr, "figure-data: %s: %s, left out\n", shown(file).c_str(), e.what());
+      std::fprintf(stderr, "figure-data: %s: %s\n", shown(file).c_str(), e.what());
+      lost.push_back(file);
     }
   };
   for (const std::string& results : folders) {
@@ -363,6 +391,7 @@ int samples_table(const std::vector<std::string>& folders, const std::string& re
         for (const std::string& d : densities) add("", d, name, (fs::path(dir) / (d + "_prepare.h5")).string());
     }
   }
+  if (validation::report_unreadable("figure-data", lost)) return 1;  // lost, not merely not run
   if (preps.empty()) {
     std::fprintf(stderr, "figure-data samples-table: no complete preparation in %s\n", joined(folders, ", ").c_str());
     return 1;
@@ -440,6 +469,8 @@ int samples_table(const std::vector<std::string>& folders, const std::string& re
 }  // namespace
 
 int tests_table(const std::string& dir) {
+  if (!results_folder_ok("SAMPLE_DIR", dir)) return 2;
+  std::vector<std::string> lost;  // not complete: not run, or there but unreadable
   validation::MarkdownTable md({"density", "test", "steps", "wall time (s)", "worst leg RMS tracking error (% of p)",
                                 "largest inertial number", "last cycle", "εv cycle 1 (%)", "εv last cycle (%)", "CN cycle 0",
                                 "CN cycle 1", "CN last cycle"});
@@ -447,6 +478,7 @@ int tests_table(const std::string& dir) {
     for (int t = 1; t <= 5; ++t) {
       const std::string file = (fs::path(dir) / (std::string(d) + "_test" + std::to_string(t) + ".h5")).string();
       if (!validation::is_complete(file)) {
+        lost.push_back(file);
         md.row({d, std::to_string(t), "not run", "", "", "", "", "", "", "", "", ""});
         continue;
       }
@@ -456,11 +488,13 @@ int tests_table(const std::string& dir) {
       md.row({d, std::to_string(t), l.steps, validation::fixed(dem::h5::get_double_attribute(f, "wall_time_s"), 0), l.tracking_percent,
               l.inertial_number, l.last_cycle, l.ev_cycle1, l.ev_last, l.cn_start, l.cn_cycle1, l.cn_last});
     }
+  if (validation::report_unreadable("figure-data", lost)) return 1;  // never "not run" for a result that was lost
   std::fputs(md.text().c_str(), stdout);
   return 0;
 }
 
-int main(int argc, char** argv) {
+// The tool; main runs it under guarded_main (a file system error names its path, exit 1).
+int tool_main(int argc, char** argv) {
   CLI::App app{"figure-data: the data behind the report's figures and the numbers its text quotes, from a study's results, "
                "its resolved scenes and reference_data/paper.yaml"};
   app.name("figure-data");
@@ -506,7 +540,9 @@ int main(int argc, char** argv) {
     if (*tests) return tests_table(results);
     return samples_table(folders, table_references, per_sample, baseline);
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "figure-data: %s\n", e.what());
+    std::fprintf(stderr, "figure-data: %s\n", dem::describe_failure(e).c_str());
     return 1;
   }
 }
+
+int main(int argc, char** argv) { return dem::guarded_main("figure-data", [&] { return tool_main(argc, argv); }); }

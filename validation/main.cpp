@@ -15,10 +15,12 @@
 // and what a reading that explains it does to the rows consistent here (decisions_file.hpp).
 // Every row is computed per sample; its verdict compares the reference's value, widened by the
 // row's tolerance, with the 95 % prediction interval of a single sample of the ensemble (rows.hpp).
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -34,6 +36,7 @@
 #include "row_runs.hpp"
 #include "rows.hpp"
 #include "study_results.hpp"
+#include "io/failure.hpp"
 
 namespace fs = std::filesystem;
 
@@ -250,9 +253,45 @@ std::string verdicts_text(const std::vector<Judged>& judged, const Counts& c, st
   return out.str();
 }
 
+// Each value of a row that is not a finite number (a NaN or an infinity in a result), named with its
+// row, its sample and the runs it read.
+std::vector<std::string> non_finite_values(const std::vector<Judged>& judged, const std::string& results) {
+  std::vector<std::string> out;
+  for (const Judged& j : judged)
+    for (const auto& ps : j.result.samples)
+      if (ps.measured.value && !std::isfinite(*ps.measured.value)) {
+        std::string runs = j.runs.preparation ? j.runs.density + "_prepare" : "";
+        for (const std::string& t : j.runs.tests) runs += (runs.empty() ? "" : ", ") + j.runs.density + "_" + t;
+        out.push_back("row '" + j.row.name + "': " + (ps.sample.empty() ? "the sample" : "sample " + ps.sample) + " gives " +
+                      number(*ps.measured.value) + ", from " + (fs::path(results) / ps.sample).string() + " (" + runs +
+                      "): a non-finite number in its results");
+      }
+  return out;
+}
+
+// Pairs of samples whose runs a row read are the same to the last digit (every value of the last
+// rows of the preparation): a copied sample folder would count one sample twice.
+std::vector<std::string> copied_samples(const std::vector<Judged>& judged, const validation::StudyResults& results) {
+  std::vector<std::string> out;
+  std::set<std::string> said;
+  const std::vector<std::string>& samples = results.samples();
+  for (const Judged& j : judged)
+    for (std::size_t a = 0; a < samples.size(); ++a)
+      for (std::size_t b = a + 1; b < samples.size(); ++b) {
+        const validation::DensityResults* x = results.of(j.runs, samples[a]);
+        const validation::DensityResults* y = results.of(j.runs, samples[b]);
+        if (!x || !y || !x->prepared || !y->prepared || x->sample.empty() || x->sample != y->sample) continue;
+        const std::string what = samples[a] + " and " + samples[b] + " have the same " + j.runs.density + " preparation";
+        if (said.insert(what).second)
+          out.push_back(what + " (every value of its last row): a copied sample folder counts one sample twice");
+      }
+  return out;
+}
+
 }  // namespace
 
-int main(int argc, char** argv) {
+// The tool; main runs it under guarded_main (a file system error names its path, exit 1).
+int tool_main(int argc, char** argv) {
   int code = 2;
   const std::optional<Options> opt = parse_options(argc, argv, code);
   if (!opt) return code;
@@ -271,6 +310,15 @@ int main(int argc, char** argv) {
     findings = read_findings(o.decisions, refs.rows);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: --decisions %s\n", e.what());
+    return 2;
+  }
+  // A file that declares profiles knows them all: another name than those and paper (every row as
+  // written) is a typo, which would judge every row as written.
+  if (!refs.profiles.empty() && !refs.profiles.count(o.profile) && o.profile != "paper") {
+    std::string known = "paper (every row as written)";
+    for (const std::string& p : refs.profiles) known += ", " + p;
+    std::fprintf(stderr, "error: --profile '%s': no row of %s has it; its profiles: %s\n", o.profile.c_str(), o.references.c_str(),
+                 known.c_str());
     return 2;
   }
   if (const std::string bad = check_folders(o); !bad.empty()) {
@@ -321,7 +369,7 @@ int main(int argc, char** argv) {
   json["samples"] = results.samples();
   json["missing_samples"] = missing_samples;
   json["missing_results"] = nlohmann::json::array();
-  for (const std::string& m : missing) json["missing_results"].push_back(fs::relative(m, o.results).string());
+  for (const std::string& m : missing) json["missing_results"].push_back(fs::path(m).lexically_relative(o.results).string());  // lexical: a link loop cannot throw
   json["rows"] = nlohmann::json::array();
   validation::MarkdownTable md(validation_headings(refs.label));
   for (const Judged& j : judged) {
@@ -369,9 +417,19 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "error: %d row(s) not judged (fewer than 2 samples with a value): %s\n", not_judged, names.c_str());
     status = 1;
   }
+  if (const std::vector<std::string> bad = non_finite_values(judged, o.results); !bad.empty()) {
+    for (const std::string& b : bad) std::fprintf(stderr, "error: %s\n", b.c_str());
+    status = 1;
+  }
+  if (const std::vector<std::string> copies = copied_samples(judged, results); !copies.empty()) {
+    for (const std::string& c : copies) std::fprintf(stderr, "error: %s\n", c.c_str());
+    status = 1;
+  }
   if (count.must_pass_failed > 0) {
     std::fprintf(stderr, "error: %d must-pass row(s) inconsistent with the %s\n", count.must_pass_failed, refs.label.c_str());
     status = 1;
   }
   return status;
 }
+
+int main(int argc, char** argv) { return dem::guarded_main("validate", [&] { return tool_main(argc, argv); }); }

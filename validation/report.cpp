@@ -1,5 +1,7 @@
 #include "report.hpp"
 
+#include "core/text.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -548,6 +550,28 @@ std::string shear_control_table(const std::vector<Sample>& samples) {
     md.row(cells);
   }
   return md.text();
+}
+
+namespace {
+
+std::string first_line(const std::string& s) { return s.substr(0, s.find('\n')); }
+
+}  // namespace
+
+void check_previous_report(const std::string& previous, const std::string& fresh, const std::string& what) {
+  if (const std::size_t at = dem::first_non_text(previous); at != std::string::npos)
+    throw std::runtime_error(what + " is not a report: binary content at byte " + std::to_string(at) +
+                             " (an HDF5 or other binary file?); give an earlier reports/index.md");
+  const std::string title = first_line(fresh), theirs = first_line(previous);
+  if (theirs != title)
+    throw std::runtime_error(what + " is not a report of this template: its first line is '" +
+                             (theirs.size() > 80 ? theirs.substr(0, 80) + "..." : theirs) + "', expected '" + title + "'");
+  if (previous.find("\nGenerated on ") == std::string::npos)
+    throw std::runtime_error(what + " is not a report of this template: it has no 'Generated on' line");
+  const auto sections = sections_of(fresh).second;
+  const std::string last = sections.empty() ? "" : sections.back().first;
+  if (previous.empty() || previous.back() != '\n' || (!last.empty() && previous.find("\n" + last + "\n") == std::string::npos))
+    throw std::runtime_error(what + " is cut short: it ends before its last section '" + last + "' (a truncated copy?)");
 }
 
 }  // namespace validation

@@ -85,4 +85,10 @@ std::string state_a_table(const std::vector<Sample>& samples);
 // of its tests ("—" where a column is missing, e.g. results written before the columns existed).
 std::string shear_control_table(const std::vector<Sample>& samples);
 
+// Throws, naming `what` (the option and file), unless `previous` is a whole report of this
+// template: text (no NUL byte, valid UTF-8: not an HDF5 or other binary file), the same title line
+// as `fresh`, a "Generated on" line, and the last section of `fresh` present with the file ending
+// in a newline (a report cut short is not taken).
+void check_previous_report(const std::string& previous, const std::string& fresh, const std::string& what);
+
 }  // namespace validation

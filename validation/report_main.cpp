@@ -10,8 +10,9 @@
 // REPORT_DIR holds what the other tools wrote (validation.md, verdicts.md, figures/, samples.md,
 // decisions/, convergence/, stability/, critical_state/, liquefaction/, bench.md); a part that is
 // missing is said so in its section. --baseline: an earlier baseline's validation.json, compared
-// row by row. Exit status: 0; 1 if the report cannot be written or a template names an unknown
-// key; 2 for bad arguments.
+// row by row. Exit status: 0; 1 if the report cannot be written, a template names an unknown key
+// or a result file is there but cannot be read; 2 for bad arguments or a --results that is not a
+// folder (one that does not exist is accepted with --previous).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -33,12 +34,14 @@
 #include "ensemble.hpp"
 #include "format.hpp"
 #include "io/atomic_file.hpp"
+#include "json_file.hpp"
 #include "io/hdf5.hpp"
 #include "markdown_table.hpp"
 #include "report.hpp"
 #include "settings.hpp"
 #include "source_hash.hpp"
 #include "version.hpp"
+#include "io/failure.hpp"
 
 namespace fs = std::filesystem;
 
@@ -103,7 +106,8 @@ std::size_t seeds_in(const std::string& dir, const std::string& variant) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+// The tool; main runs it under guarded_main (a file system error names its path, exit 1).
+int tool_main(int argc, char** argv) {
   std::map<std::string, std::string> opt = {{"--profile", "paper"}, {"--templates", "reports/templates"}};
   CLI::App app{"report: writes the study report REPORT_DIR/index.md from a study's results, the validation output, the figures, "
                "the other studies' tables, the resolved scenes and reference_data/ (the text: TEMPLATES/index.md, every number "
@@ -137,6 +141,14 @@ int main(int argc, char** argv) {
     }
   const std::string results = opt["--results"], out = opt["--out"];
   std::error_code ec;
+  // Nothing to report on is an error: --results must be a folder; one that does not exist only
+  // with --previous (a machine without that study's results keeps its sections from that report).
+  if (const std::string bad = validation::folder_problem(results);
+      !bad.empty() && !(bad == "does not exist" && !opt["--previous"].empty())) {
+    std::fprintf(stderr, "report: --results '%s' %s (a study's results folder: seed<N>/ folders or one sample's results%s)\n",
+                 results.c_str(), bad.c_str(), bad == "does not exist" ? "; --previous FILE keeps the sections without results" : "");
+    return 2;
+  }
   if (fs::exists(out, ec) && !fs::is_directory(out, ec)) {
     std::fprintf(stderr, "report: --out '%s' is not a folder\n", out.c_str());
     return 2;
@@ -150,6 +162,7 @@ int main(int argc, char** argv) {
     std::vector<std::string> missing;
     const bool have_results = fs::is_directory(results, ec);
     if (have_results) in.samples = validation::load_samples(results, densities, missing);
+    if (validation::report_unreadable("report", missing)) return 1;  // lost, not merely not run
     in.sample = opt["--sample"];
     validation::Values v = validation::figure_values(in);
     if (!v.count("sample")) v["sample"] = "—", v["samples_n"] = "0";
@@ -308,9 +321,7 @@ int main(int argc, char** argv) {
 
     // The earlier baseline (orthorhombic cell) row by row, and q/p at state A of every sample.
     if (!opt["--baseline"].empty() && !in.samples.empty()) {
-      std::ifstream f(opt["--baseline"]);
-      if (!f) throw std::runtime_error("--baseline '" + opt["--baseline"] + "' cannot be read");
-      const nlohmann::json before = nlohmann::json::parse(f);
+      const nlohmann::json before = validation::read_json_file(opt["--baseline"]);  // errors name the file
       v["baseline.file"] = opt["--baseline"];
       v["baseline.table"] = validation::baseline_table(before, in.rows, in.samples);
     }
@@ -359,6 +370,7 @@ int main(int argc, char** argv) {
     if (!opt["--previous"].empty()) {
       const std::string previous = read_text(opt["--previous"]);
       if (previous.empty()) throw std::runtime_error("--previous '" + opt["--previous"] + "' is missing or empty");
+      validation::check_previous_report(previous, text, "--previous '" + opt["--previous"] + "'");
       std::vector<std::string> kept;
       validation::keep_sections_without_inputs(text, previous, kept);
       if (!kept.empty()) {
@@ -373,8 +385,10 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "report written to %s (%zu sample(s) of %s%s)\n", (report / "index.md").c_str(), in.samples.size(),
                  shown(results).c_str(), missing.empty() ? "" : (", " + std::to_string(missing.size()) + " result files missing").c_str());
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "report: %s\n", e.what());
+    std::fprintf(stderr, "report: %s\n", dem::describe_failure(e).c_str());
     return 1;
   }
   return 0;
 }
+
+int main(int argc, char** argv) { return dem::guarded_main("report", [&] { return tool_main(argc, argv); }); }

@@ -1,6 +1,7 @@
 #include "results.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 
@@ -109,7 +110,11 @@ std::vector<std::pair<std::string, std::string>> sample_dirs(const std::string& 
   std::error_code ec;
   for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
     const std::string name = e.path().filename().string();
-    if (!e.is_directory() || name.size() < 5 || name.compare(0, 4, "seed") != 0) continue;
+    if (name.size() < 5 || name.compare(0, 4, "seed") != 0) continue;
+    std::error_code status;
+    const bool folder = e.is_directory(status);
+    if (status) throw fs::filesystem_error("a sample folder", e.path(), status);  // e.g. a link to itself
+    if (!folder) continue;
     const std::string digits = name.substr(4);
     if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 18) continue;
     seeds.emplace_back(std::stoll(digits), name);
@@ -126,6 +131,41 @@ std::vector<Sample> load_samples(const std::string& dir, const std::vector<std::
   std::vector<Sample> out;
   for (const auto& [name, folder] : sample_dirs(dir)) out.push_back({name, folder, load_results(folder, densities, missing)});
   return out;
+}
+
+std::string folder_problem(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status st = fs::status(dir, ec);
+  if (st.type() == fs::file_type::not_found) return "does not exist";
+  if (ec) return ec.message();
+  return fs::is_directory(st) ? "" : "is not a folder";
+}
+
+std::vector<std::string> unreadable_results(const std::vector<std::string>& missing) {
+  std::vector<std::string> out;
+  for (const std::string& file : missing) {
+    std::error_code ec;
+    const auto st = std::filesystem::symlink_status(file, ec);
+    if (!ec && st.type() != std::filesystem::file_type::not_found) out.push_back(file);
+  }
+  return out;
+}
+
+bool report_unreadable(const std::string& tool, const std::vector<std::string>& missing) {
+  const std::vector<std::string> lost = unreadable_results(missing);
+  for (const std::string& file : lost) {
+    std::string why;
+    try {
+      const dem::h5::Handle f = dem::h5::open_file_read(file);
+      const std::string status = dem::h5::has_attribute(f, "status") ? dem::h5::get_string_attribute(f, "status") : "";
+      why = status == "complete" ? "its columns cannot be read" : "status '" + status + "'";
+    } catch (const std::exception& e) {
+      why = e.what();
+    }
+    std::fprintf(stderr, "%s: %s: cannot be read as a complete result (%s)\n", tool.c_str(), file.c_str(), why.c_str());
+  }
+  return !lost.empty();
 }
 
 }  // namespace validation

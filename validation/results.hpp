@@ -66,4 +66,17 @@ std::vector<std::pair<std::string, std::string>> sample_dirs(const std::string& 
 std::vector<Sample> load_samples(const std::string& dir, const std::vector<std::string>& densities,
                                  std::vector<std::string>& missing);
 
+// Why `dir` cannot be a results folder ("does not exist", "is not a folder", the system's reason
+// when its status cannot be read, e.g. a symbolic link loop), or "" when it is a folder.
+std::string folder_problem(const std::string& dir);
+
+// Of the result files listed as missing or not complete, those that are there: a file that exists
+// but cannot be read as a complete result (truncated, damaged, not HDF5, a link loop) was lost,
+// not merely not run, and a tool that reads results fails on it instead of leaving it out.
+std::vector<std::string> unreadable_results(const std::vector<std::string>& missing);
+
+// Prints each unreadable result ("<tool>: <file>: cannot be read as a complete result (<why>)") to
+// stderr; true if there was one.
+bool report_unreadable(const std::string& tool, const std::vector<std::string>& missing);
+
 }  // namespace validation

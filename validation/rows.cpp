@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 #include <sstream>
+#include <set>
 
 #include "config/yaml_section.hpp"
 #include "format.hpp"
@@ -37,6 +38,8 @@ std::map<std::string, ProfileEntry> profile_entries(dem::Section& s, const Row& 
     dem::Section e(kv.second, s.file(), s.key_path("profiles") + "." + name);
     ProfileEntry entry;
     entry.tolerance = e.number("tolerance", "", {0, 1e9}, r.tolerance, "tolerance for this profile");
+    if (entry.tolerance > 0 && r.check != "within")
+      e.fail("tolerance", "applies to check: within only; with check: " + r.check + " write the bound into reference");
     entry.must_pass = e.boolean("must_pass", false, "must be consistent for this profile");
     entry.reason = e.text("reason", std::nullopt, "why the tolerance differs for this profile");
     e.finish();
@@ -62,6 +65,8 @@ Row read_row(dem::Section& s, const std::string& name) {
   r.reference = s.number("reference", "", {-1e9, 1e9}, std::nullopt, "reference value");
   r.check = s.choice("check", {"within", "at_least", "at_most"}, std::nullopt, "how measured and reference compare");
   r.tolerance = s.number("tolerance", "", {0, 1e9}, 0.0, "allowed |measured - reference| for check: within");
+  if (r.tolerance > 0 && r.check != "within")  // it would be ignored in silence
+    s.fail("tolerance", "applies to check: within only; with check: " + r.check + " write the bound into reference");
   r.resolution = s.number("resolution", "", {0, 1e9}, 0.0,
                           "the smallest difference that means something (shifts are counted in max(sd, resolution))");
   r.must_pass = s.boolean("must_pass", false, "an inconsistent verdict fails the validation");
@@ -117,10 +122,13 @@ References read_references(const std::string& file, const std::string& profile) 
   refs.source = root.text("source", std::nullopt, "where the reference values come from");
   refs.label = root.text("label", std::string("reference"), "what the tables call the reference (paper.yaml: paper)");
   std::vector<std::pair<Row, std::map<std::string, ProfileEntry>>> rows;
+  std::map<std::string, std::string> first_of;  // row name -> where it was first given
   for (dem::Section& s : root.list("rows", "the checked statements")) {
     std::string name;
     try {
       name = s.text("name", std::nullopt, "row name");
+      if (const auto [it, fresh] = first_of.emplace(name, s.path()); !fresh)
+        s.fail("name", "'" + name + "' is the name of " + it->second + " too; each row needs its own (the tables are keyed on it)");
       Row r = read_row(s, name);
       auto entries = profile_entries(s, r);
       try {
@@ -136,6 +144,8 @@ References read_references(const std::string& file, const std::string& profile) 
   root.finish();
   // A profile the file names in some row's `profiles` judges only those rows, with their entries.
   const bool restricted = std::any_of(rows.begin(), rows.end(), [&](const auto& r) { return r.second.count(profile) > 0; });
+  for (const auto& [r, entries] : rows)
+    for (const auto& [n, e] : entries) refs.profiles.insert(n);
   for (auto& [r, entries] : rows) {
     const auto it = entries.find(profile);
     if (it != entries.end()) r.tolerance = it->second.tolerance, r.must_pass = it->second.must_pass, r.reason = it->second.reason;

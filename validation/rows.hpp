@@ -2,6 +2,7 @@
 // The rows of a reference file (reference_data/paper.yaml, or a user's own: validation/README.md)
 // and their evaluation on an ensemble of samples: each row's value per sample, the spread, and the
 // verdict against the reference's statement.
+#include <set>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,7 @@ struct References {
   std::string source;  // where the values come from
   std::string label;   // what the tables call the reference: "paper" in paper.yaml, "reference" by default
   std::vector<Row> rows;
+  std::set<std::string> profiles;  // the profiles some row names (`profiles:` entries)
 };
 
 // The rows of a reference file for a profile. A row may carry per-profile entries (`profiles:

@@ -21,12 +21,20 @@ std::string num(double x) { return number(x); }
 
 // The resolved scene a result ran (its `scene_yaml`), if the result can be read.
 std::optional<dem::SceneConfig> scene_of(const std::string& result) {
+  std::error_code ec;
+  if (std::filesystem::symlink_status(result, ec).type() == std::filesystem::file_type::not_found) return std::nullopt;  // not run
+  std::string text;
   try {
     dem::h5::Handle f = dem::h5::open_file_read(result);
     if (!dem::h5::has_text(f, "scene_yaml")) return std::nullopt;  // a dataset (schema 3) or an attribute (before)
-    return dem::scene_from_text(dem::h5::read_text(f, "scene_yaml"), result);
+    text = dem::h5::read_text(f, "scene_yaml");
+  } catch (const std::exception& e) {  // there, but lost: never left out in silence
+    throw std::runtime_error(result + ": cannot be read as a result (" + e.what() + ")");
+  }
+  try {
+    return dem::scene_from_text(text, result);
   } catch (const std::exception&) {
-    return std::nullopt;
+    return std::nullopt;  // a scene this engine no longer reads (an older result): its settings are not known
   }
 }
 

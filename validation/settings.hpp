@@ -10,7 +10,9 @@
 
 namespace validation {
 
-// The resolved scene a result ran (its `scene_yaml` attribute), if the result can be read.
+// The resolved scene a result ran (its `scene_yaml` attribute); nothing if the file is not there,
+// has no scene, or its scene is one this engine no longer reads; throws, naming the file, if the
+// file is there but cannot be read (truncated, not HDF5).
 std::optional<dem::SceneConfig> scene_of(const std::string& result);
 // The first stage of that type, or null.
 const dem::StageConfig* stage_of_type(const dem::SceneConfig& s, dem::StageConfig::Type type);

@@ -1,11 +1,15 @@
 #include "config/yaml_section.hpp"
 
+#include "core/text.hpp"
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <set>
+#include <yaml-cpp/depthguard.h>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -160,6 +164,8 @@ Section::Section(YAML::Node node, std::string file, std::string path)
       throw ConfigError(msg.str());
     }
     const std::string key = kv.first.Scalar();
+    if (key == "<<")  // YAML 1.1's merge key: yaml-cpp reads it as a key named "<<"
+      fail("", "a merge key '<<'" + where(kv.first) + " is not supported: write the keys it would merge out in full");
     if (!seen.insert(key).second) fail(key, "duplicate key" + where(kv.first));
   }
 }
@@ -223,13 +229,55 @@ YAML::Node apply_override(YAML::Node root, const std::string& file, const std::s
   return node;  // not reached: the last segment returns above
 }
 
+namespace {
+
+// What a scene or study file must be before YAML reads it: at most max_yaml_bytes of UTF-8 text
+// without NUL or control characters (a binary file, a name with an escape sequence in it).
+void check_yaml_text(const std::string& text, const std::string& file) {
+  if (text.size() > max_yaml_bytes)
+    throw ConfigError(file + ": " + std::to_string(text.size() >> 20) + " MiB, more than the " + std::to_string(max_yaml_bytes >> 20) +
+                      " MiB a scene or study file may hold");
+  const std::size_t at = first_non_text(text, true);
+  if (at == std::string::npos) return;
+  const auto c = static_cast<unsigned char>(text[at]);
+  char code[8];
+  std::snprintf(code, sizeof code, "0x%02x", c);
+  const std::string what = c == 0 ? "a NUL byte (a binary file?)"
+                           : c < 0x80 ? std::string("the control character ") + code + " (not allowed in a scene or study)"
+                                      : std::string("the byte ") + code + ", not UTF-8 text (save the file as UTF-8)";
+  throw ConfigError(file + ": line " + std::to_string(line_of(text, at)) + ": " + what);
+}
+
+// The nesting depth of a YAML tree: mappings and sequences within each other.
+std::size_t depth_of(const YAML::Node& n, std::size_t limit) {
+  if (limit == 0 || !(n.IsMap() || n.IsSequence())) return 0;
+  std::size_t deepest = 0;
+  if (n.IsMap())
+    for (const auto& kv : n) deepest = std::max(deepest, depth_of(kv.second, limit - 1));
+  else
+    for (const auto& item : n) deepest = std::max(deepest, depth_of(item, limit - 1));
+  return 1 + deepest;
+}
+
+}  // namespace
+
 Section Section::from_text(const std::string& text, const std::string& file, const Overrides& overrides) {
+  check_yaml_text(text, file);
   YAML::Node root;
   try {
-    root = YAML::Load(text);
+    const std::vector<YAML::Node> documents = YAML::LoadAll(text);
+    if (documents.size() > 1)
+      throw ConfigError(file + ": holds " + std::to_string(documents.size()) +
+                        " YAML documents (separated by '---'); a scene or study is one: remove the others");
+    if (!documents.empty()) root = documents.front();
+  } catch (const YAML::DeepRecursion& e) {
+    throw ConfigError(file + ": line " + std::to_string(e.mark.line + 1) + ": nested too deeply for YAML to read (a scene or study " +
+                      "nests a few levels: a stray run of '[' or '{'?)");
   } catch (const YAML::Exception& e) {
     throw ConfigError(file + ": not valid YAML: " + e.what());
   }
+  if (root && depth_of(root, max_yaml_depth + 1) > max_yaml_depth)
+    throw ConfigError(file + ": nested more than " + std::to_string(max_yaml_depth) + " levels deep (a scene or study nests a few)");
   if (!root || root.IsNull()) throw ConfigError(file + ": the file is empty");
   if (!root.IsMap()) throw ConfigError(file + ": the file must be a mapping of keys, got " + scalar_text(root));
   auto set = std::make_shared<std::vector<YAML::Node>>();

@@ -39,6 +39,11 @@ YAML::Node apply_override(YAML::Node root, const std::string& file, const std::s
 bool parse_decimal(const std::string& text, double& x, std::string& why);
 bool parse_decimal_integer(const std::string& text, long long& x, std::string& why);
 
+// What a scene or study file may be (checked before YAML reads it, config/yaml_section.cpp): at
+// most this many bytes, mappings and sequences nested at most this deep.
+inline constexpr std::size_t max_yaml_bytes = 16u << 20;  // 16 MiB
+inline constexpr std::size_t max_yaml_depth = 32;
+
 struct Range {
   double min, max;
   bool min_open = false;  // true: value must be > min rather than >= min

@@ -3,9 +3,11 @@
 #include <fcntl.h>
 #include <sys/file.h>
 #include <sys/stat.h>
+#include <sys/sysmacros.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -50,6 +52,22 @@ void FileLock::note(const std::string& text) const {
     if (n <= 0) return;  // a note is a courtesy: the lock holds without it
     done += static_cast<std::size_t>(n);
   }
+}
+
+bool FileLock::held_by_a_process(const std::string& path) {
+  struct stat st{};
+  if (stat(path.c_str(), &st) != 0) return false;
+  // A line of /proc/locks: "1: FLOCK  ADVISORY  WRITE 4242 08:01:123456 0 EOF" (device major:minor
+  // in hex, then the inode).
+  char id[64];
+  std::snprintf(id, sizeof id, "%02x:%02x:%llu", major(st.st_dev), minor(st.st_dev), static_cast<unsigned long long>(st.st_ino));
+  std::ifstream locks("/proc/locks");
+  for (std::string line; std::getline(locks, line);) {
+    std::istringstream fields(line);
+    for (std::string f; fields >> f;)
+      if (f == id) return true;
+  }
+  return false;
 }
 
 std::string FileLock::read_note(const std::string& path) {

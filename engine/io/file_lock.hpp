@@ -25,6 +25,9 @@ class FileLock {
   const std::string& error() const { return error_; }
   // Held: replaces the lock file's content (e.g. who holds it, for the message of another taker).
   void note(const std::string& text) const;
+  // Whether a process holds a lock on the file at `path` (from /proc/locks: looking takes no lock,
+  // so it never stands in the way of a taker); false if there is no such file or it cannot be told.
+  static bool held_by_a_process(const std::string& path);
   // The content of the lock file at `path` ("" if none): what its holder noted.
   static std::string read_note(const std::string& path);
 

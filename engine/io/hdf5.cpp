@@ -1,5 +1,7 @@
 #include "io/hdf5.hpp"
 
+#include "io/file_lock.hpp"
+
 #include <algorithm>
 #include <cerrno>
 #include <cstdint>
@@ -102,13 +104,32 @@ Handle create_file(const std::string& path) {
   return Handle(f);
 }
 
+namespace {
+
+// The lock a dem run holds while it writes the family of OUT (OUT.partial, OUT.checkpoint): OUT.lock.
+std::string writer_lock_of(const std::string& path) {
+  for (const char* suffix : {".partial", ".checkpoint"}) {
+    const std::string sfx = suffix;
+    if (path.size() > sfx.size() && path.compare(path.size() - sfx.size(), sfx.size(), sfx) == 0)
+      return path.substr(0, path.size() - sfx.size()) + ".lock";
+  }
+  return path + ".lock";
+}
+
+}  // namespace
+
 Handle open_file_read(const std::string& path) {
   silence();
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw Error(path + ": no such file");
+  const bool regular = std::filesystem::is_regular_file(path, ec);
+  if (ec && ec != std::errc::no_such_file_or_directory) throw Error(path + ": " + ec.message());  // e.g. a link loop
+  if (!regular) throw Error(path + ": no such file");
   const hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  if (f < 0) throw Error(path + ": not a readable HDF5 file (truncated or corrupt?)");
-  return Handle(f);
+  if (f >= 0) return Handle(f);
+  // A result still being written is not damaged: HDF5 refuses to open it while its writer has it.
+  if (const std::string lock = writer_lock_of(path); FileLock::held_by_a_process(lock))
+    throw Error(path + ": being written by a running dem run (it holds " + lock + "); read it when the run has ended");
+  throw Error(path + ": not a readable HDF5 file (truncated or corrupt?)");
 }
 
 Handle open_file_write(const std::string& path) {

@@ -1,5 +1,6 @@
 #pragma once
 // Particles from a CSV file: a header line `x,y,z,radius` (metres), then one sphere per line.
+#include <cstddef>
 #include <string>
 
 #include "cell/periodic_cell.hpp"
@@ -7,9 +8,19 @@
 
 namespace dem {
 
+// What a particle file may hold, checked when it is read.
+constexpr double csv_min_radius_m = 1e-6;             // radii in [1 um, 1 m]
+constexpr double csv_max_radius_m = 1.0;
+constexpr double csv_min_centre_distance = 0.5;       // two centres at least this x the sum of their radii apart
+constexpr std::size_t csv_max_bytes = 256u << 20;     // 256 MiB (about 3 million spheres)
+constexpr std::size_t csv_max_echo = 80;              // characters of a bad token an error repeats
+
 // Reads spheres into `particles` (positions wrapped into the cell). Throws std::runtime_error
-// naming the file and line for a missing header, a wrong column count, a non-number, a non-finite
-// value or a non-positive radius.
+// naming the file and line for a missing header, a wrong column count, a non-number (repeated up
+// to csv_max_echo characters), a non-finite value, a radius outside [csv_min_radius_m,
+// csv_max_radius_m], a centre more than one radius outside the cell [0, L] on an axis, two centres
+// (the nearest periodic images) closer than csv_min_centre_distance x the sum of their radii (both
+// lines named), or fewer than 2 spheres.
 void read_particle_csv(const std::string& file, const PeriodicCell& cell, double density_kg_per_m3, Particles& particles);
 
 // The same from the file's bytes, read once by the caller (a FIFO can be read only once: the run
@@ -18,7 +29,8 @@ void parse_particle_csv(const std::string& text, const std::string& file, const 
                         Particles& particles);
 
 // The whole content of `file`, opened once (also a FIFO); throws std::runtime_error naming the
-// file when it is a directory or cannot be read.
-std::string read_whole_file(const std::string& file);
+// file when it is a directory, cannot be read, or holds more than `max_bytes` (read no further:
+// /dev/zero is refused after max_bytes).
+std::string read_whole_file(const std::string& file, std::size_t max_bytes = csv_max_bytes);
 
 }  // namespace dem

@@ -41,11 +41,6 @@ void ColumnTable::flush() {
   }
 }
 
-std::string describe_failure(const std::exception& e) {
-  if (dynamic_cast<const std::bad_alloc*>(&e)) return std::string("out of memory (") + e.what() + ")";
-  return e.what();
-}
-
 ResultWriter::ResultWriter(std::string out_path, const SceneConfig& scene)
     : out_(std::move(out_path)), partial_(out_ + ".partial"), flush_rows_(static_cast<std::size_t>(scene.output.flush_rows)),
       frame_contacts_(scene.output.frames_contacts) {

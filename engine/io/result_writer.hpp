@@ -16,13 +16,10 @@
 #include "analysis/columns.hpp"
 #include "config/scene_config.hpp"
 #include "io/h5md.hpp"
+#include "io/failure.hpp"  // describe_failure: the reason in the status "failed: <reason>"
 #include "io/hdf5.hpp"
 
 namespace dem {
-
-// The reason a run stopped, as the status "failed: <reason>" and `dem` say it: the exception's
-// message, and "out of memory (std::bad_alloc)" for a failed allocation.
-std::string describe_failure(const std::exception& e);
 
 // A group of equally long, extendable columns, filled row by row and flushed in batches.
 class ColumnTable {

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <chrono>
+#include <csignal>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <new>
 #include <numbers>
@@ -44,7 +46,7 @@ std::string read_particle_source(const SceneConfig& scene) {
         throw std::runtime_error(src.path + ": not a regular file (a FIFO, device or socket): a saved state is an HDF5 file, "
                                  "read by seeking in it; give a regular file");
       try {
-        return read_whole_file(src.path);
+        return read_whole_file(src.path, std::numeric_limits<std::size_t>::max());  // a regular file: no cap
       } catch (const std::runtime_error&) {
         return "";
       }
@@ -164,9 +166,17 @@ struct StageLoop {
 // for one, progress at the loop's first step and every progress_every steps after, then the
 // stage's end of the step. `i` is the stage's iteration, which its callables advance. The stage
 // runs at least one step (the step counts of a scene are checked when it is read).
+// The interruption of a run by the signal `signo` (StageHooks::stop), named.
+[[noreturn]] void interrupted(int signo) {
+  const char* name = signo == SIGTERM ? "SIGTERM" : signo == SIGINT ? "SIGINT" : signo == SIGHUP ? "SIGHUP" : nullptr;
+  throw RunInterrupted(std::string("interrupted by ") + (name ? name : "signal " + std::to_string(signo)) +
+                       " (a checkpoint, if one was written, lets the run resume)");
+}
+
 template <class Loop>
 void run_steps(Simulation& sim, const SceneConfig& scene, const StageHooks& hooks, const std::int64_t& i, Loop loop) {
   for (std::int64_t k = 0;; ++k) {
+    if (hooks.stop && *hooks.stop) interrupted(*hooks.stop);
     if (i > 0 && hooks.checkpoint_due && hooks.checkpoint_due(sim)) hooks.checkpoint(sim, loop.cursor());
     const bool row = loop.step();
     if (hooks.row && (row || output_due(sim, scene))) hooks.row(sim, loop.where());
@@ -595,6 +605,7 @@ RunSummary run_stages(Simulation& sim, const SceneConfig& scene, const Checkpoin
     last_checkpoint_step = s.step_count();
     last_checkpoint_wall = clock::now();
   };
+  hooks.stop = observer.stop;
   hooks.warning = [&](const std::string& w) {
     if (observer.warning) observer.warning(w);
     out.add_warning(w);

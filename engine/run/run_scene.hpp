@@ -1,6 +1,7 @@
 #pragma once
 // Running a scene: building the simulation from its particle source, then its stages in order.
 #include <array>
+#include <csignal>
 #include <functional>
 #include <string>
 
@@ -66,6 +67,14 @@ struct StageHooks {
   // stage does is a step.
   std::function<bool(const Simulation&)> checkpoint_due;
   std::function<void(const Simulation&, const StageCursor&)> checkpoint;
+  // Read before every step when set: non-zero (a signal number) stops the stage with RunInterrupted.
+  const volatile std::sig_atomic_t* stop = nullptr;
+};
+
+// Thrown between two steps when StageHooks::stop (RunObserver::stop) became non-zero: the run was
+// asked to stop (SIGTERM, SIGINT); its reason names the signal.
+struct RunInterrupted : std::runtime_error {
+  using std::runtime_error::runtime_error;
 };
 
 // Thrown when a stage cannot reach its goal (e.g. equilibrium not reached in max_duration).
@@ -117,6 +126,10 @@ struct RunObserver {
   std::function<void(const RunProgress&)> progress;  // every 256 steps
   std::function<void(const std::string&)> warning;   // e.g. inertial number above 1e-3 (also kept in the result)
   std::function<void(const std::string&)> note;      // about the checkpoint: resuming from it, or why not
+  // When set, read before every step: a non-zero value (the number of the signal a handler caught)
+  // stops the run between two steps with RunInterrupted; the partial result's status then says
+  // "failed: interrupted by SIG...".
+  const volatile std::sig_atomic_t* stop = nullptr;
 };
 
 // Runs a whole scene and writes the result file (see io/result_writer.hpp for the guarantees),

@@ -245,6 +245,7 @@ Study load_study(const std::string& file) {
   Study st;
   st.file = file;
   st.name = root.text("name", std::nullopt, "study name");
+  check_path_name(root, "name", st.name);  // messages and the results' records name the study
   st.output = resolve(file, root.text("output", std::nullopt, "results folder, relative to the study file"));
   st.preparation = resolve(file, root.text("preparation", std::nullopt, "preparation scene template (docs/method.md#preparation)"));
   require_file(root, "preparation", st.preparation);

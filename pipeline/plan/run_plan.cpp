@@ -3,6 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
@@ -199,8 +200,19 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
     r.result = (fs::path(out_dir) / (r.name + ".h5")).string();
     r.log = (fs::path(out_dir) / "logs" / (r.name + ".log")).string();
   };
+  // A plan of very many runs (each scene resolved and checked) takes a while: progress on stderr,
+  // at most every 2 s, so that it is not taken for a hang.
+  const auto started = std::chrono::steady_clock::now();
+  auto said = started;
+  std::size_t sample_no = 0;
   for (const Sample& sample_of : samples)
   for (std::size_t vi = 0; vi < variants.size(); ++vi) {
+    if (vi == 0) ++sample_no;
+    if (const auto now = std::chrono::steady_clock::now(); now - said > std::chrono::seconds(2)) {
+      said = now;
+      std::fprintf(stderr, "[pipeline] planning study '%s': %zu runs so far, sample %zu of %zu (%.0f s)\n", study.name.c_str(),
+                   runs.size(), sample_no, samples.size(), std::chrono::duration<double>(now - started).count());
+    }
     const Variant& v = variants[vi];
     const std::string where = named ? "variants[" + std::to_string(vi) + "] (" + v.name + ")" : "";
     const std::string prefix = sample_of.folder + (named ? v.name + "_" : "");

@@ -10,6 +10,7 @@
 
 #include "config/study_config.hpp"
 #include "config/yaml_section.hpp"
+#include "engine/io/io_test_support.hpp"
 
 namespace fs = std::filesystem;
 
@@ -30,6 +31,7 @@ const std::vector<BadStudy> catalogue = {
     {"empty file", "", {"the file is empty"}},
     {"a list, not a mapping", "- a\n- b\n", {"must be a mapping", "got a list"}},
     {"missing name", "output: out\npreparation: prep.yaml\n" + density + good_tail, {"name: missing"}},
+    {"empty name", "name: \"\"\noutput: out\npreparation: prep.yaml\n" + density + good_tail, {"name: must be non-empty text"}},
     {"duplicate key", "name: s\n" + head + density + good_tail, {"name: duplicate key", "line 2"}},
     {"misspelt key", head + "densites: [{name: loose, friction: 0.5}]\n" + good_tail, {"densities: must be a non-empty list"}},
     {"negative friction", head + "densities: [{name: loose, friction: -1}]\n" + good_tail,
@@ -181,4 +183,24 @@ TEST_CASE("every study name that becomes part of a file name is checked, by one 
     std::ofstream(file, std::ios::trunc) << study(ok, ok + std::string("_t"), "v1");  // density and test names differ
     CHECK_NOTHROW(pipeline::load_study(file));
   }
+}
+
+TEST_CASE("pipeline: an --out that is a file and a --throughput out of range are refused, exit 2", "[pipeline][input]") {
+  const std::string bin = std::string(DEM_BINARY_DIR) + "/bin";
+  if (!fs::exists(bin + "/pipeline")) return;
+  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "pipeline_bad_options";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "file") << "x";
+  const std::string study = std::string(DEM_SOURCE_DIR) + "/pipeline/studies/paper.yaml";
+  const auto run = [&](const std::string& args) {
+    return dem::test::run_command("'" + bin + "/pipeline' '" + study + "' " + args + " 2>&1");
+  };
+  auto r = run("--profile quick --plan --out '" + (dir / "file").string() + "'");
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.out, Catch::Matchers::Contains("--out '" + (dir / "file").string() + "' is not a folder"));
+  // 1e-300 particle-steps/s made --plan print a 63-digit number of hours.
+  r = run("--profile quick --plan --throughput 1e-300");
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.out, Catch::Matchers::Contains("--throughput 1e-300 particle-steps/s is outside 1000 to 1e+12 particle-steps/s"));
 }

@@ -556,7 +556,28 @@ TEST_CASE("report --previous: a section whose inputs are not here is the previou
   }
 }
 
-// no number in the report's text is typed. After taking out what is not a number of the
+TEST_CASE("report --previous: junk, an HDF5 file and a report cut short are refused, naming the file", "[report]") {
+  const std::string fresh = "# Title\nGenerated on 2026-11-26\n\n## A\nnew A\n\n## Provenance\nnew\n";
+  const std::string what = "--previous 'old.md'";
+  const std::string whole = "# Title\nGenerated on 2026-11-20\n\n## A\nold A\n\n## Provenance\nold\n";
+  CHECK_NOTHROW(validation::check_previous_report(whole, fresh, what));
+  std::ifstream h5(std::string(DEM_SOURCE_DIR) + "/scenes/samples/dense_1k.h5", std::ios::binary);
+  std::string hdf5(4096, '\0');
+  h5.read(hdf5.data(), 4096);  // the HDF5 signature starts with 0x89, no UTF-8 lead byte
+  CHECK_THROWS_WITH(validation::check_previous_report(hdf5, fresh, what),
+                    "--previous 'old.md' is not a report: binary content at byte 0 (an HDF5 or other binary file?); give an earlier "
+                    "reports/index.md");
+  CHECK_THROWS_WITH(validation::check_previous_report("hello\n", fresh, what),
+                    "--previous 'old.md' is not a report of this template: its first line is 'hello', expected '# Title'");
+  CHECK_THROWS_WITH(validation::check_previous_report("# Title\nno date\n", fresh, what),
+                    "--previous 'old.md' is not a report of this template: it has no 'Generated on' line");
+  // Cut in the middle of a line, and cut at a line end before the last section.
+  for (const std::string& cut : {whole.substr(0, whole.size() - 2), whole.substr(0, whole.find("## Provenance"))})
+    CHECK_THROWS_WITH(validation::check_previous_report(cut, fresh, what),
+                      "--previous 'old.md' is cut short: it ends before its last section '## Provenance' (a truncated copy?)");
+}
+
+// No number in the report's text is typed. After taking out what is not a number of the
 // results (keys, code spans, names: §N, Fig. N, Test N, TC1, σ1, ε3), the digits left in the
 // templates are the paper's own captions and definitions, listed here one by one; a number typed
 // into a sentence (a note's "reaches 0.22–0.69 %", a method's "limit 1 %") fails this test.

@@ -4,6 +4,7 @@
 // there, an --out that is not a folder: 2, with a message, never an uncaught exception.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -220,4 +221,85 @@ TEST_CASE("validate: validation.md and verdicts.md read back cell by cell, a '|'
   for (const auto& line : m) CHECK(line.size() == 5);
   CHECK(m[0] == std::vector<std::string>{"row", "verdict", "lab|2020", "interval of one sample", "holds in"});
   CHECK(m[2] == std::vector<std::string>{"peak | dense", "— not judged", "30 ± 2", "—", "0 of 0"});
+}
+
+TEST_CASE("validate: a reference file or manifest that would be read wrong in silence is refused, exit 2", "[validate][cli][references]") {
+  // Two rows of one name, a tolerance that check: at_least would ignore, a profile the file does
+  // not have (paper.yaml names `quick`: `quik` would judge every row as written), a run runs.tsv
+  // lists twice (its sample would be counted twice).
+  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "validate_cli_silent";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "results" / "seed1");
+  const auto manifest = [&](int copies) {
+    std::ofstream runs(dir / "results" / "runs.tsv");
+    runs << "# variant\tdensity\ttest\trun\tresult\tstarts_from\tmay_fail\tsettings\tseed\n";
+    for (int k = 0; k < copies; ++k) runs << "-\tdense\t-\tseed1/dense_prepare\t/x/seed1/dense_prepare.h5\t-\t0\tas written\t1\n";
+  };
+  const auto run = [&](const std::string& rows, const std::string& profile = "paper") {
+    const fs::path file = dir / "refs.yaml";
+    std::ofstream(file) << "source: lab\nrows:\n" << rows;
+    return validate("--results '" + (dir / "results").string() + "' --references '" + file.string() + "' --out '" + (dir / "out").string() +
+                    "' --profile " + profile);
+  };
+  const std::string row = "  - {name: e0, quantity: void_ratio_after_preparation, reference: 0.6, check: within, tolerance: 0.1, source: lab, reason: r}\n";
+  const std::string refs_file = (dir / "refs.yaml").string();
+  manifest(1);
+  auto r = run(row + row);
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.out, Catch::Contains(refs_file + ": rows[1] (\"e0\").name: 'e0' is the name of rows[0] too"));
+  r = run("  - {name: e0, quantity: void_ratio_after_preparation, reference: 0.6, check: at_least, tolerance: 0.1, source: lab, reason: r}\n");
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.out, Catch::Contains(refs_file + ": rows[0] (\"e0\").tolerance: applies to check: within only; with check: at_least"));
+  r = validate("--results '" + (dir / "results").string() + "' --references '" + refs + "' --out '" + (dir / "out").string() +
+               "' --profile quik");
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.out, Catch::Contains("--profile 'quik': no row of " + refs + " has it; its profiles: paper (every row as written), quick"));
+  // A file that names no profile takes any (the study's own profile names).
+  CHECK(run(row, "small").exit_code == 1);  // judged: its result is missing (exit 1), not refused
+  fs::remove_all(dir / "out");
+  manifest(2);
+  r = run(row);
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.out, Catch::Contains((dir / "results" / "runs.tsv").string() +
+                                    ": line 3: the run 'seed1/dense_prepare' again (line 2 lists it)"));
+  CHECK_FALSE(fs::exists(dir / "out" / "validation.json"));  // nothing judged on a misread input
+}
+
+TEST_CASE("validate: a NaN in a result and a copied sample are named, exit 1", "[validate][cli]") {
+  // Three samples of one density: seed2's preparation is seed1's copied, seed3's has a NaN as the
+  // last void ratio. Both would pass as data: the copy counts one sample twice, the NaN spoils the
+  // row's statistics.
+  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "validate_cli_nan_copy";
+  fs::remove_all(dir);
+  const std::string sample = std::string(DEM_SOURCE_DIR) + "/scenes/samples/dense_1k.h5";
+  for (int seed = 1; seed <= 3; ++seed) {
+    fs::create_directories(dir / "results" / ("seed" + std::to_string(seed)));
+    fs::copy_file(sample, dir / "results" / ("seed" + std::to_string(seed)) / "dense_prepare.h5");
+  }
+  {
+    dem::h5::Handle f = dem::h5::open_file_write((dir / "results" / "seed3" / "dense_prepare.h5").string());
+    dem::h5::Handle g = dem::h5::open_group(f, "timeseries");
+    std::size_t cols = 0;
+    std::vector<double> e = dem::h5::read<double>(g, "void_ratio", cols);
+    REQUIRE_FALSE(e.empty());
+    e.back() = std::nan("");
+    REQUIRE(H5Ldelete(g, "void_ratio", H5P_DEFAULT) >= 0);
+    dem::h5::write(g, "void_ratio", e, 1, "1");
+  }
+  {
+    std::ofstream runs(dir / "results" / "runs.tsv");
+    runs << "# variant\tdensity\ttest\trun\tresult\tstarts_from\tmay_fail\tsettings\tseed\n";
+    for (int seed = 1; seed <= 3; ++seed)
+      runs << "-\tdense\t-\tseed" << seed << "/dense_prepare\t/x/seed" << seed << "/dense_prepare.h5\t-\t0\tas written\t" << seed << "\n";
+  }
+  std::ofstream(dir / "refs.yaml") << "source: lab\nrows:\n  - {name: e0, quantity: void_ratio_after_preparation, reference: 0.6, "
+                                      "check: within, tolerance: 0.1, source: lab, reason: r}\n";
+  const auto r = validate("--results '" + (dir / "results").string() + "' --references '" + (dir / "refs.yaml").string() + "' --out '" +
+                          (dir / "out").string() + "'");
+  INFO(r.out);
+  CHECK(r.exit_code == 1);
+  CHECK_THAT(r.out, Catch::Contains("error: seed1 and seed2 have the same dense preparation (every value of its last row)"));
+  CHECK_THAT(r.out, Catch::Contains("error: row 'e0': sample seed3 gives nan, from " + (dir / "results" / "seed3").string() +
+                                    " (dense_prepare): a non-finite number in its results"));
+  CHECK_THAT(r.out, !Catch::Contains("seed3 have the same"));
 }

@@ -20,6 +20,7 @@
 #include <CLI/CLI.hpp>
 
 #include "compare_runs/modes.hpp"
+#include "io/failure.hpp"
 
 namespace {
 
@@ -37,7 +38,8 @@ CLI::App* study_mode(CLI::App& app, const std::string& name, const std::string& 
 
 }  // namespace
 
-int main(int argc, char** argv) {
+// The tool; main runs it under guarded_main (a file system error names its path, exit 1).
+int tool_main(int argc, char** argv) {
   CLI::App app{"compare-runs: the tables of a study of variants (convergence, stability, decisions, critical state, liquefaction), "
                "from the pipeline's manifest RESULTS_DIR/runs.tsv"};
   app.name("compare-runs");
@@ -156,7 +158,9 @@ int main(int argc, char** argv) {
     }
     return 2;  // not reached: parse() requires one sub-command
   } catch (const std::exception& e) {  // a result that cannot be read, a folder that cannot be made
-    std::fprintf(stderr, "error: %s\n", e.what());
+    std::fprintf(stderr, "error: %s\n", dem::describe_failure(e).c_str());
     return 1;
   }
 }
+
+int main(int argc, char** argv) { return dem::guarded_main("compare-runs", [&] { return tool_main(argc, argv); }); }

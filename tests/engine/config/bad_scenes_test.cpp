@@ -374,6 +374,28 @@ std::vector<BadScene> catalogue() {
        Yaml{.stages = "\n  - {name: a, type: strain_rate, strain_rate: [0, 0, 0], duration: 6.0e5}"
                       "\n  - {name: b, type: strain_rate, strain_rate: [0, 0, 0], duration: 6.0e5}"}.text(), C,
        {"bad.yaml: stages: together up to 1.2e+12 steps at numerics.time_step = 1e-06 s, more than the 1e+12 a run may take"}},
+      // --- what YAML would read in silence, or only with a bare message ------------------------
+      // A merge key: yaml-cpp does not merge, it reads a key named "<<".
+      {"a merge key", "base: &b {kn: 1.0e6, ks: 1.0e6}\n" + Yaml{.material = "{<<: *b, friction: 0.5}"}.text(), C,
+       {"bad.yaml: material: a merge key '<<' (line 6) is not supported: write the keys it would merge out in full"}},
+      // A second document after '---' would be ignored.
+      {"a second YAML document", Yaml{}.text() + "---\nname: other\n", C,
+       {"bad.yaml: holds 2 YAML documents (separated by '---'); a scene or study is one"}},
+      // A control character (an escape sequence pasted into a name) and a byte that is not UTF-8.
+      {"a control character in a name", "name: bad\x1b[31m\n" + Yaml{}.text().substr(Yaml{}.text().find('\n') + 1), C,
+       {"bad.yaml: line 1: the control character 0x1b (not allowed in a scene or study)"}},
+      {"a name that is not UTF-8", Yaml{}.text() + "# caf\xe9\n", C,
+       {"bad.yaml: line 9: the byte 0xe9, not UTF-8 text (save the file as UTF-8)"}},
+      {"a NUL byte", Yaml{}.text() + std::string("# x\0y\n", 6), C, {"bad.yaml: line 9: a NUL byte (a binary file?)"}},
+      // Deep nesting: 40 levels of flow sequences (a scene nests a few).
+      {"nesting 40 levels deep", Yaml{.extra = "x: " + std::string(40, '[') + std::string(40, ']') + "\n"}.text(), C,
+       {"bad.yaml: nested more than 32 levels deep"}},
+      // Deeper than yaml-cpp's own recursion guard.
+      {"nesting 5000 levels deep", Yaml{.extra = "x: " + std::string(5000, '[') + std::string(5000, ']') + "\n"}.text(), C,
+       {"bad.yaml: line 9: nested too deeply for YAML to read"}},
+      // A key of 17 MiB: refused by its size before YAML allocates for it.
+      {"a 17 MiB key", Yaml{.extra = std::string(17u << 20, 'k') + ": 1\n"}.text(), C,
+       {"bad.yaml: 17 MiB, more than the 16 MiB a scene or study file may hold"}},
   };
 }
 
@@ -565,5 +587,5 @@ TEST_CASE("a particle-making error names the scene file and the particle source"
   const SceneConfig bad_csv = load_scene(folder + "/bad_csv_scene.yaml");
   REQUIRE_THROWS_MATCHES(build_simulation(bad_csv), ConfigError,
                          Catch::Matchers::Message(folder + "/bad_csv_scene.yaml: particles.csv: " + bad_csv.particles.path +
-                                                  ": line 3: radius must be > 0 m, got -0.002000"));
+                                                  ": line 3: radius must be > 0 m, got -0.002"));
 }

@@ -51,6 +51,28 @@ TEST_CASE("bad particle CSV files are refused naming the file and the line", "[i
       {"a bad line after blank lines", "x,y,z,radius\n\n" + good + "\n0.005,0.005,0.005,-1\n", "line 5: radius must be > 0 m"},
       {"empty file", "", "the file is empty (expected header x,y,z,radius)"},
       {"header only", "x,y,z,radius\n", "no particles after the header"},
+      // Geometry, checked when read (io/particle_csv.hpp): a centre more than one radius outside
+      // the cell [0, L] (an input error, not a periodic image to wrap in silence).
+      {"a sphere far outside the cell", "x,y,z,radius\n" + good + "0.015,0.05,0.005,0.002\n",
+       "line 3: y = 0.05 m is outside the cell (0 to 0.02 m, within one radius, 0.002 m)"},
+      {"a sphere just over a radius outside", "x,y,z,radius\n" + good + "0.015,0.015,-0.0021,0.002\n",
+       "line 3: z = -0.0021 m is outside the cell"},
+      // Radii in [1e-6, 1] m: absurd sizes are refused before they reach the time step.
+      {"a radius of 1e308 m", "x,y,z,radius\n" + good + "0.015,0.005,0.005,1e308\n",
+       "line 3: radius must be between 1e-06 and 1 m, got 1e+308"},
+      {"a radius of 1e-300 m", "x,y,z,radius\n" + good + "0.015,0.005,0.005,1e-300\n",
+       "line 3: radius must be between 1e-06 and 1 m, got 1e-300"},
+      {"one sphere", "x,y,z,radius\n\n" + good, "1 sphere (line 3); a packing needs at least 2"},
+      // Two centres closer than 0.5 x the sum of their radii, both lines named: a duplicated line
+      // (distance 0), and a pair 1 mm apart across the periodic boundary (x = 0.5 mm and 19.5 mm
+      // in a 20 mm cell; radii sum 4 mm, so the limit is 2 mm).
+      {"a duplicated line", "x,y,z,radius\n" + good + "0.015,0.015,0.015,0.002\n" + good,
+       "lines 2 and 4: centres 0 m apart, closer than 0.5 x the sum of their radii (0.004 m)"},
+      {"a deep overlap across the boundary", "x,y,z,radius\n0.0005,0.01,0.01,0.002\n0.01,0.002,0.01,0.002\n0.0195,0.01,0.01,0.002\n",
+       "lines 2 and 4: centres 0.001 m apart, closer than 0.5 x the sum of their radii (0.004 m)"},
+      // A bad token is repeated, cut to 80 characters, with its length.
+      {"a 1000-character token", "x,y,z,radius\n0.005," + std::string(1000, 'a') + ",0.005,0.002\n",
+       "line 2: '" + std::string(80, 'a') + "... (1000 characters)' is not a number"},
   };
   int k = 0;
   for (const BadCsv& c : cases) {
@@ -115,18 +137,21 @@ TEST_CASE("a scene reads its CSV file relative to the scene file", "[io][csv][co
   CHECK_THROWS_WITH(build_simulation(bad), Catch::Matchers::Contains(bad.particles.path + ": line 3: radius must be > 0 m"));
 }
 
-TEST_CASE("a CSV position several cells outside is wrapped into the cell", "[io][csv]") {
-  // Periodicity makes x and x + k L the same point for any whole k, so the reader must wrap any
-  // finite position (PeriodicCell::wrap_any), not only those within one cell length outside:
-  // x = 0.05 m = 2.5 L and y = -0.03 m = -1.5 L are both the point s = 0.5 (L = 0.02 m).
-  const std::string file = test::scratch_dir("csv_far") + "/p.csv";
-  test::write_text(file, "x,y,z,radius\n0.05,-0.03,0.005,0.002\n");
+TEST_CASE("spheres just touching, and touching across the periodic boundary, are accepted", "[io][csv]") {
+  // The overlap limit refuses centres closer than half the sum of their radii, nothing less deep:
+  // two spheres in contact (distance = the sum, 4 mm) and two at 2.1 mm across the boundary
+  // (x = 1 mm and 18.9 mm in a 20 mm cell) are read.
+  const std::string file = test::scratch_dir("csv_touching") + "/p.csv";
+  test::write_text(file, "x,y,z,radius\n0.005,0.005,0.005,0.002\n0.009,0.005,0.005,0.002\n0.001,0.015,0.015,0.002\n0.0189,0.015,0.015,0.002\n");
   Particles p;
   read_particle_csv(file, cell20mm, 2650, p);
-  REQUIRE(p.size() == 1);
-  CHECK(p.s[0].x() == Approx(0.5));
-  CHECK(p.s[0].y() == Approx(0.5));
-  CHECK(p.s[0].z() == Approx(0.25));
+  CHECK(p.size() == 4);
+}
+
+TEST_CASE("a particle file larger than the cap is refused without reading further", "[io][csv]") {
+  // /dev/zero never ends: the reader stops at the cap (here 1 MiB; csv_max_bytes for a run).
+  CHECK_THROWS_WITH(read_whole_file("/dev/zero", 1u << 20), "/dev/zero: larger than 1 MiB, the most a particle file may hold");
+  CHECK(csv_max_bytes == 256u << 20);
 }
 
 TEST_CASE("a CSV line with a trailing comma (5 fields) is refused", "[io][csv]") {
@@ -141,9 +166,10 @@ TEST_CASE("a CSV line with a trailing comma (5 fields) is refused", "[io][csv]")
   // Trailing blanks after the comma do not hide it.
   test::write_text(file, "x,y,z,radius\n0.005,0.005,0.005,0.002, \n");
   CHECK_THROWS_WITH(read_particle_csv(file, cell20mm, 2650, p), Catch::Matchers::StartsWith(file + ": line 2: trailing comma"));
-  // Control: the same line without the comma (and with trailing blanks) is read.
-  test::write_text(file, "x,y,z,radius\n0.005,0.005,0.005,0.002 \n");
+  // Control: the same line without the comma (and with trailing blanks) is read (with a second
+  // sphere: a packing needs 2).
+  test::write_text(file, "x,y,z,radius\n0.005,0.005,0.005,0.002 \n0.015,0.005,0.005,0.002\n");
   Particles ok;
   read_particle_csv(file, cell20mm, 2650, ok);
-  CHECK(ok.size() == 1);
+  CHECK(ok.size() == 2);
 }
