@@ -33,11 +33,12 @@ fi
 mkdir -p "$(dirname "$png")"
 # ParaView's log goes to a file; its own message or the error is what we show.
 # Mesa's software OpenGL (Xvfb has no GPU). A fresh Xvfb sometimes refuses pvbatch's first
-# connection ("bad X server connection"): try up to three times.
+# connections ("bad X server connection"; xvfb-run's display does too): try up to five times, in a
+# subshell so that the abort of a refused attempt is logged, not shown.
 export LIBGL_ALWAYS_SOFTWARE=1
 log=$(mktemp)
-for attempt in 1 2 3; do
-  pvbatch "$here/render_spheres.py" "$xdmf" "$png" "$title" > "$log" 2>&1 && break
+for attempt in 1 2 3 4 5; do
+  (pvbatch "$here/render_spheres.py" "$xdmf" "$png" "$title") > "$log" 2>&1 && break
   grep -q 'bad X server connection' "$log" || break
   sleep 2
 done
