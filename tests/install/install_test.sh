@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # `cmake --install` into a temporary prefix, then, from a folder outside the source and build
 # trees: the installed dem answers --version (the same as the built one), the installed pipeline
-# answers --help, and the installed example (from its shipped sample, shortened) runs to a complete
-# result written in the current folder.
+# answers --help, the installed example (from its shipped sample, shortened) runs to a complete
+# result written in the current folder, and dem render finds the installed render script.
 #   tests/install/install_test.sh BUILD_DIR WORKDIR
 set -u
 build=$1 work=$2
@@ -25,5 +25,11 @@ scene=$prefix/share/cyclic-triax/scenes/examples/triaxial_compression.yaml
 status=$(h5dump -a /status result.h5 2> /dev/null | awk -F'"' '/\(0\)/ {print $2}')
 [ "$status" = complete ] || { echo "FAIL: result.h5 in $(pwd) has status '$status'"; fail=1; }
 [ -f "$prefix/share/doc/cyclic-triax/LICENSE" ] || { echo "FAIL: LICENSE not installed"; fail=1; }
+# dem render finds the installed render script: a missing result is then the only complaint.
+[ -x "$prefix/share/cyclic-triax/render/render.sh" ] && [ -f "$prefix/share/cyclic-triax/render/render_spheres.py" ] ||
+  { echo "FAIL: the render script is not installed"; fail=1; }
+"$prefix/bin/dem" render none.h5 --out none.png > render.log 2>&1
+[ $? = 2 ] && grep -q "none.h5 is not a result file" render.log ||
+  { echo "FAIL: installed dem render:"; cat render.log; fail=1; }
 [ $fail = 0 ] && echo "install: $prefix/bin/dem ($installed) ran the installed example in $(pwd)"
 exit $fail
