@@ -31,7 +31,7 @@ LIQUEFACTION   ?= results/liquefaction_loose/paper results/liquefaction_medium/p
 CELL_STUDIES   ?= pipeline/studies/critical_state.yaml
 EXECUTOR    ?=                          # local or slurm (pipeline --executor); empty: the study files' executor key, else local
 
-.PHONY: all deps build tools examples example-samples install test kill-test slurm-test sanitize fuzz bench quick study report decisions decisions-report readings-report report-sections literature literature-report critical-state liquefaction samples samples-study cyclic-tests render clean
+.PHONY: all deps build tools examples example-samples install test kill-test slurm-test sanitize clang-test fuzz bench quick study report decisions decisions-report readings-report report-sections literature literature-report critical-state liquefaction samples samples-study cyclic-tests render clean
 
 # Everything: install, build the tools, run the full study (an ensemble of 5 samples per density,
 # reusing finished runs), validate it, draw the figures and write reports/index.md (the tests are
@@ -127,6 +127,17 @@ sanitize: deps
 	cmake --build $(BUILD)-sanitize -j $(JOBS) --target dem_input_tests
 	ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 OMP_NUM_THREADS=1 \
 	  $(BUILD)-sanitize/bin/dem_input_tests "$(SANITIZE_FILTER)"
+
+# The engine built with clang (Debian's clang 14 and libomp-dev, installed if missing) and the unit
+# tests of what clang compiles its own way: the vectorised kernels and the contact laws, the cell and
+# the neighbour lists (tests/CMakeLists.txt, dem_kernel_tests), without the thread-count and skin
+# invariance tests (make test runs them with GCC). CI runs this after make sanitize.
+clang-test: deps
+	@dpkg -s clang libomp-dev >/dev/null 2>&1 || { $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get update -qq && \
+	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends clang libomp-dev; }
+	cmake -S . -B $(BUILD)-clang -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Release >/dev/null
+	cmake --build $(BUILD)-clang -j $(JOBS) --target dem_kernel_tests
+	OMP_NUM_THREADS=1 $(BUILD)-clang/bin/dem_kernel_tests "~[threads]"
 
 # libFuzzer on the scene YAML, study YAML and particle CSV readers (clang), FUZZ_SECONDS each;
 # crashes are written to build-fuzz/crashes. Corpora start from the project's own files.

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -84,7 +85,8 @@ std::string duration_text(double s) {
 
 // `--plan`: each run with what it will do and its estimated particle-steps, then what the runs
 // still to do cost: the critical path and the wall time on 1, 2, 16 and 64 cores.
-void print_plan(const std::vector<pipeline::PlannedRun>& runs, double throughput) {
+// `throughput_from`: where the throughput is from (--throughput, the recorded runs or make bench).
+void print_plan(const std::vector<pipeline::PlannedRun>& runs, double throughput, const std::string& throughput_from) {
   std::vector<bool> todo(runs.size());
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const pipeline::PlannedRun& r = runs[i];
@@ -93,7 +95,8 @@ void print_plan(const std::vector<pipeline::PlannedRun>& runs, double throughput
                        : r.copy_of >= 0                                             ? "copy"
                                                                                    : "run";
     todo[i] = std::string(what) == "run";
-    std::printf("%-24s %-9s %.3g particle-steps  %s\n", r.name.c_str(), what, r.cost, r.scene_file.c_str());
+    std::printf("%-24s %-9s %.3g particle-steps (%s)  %s\n", r.name.c_str(), what, r.cost, r.cost_basis.c_str(),
+                r.scene_file.c_str());
   }
   const std::vector<double> cost = pipeline::run_costs(runs, todo);
   double total = 0;
@@ -109,12 +112,10 @@ void print_plan(const std::vector<pipeline::PlannedRun>& runs, double throughput
   for (int cores : {1, 2, 16, 64})
     std::printf(" %d core%s %s;", cores, cores > 1 ? "s" : "",
                 duration_text(pipeline::estimated_wall_time_s(runs, cost, cores, throughput)).c_str());
-  std::printf("\n(throughput: %s; runs that stop on a criterion are counted as planned: a stress stage's hold as about "
-              "1 s, a liquefaction at its stage's duration)\n",
-              throughput == pipeline::default_throughput
-                  ? "the engine's, measured by make bench on this project's 2-core machine (reports/bench.md: 8,000 "
-                    "spheres, one run per core); set yours with --throughput"
-                  : "--throughput");
+  std::printf("\n(throughput: %s; particle-steps: recorded, a finished run's own; as RUN, those of a finished run of "
+              "the same scene (another sample); model, a stress stage from its hold criteria (pipeline/plan/run_plan.cpp), "
+              "a liquefaction at its stage's duration)\n",
+              throughput_from.c_str());
 }
 
 }  // namespace
@@ -143,8 +144,10 @@ int tool_main(int argc, char** argv) {
   app.add_flag("--plan", plan_only,
       "write the resolved scenes, list the runs with their particle-steps, the critical path and the wall time "
       "on 1, 2, 16 and 64 cores; run nothing");
-  app.add_option("--throughput", throughput, "particle-steps per second of one run on one core, for --plan's estimates "
-                                             "(1e3 to 1e12 particle-steps/s)");
+  CLI::Option* throughput_opt =
+      app.add_option("--throughput", throughput,
+                     "particle-steps per second of one run on one core, for --plan's estimates, 1e3 to 1e12 particle-steps/s "
+                     "(default: what the finished runs in the results folder recorded, else the engine's make bench figure)");
   app.add_option("--executor", executor,
       "local: runs here as child processes; slurm: one sbatch job per run, options in the study's slurm: mapping "
       "(default: the study's executor: key, else local)")
@@ -189,7 +192,8 @@ int tool_main(int argc, char** argv) {
           fs::absolute(out.empty() ? fs::path(study.output) / p.name : fs::path(out)).lexically_normal().string());
       plans.push_back({study.name, pipeline::plan_study(study, p, study_out, version)});
     }
-    const std::vector<pipeline::PlannedRun> runs = pipeline::join_studies(plans);
+    std::vector<pipeline::PlannedRun> runs = pipeline::join_studies(plans);
+    const std::optional<double> recorded_throughput = pipeline::use_recorded_costs(runs);
     if (executor.empty()) executor = chosen_executor(studies);
     std::vector<std::unique_ptr<dem::FileLock>> locks;  // one pipeline per results folder, until this one ends
     for (const std::string& o : outs) locks.push_back(pipeline::lock_results_folder(o));
@@ -201,7 +205,14 @@ int tool_main(int argc, char** argv) {
                     profiles[i].c_str(), version.c_str(), outs[i].c_str());
     }
     if (plan_only) {
-      print_plan(runs, throughput);
+      if (throughput_opt->count() > 0)
+        print_plan(runs, throughput, "--throughput");
+      else if (recorded_throughput)
+        print_plan(runs, *recorded_throughput, "the finished runs' recorded particle-steps over their wall time");
+      else
+        print_plan(runs, throughput,
+                   "the engine's, measured by make bench on this project's 2-core machine (reports/bench.md: 8,000 "
+                   "spheres, one run per core); set yours with --throughput");
       return 0;
     }
     pipeline::Outcome o;

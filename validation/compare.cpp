@@ -108,7 +108,7 @@ std::optional<double> largest_closure_error(const Columns& c) {
 
 }  // namespace
 
-CaseOutcome classify_case(const CaseRun& run, double closure_limit) {
+CaseOutcome classify_case(const CaseRun& run, double limit) {
   CaseOutcome o;
   if (const auto s = run.series.find("step"); s != run.series.end() && !s->second.empty())
     o.steps = static_cast<std::int64_t>(s->second.back());
@@ -118,7 +118,7 @@ CaseOutcome classify_case(const CaseRun& run, double closure_limit) {
     o.message = "";
     if (!finite) o.outcome = "non-finite values in the result";
     else if (!o.closure) o.outcome = "ran; energy closure not measured (engine without energy columns)";
-    else if (!(*o.closure <= closure_limit)) o.outcome = "ran; energy closure above the limit";
+    else if (!(*o.closure <= limit)) o.outcome = "ran; energy closure above the limit";
     else o.outcome = "ran; energy closure within the limit", o.acceptable = true;
     return o;
   }

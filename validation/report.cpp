@@ -108,8 +108,9 @@ std::pair<std::string, std::vector<std::pair<std::string, std::string>>> section
 std::string keep_sections_without_inputs(const std::string& fresh, const std::string& previous, std::vector<std::string>& kept) {
   const auto now = sections_of(fresh), before = sections_of(previous);
   std::string out = now.first;
-  for (const auto& [heading, text] : now.second) {
-    const auto old = std::find_if(before.second.begin(), before.second.end(), [&](const auto& s) { return s.first == heading; });
+  for (const auto& section : now.second) {
+    const auto& [heading, text] = section;  // a lambda takes the pair (clang 14 captures no structured binding)
+    const auto old = std::find_if(before.second.begin(), before.second.end(), [&](const auto& s) { return s.first == section.first; });
     if (text.find(inputs_not_here) != std::string::npos && old != before.second.end()) {
       out += old->second;
       kept.push_back(heading.substr(3));

@@ -4,9 +4,11 @@
 //   dem keys                               the reference of every scene key
 //   dem columns [--legs]                   the columns of a result's /timeseries (/legs), as engine/README.md lists them
 //   dem table | state | summary RESULT.h5  read a result
+//   dem render RESULT.h5 --out FRAME.png   draw its last frame with ParaView (reports/render/render.sh)
 #include <fcntl.h>
 #include <omp.h>
 #include <sys/file.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -14,6 +16,7 @@
 #include <csignal>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -30,6 +33,7 @@
 #include "io/hdf5.hpp"
 #include "io/result_writer.hpp"  // describe_failure
 #include "io/state_io.hpp"
+#include "io/xdmf.hpp"
 #include "io/file_lock.hpp"
 #include "run/output_path.hpp"
 #include "run/run_scene.hpp"
@@ -47,18 +51,26 @@ const char* run_footer =
     "scene file are relative to the scene file. Exit status: 0 success, 1 run failed (the reason\n"
     "on stderr and in the status of RESULT.h5.partial), 2 bad input (nothing written).";
 
-// The terminal's progress line of a run (`dem run` on a terminal, without --quiet): at most every
-// 0.5 s, with the time left in the stage from its progress so far. Warnings and notes start on a
-// line of their own.
+// The progress of a run (`dem run` without --quiet). On a terminal one line, redrawn at most every
+// 0.5 s; otherwise (a log file, a batch job's output) a line of its own every --progress-interval
+// seconds of wall time (0: at every report the run makes, each 256 steps). A line gives the step,
+// the simulated time, the steps per second since the line before and the time left in the stage
+// from its progress so far. Warnings and notes start on a line of their own.
 class ProgressLine {
  public:
+  ProgressLine(bool terminal, double interval_s) : terminal_(terminal), interval_s_(terminal ? 0.5 : interval_s) {}
   void draw(const dem::RunProgress& p) {
-    const auto now = std::chrono::steady_clock::now();
-    if (now - last_ < std::chrono::milliseconds(500)) return;
-    last_ = now;
-    drawn_ = true;
-    std::fprintf(stderr, "\r\033[K[%s %d/%d '%s'] step %lld, t = %.4g s", p.scene.c_str(), p.stage + 1, p.stages,
-                 p.stage_name.c_str(), static_cast<long long>(p.step), p.time_s);
+    if (!started_) {  // the first report: the first interval starts
+      started_ = true, last_step_ = p.step, last_elapsed_s_ = p.elapsed_s;
+      if (interval_s_ > 0) return;
+    } else if (p.elapsed_s - last_elapsed_s_ < interval_s_) {
+      return;
+    }
+    std::fprintf(stderr, "%s[%s %d/%d '%s'] step %lld, t = %.4g s", terminal_ ? "\r\033[K" : "", p.scene.c_str(), p.stage + 1,
+                 p.stages, p.stage_name.c_str(), static_cast<long long>(p.step), p.time_s);
+    if (p.step > last_step_ && p.elapsed_s > last_elapsed_s_)
+      std::fprintf(stderr, ", %.3g steps/s", static_cast<double>(p.step - last_step_) / (p.elapsed_s - last_elapsed_s_));
+    last_step_ = p.step, last_elapsed_s_ = p.elapsed_s;
     if (p.stage_fraction > 0) {
       if (stage_seen_ != p.stage) stage_seen_ = p.stage, stage_start_s_ = p.elapsed_s;
       const double stage_elapsed = p.elapsed_s - stage_start_s_;
@@ -66,7 +78,9 @@ class ProgressLine {
                    stage_elapsed * (1 - p.stage_fraction) / p.stage_fraction);
     }
     if (!p.status.empty()) std::fprintf(stderr, ", %s", p.status.c_str());
+    std::fputs(terminal_ ? "" : "\n", stderr);
     std::fflush(stderr);
+    drawn_ = terminal_;
   }
   void new_line() {  // before a message: the line drawn so far stays
     if (drawn_) std::fprintf(stderr, "\n");
@@ -78,8 +92,12 @@ class ProgressLine {
   }
 
  private:
-  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
-  bool drawn_ = false;
+  bool terminal_;
+  double interval_s_;         // wall time between lines [s]
+  bool started_ = false;      // a report seen: the times below are set
+  std::int64_t last_step_ = 0;
+  double last_elapsed_s_ = 0; // the step and wall time [s since the run started] of the last line, or the first report
+  bool drawn_ = false;        // a terminal line is on the screen
   int stage_seen_ = -1;       // for the ETA: the stage being timed and when it started
   double stage_start_s_ = 0;  // [s since the run started]
 };
@@ -151,6 +169,7 @@ struct RunArgs {
   std::string scene_file, out, input_hash;
   std::vector<std::string> sets;  // KEY=VALUE
   int threads = 1;
+  double progress_interval_s = 30;  // between progress lines when stderr is not a terminal
   bool quiet = false, resume = false, no_resume = false, force = false;
 };
 
@@ -206,7 +225,7 @@ int run(const RunArgs& args) {
   }
   omp_set_num_threads(threads);
   try {
-    ProgressLine line;
+    ProgressLine line(isatty(STDERR_FILENO) != 0, args.progress_interval_s);
     LongStageWarning long_stage;
     dem::RunObserver observer;
     observer.stop = &stop_signal;
@@ -215,9 +234,8 @@ int run(const RunArgs& args) {
       line.new_line();
       std::fprintf(stderr, "warning: %s\n", w.c_str());
     };
-    const bool draw = !quiet && isatty(STDERR_FILENO);
     observer.progress = [&](const dem::RunProgress& p) {
-      if (draw) line.draw(p);
+      if (!quiet) line.draw(p);
       if (const std::string w = long_stage.check(p); !w.empty()) observer.warning(w);
     };
     observer.note = [&](const std::string& n) {
@@ -356,6 +374,71 @@ void wait_passively(char** argv) {
   unsetenv("OMP_WAIT_POLICY");  // not started again: nothing changed
 }
 
+struct RenderArgs {
+  std::string result, png, title;
+};
+
+// The render script: installed beside the programs (PREFIX/bin/../share/cyclic-triax/render) or, in
+// a clone, the source tree's (build/bin/../../reports/render); "" if neither is there.
+std::string render_script() {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path bin = fs::canonical("/proc/self/exe", ec).parent_path();
+  for (const fs::path& p : {bin / "../share/cyclic-triax/render/render.sh", bin / "../../reports/render/render.sh"})
+    if (fs::is_regular_file(p, ec)) return fs::weakly_canonical(p, ec).string();
+  return "";
+}
+
+// Runs `argv` and waits for it: its exit status, 127 if it could not be started.
+int run_program(const std::vector<std::string>& argv) {
+  std::vector<char*> args;
+  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  const pid_t pid = fork();
+  if (pid == 0) {
+    execv(args[0], args.data());
+    _exit(127);
+  }
+  int status = 0;
+  if (pid < 0 || waitpid(pid, &status, 0) < 0) return 127;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 1;
+}
+
+// `dem render`: the result's XDMF view is written into a folder of its own beside a link to the
+// result (nothing is written beside the result, which may be read-only, e.g. a shipped sample),
+// and the render script draws its last frame with ParaView.
+int render(const RenderArgs& args) {
+  namespace fs = std::filesystem;
+  const std::string script = render_script();
+  if (script.empty()) {
+    std::fprintf(stderr, "error: dem render: no render.sh in share/cyclic-triax/render or reports/render beside this dem\n");
+    return 2;
+  }
+  std::error_code ec;
+  if (!fs::is_regular_file(args.result, ec)) {
+    std::fprintf(stderr, "error: dem render: %s is not a result file\n", args.result.c_str());
+    return 2;
+  }
+  std::string folder = (fs::temp_directory_path() / "dem-render-XXXXXX").string();
+  if (!mkdtemp(folder.data())) {
+    std::fprintf(stderr, "error: dem render: cannot make a folder in %s: %s\n", fs::temp_directory_path().c_str(), std::strerror(errno));
+    return 1;
+  }
+  const fs::path name = fs::path(args.result).stem();
+  const fs::path link = fs::path(folder) / (name.string() + ".h5");
+  int rc = 1;
+  try {
+    fs::create_symlink(fs::absolute(args.result), link);
+    dem::write_xdmf(link.string());
+    rc = run_program({"/bin/bash", script, dem::xdmf_path_for(link.string()), args.png, args.title.empty() ? name.string() : args.title});
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: dem render: %s: %s\n", args.result.c_str(), e.what());
+    rc = 2;
+  }
+  fs::remove_all(folder, ec);
+  return rc;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -386,6 +469,11 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--threads", ra.threads, "threads inside the run (the result is bit for bit the same for any count)")
       ->check(CLI::Range(1, 256))->default_val(1);
   run_cmd->add_flag("--quiet", ra.quiet, "no progress line");
+  run_cmd->add_option("--progress-interval", ra.progress_interval_s,
+                      "seconds of wall time between progress lines when stderr is not a terminal (a log file, a batch "
+                      "job); 0: a line every 256 steps")
+      ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
   CLI::Option* resume = run_cmd->add_flag("--resume", ra.resume,
       "continue from RESULT.h5.checkpoint, which must exist and match (exit 2 otherwise)");
   CLI::Option* no_resume = run_cmd->add_flag("--no-resume", ra.no_resume,
@@ -417,6 +505,18 @@ int main(int argc, char** argv) {
   CLI::App* summary_cmd = app.add_subcommand("summary", "one line per complete result: its last time-series row, steps and wall time");
   summary_cmd->add_option("results", summary_files, "result files")->required();
 
+  RenderArgs rda;
+  CLI::App* render_cmd = app.add_subcommand(
+      "render", "draw a result's last frame to a PNG with ParaView: translucent spheres coloured by radius, the cell's "
+                "outline, the contact network if the result has frames with contacts");
+  render_cmd->add_option("result", rda.result, "the result file (RESULT.h5)")->required();
+  render_cmd->add_option("--out", rda.png, "the picture (PNG)")->required();
+  render_cmd->add_option("--title", rda.title, "the caption's first line (default: the result's name)");
+  render_cmd->footer(
+      "Runs reports/render/render.sh (installed in share/cyclic-triax/render): pvbatch on a virtual X display (Xvfb). It "
+      "installs Debian's paraview, python3-paraview and xvfb if they are missing (apt-get, with sudo when not root). "
+      "Exit status: 0 drawn, 1 the render failed, 2 bad input.");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -440,6 +540,7 @@ int main(int argc, char** argv) {
   if (*table_cmd) return table(ta);
   if (*state_cmd) return state(state_file);
   if (*summary_cmd) return summary(summary_files);
+  if (*render_cmd) return render(rda);
   std::fputs(app.help().c_str(), stderr);  // no sub-command: what there is
   return 2;
 }

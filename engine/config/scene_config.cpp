@@ -12,8 +12,6 @@ namespace dem {
 
 namespace {
 
-constexpr double inf = std::numeric_limits<double>::infinity();
-
 Vec3 vec3(const std::vector<double>& v) { return Vec3(v[0], v[1], v[2]); }
 
 ParticleSource read_particles(Section s) {

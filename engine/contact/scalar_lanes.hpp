@@ -4,6 +4,7 @@
 // bool, a vector three doubles; every operation is the one a vector lane does.
 #include <cmath>
 #include <cstdint>
+#include <type_traits>  // std::conditional_t in lane_ops.inc (clang)
 
 #include "core/types.hpp"
 

@@ -14,9 +14,10 @@
 
 #include "contact/scalar_lanes.hpp"
 
-// Each instruction set's loops are compiled for it alone (a `#pragma GCC target` region, not a
-// compiler flag), so the rest of the engine, Eigen included, is compiled as before and runs on
-// any x86-64. The file is compiled with -ffp-contract=off (engine/CMakeLists.txt): AVX-512 implies
+// Each instruction set's loops are compiled for it alone (a `#pragma GCC target` region; for clang
+// a `#pragma clang attribute` that gives each function of the region the target), not by a
+// compiler flag, so the rest of the engine, Eigen included, is compiled as before and runs on any
+// x86-64. The file is compiled with -ffp-contract=off (engine/CMakeLists.txt): AVX-512 implies
 // FMA, and a fused multiply-add would round differently from the scalar code.
 
 namespace dem {
@@ -99,8 +100,12 @@ inline void scatter(Sum4* sum, const std::uint32_t* index, const V3& v) {
 }  // namespace
 }  // namespace one_lane
 
+#ifdef __clang__
+#pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
+#else
 #pragma GCC push_options
 #pragma GCC target("avx2")
+#endif
 namespace avx2 {
 namespace {
 
@@ -346,15 +351,25 @@ void particle_chunk(const ParticleLoop<Rotate, DampingPolicy, Sheared>& loop, st
 
 }  // namespace
 }  // namespace avx2
+#ifdef __clang__
+#pragma clang attribute pop
+#else
 #pragma GCC pop_options
+#endif
 
+#ifdef __clang__
+#pragma clang attribute push(__attribute__((target("avx512f"))), apply_to = function)
+#else
 #pragma GCC push_options
 #pragma GCC target("avx512f")
+#endif
 // GCC 12's AVX-512 intrinsics fill unused lanes from _mm512_undefined_pd(), which it then reports
 // as (maybe) uninitialised.
 #pragma GCC diagnostic push
+#ifndef __clang__
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #pragma GCC diagnostic ignored "-Wuninitialized"
+#endif
 namespace avx512 {
 namespace {
 
@@ -462,7 +477,11 @@ struct Accumulator {
 }  // namespace
 }  // namespace avx512
 #pragma GCC diagnostic pop
+#ifdef __clang__
+#pragma clang attribute pop
+#else
 #pragma GCC pop_options
+#endif
 
 template <class Law, class DampingPolicy, bool Sheared>
 MotionSums forces_and_motion(int simd_lanes, const Law& law, const DampingPolicy& damping, Particles& p,

@@ -61,6 +61,7 @@ void write_xdmf(const std::string& result_path) {
   std::vector<double> time;
   std::vector<std::int64_t> contacts_per_frame;  // empty: no contact network
   bool corners = false;
+  std::vector<double> edges;  // F x 3: the cell's lengths, for a result without corners
   {
     h5::Handle file = h5::open_file_read(result_path);
     h5::Handle particles = h5::open_group(file, "particles/all");
@@ -74,6 +75,9 @@ void write_xdmf(const std::string& result_path) {
     if (h5::exists(file, "frames/cell_corners")) {
       corners = true;
       frames = std::min<std::size_t>(frames, h5::shape(file, "frames/cell_corners").at(0));
+    } else {
+      edges = h5::read<double>(particles, "box/edges/value", cols);
+      frames = std::min<std::size_t>(frames, edges.size() / 3);
     }
     if (h5::exists(file, "frames/contacts/count")) {
       contacts_per_frame = h5::read<std::int64_t>(file, "frames/contacts/count", cols);
@@ -84,10 +88,9 @@ void write_xdmf(const std::string& result_path) {
   // Relative reference: the XDMF sits beside the result and keeps working if both are moved.
   const std::string h5_name = fs::path(result_path).filename().string();
   // The particles of frame f: one Polyvertex grid.
-  const auto particle_grid = [&](std::ostringstream& x, std::size_t f, const std::string& name, bool timed) {
-    x << "      <Grid Name=\"" << name << "\" GridType=\"Uniform\">\n";
-    if (timed) x << "        <Time Value=\"" << exact(time[f]) << "\"/>\n";
-    x << "        <Topology TopologyType=\"Polyvertex\" NodesPerElement=\"" << n << "\"/>\n"
+  const auto particle_grid = [&](std::ostringstream& x, std::size_t f) {
+    x << "      <Grid Name=\"particles\" GridType=\"Uniform\">\n"
+      << "        <Topology TopologyType=\"Polyvertex\" NodesPerElement=\"" << n << "\"/>\n"
       << "        <Geometry GeometryType=\"XYZ\">\n"
       << frame_slab(h5_name, all + "/position/value", f, frames, n) << "        </Geometry>\n";
     for (const char* scalar : {"radius", "mass"})
@@ -100,13 +103,25 @@ void write_xdmf(const std::string& result_path) {
         << frame_slab(h5_name, all + "/" + vector + "/value", f, frames, n) << "        </Attribute>\n";
     x << "      </Grid>\n";
   };
-  // The cell of frame f: one hexahedron (ParaView: representation Outline or Wireframe).
+  // The cell of frame f: its 12 edges as lines between its corners (corner k at (k & 1, k >> 1 & 1,
+  // k >> 2 & 1) in cell coordinates), which ParaView draws as an outline that hides nothing. A result
+  // written before /frames/cell_corners has the box's lengths only: the outline of those lengths,
+  // written into the XML.
   const auto cell_grid = [&](std::ostringstream& x, std::size_t f) {
     x << "      <Grid Name=\"cell\" GridType=\"Uniform\">\n"
-      << "        <Topology TopologyType=\"Hexahedron\" NumberOfElements=\"1\">\n"
-      << "          <DataItem Dimensions=\"1 8\" NumberType=\"Int\" Format=\"XML\">0 1 3 2 4 5 7 6</DataItem>\n"
-      << "        </Topology>\n        <Geometry GeometryType=\"XYZ\">\n"
-      << frame_slab(h5_name, "/frames/cell_corners", f, frames, 8) << "        </Geometry>\n      </Grid>\n";
+      << "        <Topology TopologyType=\"Polyline\" NodesPerElement=\"2\" NumberOfElements=\"12\">\n"
+      << "          <DataItem Dimensions=\"12 2\" NumberType=\"Int\" Format=\"XML\">"
+      << "0 1 2 3 4 5 6 7 0 2 1 3 4 6 5 7 0 4 1 5 2 6 3 7</DataItem>\n"
+      << "        </Topology>\n        <Geometry GeometryType=\"XYZ\">\n";
+    if (corners) {
+      x << frame_slab(h5_name, "/frames/cell_corners", f, frames, 8);
+    } else {
+      x << "          <DataItem Dimensions=\"8 3\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">";
+      for (int k = 0; k < 8; ++k)
+        for (int axis = 0; axis < 3; ++axis) x << (k || axis ? " " : "") << ((k >> axis) & 1 ? exact(edges[3 * f + axis]) : "0");
+      x << "</DataItem>\n";
+    }
+    x << "        </Geometry>\n      </Grid>\n";
   };
   // The contacts of frame f, rows [first, first + m) of /frames/contacts: one line per contact.
   const auto contact_grid = [&](std::ostringstream& x, std::size_t first, std::size_t m) {
@@ -127,14 +142,10 @@ void write_xdmf(const std::string& result_path) {
     << "    <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
   std::size_t first_contact = 0;
   for (std::size_t f = 0; f < frames; ++f) {
-    if (!corners) {  // a result written before the cell and contact views: the particles alone
-      particle_grid(x, f, "frame " + std::to_string(f), true);
-      continue;
-    }
     // Each time a spatial collection: the particles, the cell and (if written) the contacts.
     x << "     <Grid Name=\"frame " << f << "\" GridType=\"Collection\" CollectionType=\"Spatial\">\n"
       << "      <Time Value=\"" << exact(time[f]) << "\"/>\n";
-    particle_grid(x, f, "particles", false);
+    particle_grid(x, f);
     cell_grid(x, f);
     if (!contacts_per_frame.empty()) {
       const std::size_t m = static_cast<std::size_t>(contacts_per_frame[f]);

@@ -1,7 +1,8 @@
 #pragma once
 // An XDMF 2 description of a result's H5MD particle frames (io/h5md.hpp), so that ParaView opens
-// the particles over time: one Polyvertex grid per frame, with radius, mass, velocity and
-// angular velocity as point attributes (Glyph filter, sphere, scale by radius). The XML holds no
+// the particles over time: per frame one Polyvertex grid, with radius, mass, velocity and
+// angular velocity as point attributes (Glyph filter, sphere, scale by radius), the cell's 12
+// edges as lines and, if the result has them, the contacts as lines. The XML holds no
 // data of its own; it points into the result by its file name, so the two must stay side by side.
 #include <string>
 

@@ -160,6 +160,10 @@ struct StageLoop {
   Done done;          // () -> bool, after the row: the stage's end criteria (it may throw StageError);
                       //    advances i; true when the loop is over
 };
+// Spelled out (clang before version 17 deduces no aggregate's arguments); the stages initialise
+// the members in order, each named in a comment.
+template <class Cursor, class Step, class Where, class Progress, class Done>
+StageLoop(Cursor, Step, Where, Progress, Done) -> StageLoop<Cursor, Step, Where, Progress, Done>;
 
 // The loop of every stage (ARCHITECTURE.md, "One time step"): a checkpoint if one is due (never
 // at the loop's first iteration), the stage's step, a row at output steps and where the stage asks
@@ -194,14 +198,14 @@ void run_strain_rate_stage(Simulation& sim, const SceneConfig& scene, int index,
   const std::int64_t n = steps_in(st.duration_s, sim.time_step());
   std::int64_t i = resume ? resume->i : 0;
   run_steps(sim, scene, hooks, i, StageLoop{
-      .cursor = [&] { return cursor_at(index, i); },
-      .step = [&] {
+      /* cursor */ [&] { return cursor_at(index, i); },
+      /* step */ [&] {
         sim.step(targets, scene.servo);
         return false;
       },
-      .where = [&] { return RowContext{index}; },
-      .progress = [&] { return StageProgress{index, static_cast<double>(i) / static_cast<double>(n), ""}; },
-      .done = [&] { return ++i >= n; }});
+      /* where */ [&] { return RowContext{index}; },
+      /* progress */ [&] { return StageProgress{index, static_cast<double>(i) / static_cast<double>(n), ""}; },
+      /* done */ [&] { return ++i >= n; }});
 }
 
 void run_stress_stage(Simulation& sim, const SceneConfig& scene, int index, const StageHooks& hooks,
@@ -225,11 +229,11 @@ void run_stress_stage(Simulation& sim, const SceneConfig& scene, int index, cons
   std::int64_t i = resume ? resume->i : 0;
   bool held = false;  // the hold's criteria met at its last check
   run_steps(sim, scene, hooks, i, StageLoop{
-      .cursor = [&] {
+      /* cursor */ [&] {
         hold.i = i, hold.from_Pa = from, hold.servo = servo.state();
         return hold;
       },
-      .step = [&] {
+      /* step */ [&] {
         const double t = static_cast<double>(i) * dt;
         for (int k = 0; k < 3; ++k) {
           const double sign = st.target_Pa[k] >= from[k] ? 1.0 : -1.0;
@@ -265,8 +269,8 @@ void run_stress_stage(Simulation& sim, const SceneConfig& scene, int index, cons
         }
         return false;
       },
-      .where = [&] { return RowContext{index}; },
-      .progress = [&] {
+      /* where */ [&] { return RowContext{index}; },
+      /* progress */ [&] {
         const double t_done = static_cast<double>(i + 1) * dt;
         std::ostringstream status;
         status << "p = " << mean_stress(sim.sums().stress_Pa) / 1e3 << " kPa";
@@ -274,7 +278,7 @@ void run_stress_stage(Simulation& sim, const SceneConfig& scene, int index, cons
         if (creep && hold.creep_rate >= 0) status << ", creep " << hold.creep_rate << " 1/s";
         return StageProgress{index, t_done < ramp_end ? t_done / std::max(ramp_end, dt) : -1.0, status.str()};
       },
-      .done = [&] {
+      /* done */ [&] {
         if (held) return true;
         const double t_done = static_cast<double>(++i) * dt;
         if (i < max_steps) return false;
@@ -325,13 +329,13 @@ void run_stress_path_stage(Simulation& sim, const SceneConfig& scene, int index,
     Vec3 sum_sq = resumed_leg ? resume->sum_sq : Vec3::Zero();
     std::int64_t i = resumed_leg ? resume->i : 0;  // one loop per leg
     run_steps(sim, scene, hooks, i, StageLoop{
-        .cursor = [&] {
+        /* cursor */ [&] {
           StageCursor here = cursor_at(index, i);
           here.servo = servo.state(), here.leg = static_cast<int>(leg_index), here.done_steps = done_steps;
           here.sum_sq = sum_sq, here.max_inertial_number = rec.max_inertial_number, here.strain_at_leg_start = strain_at_leg_start;
           return here;
         },
-        .step = [&] {
+        /* step */ [&] {
           const Vec3 target = leg.from_Pa + (leg.to_Pa - leg.from_Pa) * (static_cast<double>(i) / static_cast<double>(n));
           for (int k = 0; k < 3; ++k)
             targets[static_cast<std::size_t>(k)] = {AxisTarget::Mode::Stress, 0, target[k], rate[k]};
@@ -350,16 +354,16 @@ void run_stress_path_stage(Simulation& sim, const SceneConfig& scene, int index,
           ++done_steps;
           return i + 1 == n;  // a leg ends with a row
         },
-        .where = [&] {
+        /* where */ [&] {
           const bool last = i + 1 == n;
           return RowContext{index, leg.cycle, leg.index, last, last && leg.ends_cycle, strain_at_leg_start};
         },
-        .progress = [&] {
+        /* progress */ [&] {
           std::ostringstream status;
           status << "cycle " << leg.cycle << ", leg " << leg.index + 1 << "/" << legs.size() << " -> " << leg.to_label;
           return StageProgress{index, static_cast<double>(done_steps) / static_cast<double>(total_steps), status.str()};
         },
-        .done = [&] { return ++i >= n; }});
+        /* done */ [&] { return ++i >= n; }});
     rec.end_step = sim.step_count();
     rec.rms_error = (sum_sq / static_cast<double>(n)).cwiseSqrt() / p;
     if (hooks.leg) hooks.leg(rec);
@@ -445,13 +449,13 @@ void run_control_stage(Simulation& sim, const SceneConfig& scene, int index, con
   RowContext where;    // of the step's row
   std::int64_t i = resume ? resume->i : 0;
   run_steps(sim, scene, hooks, i, StageLoop{
-      .cursor = [&] {
+      /* cursor */ [&] {
         StageCursor here = start;
         here.stage = index, here.i = i, here.servo = servo.state(), here.cycle_low = low, here.cycle_high = high;
         here.max_inertial_number = max_inertial;
         return here;
       },
-      .step = [&] {
+      /* step */ [&] {
         CellControl control = st.control;
         cycle = cyclic ? cycle_of(i) : 0;
         if (cyclic) {
@@ -492,15 +496,15 @@ void run_control_stage(Simulation& sim, const SceneConfig& scene, int index, con
         }
         return stopped || i + 1 == n;  // the stage's last row is its end
       },
-      .where = [&] { return where; },
-      .progress = [&] {
+      /* where */ [&] { return where; },
+      /* progress */ [&] {
         const double p = sim.sums().stress_Pa.trace() / 3;
         std::ostringstream status;
         if (cyclic) status << "cycle " << cycle << ", ";
         status << "r_u " << (p0 > 0 ? 1 - p / p0 : 0.0);
         return StageProgress{index, static_cast<double>(i) / static_cast<double>(n), status.str()};
       },
-      .done = [&] { return stopped || ++i >= n; }});
+      /* done */ [&] { return stopped || ++i >= n; }});
   if (hooks.attribute) hooks.attribute("stage_end_" + st.name, ended);
   if (hooks.warning && max_inertial > quasi_static_inertial_number) {
     std::ostringstream msg;

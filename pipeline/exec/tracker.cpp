@@ -53,10 +53,10 @@ std::string minutes(double s) {
 
 }  // namespace
 
-// --force: a result of this run's earlier inputs is the pipeline's own, replaced by design.
+// --force: a result of this run's earlier inputs is the pipeline's own, replaced by design. Its
+// stderr goes to the run's log (local or SLURM): a progress line every 30 s there.
 std::vector<std::string> dem_command(const std::string& dem, const PlannedRun& r, int threads) {
-  return {dem,      "run", r.scene_file, "--out", r.result, "--quiet", "--input-hash", r.hash, "--threads", std::to_string(threads),
-          "--force"};
+  return {dem, "run", r.scene_file, "--out", r.result, "--input-hash", r.hash, "--threads", std::to_string(threads), "--force"};
 }
 
 Tracker::Tracker(const std::vector<PlannedRun>& runs)

@@ -1,9 +1,49 @@
 #include "plan/plan_cost.hpp"
 
 #include <algorithm>
+#include <filesystem>
+#include <map>
+#include <string>
 #include <limits>
 
+#include "exec/scheduler.hpp"  // result_cost
+
 namespace pipeline {
+
+std::optional<double> use_recorded_costs(std::vector<PlannedRun>& runs) {
+  struct Family {
+    double steps = 0;  // summed over its recorded runs
+    int recorded = 0;
+    std::string first;  // the first of them
+  };
+  const auto key = [](const PlannedRun& r) {
+    std::string k = r.family + "\n" + std::to_string(r.spheres);
+    for (const std::string& v : r.variants) k += "\n" + v;
+    return k;
+  };
+  std::map<std::string, Family> families;
+  std::vector<std::optional<ResultCost>> recorded(runs.size());
+  double particle_steps = 0, wall_s = 0;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    std::error_code ec;
+    if (runs[i].spheres <= 0 || !std::filesystem::is_regular_file(runs[i].result, ec)) continue;
+    recorded[i] = result_cost(runs[i].result);
+    if (!recorded[i]) continue;
+    Family& f = families[key(runs[i])];
+    f.steps += recorded[i]->particle_steps / runs[i].spheres, ++f.recorded;
+    if (f.first.empty()) f.first = runs[i].name;
+    if (recorded[i]->wall_s && *recorded[i]->wall_s > 0) particle_steps += recorded[i]->particle_steps, wall_s += *recorded[i]->wall_s;
+  }
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    if (recorded[i]) {
+      runs[i].cost = recorded[i]->particle_steps, runs[i].cost_basis = "recorded";
+    } else if (const auto f = families.find(key(runs[i])); f != families.end()) {
+      runs[i].cost = runs[i].spheres * f->second.steps / f->second.recorded, runs[i].cost_basis = "as " + f->second.first;
+    }
+  }
+  if (wall_s > 0) return particle_steps / wall_s;
+  return std::nullopt;
+}
 
 std::vector<double> run_costs(const std::vector<PlannedRun>& runs, const std::vector<bool>& todo) {
   std::vector<double> cost(runs.size(), 0.0);

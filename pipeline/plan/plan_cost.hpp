@@ -2,6 +2,7 @@
 // What a plan costs (pipeline --plan): each run's estimated particle-steps (PlannedRun::cost), the
 // critical path (the longest chain of runs, each starting from the one before it) and the wall
 // time on a number of cores, each run on one core at a given throughput.
+#include <optional>
 #include <vector>
 
 #include "plan/run_plan.hpp"
@@ -13,6 +14,13 @@ namespace pipeline {
 // (reports/bench.md, 8,000 spheres, mu = 0.5, dt = 1 us): 3.53e7 for one run on one thread, 3.49e7
 // each for two runs at once. Output rows and the preparations' gas phase are not in it.
 inline constexpr double default_throughput = 3.5e7;
+
+// Costs from finished runs. A run whose result is there (for these or for earlier inputs) is planned
+// at the particle-steps it recorded (cost_basis "recorded"); one without, at the steps per run its
+// family's finished runs recorded (the same scene's other samples, with the same variants and
+// spheres; cost_basis "as <that run>"), times its spheres. Returns the particle-steps per second
+// of their recorded wall times together, none without one.
+std::optional<double> use_recorded_costs(std::vector<PlannedRun>& runs);
 
 // `todo[i]`: run i has to run; a reused result or a copy (copy_of) costs nothing.
 std::vector<double> run_costs(const std::vector<PlannedRun>& runs, const std::vector<bool>& todo);

@@ -4,17 +4,20 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <numbers>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
 
 #include "config/scene_config.hpp"
 #include "config/yaml_section.hpp"
+#include "contact/contact_law.hpp"
 #include "control/stress_path.hpp"
 #include "dynamics/simulation.hpp"
 #include "generate/grading.hpp"
@@ -98,11 +101,71 @@ double control_duration(const dem::StageConfig& st) {
   return st.duration_s;
 }
 
-double estimated_steps(const dem::SceneConfig& scene) {
+// The spheres of a lattice preparation and its cell before the first step.
+struct LatticeStart {
+  dem::Particles particles;
+  dem::PeriodicCell cell;
+};
+LatticeStart lattice_start(const dem::SceneConfig& scene) {
+  if (scene.particles.kind != dem::ParticleSource::Kind::Lattice)
+    throw dem::ConfigError(scene.file + ": time_step_fraction needs a preparation from particles.lattice");
+  LatticeStart s;
+  const dem::ParticleSource& src = scene.particles;
+  dem::make_lattice(src.lattice, dem::GradingCurve(src.grading_diameters_m, src.grading_percent_finer, src.grading_basis),
+                    scene.material.density_kg_per_m3, s.particles, s.cell);
+  return s;
+}
+
+// The solid fraction a lattice preparation starts from (a gas: the spheres' volume over the
+// cell's); none for a start from a file (a sample already packed).
+std::optional<double> gas_solid_fraction(const dem::SceneConfig& scene) {
+  if (scene.particles.kind != dem::ParticleSource::Kind::Lattice) return std::nullopt;
+  const LatticeStart s = lattice_start(scene);
+  double solid = 0;
+  for (const double r : s.particles.radius) solid += 4.0 / 3.0 * std::numbers::pi * r * r * r;
+  return solid / s.cell.volume();
+}
+
+// A stress stage ends on its hold criteria, so its length is a model's. From a gas (a lattice
+// preparation's first stage) the servo squeezes the cell at the stage's max_strain_rate until the
+// spheres jam, taken at a solid fraction of jammed_fraction: ln(phi_jam / phi_0) / 3 of strain on
+// each axis. From a packed sample the stress ramps from none at the stage's rate (an upper bound).
+// Either way the hold follows, until the unbalanced force ratio has fallen (and, with a creep
+// criterion, two creep windows at least). The hold's seconds at 1,000 spheres are measured (by
+// friction, hold_seconds); the unbalance has to leave through the sample, so they grow with its edge
+// in spheres, N^(1/3). Bounded by the stage's max_duration.
+constexpr double jammed_fraction = 0.60;
+double hold_seconds(double friction, double spheres) {
+  // Measured: the shipped samples (scenes/samples/*_1k.h5, the quick profile's seed-1 preparations,
+  // 1,000 spheres from phi_0 = 0.2271, squeezed to jammed_fraction in 0.3238 s), their steps less
+  // that squeeze: 679,600 (dense, mu = 0), 363,400 (medium, 0.2) and 333,000 (loose, 0.5) at 1 us.
+  constexpr double mu[] = {0.0, 0.2, 0.5}, seconds[] = {0.356, 0.040, 0.009};
+  double at_1k = seconds[2];
+  if (friction < mu[2]) {
+    const int k = friction < mu[1] ? 0 : 1;
+    at_1k = seconds[k] + (seconds[k + 1] - seconds[k]) * (std::max(friction, 0.0) - mu[k]) / (mu[k + 1] - mu[k]);
+  }
+  return at_1k * std::cbrt(spheres / 1000.0);
+}
+double stress_stage_seconds(const dem::SceneConfig& scene, const dem::StageConfig& st, std::optional<double> gas,
+                            double spheres) {
+  const double ramp = st.target_Pa.cwiseAbs().maxCoeff() / st.stress_rate_Pa_per_s;
+  double squeeze = 0;
+  if (gas && *gas < jammed_fraction && st.max_strain_rate_per_s > 0)
+    squeeze = std::log(jammed_fraction / *gas) / (3 * st.max_strain_rate_per_s);
+  double hold = hold_seconds(dem::friction_coefficient(scene.material.law), spheres);
+  if (st.hold.creep_rate_per_s > 0) hold = std::max(hold, 2 * st.hold.creep_window_s);
+  return std::min(std::max(ramp, squeeze) + hold, st.hold.max_duration_s);
+}
+
+double estimated_steps(const dem::SceneConfig& scene, double spheres) {
   double steps = 0;
+  const std::optional<double> gas = gas_solid_fraction(scene);
   for (const dem::StageConfig& st : scene.stages) {
+    const bool first = &st == &scene.stages.front();
     if (st.type == dem::StageConfig::Type::StrainRate) steps += st.duration_s / scene.time_step_s;
-    else if (st.type == dem::StageConfig::Type::Stress) steps += 1.0 / scene.time_step_s;  // about 1 s to hold (measured)
+    else if (st.type == dem::StageConfig::Type::Stress)
+      steps += stress_stage_seconds(scene, st, first ? gas : std::nullopt, spheres) / scene.time_step_s;
     else if (st.type == dem::StageConfig::Type::Control) steps += control_duration(st) / scene.time_step_s;
     else
       for (const dem::PathLeg& leg : dem::expand_path(st.path, dem::named_state("A", st.mean_stress_Pa, st.stress_ratio),
@@ -118,18 +181,6 @@ std::string exact(double x) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.17g", x);
   return buf;
-}
-
-// The spheres a lattice preparation will start from (what the critical step depends on).
-dem::Particles lattice_particles(const dem::SceneConfig& scene) {
-  if (scene.particles.kind != dem::ParticleSource::Kind::Lattice)
-    throw dem::ConfigError(scene.file + ": time_step_fraction needs a preparation from particles.lattice");
-  dem::Particles p;
-  dem::PeriodicCell cell;
-  const dem::ParticleSource& src = scene.particles;
-  dem::make_lattice(src.lattice, dem::GradingCurve(src.grading_diameters_m, src.grading_percent_finer, src.grading_basis),
-                    scene.material.density_kg_per_m3, p, cell);
-  return p;
 }
 
 // Errors in scenes with a study's overrides name the study file and where the overrides are
@@ -255,7 +306,7 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
         for (const auto& [key, value] : v.prepare) dem::apply_override(scene, study.preparation, key, value);
         if (v.time_step_fraction) {
           const dem::SceneConfig parsed = dem::scene_from_text(emit(scene, header), prep.scene_file);
-          sample = lattice_particles(parsed);
+          sample = lattice_start(parsed).particles;
           const double dt = *v.time_step_fraction * dem::critical_time_step(parsed.material.law, sample, parsed.material.density_kg_per_m3);
           dem::apply_override(scene, study.preparation, "numerics.time_step", exact(dt));
         }
@@ -275,7 +326,8 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
         prep.hash = content_hash(engine_version + "\n" + prep.scene_text + read_files(parsed));
         prep_index = static_cast<int>(runs.size());
         particles[prep_index] = particles_of(parsed);
-        prep.cost = particles[prep_index] * estimated_steps(parsed);
+        prep.spheres = particles[prep_index];
+        prep.cost = prep.spheres * estimated_steps(parsed, prep.spheres);
         prep.family = d.name + " " + study.preparation;
         prep.variants = {v.name};
         preparations[unnamed_text] = prep_index;
@@ -323,7 +375,8 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
         const dem::SceneConfig tp = in_context(study, test_where, [&] { return dem::scene_from_text(run.scene_text, run.scene_file); });
         run.hash = content_hash(engine_version + "\n" + run.scene_text + "\nfrom " + from.hash);
         run.depends_on = prep_index;
-        run.cost = particles[prep_index] * estimated_steps(tp);
+        run.spheres = particles[prep_index];
+        run.cost = run.spheres * estimated_steps(tp, run.spheres);
         run.family = d.name + " " + t.scene;
         runs.push_back(run);
       }

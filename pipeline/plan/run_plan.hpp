@@ -20,6 +20,8 @@ struct PlannedRun {
   std::string hash;         // input hash, recorded in the result
   int depends_on = -1;      // index of the run whose result this one starts from
   double cost = 0;          // estimated particle-steps, for the ETA
+  double spheres = 0;       // of the sample
+  std::string cost_basis = "model";  // what `cost` is from: model, recorded (its own result) or <a run> (its family's)
   std::string family;       // density and source scene: runs whose actual length the ETA learns from one another
   std::string density, test;  // test: empty for a preparation
   std::optional<std::int64_t> seed;  // the sample's seed in an ensemble (study key seeds)

@@ -32,14 +32,16 @@ if [ -z "${DISPLAY:-}" ]; then
 fi
 mkdir -p "$(dirname "$png")"
 # ParaView's log goes to a file; its own message or the error is what we show.
-# Mesa's software OpenGL (Xvfb has no GPU). A fresh Xvfb sometimes refuses pvbatch's first
-# connection ("bad X server connection"): try up to three times.
+# Mesa's software OpenGL (Xvfb has no GPU). A fresh Xvfb often refuses pvbatch's first
+# connections ("bad X server connection"; xvfb-run's display does too; on a loaded 2-core VM all of
+# five tries 2 s apart once): try up to ten times, 3 s apart, each in a subshell that logs the
+# abort of a refused try instead of showing it.
 export LIBGL_ALWAYS_SOFTWARE=1
 log=$(mktemp)
-for attempt in 1 2 3; do
-  pvbatch "$here/render_spheres.py" "$xdmf" "$png" "$title" > "$log" 2>&1 && break
+for attempt in $(seq 10); do
+  (pvbatch "$here/render_spheres.py" "$xdmf" "$png" "$title"; exit $?) > "$log" 2>&1 && break
   grep -q 'bad X server connection' "$log" || break
-  sleep 2
+  sleep 3
 done
 if ! grep -q '^rendered' "$log"; then
   grep -v '^ *[0-9]\+ \+0x' "$log" | tail -20 >&2; rm -f "$log"; exit 1

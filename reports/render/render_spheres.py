@@ -1,9 +1,10 @@
 # A real client of the result files: ParaView opens a result's XDMF view (engine/io/xdmf.*, written
 # beside every complete result) and renders the spheres of its last frame, each a sphere of its own
-# radius, coloured by the radius, the cell's outline and, if the result has frames with contacts
-# (output.frames.contacts), the contact forces as tubes whose radius grows with the normal force,
-# to a PNG. Run by `make render`:
-#   pvbatch --force-offscreen-rendering reports/render/render_spheres.py RESULT.xdmf OUT.png [TITLE]
+# radius, translucent and coloured by the radius, the cell's outline and, if the result has frames
+# with contacts (output.frames.contacts), the contact forces as tubes whose radius grows with the
+# normal force, to a PNG. Run through render.sh (`dem render RESULT.h5 --out OUT.png`, `make render`),
+# which gives pvbatch a virtual X display:
+#   reports/render/render.sh RESULT.xdmf OUT.png [TITLE]
 # (Python only as a client script: the project's own code is C++.)
 import sys
 
@@ -56,6 +57,7 @@ spheres.GlyphMode = "All Points"
 spheres.GlyphType.ThetaResolution = 16
 spheres.GlyphType.PhiResolution = 12
 display = Show(spheres, view)
+display.Opacity = 0.5  # translucent: the cell's far edges and the grains behind show through
 
 
 def colour(shown, array, preset, title):
@@ -77,7 +79,7 @@ colour(display, "radius", "Viridis (matplotlib)", "radius (m)").RangeLabelFormat
 cell = grid("cell")
 if cell is not None:
     outline = Show(cell, view)
-    outline.SetRepresentationType("Outline")
+    outline.SetRepresentationType("Wireframe")  # the XDMF's cell is its 12 edges
     outline.AmbientColor = outline.DiffuseColor = [0, 0, 0]
     outline.LineWidth = 2
 contacts = grid("contacts")

@@ -4,7 +4,7 @@
 # answers --help, and the installed example (from its shipped sample, shortened) runs to a complete
 # result written in the current folder; every tool, the studies, the reference files, the report's
 # templates and the installed layout's README are there, and `pipeline new` copies an installed
-# study into the current folder, which then plans.
+# study into the current folder, which then plans; dem render finds the installed render script.
 #   tests/install/install_test.sh BUILD_DIR WORKDIR
 set -u
 build=$1 work=$2
@@ -52,5 +52,11 @@ grep -q "^preparation: $share/scenes/prepare_dense.yaml\|^preparation: .*share/c
 "$prefix/bin/pipeline" my_study.yaml --plan --profile quick > plan.log 2>&1 || { echo "FAIL: pipeline my_study.yaml --plan:"; cat plan.log; fail=1; }
 grep -q "^seed1/loose_prepare " plan.log || { echo "FAIL: the plan lists no seed1/loose_prepare:"; head plan.log; fail=1; }
 [ -d results/my_study/quick ] || { echo "FAIL: the copy's results folder is not results/my_study/quick beside it"; fail=1; }
+# dem render finds the installed render script: a missing result is then the only complaint.
+[ -x "$prefix/share/cyclic-triax/render/render.sh" ] && [ -f "$prefix/share/cyclic-triax/render/render_spheres.py" ] ||
+  { echo "FAIL: the render script is not installed"; fail=1; }
+"$prefix/bin/dem" render none.h5 --out none.png > render.log 2>&1
+[ $? = 2 ] && grep -q "none.h5 is not a result file" render.log ||
+  { echo "FAIL: installed dem render:"; cat render.log; fail=1; }
 [ $fail = 0 ] && echo "install: $prefix/bin/dem ($installed) ran the installed example in $(pwd)"
 exit $fail

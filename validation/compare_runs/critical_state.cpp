@@ -604,10 +604,10 @@ std::string rates_section(const std::vector<RateSeries>& series, const std::stri
          << fixed(validation::compression_friction_deg(at), 2) << "°";
     }
     if (f.n > 2) {
-      const double t = validation::t_quantile(1 - (1 - validation::prediction_level) / 2, f.n - 2);
+      const double quantile = validation::t_quantile(1 - (1 - validation::prediction_level) / 2, f.n - 2);
       md << ". The standard error rests on " << f.n - 2 << (f.n - 2 == 1 ? " degree" : " degrees") << " of freedom: a "
-         << number(100 * validation::prediction_level) << " % interval is ± " << validation::significant(t, 3) << " se (± "
-         << validation::significant(t * f.intercept_se, 2) << " in q/p)";
+         << number(100 * validation::prediction_level) << " % interval is ± " << validation::significant(quantile, 3) << " se (± "
+         << validation::significant(quantile * f.intercept_se, 2) << " in q/p)";
     }
     md << (s.problems.empty() ? ". q/p changes monotonically with I." : ". ⚠ " + s.problems + ".");
     if (fastest) md << against_reference(s, *fastest->run, rows);

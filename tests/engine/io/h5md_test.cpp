@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <map>
 #include <sstream>
@@ -161,6 +162,11 @@ TEST_CASE("a result holds H5MD particle frames at the start and end of the run, 
     CHECK(count(xml, ">r.h5:/particles/all/radius<") == 2);
     CHECK(count(xml, "Dimensions=\"2 27 3\"") == 6);  // three vector datasets per frame, each 2 frames long
     CHECK(count(xml, dir) == 0);                     // no absolute paths
+    // Per frame the cell as its 12 edges (lines that hide nothing), corners from /frames/cell_corners.
+    CHECK(count(xml, "TopologyType=\"Polyline\" NodesPerElement=\"2\" NumberOfElements=\"12\"") == 2);
+    CHECK(count(xml, ">0 1 2 3 4 5 6 7 0 2 1 3 4 6 5 7 0 4 1 5 2 6 3 7<") == 2);
+    CHECK(count(xml, ">r.h5:/frames/cell_corners<") == 2);
+    CHECK(count(xml, "Hexahedron") == 0);
     if (test::have_program("xmllint")) CHECK(test::run_command("xmllint --noout '" + dir + "/r.xdmf' 2>&1").exit_code == 0);
   }
 }
@@ -183,6 +189,36 @@ TEST_CASE("frames come at their own interval, whatever output.interval is", "[io
   std::vector<long> row_steps;
   for (double t : row_time) row_steps.push_back(std::lround(t / 1e-6));
   CHECK(row_steps == std::vector<long>{0, 200, 400, 500});
+}
+
+// A result written before /frames existed (the shipped samples): its cell's outline from the box
+// lengths of each frame, written into the XML: corner k at (k & 1, k >> 1 & 1, k >> 2 & 1) L.
+TEST_CASE("the XDMF of a result without cell corners outlines the box of each frame", "[io][h5md]") {
+  const std::string dir = test::scratch_dir("h5md_no_corners");
+  fs::copy_file(std::string(DEM_SOURCE_DIR) + "/scenes/samples/dense_1k.h5", dir + "/s.h5");
+  std::vector<double> L;
+  {
+    h5::Handle f = h5::open_file_read(dir + "/s.h5");
+    REQUIRE_FALSE(h5::exists(f, "frames"));
+    std::size_t cols = 0;
+    L = h5::read<double>(h5::open_group(f, "particles/all"), "box/edges/value", cols);
+  }
+  REQUIRE(L.size() == 6);  // two frames: the lattice and the end
+  write_xdmf(dir + "/s.h5");
+  const std::string xml = test::read_bytes(dir + "/s.xdmf");
+  CHECK(count(xml, "NumberOfElements=\"12\"") == 2);
+  for (std::size_t frame = 0; frame < 2; ++frame) {
+    std::string corners;
+    for (int k = 0; k < 8; ++k)
+      for (std::size_t axis = 0; axis < 3; ++axis) {
+        char v[32];
+        std::snprintf(v, sizeof v, "%.17g", L[3 * frame + axis]);
+        corners += std::string(k || axis ? " " : "") + ((k >> axis) & 1 ? v : "0");
+      }
+    INFO(corners);
+    CHECK(count(xml, ">" + corners + "</DataItem>") == 1);
+  }
+  CHECK(count(xml, ">s.h5:/particles/all/position/value<") == 2);
 }
 
 TEST_CASE("a failed run leaves no XDMF, and its partial result holds only the frames it wrote", "[io][h5md]") {

@@ -138,6 +138,44 @@ TEST_CASE("dem run writes a complete result and dem table prints its columns", "
   CHECK_THAT(bad_column.out, Catch::Matchers::Contains("has no column 'pressure'"));
 }
 
+// Progress where stderr is not a terminal (here a pipe): a line of its own per interval. The run
+// reports every 256 steps of a stage from its first; 500 steps give reports after steps 1 and 257.
+TEST_CASE("dem run: progress lines when stderr is not a terminal", "[run][cli][progress]") {
+  if (!have_dem()) return;
+  const std::string dir = dem::test::scratch_dir("cli_progress");
+  const std::string scene = std::string(DEM_SOURCE_DIR) + "/tests/data/csv_scene/scene.yaml";
+  const auto lines_of = [](const std::string& text) {
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);)
+      if (line.rfind("[csv_scene ", 0) == 0) lines.push_back(line);
+    return lines;
+  };
+  SECTION("interval 0: a line at every report, with the rate since the line before and the stage's ETA") {
+    const auto r = dem_stderr("run '" + scene + "' --out '" + dir + "/r.h5' --no-resume --force --progress-interval 0");
+    INFO(r.out);
+    CHECK(r.exit_code == 0);
+    CHECK(r.out.find('\r') == std::string::npos);  // no terminal redraw
+    const auto lines = lines_of(r.out);
+    REQUIRE(lines.size() == 2);
+    CHECK(lines[0].rfind("[csv_scene 1/1 'squeeze'] step 1, t = 1e-06 s", 0) == 0);
+    CHECK_THAT(lines[0], !Catch::Matchers::Contains("steps/s"));  // nothing to take a rate over yet
+    CHECK(lines[1].rfind("[csv_scene 1/1 'squeeze'] step 257, t = 0.000257 s, ", 0) == 0);
+    CHECK_THAT(lines[1], Catch::Matchers::Contains(" steps/s, 51 % of stage, ETA "));  // 256 of 500 steps done
+  }
+  SECTION("the default interval (30 s): none in a run of a fraction of a second") {
+    const auto r = dem_stderr("run '" + scene + "' --out '" + dir + "/r.h5' --no-resume --force");
+    CHECK(r.exit_code == 0);
+    CHECK(lines_of(r.out).empty());
+  }
+  SECTION("--quiet: none; a negative interval is refused with the option's name") {
+    CHECK(lines_of(dem_stderr("run '" + scene + "' --out '" + dir + "/r.h5' --no-resume --force --quiet --progress-interval 0").out).empty());
+    const auto bad = dem_stderr("run '" + scene + "' --out '" + dir + "/r.h5' --progress-interval -1");
+    CHECK(bad.exit_code == 2);
+    CHECK_THAT(bad.out, Catch::Matchers::Contains("--progress-interval"));
+  }
+}
+
 TEST_CASE("dem run: a stage that fails exits with status 1 and keeps the partial result", "[run][cli]") {
   if (!have_dem()) return;
   const std::string dir = dem::test::scratch_dir("cli_fail");
