@@ -529,7 +529,7 @@ std::string energy_error_cause(const Simulation& sim) {
         << " on the most damped sphere (unstable from about 1; c = 2 zeta sqrt(m* k) per contact, so it grows with the "
            "contacts a sphere has, which the one-contact critical step does not count): lower material.contact_damping = "
         << contact_damping_ratio(law) << " or the time step (" << sim.time_step() << " s = " << fraction << " x critical)";
-  } else if (fraction > safe_fraction) {
+  } else if (fraction > safe_fraction * (1 + 1e-9)) {  // a step set to exactly the limit reads back a rounding above it
     msg << step.str() << " is too large for this stiffness and loading";
   } else if (tangential_history_name(law) == MindlinCoulomb::history_name) {
     msg << "Hertz-Mindlin's tangential spring is incremental (k_t grows with the overlap) and not conservative: the "
