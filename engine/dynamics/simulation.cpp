@@ -65,9 +65,7 @@ struct Simulation::Kernel {
 // pair loop did) leaves c dt/4 (u_end^2 - u_start^2) open per contact, an O(dt) closure error;
 // with both halves what is left is the leapfrog's O(dt^2) (energy_balance_test.cpp).
 template <class Law>
-double dashpot_second_half(const Law& law, const Particles& p, const PairList& pairs, const PairForces& out,
-                           const CellRates& rates, double dt) {
-  (void)law;
+double dashpot_second_half(const Particles& p, const PairList& pairs, const PairForces& out, const CellRates& rates, double dt) {
   double lost = 0;
   const Vec3& g = rates.axial;
   const Vec3& shear = rates.shear;
@@ -102,7 +100,7 @@ struct KernelImpl final : Simulation::Kernel {
   }
   double dashpot_second_half(const Simulation& s) const override {
     if constexpr (Law::damped) {
-      return dem::dashpot_second_half(law, s.particles_, s.list_.pairs(), *s.pair_forces_, s.rates_, s.dt_);
+      return dem::dashpot_second_half<Law>(s.particles_, s.list_.pairs(), *s.pair_forces_, s.rates_, s.dt_);
     } else {
       return 0.0;
     }
