@@ -91,13 +91,18 @@ std::optional<double> largest_closure_error(const Columns& c) {
   // The energy that has come in, row by row: what is stored plus what was dissipated (equal to
   // the engine's energy in, the stored energy of the first row, the state at t = 0, plus the
   // cell's work, up to the closure gap itself).
+  // A store below zero (cohesive contacts) counts as zero, as in the engine's denominator
+  // (EnergyBalance::closure_error): what it released is in the dissipated energy.
   std::vector<double> in(err->second.size(), 1.0);
-  const char* terms[] = {"elastic_energy_normal", "elastic_energy_tangential", "kinetic_energy_centred",
-                         "dissipated_by_damping", "dissipated_by_friction"};
-  if (std::all_of(std::begin(terms), std::end(terms), [&](const char* k) { return c.count(k) > 0; }))
+  const char* stores[] = {"elastic_energy_normal", "elastic_energy_tangential", "kinetic_energy_centred"};
+  const char* sinks[] = {"dissipated_by_damping", "dissipated_by_friction"};
+  const auto has = [&](const char* k) { return c.count(k) > 0; };
+  if (std::all_of(std::begin(stores), std::end(stores), has) && std::all_of(std::begin(sinks), std::end(sinks), has))
     for (std::size_t i = 0; i < in.size(); ++i) {
-      in[i] = 0;
-      for (const char* k : terms) in[i] += c.at(k)[i];
+      double stored = 0;
+      for (const char* k : stores) stored += c.at(k)[i];
+      in[i] = std::max(stored, 0.0);
+      for (const char* k : sinks) in[i] += c.at(k)[i];
     }
   const double top = *std::max_element(in.begin(), in.end());
   double worst = 0;

@@ -3,6 +3,8 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 #include "contact/scalar_lanes.hpp"
@@ -105,6 +107,74 @@ double unbalanced_force_ratio(const Simulation& sim) {
   for (const Vec3& f : sim.net_force()) sum_net += f.norm();
   const double mean_net = sum_net / static_cast<double>(sim.net_force().size());
   return mean_net / (s.sum_normal_force_N / static_cast<double>(s.contacts));
+}
+
+namespace {
+// Calls f(law, i, j, overlap, reduced radius) for each pair in contact at the current positions.
+template <class F>
+void for_each_contact(const Simulation& sim, F&& f) {
+  std::visit(
+      [&](const auto& law) {
+        const Particles& p = sim.particles();
+        const PairList& pairs = sim.pairs();
+        for (std::size_t k = 0; k < pairs.size(); ++k) {
+          const auto i = pairs.first[k], j = pairs.second[k];
+          const double rsum = p.radius[i] + p.radius[j];
+          const double dist = sim.cell().branch(p.s[i], p.s[j]).norm();
+          if (!(dist < rsum)) continue;
+          f(law, i, j, rsum - dist, (p.radius[i] * p.radius[j]) / rsum);
+        }
+      },
+      sim.material().law);
+}
+
+// The factor the contact dashpots put on the critical step (1 without them).
+double dashpot_factor(const AnyContactLaw& law) {
+  return std::visit(
+      [](const auto& l) {
+        if constexpr (std::decay_t<decltype(l)>::damped) return l.normal.damped_factor();
+        return 1.0;
+      },
+      law);
+}
+}  // namespace
+
+double dashpot_step_number(const Simulation& sim) {
+  using O = scalar_lanes::Ops;
+  const Particles& p = sim.particles();
+  std::vector<double> sum(p.size(), 0.0);  // sum_c max(c_n, c_t) per particle [kg/s]
+  bool damped = false;
+  for_each_contact(sim, [&](const auto& law, auto i, auto j, double overlap, double reduced_radius) {
+    using Law = std::decay_t<decltype(law)>;
+    if constexpr (Law::damped) {
+      damped = true;
+      const double m_star = (p.mass[i] * p.mass[j]) / (p.mass[i] + p.mass[j]);
+      double k_max = law.normal.template stiffness<O>(overlap, reduced_radius);
+      if constexpr (Law::has_tangential) k_max = std::max(k_max, law.tangential.template stiffness<O>(overlap, reduced_radius));
+      const double c = 2 * law.normal.damping_ratio * std::sqrt(m_star * k_max);
+      sum[i] += c, sum[j] += c;
+    }
+  });
+  if (!damped) return 0.0;
+  double largest = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) largest = std::max(largest, sum[i] / p.mass[i]);
+  return sim.time_step() * largest;
+}
+
+double time_step_over_critical(const Simulation& sim) {
+  return sim.time_step() / critical_time_step(sim.material().law, sim.particles(), sim.material().density_kg_per_m3);
+}
+
+double time_step_over_contact_critical(const Simulation& sim) {
+  using O = scalar_lanes::Ops;
+  double k_max = 0;
+  for_each_contact(sim, [&](const auto& law, auto, auto, double overlap, double reduced_radius) {
+    k_max = std::max(k_max, law.normal.template stiffness<O>(overlap, reduced_radius));
+  });
+  if (!(k_max > 0)) return 0.0;
+  const Particles& p = sim.particles();
+  const double m_min = *std::min_element(p.mass.begin(), p.mass.end());
+  return sim.time_step() / (2 * std::sqrt(m_min / k_max) * dashpot_factor(sim.material().law));
 }
 
 double translational_kinetic_energy(const Particles& p) {

@@ -42,6 +42,25 @@ double mechanical_coordination_number(const ContactCounts& c, std::size_t partic
 // The normal force is used as the mean contact force; since |f| >= f_n this errs on the high side.
 double unbalanced_force_ratio(const Simulation& sim);
 
+// The contact dashpots' step number dt max_i sum_c max(c_n, c_t) / m_i over the contacts at the
+// current positions (contact/contact_dashpot.hpp: c = 2 zeta sqrt(m* k)), 0 for a law without them.
+// The dashpot force is taken from the speed of the previous half step, an explicit update: a
+// sphere whose Z neighbours move against it (v_j = -v_i) sees its velocity multiplied each step by
+// 1 - 2 dt sum_c c_c / m_i along a direction where every contact's damping acts (c_n = c_t when
+// ks = kn), which is unstable once that passes -1, i.e. once this number passes 1, whatever the
+// one-contact critical step says (it is computed for a single contact).
+double dashpot_step_number(const Simulation& sim);
+
+// The time step over the law's critical step as the engine checks it (critical_time_step,
+// contact/contact_law.hpp; the lightest sphere and the law's constants).
+double time_step_over_critical(const Simulation& sim);
+// The time step over the leapfrog limit of the stiffest contact at the current positions,
+// 2 sqrt(m_min / k_max) (times sqrt(1 + zeta^2) - zeta with contact dashpots), k_max the largest
+// tangent normal stiffness d f_n / d overlap of the contacts: the linear laws' critical step again
+// (k = kn), and for Hertz (k_n = 2 E* sqrt(R* overlap)) the limit at the largest overlap, which
+// Rayleigh's step does not see. 0 without contacts.
+double time_step_over_contact_critical(const Simulation& sim);
+
 double translational_kinetic_energy(const Particles& p);  // of the fluctuating velocities [J]
 double rotational_kinetic_energy(const Particles& p);     // [J]
 

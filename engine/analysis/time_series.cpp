@@ -132,7 +132,7 @@ const ColumnDef<RowInputs> columns[] = {
     {"work_by_cell", "J", "integral of V sigma:d(eps) since the run started, compression positive", [](In r) { return r.e.work_by_cell; }},
     {"dissipated_by_damping", "J", "since the run started", [](In r) { return r.e.dissipated_damping; }},
     {"dissipated_by_friction", "J", "by sliding contacts since the run started", [](In r) { return r.e.dissipated_friction; }},
-    {"energy_closure_error", "1", "|E_in - (E_stored + E_dissipated)| / E_in, E_in = stored energy at the start + work by the cell",
+    {"energy_closure_error", "1", "|E_in - (E_stored + E_dissipated)| / (E_in + max(0, -E_stored)), E_in = stored energy at the start + work by the cell (E_stored < 0 only with cohesion)",
      [](In r) { return r.e.closure_error(); }},
     {"elastic_energy_rolling", "J", "stored in the rolling springs, sum 1/2 kr |u_r|^2 (0 without rolling resistance)",
      [](In r) { return r.e.started ? r.sim.sums().elastic_rolling_J : r.c.elastic_rolling_J; }},
@@ -155,6 +155,12 @@ const ColumnDef<RowInputs> columns[] = {
     {"double_amplitude_strain", "1",
      "control stages with cyclic loading: max - min strain of the cyclic component in the current cycle",
      [](In r) { return r.where.double_amplitude_strain; }},
+    {"time_step_over_critical", "1", "time step / the law's critical step as the engine checks it (numerics.max_time_step_fraction)",
+     [](In r) { return time_step_over_critical(r.sim); }},
+    {"time_step_over_contact_critical", "1",
+     "time step / 2 sqrt(m_min / k_max), k_max the stiffest contact's d f_n/d overlap at this row (Hertz: at its largest "
+     "overlap); 0 without contacts",
+     [](In r) { return time_step_over_contact_critical(r.sim); }},
 };
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <type_traits>
 #include <vector>
 
 #include <omp.h>
@@ -107,6 +108,10 @@ struct PairForces {
   std::vector<StepSums> chunk_sums;       // per pair chunk; every chunk writes its own entry
   std::vector<MotionSums> motion_sums;    // per chunk of particles
   std::vector<Sum4> net_force;            // per particle: the scattered sums, zero between steps
+  // Laws with contact dashpots: per pair, the dashpots' force on `second` [N] (0 out of contact)
+  // and the branch vector [m] of this evaluation, for the second half of their dissipation
+  // (dashpot_second_half, below).
+  std::vector<Vec3> dashpot_force, dashpot_branch;
   Sum4* scattered_sums(std::size_t particles) {
     net_force.resize(particles, Sum4{});
     return net_force.data();
@@ -144,6 +149,14 @@ struct PairLoop {
   Vec3* __restrict torque_j;
   Sum4* __restrict scattered = nullptr;  // set: add the forces into these particle sums instead (see PairForces)
   const double* __restrict mass;  // laws with contact dashpots (m*); last, so the other laws' loop reads the fields it did
+  // Laws with contact dashpots: where the pair loop leaves each pair's dashpot force and branch
+  // vector (PairForces); no member at all for the other laws.
+  struct DashpotOut {
+    Vec3* __restrict force;
+    Vec3* __restrict branch;
+  };
+  struct NoDashpot {};
+  [[no_unique_address]] std::conditional_t<Law::damped, DashpotOut, NoDashpot> dashpot_out;
 
   // Sizes the outputs and points at them.
   PairLoop(const Law& law_, const Particles& p, const PeriodicCell& cell_, const PairList& pairs, ContactHistory& history,
@@ -173,6 +186,11 @@ struct PairLoop {
     pair_force = out.force.data();
     torque_i = out.torque_i.data();
     torque_j = out.torque_j.data();
+    if constexpr (Law::damped) {
+      out.dashpot_force.resize(pairs.size());
+      out.dashpot_branch.resize(pairs.size());
+      dashpot_out = {out.dashpot_force.data(), out.dashpot_branch.data()};
+    }
   }
 };
 

@@ -538,6 +538,33 @@ void run_stage(Simulation& sim, const SceneConfig& scene, int index, const Stage
   if (hooks.row && !output_due(sim, scene)) hooks.row(sim, {index});  // the stage end is always recorded
 }
 
+std::string energy_error_cause(const Simulation& sim) {
+  const double safe_fraction = SceneConfig{}.max_time_step_fraction;
+  const AnyContactLaw& law = sim.material().law;
+  const double fraction = sim.time_step() / critical_time_step(law, sim.particles(), sim.material().density_kg_per_m3);
+  std::ostringstream step;
+  step << "the time step (" << sim.time_step() << " s = " << fraction << " x critical, " << critical_time_step_formula(law) << ")";
+  std::ostringstream msg;
+  if (const double d = dashpot_step_number(sim); d >= 0.5) {
+    msg << "the contact dashpots are past their explicit limit: dt sum_c c / m = " << d
+        << " on the most damped sphere (unstable from about 1; c = 2 zeta sqrt(m* k) per contact, so it grows with the "
+           "contacts a sphere has, which the one-contact critical step does not count): lower material.contact_damping = "
+        << contact_damping_ratio(law) << " or the time step (" << sim.time_step() << " s = " << fraction << " x critical)";
+  } else if (fraction > safe_fraction * (1 + 1e-9)) {  // a step set to exactly the limit reads back a rounding above it
+    msg << step.str() << " is too large for this stiffness and loading";
+  } else if (tangential_history_name(law) == MindlinCoulomb::history_name) {
+    msg << "Hertz-Mindlin's tangential spring is incremental (k_t grows with the overlap) and not conservative: the "
+           "balance stays open by a term that does not fall with the time step, bounded by the Coulomb cap "
+           "(engine/README.md); "
+        << step.str() << " is within the " << safe_fraction
+        << " x critical allowed by default: raise numerics.max_energy_error for this law";
+  } else {
+    msg << step.str() << " may be too large for this stiffness and loading (it is within the " << safe_fraction
+        << " x critical allowed by default)";
+  }
+  return msg.str();
+}
+
 namespace {
 
 // The checkpoint this run continues from, if any (see Resume).
@@ -581,8 +608,7 @@ RunSummary run_stages(Simulation& sim, const SceneConfig& scene, const Checkpoin
       std::ostringstream msg;
       msg << "the energy balance no longer closes at step " << s.step_count() << " (time " << s.time()
           << " s): closure error " << error << " > numerics.max_energy_error = " << scene.max_energy_error
-          << "; the time step (" << s.time_step() << " s = " << s.time_step() / critical_time_step(s.material().law, s.particles(), s.material().density_kg_per_m3)
-          << " x critical) is too large for this stiffness and loading";
+          << "; " << energy_error_cause(s);
       throw StageError(msg.str());
     }
   };

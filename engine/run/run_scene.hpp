@@ -98,6 +98,17 @@ HoldStatus hold_status(const Simulation& sim, const StageConfig& stage);
 void run_stage(Simulation& sim, const SceneConfig& scene, int index, const StageHooks& hooks,
                const StageCursor* resume = nullptr);
 
+// Why a run's energy balance no longer closes, as the energy guard's message ends (after "; "):
+// the most likely cause from the state it stopped in, naming the key to change. In this order:
+//  - contact dashpots past their explicit limit: dashpot_step_number (analysis/measurements.hpp)
+//    at 0.5 or above (unstable from about 1; the springs take the rest of the margin);
+//  - a time step above the default numerics.max_time_step_fraction x the law's critical step
+//    (allowed on purpose);
+//  - Hertz-Mindlin with friction: its incremental tangential spring is not conservative, and the
+//    balance stays open by a term that does not fall with the time step (hertz_mindlin.hpp);
+//  - otherwise the time step, with its fraction of the critical step.
+std::string energy_error_cause(const Simulation& sim);
+
 struct RunSummary {
   std::int64_t steps = 0;
   double wall_time_s = 0;

@@ -91,6 +91,19 @@ TEST_CASE("stability outcomes: ran within the closure limit, stopped with a mess
   CHECK_FALSE(o.acceptable);
   CHECK_THAT(o.outcome, Catch::Matchers::Contains("closure above"));
 
+  // Cohesive contacts store negative energy: a store below zero counts as zero in the energy that
+  // came in (the damping holds what they released), so the rows are judged, not all left out.
+  validation::Columns cohesive = ok;
+  cohesive["energy_closure_error"] = {0.5, 0.004, 0.03};
+  // Last row: stored -7.99 + 1 + 1, dissipated 5 + 1; summed with its sign the energy in would be
+  // 0.01, below 1 % of the second row's 2, and the 3 % would go unseen.
+  cohesive["elastic_energy_normal"] = {0, 0, -7.99};
+  cohesive["dissipated_by_damping"] = {0.001, 0.5, 5.0};
+  o = validation::classify_case(CaseRun{true, std::nullopt, "", cohesive});
+  REQUIRE(o.closure);
+  CHECK(*o.closure == 0.03);
+  CHECK_FALSE(o.acceptable);
+
   validation::Columns nan = ok;
   nan["p"] = {1, std::nan(""), 1};
   o = validation::classify_case(CaseRun{true, std::nullopt, "", nan});

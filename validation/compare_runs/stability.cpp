@@ -1,5 +1,6 @@
 // compare-runs stability: what became of each case of the stability study (the paper's time step and
 // stiffness cases), one row per run: OUT/table.md.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 
@@ -13,8 +14,26 @@ namespace fs = std::filesystem;
 
 namespace compare_runs {
 
+namespace {
+// The largest value of a time-series column over the run, to 3 significant digits; "—" if the
+// result has no such column or no row.
+std::string largest(const validation::Columns& series, const std::string& column) {
+  const auto it = series.find(column);
+  if (it == series.end() || it->second.empty()) return "—";
+  double m = it->second.front();
+  for (const double x : it->second) m = std::max(m, x);
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", m);
+  return buf;
+}
+}  // namespace
+
 int stability(const Manifest& manifest, const std::string& results, const std::string& out, bool report_only) {
-  validation::MarkdownTable table({"case", "settings", "outcome", "steps (last row written)", "energy closure error", "message"});
+  // The time step against the law's critical step as the engine checks it, and against the
+  // leapfrog limit at the stiffest contact seen (for Hertz, whose stiffness grows with the overlap,
+  // the limit at the largest overlap of the run; the same for the linear laws once in contact).
+  validation::MarkdownTable table({"case", "settings", "outcome", "steps (last row written)", "dt / critical (engine)",
+                                   "dt / critical at the stiffest contact seen", "energy closure error", "message"});
   int bad = 0;
   for (const std::string& v : manifest.variants) {
     for (const ManifestLine& l : manifest.by_variant.at(v)) {
@@ -35,7 +54,8 @@ int stability(const Manifest& manifest, const std::string& results, const std::s
         o.message = o.message.substr(at + 7);
       bad += !o.acceptable;
       table.row({l.test == "-" ? v : v + " " + l.test, relative_paths(l.settings, results), (o.acceptable ? "" : "⚠ ") + o.outcome,
-                 std::to_string(o.steps), o.closure ? percent(*o.closure) : "—", o.message});
+                 std::to_string(o.steps), largest(run.series, "time_step_over_critical"),
+                 largest(run.series, "time_step_over_contact_critical"), o.closure ? percent(*o.closure) : "—", o.message});
     }
   }
   const fs::path md = fs::path(out) / "table.md";
