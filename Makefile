@@ -176,7 +176,7 @@ quick: build
 # Validation table, figures, the convergence, stability, critical-state and liquefaction sections
 # and reports/index.md from the results of the full studies (a section whose study has not run
 # says so; a missing or unfinished one does not fail the report). build/bin/report writes
-# index.md from reports/templates/ and computes every number in its prose (validation/report.hpp);
+# index.md from reports/templates/ and computes every number in its prose (validation/report/);
 # BASELINE is an earlier baseline's validation.json it compares every row with.
 BASELINE ?= reports/baselines/orthorhombic_validation.json
 REPORT_SOURCE = --source "commit $$(git rev-parse --short=12 HEAD 2>/dev/null || echo unknown)$$(git diff --quiet HEAD -- . ':!reports' 2>/dev/null || echo ' (with uncommitted changes)')"
