@@ -12,6 +12,7 @@
 #include "generate/grading.hpp"
 #include "io/state_io.hpp"
 #include "judge/quantities.hpp"
+#include "study/columns.hpp"
 #include "study/format.hpp"
 #include "study/manifest.hpp"
 #include "study/settings.hpp"
@@ -102,16 +103,51 @@ void fig02_samples(const FigureSource& src, const Preparations& prepare, FigureF
   out.values.number("sample_side_mm", side_mm > 0 ? std::ceil(side_mm / 5) * 5 : 1);
 }
 
+// The headline check before shearing: e0 and the coordination number of every sample of the
+// ensemble, by density (1 loose, 2 medium, 3 dense, the x of the figure), labelled by sample.
+void fig00_samples(const FigureSource& src, FigureFolder& out) {
+  Table t;
+  t.columns = {"density [1]", "void ratio e0 [1]", "coordination number [1]"};
+  for (std::size_t k = 0; k < src.densities.size(); ++k)
+    for (const Sample& s : src.samples) {
+      const auto it = s.densities.find(src.densities[k]);
+      if (it == s.densities.end() || !it->second.prepared) continue;
+      const auto& last = it->second.sample;
+      if (!last.count(col::void_ratio) || !last.count(col::coordination_number)) continue;
+      t.labels.push_back(s.name.empty() ? "the sample" : s.name);
+      t.rows.push_back({static_cast<double>(k + 1), last.at(col::void_ratio), last.at(col::coordination_number)});
+    }
+  out.write("fig00_samples.dat", t, "e0 and the coordination number of every sample before shearing (" + src.results + ")");
+  out.values.number("fig00_samples_rows", static_cast<double>(t.size()));
+}
+
 }  // namespace
 
 void sample_figures_data(const FigureSource& src, FigureFolder& out) {
   Preparations prepare = scene_values(src, out);
   fig01_fig02_lattice(src, prepare, out);
   fig02_samples(src, prepare, out);
+  fig00_samples(src, out);
+}
+
+// The headline check before shearing: e0 and the coordination number, mean ± sd over the samples,
+// against the paper's, with the verdicts of their rows.
+void fig00_values(NoteContext& c, Values& v) {
+  for (const std::string& d : paper_densities())
+    for (const auto& [key, quantity] : std::vector<std::pair<std::string, std::string>>{{"e0", "void_ratio_after_preparation"},
+                                                                                        {"cn", "coordination_after_preparation"}}) {
+      const RowResult* r = c.values_of(quantity, d);
+      if (!r || r->valued == 0) continue;
+      v["fig00." + key + "_" + d] = r->valued > 1 ? mean_pm_sd(r->spread.mean, r->spread.sd) : number(r->spread.mean);
+      v["fig00.inside_" + key + "_" + d] = std::to_string(r->holds) + " of " + std::to_string(r->valued);
+      v["fig00.paper_" + key + "_" + d] = c.paper(quantity, d);
+      v["fig00.verdict_" + key + "_" + d] = c.phrase(quantity, d);
+    }
 }
 
 // Fig. 2: the cell side of each prepared sample, scaled to the paper's sample size.
 void sample_figures_notes(NoteContext& c, Values& v) {
+  fig00_values(c, v);
   for (const std::string& d : paper_densities()) {
     const DensityResults* r = c.results_of(d);
     if (!r || !r->prepared) continue;

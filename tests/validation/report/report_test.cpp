@@ -243,6 +243,19 @@ TEST_CASE("report: every number in the figure notes is the fixture's", "[report]
   const Values v = figure_values(inputs(f));
   const int k1 = 0;  // seed1, the sample of the single-run figures
 
+  SECTION("The samples before shearing: e0 and CN of every sample against the paper's, and how many are within its tolerance") {
+    const std::string n = note(v, "fig00_samples.png");
+    // The fixture's e0 is 0.7 - 0.05 di and its CN 4.2 + 0.8 di in every sample (sd 0).
+    const auto e0 = captured(n, "e0 = " + num + R"( \(loose\), )" + num + R"( \(medium\) and )" + num + R"( \(dense\))");
+    for (int di = 0; di < 3; ++di) CHECK(e0[di] == Approx(0.7 - 0.05 * di));
+    CHECK(captured(n, "against the paper's " + num + ", " + num + " and " + num) == std::vector<double>{0.73, 0.67, 0.57});
+    // loose 0.7 and dense 0.6 lie outside 0.73 ± 0.02 and 0.57 ± 0.02 in all 3 samples; every CN
+    // lies within the paper's ± 0.15 (4.09, 4.88, 5.94).
+    CHECK(captured(n, R"(tolerance in (\d) of (\d), )") == std::vector<double>{0, 3});
+    CHECK(captured(n, R"(and (\d) of (\d) samples\), and)") == std::vector<double>{0, 3});
+    CHECK(captured(n, R"(within in (\d) of 3, (\d) of 3 and (\d) of 3 samples)") == std::vector<double>{3, 3, 3});
+    CHECK(captured(n, "coordination number of " + num + ", " + num + " and " + num) == std::vector<double>{4.2, 5.0, 5.8});
+  }
   SECTION("Fig. 2: cell side scaled from 1,000 to 8,000 spheres (x 2), cm") {
     const std::string n = note(v, "fig02_samples.png");
     std::smatch m;
