@@ -19,12 +19,6 @@ namespace validation {
 
 namespace {
 
-const std::vector<double>& column(const Columns& c, const std::string& name) {
-  const auto it = c.find(name);
-  if (it == c.end()) throw std::out_of_range("the result has no column '" + name + "'");
-  return it->second;
-}
-
 bool in_cycles(const SeriesRow& r, int max_cycle) { return max_cycle < 0 || r(col::cycle) <= max_cycle; }
 
 }  // namespace

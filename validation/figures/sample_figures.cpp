@@ -130,6 +130,15 @@ void sample_figures_data(const FigureSource& src, FigureFolder& out) {
   fig00_samples(src, out);
 }
 
+namespace {
+
+// The resolution of the paper's row of (quantity, density), 0 without a row.
+double resolution_of(const std::vector<Row>& rows, const std::string& quantity, const std::string& density) {
+  for (const Row& r : rows)
+    if (r.quantity == quantity && r.density == density) return r.resolution;
+  return 0;
+}
+
 // The headline check before shearing: e0 and the coordination number, mean ± sd over the samples,
 // against the paper's, with the verdicts of their rows.
 void fig00_values(NoteContext& c, Values& v) {
@@ -138,12 +147,16 @@ void fig00_values(NoteContext& c, Values& v) {
                                                                                         {"cn", "coordination_after_preparation"}}) {
       const RowResult* r = c.values_of(quantity, d);
       if (!r || r->valued == 0) continue;
-      v["fig00." + key + "_" + d] = r->valued > 1 ? mean_pm_sd(r->spread.mean, r->spread.sd) : number(r->spread.mean);
+      // a scatter below the row's resolution is round-off: the mean alone, to six significant digits
+      const double sd = r->spread.sd < resolution_of(c.in.paper, quantity, d) ? 0 : r->spread.sd;
+      v["fig00." + key + "_" + d] = r->valued > 1 ? mean_pm_sd(r->spread.mean, sd) : number(r->spread.mean);
       v["fig00.inside_" + key + "_" + d] = std::to_string(r->holds) + " of " + std::to_string(r->valued);
       v["fig00.paper_" + key + "_" + d] = c.paper(quantity, d);
       v["fig00.verdict_" + key + "_" + d] = c.phrase(quantity, d);
     }
 }
+
+}  // namespace
 
 // Fig. 2: the cell side of each prepared sample, scaled to the paper's sample size.
 void sample_figures_notes(NoteContext& c, Values& v) {

@@ -17,12 +17,6 @@ namespace {
 
 constexpr double degrees = 180 / std::numbers::pi;
 
-const std::vector<double>& column(const Columns& c, const std::string& name) {
-  const auto it = c.find(name);
-  if (it == c.end()) throw std::out_of_range("the result has no column '" + name + "'");
-  return it->second;
-}
-
 }  // namespace
 
 dem::Vec3 principal_stresses(const dem::Mat3& stress_Pa) {

@@ -26,7 +26,6 @@ namespace fs = std::filesystem;
 
 namespace compare_runs {
 
-using validation::cell;
 using validation::fixed;
 using validation::number;
 

@@ -11,16 +11,6 @@
 
 namespace validation {
 
-namespace {
-
-const std::vector<double>& column(const Columns& c, const std::string& name) {
-  const auto it = c.find(name);
-  if (it == c.end()) throw std::out_of_range("the result has no column '" + name + "'");
-  return it->second;
-}
-
-}  // namespace
-
 StageRows stage_rows(const Columns& series, int stage) {
   const std::vector<double>& s = column(series, "stage");
   const auto first = std::find(s.begin(), s.end(), static_cast<double>(stage));

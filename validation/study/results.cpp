@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <stdexcept>
 
 #include "io/hdf5.hpp"
 
@@ -132,6 +133,12 @@ const TestResult* find_test(const DensityResults& r, int number) {
   for (const TestResult& x : r.tests)
     if (x.number == number) return &x;
   return nullptr;
+}
+
+const std::vector<double>& column(const Columns& c, const std::string& name) {
+  const auto it = c.find(name);
+  if (it == c.end()) throw std::out_of_range("the result has no column '" + name + "'");
+  return it->second;
 }
 
 }  // namespace validation

@@ -30,6 +30,9 @@ struct DensityResults {
   std::vector<std::string> missing_runs;
 };
 
+// A column of a time series; throws std::out_of_range naming it when the result has none.
+const std::vector<double>& column(const Columns& c, const std::string& name);
+
 // The test numbered `number` (test<N>) of a density's results, or nullptr.
 const TestResult* find_test(const DensityResults& r, int number);
 
