@@ -192,7 +192,7 @@ quick: build
 # Validation table, figures, the convergence, stability, critical-state and liquefaction sections
 # and reports/index.md from the results of the full studies (a section whose study has not run
 # says so; a missing or unfinished one does not fail the report). build/bin/report writes
-# index.md from reports/templates/ and computes every number in its prose (validation/report.hpp);
+# index.md from reports/templates/ and computes every number in its prose (validation/report/);
 # reports/render_html.sh renders it into reports/index.html (cmark-gfm), the page a referee opens;
 # BASELINE is an earlier baseline's validation.json it compares every row with.
 BASELINE ?= reports/baselines/orthorhombic_validation.json

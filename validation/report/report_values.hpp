@@ -1,0 +1,51 @@
+#pragma once
+// The report's keys that do not come from the figures' data (report.hpp: figure_values): the
+// header and provenance, the runs of every sample, the settings the runs used, the tables other
+// tools wrote under the report's folder, the sizes of the decisions and readings studies, the
+// convergence and stability studies' settings, the earlier baseline and the figures' list. Each
+// function adds its keys to `v`; `report` (tools/report_main.cpp) calls them in this order and
+// fills reports/templates/index.md with the result.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "report/report.hpp"
+
+namespace validation {
+
+// A file's text, "" if it cannot be read.
+std::string read_text(const std::filesystem::path& p);
+
+// The options of `report` that name its inputs (empty: not given).
+struct ReportSources {
+  std::string results, out, templates, baseline, convergence, decisions, stability, source, note;
+};
+
+// date, results, note, source, tool_version, have_results, missing_results.
+void add_provenance(Values& v, const ReportSources& src, bool have_results, std::size_t missing);
+
+// runs_table, total_wall_s and engines (the software versions that wrote the results); returns
+// the time series of the chosen sample's runs (`v["sample"]`), named <density>_prepare and
+// <density>_test<N>, for the energy table.
+std::vector<std::pair<std::string, Columns>> add_runs(Values& v, const std::vector<Sample>& samples,
+                                                      const std::vector<std::string>& densities);
+
+// setting.* from the resolved scenes of the study in `results` ("?" where a scene does not say).
+void add_settings(Values& v, const std::string& results, bool have_results);
+
+// file.*: the tables other tools wrote under `report`; decisions.size and file.readings (the
+// readings studies' tables, each headed with its recorded size).
+void add_tables(Values& v, const std::filesystem::path& report, const std::vector<Row>& paper, const std::string& decisions_results);
+
+// convergence.*, stability.* and validation.prediction_percent from those studies' results.
+void add_study_settings(Values& v, const std::string& convergence_results, const std::string& stability_results);
+
+// baseline.*, state_a.table and shear_control.table (the earlier baseline given by --baseline).
+void add_baseline(Values& v, const std::string& baseline_file, const std::vector<Row>& rows, const std::vector<Sample>& samples);
+
+// file.figures_readme, figures (every figure with its note), renders, energy.*: the figures under
+// `report`/figures with the notes of `notes_tsv`; `energy_series` from add_runs.
+void add_figures(Values& v, const std::filesystem::path& report, const std::string& notes_tsv,
+                 const std::vector<std::pair<std::string, Columns>>& energy_series);
+
+}  // namespace validation

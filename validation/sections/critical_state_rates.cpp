@@ -1,0 +1,207 @@
+// compare-runs critical-state --rates: the critical q/p of compression against sqrt(I) over the
+// rates study's runs and the main study's own, fitted and taken to I -> 0 (critical_state_parts.hpp).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <numbers>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "sections/critical_state_parts.hpp"
+#include "sections/modes.hpp"
+#include "contact/contact_law.hpp"
+#include "judge/critical_state.hpp"
+#include "study/series.hpp"
+#include "study/format.hpp"
+#include "io/atomic_file.hpp"
+#include "study/line_fit.hpp"
+#include "study/markdown_table.hpp"
+#include "judge/rows.hpp"
+
+namespace fs = std::filesystem;
+
+namespace compare_runs {
+
+using validation::fixed;
+using validation::number;
+
+namespace {
+
+double inertial_of(const ShearRun& r) {
+  if (!r.summary || !r.summary->p_Pa.n) return NAN;
+  return validation::inertial_number(r.rate_per_s, r.diameter_m, r.density_kg_per_m3, r.summary->p_Pa.mean);
+}
+
+// A reference row of the critical-state angle that reads the series' run at the study's rate (its
+// density_test is the run's name): its value beside the quasi-static φ, since the row's own verdict is
+// at that rate and the reference holds at I -> 0. Empty when no row reads the run.
+std::string against_reference(const RateSeries& s, const ShearRun& table_run, const std::vector<validation::Row>& rows) {
+  if (!s.fit) return "";
+  for (const validation::Row& row : rows) {
+    if (row.quantity != "critical_state_friction_angle" || row.density + "_" + row.test != table_run.run) continue;
+    const double off = s.phi_deg - row.reference;
+    const double at_rate = validation::compression_friction_deg(table_run.summary->q_over_p.mean) - row.reference;
+    std::ostringstream md;
+    md << " The reference row \"" << row.name << "\" (" << row.source.substr(0, row.source.find(':')) << ") gives " << number(row.reference)
+       << "° with a reading tolerance of " << number(row.tolerance) << "°: the quasi-static φ is " << (off >= 0 ? "+" : "") << fixed(off, 2)
+       << "° from it (" << (std::abs(off) <= row.tolerance ? "within" : "beyond") << " the tolerance";
+    if (s.fit->n > 2) md << "; its se " << fixed(s.phi_se_deg, 2) << "°";
+    md << "), the " << number(table_run.rate_per_s) << " s⁻¹ run's " << (at_rate >= 0 ? "+" : "") << fixed(at_rate, 2)
+       << "° (the literature section judges the row at that rate).";
+    return md.str();
+  }
+  return "";
+}
+
+}  // namespace
+
+std::vector<RateSeries> rate_series(const std::vector<ShearRun>& rates, const std::vector<ShearRun>& main_runs, const std::string& rates_name,
+                                    const std::string& main_name) {
+  std::vector<RateSeries> out;
+  const auto add = [&](const ShearRun& r, const std::string& study) {
+    if (r.loading != "compression") return;
+    auto s = std::find_if(out.begin(), out.end(), [&](const RateSeries& x) { return x.mu == r.mu; });
+    if (s == out.end()) s = out.insert(out.end(), RateSeries{r.mu, {}, std::nullopt, NAN, NAN, ""});
+    s->points.push_back({&r, study, inertial_of(r)});
+  };
+  for (const ShearRun& r : rates) add(r, rates_name);
+  for (RateSeries& s : out)
+    for (const ShearRun& r : main_runs)
+      if (r.loading == "compression" && r.mu == s.mu) s.points.push_back({&r, main_name, inertial_of(r)});
+  for (RateSeries& s : out) {
+    std::sort(s.points.begin(), s.points.end(), [](const RatePoint& a, const RatePoint& b) { return a.run->rate_per_s > b.run->rate_per_s; });
+    std::vector<double> x, y;
+    std::vector<std::string> unfinished, not_held, no_value;  // the runs left out, by why (each run's note is in the table)
+    for (const RatePoint& p : s.points) {
+      if (!p.run->summary) unfinished.push_back(p.run->run);
+      else if (!p.run->held) not_held.push_back(p.run->run);
+      else if (!std::isfinite(p.inertial) || !p.run->summary->q_over_p.n) no_value.push_back(p.run->run);
+      else x.push_back(std::sqrt(p.inertial)), y.push_back(p.run->summary->q_over_p.mean);
+    }
+    const auto left_out = [&](const std::vector<std::string>& names, const std::string& why) {
+      if (names.empty()) return;
+      std::string list;
+      for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+      s.problems += list + " left out (" + why + "); ";
+    };
+    left_out(unfinished, "not finished or unreadable");
+    left_out(not_held, "not the test its name says: p or b not held, see its note");
+    left_out(no_value, "no inertial number or no critical-state rows: radii or scene missing");
+    if (x.size() < 2) {
+      s.problems += "no fit: " + std::to_string(x.size()) + " usable point(s); ";
+      continue;
+    }
+    s.fit = validation::fit_line(x, y);
+    s.phi_deg = validation::compression_friction_deg(s.fit->intercept);
+    s.phi_se_deg = validation::compression_friction_slope_deg(s.fit->intercept) * s.fit->intercept_se;
+    if (!s.fit->monotonic) s.problems += "poor fit: q/p does not change monotonically with I; ";
+    if (s.fit->slope < 0) s.problems += "q/p falls as I grows (slope " + validation::significant(s.fit->slope, 2) + "): the line is no rate effect of the usual sign; ";
+    if (s.fit->n == 2) s.problems += "two points: the line goes through both, no standard error; ";
+  }
+  for (RateSeries& s : out)
+    if (s.problems.size() >= 2) s.problems.resize(s.problems.size() - 2);
+  return out;
+}
+
+validation::Table rates_data(const std::vector<RateSeries>& series) {
+  validation::Table t;
+  t.comments = {"compare-runs critical-state --rates: one row per compression run of a rate series (values.gp rate_mu_<k>);",
+                "I = rate d sqrt(rho / p_cs); q/p at cs the window mean and its row-to-row sd; used 0: left out of the fit"};
+  t.columns = {"series [1]", "mu [1]", "strain_rate [1/s]", "diameter [m]", "density [kg/m3]", "p_cs [kPa]", "inertial_number [1]",
+               "sqrt_inertial_number [1]", "q_over_p_cs [1]", "q_over_p_cs_sd [1]", "used [1]"};
+  for (std::size_t k = 0; k < series.size(); ++k)
+    for (const RatePoint& p : series[k].points) {
+      const ShearRun& r = *p.run;
+      const bool has = r.summary && r.summary->q_over_p.n;
+      t.labels.push_back(r.run);
+      t.rows.push_back({static_cast<double>(k + 1), r.mu, r.rate_per_s, r.diameter_m, r.density_kg_per_m3,
+                        has ? r.summary->p_Pa.mean / 1e3 : NAN, p.inertial, std::sqrt(p.inertial), has ? r.summary->q_over_p.mean : NAN,
+                        has && r.summary->q_over_p.n > 1 ? r.summary->q_over_p.sd : NAN,
+                        has && r.held && std::isfinite(p.inertial) ? 1.0 : 0.0});
+    }
+  return t;
+}
+
+validation::Table rates_quasi_static_data(const std::vector<RateSeries>& series) {
+  validation::Table t;
+  t.comments = {"compare-runs critical-state --rates: the quasi-static limit of each rate series, the fit of q/p against sqrt(I) at I = 0;",
+                "phi from q/p in triaxial compression, sin phi = 3 eta / (6 + eta); its se to first order from the intercept's"};
+  t.columns = {"mu [1]", "q_over_p [1]", "q_over_p_se [1]", "phi [deg]", "phi_se [deg]", "slope [1]", "points [1]", "monotonic [1]"};
+  for (const RateSeries& s : series) {
+    if (!s.fit) continue;
+    t.labels.push_back("mu" + number(s.mu));
+    t.rows.push_back({s.mu, s.fit->intercept, s.fit->intercept_se, s.phi_deg, s.phi_se_deg, s.fit->slope, static_cast<double>(s.fit->n),
+                      s.fit->monotonic ? 1.0 : 0.0});
+  }
+  return t;
+}
+
+std::string rates_section(const std::vector<RateSeries>& series, const std::string& folder, const std::vector<validation::Row>& rows) {
+  std::ostringstream md;
+  md << "\n### Rate convergence: the critical state at I → 0\n\n";
+  md << "The rates study (`" << folder << "`, `pipeline/studies/critical_state_rates.yaml`) shears the same sample in compression at "
+        "slower axial strain rates; with the run of the table above at its own rate, each μ has a series. I = rate · d · √(ρ/p): "
+        "the resolved scene's axial strain rate and particle density, d the mean diameter of the run's spheres, p its mean stress at "
+        "the critical state; q/p at cs is the window mean ± the row-to-row sd, as above. A least-squares line of the window means "
+        "against √I, taken to I → 0, gives the quasi-static q/p with "
+        "the intercept's standard error (n − 2 degrees of freedom), and φ from it (triaxial compression: sin φ = 3η/(6 + η), η = q/p; "
+        "its se to first order).\n\n";
+  validation::MarkdownTable t({"μ", "run", "strain rate (s⁻¹)", "d (mm)", "ρ (kg/m³)", "p at cs (kPa)", "I", "√I", "q/p at cs",
+                               "φ from q/p (°)", "note"});
+  for (const RateSeries& s : series) {
+    for (const RatePoint& p : s.points) {
+      const ShearRun& r = *p.run;
+      const bool has = r.summary && r.summary->q_over_p.n;
+      t.row({number(s.mu), r.run + " (" + p.study + ")", number(r.rate_per_s), fixed(1e3 * r.diameter_m, 3), number(r.density_kg_per_m3),
+             has ? fixed(r.summary->p_Pa.mean / 1e3, 1) : "—", std::isfinite(p.inertial) ? validation::significant(p.inertial, 3) : "—",
+             std::isfinite(p.inertial) ? validation::significant(std::sqrt(p.inertial), 3) : "—", has ? mean_sd(r.summary->q_over_p, 3) : "—",
+             has ? fixed(validation::compression_friction_deg(r.summary->q_over_p.mean), 2) : "—",
+             !r.summary ? r.note : r.held ? "" : "left out of the fit: " + r.note.substr(0, r.note.size() >= 2 ? r.note.size() - 2 : 0)});
+    }
+    if (s.fit)
+      t.row({number(s.mu), "**I → 0** (fit of " + std::to_string(s.fit->n) + " points)", "0", "", "", "", "0", "0",
+             "**" + (s.fit->n > 2 ? validation::mean_pm_sd(s.fit->intercept, s.fit->intercept_se) : fixed(s.fit->intercept, 3)) + "**",
+             "**" + (s.fit->n > 2 ? validation::mean_pm_sd(s.phi_deg, s.phi_se_deg) : fixed(s.phi_deg, 2)) + "**", s.problems});
+    else
+      t.row({number(s.mu), "I → 0", "—", "", "", "", "", "", "—", "—", s.problems});
+  }
+  md << t.text() << "\n";
+  for (const RateSeries& s : series) {
+    if (!s.fit) {
+      md << "μ = " << number(s.mu) << ": " << s.problems << ".\n\n";
+      continue;
+    }
+    const validation::LineFit& f = *s.fit;
+    const RatePoint* fastest = nullptr;  // the fastest point used (the rate the table above is at)
+    for (const RatePoint& p : s.points)
+      if (p.run->summary && p.run->held && std::isfinite(p.inertial) && p.run->summary->q_over_p.n) {
+        fastest = &p;
+        break;
+      }
+    md << "μ = " << number(s.mu) << ": q/p = " << validation::significant(f.intercept, 3) << " + " << validation::significant(f.slope, 3)
+       << " √I over " << f.n << " rates (R² = " << fixed(f.r_squared, 3) << ")";
+    if (fastest) {
+      const double at = fastest->run->summary->q_over_p.mean;
+      md << "; the quasi-static q/p is " << fixed(100 * std::abs(f.intercept / at - 1), 1) << (f.intercept < at ? " % below" : " % above") << " the " << number(fastest->run->rate_per_s)
+         << " s⁻¹ value (" << fixed(at, 3) << "), φ " << fixed(s.phi_deg, 2) << "° against "
+         << fixed(validation::compression_friction_deg(at), 2) << "°";
+    }
+    if (f.n > 2) {
+      const double quantile = validation::t_quantile(1 - (1 - validation::prediction_level) / 2, f.n - 2);
+      md << ". The standard error rests on " << f.n - 2 << (f.n - 2 == 1 ? " degree" : " degrees") << " of freedom: a "
+         << number(100 * validation::prediction_level) << " % interval is ± " << validation::significant(quantile, 3) << " se (± "
+         << validation::significant(quantile * f.intercept_se, 2) << " in q/p)";
+    }
+    md << (s.problems.empty() ? ". q/p changes monotonically with I." : ". ⚠ " + s.problems + ".");
+    if (fastest) md << against_reference(s, *fastest->run, rows);
+    md << "\n\n";
+  }
+  md << "![critical q/p against the square root of the inertial number, with the fits](rates.png)\n";
+  return md.str();
+}
+
+}  // namespace compare_runs

@@ -1,0 +1,490 @@
+// compare-runs decisions: the decisions study (docs/method.md#open-choices). Every validation row on every
+// reading's ensemble, the shift of the mean in baseline standard deviations, a tornado chart per
+// group of rows, and the reading that explains each inconsistent row. Writes OUT/table.md,
+// decisions.json and, per group, tornado_<group>.dat and tornado_values.gp
+// (reports/gnuplot/tornado.gp draws tornado_<group>.png). With --from-json, the same table.md,
+// tornado_<group>.dat and tornado_values.gp re-drawn from a decisions.json alone (decisions_from_json).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "sections/modes.hpp"
+#include "judge/decisions.hpp"
+#include "judge/decisions_file.hpp"
+#include "study/series.hpp"
+#include "study/format.hpp"
+#include "io/atomic_file.hpp"
+#include "study/markdown_table.hpp"
+#include "study/results.hpp"
+#include "study/settings.hpp"
+
+namespace fs = std::filesystem;
+
+namespace compare_runs {
+namespace {
+
+using validation::number;
+using validation::RowDecision;
+using validation::RowResult;
+using validation::Verdict;
+
+const char* verdict_mark(Verdict v) { return v == Verdict::Consistent ? "✅" : v == Verdict::Inconsistent ? "❌" : "—"; }
+
+// "mean ± sd" of a row's result (one sample: the mean alone; none: "—").
+std::string mean_sd(const RowResult& r) {
+  return r.valued ? (r.valued > 1 ? validation::mean_pm_sd(r.spread.mean, r.spread.sd) : number(r.spread.mean)) : std::string("—");
+}
+
+bool finite_shift(const validation::ReadingEffect& e) { return e.shift_sd && std::isfinite(*e.shift_sd); }
+
+// Every reading's results, by reading, read from the manifest (`dir`: the folder it is in; the
+// results are found under it wherever the study ran): reading -> its samples (one per seed). A run
+// whose result is missing or not complete is listed in `missing` and in its density's missing_runs.
+std::map<std::string, validation::ReadingResults> read_readings(const std::vector<ManifestLine>& lines, const std::string& dir,
+                                                                std::vector<std::string>& missing) {
+  // reading -> seed -> density -> (preparation, test number -> result)
+  struct Files {
+    std::string preparation;
+    std::map<int, std::string> tests;
+  };
+  std::map<std::string, std::map<std::string, std::map<std::string, Files>>> files;
+  for (const ManifestLine& l : lines) {
+    Files& f = files[l.variant][l.seed][l.density];
+    if (l.test == "-") f.preparation = validation::result_under(dir, l);
+    else if (l.test.rfind("test", 0) == 0) f.tests[std::atoi(l.test.c_str() + 4)] = validation::result_under(dir, l);
+  }
+  std::map<std::string, validation::ReadingResults> readings;
+  for (const auto& [reading, seeds] : files)
+    for (const auto& [seed, densities] : seeds) {
+      std::map<std::string, validation::DensityResults> of_seed;
+      for (const auto& [density, f] : densities) {
+        const std::size_t before = missing.size();
+        validation::DensityResults r = validation::load_density(f.preparation, f.tests, missing);
+        for (std::size_t k = before; k < missing.size(); ++k) {
+          if (missing[k] == f.preparation) r.missing_runs.push_back("prepare");
+          for (const auto& [n, file] : f.tests)
+            if (missing[k] == file) r.missing_runs.push_back("test" + std::to_string(n));
+        }
+        of_seed[density] = std::move(r);
+      }
+      readings[reading].push_back({seed == "-" ? "" : "seed" + seed, "", std::move(of_seed)});
+    }
+  return readings;
+}
+
+// The number of spheres of the first prepared sample of `samples` (0 if none says).
+long particles_of(const validation::ReadingResults& samples) {
+  for (const validation::Sample& s : samples)
+    for (const auto& [density, r] : s.densities)
+      if (r.prepared && r.sample.count("particles")) return std::lround(r.sample.at("particles"));
+  return 0;
+}
+
+// A reading's cell when one of its samples lacks a run the row reads (it is not judged on the row).
+const char* lacks_runs = "runs missing";
+
+// One group's section of table.md (its tornado chart and table), and its tornado_<group>.dat and
+// the values tornado.gp needs of it.
+std::string group_section(const std::string& g, const std::vector<RowDecision>& decided, const std::vector<std::string>& others,
+                          const std::string& out, validation::GnuplotValues& gp_values) {
+  const std::string key = "tornado_" + validation::file_safe(g);
+  // Tornado data: rows of the group, largest shift first.
+  std::vector<const RowDecision*> of_group;
+  for (const RowDecision& d : decided)
+    if (d.row.group == g) of_group.push_back(&d);
+  const auto largest = [](const RowDecision* d) {
+    double m = 0;
+    for (const auto& e : d->readings)
+      if (finite_shift(e)) m = std::max(m, std::abs(*e.shift_sd));
+    return m;
+  };
+  std::stable_sort(of_group.begin(), of_group.end(), [&](auto* a, auto* b) { return largest(a) < largest(b); });
+  std::ofstream dat(fs::path(out) / (key + ".dat"));
+  dat << "# row_index\treading_index\tshift_sd\trow\treading\n";
+  for (std::size_t i = 0; i < of_group.size(); ++i)
+    for (std::size_t k = 0; k < of_group[i]->readings.size(); ++k) {
+      const auto& e = of_group[i]->readings[k];
+      if (finite_shift(e)) dat << i << '\t' << k << '\t' << *e.shift_sd << "\t\"" << of_group[i]->row.name << "\"\t" << e.reading << "\n";
+    }
+  // What the static script (reports/gnuplot/tornado.gp) needs of this group: its title, the row
+  // names as labels (not tic labels: a tic label is a format, whose '%' would need doubling, and
+  // gnuplot cut long ones short), the left margin they take and the chart's height.
+  std::size_t longest = 0;
+  gp_values.text(key + "_title", g);
+  std::vector<std::string> labels;
+  for (const RowDecision* d : of_group) {
+    std::string label = d->row.name;
+    for (char& c : label)
+      if (c == '"') c = '\'';
+    longest = std::max(longest, label.size());
+    labels.push_back(label);
+  }
+  gp_values.texts(key + "_row", labels);
+  gp_values.number(key + "_lmargin", static_cast<double>(longest * 9 / 10 + 2));
+  gp_values.number(key + "_height", static_cast<double>(220 + 34 * of_group.size() * std::max<std::size_t>(1, others.size() / 3)));
+
+  std::vector<std::string> headings = {"row", "baseline: mean ± sd"};
+  headings.insert(headings.end(), others.begin(), others.end());
+  headings.push_back("explanation");
+  validation::MarkdownTable table(headings);
+  for (auto it = of_group.rbegin(); it != of_group.rend(); ++it) {
+    const RowDecision& d = **it;
+    std::vector<std::string> cells = {d.row.name, mean_sd(d.baseline) + " " + verdict_mark(d.full ? d.full->verdict : d.baseline.verdict)};
+    for (const auto& e : d.readings)
+      cells.push_back(!e.missing.empty() ? std::string(lacks_runs) + " —"
+                                         : (finite_shift(e) ? validation::shift_text(*e.shift_sd) : "—") + " " +
+                                               verdict_mark(d.full ? (e.full ? e.full->verdict : Verdict::NotJudged) : e.result.verdict));
+    cells.push_back(d.explanation);
+    table.row(cells);
+  }
+  return "\n### " + g + "\n\n![tornado chart: " + g + "](" + key + ".png)\n\n" + table.text();
+}
+
+// What a cell of the tables says. `full_size`: the verdicts are those of the paper study's full-size
+// ensemble with each reading's shift applied (compare-runs decisions --ensemble).
+std::string cell_legend(bool full_size) {
+  return std::string("Each cell: the shift of the ensemble mean from the baseline's, in units of max(baseline sd, the row's resolution), "
+                     "and the verdict under that reading (✅ consistent, ❌ inconsistent, — not judged; \"") + lacks_runs +
+         "\": a sample lacks a run the row reads, so the reading is not judged on it)" +
+         (full_size ? std::string(" of the paper study's full-size ensemble with that shift of the mean applied to each of its "
+                                  "samples; the baseline column gives this study's mean ± sd and the full-size ensemble's verdict.\n")
+                    : std::string(".\n"));
+}
+
+// Every group's section of table.md (group_section) in the order of `groups`, and
+// OUT/tornado_values.gp, which reports/gnuplot/tornado.gp reads: both modes draw with this.
+std::string group_sections(const std::vector<std::string>& groups, const std::vector<RowDecision>& decided,
+                           const std::vector<std::string>& others, const std::string& out) {
+  validation::GnuplotValues gp_values;
+  gp_values.texts("tornado_reading", others);
+  std::string md, group_names;
+  for (const std::string& g : groups) {
+    md += group_section(g, decided, others, out, gp_values);
+    if (!group_names.empty()) group_names += ' ';
+    group_names += validation::file_safe(g);
+  }
+  gp_values.text("tornado_groups", group_names);
+  dem::write_file_atomically((fs::path(out) / "tornado_values.gp").string(),
+                             gp_values.text_file("Written by compare-runs decisions: what reports/gnuplot/tornado.gp draws, one chart "
+                                                 "per group from tornado_<group>.dat"));
+  return md;
+}
+
+// The size check: the baseline of this study against the paper study's ensemble (its own sample
+// size), row by row, in units of the paper ensemble's standard deviation.
+std::string size_check(const std::vector<RowDecision>& decided, std::size_t samples) {
+  validation::MarkdownTable table({"row", "paper study: mean ± sd", "this study's baseline: mean ± sd", "difference / sd", "verdicts"});
+  for (const RowDecision& d : decided) {
+    const RowResult& big = *d.full;
+    std::string diff = "—";
+    if (big.valued > 1 && std::max(big.spread.sd, d.row.resolution) > 0 && d.baseline.valued > 0)
+      diff = validation::shift_text(validation::shift_in_sd(d.baseline.spread.mean - big.spread.mean, big.spread.sd, d.row.resolution));
+    table.row({d.row.name, mean_sd(big), mean_sd(d.baseline), diff,
+               std::string(verdict_mark(big.verdict)) + " / " + verdict_mark(d.baseline.verdict)});
+  }
+  return "\n### Size check: this study's baseline against the paper study's ensemble\n\n"
+         "The same rows on the paper study's samples (" + std::to_string(samples) + " per density, its size) and on this study's "
+         "baseline; the difference of the means in units of the paper ensemble's standard deviation, and both verdicts. "
+         "A reading's shift is trusted at this study's size where the two agree.\n\n" + table.text();
+}
+
+// A value of decisions.json: six significant digits, as this file has always had (the values of a
+// few samples; more digits would be noise), or null.
+nlohmann::ordered_json six_digits(double x) {
+  const double v = std::strtod(number(x).c_str(), nullptr);
+  return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
+}
+
+// What the study was measured at, for the readers of decisions.json (validate --decisions).
+struct Size {
+  long particles = 0;      // spheres per sample (0: unknown)
+  std::size_t samples = 0;  // the baseline's samples
+};
+
+nlohmann::ordered_json decisions_json(const std::string& baseline, const std::string& baseline_results, const Size& size,
+                                      const std::vector<RowDecision>& decided, std::size_t missing) {
+  using json = nlohmann::ordered_json;
+  json rows = json::array();
+  for (const RowDecision& d : decided) {
+    json readings = json::object();
+    for (const auto& e : d.readings) {
+      readings[e.reading] = {{"mean", e.result.valued ? six_digits(e.result.spread.mean) : json(nullptr)},
+                             {"shift_sd", finite_shift(e) ? six_digits(*e.shift_sd) : json(nullptr)},
+                             {"verdict", validation::to_string(e.result.verdict)}};
+      if (!e.missing.empty()) readings[e.reading]["missing_runs"] = e.missing;
+    }
+    rows.push_back({{"name", d.row.name},
+                    {"group", d.row.group},
+                    {"baseline_mean", d.baseline.valued ? six_digits(d.baseline.spread.mean) : json(nullptr)},
+                    {"baseline_sd", d.baseline.valued > 1 ? six_digits(d.baseline.spread.sd) : json(nullptr)},
+                    {"baseline_verdict", validation::to_string(d.baseline.verdict)},
+                    {"readings", readings},
+                    {"judged", d.judged},
+                    {"made_consistent_by", d.made_consistent_by},
+                    {"explanation", d.explanation}});
+  }
+  json out = {{"schema", 2}, {"baseline", baseline}};
+  if (!baseline_results.empty()) out["baseline_results"] = baseline_results;
+  out["particles"] = size.particles > 0 ? json(size.particles) : json(nullptr);
+  out["samples"] = size.samples;
+  out["shift_unit"] = "max(baseline sd, the row's resolution)";
+  out["rows"] = rows;
+  out["missing_results"] = missing;
+  return out;
+}
+
+}  // namespace
+
+int decisions(const Manifest& manifest, const std::string& results, const std::string& out, const std::string& references,
+              const std::string& baseline, const std::string& ensemble, const std::string& baseline_results) {
+  std::vector<validation::Row> rows;
+  try {
+    rows = validation::load_references(references, "paper");
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 2;
+  }
+  std::vector<std::string> missing;
+  std::map<std::string, validation::ReadingResults> readings = read_readings(manifest.lines, results, missing);
+  std::vector<std::string> order = manifest.variants;  // the readings, the baseline among them
+  // The baseline from another study's results (a study of readings only): its samples of the
+  // seeds this study has, so that every reading is compared with the same samples.
+  if (!baseline_results.empty()) {
+    if (readings.count(baseline)) {
+      std::fprintf(stderr, "error: %s has a reading named '%s' of its own; --baseline-results gives the baseline from another "
+                           "study (name this study's baseline with --reference, or leave --baseline-results out)\n",
+                   results.c_str(), baseline.c_str());
+      return 2;
+    }
+    std::vector<ManifestLine> lines;
+    try {
+      lines = validation::read_manifest(baseline_results);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "error: --baseline-results: %s\n", e.what());
+      return 2;
+    }
+    const std::vector<std::string> seeds = validation::samples_of(manifest.lines);
+    std::vector<ManifestLine> of_seeds;
+    for (const ManifestLine& l : lines)
+      if ((l.variant == "-" || l.variant == baseline) && std::find(seeds.begin(), seeds.end(), validation::sample_of(l)) != seeds.end())
+        of_seeds.push_back(l);
+    for (const std::string& seed : seeds)
+      if (std::none_of(of_seeds.begin(), of_seeds.end(), [&](const ManifestLine& l) { return validation::sample_of(l) == seed; })) {
+        std::fprintf(stderr, "error: --baseline-results %s has no runs of sample '%s' (this study's samples must be among its own)\n",
+                     baseline_results.c_str(), seed.c_str());
+        return 1;
+      }
+    for (auto& [name, samples] : read_readings(of_seeds, baseline_results, missing)) readings[baseline] = std::move(samples);
+    order.insert(order.begin(), baseline);
+  }
+  // The rows of the densities this study's readings run (a study of one density judges its rows only).
+  std::vector<std::string> densities;
+  for (const ManifestLine& l : manifest.lines)
+    if (l.variant != baseline && std::find(densities.begin(), densities.end(), l.density) == densities.end()) densities.push_back(l.density);
+  const std::size_t all_rows = rows.size();
+  rows.erase(std::remove_if(rows.begin(), rows.end(),
+                            [&](const validation::Row& r) { return std::find(densities.begin(), densities.end(), r.density) == densities.end(); }),
+             rows.end());
+  std::map<std::string, std::string> settings;  // reading -> its settings
+  for (const ManifestLine& l : manifest.lines) settings[l.variant] = l.settings;
+  if (!baseline_results.empty()) settings[baseline] = "as written (" + relative_paths(baseline_results, baseline_results) + ")";
+  // The paper study's ensemble (full size), if given: the verdicts and causes are judged on it.
+  std::vector<validation::Sample> full_samples;
+  std::map<std::string, RowResult> full;
+  if (!ensemble.empty()) {
+    std::vector<std::string> missing_ensemble;
+    full_samples = validation::load_samples(ensemble, validation::study_densities(ensemble), missing_ensemble);
+    for (const validation::Row& r : rows) full[r.name] = validation::evaluate(r, full_samples);
+  }
+  std::vector<RowDecision> decided;
+  try {
+    decided = validation::decide(rows, readings, order, baseline, full);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "compare-runs: %s\n", e.what());
+    return 1;
+  }
+  Size size;
+  size.particles = particles_of(readings.at(baseline));
+  size.samples = readings.at(baseline).size();
+  std::vector<std::string> others;
+  for (const std::string& r : order)
+    if (r != baseline) others.push_back(r);
+  std::vector<std::string> groups;
+  for (const validation::Row& r : rows)
+    if (std::find(groups.begin(), groups.end(), r.group) == groups.end()) groups.push_back(r.group);
+
+  validation::MarkdownTable reading_table({"reading", "settings"});
+  for (const std::string& r : order) reading_table.row({r, settings[r]});
+  const std::string measured = (size.particles > 0 ? validation::thousands(size.particles) + " spheres" : std::string("spheres not recorded")) +
+                               ", " + std::to_string(size.samples) + " sample" + (size.samples == 1 ? "" : "s");
+  std::string md = "Measured at " + measured + " per reading. Readings (each one change from the baseline" +
+                   (baseline_results.empty() ? std::string(")")
+                                             : "; the baseline is the samples of the same seeds in `" + relative_paths(baseline_results, baseline_results) +
+                                                   "`, the same scenes and engine)") +
+                   ":\n\n" + reading_table.text() + "\n" + cell_legend(!full.empty());
+  if (rows.size() < all_rows)
+    md += "\nOnly the rows of the densities this study runs (" + validation::joined(densities, ", ") + "): " + std::to_string(rows.size()) +
+          " of " + std::to_string(all_rows) + ".\n";
+  md += group_sections(groups, decided, others, out);
+  if (!ensemble.empty()) md += size_check(decided, full_samples.size());
+  try {
+    dem::write_file_atomically((fs::path(out) / "table.md").string(), md);
+    dem::write_file_atomically(
+        (fs::path(out) / "decisions.json").string(),
+        decisions_json(baseline, baseline_results.empty() ? "" : relative_paths(baseline_results, baseline_results), size, decided, missing.size()).dump(2) +
+            "\n");
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
+  }
+  std::size_t not_judged = 0;
+  for (const RowDecision& d : decided) not_judged += !d.judged;
+  std::printf("decisions: %zu readings, %zu rows (%zu not judged), %s, %zu result files missing -> %s\n", others.size(), rows.size(),
+              not_judged, measured.c_str(), missing.size(), (fs::path(out) / "table.md").c_str());
+  return 0;
+}
+
+namespace {
+
+// A number of decisions.json, or none (null, absent).
+std::optional<double> json_number(const nlohmann::ordered_json& j, const char* key) {
+  return j.contains(key) && j.at(key).is_number() ? std::optional<double>(j.at(key).get<double>()) : std::nullopt;
+}
+
+Verdict verdict_of(const nlohmann::ordered_json& j, const char* key) {
+  const std::string v = j.contains(key) && j.at(key).is_string() ? j.at(key).get<std::string>() : "";
+  return v == validation::to_string(Verdict::Consistent) ? Verdict::Consistent
+         : v == validation::to_string(Verdict::Inconsistent) ? Verdict::Inconsistent
+                                                              : Verdict::NotJudged;
+}
+
+// A result as decisions.json records it: its mean and sd. `samples`: how many samples it had, when
+// the file says (mean_sd() prints a mean ± sd for more than one; a recorded sd means at least two).
+RowResult recorded_result(std::optional<double> mean, std::optional<double> sd, Verdict verdict, std::size_t samples) {
+  RowResult r;
+  r.verdict = verdict;
+  if (!mean) return r;
+  r.spread.mean = *mean;
+  r.spread.sd = sd.value_or(0.0);
+  r.valued = sd ? static_cast<int>(std::max<std::size_t>(2, samples)) : 1;
+  r.spread.n = r.valued;
+  return r;
+}
+
+}  // namespace
+
+int decisions_from_json(const std::string& file, const std::string& out, const std::string& references) {
+  using json = nlohmann::ordered_json;  // ordered: the readings in the file's order, as the study ran them
+  std::vector<validation::Row> rows;
+  validation::DecisionsFile findings;
+  json j;
+  try {
+    rows = validation::load_references(references, "paper");
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 2;
+  }
+  try {
+    std::ifstream in(file);
+    if (!in) throw std::runtime_error("cannot be read");
+    j = json::parse(in);
+    if (!j.contains("rows") || !j.at("rows").is_array()) throw std::runtime_error("has no list of rows");
+    // The explanations and whether each row was judged, read as validate reads them (a file of
+    // schema 1 has its explanations' shifts restated there).
+    findings = validation::read_decisions_file(file, rows);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: --from-json %s: %s\n", file.c_str(), e.what());
+    return 2;
+  }
+  std::map<std::string, const validation::Row*> row_of;
+  for (const validation::Row& r : rows) row_of[r.name] = &r;
+  const std::string baseline = j.contains("baseline") && j.at("baseline").is_string() ? j.at("baseline").get<std::string>() : "baseline";
+  const std::size_t samples = findings.samples.value_or(0);
+
+  // The readings in the file's order (every row's, first seen first) and the groups likewise.
+  std::vector<std::string> others, groups;
+  for (const json& row : j.at("rows")) {
+    if (row.contains("readings"))
+      for (const auto& [reading, value] : row.at("readings").items())
+        if (std::find(others.begin(), others.end(), reading) == others.end()) others.push_back(reading);
+    const std::string g = row.value("group", std::string("rows"));
+    if (std::find(groups.begin(), groups.end(), g) == groups.end()) groups.push_back(g);
+  }
+
+  std::vector<RowDecision> decided;
+  std::vector<std::string> unknown;  // rows the references do not have: shifts in baseline sd alone
+  std::size_t clipped = 0;
+  for (const json& row : j.at("rows")) {
+    RowDecision d;
+    d.row.name = row.at("name").get<std::string>();
+    d.row.group = row.value("group", std::string("rows"));
+    if (row_of.count(d.row.name)) d.row.resolution = row_of.at(d.row.name)->resolution;
+    else unknown.push_back(d.row.name);
+    const std::optional<double> base = json_number(row, "baseline_mean");
+    const std::optional<double> base_sd = json_number(row, "baseline_sd");
+    d.baseline = recorded_result(base, base_sd, verdict_of(row, "baseline_verdict"), samples);
+    for (const std::string& reading : others) {
+      validation::ReadingEffect e;
+      e.reading = reading;
+      if (row.contains("readings") && row.at("readings").contains(reading)) {
+        const json& r = row.at("readings").at(reading);
+        const std::optional<double> mean = json_number(r, "mean");
+        e.result = recorded_result(mean, std::nullopt, verdict_of(r, "verdict"), samples);
+        if (r.contains("missing_runs")) e.missing = r.at("missing_runs").get<std::vector<std::string>>();
+        // The shift restated from the recorded means, whatever shift_sd the file holds (a file of
+        // schema 1 counted it in baseline sd alone: +116979 where the sd is far below the resolution).
+        if (mean && base && e.missing.empty()) {
+          const double z = validation::shift_in_sd(*mean - *base, base_sd.value_or(0.0), d.row.resolution);
+          if (std::isfinite(z)) e.shift_sd = z;
+          if (std::isfinite(z) && std::abs(z) > validation::shift_clip) ++clipped;
+        }
+      }
+      d.readings.push_back(std::move(e));
+    }
+    if (const auto it = findings.rows.find(d.row.name); it != findings.rows.end()) {
+      d.judged = it->second.judged;
+      d.explanation = it->second.explanation;
+    }
+    decided.push_back(std::move(d));
+  }
+
+  // What this table is, computed from the file: where it comes from, its size, and what of the
+  // section drawn from the results it cannot show.
+  // Its size as the file records it (size_label: "size not recorded" when it does not).
+  const std::string size = findings.particles ? "measured at " + validation::size_label(findings) + " per reading" : validation::size_label(findings);
+  std::string md = "Re-drawn from `" + file + "` alone, without the study's results (not on the machine that drew it); " + size +
+                   ". Each shift is restated from the means the file records, "
+                   "(reading mean − baseline mean) / max(baseline sd, the row's resolution in `" + references +
+                   "`), and so are the shifts the explanations quote. What needs the results and is not re-drawn: the readings' settings; "
+                   "the verdicts of the paper study's full-size ensemble (each mark below is the verdict on this study's own samples, as "
+                   "the file records it; an explanation judged on the full-size ensemble may disagree with it); and the size check of this study's baseline against the paper study's ensemble.\n\n"
+                   "Readings (each one change from the baseline, `" + baseline + "`): " + validation::joined(others, ", ") + ".\n\n" +
+                   cell_legend(false);
+  if (!unknown.empty())
+    md += "\nRows not in `" + references + "` (their shifts in baseline sd alone, no resolution known): " + validation::joined(unknown, "; ") + ".\n";
+  try {
+    fs::create_directories(out);
+    md += group_sections(groups, decided, others, out);
+    dem::write_file_atomically((fs::path(out) / "table.md").string(), md);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
+  }
+  std::printf("decisions: re-drawn from %s: %zu readings, %zu rows, %s; shifts beyond ±%.0f sd (written with their value): %zu -> %s\n",
+              file.c_str(), others.size(), decided.size(), validation::size_label(findings).c_str(), validation::shift_clip, clipped,
+              (fs::path(out) / "table.md").c_str());
+  return 0;
+}
+
+}  // namespace compare_runs

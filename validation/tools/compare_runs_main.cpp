@@ -1,0 +1,166 @@
+// compare-runs: the tables of a study of variants, from the pipeline's manifest (DIR/runs.tsv).
+//   compare-runs convergence RESULTS_DIR OUT_DIR [--reference NAME]
+//   compare-runs stability RESULTS_DIR OUT_DIR [--report-only]
+//   compare-runs decisions RESULTS_DIR OUT_DIR [--reference NAME] [--references FILE] [--ensemble PAPER_RESULTS]
+//                          [--baseline-results DIR]
+//   compare-runs decisions --from-json DECISIONS_JSON OUT_DIR [--references FILE]
+//   compare-runs critical-state RESULTS_DIR OUT_DIR [--ensemble DIR] [--rates DIR]
+//   compare-runs liquefaction OUT_DIR RESULTS_DIR...
+// Each mode is a file of compare_runs/ (what it writes: modes.hpp); this one parses the arguments
+// (every sub-command answers --help) and calls it.
+// Exit status: 0; 1 if a stability case is not acceptable, the reference or baseline is missing,
+// or an output cannot be written; 2 on bad arguments (the error names the option) or an unreadable
+// manifest or references file.
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "sections/modes.hpp"
+#include "io/failure.hpp"
+
+namespace {
+
+// The results folder and the output folder every mode but liquefaction takes.
+struct Folders {
+  std::string results, out;
+};
+
+CLI::App* study_mode(CLI::App& app, const std::string& name, const std::string& what, Folders& f) {
+  CLI::App* cmd = app.add_subcommand(name, what);
+  cmd->add_option("RESULTS_DIR", f.results, "the study's results folder (its runs.tsv, written by build/bin/pipeline)")->required();
+  cmd->add_option("OUT_DIR", f.out, "where the tables and the figures' data go (made if missing)")->required();
+  return cmd;
+}
+
+}  // namespace
+
+// The tool; main runs it under guarded_main (a file system error names its path, exit 1).
+int tool_main(int argc, char** argv) {
+  CLI::App app{"compare-runs: the tables of a study of variants (convergence, stability, decisions, critical state, liquefaction), "
+               "from the pipeline's manifest RESULTS_DIR/runs.tsv"};
+  app.name("compare-runs");
+  app.require_subcommand(1);
+
+  Folders convergence_f, stability_f, decisions_f, critical_f;
+  std::string reference = "reference", baseline = "baseline", references = "reference_data/paper.yaml", ensemble, baseline_results;
+  bool report_only = false;
+  CLI::App* convergence = study_mode(app, "convergence",
+                                     "errors of every variant against the reference, with its wall time: errors.dat, front.dat, table.md",
+                                     convergence_f);
+  convergence->add_option("--reference", reference, "the variant the others are compared with")->capture_default_str();
+
+  CLI::App* stability = study_mode(app, "stability", "what became of each case: table.md (exit 1 if a case is not acceptable)", stability_f);
+  stability->add_flag("--report-only", report_only, "mark a case that is not acceptable in the table, and exit 0");
+
+  // Not study_mode(): with --from-json the one folder given is OUT_DIR (checked after parsing).
+  std::string from_json;
+  CLI::App* decisions = app.add_subcommand("decisions",
+                                           "every validation row on every reading's ensemble against the baseline's: table.md, decisions.json, "
+                                           "tornado_<group>.dat, tornado_values.gp");
+  decisions->add_option("RESULTS_DIR", decisions_f.results,
+                        "the study's results folder (its runs.tsv, written by build/bin/pipeline); left out with --from-json");
+  decisions->add_option("OUT_DIR", decisions_f.out, "where the tables and the figures' data go (made if missing)");
+  CLI::Option* reference_opt = decisions->add_option("--reference", baseline, "the baseline reading")->capture_default_str();
+  decisions->add_option("--references", references, "the validation rows (the paper's values)")->capture_default_str();
+  CLI::Option* ensemble_opt =
+      decisions->add_option("--ensemble", ensemble, "the paper study's results: verdicts and causes are judged on its full-size ensemble");
+  CLI::Option* baseline_results_opt =
+      decisions->add_option("--baseline-results", baseline_results,
+                            "for a study of readings only (no baseline of its own): the study whose samples of the same seeds are the "
+                            "baseline (e.g. results/study/paper)");
+  decisions
+      ->add_option("--from-json", from_json,
+                   "re-draw table.md, tornado_<group>.dat and tornado_values.gp from this decisions.json alone, without the study's "
+                   "results (compare-runs decisions --from-json FILE OUT_DIR): shifts restated against the rows' resolutions")
+      ->check(CLI::ExistingFile)
+      ->excludes(reference_opt)
+      ->excludes(ensemble_opt)
+      ->excludes(baseline_results_opt);
+
+  CLI::App* critical = study_mode(app, "critical-state",
+                                  "peak and critical state of each constant-p shear, the peaks in the pi-plane: table.md, "
+                                  "critical_state.dat, pi_plane.dat, values.gp",
+                                  critical_f);
+  std::string critical_ensemble, critical_rates, critical_references;
+  critical->add_option("--ensemble", critical_ensemble,
+                       "an ensemble study's results (pipeline/studies/critical_state_ensemble.yaml): mean ± sd over its samples "
+                       "of each loading and μ (ensemble.dat)");
+  critical->add_option("--rates", critical_rates,
+                       "a rates study's results (pipeline/studies/critical_state_rates.yaml): critical q/p against sqrt(I) with "
+                       "this study's runs of the same μ, taken to I -> 0 (rates.dat, rates_qs.dat)");
+  critical
+      ->add_option("--references", critical_references,
+                   "validation rows (e.g. reference_data/literature.yaml): a critical_state_friction_angle row that reads a rate "
+                   "series' run is compared with the series' quasi-static φ (with --rates)")
+      ->check(CLI::ExistingFile);
+
+  std::string liquefaction_out;
+  std::vector<std::string> liquefaction_folders;
+  CLI::App* liquefaction = app.add_subcommand("liquefaction",
+                                              "CSR against N_L and r_u against cycles of the undrained cyclic tests of every folder: "
+                                              "table.md, csr_nl.dat, ru.dat, values.gp");
+  liquefaction->add_option("OUT_DIR", liquefaction_out, "where the tables and the figures' data go (made if missing)")->required();
+  liquefaction->add_option("RESULTS_DIR", liquefaction_folders, "the studies' results folders")->required();
+
+  if (argc < 2) {  // what there is
+    std::fputs(app.help().c_str(), stderr);
+    return 2;
+  }
+  const auto named = [&](const CLI::App* c) { return c->get_name() == argv[1]; };
+  if (argv[1][0] != '-' && std::as_const(app).get_subcommands(named).empty()) {
+    std::fprintf(stderr, "compare-runs: unknown mode '%s' (convergence, stability, decisions, critical-state or liquefaction)\n", argv[1]);
+    return 2;
+  }
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int rc = app.exit(e);  // prints the help, or the error naming the option
+    return rc == 0 ? 0 : 2;      // bad arguments: exit 2, as always
+  }
+  // decisions: RESULTS_DIR and OUT_DIR, or OUT_DIR alone with --from-json (then in `results`).
+  if (*decisions) {
+    const bool both = !decisions_f.out.empty(), none = decisions_f.results.empty();
+    const char* error = !from_json.empty() ? (both ? "--from-json takes OUT_DIR alone (no RESULTS_DIR)" : none ? "--from-json needs OUT_DIR" : nullptr)
+                                           : (!both ? "decisions needs RESULTS_DIR and OUT_DIR (or --from-json FILE OUT_DIR)" : nullptr);
+    if (error) {
+      std::fprintf(stderr, "compare-runs: %s\nRun with --help for more information.\n", error);
+      return 2;
+    }
+  }
+  try {
+    if (*liquefaction) return compare_runs::liquefaction(liquefaction_out, liquefaction_folders);
+    if (*decisions && !from_json.empty()) return compare_runs::decisions_from_json(from_json, decisions_f.results, references);
+    const Folders& f = *convergence ? convergence_f : *stability ? stability_f : *decisions ? decisions_f : critical_f;
+    compare_runs::Manifest manifest;
+    try {
+      manifest = compare_runs::read_manifest(f.results);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "error: %s\n", e.what());
+      return 2;
+    }
+    std::filesystem::create_directories(f.out);
+    if (*convergence) return compare_runs::convergence(manifest, f.results, f.out, reference);
+    if (*stability) return compare_runs::stability(manifest, f.results, f.out, report_only);
+    if (*decisions) return compare_runs::decisions(manifest, f.results, f.out, references, baseline, ensemble, baseline_results);
+    if (*critical) {
+      for (const std::string& dir : {critical_ensemble, critical_rates})
+        if (!dir.empty()) try {
+            compare_runs::read_manifest(dir);
+          } catch (const std::exception& e) {
+            std::fprintf(stderr, "error: %s\n", e.what());
+            return 2;
+          }
+      return compare_runs::critical_state(manifest, f.results, f.out, critical_ensemble, critical_rates, critical_references);
+    }
+    return 2;  // not reached: parse() requires one sub-command
+  } catch (const std::exception& e) {  // a result that cannot be read, a folder that cannot be made
+    std::fprintf(stderr, "error: %s\n", dem::describe_failure(e).c_str());
+    return 1;
+  }
+}
+
+int main(int argc, char** argv) { return dem::guarded_main("compare-runs", [&] { return tool_main(argc, argv); }); }

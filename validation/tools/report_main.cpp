@@ -1,0 +1,144 @@
+// report: writes the study report (REPORT_DIR/index.md) from a study's results, the validation
+// output, the figures, the other studies' tables, the resolved scenes and reference_data/. The text
+// is reports/templates/index.md with its {{keys}} filled; every number is computed here
+// (validation/report.hpp) or by the tool that wrote the table included (validate, figure-data,
+// compare-runs). The figure notes are reports/templates/figure_notes.tsv, filled from the data the
+// figures plot and the verdicts of the validation rows about them.
+//   report --results DIR --references FILE --out REPORT_DIR [--profile NAME] [--sample NAME]
+//          [--templates DIR] [--baseline FILE] [--convergence DIR] [--decisions DIR] [--stability DIR]
+//          [--source TEXT] [--note TEXT] [--previous FILE]
+// REPORT_DIR holds what the other tools wrote (validation.md, verdicts.md, figures/, samples.md,
+// decisions/, convergence/, stability/, critical_state/, liquefaction/, bench.md); a part that is
+// missing is said so in its section. --baseline: an earlier baseline's validation.json, compared
+// row by row. Exit status: 0; 1 if the report cannot be written, a template names an unknown key
+// or a result file is there but cannot be read; 2 for bad arguments or a --results that is not a
+// folder (one that does not exist is accepted with --previous).
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "io/atomic_file.hpp"
+#include "io/failure.hpp"
+#include "report/report.hpp"
+#include "report/report_values.hpp"
+#include "study/format.hpp"
+#include "study/manifest.hpp"
+#include "study/paths.hpp"
+#include "study/settings.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Sections whose inputs are not here (the paper study's results, on a machine that ran only some
+// studies) from the previous report, said so in the header.
+std::string with_previous_sections(const std::string& text, const std::string& tmpl, validation::Values& v, const std::string& file) {
+  const std::string previous = validation::read_text(file);
+  if (previous.empty()) throw std::runtime_error("--previous '" + file + "' is missing or empty");
+  validation::check_previous_report(previous, text, "--previous '" + file + "'");
+  std::vector<std::string> kept;
+  validation::keep_sections_without_inputs(text, previous, kept);
+  if (kept.empty()) return text;
+  std::smatch m;
+  v["kept_from"] = std::regex_search(previous, m, std::regex(R"(Generated on (\S+))")) ? m[1].str() : "date not written";
+  v["kept"] = "\"" + validation::joined(kept, "\", \"") + "\"";
+  kept.clear();
+  return validation::keep_sections_without_inputs(validation::fill(tmpl, v), previous, kept);
+}
+
+}  // namespace
+
+// The tool; main runs it under guarded_main (a file system error names its path, exit 1).
+int tool_main(int argc, char** argv) {
+  std::map<std::string, std::string> opt = {{"--profile", "paper"}, {"--templates", "reports/templates"}};
+  CLI::App app{"report: writes the study report REPORT_DIR/index.md from a study's results, the validation output, the figures, "
+               "the other studies' tables, the resolved scenes and reference_data/ (the text: TEMPLATES/index.md, every number "
+               "computed)"};
+  app.name("report");
+  const auto option = [&](const std::string& name, const std::string& what) { return app.add_option(name, opt[name], what); };
+  option("--results", "the study's results folder (its runs.tsv)")->required();
+  option("--references", "the reference file (reference_data/paper.yaml)")->required();
+  option("--out", "REPORT_DIR: holds what the other tools wrote (validation.md, figures/, ...); index.md goes there")->required();
+  option("--profile", "the reference file's profile of the rows")->capture_default_str();
+  option("--sample", "the sample whose runs the single-run figures show (e.g. seed1)");
+  option("--templates", "the folder of index.md and figure_notes.tsv")->capture_default_str();
+  option("--baseline", "an earlier baseline's validation.json, compared row by row");
+  option("--convergence", "the convergence study's results folder (its settings for the text)");
+  option("--decisions", "the decisions study's results folder (its settings for the text)");
+  option("--stability", "the stability study's results folder (its settings for the text)");
+  option("--source", "what the report was made from (e.g. the commit)");
+  option("--note", "a note printed at the top of the report");
+  option("--previous", "an earlier report: each section whose inputs are not here (e.g. the paper study's results) is taken "
+                       "from it, and the header names those sections and that report's date");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int rc = app.exit(e);  // prints the help, or the error naming the option
+    return rc == 0 ? 0 : 2;      // bad arguments: exit 2, as always
+  }
+  for (const char* k : {"--results", "--references", "--out"})
+    if (opt[k].empty()) {
+      std::fprintf(stderr, "report: %s must not be empty\n", k);
+      return 2;
+    }
+  const std::string results = opt["--results"], out = opt["--out"];
+  std::error_code ec;
+  // Nothing to report on is an error: --results must be a folder; one that does not exist only
+  // with --previous (a machine without that study's results keeps its sections from that report).
+  if (const std::string bad = validation::folder_problem(results);
+      !bad.empty() && !(bad == "does not exist" && !opt["--previous"].empty())) {
+    std::fprintf(stderr, "report: --results '%s' %s (a study's results folder: seed<N>/ folders or one sample's results%s)\n",
+                 results.c_str(), bad.c_str(), bad == "does not exist" ? "; --previous FILE keeps the sections without results" : "");
+    return 2;
+  }
+  if (fs::exists(out, ec) && !fs::is_directory(out, ec)) {
+    std::fprintf(stderr, "report: --out '%s' is not a folder\n", out.c_str());
+    return 2;
+  }
+  try {
+    fs::create_directories(out);
+    const fs::path report = out;
+    const validation::ReportSources src{results, out, opt["--templates"], opt["--baseline"], opt["--convergence"],
+                                        opt["--decisions"], opt["--stability"], opt["--source"], opt["--note"]};
+    validation::ReportInputs in;
+    in.paper = validation::load_references(opt["--references"], "paper");
+    in.rows = validation::load_references(opt["--references"], opt["--profile"]);
+    std::vector<std::string> missing;
+    const bool have_results = fs::is_directory(results, ec);
+    const std::vector<std::string> densities = have_results ? validation::study_densities(results) : validation::paper_densities();
+    if (have_results) in.samples = validation::load_samples(results, densities, missing);
+    if (validation::report_unreadable("report", missing)) return 1;  // lost, not merely not run
+    in.sample = opt["--sample"];
+    validation::Values v = validation::figure_values(in);
+    if (!v.count("sample")) v["sample"] = "—", v["samples_n"] = "0";
+
+    validation::add_provenance(v, src, have_results && !in.samples.empty(), missing.size());
+    const auto energy_series = validation::add_runs(v, in.samples, densities);
+    validation::add_settings(v, results, have_results);
+    validation::add_tables(v, report, in.paper, opt["--decisions"]);
+    validation::add_study_settings(v, opt["--convergence"], opt["--stability"]);
+    validation::add_baseline(v, opt["--baseline"], in.rows, in.samples);
+    const std::string notes = validation::read_text(fs::path(opt["--templates"]) / "figure_notes.tsv");
+    if (notes.empty()) throw std::runtime_error(opt["--templates"] + "/figure_notes.tsv is missing or empty");
+    validation::add_figures(v, report, notes, energy_series);
+
+    const std::string tmpl = validation::read_text(fs::path(opt["--templates"]) / "index.md");
+    if (tmpl.empty()) throw std::runtime_error(opt["--templates"] + "/index.md is missing or empty");
+    std::string text = validation::fill(tmpl, v);
+    if (!opt["--previous"].empty()) text = with_previous_sections(text, tmpl, v, opt["--previous"]);
+    dem::write_file_atomically((report / "index.md").string(), text);
+    std::fprintf(stderr, "report written to %s (%zu sample(s) of %s%s)\n", (report / "index.md").c_str(), in.samples.size(),
+                 validation::shown_path(results).c_str(), missing.empty() ? "" : (", " + std::to_string(missing.size()) + " result files missing").c_str());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "report: %s\n", dem::describe_failure(e).c_str());
+    return 1;
+  }
+  return 0;
+}
+
+int main(int argc, char** argv) { return dem::guarded_main("report", [&] { return tool_main(argc, argv); }); }
