@@ -191,11 +191,16 @@ TEST_CASE("frames come at their own interval, whatever output.interval is", "[io
   CHECK(row_steps == std::vector<long>{0, 200, 400, 500});
 }
 
-// A result written before /frames existed (the shipped samples): its cell's outline from the box
-// lengths of each frame, written into the XML: corner k at (k & 1, k >> 1 & 1, k >> 2 & 1) L.
+// A result written before /frames existed: its cell's outline from the box lengths of each frame,
+// written into the XML: corner k at (k & 1, k >> 1 & 1, k >> 2 & 1) L. Made from a shipped sample
+// with its /frames group taken out (the samples are remade by today's engine, which writes it).
 TEST_CASE("the XDMF of a result without cell corners outlines the box of each frame", "[io][h5md]") {
   const std::string dir = test::scratch_dir("h5md_no_corners");
   fs::copy_file(std::string(DEM_SOURCE_DIR) + "/scenes/samples/dense_1k.h5", dir + "/s.h5");
+  {
+    h5::Handle f = h5::open_file_write(dir + "/s.h5");
+    if (h5::exists(f, "frames")) REQUIRE(H5Ldelete(f.id(), "frames", H5P_DEFAULT) >= 0);
+  }
   std::vector<double> L;
   {
     h5::Handle f = h5::open_file_read(dir + "/s.h5");
