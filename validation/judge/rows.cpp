@@ -97,13 +97,19 @@ std::string three_digits(double x) {
   return s.str();
 }
 
-// judge_values' warnings: each distinct misfit of the samples' values, and an interval too wide
-// for the tolerance (rule interval, check within, a tolerance above 0).
+// judge_values' warnings: each distinct misfit of the samples' values, a consistent verdict with no
+// sample in the paper's region, and an interval too wide for the tolerance (rule interval, check
+// within, a tolerance above 0).
 std::vector<std::string> warnings_of(const Row& row, const RowResult& r) {
   std::vector<std::string> out;
   for (const RowResult::PerSample& ps : r.samples)
     if (!ps.measured.misfit.empty() && std::find(out.begin(), out.end(), ps.measured.misfit) == out.end())
       out.push_back(ps.measured.misfit);
+  // Consistent only because the interval of one sample is wide: no sample's own value lies in the
+  // paper's region (e.g. a coordination number of 6.08-6.14 in every sample against 5.94 +/- 0.15).
+  if (row.rule == "interval" && r.verdict == Verdict::Consistent && r.valued > 0 && r.holds == 0)
+    out.push_back("consistent by width only: none of the " + std::to_string(r.valued) +
+                  " samples lies in the paper's region; the interval of one sample reaches it");
   if (row.rule == "interval" && row.check == "within" && row.tolerance > 0 && r.spread.low && r.spread.high) {
     const double width = *r.spread.high - *r.spread.low;
     if (width > too_few_width * row.tolerance)

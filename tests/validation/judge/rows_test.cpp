@@ -163,6 +163,23 @@ TEST_CASE("verdicts warn when the samples are too few for the row's tolerance", 
   CHECK(judged({10, 12}, 0).warnings.empty());
 }
 
+TEST_CASE("a consistent verdict with no sample in the paper's region says it is consistent by width only", "[references][warnings]") {
+  // Three samples 10.6, 10.7, 10.8 against 10 +/- 0.5: none in [9.5, 10.5]; mean 10.7, sd 0.1,
+  // interval 10.7 -/+ t(0.975, 2) 0.1 sqrt(4/3) = 10.7 -/+ 4.303 x 0.1155 = [10.203, 11.197], which
+  // reaches 10.5: consistent, and flagged. Its width, 0.99, is under 4 x 0.5: no other warning.
+  const validation::RowResult wide = judged({10.6, 10.7, 10.8}, 0.5);
+  CHECK(wide.verdict == validation::Verdict::Consistent);
+  CHECK(wide.holds == 0);
+  CHECK(wide.warnings == std::vector<std::string>{
+                             "consistent by width only: none of the 3 samples lies in the paper's region; the interval of one sample reaches it"});
+  // One sample inside (10.45; the interval then 1.6 wide, under 2): no flag; the verdict
+  // inconsistent (all three at 11.6-11.8): no flag.
+  CHECK(judged({10.45, 10.7, 10.75}, 0.5).warnings.empty());
+  const validation::RowResult far = judged({11.6, 11.7, 11.8}, 0.5);
+  CHECK(far.verdict == validation::Verdict::Inconsistent);
+  CHECK(far.warnings.empty());
+}
+
 TEST_CASE("verdicts carry each distinct misfit of their samples' values once", "[references][warnings]") {
   const validation::RowResult r = judged({10, 10.5, 9.5}, 5, "interval", "does not fit");
   CHECK(r.warnings == std::vector<std::string>{"does not fit"});
