@@ -233,18 +233,23 @@ void add_tables(Values& v, const fs::path& report, const std::vector<Row>& paper
 }
 
 void add_study_settings(Values& v, const std::string& convergence_results, const std::string& stability_results) {
+  // A setting the study's resolved scenes do not give is no key at all (no "?" placeholder): the
+  // template quotes these only when the study's results are here, and an unguarded use fails.
+  const auto put = [&](const std::string& key, const std::string& value) {
+    if (!value.empty() && value != "?") v[key] = value;
+  };
   const auto cs = convergence_results.empty() ? std::map<std::string, std::string>{} : run_settings(convergence_results, "reference_");
   v["have_convergence"] = cs.empty() ? "" : "yes";  // its results are here (else report --previous keeps the section)
-  v["convergence.particles"] = thousands(value_or(cs, "particles", ""));
-  v["convergence.time_step_us"] = scaled(cs, "time_step_test_s", 1e-6);
-  v["convergence.stress_rate_MPa_per_s"] = scaled(cs, "stress_rate_Pa_per_s", 1e6);
-  v["convergence.test1_cycles"] = value_or(cs, "test1_cycles", "?");
+  put("convergence.particles", cs.count("particles") ? thousands(cs.at("particles")) : "");
+  put("convergence.time_step_us", scaled(cs, "time_step_test_s", 1e-6));
+  put("convergence.stress_rate_MPa_per_s", scaled(cs, "stress_rate_Pa_per_s", 1e6));
+  put("convergence.test1_cycles", value_or(cs, "test1_cycles", ""));
   const auto ss = stability_results.empty() ? std::map<std::string, std::string>{} : run_settings(stability_results, "", "base");
   v["have_stability"] = ss.empty() ? "" : "yes";
-  v["stability.particles"] = thousands(value_or(ss, "particles", ""));
-  v["stability.target_pressure_kPa"] = value_or(ss, "target_pressure_kPa", "?");
-  v["stability.max_energy_error_percent"] = scaled(ss, "max_energy_error", 0.01);
-  v["stability.max_time_step_fraction"] = value_or(ss, "max_time_step_fraction", "?");
+  put("stability.particles", ss.count("particles") ? thousands(ss.at("particles")) : "");
+  put("stability.target_pressure_kPa", value_or(ss, "target_pressure_kPa", ""));
+  put("stability.max_energy_error_percent", scaled(ss, "max_energy_error", 0.01));
+  put("stability.max_time_step_fraction", value_or(ss, "max_time_step_fraction", ""));
   v["stability.closure_onset_percent"] = number(100 * closure_onset_fraction);
   v["stability.closure_limit_percent"] = number(100 * closure_limit);
   v["validation.prediction_percent"] = number(100 * prediction_level);

@@ -14,6 +14,7 @@
 #include "figures/figures.hpp"
 #include "study/format.hpp"
 #include "report/report.hpp"
+#include "report/report_values.hpp"
 
 using namespace validation;
 
@@ -637,4 +638,28 @@ TEST_CASE("report: the largest shear strain and shear stress over p of the cell 
   const auto t = read_table(shear_control_table({s}));
   REQUIRE(t.size() == 3);
   CHECK(t[2] == std::vector<std::string>{"seed1", "0.0041 / 0.020", "—", "—"});
+}
+
+TEST_CASE("report: the convergence and stability sections print no placeholder without their studies' results", "[report][template]") {
+  // The sections as the template writes them, with their committed tables but no results here: the
+  // settings the results would give are not quoted ("Δt = ? µs" before), and a key that is not
+  // there fails the fill instead of printing "?".
+  const std::string tmpl = source_file("reports/templates/index.md");
+  const auto from = tmpl.find("## Convergence"), to = tmpl.find("## Critical state");
+  REQUIRE(from != std::string::npos);
+  REQUIRE(to != std::string::npos);
+  const std::string sections = tmpl.substr(from, to - from);
+  Values v;
+  add_study_settings(v, "", "");
+  v["file.convergence"] = "CONVERGENCE TABLE\n";
+  v["file.stability"] = "STABILITY TABLE\n";
+  v["convergence_plot"] = "";
+  const std::string text = fill(sections, v);
+  CHECK(text.find("CONVERGENCE TABLE") != std::string::npos);
+  CHECK(text.find("STABILITY TABLE") != std::string::npos);
+  CHECK(text.find("?") == std::string::npos);
+  CHECK(text.find("are not here") != std::string::npos);
+  // Said to have the results but given none of their settings: the fill names the missing key.
+  v["have_convergence"] = "yes";
+  CHECK_THROWS_WITH(fill(sections, v), Catch::Contains("{{convergence."));
 }
