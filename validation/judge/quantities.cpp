@@ -13,6 +13,36 @@
 
 namespace validation {
 
+std::optional<double> strain_increment_misalignment(const TestResult& t, int c) {
+  const auto& legs_cycle = t.legs.at(col::cycle);
+  const auto& t1 = t.legs.at(col::target_1);
+  const auto& t2 = t.legs.at(col::target_2);
+  const auto& t3 = t.legs.at(col::target_3);
+  const auto& leg_end = t.series.at(col::leg_end);
+  const auto& leg = t.series.at("leg");
+  const auto& dx = t.series.at("pi_strain_increment_x");
+  const auto& dy = t.series.at("pi_strain_increment_y");
+  double sum = 0;
+  int n = 0;
+  for (std::size_t k = 0; k < legs_cycle.size(); ++k) {
+    if (static_cast<int>(legs_cycle[k]) != c) continue;
+    const double p1 = k ? t1[k - 1] : 1e5, p2 = k ? t2[k - 1] : 1e5, p3 = k ? t3[k - 1] : 1e5;  // leg 0 starts at A
+    const double sx = ((t3[k] - p3) - (t2[k] - p2)) / std::sqrt(2.0);
+    const double sy = (2 * (t1[k] - p1) - (t2[k] - p2) - (t3[k] - p3)) / std::sqrt(6.0);
+    for (std::size_t i = 0; i < leg.size(); ++i) {
+      if (leg_end[i] != 1 || static_cast<std::size_t>(leg[i]) != k) continue;
+      const double ns = std::hypot(sx, sy), ne = std::hypot(dx[i], dy[i]);
+      if (ns > 0 && ne > 0) {
+        const double cosine = std::clamp((sx * dx[i] + sy * dy[i]) / (ns * ne), -1.0, 1.0);
+        sum += std::acos(cosine) * 180 / std::numbers::pi;
+        ++n;
+      }
+    }
+  }
+  if (n == 0) return std::nullopt;
+  return sum / n;
+}
+
 std::optional<double> at_cycle_end(const TestResult& t, const std::string& column, int c) {
   const auto& cyc = t.series.at(col::cycle);
   const auto& end = t.series.at(col::cycle_end);
@@ -47,37 +77,7 @@ std::optional<double> change(const TestResult& t, const std::string& column, int
   return scale * (*vb - *va);
 }
 
-// Mean angle (degrees) between each leg's strain increment and its stress increment in the
-// pi-plane, over the legs of cycle c.
-std::optional<double> misalignment(const TestResult& t, int c) {
-  const auto& legs_cycle = t.legs.at(col::cycle);
-  const auto& t1 = t.legs.at(col::target_1);
-  const auto& t2 = t.legs.at(col::target_2);
-  const auto& t3 = t.legs.at(col::target_3);
-  const auto& leg_end = t.series.at(col::leg_end);
-  const auto& leg = t.series.at("leg");
-  const auto& dx = t.series.at("pi_strain_increment_x");
-  const auto& dy = t.series.at("pi_strain_increment_y");
-  double sum = 0;
-  int n = 0;
-  for (std::size_t k = 0; k < legs_cycle.size(); ++k) {
-    if (static_cast<int>(legs_cycle[k]) != c) continue;
-    const double p1 = k ? t1[k - 1] : 1e5, p2 = k ? t2[k - 1] : 1e5, p3 = k ? t3[k - 1] : 1e5;  // leg 0 starts at A
-    const double sx = ((t3[k] - p3) - (t2[k] - p2)) / std::sqrt(2.0);
-    const double sy = (2 * (t1[k] - p1) - (t2[k] - p2) - (t3[k] - p3)) / std::sqrt(6.0);
-    for (std::size_t i = 0; i < leg.size(); ++i) {
-      if (leg_end[i] != 1 || static_cast<std::size_t>(leg[i]) != k) continue;
-      const double ns = std::hypot(sx, sy), ne = std::hypot(dx[i], dy[i]);
-      if (ns > 0 && ne > 0) {
-        const double cosine = std::clamp((sx * dx[i] + sy * dy[i]) / (ns * ne), -1.0, 1.0);
-        sum += std::acos(cosine) * 180 / std::numbers::pi;
-        ++n;
-      }
-    }
-  }
-  if (n == 0) return std::nullopt;
-  return sum / n;
-}
+
 
 std::optional<double> ev_at(const TestResult& t, int c) {
   const auto v = at_cycle_end(t, col::volumetric_strain, c);
@@ -187,7 +187,7 @@ const std::map<std::string, Quantity>& registry() {
       {"strain_increment_alignment_gain",
        {tests, [](const QuantityRequest& q, const DensityResults& r) {
           return mean_over_tests(r, [&](const TestResult& t) -> std::optional<double> {
-            const auto a = misalignment(t, q.from_cycle), b = misalignment(t, q.to_cycle);
+            const auto a = strain_increment_misalignment(t, q.from_cycle), b = strain_increment_misalignment(t, q.to_cycle);
             if (!a || !b) return std::nullopt;
             return *a - *b;
           });

@@ -31,6 +31,10 @@ struct Measured {
 
 Measured compute(const QuantityRequest& q, const DensityResults& r);
 
+// Mean angle (degrees) between each leg's strain increment and its stress increment in the
+// pi-plane, over the legs of cycle c (none if the test has no such leg).
+std::optional<double> strain_increment_misalignment(const TestResult& t, int c);
+
 // Which runs of a density a quantity reads: its preparation, its tests (all of them, or the one
 // the row names), or all of its tests with one named (an ordering: that test against the others).
 enum class Reads { Preparation, Tests, TestAmongTests };

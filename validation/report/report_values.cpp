@@ -232,18 +232,12 @@ void add_tables(Values& v, const fs::path& report, const std::vector<Row>& paper
   v["file.readings"] = readings_text(report, paper);
 }
 
-void add_study_settings(Values& v, const std::string& convergence_results, const std::string& stability_results) {
+void add_study_settings(Values& v, const std::string& stability_results) {
   // A setting the study's resolved scenes do not give is no key at all (no "?" placeholder): the
   // template quotes these only when the study's results are here, and an unguarded use fails.
   const auto put = [&](const std::string& key, const std::string& value) {
     if (!value.empty() && value != "?") v[key] = value;
   };
-  const auto cs = convergence_results.empty() ? std::map<std::string, std::string>{} : run_settings(convergence_results, "reference_");
-  v["have_convergence"] = cs.empty() ? "" : "yes";  // its results are here (else report --previous keeps the section)
-  put("convergence.particles", cs.count("particles") ? thousands(cs.at("particles")) : "");
-  put("convergence.time_step_us", scaled(cs, "time_step_test_s", 1e-6));
-  put("convergence.stress_rate_MPa_per_s", scaled(cs, "stress_rate_Pa_per_s", 1e6));
-  put("convergence.test1_cycles", value_or(cs, "test1_cycles", ""));
   const auto ss = stability_results.empty() ? std::map<std::string, std::string>{} : run_settings(stability_results, "", "base");
   v["have_stability"] = ss.empty() ? "" : "yes";
   put("stability.particles", ss.count("particles") ? thousands(ss.at("particles")) : "");

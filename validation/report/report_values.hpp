@@ -18,7 +18,7 @@ std::string read_text(const std::filesystem::path& p);
 
 // The options of `report` that name its inputs (empty: not given).
 struct ReportSources {
-  std::string results, out, templates, baseline, convergence, decisions, stability, source, note;
+  std::string results, out, templates, baseline, decisions, stability, source, note;
 };
 
 // date, results, note, source, tool_version, have_results, missing_results.
@@ -37,8 +37,9 @@ void add_settings(Values& v, const std::string& results, bool have_results);
 // readings studies' tables, each headed with its recorded size).
 void add_tables(Values& v, const std::filesystem::path& report, const std::vector<Row>& paper, const std::string& decisions_results);
 
-// convergence.*, stability.* and validation.prediction_percent from those studies' results.
-void add_study_settings(Values& v, const std::string& convergence_results, const std::string& stability_results);
+// stability.* and validation.prediction_percent from the stability study's results (the
+// convergence section's table carries its own settings and stamp).
+void add_study_settings(Values& v, const std::string& stability_results);
 
 // baseline.*, state_a.table and shear_control.table (the earlier baseline given by --baseline).
 void add_baseline(Values& v, const std::string& baseline_file, const std::vector<Row>& rows, const std::vector<Sample>& samples);

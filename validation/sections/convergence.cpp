@@ -1,214 +1,360 @@
-// compare-runs convergence: the errors of every variant of the convergence study against the
-// reference variant, with its wall time. Writes OUT/errors.dat (for the figure), front.dat (its
-// Pareto front) and table.md: the cheapest variant within 1, 5 and 10 %, the same judged on the
-// quantities the sample-to-sample scatter resolves (if the study has a `seed2`), then every variant.
+// compare-runs convergence: the error budget of the paper's settings. From the study's results
+// (or its committed summary.json, --summary), for each density and headline quantity: the errors
+// of the paper's settings in the time step, the stress rate and the sample size against the
+// extrapolated converged value (convergence_budget.hpp), beside the scatter between samples; then
+// every setting's error against the converged value with its cost, the Pareto front and the
+// cheapest setting within 1, 5 and 10 %; and, given the paper study's validation.json, whether each
+// inconsistent row's miss is larger than the budget. Writes OUT/summary.json (from results only),
+// table.md, errors.dat and front.dat (reports/gnuplot/convergence_error_vs_time.gp draws them).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <limits>
 #include <map>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
 
-#include "sections/variants.hpp"
-#include "sections/modes.hpp"
-#include "sections/percent.hpp"
 #include "io/atomic_file.hpp"
+#include "sections/convergence_budget.hpp"
+#include "sections/convergence_summary.hpp"
+#include "sections/modes.hpp"
+#include "sections/variants.hpp"
+#include "study/ensemble.hpp"
+#include "study/json_file.hpp"
 #include "study/markdown_table.hpp"
 
 namespace fs = std::filesystem;
+using validation::Budget;
+using validation::ConvergenceRun;
+using validation::ConvergenceSummary;
+using validation::Estimate;
+using validation::PerSeed;
 
 namespace compare_runs {
 namespace {
 
-// The quantities in reading order: e0, coordination number, then εv, εd by cycle, then the slope.
-std::vector<std::string> reading_order(const std::map<std::string, double>& q) {
-  auto rank = [](const std::string& n) {
-    const int group = n.rfind("e0", 0) == 0 ? 0 : n.rfind("coordination", 0) == 0 ? 1 : n.rfind("ev_", 0) == 0 ? 2
-                      : n.rfind("ed_", 0) == 0 ? 3 : 4;
-    const auto at = n.find("cycle");
-    const int cycle = at == std::string::npos ? 0 : std::atoi(n.c_str() + at + 5);
-    return std::pair{group, cycle};
-  };
-  std::vector<std::string> names;
-  for (const auto& [name, v] : q) names.push_back(name);
-  std::stable_sort(names.begin(), names.end(), [&](const std::string& a, const std::string& b) { return rank(a) < rank(b); });
-  return names;
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+// The paper study's samples per density: the sampling error of its ensemble's mean.
+constexpr int paper_samples = 5;
+// A quantity whose converged value is known to better than this (relative half-width) can judge
+// settings; the others' errors are the samples' scatter.
+constexpr double resolved_below = 0.10;
+
+// The quantities in reading order and their headings.
+const std::vector<std::pair<std::string, std::string>>& headline() {
+  static const std::vector<std::pair<std::string, std::string>> q = {
+      {"e0", "e0"}, {"coordination", "CN"}, {"ev_cycle1", "εv 1"}, {"ev_cycle2", "εv 2"}, {"ed_cycle1", "εd 1"},
+      {"ed_cycle2", "εd 2"}, {"cn_cycle1", "CN 1"}, {"cn_cycle2", "CN 2"}, {"angle_cycle1", "angle 1 (°)"},
+      {"angle_cycle2", "angle 2 (°)"}, {"qp_slope", "q/p slope"}, {"ev_growth_1_2", "εv 2 − εv 1"},
+      {"cn_change_1_2", "CN 2 − CN 1"}};
+  return q;
 }
 
-// Column heading of a quantity: "ev_cycle2" -> "εv 2", "qp_slope" -> "q/p slope".
-std::string heading(std::string n) {
-  for (const auto& [from, to] : {std::pair{"ev_cycle", "εv "}, std::pair{"ed_cycle", "εd "}, std::pair{"coordination", "CN"},
-                                 std::pair{"qp_slope", "q/p slope"}})
-    if (n.rfind(from, 0) == 0) n = to + n.substr(std::string(from).size());
-  return n;
+bool same(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b)); }
+
+std::string number(double x) {
+  if (!std::isfinite(x)) return "—";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", x);
+  return buf;
 }
 
-// One variant: its settings, summed wall time and quantities, and their errors against the reference.
-struct Variant {
-  std::string name, settings, status;  // status: why it has no quantities
-  double wall = 0;
-  std::map<std::string, double> quantities, errors;
-  double largest = std::numeric_limits<double>::infinity();
+// "+1.23 ± 0.40 %" of `scale`; the half-width left out when there is none.
+std::string signed_percent(const Estimate& e, double scale) {
+  if (!std::isfinite(e.value) || !(std::abs(scale) > 0)) return "—";
+  char buf[64];
+  const double v = 100 * e.value / std::abs(scale), h = 100 * e.half_width / std::abs(scale);
+  const char* f = std::abs(v) < 0.1 && (!std::isfinite(h) || h < 0.1) ? "%+.3f" : "%+.2f";
+  std::snprintf(buf, sizeof buf, f, v);
+  std::string s = buf;
+  if (std::isfinite(h)) {
+    std::snprintf(buf, sizeof buf, std::abs(h) < 0.1 ? " ± %.3f" : " ± %.2f", h);
+    s += buf;
+  }
+  return s + " %";
+}
+
+// "1.23 ± 0.40 %" (a magnitude or an sd: no sign).
+std::string unsigned_percent(const Estimate& e, double scale = 1) {
+  const std::string s = signed_percent(e, scale);
+  return s.empty() || (s[0] != '+' && s[0] != '-') ? s : s.substr(1);
+}
+
+// One density's runs: variant -> seed -> run.
+using Runs = std::map<std::string, std::map<int, const ConvergenceRun*>>;
+
+PerSeed values(const Runs& runs, const std::string& variant, const std::string& quantity) {
+  PerSeed v;
+  if (!runs.count(variant)) return v;
+  for (const auto& [seed, r] : runs.at(variant))
+    if (r->status.empty() && r->quantities.count(quantity) && std::isfinite(r->quantities.at(quantity))) v[seed] = r->quantities.at(quantity);
+  return v;
+}
+
+std::vector<double> list(const PerSeed& p) {
+  std::vector<double> v;
+  for (const auto& [s, x] : p) v.push_back(x);
+  return v;
+}
+
+// A setting: its runs' shared settings (from its first complete run).
+struct Setting {
+  std::string variant;
+  double dt = nan, rate = nan, core_s = 0;
+  long spheres = 0;
+  int samples = 0;
 };
 
-Variant read_variant(const std::string& name, const std::vector<ManifestLine>& lines) {
-  Variant r{name, "", "", 0, {}, {}, std::numeric_limits<double>::infinity()};
-  std::map<std::string, double> sample;
-  std::vector<std::pair<std::string, validation::TestResult>> tests;
-  bool complete = true;
-  for (const ManifestLine& l : lines) {
-    r.settings = l.settings;
-    if (!validation::is_complete(l.result)) {
-      complete = false;
-      validation::CaseRun stop;
-      read_stop(l.result, stop);
-      if (r.status.empty()) r.status = l.run + (stop.exit_code ? ": " + stop.message : " not complete");
+std::map<std::string, Setting> settings_of(const Runs& runs) {
+  std::map<std::string, Setting> s;
+  for (const auto& [variant, seeds] : runs) {
+    Setting x{variant};
+    for (const auto& [seed, r] : seeds) {
+      if (!r->status.empty()) continue;
+      if (x.samples == 0) x.dt = r->time_step_s, x.rate = r->rate_Pa_s, x.spheres = r->spheres;
+      x.core_s += r->core_s;
+      ++x.samples;
+    }
+    if (x.samples) x.core_s /= x.samples;
+    s[variant] = x;
+  }
+  return s;
+}
+
+// What one density's analysis found, for the table and the figure.
+struct DensityBudget {
+  std::string density;
+  std::vector<Budget> budgets;
+  std::map<std::string, Setting> settings;
+  std::string dt_half, dt_quarter, larger;  // the variants the factors used ("" none)
+  std::vector<std::string> rates;           // the rate variants, the paper's among them
+};
+
+DensityBudget analyse(const std::string& density, const Runs& runs, const std::string& reference) {
+  DensityBudget d{density, {}, settings_of(runs), "", "", "", {}};
+  const Setting& ref = d.settings.at(reference);
+  for (const auto& [variant, s] : d.settings) {
+    if (s.samples == 0 || variant == reference) continue;
+    const bool dt_same = same(s.dt, ref.dt), rate_same = same(s.rate, ref.rate), n_same = s.spheres == ref.spheres;
+    if (rate_same && n_same && same(s.dt, ref.dt / 2)) d.dt_half = variant;
+    if (rate_same && n_same && same(s.dt, ref.dt / 4)) d.dt_quarter = variant;
+    if (dt_same && n_same && !rate_same) d.rates.push_back(variant);
+    if (dt_same && rate_same && s.spheres > ref.spheres && (d.larger.empty() || s.spheres > d.settings.at(d.larger).spheres)) d.larger = variant;
+  }
+  for (const auto& [name, heading] : headline()) {
+    const PerSeed paper = values(runs, reference, name);
+    if (paper.empty()) continue;
+    Budget b;
+    b.quantity = name;
+    b.paper = validation::mean_of(list(paper));
+    b.time_step = validation::time_step_error(paper, values(runs, d.dt_half, name), values(runs, d.dt_quarter, name));
+    std::map<double, PerSeed> by_rate = {{ref.rate, paper}};
+    for (const std::string& v : d.rates) by_rate[d.settings.at(v).rate] = values(runs, v, name);
+    b.rate = validation::rate_error(by_rate, ref.rate);
+    b.size = d.larger.empty() ? validation::FactorError{{nan, nan}, "no larger sample ran", false}
+                              : validation::size_error(paper, ref.spheres, values(runs, d.larger, name), d.settings.at(d.larger).spheres);
+    b.sd_one = validation::sd_of(list(paper));
+    b.sd_mean = b.sd_one / std::sqrt(paper_samples);
+    b.converged = validation::converged_value(b.paper, b.time_step, b.rate, b.size);
+    d.budgets.push_back(b);
+  }
+  return d;
+}
+
+std::string heading_of(const std::string& name) {
+  for (const auto& [n, h] : headline())
+    if (n == name) return h;
+  return name;
+}
+
+bool resolved(const Budget& b) {
+  return std::isfinite(b.converged.half_width) && std::abs(b.converged.value) > 0 &&
+         b.converged.half_width / std::abs(b.converged.value) < resolved_below;
+}
+
+// A setting's largest relative error against the converged values over the resolved quantities,
+// with the half-width of that quantity's error.
+Estimate largest_error(const DensityBudget& d, const Runs& runs, const std::string& variant, std::string& which) {
+  Estimate worst{nan, nan};
+  for (const Budget& b : d.budgets) {
+    if (!resolved(b)) continue;
+    const PerSeed v = values(runs, variant, b.quantity);
+    if (v.empty()) return {std::numeric_limits<double>::infinity(), nan};
+    const Estimate e = validation::relative_error_to(validation::mean_of(list(v)), b.converged);
+    if (!std::isfinite(worst.value) || e.value > worst.value) worst = e, which = heading_of(b.quantity);
+  }
+  return worst;
+}
+
+std::string settings_text(const Setting& s) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "Δt %g µs, %g MPa/s, %ld spheres", s.dt * 1e6, s.rate * 1e-6, s.spheres);
+  return buf;
+}
+
+// The paragraph on the paper study's inconsistent rows: is each miss larger than the budget?
+std::string verdict_reading(const std::vector<DensityBudget>& all, const std::string& validation_json) {
+  // A row's quantity -> the budget's quantity and the factor to the row's units.
+  static const std::map<std::string, std::pair<std::string, double>> maps = {
+      {"qp_strong_fabric_slope", {"qp_slope", 1}}, {"void_ratio_after_preparation", {"e0", 1}},
+      {"coordination_after_preparation", {"coordination", 1}}, {"ev_growth", {"ev_growth_1_2", 100}},
+      {"cn_change", {"cn_change_1_2", 1}}};
+  const nlohmann::json j = validation::read_json_file(validation_json);
+  std::ostringstream md;
+  validation::MarkdownTable t({"inconsistent row", "miss (ours to paper)", "budget of the settings", "reading"});
+  int n = 0;
+  for (const auto& row : j.at("rows")) {
+    if (row.value("verdict", "") != "inconsistent") continue;
+    ++n;
+    const std::string name = row.at("name").get<std::string>(), quantity = row.at("quantity").get<std::string>();
+    const std::string density = row.value("density", "");
+    const double mean = row.at("mean").get<double>();
+    const validation::Region region =
+        validation::paper_region(row.at("check").get<std::string>(), row.at("reference").get<double>(), row.value("tolerance", 0.0));
+    const double miss = region.contains(mean) ? 0 : std::min(std::abs(mean - region.low), std::abs(mean - region.high));
+    const Budget* b = nullptr;
+    double scale = 1;
+    for (const DensityBudget& d : all)
+      if (d.density == density && maps.count(quantity))
+        for (const Budget& x : d.budgets)
+          if (x.quantity == maps.at(quantity).first) b = &x, scale = maps.at(quantity).second;
+    if (!b) {
+      const bool ran = std::any_of(all.begin(), all.end(), [&](const DensityBudget& d) { return d.density == density; });
+      t.row({name, number(miss), "—", !ran ? "not covered: this study did not run the " + density + " density"
+                                      : maps.count(quantity) ? "not covered: not measured here (e.g. fewer than two cycles)"
+                                                             : "not covered: the study has no such quantity (one test)"});
       continue;
     }
-    r.wall += wall_time(l.result);  // a shared preparation counts in full for every variant using it
-    const validation::Columns series = validation::read_columns(l.result, "timeseries");
-    if (l.test == "-") {
-      for (const auto& [column, values] : series)
-        if (!values.empty()) sample[column] = values.back();
-    } else {
-      tests.push_back({l.test, {0, series, validation::read_columns(l.result, "legs"), l.test}});
+    double budget = 0;
+    for (const validation::FactorError* f : {&b->time_step, &b->rate, &b->size})
+      if (std::isfinite(f->error.value)) budget += std::abs(f->error.value) + (std::isfinite(f->error.half_width) ? f->error.half_width : 0);
+    budget *= scale;
+    const bool proxy = quantity == "ev_growth" || quantity == "cn_change";
+    std::string reading = miss > budget ? "larger than the budget: not the settings' error" : "within the budget: no evidence against the reproduction";
+    if (proxy) reading += " (cycles 1–2 of Test 1 stand for the row's 1–5)";
+    t.row({name, number(miss), "≤ " + number(budget), reading});
+  }
+  if (n == 0) return "";
+  md << "\nThe paper study's inconsistent rows (`" << validation_json << "`) against the budget: the miss is the distance "
+        "from our ensemble's mean to the paper's region; the budget the sum of the paper's settings' time-step, rate and size "
+        "errors, each at the far end of its interval, in the row's units.\n\n"
+     << t.text();
+  return md.str();
+}
+
+int write_section(const ConvergenceSummary& s, const std::string& out, const std::string& reference, const std::string& validation_json) {
+  std::vector<std::string> densities;
+  std::map<std::string, Runs> by_density;
+  for (const ConvergenceRun& r : s.runs) {
+    if (!by_density.count(r.density)) densities.push_back(r.density);
+    by_density[r.density][r.variant][r.seed] = &r;
+  }
+  std::vector<DensityBudget> all;
+  for (const std::string& d : densities) {
+    const Runs& runs = by_density.at(d);
+    if (!runs.count(reference) || settings_of(runs).at(reference).samples == 0) {
+      std::fprintf(stderr, "compare-runs: the reference variant '%s' has no complete %s run\n", reference.c_str(), d.c_str());
+      return 1;
     }
+    all.push_back(analyse(d, runs, reference));
   }
-  if (complete) r.quantities = validation::convergence_quantities(sample, tests);
-  return r;
-}
-
-// An errors.dat line: variant, wall time, largest error, on the front, then every error.
-std::string dat_line(const Variant& r, bool front, const std::map<std::string, double>& ref_q) {
-  std::ostringstream s;
-  s << r.name << '\t' << r.wall << '\t' << r.largest << '\t' << (front ? 1 : 0);
-  for (const auto& [name, v] : ref_q) s << '\t' << r.errors.at(name);
-  s << "\n";
-  return s.str();
-}
-
-}  // namespace
-
-int convergence(const Manifest& manifest, const std::string& results, const std::string& out, const std::string& reference) {
-  std::vector<Variant> rows;
-  for (const std::string& v : manifest.variants) rows.push_back(read_variant(v, manifest.by_variant.at(v)));
-  const Variant* ref = nullptr;
-  for (const Variant& r : rows)
-    if (r.name == reference) ref = &r;
-  if (!ref || ref->quantities.empty()) {
-    std::fprintf(stderr, "compare-runs: the reference variant '%s' has no complete results in %s\n", reference.c_str(), results.c_str());
-    return 1;
-  }
-  const std::map<std::string, double> ref_q = ref->quantities;
-  std::vector<validation::Point> points;
-  std::vector<std::size_t> point_row;
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    Variant& r = rows[i];
-    if (r.quantities.empty()) continue;
-    r.errors = validation::relative_errors(r.quantities, ref_q);
-    r.largest = 0;
-    for (const auto& [name, e] : r.errors) r.largest = std::max(r.largest, e);
-    points.push_back({r.wall, r.largest});
-    point_row.push_back(i);
-  }
-  const std::vector<bool> front = validation::pareto_front(points);
-  // errors.dat: one line per variant that finished, for the figure (gnuplot reads columns 2-4).
-  std::string errors_dat = "# variant\twall_time_s\tlargest_relative_error\tpareto";
-  for (const auto& [name, v] : ref_q) errors_dat += '\t' + name;
-  errors_dat += "\n";
-  for (std::size_t k = 0; k < points.size(); ++k) errors_dat += dat_line(rows[point_row[k]], front[k], ref_q);
-  // front.dat: the same lines of the Pareto front but the reference (error 0, off a log axis),
-  // in order of wall time, for the figure's line (reports/gnuplot/convergence_error_vs_time.gp).
-  std::vector<std::size_t> on_front;
-  for (std::size_t k = 0; k < points.size(); ++k)
-    if (front[k] && points[k].error > 0) on_front.push_back(k);
-  std::sort(on_front.begin(), on_front.end(), [&](std::size_t a, std::size_t b) { return points[a].cost < points[b].cost; });
-  std::string front_dat = "# the Pareto front of errors.dat without the reference, by wall time; columns as errors.dat\n";
-  for (std::size_t k : on_front) front_dat += dat_line(rows[point_row[k]], true, ref_q);
-
+  double core_s = 0;
+  for (const ConvergenceRun& r : s.runs) core_s += r.core_s;
   std::ostringstream md;
-  // The cheapest variant within 1, 5 and 10 % of the reference, of the points (wall time, error)
-  // given, point k being the variant rows[row_of[k]].
-  const auto cheapest_table = [&](const std::vector<validation::Point>& pts, const std::vector<std::size_t>& row_of,
-                                  const std::string& error_heading) {
-    validation::MarkdownTable t({"within", "cheapest variant", "settings", "wall time (s)", error_heading, "wall time / reference"});
+  std::set<std::string> variants;
+  for (const ConvergenceRun& r : s.runs) variants.insert(r.variant);
+  md << "Study: " << s.runs.size() << " samples (a preparation and a test each) of " << variants.size() << " settings at "
+     << densities.size() << " densities, engine `" << s.engine
+     << "`, baseline `" << s.baseline << "`, summarised " << s.date << " from `" << s.results << "`; "
+     << std::lround(core_s / 60) << " core-minutes (" << s.threads << " thread per run).\n";
+  std::string errors_dat = "# density\tvariant\tcore_s\tlargest_relative_error\thalf_width\tpareto\tquantity\n", front_dat = errors_dat;
+  for (const DensityBudget& d : all) {
+    const Runs& runs = by_density.at(d.density);
+    const Setting& ref = d.settings.at(reference);
+    md << "\n#### " << d.density << ": the error budget of the paper's settings (" << settings_text(ref) << ", " << ref.samples
+       << " samples)\n\nEach factor's error is the paper's settings' value minus the converged value in that factor, in % of the "
+          "converged value, with its 95 % interval; one sample and mean of " << paper_samples
+       << " are the scatter between samples (sd, and sd/√" << paper_samples << ").\n\n";
+    validation::MarkdownTable t({"quantity", "paper's settings", "Δt", "rate", "size", "one sample", "mean of 5", "converged"});
+    std::map<std::string, std::vector<std::string>> hows;  // "factor: how" -> quantities
+    for (const Budget& b : d.budgets) {
+      const double c = b.converged.value;
+      t.row({heading_of(b.quantity), number(b.paper.value) + " ± " + number(b.paper.half_width), signed_percent(b.time_step.error, c),
+             signed_percent(b.rate.error, c), signed_percent(b.size.error, c), unsigned_percent({b.sd_one, nan}, c),
+             unsigned_percent({b.sd_mean, nan}, c), number(c) + " ± " + number(b.converged.half_width)});
+      hows["Δt: " + b.time_step.how].push_back(heading_of(b.quantity));
+      hows["rate: " + b.rate.how].push_back(heading_of(b.quantity));
+      hows["size: " + b.size.how].push_back(heading_of(b.quantity));
+    }
+    md << t.text() << "\nHow each factor was taken to its limit (Δt: " << (d.dt_half.empty() ? "—" : d.dt_half) << ", "
+       << (d.dt_quarter.empty() ? "—" : d.dt_quarter) << "; rates: " << d.rates.size() + 1 << "; size: "
+       << (d.larger.empty() ? "—" : d.larger) << "):\n\n";
+    for (const auto& [how, qs] : hows) {
+      md << "- " << how << ": ";
+      for (std::size_t k = 0; k < qs.size(); ++k) md << (k ? ", " : "") << qs[k];
+      md << "\n";
+    }
+    // Every setting against the converged values.
+    std::vector<std::string> names, quantities;
+    for (const Budget& b : d.budgets)
+      if (resolved(b)) quantities.push_back(heading_of(b.quantity));
+    std::vector<validation::Point> points;
+    std::vector<Estimate> errors;
+    std::vector<std::string> which;
+    for (const auto& [variant, setting] : d.settings) {
+      if (setting.samples == 0) continue;
+      std::string w;
+      errors.push_back(largest_error(d, runs, variant, w));
+      names.push_back(variant);
+      which.push_back(w);
+      points.push_back({setting.core_s, errors.back().value});
+    }
+    const std::vector<bool> front = validation::pareto_front(points);
+    if (quantities.empty()) {
+      md << "\nNo quantity's converged value is known to better than " << std::lround(100 * resolved_below)
+         << " % at this density: the settings cannot be told apart on these samples (cost per sample, preparation + test: ";
+      bool first = true;
+      for (const auto& [variant, setting] : d.settings)
+        if (setting.samples) md << (first ? "" : ", ") << variant << " " << std::lround(setting.core_s) << " core-s", first = false;
+      md << ").\n";
+      continue;
+    }
+    md << "\nEvery setting against the converged values: the largest relative error over the quantities known to better than "
+       << std::lround(100 * resolved_below) << " % (";
+    for (std::size_t k = 0; k < quantities.size(); ++k) md << (k ? ", " : "") << quantities[k];
+    md << "), mean over its samples; core-seconds per sample (preparation + test); ★ on the Pareto front.\n\n";
+    validation::MarkdownTable e({"setting", "settings", "samples", "core-s", "largest error", "on"});
+    std::vector<std::size_t> order(names.size());
+    for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return points[a].cost < points[b].cost; });
+    for (std::size_t k : order) {
+      const Setting& st = d.settings.at(names[k]);
+      e.row({names[k] + (front[k] ? " ★" : ""), settings_text(st), std::to_string(st.samples), std::to_string(std::lround(st.core_s)),
+             unsigned_percent(errors[k]), which[k]});
+      char line[256];
+      std::snprintf(line, sizeof line, "%s\t%s\t%.6g\t%.6g\t%.6g\t%d\t%s\n", d.density.c_str(), names[k].c_str(), st.core_s,
+                    errors[k].value, errors[k].half_width, front[k] ? 1 : 0, which[k].c_str());
+      errors_dat += line;
+      if (front[k]) front_dat += line;
+    }
+    md << e.text() << "\n";
     for (double tol : {0.01, 0.05, 0.10}) {
-      const int best = validation::cheapest_within(pts, tol);
-      const std::string within = std::to_string(std::lround(100 * tol)) + " %";
+      const int best = validation::cheapest_within(points, tol);
+      md << "Cheapest within " << std::lround(100 * tol) << " % of the converged values: ";
       if (best < 0) {
-        t.row({within, "none", "", "", "", ""});
+        md << "none of the settings run.\n";
         continue;
       }
-      const Variant& r = rows[row_of[static_cast<std::size_t>(best)]];
-      char ratio[32];
-      std::snprintf(ratio, sizeof ratio, "%.2f", ref->wall > 0 ? r.wall / ref->wall : 0.0);
-      t.row({within, r.name, r.settings, std::to_string(std::lround(r.wall)), percent(pts[static_cast<std::size_t>(best)].error), ratio});
+      const std::size_t k = static_cast<std::size_t>(best);
+      const bool sure = errors[k].value + (std::isfinite(errors[k].half_width) ? errors[k].half_width : 0) <= tol;
+      md << names[k] << " (" << std::lround(points[k].cost) << " core-s, " << unsigned_percent(errors[k])
+         << (sure ? ", the whole interval within" : ", its interval reaching beyond") << ").\n";
     }
-    md << t.text();
-  };
-  md << "Cheapest settings whose every error is within a tolerance of the reference (wall time: preparation + test, "
-        "as measured in this study):\n\n";
-  cheapest_table(points, point_row, "largest error");
-  // Sample-to-sample scatter: the reference on another random sample (variant "seed2", if the study
-  // has one). A quantity that differs between two statistically identical samples by more than a
-  // tolerance cannot tell settings apart at that tolerance, so a second table judges the variants
-  // on the quantities the scatter resolves (scatter below 10 %).
-  const Variant* scatter = nullptr;
-  for (const Variant& r : rows)
-    if (r.name == "seed2" && !r.quantities.empty()) scatter = &r;
-  if (scatter) {
-    std::vector<std::string> resolved;
-    for (const auto& [name, e] : scatter->errors)
-      if (e < 0.10) resolved.push_back(name);
-    std::vector<validation::Point> judged;
-    std::vector<std::size_t> judged_row;
-    for (std::size_t k = 0; k < points.size(); ++k) {
-      const Variant& r = rows[point_row[k]];
-      if (&r == scatter) continue;  // another sample, not another setting
-      double largest = 0;
-      for (const std::string& name : resolved) largest = std::max(largest, r.errors.at(name));
-      judged.push_back({r.wall, largest});
-      judged_row.push_back(point_row[k]);
-    }
-    md << "\nSample-to-sample scatter (the reference on a second random sample, `seed2`): ";
-    for (const auto& [name, e] : scatter->errors) md << heading(name) << " " << percent(e) << "; ";
-    md << "so only ";
-    for (std::size_t k = 0; k < resolved.size(); ++k) md << (k ? ", " : "") << heading(resolved[k]);
-    md << " (scatter below 10 %) can tell settings apart. Judged on those alone:\n\n";
-    cheapest_table(judged, judged_row, "largest error on these");
   }
-  md << "\nEvery variant: relative error against the reference of each quantity (e0 and coordination number after "
-        "the preparation; εv and εd, paper Eq. 4, at the end of each cycle; slope of q/p against F^s_d/F^s_m), "
-        "★ on the Pareto front of wall time against the largest error.\n\n";
-  const std::vector<std::string> names = reading_order(ref_q);
-  std::vector<std::string> headings = {"variant", "settings", "wall time (s)"};
-  for (const std::string& name : names) headings.push_back(heading(name));
-  headings.push_back("largest");
-  validation::MarkdownTable every(headings);
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    const Variant& r = rows[i];
-    bool starred = false;  // on the Pareto front
-    for (std::size_t k = 0; k < point_row.size(); ++k)
-      if (point_row[k] == i) starred = front[k];
-    std::vector<std::string> cells = {r.name + (starred ? " ★" : ""), r.settings};
-    if (r.quantities.empty()) {  // the wall time's cell says why; the errors' are empty
-      cells.push_back("—");
-      cells.push_back(r.status.empty() ? "did not finish" : r.status);
-      cells.resize(headings.size());
-    } else {
-      cells.push_back(std::to_string(std::lround(r.wall)));
-      for (const std::string& name : names) cells.push_back(percent(r.errors.at(name)));
-      cells.push_back(percent(r.largest));
-    }
-    every.row(cells);
-  }
-  md << every.text() << "\nReference values: ";
-  for (const std::string& name : names) md << heading(name) << " = " << ref_q.at(name) << "; ";
-  md << "\n";
+  if (!validation_json.empty()) md << verdict_reading(all, validation_json);
   try {
     dem::write_file_atomically((fs::path(out) / "errors.dat").string(), errors_dat);
     dem::write_file_atomically((fs::path(out) / "front.dat").string(), front_dat);
@@ -217,8 +363,30 @@ int convergence(const Manifest& manifest, const std::string& results, const std:
     std::fprintf(stderr, "error: %s\n", e.what());
     return 1;
   }
-  std::printf("convergence: %zu variants, %zu finished -> %s\n", rows.size(), points.size(), (fs::path(out) / "table.md").c_str());
+  std::printf("convergence: %zu runs, %zu densities -> %s\n", s.runs.size(), all.size(), (fs::path(out) / "table.md").c_str());
   return 0;
+}
+
+}  // namespace
+
+int convergence(const Manifest& manifest, const std::string& results, const std::string& out, const std::string& reference,
+                int threads, const std::string& validation_json) {
+  ConvergenceSummary s = validation::summarise_convergence(manifest, results, threads);
+  const fs::path committed = fs::path(out) / "summary.json";
+  std::error_code ec;
+  if (fs::exists(committed, ec)) s = validation::merge_summaries(s, validation::read_convergence_summary(committed.string()));
+  try {
+    dem::write_file_atomically((fs::path(out) / "summary.json").string(), validation::summary_json(s));
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
+  }
+  return write_section(s, out, reference, validation_json);
+}
+
+int convergence_from_summary(const std::string& file, const std::string& out, const std::string& reference,
+                             const std::string& validation_json) {
+  return write_section(validation::read_convergence_summary(file), out, reference, validation_json);
 }
 
 }  // namespace compare_runs

@@ -10,9 +10,15 @@
 
 namespace compare_runs {
 
-// Errors of every variant against `reference`, with its wall time: OUT/errors.dat, front.dat and
-// table.md (the cheapest variant within 1, 5, 10 %, then every variant).
-int convergence(const Manifest& manifest, const std::string& results, const std::string& out, const std::string& reference);
+// The error budget of `reference`'s settings (sections/convergence.cpp): OUT/summary.json (every
+// run's settings, cost and quantities, stamped; threads: per run; an OUT/summary.json already there
+// keeps the complete runs these results lack), table.md, errors.dat, front.dat.
+// validation_json (optional): the paper study's, its inconsistent rows read against the budget.
+int convergence(const Manifest& manifest, const std::string& results, const std::string& out, const std::string& reference,
+                int threads, const std::string& validation_json);
+// The same from a committed summary.json, without the results (summary.json is not rewritten).
+int convergence_from_summary(const std::string& file, const std::string& out, const std::string& reference,
+                             const std::string& validation_json);
 
 // What became of each case: OUT/table.md. Exit 1 if a case is not acceptable, unless report_only.
 int stability(const Manifest& manifest, const std::string& results, const std::string& out, bool report_only);

@@ -33,7 +33,15 @@ std::map<std::string, double> convergence_quantities(const std::map<std::string,
     for (int c = 1; c <= last; ++c) {
       if (const auto v = at_cycle_end(t, col::volumetric_strain, c)) q["ev_cycle" + std::to_string(c) + suffix] = *v;
       if (const auto v = at_cycle_end(t, col::deviatoric_strain, c)) q["ed_cycle" + std::to_string(c) + suffix] = *v;
+      if (t.series.count(col::coordination_number))
+        if (const auto v = at_cycle_end(t, col::coordination_number, c)) q["cn_cycle" + std::to_string(c) + suffix] = *v;
+      if (t.series.count("pi_strain_increment_x") && t.legs.count(col::cycle))
+        if (const auto v = strain_increment_misalignment(t, c)) q["angle_cycle" + std::to_string(c) + suffix] = *v;
     }
+    // Changes over the cycles run (the validation's rows read cycles 1 to 5; this study's tests run 2).
+    const std::string first = "_cycle1" + suffix, second = "_cycle2" + suffix;
+    if (q.count("ev" + first) && q.count("ev" + second)) q["ev_growth_1_2" + suffix] = q["ev" + second] - q["ev" + first];
+    if (q.count("cn" + first) && q.count("cn" + second)) q["cn_change_1_2" + suffix] = q["cn" + second] - q["cn" + first];
     DensityResults one;
     one.tests.push_back(t);
     if (const Measured m = compute({"qp_strong_fabric_slope", "", 0, 0, 0, ""}, one); m.value) q["qp_slope" + suffix] = *m.value;

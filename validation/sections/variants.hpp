@@ -15,8 +15,10 @@ namespace validation {
 double relative_error(double x, double reference);
 
 // The quantities a variant is compared on, by name: e0 and the coordination number after the
-// preparation, εv and εd (paper Eq. 4) at the end of every cycle of each test, and the slope of
-// q/p against F^s_d/F^s_m (the validation's own computations). Missing ones are left out.
+// preparation, εv, εd (paper Eq. 4) and the coordination number at the end of every cycle of each
+// test, the mean angle between strain and stress increments over each cycle's legs, and the slope
+// of q/p against F^s_d/F^s_m (the validation's own computations); with two cycles, the changes of
+// εv and of the coordination number from the first to the second. Missing ones are left out.
 std::map<std::string, double> convergence_quantities(const std::map<std::string, double>& sample,
                                                      const std::vector<std::pair<std::string, TestResult>>& tests);
 

@@ -16,7 +16,7 @@ std::vector<ManifestLine> read_manifest(const std::string& dir) {
   std::ifstream in(file);
   if (!in) throw std::runtime_error(file.string() + ": no manifest (run the study with build/bin/pipeline first)");
   std::vector<ManifestLine> lines;
-  std::map<std::string, int> line_of;  // run -> the line that lists it
+  std::map<std::string, int> line_of;  // variant and run -> the line that lists it
   std::string line;
   for (int no = 1; std::getline(in, line); ++no) {
     if (line.empty() || line[0] == '#') continue;
@@ -26,8 +26,11 @@ std::vector<ManifestLine> read_manifest(const std::string& dir) {
     while (std::getline(ss, cell, '\t')) f.push_back(cell);
     const std::string at = file.string() + ": line " + std::to_string(no);
     if (f.size() < 8) throw std::runtime_error(at + ": " + std::to_string(f.size()) + " fields, 8 expected");
-    if (const auto [it, fresh] = line_of.emplace(f[3], no); !fresh)  // a sample would be counted twice
-      throw std::runtime_error(at + ": the run '" + f[3] + "' again (line " + std::to_string(it->second) + " lists it)");
+    // A run listed twice for one variant would count a sample twice; a preparation several variants
+    // share is listed once under each of them.
+    if (const auto [it, fresh] = line_of.emplace(f[0] + '\t' + f[3], no); !fresh)
+      throw std::runtime_error(at + ": the run '" + f[3] + "' again" + (f[0] == "-" ? "" : " for variant '" + f[0] + "'") +
+                               " (line " + std::to_string(it->second) + " lists it)");
     lines.push_back({f[0], f[1], f[2], f[3], f[4], f[5], f[7], f[6] == "1", f.size() > 8 && !f[8].empty() ? f[8] : "-"});
   }
   return lines;

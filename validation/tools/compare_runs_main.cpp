@@ -1,5 +1,6 @@
 // compare-runs: the tables of a study of variants, from the pipeline's manifest (DIR/runs.tsv).
-//   compare-runs convergence RESULTS_DIR OUT_DIR [--reference NAME]
+//   compare-runs convergence RESULTS_DIR OUT_DIR [--reference NAME] [--threads N] [--validation FILE]
+//   compare-runs convergence --summary SUMMARY_JSON OUT_DIR [--reference NAME] [--validation FILE]
 //   compare-runs stability RESULTS_DIR OUT_DIR [--report-only]
 //   compare-runs decisions RESULTS_DIR OUT_DIR [--reference NAME] [--references FILE] [--ensemble PAPER_RESULTS]
 //                          [--baseline-results DIR]
@@ -48,10 +49,27 @@ int tool_main(int argc, char** argv) {
   Folders convergence_f, stability_f, decisions_f, critical_f;
   std::string reference = "reference", baseline = "baseline", references = "reference_data/paper.yaml", ensemble, baseline_results;
   bool report_only = false;
-  CLI::App* convergence = study_mode(app, "convergence",
-                                     "errors of every variant against the reference, with its wall time: errors.dat, front.dat, table.md",
-                                     convergence_f);
-  convergence->add_option("--reference", reference, "the variant the others are compared with")->capture_default_str();
+  // Not study_mode(): with --summary the one folder given is OUT_DIR (checked after parsing).
+  std::string convergence_summary, validation_json;
+  int threads_per_run = 1;
+  CLI::App* convergence = app.add_subcommand(
+      "convergence", "the error budget of the reference's settings in time step, rate and size, every setting's error against the "
+                     "converged values with its cost: summary.json (from results), table.md, errors.dat, front.dat");
+  convergence->add_option("RESULTS_DIR", convergence_f.results,
+                          "the study's results folder (its runs.tsv, written by build/bin/pipeline); left out with --summary");
+  convergence->add_option("OUT_DIR", convergence_f.out, "where the tables and the figure's data go (made if missing)");
+  convergence->add_option("--reference", reference, "the variant at the paper's settings")->capture_default_str();
+  convergence->add_option("--threads", threads_per_run, "threads each run used (core-seconds = wall time x threads)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1024));
+  convergence->add_option("--validation", validation_json,
+                          "the paper study's validation.json: each inconsistent row's miss against the budget")
+      ->check(CLI::ExistingFile);
+  convergence
+      ->add_option("--summary", convergence_summary,
+                   "re-draw the section from this summary.json (written beside table.md from the results), without the results "
+                   "(compare-runs convergence --summary FILE OUT_DIR)")
+      ->check(CLI::ExistingFile);
 
   CLI::App* stability = study_mode(app, "stability", "what became of each case: table.md (exit 1 if a case is not acceptable)", stability_f);
   stability->add_flag("--report-only", report_only, "mark a case that is not acceptable in the table, and exit 0");
@@ -131,7 +149,20 @@ int tool_main(int argc, char** argv) {
       return 2;
     }
   }
+  if (*convergence) {
+    const bool both = !convergence_f.out.empty(), none = convergence_f.results.empty();
+    const char* error = !convergence_summary.empty() ? (both ? "--summary takes OUT_DIR alone (no RESULTS_DIR)" : none ? "--summary needs OUT_DIR" : nullptr)
+                                                     : (!both ? "convergence needs RESULTS_DIR and OUT_DIR (or --summary FILE OUT_DIR)" : nullptr);
+    if (error) {
+      std::fprintf(stderr, "compare-runs: %s\nRun with --help for more information.\n", error);
+      return 2;
+    }
+  }
   try {
+    if (*convergence && !convergence_summary.empty()) {
+      std::filesystem::create_directories(convergence_f.results);
+      return compare_runs::convergence_from_summary(convergence_summary, convergence_f.results, reference, validation_json);
+    }
     if (*liquefaction) return compare_runs::liquefaction(liquefaction_out, liquefaction_folders);
     if (*decisions && !from_json.empty()) return compare_runs::decisions_from_json(from_json, decisions_f.results, references);
     const Folders& f = *convergence ? convergence_f : *stability ? stability_f : *decisions ? decisions_f : critical_f;
@@ -143,7 +174,7 @@ int tool_main(int argc, char** argv) {
       return 2;
     }
     std::filesystem::create_directories(f.out);
-    if (*convergence) return compare_runs::convergence(manifest, f.results, f.out, reference);
+    if (*convergence) return compare_runs::convergence(manifest, f.results, f.out, reference, threads_per_run, validation_json);
     if (*stability) return compare_runs::stability(manifest, f.results, f.out, report_only);
     if (*decisions) return compare_runs::decisions(manifest, f.results, f.out, references, baseline, ensemble, baseline_results);
     if (*critical) {

@@ -5,7 +5,7 @@
 // compare-runs). The figure notes are reports/templates/figure_notes.tsv, filled from the data the
 // figures plot and the verdicts of the validation rows about them.
 //   report --results DIR --references FILE --out REPORT_DIR [--profile NAME] [--sample NAME]
-//          [--templates DIR] [--baseline FILE] [--convergence DIR] [--decisions DIR] [--stability DIR]
+//          [--templates DIR] [--baseline FILE] [--decisions DIR] [--stability DIR]
 //          [--source TEXT] [--note TEXT] [--previous FILE]
 // REPORT_DIR holds what the other tools wrote (validation.md, verdicts.md, figures/, samples.md,
 // decisions/, convergence/, stability/, critical_state/, liquefaction/, bench.md); a part that is
@@ -68,7 +68,6 @@ int tool_main(int argc, char** argv) {
   option("--sample", "the sample whose runs the single-run figures show (e.g. seed1)");
   option("--templates", "the folder of index.md and figure_notes.tsv")->capture_default_str();
   option("--baseline", "an earlier baseline's validation.json, compared row by row");
-  option("--convergence", "the convergence study's results folder (its settings for the text)");
   option("--decisions", "the decisions study's results folder (its settings for the text)");
   option("--stability", "the stability study's results folder (its settings for the text)");
   option("--source", "what the report was made from (e.g. the commit)");
@@ -103,7 +102,7 @@ int tool_main(int argc, char** argv) {
   try {
     fs::create_directories(out);
     const fs::path report = out;
-    const validation::ReportSources src{results, out, opt["--templates"], opt["--baseline"], opt["--convergence"],
+    const validation::ReportSources src{results, out, opt["--templates"], opt["--baseline"],
                                         opt["--decisions"], opt["--stability"], opt["--source"], opt["--note"]};
     validation::ReportInputs in;
     in.paper = validation::load_references(opt["--references"], "paper");
@@ -121,7 +120,7 @@ int tool_main(int argc, char** argv) {
     const auto energy_series = validation::add_runs(v, in.samples, densities);
     validation::add_settings(v, results, have_results);
     validation::add_tables(v, report, in.paper, opt["--decisions"]);
-    validation::add_study_settings(v, opt["--convergence"], opt["--stability"]);
+    validation::add_study_settings(v, opt["--stability"]);
     validation::add_baseline(v, opt["--baseline"], in.rows, in.samples);
     const std::string notes = validation::read_text(fs::path(opt["--templates"]) / "figure_notes.tsv");
     if (notes.empty()) throw std::runtime_error(opt["--templates"] + "/figure_notes.tsv is missing or empty");

@@ -650,7 +650,7 @@ TEST_CASE("report: the convergence and stability sections print no placeholder w
   REQUIRE(to != std::string::npos);
   const std::string sections = tmpl.substr(from, to - from);
   Values v;
-  add_study_settings(v, "", "");
+  add_study_settings(v, "");
   v["file.convergence"] = "CONVERGENCE TABLE\n";
   v["file.stability"] = "STABILITY TABLE\n";
   v["convergence_plot"] = "";
@@ -660,6 +660,6 @@ TEST_CASE("report: the convergence and stability sections print no placeholder w
   CHECK(text.find("?") == std::string::npos);
   CHECK(text.find("are not here") != std::string::npos);
   // Said to have the results but given none of their settings: the fill names the missing key.
-  v["have_convergence"] = "yes";
-  CHECK_THROWS_WITH(fill(sections, v), Catch::Contains("{{convergence."));
+  v["have_stability"] = "yes";
+  CHECK_THROWS_WITH(fill(sections, v), Catch::Contains("{{stability."));
 }

@@ -1,0 +1,151 @@
+// The convergence study's error budget on values made from known laws: a quantity that depends on
+// the time step as c h^2, on the rate as a line, on the size as 1/N. Each factor's error and the
+// converged value are worked out by hand from the law; the intervals from the samples' scatter.
+// Then compare-runs convergence --summary on a summary.json made from the same laws: the table
+// prints the converged value the law gives.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+
+#include "sections/convergence_budget.hpp"
+#include "study/ensemble.hpp"
+
+namespace fs = std::filesystem;
+using namespace validation;
+
+TEST_CASE("time step: Richardson's extrapolation recovers a second-order error", "[convergence]") {
+  // Q_s(h) = q_s + c_s h^2 with h in us: the error at h0 = 1 is c_s exactly, whatever q_s.
+  const std::map<int, double> q = {{1, 0.70}, {2, 0.72}, {3, 0.71}}, c = {{1, 0.010}, {2, 0.012}, {3, 0.011}};
+  PerSeed h1, h2, h4;
+  for (const auto& [s, qs] : q) {
+    h1[s] = qs + c.at(s) * 1.0;
+    h2[s] = qs + c.at(s) * 0.25;
+    h4[s] = qs + c.at(s) * 0.0625;
+  }
+  const FactorError f = time_step_error(h1, h2, h4, 2);
+  CHECK(f.extrapolated);
+  CHECK(f.error.value == Approx(0.011).epsilon(1e-9));  // mean of c_s
+  // sd of {0.010, 0.012, 0.011} = 0.001; half-width t(0.975, 2) 0.001 / sqrt(3)
+  CHECK(f.error.half_width == Approx(4.302652729 * 0.001 / std::sqrt(3.0)).epsilon(1e-6));
+  CHECK(f.how.find("observed 2.0") != std::string::npos);  // (c - c/4) / (c/4 - c/16) = 4 = 2^2
+}
+
+TEST_CASE("time step: a sequence that is not monotone is not extrapolated", "[convergence]") {
+  const FactorError f = time_step_error({{1, 1.00}, {2, 2.00}}, {{1, 1.10}, {2, 2.10}}, {{1, 1.02}, {2, 2.02}}, 2);
+  CHECK_FALSE(f.extrapolated);
+  CHECK(f.error.value == Approx(-0.02));  // Q(h0) - Q(h0/4)
+  CHECK(f.how.find("not monotone") != std::string::npos);
+  // A sample missing from one step is left out; none left: no estimate.
+  CHECK(std::isnan(time_step_error({{1, 1.0}}, {{2, 1.0}}, {{1, 1.0}}).error.value));
+}
+
+TEST_CASE("rate: the line to rate 0 over the paper's rate and slower ones", "[convergence]") {
+  // Q_s(r) = a_s + b r over r <= 2 MPa/s; the value at 4 MPa/s is off the line and must not count.
+  const double b = 0.05;
+  std::map<double, PerSeed> by_rate;
+  for (double r : {0.5, 1.0, 2.0})
+    for (int s : {1, 2, 3}) by_rate[r][s] = 0.3 + 0.01 * s + b * r;
+  for (int s : {1, 2, 3}) by_rate[4.0][s] = 9.9;
+  const FactorError f = rate_error(by_rate, 2.0);
+  CHECK(f.error.value == Approx(b * 2.0).epsilon(1e-9));
+  // Every sample gives the same error (sd 0): the half-width is the distance to the same
+  // extrapolation in sqrt(r), worked out here by least squares on (sqrt r, Q).
+  const double x[3] = {std::sqrt(0.5), 1.0, std::sqrt(2.0)}, y[3] = {b * 0.5, b * 1.0, b * 2.0};
+  const double mx = (x[0] + x[1] + x[2]) / 3, my = (y[0] + y[1] + y[2]) / 3;
+  double sxy = 0, sxx = 0;
+  for (int k = 0; k < 3; ++k) sxy += (x[k] - mx) * (y[k] - my), sxx += (x[k] - mx) * (x[k] - mx);
+  const double intercept = my - sxy / sxx * mx;
+  CHECK(f.error.half_width == Approx(std::abs((b * 2.0 - intercept) - b * 2.0)).epsilon(1e-6));
+  CHECK(std::isnan(rate_error({{2.0, {{1, 1.0}}}}, 2.0).error.value));  // one rate: no line
+}
+
+TEST_CASE("size: the two sizes' means taken to 1/N -> 0", "[convergence]") {
+  // Q(N) = Q* + k/N: m0 - m1 = k (1/N0 - 1/N1), and the error at N0 is k/N0 = (m0 - m1) / (1 - N0/N1).
+  const FactorError f = size_error({{1, 1.0}, {2, 1.1}, {3, 0.9}}, 8000, {{1, 0.9}, {2, 1.0}, {3, 0.8}}, 27000);
+  CHECK(f.error.value == Approx(0.1 * 27.0 / 19.0).epsilon(1e-9));
+  // Welch: se = sqrt(0.1^2/3 + 0.1^2/3), t with 2 dof, scaled alike.
+  CHECK(f.error.half_width == Approx(4.302652729 * std::sqrt(0.02 / 3) * 27.0 / 19.0).epsilon(1e-6));
+  CHECK(std::isnan(size_error({{1, 1.0}}, 8000, {}, 27000).error.value));
+}
+
+TEST_CASE("the converged value: the factors' errors removed, intervals in quadrature", "[convergence]") {
+  const Estimate c = converged_value({1.0, 0.03}, {{0.1, 0.04}, "", true}, {{-0.2, 0.12}, "", true}, {{0, std::nan("")}, "", false});
+  CHECK(c.value == Approx(1.1));
+  CHECK(std::isnan(c.half_width));  // a factor without an interval leaves none
+  const Estimate d = converged_value({1.0, 0.03}, {{0.1, 0.04}, "", true}, {{-0.2, 0.12}, "", true}, {{std::nan(""), std::nan("")}, "", false});
+  CHECK(d.half_width == Approx(std::sqrt(0.03 * 0.03 + 0.04 * 0.04 + 0.12 * 0.12)));  // a factor not measured adds nothing
+  const Estimate e = relative_error_to({1.05, 0.03}, {1.0, 0.04});
+  CHECK(e.value == Approx(0.05));
+  CHECK(e.half_width == Approx(0.05));
+}
+
+namespace {
+
+const std::string bin = std::string(DEM_BINARY_DIR) + "/bin/compare-runs";
+
+std::string read(const fs::path& p) {
+  std::ifstream f(p);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+}  // namespace
+
+TEST_CASE("compare-runs convergence --summary: the section from a summary made by known laws", "[convergence][compare-runs]") {
+  // e0 of sample s: 0.7 + 0.001 s + 0.01 (dt/1us)^2 + 0.02 (rate/2MPa/s) + 80/N. At the paper's
+  // settings (1 us, 2 MPa/s, 8000) the factors' errors are 0.01 (Richardson), 0.02 (line to 0) and
+  // 0.01 (80/8000), so the converged value is 0.7 + 0.002 (the seeds' mean offset) = 0.702.
+  const fs::path dir = fs::temp_directory_path() / ("convergence_summary_test_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ostringstream runs;
+  const auto add = [&](const std::string& variant, double dt_us, double rate, long n) {
+    for (int s = 1; s <= 3; ++s) {
+      const double e0 = 0.7 + 0.001 * s + 0.01 * dt_us * dt_us + 0.02 * rate / 2e6 + 80.0 / n;
+      runs << (runs.tellp() > 0 ? ",\n" : "") << R"({"variant": ")" << variant << R"(", "density": "loose", "seed": )" << s
+           << R"(, "time_step_s": )" << dt_us * 1e-6 << R"(, "rate_Pa_s": )" << rate << R"(, "spheres": )" << n
+           << R"(, "core_s": )" << 100 * n / 8000.0 / dt_us * (2e6 / rate) << R"(, "status": "", "engine": "E", "quantities": {"e0": )" << e0 << "}}";
+    }
+  };
+  add("reference", 1, 2e6, 8000);
+  add("dt0p5", 0.5, 2e6, 8000);
+  add("dt0p25", 0.25, 2e6, 8000);
+  add("rate1", 1, 1e6, 8000);
+  add("rate0p5", 1, 5e5, 8000);
+  add("n27k", 1, 2e6, 27000);
+  std::ofstream(dir / "summary.json") << R"({"schema": 1, "results": "r", "engine": "E", "baseline": "B", "date": "D", )"
+                                      << R"("threads_per_run": 1, "runs": [)" << runs.str() << "]}";
+  const std::string cmd = bin + " convergence --summary " + (dir / "summary.json").string() + " " + dir.string() + " > " +
+                          (dir / "log").string() + " 2>&1";
+  REQUIRE(std::system(cmd.c_str()) == 0);
+  const std::string table = read(dir / "table.md");
+  INFO(table);
+  CHECK(table.find("engine `E`, baseline `B`") != std::string::npos);  // the stamp
+  // e0's row: the paper's settings' mean 0.7 + 0.002 + 0.04 (half-width t(0.975, 2) 0.001 / sqrt 3),
+  // converged 0.702 (4 significant digits).
+  CHECK(table.find("| e0 | 0.742 ± 0.002484 |") != std::string::npos);
+  CHECK(table.find("| 0.702 ± ") != std::string::npos);
+  // Each factor's error in % of the converged value: 0.01/0.702, 0.02/0.702, 0.01/0.702. The time
+  // step's is the same on every sample (half-width 0); the rate's half-width is the distance to the
+  // line in sqrt(rate) through the same three points, 0.010607 (1.51 %); the size's is Welch's on
+  // two sds of 0.001, t(0.975, 2) sqrt(2e-6/3) 27/19 = 0.00499 (0.71 %).
+  CHECK(table.find("+1.42 ± 0.000 % | +2.85 ± 1.51 % | +1.42 ± 0.71 %") != std::string::npos);
+  CHECK(table.find("Richardson, order 2 (observed 2.0)") != std::string::npos);
+
+  // A file that is not a summary: exit 1, the message names the file and the key.
+  std::ofstream(dir / "bad.json") << R"({"schema": 1, "results": "r"})";
+  const std::string bad = bin + " convergence --summary " + (dir / "bad.json").string() + " " + dir.string() + " > " +
+                          (dir / "log").string() + " 2>&1";
+  CHECK(std::system(bad.c_str()) != 0);
+  const std::string log = read(dir / "log");
+  CHECK(log.find("bad.json") != std::string::npos);
+  CHECK(log.find("'engine'") != std::string::npos);
+  fs::remove_all(dir);
+}
