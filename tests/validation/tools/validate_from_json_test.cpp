@@ -37,13 +37,16 @@ std::string after_first_line(const std::string& text) {
 
 std::string first_line(const std::string& text) { return text.substr(0, text.find('\n')); }
 
-// The cells of each line of a Markdown table in `text` (lines starting with '|'), "\|" kept as is
-// (the limit counts the Markdown).
+// The cells of each line of the first Markdown table in `text` (its lines start with '|'), "\|"
+// kept as is (the limit counts the Markdown).
 std::vector<std::vector<std::string>> table_cells(const std::string& text) {
   std::vector<std::vector<std::string>> out;
   std::istringstream in(text);
   for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] != '|') continue;
+    if (line.empty() || line[0] != '|') {
+      if (!out.empty()) break;
+      continue;
+    }
     std::vector<std::string> cells;
     std::string c;
     for (std::size_t i = 1; i < line.size(); ++i) {
