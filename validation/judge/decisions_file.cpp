@@ -143,7 +143,7 @@ std::string cause_line(const std::vector<DecisionsFile>& files, const std::strin
              " explains it";
       if (side_effects) {
         const std::size_t broken = side_effects(f, reading).size();
-        line += broken == 0 ? ", breaks none" : ", breaks " + std::to_string(broken) + " row" + (broken == 1 ? "" : "s");
+        line += broken == 0 ? ", breaks no other row" : ", breaks " + std::to_string(broken) + " other row" + (broken == 1 ? "" : "s");
       }
     } else if (e.rfind("no reading does: within scatter", 0) == 0) {
       line = "within scatter; no reading explains it";

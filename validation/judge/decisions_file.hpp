@@ -73,8 +73,9 @@ using TurnsInconsistent = std::function<std::vector<std::string>(const Decisions
 std::string cause_text(const std::vector<DecisionsFile>& files, const std::string& row, const TurnsInconsistent& side_effects = {});
 
 // The cause in one line (the compact verdict table's cell; causes.md has cause_text()): what the
-// finding cause_text() puts first says, in short: "<reading> explains it, breaks N rows" (N from
-// `side_effects`; "breaks none"), "within scatter; no reading explains it", "no reading explains
+// finding cause_text() puts first says, in short: "<reading> explains it, breaks N other rows" (the
+// consistent rows it turns inconsistent, from `side_effects`; "breaks no other row"), "within
+// scatter; no reading explains it", "no reading explains
 // it", "not judged by the decisions study", "consistent in the decisions study", or "no decisions
 // study judged it". At most `limit` code points (cut with "…" beyond).
 std::string cause_line(const std::vector<DecisionsFile>& files, const std::string& row, const TurnsInconsistent& side_effects = {},

@@ -194,6 +194,40 @@ std::vector<Judged> judge_record(const Options& o, const validation::RecordedVal
   return judged;
 }
 
+// validation.json: the options, the rules, the samples and what is missing (a record's as it
+// recorded them), every row (json_row) and the counts.
+nlohmann::ordered_json validation_json(const Options& o, const std::string& label, const std::vector<Judged>& judged,
+                                       const validation::VerdictCounts& count, const std::vector<std::string>& samples,
+                                       const std::vector<std::string>& missing, const std::vector<std::string>& missing_samples,
+                                       bool from_results) {
+  nlohmann::ordered_json json;
+  json["profile"] = o.profile;
+  json["references"] = o.references;
+  json["judged_from"] = !from_results ? nlohmann::ordered_json{{"validation_json", o.from_json}} : nlohmann::ordered_json{{"results", o.results}};
+  json["rules"] = {
+      {"interval", "consistent: the " + label + "'s value, widened by the row's tolerance, overlaps the " +
+                       validation::number(100 * validation::prediction_level) + " % prediction interval of one sample (mean -/+ t(" +
+                       validation::number(0.5 + validation::prediction_level / 2) + ", n-1) sd sqrt(1 + 1/n))"},
+      {"majority", "consistent: the " + label + "'s statement holds in more than half of the samples"},
+      {"every", "consistent: the " + label + "'s statement holds in every sample with a value, one or more (a case without scatter)"},
+      {"both", "interval and majority: not judged with fewer than 2 samples with a value"}};
+  json["samples"] = samples;
+  json["missing_samples"] = missing_samples;
+  json["missing_results"] = nlohmann::json::array();
+  for (const std::string& m : missing)  // lexical: a link loop cannot throw; a record's are relative already
+    json["missing_results"].push_back(from_results ? fs::path(m).lexically_relative(o.results).string() : m);
+  json["rows"] = nlohmann::json::array();
+  for (const Judged& j : judged) json["rows"].push_back(validation::json_row(j));
+  json["consistent"] = count.of(Verdict::Consistent);
+  json["inconsistent"] = count.of(Verdict::Inconsistent);
+  json["not_judged"] = count.of(Verdict::NotJudged);
+  json["total"] = judged.size();
+  json["must_pass_inconsistent"] = count.must_pass_failed;
+  // Everything asked for done and judged (the exit status 0).
+  json["complete"] = missing.empty() && missing_samples.empty() && count.of(Verdict::NotJudged) == 0;
+  return json;
+}
+
 }  // namespace
 
 // The tool; main runs it under guarded_main (a file system error names its path, exit 1).
@@ -274,31 +308,7 @@ int tool_main(int argc, char** argv) {
     samples = record->samples;
   }
 
-  nlohmann::ordered_json json;
-  json["profile"] = o.profile;
-  json["references"] = o.references;
-  json["judged_from"] = record ? nlohmann::ordered_json{{"validation_json", o.from_json}} : nlohmann::ordered_json{{"results", o.results}};
-  json["rules"] = {
-      {"interval", "consistent: the " + refs.label + "'s value, widened by the row's tolerance, overlaps the " +
-                       validation::number(100 * validation::prediction_level) + " % prediction interval of one sample (mean -/+ t(" +
-                       validation::number(0.5 + validation::prediction_level / 2) + ", n-1) sd sqrt(1 + 1/n))"},
-      {"majority", "consistent: the " + refs.label + "'s statement holds in more than half of the samples"},
-      {"every", "consistent: the " + refs.label + "'s statement holds in every sample with a value, one or more (a case without scatter)"},
-      {"both", "interval and majority: not judged with fewer than 2 samples with a value"}};
-  json["samples"] = samples;
-  json["missing_samples"] = missing_samples;
-  json["missing_results"] = nlohmann::json::array();
-  for (const std::string& m : missing)  // lexical: a link loop cannot throw; a record's are relative already
-    json["missing_results"].push_back(results ? fs::path(m).lexically_relative(o.results).string() : m);
-  json["rows"] = nlohmann::json::array();
-  for (const Judged& j : judged) json["rows"].push_back(validation::json_row(j));
-  json["consistent"] = consistent;
-  json["inconsistent"] = inconsistent;
-  json["not_judged"] = not_judged;
-  json["total"] = judged.size();
-  json["must_pass_inconsistent"] = count.must_pass_failed;
-  // Everything asked for done and judged (the exit status 0).
-  json["complete"] = missing.empty() && missing_samples.empty() && not_judged == 0;
+  const nlohmann::ordered_json json = validation_json(o, refs.label, judged, count, samples, missing, missing_samples, results.has_value());
   validation::VerdictsContext context;
   context.label = refs.label;
   context.provenance = record ? "Judged again by `validate --from-json` from the per-sample values recorded in `" + o.from_json +
