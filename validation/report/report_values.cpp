@@ -321,7 +321,7 @@ void add_setup(Values& v, const fs::path& report, bool have_results) {
     const auto& samples = record.at("samples");
     std::string names = samples.empty() ? "" : samples.front().get<std::string>();
     if (samples.size() > 1) names += "–" + samples.back().get<std::string>();
-    md.row({"samples", std::to_string(samples.size()) + " per density (" + joined(densities, ", ") + "), " + names});
+    md.row({"samples", std::to_string(samples.size()) + " per density (" + joined(densities, ", ") + ")" + (names.empty() ? "" : ", " + names)});
   }
   const std::string particles = setting("particles", "particles");
   if (!particles.empty() && particles != "0") md.row({"spheres per sample", thousands(particles)});

@@ -137,6 +137,10 @@ TEST_CASE("report: the committed report written again from what is committed, it
     const std::string n = (*it)[1].str().substr(6);
     CHECK(text.find("\n### Cause " + n + "\n") > text.find("## Appendix: causes of the verdicts"));
   }
+  // The set-up from what is committed: validation.json's samples (seed1..5, the three densities of
+  // its rows) and figure-data's record of the settings, values.gp (samples.md: 8000 particles a sample).
+  CHECK_THAT(text, Catch::Contains("| samples | 5 per density (loose, medium, dense), seed1–seed5 |"));
+  CHECK_THAT(text, Catch::Contains("| spheres per sample | 8,000 |"));
   // No section of the earlier report lost, none printed twice; no placeholder.
   const std::set<std::string> before = section_names(dem::test::read_bytes(previous)), now = section_names(text);
   for (const std::string& s : before) {
