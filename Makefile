@@ -205,13 +205,14 @@ quick: build
 # reports/render_html.sh renders it into reports/index.html (cmark-gfm), the page a referee opens;
 # BASELINE is an earlier baseline's validation.json it compares every row with.
 BASELINE ?= reports/baselines/orthorhombic_validation.json
+# The decisions files validate takes the rows' causes from: the decisions study's and the readings'.
+VALIDATION_DECISIONS = --decisions reports/decisions/decisions.json $$(for r in $(READINGS); do \
+	    f=reports/readings/$$r/decisions.json; [ ! -f $$f ] || echo --decisions $$f; done)
 REPORT_SOURCE = --source "commit $$(git rev-parse --short=12 HEAD 2>/dev/null || echo unknown)$$(git diff --quiet HEAD -- . ':!reports' 2>/dev/null || echo ' (with uncommitted changes)')"
 report: tools
 	-$(MAKE) --no-print-directory decisions-report
 	-$(MAKE) --no-print-directory readings-report
-	-$(BUILD)/bin/validate --results $(RESULTS) --references reference_data/paper.yaml --out reports \
-	  --decisions reports/decisions/decisions.json $$(for r in $(READINGS); do \
-	    f=reports/readings/$$r/decisions.json; [ ! -f $$f ] || echo --decisions $$f; done)
+	-$(BUILD)/bin/validate --results $(RESULTS) --references reference_data/paper.yaml --out reports $(VALIDATION_DECISIONS)
 	$(BUILD)/bin/ensemble-cycles $(RESULTS) reports/figures/ensemble
 	reports/make_figures.sh $(BUILD)/bin $(RESULTS) reports/figures $(strip $(SAMPLE))
 	-$(BUILD)/bin/figure-data samples-table $(RESULTS) --references reference_data/paper.yaml --per-sample > reports/samples.md
@@ -242,7 +243,8 @@ literature-report: tools
 	else echo "literature: no results in $(FCC_RESULTS) yet (make literature)"; fi
 
 # The report from the studies that are here, every other section kept from the report before
-# (`report --previous`; its header names those sections): after running one study (make
+# (`report --previous`; its header names those sections; the verdicts judged again from the
+# committed reports/validation.json when the paper study's results are not here): after running one study (make
 # critical-state, make literature, ...) on a machine without the paper study's results.
 report-sections: tools
 	-$(MAKE) --no-print-directory decisions-report
@@ -250,6 +252,9 @@ report-sections: tools
 	-reports/critical_state/make_section.sh $(BUILD)/bin $(CRITICAL_STATE) reports/critical_state $(CRITICAL_STATE_ENSEMBLE) $(CRITICAL_STATE_RATES)
 	-reports/liquefaction/make_section.sh $(BUILD)/bin reports/liquefaction $(LIQUEFACTION)
 	-$(MAKE) --no-print-directory literature-report
+	@if [ -f $(RESULTS)/runs.tsv ]; then \
+	  $(BUILD)/bin/validate --results $(RESULTS) --references reference_data/paper.yaml --out reports $(VALIDATION_DECISIONS); \
+	else $(BUILD)/bin/validate --from-json reports/validation.json --references reference_data/paper.yaml --out reports $(VALIDATION_DECISIONS); fi || true
 	cp reports/index.md $(BUILD)/previous_index.md
 	$(BUILD)/bin/report --results $(RESULTS) --references reference_data/paper.yaml --out reports --sample $(strip $(SAMPLE)) \
 	  --baseline $(BASELINE) --decisions $(DECISIONS) --stability $(STABILITY) \

@@ -127,6 +127,49 @@ std::string cause_text(const std::vector<DecisionsFile>& files, const std::strin
   return files.size() > 1 ? size_label(*picked.front()) + ": " + text : text;
 }
 
+std::string cause_line(const std::vector<DecisionsFile>& files, const std::string& row, const TurnsInconsistent& side_effects,
+                       std::size_t limit) {
+  const std::vector<const DecisionsFile*> picked = findings_for(files, row);
+  std::string line;
+  if (picked.empty()) {
+    line = "no decisions study judged it";
+  } else {
+    const DecisionsFile& f = *picked.front();
+    const DecisionsFile::Finding& finding = f.rows.at(row);
+    const std::string& e = finding.explanation;
+    if (!finding.explained_by.empty()) {
+      const std::string& reading = finding.explained_by.front();
+      line = reading + (finding.explained_by.size() > 1 ? " (+" + std::to_string(finding.explained_by.size() - 1) + ")" : "") +
+             " explains it";
+      if (side_effects) {
+        const std::size_t broken = side_effects(f, reading).size();
+        line += broken == 0 ? ", breaks no other row" : ", breaks " + std::to_string(broken) + " other row" + (broken == 1 ? "" : "s");
+      }
+    } else if (e.rfind("no reading does: within scatter", 0) == 0) {
+      line = "within scatter; no reading explains it";
+    } else if (e.rfind("unexplained", 0) == 0) {
+      line = "no reading explains it";
+    } else if (e.rfind("not judged", 0) == 0) {
+      line = "not judged by the decisions study";
+    } else if (e.rfind("consistent on", 0) == 0) {
+      line = "consistent in the decisions study";
+    } else {
+      line = "see the cause in full";
+    }
+  }
+  // Cut at a code point (a byte that does not continue one, 10xxxxxx, starts one).
+  const auto starts = [&](std::size_t i) { return (static_cast<unsigned char>(line[i]) & 0xC0) != 0x80; };
+  std::size_t points = 0;
+  for (std::size_t i = 0; i < line.size(); ++i) points += starts(i);
+  if (points > limit && limit > 0) {
+    std::size_t kept = 0, at = 0;  // keep limit - 1 code points, then "…"
+    for (; at < line.size(); ++at)
+      if (starts(at) && kept++ == limit - 1) break;
+    line = line.substr(0, at) + "…";
+  }
+  return line;
+}
+
 std::string restate_shifts(const std::string& explanation, const nlohmann::json& row, double resolution) {
   // "<reading> (<anything but parentheses><number>[ (beyond ±10)] sd": the forms explain() wrote.
   static const std::regex shift(R"(([A-Za-z0-9_.+-]+) \(([^()]*?)([-+]?[0-9]+(?:\.[0-9]+)?(?:e[-+]?[0-9]+)?)(?: \(beyond ±10\))? sd)");

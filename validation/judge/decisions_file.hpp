@@ -72,6 +72,15 @@ using TurnsInconsistent = std::function<std::vector<std::string>(const Decisions
 // consistent rows inconsistent: ..."). No file, or none with the row: that no study has judged it.
 std::string cause_text(const std::vector<DecisionsFile>& files, const std::string& row, const TurnsInconsistent& side_effects = {});
 
+// The cause in one line (the compact verdict table's cell; causes.md has cause_text()): what the
+// finding cause_text() puts first says, in short: "<reading> explains it, breaks N other rows" (the
+// consistent rows it turns inconsistent, from `side_effects`; "breaks no other row"), "within
+// scatter; no reading explains it", "no reading explains
+// it", "not judged by the decisions study", "consistent in the decisions study", or "no decisions
+// study judged it". At most `limit` code points (cut with "…" beyond).
+std::string cause_line(const std::vector<DecisionsFile>& files, const std::string& row, const TurnsInconsistent& side_effects = {},
+                       std::size_t limit = 58);
+
 // `explanation` with each shift "<reading> (... X sd" re-stated from the row's own numbers in
 // decisions.json, (mean - baseline_mean) / max(baseline_sd, resolution), in shift_phrase()'s
 // words ("beyond +10 sd (+57)"); a reading whose numbers are not there keeps its value, rephrased.

@@ -29,10 +29,24 @@ std::string fill(const std::string& tmpl, const Values& values);
 // say): `report --previous FILE` then takes that section from FILE, an earlier report, instead.
 inline constexpr const char* inputs_not_here = "<!-- inputs not here -->";
 
+// What a template writes in place of one paragraph whose inputs are not here (a figure's note, the
+// readings the runs used), in a section that is otherwise written from what is here: `report
+// --previous` then takes that paragraph from the earlier report. "starting": the paragraph of the
+// earlier report whose first line starts with `text`; "after": the paragraph that follows the
+// line `text` (a figure's image line: its note).
+std::string paragraph_not_here(const std::string& mode, const std::string& text);
+
+// A section's name as keep_sections_without_inputs matches it: its heading without the "#"s and
+// without an "Appendix: " prefix ("## Appendix: What was run" -> "What was run"), so that a section
+// moved into the appendix still finds itself in an earlier report.
+std::string section_name(const std::string& heading_line);
+
 // `fresh` (a report just written) with every level-2 section ("## heading" up to the next) that
-// holds inputs_not_here replaced by `previous`'s section of the same heading, if it has one. The
-// headings taken from `previous` are appended to `kept`. The text before the first heading is
-// `fresh`'s.
+// holds inputs_not_here replaced by the body of `previous`'s section of the same name
+// (section_name), under `fresh`'s heading, if it has one; then every paragraph_not_here marker
+// replaced by that paragraph of `previous` (a marker whose paragraph `previous` lacks is dropped).
+// The names of the sections taken from `previous` are appended to `kept`, and, for each paragraph,
+// "¶ " and its text (`starting`) or line (`after`). The text before the first heading is `fresh`'s.
 std::string keep_sections_without_inputs(const std::string& fresh, const std::string& previous, std::vector<std::string>& kept);
 
 

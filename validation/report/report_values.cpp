@@ -92,15 +92,42 @@ std::string recorded_size(const fs::path& json, const std::vector<Row>& paper) {
   return "";
 }
 
+// The size check of a readings study's table.md ("### Size check..." to the next "### " or the
+// end), taken out of `table`: {heading line, text before its table, its table's lines}.
+struct SizeCheck {
+  std::string heading, intro;
+  std::vector<std::string> header, rows;
+};
+SizeCheck take_size_check(std::string& table) {
+  SizeCheck c;
+  const std::size_t at = table.find("### Size check");
+  if (at == std::string::npos || (at > 0 && table[at - 1] != '\n')) return c;
+  std::size_t end = table.find("\n### ", at);
+  end = end == std::string::npos ? table.size() : end + 1;
+  std::istringstream in(table.substr(at, end - at));
+  table.erase(at, end - at);
+  std::getline(in, c.heading);
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("|", 0) == 0) (c.header.size() < 2 ? c.header : c.rows).push_back(line);
+    else if (c.header.empty()) c.intro += line + "\n";
+  }
+  return c;
+}
+
 // The readings measured again at the paper's size (make readings-report): reports/readings/<name>/,
-// each under a heading with its size, its own headings one level down.
+// each under a heading with its size, its own headings one level down; their size checks (each
+// study's baseline against the paper study's ensemble, rows the studies share alike) once, after
+// them: every row once, with the studies whose baseline has it (a row two baselines give
+// differently: a line for each).
 std::string readings_text(const fs::path& report, const std::vector<Row>& paper) {
   std::error_code ec;
   std::vector<std::string> names;
   for (const auto& e : fs::directory_iterator(report / "readings", ec))
     if (fs::exists(e.path() / "table.md", ec)) names.push_back(e.path().filename().string());
   std::sort(names.begin(), names.end());
-  std::string readings;
+  std::string readings, check_heading, check_intro;
+  std::vector<std::string> check_header;
+  std::vector<std::pair<std::string, std::vector<std::string>>> check_rows;  // a table line, its studies
   for (const std::string& name : names) {
     const std::string size = recorded_size(report / "readings" / name / "decisions.json", paper);
     // A study named by its densities (readings_medium_dense) is "of the medium and dense
@@ -109,10 +136,42 @@ std::string readings_text(const fs::path& report, const std::vector<Row>& paper)
     const std::string title = by_density ? "Readings of the " + std::regex_replace(name, std::regex("_"), " and ") + " sample" +
                                                (name.find('_') != std::string::npos ? "s" : "")
                                          : "Readings: " + std::regex_replace(name, std::regex("_"), " ");
+    std::string table = section_table(report, "readings/" + name);
+    const SizeCheck c = take_size_check(table);
+    if (!c.heading.empty() && check_heading.empty()) check_heading = c.heading, check_intro = c.intro, check_header = c.header;
+    for (const std::string& line : c.rows) {
+      auto it = std::find_if(check_rows.begin(), check_rows.end(), [&](const auto& r) { return r.first == line; });
+      if (it == check_rows.end()) check_rows.push_back({line, {name}});
+      else it->second.push_back(name);
+    }
     readings += "### " + title + " (" + (size.empty() ? "size not recorded" : size) + ")\n\n" +
-                std::regex_replace(section_table(report, "readings/" + name), std::regex("(^|\n)### "), "$1#### ") + "\n";
+                std::regex_replace(table, std::regex("(^|\n)### "), "$1#### ") + "\n";
   }
-  return readings;
+  if (check_rows.empty() || check_header.size() < 2) return readings;
+  // The rows in the reference file's order.
+  const auto place = [&](const std::string& line) {
+    for (std::size_t i = 0; i < paper.size(); ++i)
+      if (line.rfind("| " + cell(paper[i].name) + " |", 0) == 0) return i;
+    return paper.size();
+  };
+  std::stable_sort(check_rows.begin(), check_rows.end(), [&](const auto& a, const auto& b) { return place(a.first) < place(b.first); });
+  readings += check_heading + "\n" + check_intro + "Each row once, with the readings studies whose baseline has it.\n\n" +
+              check_header[0] + " studies |\n" + check_header[1] + "---|\n";
+  for (const auto& [line, studies] : check_rows) readings += line + " " + joined(studies, ", ") + " |\n";
+  return readings + "\n";
+}
+
+// key = value lines of a gnuplot values.gp (figure-data's record of the study's settings); a key
+// given twice: its last value, as gnuplot reads it; quotes taken off.
+std::map<std::string, std::string> gnuplot_values(const fs::path& file) {
+  std::map<std::string, std::string> out;
+  std::istringstream in(read_text(file));
+  static const std::regex line_re(R"re(^([A-Za-z_][A-Za-z0-9_]*) = "?([^"]*)"?$)re");
+  for (std::string line; std::getline(in, line);) {
+    std::smatch m;
+    if (std::regex_match(line, m, line_re)) out[m[1].str()] = m[2].str();
+  }
+  return out;
 }
 
 }  // namespace
@@ -203,7 +262,9 @@ void add_settings(Values& v, const std::string& results, bool have_results) {
 
 void add_tables(Values& v, const fs::path& report, const std::vector<Row>& paper, const std::string& decisions_results) {
   const auto include = [&](const std::string& key, const fs::path& file) { v[key] = read_text(report / file); };
-  include("file.verdicts", "verdicts.md");
+  // The compact table links each cause to causes.md#cause-N; in the report, to its entry in the appendix.
+  v["file.verdicts"] = std::regex_replace(read_text(report / "verdicts.md"), std::regex(R"(\]\(causes\.md#)"), "](#");
+  include("file.causes", "causes.md");
   include("file.validation", "validation.md");
   include("file.samples", "samples.md");
   include("file.bench", "bench.md");
@@ -230,6 +291,57 @@ void add_tables(Values& v, const fs::path& report, const std::vector<Row>& paper
   }
   if (v["decisions.size"].empty()) v["decisions.size"] = "size not recorded";
   v["file.readings"] = readings_text(report, paper);
+}
+
+void add_setup(Values& v, const fs::path& report, bool have_results) {
+  // The study's settings: from its results' resolved scenes (add_settings), else from what
+  // figure-data recorded of them in reports/figures/values.gp; a setting neither gives is left out.
+  const std::map<std::string, std::string> gp = gnuplot_values(report / "figures" / "values.gp");
+  const auto setting = [&](const std::string& key, const std::string& gp_key) -> std::string {
+    if (have_results) {
+      const auto it = v.find("setting." + key);
+      return it == v.end() || it->second == "?" ? "" : it->second;
+    }
+    const auto it = gp.find(gp_key);
+    return it == gp.end() || it->second == "?" ? "" : it->second;
+  };
+  nlohmann::json record;
+  try {
+    if (fs::exists(report / "validation.json")) record = read_json_file((report / "validation.json").string());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "report: %s\n", e.what());
+  }
+  MarkdownTable md({"", "the study"});
+  if (record.is_object() && record.contains("samples") && record.contains("rows")) {
+    std::vector<std::string> densities;
+    for (const auto& r : record.at("rows")) {
+      const std::string d = r.value("density", "");
+      if (!d.empty() && std::find(densities.begin(), densities.end(), d) == densities.end()) densities.push_back(d);
+    }
+    const auto& samples = record.at("samples");
+    std::string names = samples.empty() ? "" : samples.front().get<std::string>();
+    if (samples.size() > 1) names += "–" + samples.back().get<std::string>();
+    md.row({"samples", std::to_string(samples.size()) + " per density (" + joined(densities, ", ") + ")" + (names.empty() ? "" : ", " + names)});
+  }
+  const std::string particles = setting("particles", "particles");
+  if (!particles.empty() && particles != "0") md.row({"spheres per sample", thousands(particles)});
+  std::string frictions = setting("friction_prepare", "");
+  if (frictions.empty() && gp.count("friction_prepare_loose") && gp.count("friction_prepare_medium") && gp.count("friction_prepare_dense"))
+    frictions = gp.at("friction_prepare_loose") + " / " + gp.at("friction_prepare_medium") + " / " + gp.at("friction_prepare_dense");
+  const std::string pressure = setting("target_pressure_kPa", "target_pressure_kPa"), grading = setting("grading_basis", "grading_basis");
+  if (!pressure.empty() && !frictions.empty())
+    md.row({"preparation", "isotropic compression to " + pressure + " kPa, friction " + frictions + " (loose / medium / dense)" +
+                               (grading.empty() ? "" : ", grading read by " + grading)});
+  const std::string p = setting("mean_stress_kPa", "mean_stress_kPa"), ratio = setting("stress_ratio", "stress_ratio"),
+                    shear = setting("friction_shear", "friction_shear");
+  if (!p.empty() && !ratio.empty())
+    md.row({"tests", "the five cyclic true-triaxial paths at p = " + p + " kPa, R = " + ratio + (shear.empty() ? "" : ", shearing friction " + shear)});
+  if (record.is_object() && record.contains("total"))
+    md.row({"judged", std::to_string(record.value("total", 0)) + " rows of `" + record.value("references", std::string("the reference file")) + "` (profile " +
+                          record.value("profile", std::string("not recorded")) + "), each on every sample"});
+  v["setup.table"] = md.rows() ? md.text() : "";
+  v["setup.from"] = have_results ? "the resolved scenes of the results and `reports/validation.json`"
+                                 : "`reports/validation.json` and `reports/figures/values.gp`, which `validate` and `figure-data` wrote from the results";
 }
 
 void add_study_settings(Values& v, const std::string& stability_results) {
@@ -274,10 +386,21 @@ void add_figures(Values& v, const fs::path& report, const std::string& notes_tsv
     }
   }
   std::sort(pngs.begin(), pngs.end());
-  std::string figs;
+  // Each figure with its note; without the results the notes (computed from them) are the previous
+  // report's (`report --previous`: paragraph_not_here). The paper's two headline checks (e0 and CN
+  // of every sample, q/p against F^s_d/F^s_m) come first, in their own section, and not again.
+  const bool have_results = v.count("have_results") && !v.at("have_results").empty();
+  const std::vector<std::string> headline = {"fig00_samples.png", "fig13_strong_fabric.png", "fig14_strong_fabric_all.png"};
+  const auto with_note = [&](const std::string& png) {
+    const std::string image = "![" + png.substr(0, png.size() - 4) + "](figures/" + png + ")";
+    return "\n" + image + "\n\n" + (have_results ? figure_note(notes_tsv, png, v) : paragraph_not_here("after", image)) + "\n";
+  };
+  std::string figs, heads;
   for (const std::string& png : pngs)
-    figs += "\n![" + png.substr(0, png.size() - 4) + "](figures/" + png + ")\n\n" + figure_note(notes_tsv, png, v) + "\n";
+    (std::find(headline.begin(), headline.end(), png) != headline.end() ? heads : figs) += with_note(png);
   v["figures"] = figs.empty() ? "\n*No figures drawn yet (`reports/make_figures.sh`).*\n" : figs;
+  v["headline_figures"] = heads;
+  v["figure.fig00"] = std::find(pngs.begin(), pngs.end(), "fig00_samples.png") != pngs.end() ? "yes" : "";
   std::sort(renders.begin(), renders.end());
   std::string r;
   for (const std::string& png : renders) r += "![" + png.substr(0, png.size() - 4) + "](figures/" + png + ")\n";

@@ -46,7 +46,19 @@ std::string with_previous_sections(const std::string& text, const std::string& t
   if (kept.empty()) return text;
   std::smatch m;
   v["kept_from"] = std::regex_search(previous, m, std::regex(R"(Generated on (\S+))")) ? m[1].str() : "date not written";
-  v["kept"] = "\"" + validation::joined(kept, "\", \"") + "\"";
+  // The sections by name; the paragraphs ("¶ " + what found them) counted: the notes of the figures
+  // (found after their image line) and the others.
+  std::vector<std::string> sections;
+  std::size_t notes = 0, others = 0;
+  for (const std::string& k : kept)
+    if (k.rfind("¶ ", 0) != 0) sections.push_back(k);
+    else if (k.find("![") != std::string::npos) ++notes;
+    else ++others;
+  v["kept"] = sections.empty() ? "" : "\"" + validation::joined(sections, "\", \"") + "\"";
+  std::string paragraphs;
+  if (others) paragraphs = std::to_string(others) + " paragraph" + (others == 1 ? "" : "s") + " computed from the results";
+  if (notes) paragraphs += (paragraphs.empty() ? "" : " and ") + std::string("the notes of ") + std::to_string(notes) + " figures";
+  v["kept_paragraphs"] = paragraphs;
   kept.clear();
   return validation::keep_sections_without_inputs(validation::fill(tmpl, v), previous, kept);
 }
@@ -114,12 +126,13 @@ int tool_main(int argc, char** argv) {
     if (validation::report_unreadable("report", missing)) return 1;  // lost, not merely not run
     in.sample = opt["--sample"];
     validation::Values v = validation::figure_values(in);
-    if (!v.count("sample")) v["sample"] = "—", v["samples_n"] = "0";
+    if (!v.count("sample")) v["sample"] = in.sample.empty() ? "—" : in.sample, v["samples_n"] = "0";  // no results: the sample named
 
     validation::add_provenance(v, src, have_results && !in.samples.empty(), missing.size());
     const auto energy_series = validation::add_runs(v, in.samples, densities);
     validation::add_settings(v, results, have_results);
     validation::add_tables(v, report, in.paper, opt["--decisions"]);
+    validation::add_setup(v, report, have_results && !in.samples.empty());
     validation::add_study_settings(v, opt["--stability"]);
     validation::add_baseline(v, opt["--baseline"], in.rows, in.samples);
     const std::string notes = validation::read_text(fs::path(opt["--templates"]) / "figure_notes.tsv");

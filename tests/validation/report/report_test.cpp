@@ -645,7 +645,7 @@ TEST_CASE("report: the convergence and stability sections print no placeholder w
   // settings the results would give are not quoted ("Δt = ? µs" before), and a key that is not
   // there fails the fill instead of printing "?".
   const std::string tmpl = source_file("reports/templates/index.md");
-  const auto from = tmpl.find("## Convergence"), to = tmpl.find("## Critical state");
+  const auto from = tmpl.find("## Appendix: Convergence"), to = tmpl.find("## Appendix: Critical state");
   REQUIRE(from != std::string::npos);
   REQUIRE(to != std::string::npos);
   const std::string sections = tmpl.substr(from, to - from);

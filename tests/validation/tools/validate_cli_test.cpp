@@ -219,8 +219,8 @@ TEST_CASE("validate: validation.md and verdicts.md read back cell by cell, a '|'
   const auto m = table_lines(text_of(dir / "out" / "verdicts.md"));
   REQUIRE(m.size() == 3);
   for (const auto& line : m) CHECK(line.size() == 5);
-  CHECK(m[0] == std::vector<std::string>{"row", "verdict", "lab|2020", "interval of one sample", "holds in"});
-  CHECK(m[2] == std::vector<std::string>{"peak | dense", "— not judged", "30 ± 2", "—", "0 of 0"});
+  CHECK(m[0] == std::vector<std::string>{"row", "lab|2020", "ours: mean ± sd", "samples in the lab|2020's range", "verdict"});
+  CHECK(m[2] == std::vector<std::string>{"peak | dense", "30 ± 2", "—", "0 of 0", "— not judged"});
 }
 
 TEST_CASE("validate: a reference file or manifest that would be read wrong in silence is refused, exit 2", "[validate][cli][references]") {

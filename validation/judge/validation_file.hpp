@@ -1,0 +1,39 @@
+#pragma once
+// A validation.json read back (what validate wrote: validation/README.md), for `validate
+// --from-json`: every row's per-sample values, judged again by the rows of a reference file
+// (judge_values, rows.hpp) without the study's results.
+#include <string>
+#include <vector>
+
+#include "judge/rows.hpp"
+
+namespace validation {
+
+struct RecordedValidation {
+  std::string profile;                      // the profile it was judged at
+  std::vector<std::string> samples;         // the ensemble's samples (seed<N>), in order
+  std::vector<std::string> missing_samples; // samples runs.tsv listed without a folder
+  std::vector<std::string> missing_results; // result files missing or not complete
+  struct RecordedRow {
+    std::string name, density;
+    std::vector<RowResult::PerSample> samples;  // value (null: none), note, misfit
+  };
+  std::vector<RecordedRow> rows;
+};
+
+// FILE's record. Throws std::runtime_error naming FILE and what is wrong: cannot be read, not
+// JSON, not a validation.json (a key missing or of the wrong type, named by its path: "rows[3].per_sample[1].value").
+RecordedValidation read_validation_file(const std::string& file);
+
+// Each of `rows` (the reference file's, in its order) with its recorded values, judged again
+// (judge_values). Throws std::runtime_error naming FILE when a row of the reference file is not in
+// the record, or the record has a row the reference file does not.
+struct RejudgedRow {
+  Row row;
+  std::string density;
+  RowResult result;
+};
+std::vector<RejudgedRow> judge_recorded(const RecordedValidation& record, const std::vector<Row>& rows, const std::string& file,
+                                        const std::string& references);
+
+}  // namespace validation
