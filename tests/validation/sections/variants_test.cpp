@@ -66,7 +66,22 @@ TEST_CASE("per-cycle quantities come from the cycle-end rows", "[compare]") {
   CHECK(q.at("ed_cycle1") == 0.02);
   CHECK(q.at("ed_cycle2") == 0.04);
   CHECK(q.at("qp_slope") == Approx(1.0));
-  CHECK(q.size() == 7);
+  CHECK(q.at("ev_growth_1_2") == Approx(0.002));  // 0.004 - 0.002
+  // No coordination-number column and no legs in this test: neither cn_cycle<c> nor the angles.
+  CHECK(q.size() == 8);
+}
+
+TEST_CASE("per-cycle coordination numbers and their change from cycle 1 to 2", "[compare]") {
+  validation::TestResult t;
+  t.series["cycle"] = {0, 1, 1, 2, 2};
+  t.series["cycle_end"] = {0, 0, 1, 0, 1};
+  t.series["volumetric_strain"] = {0, 0.001, 0.002, 0.003, 0.004};
+  t.series["deviatoric_strain"] = {0, 0.01, 0.02, 0.03, 0.04};
+  t.series["coordination_number"] = {4.2, 4.1, 4.05, 4.0, 3.98};
+  const auto q = validation::convergence_quantities({}, {{"test1", t}});
+  CHECK(q.at("cn_cycle1") == 4.05);
+  CHECK(q.at("cn_cycle2") == 3.98);
+  CHECK(q.at("cn_change_1_2") == Approx(-0.07));
 }
 
 TEST_CASE("stability outcomes: ran within the closure limit, stopped with a message, or not acceptable", "[compare]") {
