@@ -70,6 +70,8 @@ Row read_row(dem::Section& s, const std::string& name) {
   r.resolution = s.number("resolution", "", {0, 1e9}, 0.0,
                           "the smallest difference that means something (shifts are counted in max(sd, resolution))");
   r.must_pass = s.boolean("must_pass", false, "an inconsistent verdict fails the validation");
+  r.quasi_static = s.boolean("quasi_static", false,
+                             "the reference holds in the quasi-static limit (I -> 0): not judged on runs at a finite rate");
   r.reason = s.text("reason", std::nullopt, "why this tolerance");
   r.source = s.text("source", std::nullopt, "where the value comes from: a table, figure or section of the paper, a lab report");
   r.group = s.text("group", std::string("other"), "the report's group of rows (one tornado chart each)");
@@ -180,7 +182,13 @@ RowResult judge_values(const Row& row, std::vector<RowResult::PerSample> samples
     out.verdict = out.valued < 1 ? Verdict::NotJudged : out.holds == out.valued ? Verdict::Consistent : Verdict::Inconsistent;
   else
     out.verdict = judge(out.spread, out.paper);
+  if (row.quasi_static) out.verdict = Verdict::NotJudged;
   out.warnings = warnings_of(row, out);
+  if (row.quasi_static) {
+    out.warnings.insert(out.warnings.begin(),
+                        "not judged: the reference holds in the quasi-static limit (I -> 0) and these runs are sheared at a "
+                        "finite rate; the critical-state section compares it at I -> 0");
+  }
   return out;
 }
 

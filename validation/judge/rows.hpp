@@ -24,6 +24,11 @@ struct Row {
   double resolution = 0;
   int cycle = 0, from_cycle = 0, to_cycle = 0;
   bool must_pass = false;
+  // The reference holds in the quasi-static limit (inertial number I -> 0), e.g. a published
+  // critical-state friction of slowly sheared spheres: a run at a finite rate cannot judge it, so
+  // the row is not judged here (its values are shown); the critical-state section sets it beside
+  // the value its rate series extrapolates to I -> 0.
+  bool quasi_static = false;
   std::string group;  // the report groups rows (and draws one tornado chart per group)
   // How the row is judged: "interval" (a value read from the paper: consistent when the paper's
   // region overlaps the 95 % prediction interval of one sample) or "majority" (a trend or an

@@ -184,3 +184,28 @@ TEST_CASE("verdicts carry each distinct misfit of their samples' values once", "
   const validation::RowResult r = judged({10, 10.5, 9.5}, 5, "interval", "does not fit");
   CHECK(r.warnings == std::vector<std::string>{"does not fit"});
 }
+
+TEST_CASE("a quasi-static reference is not judged on runs at a finite rate", "[references][warnings]") {
+  // 10.6, 10.7, 10.8 against 10 +/- 0.5 is consistent (by width only, above); and 14, 15, 16 is
+  // inconsistent. Declared quasi-static, both are not judged, the values kept, the reason first.
+  validation::Row row;
+  row.name = "x", row.check = "within", row.reference = 10, row.tolerance = 0.5, row.quasi_static = true;
+  for (const std::vector<double>& values : {std::vector<double>{10.6, 10.7, 10.8}, std::vector<double>{14, 15, 16}}) {
+    std::vector<validation::RowResult::PerSample> samples;
+    for (double v : values) samples.push_back({"s", {v, "", ""}});
+    const validation::RowResult r = validation::judge_values(row, samples);
+    CHECK(r.verdict == validation::Verdict::NotJudged);
+    CHECK(r.valued == 3);
+    REQUIRE_FALSE(r.warnings.empty());
+    CHECK(r.warnings[0].rfind("not judged: the reference holds in the quasi-static limit", 0) == 0);
+    // Not called consistent, so never "consistent by width only" (14, 15, 16 do warn that their
+    // interval, 2 x 4.303 x 1 x sqrt(4/3) = 9.94 wide, is 19.9 times the tolerance).
+    for (const std::string& w : r.warnings) CHECK(w.find("by width only") == std::string::npos);
+  }
+  // literature.yaml declares its two critical-state rows so.
+  const validation::References literature =
+      validation::read_references(std::string(DEM_SOURCE_DIR) + "/reference_data/literature.yaml", "paper");
+  int quasi_static = 0;
+  for (const validation::Row& r : literature.rows) quasi_static += r.quasi_static;
+  CHECK(quasi_static == 2);
+}
