@@ -23,6 +23,10 @@ const std::vector<std::vector<std::string>> left_out = {
     {"particles", "state"},
     {"particles", "csv"},
     {"material", "friction"},
+    // The friction's own stiffness: the resolved scene writes it only with friction > 0 (a dense
+    // preparation at friction 0 has none), so it would set a study's baseline by which density it
+    // prepares first.
+    {"material", "ks"},
 };
 
 bool is_left_out(const std::vector<std::string>& path) {

@@ -8,8 +8,9 @@ namespace validation {
 
 // 16 hex digits: FNV-1a 64 of the resolved scene (YAML text) without what every study varies or
 // what names a place rather than a setting: `name`, `output`, `particles.lattice.n`,
-// `particles.lattice.seed`, the particle files (`particles.state`, `particles.csv`) and
-// `material.friction` (the preparation friction sets the density). What is left is written
+// `particles.lattice.seed`, the particle files (`particles.state`, `particles.csv`),
+// `material.friction` (the preparation friction sets the density) and `material.ks` (the
+// friction's stiffness, which a resolved scene holds only with friction > 0). What is left is written
 // canonically first: map keys sorted, a scalar that reads as a number as that double (%.17g), so
 // key order and `1e-6` against `1.0e-6` do not change it. Throws std::runtime_error for text that
 // is not YAML (`where` names it).
