@@ -141,7 +141,8 @@ int tool_main(int argc, char** argv) {
     validation::add_settings(v, results, have_results);
     validation::add_tables(v, report, in.paper, opt["--decisions"]);
     const validation::Stamp paper_stamp = validation::read_paper_stamp(report);
-    v["stamp.paper"] = validation::stamp_text(paper_stamp);
+    v["stamp.paper"] = paper_stamp.recorded() ? validation::stamp_text(paper_stamp)
+                                              : "made before stamps (their engine and baseline are not recorded, so no section is compared with them)";
     // The sections kept from another baseline or engine (with --allow-other-baseline), named in the header.
     std::vector<std::string> elsewhere;
     for (const auto& [section, differs] : validation::sections_from_elsewhere(report, v, paper_stamp))
