@@ -5,13 +5,11 @@
 #include <cmath>
 #include <ctime>
 #include <filesystem>
-#include <fstream>
 #include <stdexcept>
 
 #include "io/atomic_file.hpp"
 #include "io/hdf5.hpp"
 #include "study/baseline.hpp"
-#include "study/json_file.hpp"
 #include "study/manifest.hpp"
 #include "study/results.hpp"
 
@@ -80,6 +78,8 @@ Stamp stamp_of_results(const std::string& dir, const std::string& variant) {
 }
 
 Stamp combined(const std::vector<Stamp>& stamps) {
+  if (std::none_of(stamps.begin(), stamps.end(), [](const Stamp& s) { return s.recorded(); }))
+    return stamps.empty() ? Stamp{} : stamps.front();  // what the first one has (its samples, say)
   Stamp out;
   bool first = true;
   const auto join = [](std::string& into, const std::string& value) {
@@ -122,14 +122,6 @@ Stamp stamp_from_json(const nlohmann::json& j) {
 
 void write_stamp_file(const std::string& out_dir, const Stamp& s) {
   dem::write_file_atomically((fs::path(out_dir) / "stamp.json").string(), stamp_json(s).dump(1) + "\n");
-}
-
-void add_stamp_to_json_file(const std::string& file, const Stamp& s) {
-  (void)read_json_file(file);  // throws naming the file when it cannot be read or is not JSON
-  std::ifstream in(file);
-  nlohmann::ordered_json j = nlohmann::ordered_json::parse(in);  // its keys in their order
-  j["stamp"] = stamp_json(s);
-  dem::write_file_atomically(file, j.dump(1) + "\n");
 }
 
 }  // namespace validation

@@ -31,8 +31,8 @@ Stamp stamp_of_results(const std::string& dir, const std::string& variant = "");
 
 // Several studies' stamps made one (a section fed by several, e.g. the liquefaction studies of
 // two densities): a field on which they differ lists every value ("a, b"), so that it differs from
-// the paper study's; spheres and samples are the first's, the date the latest. A stamp with
-// nothing recorded (a study not run yet) is left out.
+// the paper study's; spheres and samples are the first's, the date the latest. A stamp without
+// engine or baseline (a study not run yet) is left out, unless none has them (then the first).
 Stamp combined(const std::vector<Stamp>& stamps);
 
 // {"engine", "baseline", "spheres", "samples", "date"}, each "not recorded" when it is not.
@@ -41,8 +41,7 @@ nlohmann::ordered_json stamp_json(const Stamp& s);
 // that is not an object: nothing recorded.
 Stamp stamp_from_json(const nlohmann::json& j);
 
-// OUT/stamp.json; and the "stamp" key of an existing JSON file (its other keys kept, in order).
+// OUT/stamp.json.
 void write_stamp_file(const std::string& out_dir, const Stamp& s);
-void add_stamp_to_json_file(const std::string& file, const Stamp& s);
 
 }  // namespace validation
