@@ -1,4 +1,5 @@
 #include "report/report.hpp"
+#include "report/other_sections.hpp"
 
 #include "core/text.hpp"
 
@@ -56,7 +57,11 @@ std::string section_name(const std::string& heading_line) {
   name = name.substr(std::min(name.find_first_not_of('#'), name.size()));
   name = trim(name);
   const std::string appendix = "Appendix: ";
-  return name.rfind(appendix, 0) == 0 ? name.substr(appendix.size()) : name;
+  if (name.rfind(appendix, 0) == 0) name = name.substr(appendix.size());
+  // A section headed as from another baseline or engine (stamp_sections) is still that section.
+  for (const char* mark : {other_baseline_mark, other_engine_mark, other_both_mark})
+    if (name.rfind(mark, 0) == 0) return name.substr(std::string(mark).size());
+  return name;
 }
 
 namespace {

@@ -36,9 +36,10 @@ inline constexpr const char* inputs_not_here = "<!-- inputs not here -->";
 // line `text` (a figure's image line: its note).
 std::string paragraph_not_here(const std::string& mode, const std::string& text);
 
-// A section's name as keep_sections_without_inputs matches it: its heading without the "#"s and
-// without an "Appendix: " prefix ("## Appendix: What was run" -> "What was run"), so that a section
-// moved into the appendix still finds itself in an earlier report.
+// A section's name as keep_sections_without_inputs matches it: its heading without the "#"s,
+// without an "Appendix: " prefix ("## Appendix: What was run" -> "What was run") and without a
+// "⚠ from another baseline: " mark (other_sections.hpp), so that a section moved into the appendix,
+// or headed as from another baseline, still finds itself in an earlier report.
 std::string section_name(const std::string& heading_line);
 
 // `fresh` (a report just written) with every level-2 section ("## heading" up to the next) that

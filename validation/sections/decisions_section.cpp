@@ -28,6 +28,7 @@
 #include "study/markdown_table.hpp"
 #include "study/results.hpp"
 #include "study/settings.hpp"
+#include "study/stamp.hpp"
 
 namespace fs = std::filesystem;
 
@@ -213,7 +214,7 @@ struct Size {
 };
 
 nlohmann::ordered_json decisions_json(const std::string& baseline, const std::string& baseline_results, const Size& size,
-                                      const std::vector<RowDecision>& decided, std::size_t missing) {
+                                      const std::vector<RowDecision>& decided, std::size_t missing, const validation::Stamp& stamp) {
   using json = nlohmann::ordered_json;
   json rows = json::array();
   for (const RowDecision& d : decided) {
@@ -238,6 +239,7 @@ nlohmann::ordered_json decisions_json(const std::string& baseline, const std::st
   if (!baseline_results.empty()) out["baseline_results"] = baseline_results;
   out["particles"] = size.particles > 0 ? json(size.particles) : json(nullptr);
   out["samples"] = size.samples;
+  out["stamp"] = validation::stamp_json(stamp);  // the engine and baseline its numbers come from (the report says them)
   out["shift_unit"] = "max(baseline sd, the row's resolution)";
   out["rows"] = rows;
   out["missing_results"] = missing;
@@ -342,7 +344,9 @@ int decisions(const Manifest& manifest, const std::string& results, const std::s
     dem::write_file_atomically((fs::path(out) / "table.md").string(), md);
     dem::write_file_atomically(
         (fs::path(out) / "decisions.json").string(),
-        decisions_json(baseline, baseline_results.empty() ? "" : relative_paths(baseline_results, baseline_results), size, decided, missing.size()).dump(2) +
+        decisions_json(baseline, baseline_results.empty() ? "" : relative_paths(baseline_results, baseline_results), size, decided, missing.size(),
+                       validation::stamp_of_results(results, baseline))
+                .dump(2) +
             "\n");
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());

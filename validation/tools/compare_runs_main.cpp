@@ -8,7 +8,8 @@
 //   compare-runs critical-state RESULTS_DIR OUT_DIR [--ensemble DIR] [--rates DIR]
 //   compare-runs liquefaction OUT_DIR RESULTS_DIR...
 // Each mode is a file of compare_runs/ (what it writes: modes.hpp); this one parses the arguments
-// (every sub-command answers --help) and calls it.
+// (every sub-command answers --help) and calls it. stability, critical-state and liquefaction also
+// write OUT_DIR/stamp.json, decisions a "stamp" in decisions.json (study/stamp.hpp).
 // Exit status: 0; 1 if a stability case is not acceptable, the reference or baseline is missing,
 // or an output cannot be written; 2 on bad arguments (the error names the option) or an unreadable
 // manifest or references file.
@@ -21,6 +22,7 @@
 #include <CLI/CLI.hpp>
 
 #include "sections/modes.hpp"
+#include "study/stamp.hpp"
 #include "io/failure.hpp"
 
 namespace {
@@ -35,6 +37,24 @@ CLI::App* study_mode(CLI::App& app, const std::string& name, const std::string& 
   cmd->add_option("RESULTS_DIR", f.results, "the study's results folder (its runs.tsv, written by build/bin/pipeline)")->required();
   cmd->add_option("OUT_DIR", f.out, "where the tables and the figures' data go (made if missing)")->required();
   return cmd;
+}
+
+// OUT/stamp.json from the studies a section was made from (their engine, baseline, size, date:
+// study/stamp.hpp), once its tables are written (`status` 0 or 1); the report says it under the
+// section's heading.
+int stamped(int status, const std::string& out, const std::vector<std::string>& studies) {
+  if (status != 0 && status != 1) return status;
+  std::vector<validation::Stamp> stamps;
+  for (const std::string& dir : studies) {
+    if (dir.empty()) continue;
+    try {
+      stamps.push_back(validation::stamp_of_results(dir));
+    } catch (const std::exception& e) {  // a study not run: its section says so, and it has no stamp
+      std::fprintf(stderr, "compare-runs: no stamp from %s: %s\n", dir.c_str(), e.what());
+    }
+  }
+  validation::write_stamp_file(out, validation::combined(stamps));
+  return status;
 }
 
 }  // namespace
@@ -163,7 +183,8 @@ int tool_main(int argc, char** argv) {
       std::filesystem::create_directories(convergence_f.results);
       return compare_runs::convergence_from_summary(convergence_summary, convergence_f.results, reference, validation_json);
     }
-    if (*liquefaction) return compare_runs::liquefaction(liquefaction_out, liquefaction_folders);
+    if (*liquefaction)
+      return stamped(compare_runs::liquefaction(liquefaction_out, liquefaction_folders), liquefaction_out, liquefaction_folders);
     if (*decisions && !from_json.empty()) return compare_runs::decisions_from_json(from_json, decisions_f.results, references);
     const Folders& f = *convergence ? convergence_f : *stability ? stability_f : *decisions ? decisions_f : critical_f;
     compare_runs::Manifest manifest;
@@ -175,7 +196,7 @@ int tool_main(int argc, char** argv) {
     }
     std::filesystem::create_directories(f.out);
     if (*convergence) return compare_runs::convergence(manifest, f.results, f.out, reference, threads_per_run, validation_json);
-    if (*stability) return compare_runs::stability(manifest, f.results, f.out, report_only);
+    if (*stability) return stamped(compare_runs::stability(manifest, f.results, f.out, report_only), f.out, {f.results});
     if (*decisions) return compare_runs::decisions(manifest, f.results, f.out, references, baseline, ensemble, baseline_results);
     if (*critical) {
       for (const std::string& dir : {critical_ensemble, critical_rates})
@@ -185,7 +206,8 @@ int tool_main(int argc, char** argv) {
             std::fprintf(stderr, "error: %s\n", e.what());
             return 2;
           }
-      return compare_runs::critical_state(manifest, f.results, f.out, critical_ensemble, critical_rates, critical_references);
+      return stamped(compare_runs::critical_state(manifest, f.results, f.out, critical_ensemble, critical_rates, critical_references), f.out,
+                     {f.results, critical_ensemble, critical_rates});
     }
     return 2;  // not reached: parse() requires one sub-command
   } catch (const std::exception& e) {  // a result that cannot be read, a folder that cannot be made

@@ -6,11 +6,14 @@
 // figures plot and the verdicts of the validation rows about them.
 //   report --results DIR --references FILE --out REPORT_DIR [--profile NAME] [--sample NAME]
 //          [--templates DIR] [--baseline FILE] [--decisions DIR] [--stability DIR]
-//          [--source TEXT] [--note TEXT] [--previous FILE]
+//          [--source TEXT] [--note TEXT] [--previous FILE] [--allow-other-baseline]
 // REPORT_DIR holds what the other tools wrote (validation.md, verdicts.md, figures/, samples.md,
 // decisions/, convergence/, stability/, critical_state/, liquefaction/, bench.md); a part that is
 // missing is said so in its section. --baseline: an earlier baseline's validation.json, compared
-// row by row. Exit status: 0; 1 if the report cannot be written, a template names an unknown key
+// row by row. Under the heading of each section another study made (report/other_sections.hpp) a
+// line says the engine, baseline, size and date of its numbers; a section whose baseline or engine
+// differs from the paper study's (REPORT_DIR/validation.json's stamp) is refused (exit 1, naming
+// it) unless --allow-other-baseline, which heads it "⚠ from another baseline". Exit status: 0; 1 if the report cannot be written, a template names an unknown key
 // or a result file is there but cannot be read; 2 for bad arguments or a --results that is not a
 // folder (one that does not exist is accepted with --previous).
 #include <cstdio>
@@ -24,6 +27,7 @@
 
 #include "io/atomic_file.hpp"
 #include "io/failure.hpp"
+#include "report/other_sections.hpp"
 #include "report/report.hpp"
 #include "report/report_values.hpp"
 #include "study/format.hpp"
@@ -86,6 +90,10 @@ int tool_main(int argc, char** argv) {
   option("--note", "a note printed at the top of the report");
   option("--previous", "an earlier report: each section whose inputs are not here (e.g. the paper study's results) is taken "
                        "from it, and the header names those sections and that report's date");
+  bool allow_other_baseline = false;
+  app.add_flag("--allow-other-baseline", allow_other_baseline,
+               "keep a section another study made on another baseline or engine than the paper study's (its stamp says which), "
+               "headed \"⚠ from another baseline\"; without it such a section is refused (exit 1)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -132,6 +140,14 @@ int tool_main(int argc, char** argv) {
     const auto energy_series = validation::add_runs(v, in.samples, densities);
     validation::add_settings(v, results, have_results);
     validation::add_tables(v, report, in.paper, opt["--decisions"]);
+    const validation::Stamp paper_stamp = validation::read_paper_stamp(report);
+    v["stamp.paper"] = paper_stamp.recorded() ? validation::stamp_text(paper_stamp)
+                                              : "made before stamps (their engine and baseline are not recorded, so no section is compared with them)";
+    // The sections kept from another baseline or engine (with --allow-other-baseline), named in the header.
+    std::vector<std::string> elsewhere;
+    for (const auto& [section, differs] : validation::sections_from_elsewhere(report, v, paper_stamp))
+      elsewhere.push_back("\"" + validation::section_name(section.heading) + "\" (another " + differs + ")");
+    v["stamp.elsewhere"] = allow_other_baseline ? validation::joined(elsewhere, ", ") : "";
     validation::add_setup(v, report, have_results && !in.samples.empty());
     validation::add_study_settings(v, opt["--stability"]);
     validation::add_baseline(v, opt["--baseline"], in.rows, in.samples);
@@ -143,6 +159,15 @@ int tool_main(int argc, char** argv) {
     if (tmpl.empty()) throw std::runtime_error(opt["--templates"] + "/index.md is missing or empty");
     std::string text = validation::fill(tmpl, v);
     if (!opt["--previous"].empty()) text = with_previous_sections(text, tmpl, v, opt["--previous"]);
+    // Each section another study made, with its stamp; one from another baseline or engine is refused unless allowed.
+    const validation::StampedReport stamped = validation::stamp_sections(text, report, v, paper_stamp, allow_other_baseline);
+    if (!stamped.refused.empty()) {
+      for (const std::string& r : stamped.refused) std::fprintf(stderr, "report: %s\n", r.c_str());
+      std::fprintf(stderr, "report: %s not written\n", (report / "index.md").c_str());
+      return 1;
+    }
+    for (const std::string& h : stamped.other) std::fprintf(stderr, "report: warning: '%s' kept from another baseline or engine (headed ⚠)\n", h.c_str());
+    text = stamped.text;
     dem::write_file_atomically((report / "index.md").string(), text);
     std::fprintf(stderr, "report written to %s (%zu sample(s) of %s%s)\n", (report / "index.md").c_str(), in.samples.size(),
                  validation::shown_path(results).c_str(), missing.empty() ? "" : (", " + std::to_string(missing.size()) + " result files missing").c_str());

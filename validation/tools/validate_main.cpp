@@ -1,5 +1,7 @@
 // validate: judges a study's results against a reference file (reference_data/paper.yaml, or a
 // user's own: validation/README.md), writes validation.json, validation.md and verdicts.md.
+// validation.json records the stamp of the numbers (study/stamp.hpp: engine, baseline, spheres,
+// samples, date); --from-json keeps the stamp the record has (none: "not recorded").
 //   validate --results DIR --references FILE --out DIR [--profile NAME] [--decisions decisions.json]...
 //   validate --from-json validation.json --references FILE --out DIR [--profile NAME] [--decisions ...]...
 // DIR is a study's results folder, with the manifest the pipeline writes (DIR/runs.tsv): an
@@ -39,6 +41,8 @@
 #include "study/format.hpp"
 #include "study/manifest.hpp"
 #include "study/markdown_table.hpp"
+#include "study/json_file.hpp"
+#include "study/stamp.hpp"
 #include "judge/row_runs.hpp"
 #include "judge/rows.hpp"
 #include "judge/study_results.hpp"
@@ -194,16 +198,31 @@ std::vector<Judged> judge_record(const Options& o, const validation::RecordedVal
   return judged;
 }
 
-// validation.json: the options, the rules, the samples and what is missing (a record's as it
+// The stamp of the numbers judged: the results' own (stamp_of_results), or the one the record
+// kept (none: every field not recorded, a record made before stamps). A stamp that cannot be read
+// leaves its fields not recorded and says why: the verdicts stand without it.
+validation::Stamp stamp_of(const Options& o, bool from_results) {
+  try {
+    if (from_results) return validation::stamp_of_results(o.results);
+    const nlohmann::json record = validation::read_json_file(o.from_json);
+    return validation::stamp_from_json(record.contains("stamp") ? record.at("stamp") : nlohmann::json());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "warning: the stamp (engine, baseline, size, date) not recorded: %s\n", e.what());
+    return {};
+  }
+}
+
+// validation.json: the options, the rules, the stamp, the samples and what is missing (a record's as it
 // recorded them), every row (json_row) and the counts.
 nlohmann::ordered_json validation_json(const Options& o, const std::string& label, const std::vector<Judged>& judged,
                                        const validation::VerdictCounts& count, const std::vector<std::string>& samples,
                                        const std::vector<std::string>& missing, const std::vector<std::string>& missing_samples,
-                                       bool from_results) {
+                                       bool from_results, const validation::Stamp& stamp) {
   nlohmann::ordered_json json;
   json["profile"] = o.profile;
   json["references"] = o.references;
   json["judged_from"] = !from_results ? nlohmann::ordered_json{{"validation_json", o.from_json}} : nlohmann::ordered_json{{"results", o.results}};
+  json["stamp"] = validation::stamp_json(stamp);
   json["rules"] = {
       {"interval", "consistent: the " + label + "'s value, widened by the row's tolerance, overlaps the " +
                        validation::number(100 * validation::prediction_level) + " % prediction interval of one sample (mean -/+ t(" +
@@ -308,7 +327,8 @@ int tool_main(int argc, char** argv) {
     samples = record->samples;
   }
 
-  const nlohmann::ordered_json json = validation_json(o, refs.label, judged, count, samples, missing, missing_samples, results.has_value());
+  const nlohmann::ordered_json json = validation_json(o, refs.label, judged, count, samples, missing, missing_samples, results.has_value(),
+                                                     stamp_of(o, results.has_value()));
   validation::VerdictsContext context;
   context.label = refs.label;
   context.provenance = record ? "Judged again by `validate --from-json` from the per-sample values recorded in `" + o.from_json +

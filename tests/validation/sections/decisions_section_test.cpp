@@ -116,6 +116,12 @@ rows:
   CHECK(j.at("particles") == 8);  // from the baseline's preparations
   CHECK(j.at("samples") == 3);    // seeds 1-3, not the baseline study's 4
   CHECK(j.at("schema") == 2);
+  // The stamp of the readings study's own runs: seed1's preparation has 8 spheres, the study 3
+  // samples; these fixtures carry no engine version and no resolved scene, so neither is recorded.
+  CHECK(j.at("stamp").at("spheres") == 8);
+  CHECK(j.at("stamp").at("samples") == 3);
+  CHECK(j.at("stamp").at("engine") == "not recorded");
+  CHECK(j.at("stamp").at("baseline") == "not recorded");
   REQUIRE(j.at("rows").size() == 2);  // the medium row left out
   const nlohmann::json& e0 = j.at("rows")[0];
   CHECK(e0.at("name") == "e0, loose");

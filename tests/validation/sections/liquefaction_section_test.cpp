@@ -9,6 +9,8 @@
 #include <sstream>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "io/hdf5.hpp"
 
 namespace fs = std::filesystem;
@@ -158,4 +160,10 @@ TEST_CASE("compare-runs liquefaction: median and range of N_L over an ensemble's
   INFO(summary);
   CHECK(summary.find("\"loose_csr0.02\"\t1\t0.02\t3\t1\t2\t50\tNaN\t1\t2\t0\t50\t1") != std::string::npos);
   CHECK(summary.find("\"loose_csr0.05\"\t1\t0.05\t3\t3\t0\t2\t2\t0\t1\t0\t3\t0") != std::string::npos);
+  // The section's stamp beside its table: the 3 samples of runs.tsv; no preparation result here
+  // (the tests start from files not in the folder), so no engine or baseline is recorded.
+  const nlohmann::json stamp = nlohmann::json::parse(read_file(dir / "out" / "stamp.json"));
+  CHECK(stamp.at("samples") == 3);
+  CHECK(stamp.at("engine") == "not recorded");
+  CHECK(stamp.at("baseline") == "not recorded");
 }

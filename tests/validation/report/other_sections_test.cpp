@@ -1,0 +1,138 @@
+// The sections other studies make, each with its stamp under its heading: a stamp on the paper
+// study's baseline and engine is said; one on another baseline is refused, or with
+// --allow-other-baseline headed ⚠ with both stamps said; a section without a stamp says it is
+// not recorded; a section not run has no line. On fixture report folders.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+
+#include "engine/io/io_test_support.hpp"
+#include "report/other_sections.hpp"
+#include "report/report.hpp"
+
+namespace fs = std::filesystem;
+using validation::Stamp;
+
+namespace {
+
+// A filled report with every listed section's heading and a body line.
+std::string report_text() {
+  std::string text = "# title\n\nGenerated on 2026-11-27\n\n## Set-up\n\nx\n";
+  for (const auto& s : validation::other_study_sections()) text += "\n## " + s.heading + "\n\nbody of " + s.heading + "\n";
+  return text;
+}
+
+// Every section's table key filled (each section has run).
+std::map<std::string, std::string> all_run() {
+  std::map<std::string, std::string> v;
+  for (const auto& s : validation::other_study_sections()) v[s.table_key] = "| a table |";
+  return v;
+}
+
+void write_json(const fs::path& file, const nlohmann::ordered_json& j) {
+  fs::create_directories(file.parent_path());
+  std::ofstream(file) << j.dump(1) << "\n";
+}
+
+const Stamp paper{"0.1.0+aaaa", "1111111111111111", 8000, 5, "2026-11-27"};
+
+}  // namespace
+
+TEST_CASE("report stamps: every section another study makes is listed once, under a heading of the template", "[report][stamp]") {
+  std::string tmpl;
+  {
+    std::ifstream in(std::string(DEM_SOURCE_DIR) + "/reports/templates/index.md");
+    tmpl.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  std::map<std::string, int> keys;
+  for (const auto& s : validation::other_study_sections()) {
+    REQUIRE(tmpl.find("\n## " + s.heading + "\n") != std::string::npos);
+    REQUIRE(tmpl.find("{{" + s.table_key + "}}") != std::string::npos);
+    REQUIRE(++keys[s.table_key] == 1);
+  }
+  REQUIRE(keys.size() == 5);  // decisions, convergence, stability, critical state, liquefaction
+}
+
+TEST_CASE("report stamps: a stamp on the paper study's baseline is said under its heading", "[report][stamp]") {
+  const fs::path dir = dem::test::scratch_dir("report_stamp_same");
+  write_json(dir / "stability" / "stamp.json", validation::stamp_json({"0.1.0+aaaa", "1111111111111111", 27, 1, "2026-11-20"}));
+  // The decisions study at 1,000 spheres: its stamp inside decisions.json, on the same baseline.
+  write_json(dir / "decisions" / "decisions.json",
+             {{"schema", 2}, {"stamp", validation::stamp_json({"0.1.0+aaaa", "1111111111111111", 1000, 3, "2026-11-02"})}});
+  const auto out = validation::stamp_sections(report_text(), dir, all_run(), paper, false);
+  REQUIRE(out.refused.empty());
+  REQUIRE(out.text.find("## Appendix: Stability\n\n*Made by engine `0.1.0+aaaa` on baseline `1111111111111111` (27 spheres, 1 sample, "
+                        "2026-11-20). Its baseline is its own scene's (`scenes/stability/base.yaml`), not the paper study's, by "
+                        "design.*\n\nbody of Appendix: Stability\n") != std::string::npos);
+  REQUIRE(out.text.find("## Appendix: What the paper's open choices change\n\n*Made by engine `0.1.0+aaaa` on baseline "
+                        "`1111111111111111` (1,000 spheres, 3 samples, 2026-11-02).*\n") != std::string::npos);
+  REQUIRE(out.text.find("⚠") == std::string::npos);
+  // Stamped again (a section's line already there): replaced, not doubled.
+  const auto again = validation::stamp_sections(out.text, dir, all_run(), paper, false);
+  REQUIRE(again.text == out.text);
+}
+
+TEST_CASE("report stamps: a section without a stamp says so; a section not run has no line", "[report][stamp]") {
+  const fs::path dir = dem::test::scratch_dir("report_stamp_none");
+  write_json(dir / "decisions" / "decisions.json", {{"schema", 2}});  // made before stamps
+  auto values = all_run();
+  values["file.liquefaction"] = "";  // not run yet
+  const auto out = validation::stamp_sections(report_text(), dir, values, paper, false);
+  REQUIRE(out.refused.empty());
+  const std::string none = "*Stamp not recorded: made before stamps (its engine and baseline are unknown).*";
+  REQUIRE(out.text.find("## Appendix: What the paper's open choices change\n\n" + none + "\n") != std::string::npos);
+  REQUIRE(out.text.find("## Appendix: Critical state: friction, void ratio and coordination against μ\n\n" + none + "\n") != std::string::npos);
+  REQUIRE(out.text.find("## Appendix: Liquefaction: cyclic stress ratio against cycles\n\nbody of") != std::string::npos);
+  // The stability matrix prepares from its own scene: another baseline is said, not refused.
+  write_json(dir / "stability" / "stamp.json", validation::stamp_json({"0.1.0+aaaa", "3333333333333333", 216, 1, "2026-11-20"}));
+  const auto own = validation::stamp_sections(report_text(), dir, values, paper, false);
+  REQUIRE(own.refused.empty());
+  REQUIRE(own.text.find("\n## Appendix: Stability\n\n*Made by engine `0.1.0+aaaa` on baseline `3333333333333333` (216 spheres") != std::string::npos);
+  // ... but another engine is refused there too.
+  write_json(dir / "stability" / "stamp.json", validation::stamp_json({"0.1.0+bbbb", "3333333333333333", 216, 1, "2026-11-20"}));
+  REQUIRE_THAT(validation::stamp_sections(report_text(), dir, values, paper, false).refused.at(0),
+               Catch::Contains("Stability") && Catch::Contains("another engine"));
+  // The paper study's own stamp not recorded: nothing to compare against, nothing refused.
+  write_json(dir / "stability" / "stamp.json", validation::stamp_json({"E", "2222222222222222", 27, 1, "2026-11-20"}));
+  const auto unknown_paper = validation::stamp_sections(report_text(), dir, values, Stamp{}, false);
+  REQUIRE(unknown_paper.refused.empty());
+  REQUIRE(unknown_paper.text.find("*Made by engine `E` on baseline `2222222222222222`") != std::string::npos);
+}
+
+TEST_CASE("report stamps: another baseline is refused, then headed ⚠ with --allow-other-baseline", "[report][stamp]") {
+  const fs::path dir = dem::test::scratch_dir("report_stamp_other");
+  // The convergence summary's own fields (engine, baseline, date; no spheres or samples).
+  write_json(dir / "convergence" / "summary.json",
+             {{"schema", 1}, {"engine", "0.1.0+aaaa"}, {"baseline", "2222222222222222"}, {"date", "2026-11-26"}, {"runs", nlohmann::json::array()}});
+  const auto refused = validation::stamp_sections(report_text(), dir, all_run(), paper, false);
+  REQUIRE(refused.refused.size() == 1);
+  const std::string& why = refused.refused.front();
+  REQUIRE_THAT(why, Catch::Contains("Convergence: error against run time") && Catch::Contains("2222222222222222") &&
+                        Catch::Contains("1111111111111111") && Catch::Contains("--allow-other-baseline") && Catch::Contains("baseline"));
+  const auto kept = validation::stamp_sections(report_text(), dir, all_run(), paper, true);
+  REQUIRE(kept.refused.empty());
+  REQUIRE(kept.other == std::vector<std::string>{"Appendix: Convergence: error against run time"});
+  REQUIRE(kept.text.find("\n## Appendix: ⚠ from another baseline: Convergence: error against run time\n\n*⚠ Made by engine `0.1.0+aaaa` on "
+                         "baseline `2222222222222222` (spheres not recorded, samples not recorded, 2026-11-26); the paper study's numbers "
+                         "were made by engine `0.1.0+aaaa` on baseline `1111111111111111` (8,000 spheres, 5 samples, 2026-11-27)") !=
+          std::string::npos);
+  // Still the same section for `report --previous`.
+  REQUIRE(validation::section_name("## Appendix: ⚠ from another baseline: Convergence: error against run time") ==
+          "Convergence: error against run time");
+  // Another engine on the same baseline: refused too, and headed as another engine.
+  write_json(dir / "convergence" / "summary.json", {{"engine", "0.1.0+bbbb"}, {"baseline", "1111111111111111"}, {"date", "2026-11-26"}});
+  REQUIRE_THAT(validation::stamp_sections(report_text(), dir, all_run(), paper, false).refused.at(0), Catch::Contains("another engine"));
+  REQUIRE(validation::stamp_sections(report_text(), dir, all_run(), paper, true).text.find("## Appendix: ⚠ from another engine: Convergence") !=
+          std::string::npos);
+}
+
+TEST_CASE("report stamps: a listed heading missing from the report is an error naming it", "[report][stamp]") {
+  const fs::path dir = dem::test::scratch_dir("report_stamp_heading");
+  std::string text = report_text();
+  const std::string stability = "\n## Appendix: Stability\n";
+  text.replace(text.find(stability), stability.size(), "\n## Appendix: Stable\n");
+  REQUIRE_THROWS_WITH(validation::stamp_sections(text, dir, all_run(), paper, false), Catch::Contains("## Appendix: Stability"));
+}

@@ -1,0 +1,74 @@
+// build/bin/report on a copy of the committed reports/ with stamps put in: the paper study's in
+// validation.json, the decisions study's (same baseline and engine) in decisions.json, the critical
+// state's (another baseline) in critical_state/stamp.json. The report is refused, exit 1, naming
+// the section, both baselines and the option, and index.md is left as it was; with
+// --allow-other-baseline it is written, the section headed ⚠ and named in the header.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/io/io_test_support.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string source = DEM_SOURCE_DIR;
+const std::string bin = std::string(DEM_BINARY_DIR) + "/bin/";
+
+// `file`'s JSON with `key` set to `value`, the other keys kept in their order.
+void set_key(const fs::path& file, const std::string& key, const nlohmann::ordered_json& value) {
+  nlohmann::ordered_json j = nlohmann::ordered_json::parse(dem::test::read_bytes(file.string()));
+  j[key] = value;
+  std::ofstream(file) << j.dump(1) << "\n";
+}
+
+}  // namespace
+
+TEST_CASE("report: a section from another baseline refused, then kept under ⚠ with --allow-other-baseline", "[report][stamp][cli]") {
+  const fs::path dir = dem::test::scratch_dir("report_stamps_cli");
+  const fs::path out = dir / "reports";
+  fs::copy(source + "/reports", out, fs::copy_options::recursive);
+  const std::string previous = (dir / "previous_index.md").string();
+  fs::copy_file(source + "/reports/index.md", previous);
+  const nlohmann::ordered_json paper = {{"engine", "0.1.0+aaaa"}, {"baseline", "1111111111111111"}, {"spheres", 8000}, {"samples", 5}, {"date", "2026-11-27"}};
+  set_key(out / "validation.json", "stamp", paper);
+  set_key(out / "decisions" / "decisions.json", "stamp",
+          {{"engine", "0.1.0+aaaa"}, {"baseline", "1111111111111111"}, {"spheres", 1000}, {"samples", 3}, {"date", "2026-11-02"}});
+  std::ofstream(out / "critical_state" / "stamp.json")
+      << R"({"engine": "0.1.0+aaaa", "baseline": "2222222222222222", "spheres": 8000, "samples": 1, "date": "2026-11-25"})" << "\n";
+  const std::string before = dem::test::read_bytes((out / "index.md").string());
+  const std::string report = "cd '" + source + "' && '" + bin + "report' --results '" + (dir / "no_results").string() +
+                             "' --references reference_data/paper.yaml --out '" + out.string() + "' --sample seed1 --previous '" + previous + "'";
+  const auto refused = dem::test::run_command(report + " 2>&1");
+  INFO(refused.out);
+  CHECK(refused.exit_code == 1);
+  CHECK_THAT(refused.out, Catch::Contains("Critical state: friction, void ratio and coordination against μ") && Catch::Contains("2222222222222222") &&
+                              Catch::Contains("1111111111111111") && Catch::Contains("--allow-other-baseline"));
+  CHECK(dem::test::read_bytes((out / "index.md").string()) == before);  // not written
+  const auto kept = dem::test::run_command(report + " --allow-other-baseline 2>&1");
+  INFO(kept.out);
+  REQUIRE(kept.exit_code == 0);
+  const std::string text = dem::test::read_bytes((out / "index.md").string());
+  CHECK_THAT(text, Catch::Contains("The paper study's numbers were made by engine `0.1.0+aaaa` on baseline `1111111111111111` (8,000 spheres, "
+                                   "5 samples, 2026-11-27)"));
+  CHECK_THAT(text, Catch::Contains("\n⚠ Made on another baseline or engine than the paper study's, kept by `report --allow-other-baseline` "
+                                   "and counted in no verdict: \"Critical state: friction, void ratio and coordination against μ\" "
+                                   "(another baseline).\n"));
+  CHECK_THAT(text, Catch::Contains("\n## Appendix: ⚠ from another baseline: Critical state: friction, void ratio and coordination against μ\n\n"
+                                   "*⚠ Made by engine `0.1.0+aaaa` on baseline `2222222222222222` (8,000 spheres, 1 sample, 2026-11-25)"));
+  CHECK_THAT(text, Catch::Contains("\n## Appendix: What the paper's open choices change\n\n*Made by engine `0.1.0+aaaa` on baseline "
+                                   "`1111111111111111` (1,000 spheres, 3 samples, 2026-11-02).*\n"));
+  CHECK_THAT(text, Catch::Contains("\n## Appendix: Liquefaction: cyclic stress ratio against cycles\n\n*Stamp not recorded: made before stamps "
+                                   "(its engine and baseline are unknown).*\n"));
+  // Written again from itself (--previous the ⚠ report): the section still found, one stamp line.
+  fs::copy_file(out / "index.md", previous, fs::copy_options::overwrite_existing);
+  const auto again = dem::test::run_command(report + " --allow-other-baseline 2>&1");
+  INFO(again.out);
+  REQUIRE(again.exit_code == 0);
+  CHECK(dem::test::read_bytes((out / "index.md").string()) == text);
+}

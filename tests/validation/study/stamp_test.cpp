@@ -1,0 +1,115 @@
+// A study's stamp from its results: the engine and the baseline of its first preparation (seed1,
+// its first density, the named variant's), the spheres of that preparation, the samples of the
+// manifest; and the stamp's JSON read back, "not recorded" for what it lacks.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <hdf5.h>
+
+#include "engine/io/io_test_support.hpp"
+#include "io/hdf5.hpp"
+#include "study/baseline.hpp"
+#include "study/stamp.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string scene(double time_step, int seed) {
+  return "name: x\nparticles:\n  lattice: {n: [2, 2, 2], spacing: 0.005, seed: " + std::to_string(seed) +
+         "}\nmaterial: {density: 2650, law: linear, kn: 1000000, friction: 0}\nnumerics: {time_step: " + std::to_string(time_step) + "}\n";
+}
+
+// A complete result: status, software_version, scene_yaml and one frame of `spheres` positions.
+void write_result(const fs::path& file, const std::string& engine, const std::string& scene_yaml, int spheres) {
+  fs::create_directories(file.parent_path());
+  dem::h5::Handle f = dem::h5::create_file(file.string());
+  dem::h5::set_attribute(f, "status", std::string("complete"));
+  dem::h5::set_attribute(f, "software_version", engine);
+  dem::h5::write_text(f, "scene_yaml", scene_yaml);
+  {
+    dem::h5::Handle g = dem::h5::create_group(f, "timeseries");
+    dem::h5::write<double>(g, "void_ratio", {0.9, 0.7}, 1, "1");
+  }
+  dem::h5::Handle p = dem::h5::create_group(f, "particles");
+  dem::h5::Handle all = dem::h5::create_group(p, "all");
+  dem::h5::Handle position = dem::h5::create_group(all, "position");
+  const hsize_t dims[3] = {1, static_cast<hsize_t>(spheres), 3};
+  const std::vector<double> zeros(3 * static_cast<std::size_t>(spheres), 0.0);
+  const hid_t space = H5Screate_simple(3, dims, nullptr);
+  const hid_t set = H5Dcreate2(position, "value", H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, zeros.data());
+  H5Dclose(set);
+  H5Sclose(space);
+}
+
+}  // namespace
+
+TEST_CASE("stamp: from a study's results, its first preparation of seed1 and the named variant", "[stamp]") {
+  const fs::path dir = dem::test::scratch_dir("stamp_of_results");
+  // Variants "other" (listed first, another time step, engine B) and "base"; densities dense then
+  // loose; seeds 2 and 1 (seed2 listed first). The stamp of "base" must be base's seed1 dense
+  // preparation: engine A, 27 spheres, its scene's baseline.
+  std::ofstream runs(dir / "runs.tsv");
+  runs << "# variant\tdensity\ttest\trun\tresult\tstarts_from\tmay_fail\tsettings\tseed\n";
+  for (const std::string variant : {"other", "base"})
+    for (int seed : {2, 1})
+      for (const std::string density : {"dense", "loose"}) {
+        const std::string run = "seed" + std::to_string(seed) + "/" + variant + "_" + density + "_prepare";
+        runs << variant << "\t" << density << "\t-\t" << run << "\t/elsewhere/" << run << ".h5\t-\t0\tx\t" << seed << "\n";
+        const bool is_it = variant == "base" && seed == 1 && density == "dense";
+        write_result(dir / ("seed" + std::to_string(seed)) / (variant + "_" + density + "_prepare.h5"), variant == "base" ? "A" : "B",
+                     scene(variant == "base" ? 1e-6 : 2e-6, seed), is_it ? 27 : 8);
+      }
+  runs.close();
+  const validation::Stamp s = validation::stamp_of_results(dir.string(), "base");
+  REQUIRE(s.engine == "A");
+  REQUIRE(s.baseline == validation::baseline_of(scene(1e-6, 1)));
+  REQUIRE(s.spheres == 27);
+  REQUIRE(s.samples == 2);
+  REQUIRE(s.date.size() == 10);  // YYYY-MM-DD, the day the files were written
+  // Without a variant (or one the study lacks): the manifest's first preparation of seed1, other's.
+  const validation::Stamp first = validation::stamp_of_results(dir.string());
+  REQUIRE(first.engine == "B");
+  REQUIRE(first.baseline == validation::baseline_of(scene(2e-6, 1)));
+  REQUIRE(first.baseline != s.baseline);
+  REQUIRE(validation::stamp_of_results(dir.string(), "none").engine == "B");
+  // A folder without a manifest is refused, naming it.
+  REQUIRE_THROWS_WITH(validation::stamp_of_results((dir / "nothing").string()), Catch::Contains("nothing"));
+}
+
+TEST_CASE("stamp: JSON written and read back; what is missing is not recorded", "[stamp]") {
+  const validation::Stamp s{"0.1.0+abc", "0123456789abcdef", 8000, 5, "2026-11-27"};
+  const validation::Stamp back = validation::stamp_from_json(nlohmann::json::parse(validation::stamp_json(s).dump()));
+  REQUIRE(back.engine == s.engine);
+  REQUIRE(back.baseline == s.baseline);
+  REQUIRE(back.spheres == 8000);
+  REQUIRE(back.samples == 5);
+  REQUIRE(back.date == s.date);
+  const nlohmann::ordered_json none = validation::stamp_json(validation::Stamp{});
+  for (const char* key : {"engine", "baseline", "spheres", "samples", "date"}) REQUIRE(none.at(key) == "not recorded");
+  REQUIRE_FALSE(validation::stamp_from_json(none).recorded());
+  REQUIRE_FALSE(validation::stamp_from_json(nlohmann::json()).recorded());  // no stamp at all
+  // Only some fields (the convergence summary's engine, baseline and date).
+  const validation::Stamp part = validation::stamp_from_json({{"engine", "E"}, {"baseline", "b"}, {"date", "2026-11-01"}, {"runs", 3}});
+  REQUIRE(part.recorded());
+  REQUIRE(part.spheres == 0);
+  REQUIRE(part.samples == 0);
+}
+
+TEST_CASE("stamp: several studies' stamps combined list the values on which they differ", "[stamp]") {
+  const validation::Stamp a{"E", "b1", 8000, 3, "2026-11-20"}, b{"E", "b2", 8000, 3, "2026-11-25"};
+  const validation::Stamp c = validation::combined({a, b, a});
+  REQUIRE(c.engine == "E");
+  REQUIRE(c.baseline == "b1, b2");
+  REQUIRE(c.date == "2026-11-25");
+  REQUIRE(validation::combined({a, a}).baseline == "b1");
+  // A study not run yet (nothing recorded) adds nothing, also when it comes first.
+  const validation::Stamp d = validation::combined({validation::Stamp{}, a, validation::Stamp{"", "", 0, 0, "2026-12-01"}});
+  REQUIRE(d.engine == "E");
+  REQUIRE(d.baseline == "b1");
+  REQUIRE(d.date == "2026-11-20");
+}

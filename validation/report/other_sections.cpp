@@ -1,0 +1,128 @@
+#include "report/other_sections.hpp"
+
+#include <stdexcept>
+
+#include "study/format.hpp"
+#include "study/json_file.hpp"
+
+namespace fs = std::filesystem;
+
+namespace validation {
+
+const std::vector<OtherStudySection>& other_study_sections() {
+  static const std::vector<OtherStudySection> list = {
+      {"Appendix: What the paper's open choices change", "file.decisions", "decisions/decisions.json", "stamp", ""},
+      {"Appendix: Convergence: error against run time", "file.convergence", "convergence/summary.json", "", ""},
+      {"Appendix: Stability", "file.stability", "stability/stamp.json", "", "scenes/stability/base.yaml"},
+      {"Appendix: Critical state: friction, void ratio and coordination against μ", "file.critical_state", "critical_state/stamp.json", "", ""},
+      {"Appendix: Liquefaction: cyclic stress ratio against cycles", "file.liquefaction", "liquefaction/stamp.json", "", ""},
+  };
+  return list;
+}
+
+namespace {
+
+Stamp stamp_in(const fs::path& file, const std::string& key) {
+  std::error_code ec;
+  if (!fs::exists(file, ec)) return {};
+  const nlohmann::json j = read_json_file(file.string());  // a file there but not JSON: an error, naming it
+  if (key.empty()) return stamp_from_json(j);
+  return j.is_object() && j.contains(key) ? stamp_from_json(j.at(key)) : Stamp{};
+}
+
+// The stamp lines stamp_sections writes, to replace one already there.
+bool is_stamp_line(const std::string& line) {
+  return line.rfind("*Made by engine ", 0) == 0 || line.rfind("*Stamp not recorded", 0) == 0 || line.rfind("*⚠ Made by engine ", 0) == 0;
+}
+
+// A stamp as the first words of a sentence: "Made by engine ..." or "Stamp not recorded: ...".
+std::string sentence(const Stamp& s) {
+  std::string text = stamp_text(s);
+  if (!s.recorded()) return "Stamp " + text;
+  text[0] = 'M';
+  return text;
+}
+
+}  // namespace
+
+Stamp read_section_stamp(const fs::path& report, const OtherStudySection& section) {
+  return stamp_in(report / section.stamp_file, section.stamp_key);
+}
+
+Stamp read_paper_stamp(const fs::path& report) { return stamp_in(report / "validation.json", "stamp"); }
+
+std::string stamp_text(const Stamp& s) {
+  if (!s.recorded()) return "not recorded: made before stamps (its engine and baseline are unknown)";
+  const std::string engine = s.engine.empty() ? "an engine not recorded" : "engine `" + s.engine + "`";
+  const std::string baseline = s.baseline.empty() ? "a baseline not recorded" : "baseline `" + s.baseline + "`";
+  const std::string spheres = s.spheres > 0 ? thousands(s.spheres) + " spheres" : "spheres not recorded";
+  const std::string samples = s.samples > 0 ? std::to_string(s.samples) + " sample" + (s.samples == 1 ? "" : "s") : "samples not recorded";
+  return "made by " + engine + " on " + baseline + " (" + spheres + ", " + samples + ", " + (s.date.empty() ? "date not recorded" : s.date) + ")";
+}
+
+std::string stamp_difference(const Stamp& section, const Stamp& paper, bool baselines) {
+  const bool baseline = baselines && !section.baseline.empty() && !paper.baseline.empty() && section.baseline != paper.baseline;
+  const bool engine = !section.engine.empty() && !paper.engine.empty() && section.engine != paper.engine;
+  return baseline && engine ? "baseline and engine" : baseline ? "baseline" : engine ? "engine" : "";
+}
+
+std::vector<std::pair<OtherStudySection, std::string>> sections_from_elsewhere(const fs::path& report,
+                                                                               const std::map<std::string, std::string>& values,
+                                                                               const Stamp& paper) {
+  std::vector<std::pair<OtherStudySection, std::string>> out;
+  for (const OtherStudySection& section : other_study_sections()) {
+    const auto key = values.find(section.table_key);
+    if (key == values.end() || key->second.empty()) continue;
+    const std::string differs = stamp_difference(read_section_stamp(report, section), paper, section.own_scene.empty());
+    if (!differs.empty()) out.emplace_back(section, differs);
+  }
+  return out;
+}
+
+StampedReport stamp_sections(const std::string& text, const fs::path& report, const std::map<std::string, std::string>& values,
+                             const Stamp& paper, bool allow_other) {
+  StampedReport out{text, {}, {}};
+  for (const OtherStudySection& section : other_study_sections()) {
+    const std::string heading = "## " + section.heading;
+    const std::size_t at = out.text.find("\n" + heading + "\n");
+    if (at == std::string::npos)
+      throw std::runtime_error("the report has no heading '" + heading + "' (validation/report/other_sections.cpp lists it: the list and the template disagree)");
+    const auto key = values.find(section.table_key);
+    if (key == values.end() || key->second.empty()) continue;  // not run yet: the section says so, and has no numbers
+    const Stamp stamp = read_section_stamp(report, section);
+    const std::string differs = stamp_difference(stamp, paper, section.own_scene.empty());
+    const std::string own = section.own_scene.empty() || !stamp.recorded()
+                                ? ""
+                                : " Its baseline is its own scene's (`" + section.own_scene + "`), not the paper study's, by design.";
+    std::string line = "*" + sentence(stamp) + "." + own + "*";
+    std::string new_heading = heading;
+    if (!differs.empty()) {
+      const std::string both = "this section's " + stamp.baseline + " / " + stamp.engine + ", the paper study's " + paper.baseline + " / " +
+                               paper.engine;
+      if (!allow_other) {
+        out.refused.push_back("section '" + section.heading + "' (" + section.stamp_file + ") is from another " + differs + " than the paper study (" +
+                              "baseline / engine: " + both + "); `report --allow-other-baseline` keeps it, headed ⚠");
+        continue;
+      }
+      const char* mark = differs == "baseline" ? other_baseline_mark : differs == "engine" ? other_engine_mark : other_both_mark;
+      const std::string name = section.heading.rfind("Appendix: ", 0) == 0 ? section.heading.substr(10) : section.heading;
+      new_heading = std::string("## ") + (name == section.heading ? "" : "Appendix: ") + mark + name;
+      line = "*⚠ " + sentence(stamp) + "; the paper study's numbers were " + stamp_text(paper) + " (kept by `report --allow-other-baseline`)." +
+             own + "*";
+      out.other.push_back(section.heading);
+    }
+    // The heading, a blank line, then the stamp line (one already there replaced).
+    const std::size_t body = at + 1 + heading.size() + 1;
+    std::size_t rest = body;
+    while (rest < out.text.size() && out.text[rest] == '\n') ++rest;
+    const std::size_t line_end = out.text.find('\n', rest);
+    if (line_end != std::string::npos && is_stamp_line(out.text.substr(rest, line_end - rest))) {
+      rest = line_end + 1;
+      while (rest < out.text.size() && out.text[rest] == '\n') ++rest;
+    }
+    out.text = out.text.substr(0, at + 1) + new_heading + "\n\n" + line + "\n\n" + out.text.substr(rest);
+  }
+  return out;
+}
+
+}  // namespace validation

@@ -1,0 +1,71 @@
+#pragma once
+// The report's appendix sections that other studies make (compare-runs), declared once: each
+// section's heading, the template key of its table and where its stamp is (study/stamp.hpp). The
+// report prints, under each such heading, which engine and baseline its numbers come from, and
+// refuses a section made on another baseline or engine than the paper study's unless asked to
+// keep it (then headed ⚠). The paper study's own stamp is reports/validation.json's.
+#include <filesystem>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "study/stamp.hpp"
+
+namespace validation {
+
+struct OtherStudySection {
+  std::string heading;     // the template's level-2 heading, without "## "
+  std::string table_key;   // the template key of its table: empty (the study has not run) -> no stamp line
+  std::string stamp_file;  // relative to the report's folder
+  std::string stamp_key;   // the key of stamp_file that holds the stamp; "": its top level
+  // Its study prepares from its own scene by design (the stability matrix: 216 spheres compressed
+  // fast), so its baseline is said but never compared with the paper study's; its engine is.
+  std::string own_scene;   // "": the paper study's preparation; else that scene
+};
+
+// The list, in the report's order.
+const std::vector<OtherStudySection>& other_study_sections();
+
+// A section's stamp as its file records it; nothing recorded when the file, or its key, is not there.
+Stamp read_section_stamp(const std::filesystem::path& report, const OtherStudySection& section);
+// The paper study's: the "stamp" of REPORT/validation.json.
+Stamp read_paper_stamp(const std::filesystem::path& report);
+
+// "made by engine `E` on baseline `B` (8,000 spheres, 5 samples, 2026-11-27)"; a stamp with nothing
+// recorded: "not recorded: made before stamps (its engine and baseline are unknown)".
+std::string stamp_text(const Stamp& s);
+
+// What differs between a section's stamp and the paper study's: "baseline", "engine", "baseline and
+// engine", or "" (the same, or one of the two not recorded: nothing to compare). Baselines are
+// compared only when `baselines` (not for a study of its own scene).
+std::string stamp_difference(const Stamp& section, const Stamp& paper, bool baselines = true);
+
+// The sections, of those whose table key is filled in `values`, whose stamp differs from `paper`
+// (stamp_difference), each with what differs: what stamp_sections refuses or heads ⚠.
+std::vector<std::pair<OtherStudySection, std::string>> sections_from_elsewhere(const std::filesystem::path& report,
+                                                                               const std::map<std::string, std::string>& values,
+                                                                               const Stamp& paper);
+
+// The outcome of stamping a report's text.
+struct StampedReport {
+  std::string text;
+  std::vector<std::string> refused;  // one message per section refused (empty: the text can be written)
+  std::vector<std::string> other;    // the headings of the sections kept from another baseline or engine
+};
+
+// `text` (a filled report) with a stamp line under the heading of every listed section whose
+// table key is filled in `values`; a section whose stamp differs from `paper` (stamp_difference)
+// is refused, or, with `allow_other`, headed "⚠ from another baseline: ..." (or engine) with both
+// stamps said. Throws std::runtime_error when a listed heading is not in `text` (the list and the
+// template disagree). A stamp line already under a heading (a section kept from an earlier
+// report) is replaced.
+StampedReport stamp_sections(const std::string& text, const std::filesystem::path& report, const std::map<std::string, std::string>& values,
+                             const Stamp& paper, bool allow_other);
+
+// The marks stamp_sections puts before a heading's name (section_name takes them off).
+inline constexpr const char* other_baseline_mark = "⚠ from another baseline: ";
+inline constexpr const char* other_engine_mark = "⚠ from another engine: ";
+inline constexpr const char* other_both_mark = "⚠ from another baseline and engine: ";
+
+}  // namespace validation

@@ -1,0 +1,47 @@
+#pragma once
+// A stamp: which engine, on which baseline, at which size and when a study's numbers were made,
+// recorded beside a section's table (validation.json, decisions.json, stamp.json) so that the
+// report can say it under the section's heading and refuse to splice a section from another
+// baseline in silence.
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace validation {
+
+struct Stamp {
+  std::string engine;    // the results' software_version ("": not recorded)
+  std::string baseline;  // baseline_of the study's first preparation (seed1, its first density)
+  long spheres = 0;      // of that preparation (0: not recorded)
+  long samples = 0;      // the samples the study's manifest lists (0: not recorded)
+  std::string date;      // the day (UTC, YYYY-MM-DD) its last result was written
+  bool recorded() const { return !engine.empty() || !baseline.empty(); }
+};
+
+// The text a stamp field has in JSON when it is not recorded.
+inline constexpr const char* not_recorded = "not recorded";
+
+// The stamp of the study whose results are in `dir` (its runs.tsv): its first preparation (of seed1,
+// or of the study's one sample; the manifest's first density; of `variant` when the study has it,
+// e.g. the decisions study's baseline reading) gives the engine, the baseline and
+// the spheres, the manifest the samples, the newest complete result the date. Throws, naming the
+// folder, when it has no manifest; a field its results do not give stays not recorded.
+Stamp stamp_of_results(const std::string& dir, const std::string& variant = "");
+
+// Several studies' stamps made one (a section fed by several, e.g. the liquefaction studies of
+// two densities): a field on which they differ lists every value ("a, b"), so that it differs from
+// the paper study's; spheres and samples are the first's, the date the latest. A stamp without
+// engine or baseline (a study not run yet) is left out, unless none has them (then the first).
+Stamp combined(const std::vector<Stamp>& stamps);
+
+// {"engine", "baseline", "spheres", "samples", "date"}, each "not recorded" when it is not.
+nlohmann::ordered_json stamp_json(const Stamp& s);
+// The stamp in `j` (an object with those keys, any of them missing or "not recorded"); a `j`
+// that is not an object: nothing recorded.
+Stamp stamp_from_json(const nlohmann::json& j);
+
+// OUT/stamp.json.
+void write_stamp_file(const std::string& out_dir, const Stamp& s);
+
+}  // namespace validation
