@@ -62,8 +62,7 @@ std::string stamp_text(const Stamp& s) {
 
 std::string stamp_difference(const Stamp& section, const Stamp& paper, bool baselines) {
   const bool baseline = baselines && !section.baseline.empty() && !paper.baseline.empty() && section.baseline != paper.baseline;
-  const bool engine = !section.engine.empty() && !paper.engine.empty() && section.engine != paper.engine;
-  return baseline && engine ? "baseline and engine" : baseline ? "baseline" : engine ? "engine" : "";
+  return baseline ? "baseline" : "";
 }
 
 std::vector<std::pair<OtherStudySection, std::string>> sections_from_elsewhere(const fs::path& report,
@@ -104,7 +103,7 @@ StampedReport stamp_sections(const std::string& text, const fs::path& report, co
                               "baseline / engine: " + both + "); `report --allow-other-baseline` keeps it, headed ⚠");
         continue;
       }
-      const char* mark = differs == "baseline" ? other_baseline_mark : differs == "engine" ? other_engine_mark : other_both_mark;
+      const char* mark = other_baseline_mark;
       const std::string name = section.heading.rfind("Appendix: ", 0) == 0 ? section.heading.substr(10) : section.heading;
       new_heading = std::string("## ") + (name == section.heading ? "" : "Appendix: ") + mark + name;
       line = "*⚠ " + sentence(stamp) + "; the paper study's numbers were " + stamp_text(paper) + " (kept by `report --allow-other-baseline`)." +

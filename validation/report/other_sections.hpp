@@ -2,7 +2,7 @@
 // The report's appendix sections that other studies make (compare-runs), declared once: each
 // section's heading, the template key of its table and where its stamp is (study/stamp.hpp). The
 // report prints, under each such heading, which engine and baseline its numbers come from, and
-// refuses a section made on another baseline or engine than the paper study's unless asked to
+// refuses a section made on another baseline than the paper study's unless asked to
 // keep it (then headed ⚠). The paper study's own stamp is reports/validation.json's.
 #include <filesystem>
 #include <map>
@@ -36,9 +36,11 @@ Stamp read_paper_stamp(const std::filesystem::path& report);
 // recorded: "not recorded: made before stamps (its engine and baseline are unknown)".
 std::string stamp_text(const Stamp& s);
 
-// What differs between a section's stamp and the paper study's: "baseline", "engine", "baseline and
-// engine", or "" (the same, or one of the two not recorded: nothing to compare). Baselines are
-// compared only when `baselines` (not for a study of its own scene).
+// What differs between a section's stamp and the paper study's: "baseline" or "" (the same, or one
+// of the two not recorded: nothing to compare; not compared unless `baselines`, i.e. not for a study
+// of its own scene). Engines are not compared: the recorded version is the commit, which changes
+// with every commit whatever it touches (a committed section would be refused by the next commit's
+// report); each stamp line names its engine, so a difference is said, not hidden.
 std::string stamp_difference(const Stamp& section, const Stamp& paper, bool baselines = true);
 
 // The sections, of those whose table key is filled in `values`, whose stamp differs from `paper`
@@ -51,12 +53,12 @@ std::vector<std::pair<OtherStudySection, std::string>> sections_from_elsewhere(c
 struct StampedReport {
   std::string text;
   std::vector<std::string> refused;  // one message per section refused (empty: the text can be written)
-  std::vector<std::string> other;    // the headings of the sections kept from another baseline or engine
+  std::vector<std::string> other;    // the headings of the sections kept from another baseline
 };
 
 // `text` (a filled report) with a stamp line under the heading of every listed section whose
 // table key is filled in `values`; a section whose stamp differs from `paper` (stamp_difference)
-// is refused, or, with `allow_other`, headed "⚠ from another baseline: ..." (or engine) with both
+// is refused, or, with `allow_other`, headed "⚠ from another baseline: ..." with both
 // stamps said. Throws std::runtime_error when a listed heading is not in `text` (the list and the
 // template disagree). A stamp line already under a heading (a section kept from an earlier
 // report) is replaced.
@@ -65,7 +67,5 @@ StampedReport stamp_sections(const std::string& text, const std::filesystem::pat
 
 // The marks stamp_sections puts before a heading's name (section_name takes them off).
 inline constexpr const char* other_baseline_mark = "⚠ from another baseline: ";
-inline constexpr const char* other_engine_mark = "⚠ from another engine: ";
-inline constexpr const char* other_both_mark = "⚠ from another baseline and engine: ";
 
 }  // namespace validation

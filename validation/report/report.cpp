@@ -58,8 +58,8 @@ std::string section_name(const std::string& heading_line) {
   name = trim(name);
   const std::string appendix = "Appendix: ";
   if (name.rfind(appendix, 0) == 0) name = name.substr(appendix.size());
-  // A section headed as from another baseline or engine (stamp_sections) is still that section.
-  for (const char* mark : {other_baseline_mark, other_engine_mark, other_both_mark})
+  // A section headed as from another baseline (stamp_sections) is still that section.
+  for (const char* mark : {other_baseline_mark})
     if (name.rfind(mark, 0) == 0) return name.substr(std::string(mark).size());
   return name;
 }

@@ -11,6 +11,7 @@
 #include "sections/variants.hpp"
 #include "study/json_file.hpp"
 #include "study/manifest.hpp"
+#include "study/baseline.hpp"
 #include "study/paths.hpp"
 #include "study/results.hpp"
 
@@ -53,6 +54,21 @@ std::string engines_of(const std::vector<ConvergenceRun>& runs) {
   return s;
 }
 
+// The reference's size (its first complete run's spheres) and samples (its complete runs' seeds),
+// for the report's stamp: the settings are the study's first variant's.
+void set_size(ConvergenceSummary& s) {
+  if (s.runs.empty()) return;
+  const std::string reference = s.runs.front().variant;
+  std::set<int> seeds;
+  s.spheres = 0;
+  for (const ConvergenceRun& r : s.runs)
+    if (r.variant == reference && r.status.empty()) {
+      if (s.spheres == 0) s.spheres = r.spheres;
+      seeds.insert(r.seed);
+    }
+  s.samples = static_cast<long>(seeds.size());
+}
+
 }  // namespace
 
 ConvergenceSummary summarise_convergence(const compare_runs::Manifest& manifest, const std::string& results, int threads) {
@@ -87,7 +103,7 @@ ConvergenceSummary summarise_convergence(const compare_runs::Manifest& manifest,
           DensityResults d;
           load_preparation(file, d);
           sample = d.sample;
-          if (variant == manifest.variants.front() && s.baseline.empty()) s.baseline = string_attribute(file, "input_hash");
+          if (variant == manifest.variants.front() && s.baseline.empty()) s.baseline = baseline_of_result(file);
         } else {
           tests.push_back({l.test, load_test(file, l.test)});
           if (run.scene) {
@@ -103,6 +119,7 @@ ConvergenceSummary summarise_convergence(const compare_runs::Manifest& manifest,
     }
   }
   s.engine = engines_of(s.runs);
+  set_size(s);
   return s;
 }
 
@@ -117,6 +134,8 @@ ConvergenceSummary merge_summaries(ConvergenceSummary now, const ConvergenceSumm
     else if (!now.runs[it->second].status.empty()) now.runs[it->second] = r;
   }
   now.engine = engines_of(now.runs);
+  if (now.baseline.empty()) now.baseline = before.baseline;
+  set_size(now);
   return now;
 }
 
@@ -128,6 +147,8 @@ std::string summary_json(const ConvergenceSummary& s) {
   j["engine"] = s.engine;
   j["baseline"] = s.baseline;
   j["date"] = s.date;
+  j["spheres"] = s.spheres;
+  j["samples"] = s.samples;
   j["threads_per_run"] = s.threads;
   json runs = json::array();
   for (const ConvergenceRun& r : s.runs) {
@@ -156,6 +177,8 @@ ConvergenceSummary read_convergence_summary(const std::string& file) {
     s.engine = need(j, "engine", "the file").get<std::string>();
     s.baseline = need(j, "baseline", "the file").get<std::string>();
     s.date = need(j, "date", "the file").get<std::string>();
+    s.spheres = j.value("spheres", 0L);  // the reference's size (the report's stamp)
+    s.samples = j.value("samples", 0L);
     s.threads = need(j, "threads_per_run", "the file").get<int>();
     std::size_t k = 0;
     for (const nlohmann::json& e : need(j, "runs", "the file")) {

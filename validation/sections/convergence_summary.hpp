@@ -27,7 +27,9 @@ struct ConvergenceSummary {
   int schema = 1;
   std::string results;    // the results folder it was read from, relative
   std::string engine;     // the runs' software versions, with their counts when several
-  std::string baseline;   // input hash of the reference's first preparation (the paper study's own at these settings)
+  std::string baseline;   // baseline_of (study/baseline.hpp) the reference's first preparation
+  long spheres = 0;       // the reference's spheres and samples (complete runs)
+  long samples = 0;
   std::string date;       // when summarised (UTC, YYYY-MM-DD)
   int threads = 1;        // threads per run
   std::vector<ConvergenceRun> runs;

@@ -11,7 +11,7 @@
 // decisions/, convergence/, stability/, critical_state/, liquefaction/, bench.md); a part that is
 // missing is said so in its section. --baseline: an earlier baseline's validation.json, compared
 // row by row. Under the heading of each section another study made (report/other_sections.hpp) a
-// line says the engine, baseline, size and date of its numbers; a section whose baseline or engine
+// line says the engine, baseline, size and date of its numbers; a section whose baseline
 // differs from the paper study's (REPORT_DIR/validation.json's stamp) is refused (exit 1, naming
 // it) unless --allow-other-baseline, which heads it "⚠ from another baseline". Exit status: 0; 1 if the report cannot be written, a template names an unknown key
 // or a result file is there but cannot be read; 2 for bad arguments or a --results that is not a
@@ -92,7 +92,7 @@ int tool_main(int argc, char** argv) {
                        "from it, and the header names those sections and that report's date");
   bool allow_other_baseline = false;
   app.add_flag("--allow-other-baseline", allow_other_baseline,
-               "keep a section another study made on another baseline or engine than the paper study's (its stamp says which), "
+               "keep a section another study made on another baseline than the paper study's (its stamp says which), "
                "headed \"⚠ from another baseline\"; without it such a section is refused (exit 1)");
   try {
     app.parse(argc, argv);
@@ -143,7 +143,7 @@ int tool_main(int argc, char** argv) {
     const validation::Stamp paper_stamp = validation::read_paper_stamp(report);
     v["stamp.paper"] = paper_stamp.recorded() ? validation::stamp_text(paper_stamp)
                                               : "made before stamps (their engine and baseline are not recorded, so no section is compared with them)";
-    // The sections kept from another baseline or engine (with --allow-other-baseline), named in the header.
+    // The sections kept from another baseline (with --allow-other-baseline), named in the header.
     std::vector<std::string> elsewhere;
     for (const auto& [section, differs] : validation::sections_from_elsewhere(report, v, paper_stamp))
       elsewhere.push_back("\"" + validation::section_name(section.heading) + "\" (another " + differs + ")");
@@ -159,14 +159,14 @@ int tool_main(int argc, char** argv) {
     if (tmpl.empty()) throw std::runtime_error(opt["--templates"] + "/index.md is missing or empty");
     std::string text = validation::fill(tmpl, v);
     if (!opt["--previous"].empty()) text = with_previous_sections(text, tmpl, v, opt["--previous"]);
-    // Each section another study made, with its stamp; one from another baseline or engine is refused unless allowed.
+    // Each section another study made, with its stamp; one from another baseline is refused unless allowed.
     const validation::StampedReport stamped = validation::stamp_sections(text, report, v, paper_stamp, allow_other_baseline);
     if (!stamped.refused.empty()) {
       for (const std::string& r : stamped.refused) std::fprintf(stderr, "report: %s\n", r.c_str());
       std::fprintf(stderr, "report: %s not written\n", (report / "index.md").c_str());
       return 1;
     }
-    for (const std::string& h : stamped.other) std::fprintf(stderr, "report: warning: '%s' kept from another baseline or engine (headed ⚠)\n", h.c_str());
+    for (const std::string& h : stamped.other) std::fprintf(stderr, "report: warning: '%s' kept from another baseline (headed ⚠)\n", h.c_str());
     text = stamped.text;
     dem::write_file_atomically((report / "index.md").string(), text);
     std::fprintf(stderr, "report written to %s (%zu sample(s) of %s%s)\n", (report / "index.md").c_str(), in.samples.size(),
