@@ -237,6 +237,8 @@ literature: tools
 literature-report: tools
 	@if [ -f $(LITERATURE_RESULTS)/runs.tsv ]; then mkdir -p reports/literature && \
 	  $(BUILD)/bin/validate --results $(LITERATURE_RESULTS) --references reference_data/literature.yaml --out reports/literature; \
+	elif [ -f reports/literature/validation.json ]; then echo "literature: no results in $(LITERATURE_RESULTS); judged again from reports/literature/validation.json"; \
+	  $(BUILD)/bin/validate --from-json reports/literature/validation.json --references reference_data/literature.yaml --out reports/literature; \
 	else echo "literature: no results in $(LITERATURE_RESULTS) yet (make literature)"; fi
 	@if [ -f $(FCC_RESULTS)/runs.tsv ]; then mkdir -p reports/literature/fcc && \
 	  $(BUILD)/bin/validate --results $(FCC_RESULTS) --references reference_data/literature_fcc.yaml --out reports/literature/fcc; \
@@ -251,6 +253,7 @@ report-sections: tools
 	-$(MAKE) --no-print-directory readings-report
 	-reports/critical_state/make_section.sh $(BUILD)/bin $(CRITICAL_STATE) reports/critical_state $(CRITICAL_STATE_ENSEMBLE) $(CRITICAL_STATE_RATES)
 	-reports/liquefaction/make_section.sh $(BUILD)/bin reports/liquefaction $(LIQUEFACTION)
+	-reports/convergence/make_section.sh $(BUILD)/bin $(CONVERGENCE) reports/convergence
 	-$(MAKE) --no-print-directory literature-report
 	@if [ -f $(RESULTS)/runs.tsv ]; then \
 	  $(BUILD)/bin/validate --results $(RESULTS) --references reference_data/paper.yaml --out reports $(VALIDATION_DECISIONS); \
