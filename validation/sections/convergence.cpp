@@ -25,6 +25,7 @@
 #include "study/ensemble.hpp"
 #include "study/json_file.hpp"
 #include "study/markdown_table.hpp"
+#include "study/paths.hpp"
 
 namespace fs = std::filesystem;
 using validation::Budget;
@@ -243,7 +244,7 @@ std::string verdict_reading(const std::vector<DensityBudget>& all, const std::st
     t.row({name, number(miss), number(point) + " (≤ " + number(far) + ")", reading});
   }
   if (n == 0) return "";
-  md << "\nThe paper study's inconsistent rows (`" << validation_json << "`) against the budget: the miss is the distance "
+  md << "\nThe paper study's inconsistent rows (`" << validation::shown_path(validation_json) << "`) against the budget: the miss is the distance "
         "from our ensemble's mean to the paper's region; the budget the sum of the paper's settings' time-step, rate and size "
         "errors as estimated (and with each at the far end of its interval), in the row's units.\n\n"
      << t.text();
