@@ -24,22 +24,12 @@ std::string fixed(double x, int digits) {
 
 }  // namespace
 
-double sd_of(const std::vector<double>& v) {
-  if (v.size() < 2) return nan;
-  double mean = 0;
-  for (double x : v) mean += x;
-  mean /= static_cast<double>(v.size());
-  double ss = 0;
-  for (double x : v) ss += (x - mean) * (x - mean);
-  return std::sqrt(ss / static_cast<double>(v.size() - 1));
-}
+double sd_of(const std::vector<double>& v) { return v.size() < 2 ? nan : spread(v).sd; }
 
 Estimate mean_of(const std::vector<double>& v) {
   if (v.empty()) return {nan, nan};
-  double mean = 0;
-  for (double x : v) mean += x;
-  mean /= static_cast<double>(v.size());
-  return {mean, half_width(sd_of(v), static_cast<int>(v.size()))};
+  const Spread s = spread(v);
+  return {s.mean, half_width(s.sd, s.n)};
 }
 
 FactorError time_step_error(const PerSeed& paper, const PerSeed& half, const PerSeed& quarter, int order) {

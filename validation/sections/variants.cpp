@@ -9,11 +9,6 @@
 
 namespace validation {
 
-double relative_error(double x, double reference) {
-  if (reference == 0) return x == 0 ? 0 : std::numeric_limits<double>::infinity();
-  return std::abs(x - reference) / std::abs(reference);
-}
-
 std::map<std::string, double> convergence_quantities(const std::map<std::string, double>& sample,
                                                      const std::vector<std::pair<std::string, TestResult>>& tests) {
   std::map<std::string, double> q;
@@ -47,16 +42,6 @@ std::map<std::string, double> convergence_quantities(const std::map<std::string,
     if (const Measured m = compute({"qp_strong_fabric_slope", "", 0, 0, 0, ""}, one); m.value) q["qp_slope" + suffix] = *m.value;
   }
   return q;
-}
-
-std::map<std::string, double> relative_errors(const std::map<std::string, double>& variant,
-                                              const std::map<std::string, double>& reference) {
-  std::map<std::string, double> e;
-  for (const auto& [name, ref] : reference) {
-    const auto it = variant.find(name);
-    e[name] = it == variant.end() ? std::numeric_limits<double>::infinity() : relative_error(it->second, ref);
-  }
-  return e;
 }
 
 std::vector<bool> pareto_front(const std::vector<Point>& points) {

@@ -11,9 +11,6 @@
 
 namespace validation {
 
-// |x - reference| / |reference|; 0 when both are 0, +inf when only the reference is 0.
-double relative_error(double x, double reference);
-
 // The quantities a variant is compared on, by name: e0 and the coordination number after the
 // preparation, εv, εd (paper Eq. 4) and the coordination number at the end of every cycle of each
 // test, the mean angle between strain and stress increments over each cycle's legs, and the slope
@@ -21,11 +18,6 @@ double relative_error(double x, double reference);
 // εv and of the coordination number from the first to the second. Missing ones are left out.
 std::map<std::string, double> convergence_quantities(const std::map<std::string, double>& sample,
                                                      const std::vector<std::pair<std::string, TestResult>>& tests);
-
-// Relative error of every quantity of the reference; a quantity the variant lacks is +inf (it
-// stopped early or lacks a cycle), so such a variant is never "within" a tolerance.
-std::map<std::string, double> relative_errors(const std::map<std::string, double>& variant,
-                                              const std::map<std::string, double>& reference);
 
 // A point of the cost-error plane.
 struct Point {

@@ -17,6 +17,7 @@
 #include "engine/io/io_test_support.hpp"
 #include "judge/verdicts.hpp"
 #include "report/report.hpp"
+#include "validation/markdown_cells.hpp"
 
 namespace fs = std::filesystem;
 
@@ -33,19 +34,7 @@ std::vector<std::string> lines_of(const std::string& text) {
 }
 
 // The cells of a Markdown table line ("| a | b \| c |"), the Markdown of each as written.
-std::vector<std::string> cells_of(const std::string& line) {
-  std::vector<std::string> cells;
-  std::string c;
-  for (std::size_t i = 1; i < line.size(); ++i) {
-    if (line[i] == '\\' && i + 1 < line.size() && line[i + 1] == '|') c += "\\|", ++i;
-    else if (line[i] == '|') {
-      const auto a = c.find_first_not_of(' '), b = c.find_last_not_of(' ');
-      cells.push_back(a == std::string::npos ? "" : c.substr(a, b - a + 1));
-      c.clear();
-    } else c += line[i];
-  }
-  return cells;
-}
+std::vector<std::string> cells_of(const std::string& line) { return dem::test::markdown_cells(line, dem::test::Escaped::Keep); }
 
 // The names of the level-2 sections of a report (report.hpp: section_name).
 std::set<std::string> section_names(const std::string& text) {

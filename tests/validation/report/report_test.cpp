@@ -15,6 +15,7 @@
 #include "study/format.hpp"
 #include "report/report.hpp"
 #include "report/report_values.hpp"
+#include "validation/markdown_cells.hpp"
 
 using namespace validation;
 
@@ -474,17 +475,7 @@ std::vector<std::vector<std::string>> read_table(const std::string& text) {
     REQUIRE(line.size() >= 2);
     REQUIRE(line.front() == '|');
     REQUIRE(line.back() == '|');
-    std::vector<std::string> cells;
-    std::string c;
-    for (std::size_t i = 1; i < line.size(); ++i) {
-      if (line[i] == '\\' && i + 1 < line.size() && line[i + 1] == '|') c += '|', ++i;
-      else if (line[i] == '|') {
-        const auto a = c.find_first_not_of(' '), b = c.find_last_not_of(' ');
-        cells.push_back(a == std::string::npos ? "" : c.substr(a, b - a + 1));
-        c.clear();
-      } else c += line[i];
-    }
-    out.push_back(cells);
+    out.push_back(dem::test::markdown_cells(line));
   }
   return out;
 }

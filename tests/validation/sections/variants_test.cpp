@@ -9,19 +9,6 @@
 
 using validation::Point;
 
-TEST_CASE("relative errors against the reference", "[compare]") {
-  CHECK(validation::relative_error(1.1, 1.0) == Approx(0.1));
-  CHECK(validation::relative_error(-0.9, -1.0) == Approx(0.1));  // relative to |reference|
-  CHECK(validation::relative_error(0, 0) == 0);
-  CHECK(std::isinf(validation::relative_error(1e-9, 0)));
-  // A quantity the variant lacks (it stopped before that cycle) is an infinite error, so it is
-  // never "within" a tolerance; quantities the reference lacks are not compared.
-  const auto e = validation::relative_errors({{"e0", 0.75}, {"extra", 1}}, {{"e0", 0.73}, {"ev_cycle2", 0.01}});
-  REQUIRE(e.size() == 2);
-  CHECK(e.at("e0") == Approx(0.02 / 0.73));
-  CHECK(std::isinf(e.at("ev_cycle2")));
-}
-
 TEST_CASE("Pareto front of wall time against error", "[compare]") {
   // Hand-made: (cost, error). Expected front: the reference (100, 0), (50, 0.02), (10, 0.2) and
   // (5, 0.5). Dominated: (60, 0.03) by (50, 0.02); (50, 0.05) by (50, 0.02) at equal cost;

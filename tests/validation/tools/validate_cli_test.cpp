@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/io/io_test_support.hpp"
+#include "validation/markdown_cells.hpp"
 
 namespace fs = std::filesystem;
 
@@ -157,17 +158,7 @@ std::vector<std::vector<std::string>> table_lines(const std::string& text) {
   std::istringstream in(text);
   for (std::string line; std::getline(in, line);) {
     if (line.empty() || line[0] != '|') continue;
-    std::vector<std::string> cells;
-    std::string c;
-    for (std::size_t i = 1; i < line.size(); ++i) {
-      if (line[i] == '\\' && i + 1 < line.size() && line[i + 1] == '|') c += '|', ++i;
-      else if (line[i] == '|') {
-        const auto a = c.find_first_not_of(' '), b = c.find_last_not_of(' ');
-        cells.push_back(a == std::string::npos ? "" : c.substr(a, b - a + 1));
-        c.clear();
-      } else c += line[i];
-    }
-    out.push_back(cells);
+    out.push_back(dem::test::markdown_cells(line));
   }
   return out;
 }
