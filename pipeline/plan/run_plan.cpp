@@ -90,6 +90,15 @@ std::string unnamed(const YAML::Node& scene) {
   return emit(copy, "");
 }
 
+// What a test computes, given the sample it starts from: its unnamed scene without the path of that
+// sample (the sample enters the input hash by its own hash). So a study copied, renamed or written
+// to another folder reuses the runs it shares with the original.
+std::string computed_text(const YAML::Node& test) {
+  YAML::Node copy = YAML::Clone(test);
+  if (copy["particles"] && copy["particles"].IsMap() && copy["particles"]["state"]) copy["particles"]["state"] = "";
+  return unnamed(copy);
+}
+
 // A control stage runs for its duration, or until a strain-rate controlled component reaches its
 // `until.strain` (the other stop criteria cannot be foreseen: their duration is the bound).
 double control_duration(const dem::StageConfig& st) {
@@ -323,7 +332,7 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
         prep.scene_text = emit(scene, header);
         const dem::SceneConfig parsed =
             in_context(study, where, [&] { return dem::scene_from_text(prep.scene_text, prep.scene_file); });
-        prep.hash = content_hash(engine_version + "\n" + prep.scene_text + read_files(parsed));
+        prep.hash = content_hash(engine_version + "\n" + unnamed_text + read_files(parsed));
         prep_index = static_cast<int>(runs.size());
         particles[prep_index] = particles_of(parsed);
         prep.spheres = particles[prep_index];
@@ -373,7 +382,7 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
         });
         run.scene_text = emit(ts, header);
         const dem::SceneConfig tp = in_context(study, test_where, [&] { return dem::scene_from_text(run.scene_text, run.scene_file); });
-        run.hash = content_hash(engine_version + "\n" + run.scene_text + "\nfrom " + from.hash);
+        run.hash = content_hash(engine_version + "\n" + computed_text(ts) + "\nfrom " + from.hash);
         run.depends_on = prep_index;
         run.spheres = particles[prep_index];
         run.cost = run.spheres * estimated_steps(tp, run.spheres);

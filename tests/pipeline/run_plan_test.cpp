@@ -73,6 +73,30 @@ TEST_CASE("input hashes change with the engine, the scene and the sample a test 
   CHECK(hashes.size() == a.size());
 }
 
+TEST_CASE("a copied or renamed study, writing elsewhere, has the same input hashes", "[pipeline]") {
+  // The resolved scene's header names the study file and a test names its sample by path: neither
+  // changes what a run computes, so neither may change its hash (else a copy reruns everything).
+  const std::string copy = std::string(DEM_BINARY_DIR) + "/test_tmp/plan_copy/studies/renamed.yaml";
+  std::filesystem::create_directories(std::filesystem::path(copy).parent_path());
+  std::filesystem::copy_file(study_file, copy, std::filesystem::copy_options::overwrite_existing);
+  // The copy's relative scene paths must still resolve: point them at the shipped scenes.
+  std::ifstream in(copy);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  in.close();
+  for (std::size_t at; (at = text.find("../../scenes/")) != std::string::npos;)
+    text.replace(at, 13, std::string(DEM_SOURCE_DIR) + "/scenes/");
+  std::ofstream(copy) << text;
+  const pipeline::Study original = pipeline::load_study(study_file);
+  const pipeline::Study renamed = pipeline::load_study(copy);
+  const auto a = pipeline::plan_study(original, original.profile("quick"), out, "engine-A");
+  const auto b = pipeline::plan_study(renamed, renamed.profile("quick"), out + "_elsewhere", "engine-A");
+  REQUIRE(a.size() == b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    CHECK(a[i].scene_text != b[i].scene_text);  // the header (and a test's sample path) differ
+    CHECK(a[i].hash == b[i].hash);
+  }
+}
+
 TEST_CASE("a result counts as up to date only if complete with the same input hash", "[pipeline]") {
   std::filesystem::create_directories(out);
   const std::string missing = out + "/does_not_exist.h5";
