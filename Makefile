@@ -4,7 +4,7 @@ JOBS     ?= $(shell nproc 2>/dev/null || echo 2)
 # python3-h5py and python3-pandas: the README's Python lines and the clients' tests (tests/clients/),
 # with Debian's interpreter, /usr/bin/python3 (a python3 earlier on PATH, e.g. pyenv's, lacks them);
 # cmark-gfm: reports/index.html from reports/index.md.
-PACKAGES := g++ cmake make libeigen3-dev libhdf5-dev libyaml-cpp-dev catch2 gnuplot-nox hdf5-tools libboost-math-dev libcli11-dev nlohmann-json3-dev python3-h5py python3-pandas cmark-gfm
+PACKAGES := g++ cmake make libeigen3-dev libhdf5-dev libyaml-cpp-dev catch2 gnuplot-nox hdf5-tools libboost-math-dev libboost-dev libcli11-dev nlohmann-json3-dev python3-h5py python3-pandas cmark-gfm
 SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 RESULTS  ?= results/study/paper
@@ -31,7 +31,7 @@ LIQUEFACTION   ?= results/liquefaction_loose/paper results/liquefaction_medium/p
 CELL_STUDIES   ?= pipeline/studies/critical_state.yaml
 EXECUTOR    ?=                          # local or slurm (pipeline --executor); empty: the study files' executor key, else local
 
-.PHONY: all deps build tools examples example-samples install test kill-test slurm-test sanitize clang-test fuzz bench quick study convergence report decisions decisions-report readings-report report-sections literature literature-report critical-state liquefaction samples samples-study cyclic-tests render clean
+.PHONY: all deps build tools examples example-samples install test kill-test slurm-test sanitize clang-test fuzz bench quick study convergence report decisions decisions-report readings-report report-sections literature literature-report critical-state liquefaction samples samples-study cyclic-tests render calibration-demo calibration-example clean
 
 # Everything: install, build the tools, run the full study (an ensemble of 5 samples per density,
 # reusing finished runs), validate it, draw the figures and write reports/index.md (the tests are
@@ -54,7 +54,7 @@ build: deps
 
 # Only what the studies and the report use (not the tests or the benchmark: from nothing, 1 min 11 s
 # instead of 2 min 38 s on this machine).
-TOOLS := dem pipeline validate compare-runs ensemble-cycles figure-data report
+TOOLS := dem pipeline validate compare-runs ensemble-cycles figure-data report calibrate
 tools: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
 	cmake --build $(BUILD) -j $(JOBS) --target $(TOOLS)
@@ -77,6 +77,29 @@ example-samples: tools
 	  OMP_NUM_THREADS=1 $(BUILD)/bin/dem run scenes/prepare_$$d.yaml --set 'particles.lattice.n=[10, 10, 10]' \
 	    --out scenes/samples/$${d}_1k.h5 --threads 1 --no-resume --force --quiet && rm -f scenes/samples/$${d}_1k.xdmf || exit 1; \
 	done
+
+# Calibration (calibration/README.md, docs/calibration.md). The demonstration with a known answer:
+# synthetic lab curves made by the engine on 5 specimens with parameters the calibration does not
+# read (pipeline/studies/calibration_truth.yaml), then the stiffness and friction inferred from
+# them from wide priors (pipeline/calibrations/synthetic_triaxial.yaml); the truth is set beside
+# the posterior once it is final. Its report: reports/calibration/synthetic_triaxial/.
+CAL_RESULTS := results/calibration/paper
+CAL_POINTS := 0.0002,0.0005,0.001,0.002,0.005,0.01,0.02,0.04,0.07
+CAL_REPORT := reports/calibration/synthetic_triaxial
+calibration-demo: tools
+	$(BUILD)/bin/pipeline pipeline/studies/calibration_truth.yaml -j $(JOBS)
+	for y in q_over_p volumetric_strain; do \
+	  $(BUILD)/bin/calibrate lab-curve --x strain_3 --y $$y --at $(CAL_POINTS) --out reference_data/calibration/synthetic_triaxial_$$y.csv \
+	    $(foreach s,11 12 13 14 15,$(CAL_RESULTS)/seed$(s)/truth_dense_triaxial.h5) || exit 1; done
+	$(BUILD)/bin/calibrate truth pipeline/calibrations/synthetic_triaxial.yaml $(CAL_RESULTS)/seed11/truth_dense_triaxial.h5 --out $(CAL_REPORT)/truth.json
+	$(BUILD)/bin/calibrate pipeline/calibrations/synthetic_triaxial.yaml -j $(JOBS) --truth $(CAL_REPORT)/truth.json
+	cd $(CAL_REPORT) && GNUPLOT_LIB=$(CURDIR)/reports/gnuplot gnuplot $(CURDIR)/reports/gnuplot/calibration.gp
+
+# A calibration of your own, the example: examples/calibration/ (an illustrative lab curve), a few
+# minutes on 2 cores; its report in results/calibration_example/report/.
+calibration-example: tools
+	$(BUILD)/bin/calibrate examples/calibration/calibration.yaml -j $(JOBS)
+	cd results/calibration_example/report && GNUPLOT_LIB=$(CURDIR)/reports/gnuplot gnuplot $(CURDIR)/reports/gnuplot/calibration.gp
 
 # The tools into PREFIX (bin/dem, bin/pipeline, ...; they run from any folder).
 PREFIX ?= /usr/local

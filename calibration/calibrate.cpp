@@ -1,0 +1,186 @@
+#include "calibrate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <numeric>
+
+#include "config/yaml_section.hpp"
+#include "exec/scheduler.hpp"
+#include "exec/slurm.hpp"
+#include "plan/plan_cost.hpp"
+#include "study/format.hpp"
+
+namespace calibration {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string set_name(int iteration, int index) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "i%ds%03d", iteration, index);
+  return buf;
+}
+
+// Every set so far as variants of the study, planned (copies joined) into the results folder.
+std::vector<pipeline::PlannedRun> plan_sets(const Calibration& c, pipeline::Study study, const pipeline::Profile& profile,
+                                            const std::vector<ParameterSet>& sets, const std::string& out,
+                                            const std::string& engine) {
+  study.variants.clear();
+  for (const ParameterSet& s : sets) study.variants.push_back(variant_of(c, s));
+  return pipeline::join_studies({{study.name, pipeline::plan_study(study, profile, out, engine)}});
+}
+
+double largest_move(const std::vector<Marginal>& a, const std::vector<Marginal>& b) {
+  double moved = 0;
+  for (std::size_t j = 0; j < a.size(); ++j)
+    moved = std::max({moved, std::abs(a[j].unit_mean - b[j].unit_mean), std::abs(a[j].unit_sd - b[j].unit_sd)});
+  return moved;
+}
+
+void print_plan(const Calibration& c, std::vector<pipeline::PlannedRun>& runs, int jobs) {
+  const std::optional<double> recorded = pipeline::use_recorded_costs(runs);
+  const double throughput = recorded.value_or(pipeline::default_throughput);
+  std::vector<bool> todo(runs.size());
+  for (std::size_t i = 0; i < runs.size(); ++i) todo[i] = runs[i].copy_of < 0 && !pipeline::up_to_date(runs[i].result, runs[i].hash);
+  const std::vector<double> cost = pipeline::run_costs(runs, todo);
+  double shared = 0, per_iteration = 0;
+  int shared_runs = 0, set_runs = 0;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const bool is_shared = runs[i].variants.size() > 1;
+    (is_shared ? shared : per_iteration) += cost[i];
+    (is_shared ? shared_runs : set_runs) += todo[i];
+  }
+  const double first = pipeline::estimated_wall_time_s(runs, cost, jobs, throughput);
+  const double total = shared + per_iteration * c.max_iterations;
+  std::printf("calibration %s: %zu parameter(s), %d sets per iteration, at most %d iterations\n", c.name.c_str(),
+              c.parameters.size(), c.batch, c.max_iterations);
+  std::printf("first iteration: %zu runs (%d shared by every set, %d for its sets still to run), %.3g particle-steps, "
+              "about %.1f min on %d core(s)\n", runs.size(), shared_runs, set_runs, shared + per_iteration, first / 60, jobs);
+  std::printf("all %d iterations at most: %.3g particle-steps, %.1f core-min, about %.1f min on %d core(s)\n",
+              c.max_iterations, total, total / throughput / 60, total / throughput / 60 / jobs, jobs);
+  std::printf("(throughput %.3g particle-steps/s per core: %s)\n", throughput,
+              recorded ? "recorded by the finished runs in the results folder" : "the engine's make bench figure");
+}
+
+}  // namespace
+
+std::optional<Outcome> run_calibration(const Calibration& c, const RunOptions& o) {
+  Outcome out;
+  out.calibration = c;
+  const pipeline::Study study = pipeline::load_study(c.study);
+  if (!study.variants.empty())
+    throw dem::ConfigError(c.file + ": study: " + c.study + " has variants; a calibration's sets are its variants, so its study has none");
+  const pipeline::Profile& profile = o.profile.empty() ? study.default_profile() : study.profile(o.profile);
+  out.profile = profile.name;
+  out.seeds = profile.seeds;
+  out.references = read_references(c.references, profile.name);
+  out.engine = pipeline::engine_version(o.dem);
+  if (out.engine.empty()) throw dem::ConfigError("cannot run the engine '" + o.dem + " --source-hash'");
+  out.results = (fs::path(study.output) / ("calibration_" + c.name) / profile.name).lexically_normal().string();
+  // Check every curve row names a density and a test of the study before anything runs.
+  for (const CurveRow& row : out.references.curves) {
+    const bool density = std::any_of(study.densities.begin(), study.densities.end(), [&](const auto& d) { return d.name == row.density; });
+    const bool test = std::any_of(study.tests.begin(), study.tests.end(), [&](const auto& t) { return t.name == row.test; });
+    if (!density || !test)
+      throw dem::ConfigError(out.references.file + ": curve '" + row.name + "' reads " + row.density + " " + row.test +
+                             ", which the study " + c.study + " does not run");
+  }
+
+  const int d = static_cast<int>(c.parameters.size());
+  Sampler sampler(d);
+  std::vector<Proposal> proposals;
+  std::vector<int> drawn;
+  std::vector<Marginal> before;
+  std::unique_ptr<dem::FileLock> lock;
+  for (int it = 1; it <= c.max_iterations; ++it) {
+    std::vector<Eigen::VectorXd> all_u;
+    std::vector<double> all_ll;
+    for (const ParameterSet& s : out.sets) all_u.push_back(s.u), all_ll.push_back(s.log_likelihood);
+    // The Gaussian spans at least the best 2d + 2 sets (a covariance in d dimensions needs d + 1).
+    const Proposal q = it == 1 ? Proposal{}
+                               : fit_proposal(all_u, proposal_weights(all_u, all_ll, proposals, drawn, 2.0 * d + 2), c.prior_share);
+    const std::vector<Eigen::VectorXd> batch = sampler.draw(q, c.batch);
+    proposals.push_back(q);
+    drawn.push_back(c.batch);
+    for (int k = 0; k < c.batch; ++k) {
+      ParameterSet s;
+      s.name = set_name(it, k + 1);
+      s.iteration = it;
+      s.u = batch[static_cast<std::size_t>(k)];
+      out.sets.push_back(std::move(s));
+    }
+    std::vector<pipeline::PlannedRun> runs = plan_sets(c, study, profile, out.sets, out.results, out.engine);
+    if (o.plan_only) {
+      print_plan(c, runs, o.jobs);
+      return std::nullopt;
+    }
+    if (!lock) lock = pipeline::lock_results_folder(out.results);
+    pipeline::write_scenes(runs);
+    pipeline::write_manifest(runs, study, out.results);
+    std::printf("[calibrate] iteration %d: %d sets, %zu runs planned (finished ones are reused)\n", it, c.batch, runs.size());
+    std::fflush(stdout);
+    pipeline::Outcome ran;
+    if (o.executor == "slurm")
+      ran = pipeline::slurm::execute(runs, std::vector<pipeline::SlurmOptions>(runs.size(), study.slurm), o.dem);
+    else
+      ran = pipeline::execute(runs, o.dem, o.jobs, o.threads);
+    if (ran.interrupted) throw dem::ConfigError("interrupted: start the calibration again to go on (finished runs are reused)");
+    out.runs = static_cast<int>(runs.size());
+    out.samples = samples_of_sets(runs);
+    for (ParameterSet& s : out.sets) {
+      if (s.iteration != it) continue;
+      s.misfit = score(out.references, out.samples[s.name]);
+      s.log_likelihood = s.misfit.valued ? -0.5 * s.misfit.chi2 : -INFINITY;
+    }
+    std::vector<Eigen::VectorXd> u;
+    std::vector<double> log_likelihood;
+    for (const ParameterSet& s : out.sets) u.push_back(s.u), log_likelihood.push_back(s.log_likelihood);
+    out.weights = importance_weights(u, log_likelihood, proposals, drawn);
+    IterationSummary summary;
+    summary.number = it;
+    summary.sets = c.batch;
+    summary.valued = static_cast<int>(std::count_if(out.sets.begin(), out.sets.end(), [](const auto& s) { return s.misfit.valued; }));
+    if (summary.valued == 0)
+      throw dem::ConfigError("no parameter set of iteration " + std::to_string(it) + " could be scored: " +
+                             (out.sets.back().misfit.rows.empty() ? std::string("no rows") : [&] {
+                               for (const RowMisfit& m : out.sets.back().misfit.rows)
+                                 if (!m.valued) return m.name + ": " + m.note;
+                               return std::string("?");
+                             }()));
+    summary.ess = effective_sample_size(out.weights);
+    for (std::size_t j = 0; j < c.parameters.size(); ++j) summary.marginals.push_back(marginal(c.parameters[j], j, u, out.weights));
+    summary.moved = before.empty() ? 1 : largest_move(before, summary.marginals);
+    before = summary.marginals;
+    std::printf("[calibrate] iteration %d: %d of %zu sets scored, effective sample size %.1f, moved %.3f of the prior ranges;",
+                it, summary.valued, out.sets.size(), summary.ess, summary.moved);
+    for (std::size_t j = 0; j < c.parameters.size(); ++j)
+      std::printf(" %s %.4g +- %.3g", c.parameters[j].name.c_str(), summary.marginals[j].mean, summary.marginals[j].sd);
+    std::printf("\n");
+    std::fflush(stdout);
+    out.iterations.push_back(summary);
+    if (it >= c.min_iterations && summary.moved <= c.tolerance && summary.ess >= c.min_effective_sets) {
+      out.converged = true;
+      char why[200];
+      std::snprintf(why, sizeof why, "no posterior mean or sd moved by more than %.3g of its prior range (%.3g) in iteration %d, "
+                    "and the posterior rests on %.1f effective sets (at least %.3g asked)", c.tolerance, summary.moved, it, summary.ess,
+                    c.min_effective_sets);
+      out.stop_reason = why;
+      break;
+    }
+  }
+  if (!out.converged)
+    out.stop_reason = "max_iterations (" + std::to_string(c.max_iterations) + ") reached before the posterior settled (it moved " +
+                      validation::significant(out.iterations.back().moved, 2) + " of a prior range in the last iteration and rests on " +
+                      validation::significant(out.iterations.back().ess, 2) + " effective sets, " +
+                      validation::significant(c.min_effective_sets, 3) + " asked)";
+  // What the runs cost, from their results.
+  const std::vector<pipeline::PlannedRun> runs = plan_sets(c, study, profile, out.sets, out.results, out.engine);
+  for (const pipeline::PlannedRun& r : runs)
+    if (r.copy_of < 0)
+      if (const auto cost = pipeline::result_cost(r.result); cost && cost->wall_s) out.core_seconds += *cost->wall_s * o.threads;
+  return out;
+}
+
+}  // namespace calibration

@@ -1,0 +1,54 @@
+#pragma once
+// The calibration loop: draw a batch of parameter sets, run them through the pipeline (reusing
+// every finished run), score them against the references, weight every set so far, and stop when
+// the posterior no longer moves (posterior.hpp for the method).
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "calibration_file.hpp"
+#include "posterior.hpp"
+#include "references.hpp"
+#include "sets.hpp"
+
+namespace calibration {
+
+struct RunOptions {
+  std::string dem;          // the engine
+  std::string profile;      // the study's profile ("": its default)
+  int jobs = 1, threads = 1;
+  std::string executor = "local";  // or slurm
+  bool plan_only = false;
+};
+
+struct IterationSummary {
+  int number = 0;
+  int sets = 0;             // run this iteration
+  int valued = 0;           // of all sets so far, those with a misfit
+  double ess = 0;           // effective sample size of the weights after it
+  std::vector<Marginal> marginals;
+  double moved = 0;         // the largest change of a unit mean or sd since the iteration before
+};
+
+struct Outcome {
+  Calibration calibration;
+  References references;
+  std::string profile, engine, results;  // results: the folder of the runs
+  std::vector<std::int64_t> seeds;
+  std::vector<ParameterSet> sets;
+  std::vector<double> weights;
+  std::vector<IterationSummary> iterations;
+  bool converged = false;
+  std::string stop_reason;
+  int runs = 0;               // runs planned over all iterations (reused ones included)
+  double core_seconds = 0;    // recorded by their results (wall time x threads)
+  std::map<std::string, std::vector<validation::Sample>> samples;  // of each set (for the figures)
+};
+
+// Runs the calibration (or, with plan_only, prints what its first iteration would run and what
+// max_iterations would cost, and returns none).
+std::optional<Outcome> run_calibration(const Calibration& c, const RunOptions& o);
+
+}  // namespace calibration

@@ -1,0 +1,162 @@
+// calibrate: infers scene parameters from references (curves of a lab test, or a reference file's
+// rows) by running parameter sets of a study through the pipeline (calibration/README.md).
+//   calibrate CALIBRATION.yaml [--profile P] [-j N] [--threads T] [--executor local|slurm] [--plan] [--truth FILE]
+//   calibrate lab-curve --x COLUMN --y COLUMN --at X1,X2,... --out FILE.csv RESULT.h5...
+//   calibrate truth CALIBRATION.yaml RESULT.h5 --out FILE.json
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include "calibrate.hpp"
+#include "config/yaml_section.hpp"
+#include "io/failure.hpp"
+#include "posterior_report.hpp"
+#include "study/ensemble.hpp"
+#include "study/json_file.hpp"
+#include "study/series.hpp"
+
+namespace {
+namespace fs = std::filesystem;
+using calibration::CurvePoint;
+
+// Writes `text` to `file` whole (through FILE.partial, renamed), its folder made if missing.
+void write_whole(const std::string& file, const std::string& text) {
+  if (fs::path(file).has_parent_path()) fs::create_directories(fs::path(file).parent_path());
+  const std::string partial = file + ".partial";
+  {
+    std::ofstream out(partial);
+    out << text;
+    if (!out.flush()) throw std::runtime_error(partial + ": cannot be written");
+  }
+  fs::rename(partial, file);
+}
+
+int parse(CLI::App& app, int argc, char** argv) {
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int rc = app.exit(e);
+    return rc == 0 ? 0 : 2;
+  }
+  return -1;
+}
+
+// A synthetic lab curve: y at each x, mean and sd over the given results (specimens).
+int lab_curve(int argc, char** argv) {
+  std::string x, y, out;
+  std::vector<double> at;
+  std::vector<std::string> results;
+  CLI::App app{"calibrate lab-curve: a reference curve made by the engine (a demonstration's synthetic lab data): y at "
+               "each x on each result's last stage, their mean and sd over the results (the specimens)"};
+  app.add_option("--x", x, "the time-series column along the curve (e.g. strain_3)")->required();
+  app.add_option("--y", y, "the time-series column (e.g. q_over_p)")->required();
+  app.add_option("--at", at, "the x values of the points")->required()->delimiter(',');
+  app.add_option("--out", out, "the CSV written")->required();
+  app.add_option("results", results, "the result files (the specimens)")->required();
+  if (const int rc = parse(app, argc, argv); rc >= 0) return rc;
+  calibration::CurveRow row;
+  row.x = x, row.y = y;
+  for (const double v : at) row.points.push_back({v, 0, 0});
+  std::vector<std::vector<double>> ys(at.size());
+  for (const std::string& r : results) {
+    const validation::TestResult t = validation::load_test(r, "test");
+    const auto values = calibration::curve_on_run(row, t);
+    for (std::size_t j = 0; j < at.size(); ++j) {
+      if (!values[j]) throw dem::ConfigError(r + ": its " + x + " never reaches " + validation::format_number(at[j]) + " on its last stage");
+      ys[j].push_back(*values[j]);
+    }
+  }
+  std::ostringstream s;
+  s << "# made by the engine (calibrate lab-curve): " << y << " against " << x << ", mean and sd over " << results.size()
+    << " specimen(s):";
+  for (const std::string& r : results) s << " " << fs::path(r).parent_path().filename().string() << "/" << fs::path(r).filename().string();
+  s << "\n" << x << "," << y << ",sd\n";
+  for (std::size_t j = 0; j < at.size(); ++j) {
+    const validation::Spread sp = validation::spread(ys[j]);
+    s << validation::format_number(at[j]) << "," << validation::format_number(sp.mean) << "," << validation::format_number(sp.sd) << "\n";
+  }
+  write_whole(out, s.str());
+  std::printf("%s: %zu points over %zu specimen(s)\n", out.c_str(), at.size(), results.size());
+  return 0;
+}
+
+// The true parameters of a synthetic reference, read from the scene a result ran.
+int truth(int argc, char** argv) {
+  std::string file, result, out;
+  CLI::App app{"calibrate truth: the calibration's parameters as a result's scene set them (the hidden truth of a "
+               "synthetic reference), as JSON for calibrate --truth"};
+  app.add_option("calibration", file, "the calibration file")->required();
+  app.add_option("result", result, "a result made with the true parameters")->required();
+  app.add_option("--out", out, "the JSON written")->required();
+  if (const int rc = parse(app, argc, argv); rc >= 0) return rc;
+  const calibration::Calibration c = calibration::read_calibration(file);
+  nlohmann::json j;
+  j["from"] = fs::relative(fs::absolute(result), fs::absolute(out).parent_path()).string();
+  for (const auto& [name, value] : calibration::parameters_of_result(c, result)) j["parameters"][name] = value;
+  write_whole(out, j.dump(1) + "\n");
+  std::printf("%s: %s\n", out.c_str(), j["parameters"].dump().c_str());
+  return 0;
+}
+
+int calibrate(int argc, char** argv) {
+  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  std::string file, truth_file;
+  calibration::RunOptions o;
+  o.jobs = cores;
+  int threads = 0;
+  CLI::App app{"calibrate: infers scene parameters from references (curves, or a reference file's rows): draws parameter "
+               "sets, runs them through the pipeline (finished runs reused), weights them by their misfit, until the "
+               "posterior stops moving; writes posterior.json, section.md and the figures' data to the report folder"};
+  app.add_option("calibration", file, "the calibration file (YAML)")->required();
+  app.add_option("--profile", o.profile, "the study's profile (default: paper if declared, else the first)");
+  app.add_option("-j", o.jobs, "runs at once (default: the number of cores)")->check(CLI::Range(1, 256));
+  app.add_option("--threads", threads, "threads inside each run (default: cores / runs at once)")->check(CLI::Range(1, 256));
+  app.add_option("--executor", o.executor, "local or slurm (the study's slurm: options)")->check(CLI::IsMember({"local", "slurm"}));
+  app.add_flag("--plan", o.plan_only, "print what the first iteration runs and what max_iterations would cost; run nothing");
+  app.add_option("--truth", truth_file, "a demonstration's true parameters (calibrate truth), set beside the posterior once it is final");
+  app.add_option("--dem", o.dem, "the engine (default: dem beside this program)");
+  app.footer("calibrate lab-curve --help and calibrate truth --help: the demonstration's synthetic references.");
+  if (const int rc = parse(app, argc, argv); rc >= 0) return rc;
+  o.threads = threads > 0 ? threads : std::max(1, cores / o.jobs);
+  if (o.dem.empty()) o.dem = (fs::canonical("/proc/self/exe").parent_path() / "dem").string();
+  const calibration::Calibration c = calibration::read_calibration(file);
+  std::map<std::string, double> truth_values;
+  if (!truth_file.empty()) {
+    const nlohmann::json t = validation::read_json_file(truth_file);
+    for (const auto& p : c.parameters) {
+      if (!t.contains("parameters") || !t["parameters"].contains(p.name) || !t["parameters"][p.name].is_number())
+        throw dem::ConfigError(truth_file + ": parameters." + p.name + " is missing or not a number");
+      truth_values[p.name] = t["parameters"][p.name].get<double>();
+    }
+  }
+  const std::optional<calibration::Outcome> outcome = calibration::run_calibration(c, o);
+  if (!outcome) return 0;
+  calibration::write_report(*outcome, truth_values);
+  std::printf("[calibrate] %s: %s; posterior in %s/posterior.json\n", c.name.c_str(), outcome->stop_reason.c_str(), c.report.c_str());
+  return 0;
+}
+
+int tool_main(int argc, char** argv) {
+  try {
+    if (argc > 1 && std::string(argv[1]) == "lab-curve") return lab_curve(argc - 1, argv + 1);
+    if (argc > 1 && std::string(argv[1]) == "truth") return truth(argc - 1, argv + 1);
+    return calibrate(argc, argv);
+  } catch (const dem::ConfigError& e) {
+    std::fprintf(stderr, "calibrate: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "calibrate: %s\n", e.what());
+    return 1;
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) { return dem::guarded_main("calibrate", [&] { return tool_main(argc, argv); }); }

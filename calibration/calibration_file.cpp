@@ -1,0 +1,72 @@
+#include "calibration_file.hpp"
+
+#include <cmath>
+#include <set>
+
+#include "config/yaml_section.hpp"
+
+namespace calibration {
+
+Calibration read_calibration(const std::string& file) {
+  dem::Section root = dem::Section::load_file(file);
+  Calibration c;
+  c.file = file;
+  c.name = root.text("name", std::nullopt, "the calibration's name (its results and report folder)");
+  if (c.name.empty() || c.name.find_first_of("/\\ \t") != std::string::npos)
+    root.fail("name", "is '" + c.name + "': a non-empty name without spaces or slashes");
+  c.study = root.file_path("study", "the study whose runs are calibrated (its densities, tests, profiles and seeds)");
+  c.references = root.file_path("references", "the reference file: curves and/or a validate reference file's rows");
+  c.report = root.file_path("report", "the folder posterior.json, the tables and the figures go to");
+  c.batch = static_cast<int>(root.integer("batch", 2, 4096, 16, "parameter sets drawn per iteration"));
+  c.max_iterations = static_cast<int>(root.integer("max_iterations", 1, 100, 8, "iterations at most"));
+  c.min_iterations = static_cast<int>(root.integer("min_iterations", 1, 100, 3, "iterations at least"));
+  if (c.min_iterations > c.max_iterations)
+    root.fail("min_iterations", "is above max_iterations (" + std::to_string(c.max_iterations) + ")");
+  c.tolerance = root.number("tolerance", "", {0, 1, true}, 0.03,
+                            "stop when no posterior mean or sd moves by more than this fraction of its prior range");
+  c.min_effective_sets = root.number("min_effective_sets", "", {1, 1e6}, static_cast<double>(c.batch),
+                                     "stop only when the posterior rests on at least this many effective sets (default: batch)");
+  c.prior_share = root.number("prior_share", "", {0, 1, true, true}, 0.2,
+                              "share of the prior in each proposal after the first (defensive mixture)");
+  std::set<std::string> names, keys;
+  for (dem::Section s : root.list("parameters", "the scene keys inferred, each with its prior")) {
+    Parameter p;
+    p.name = s.text("name", std::nullopt, "what tables call the parameter");
+    if (!names.insert(p.name).second) s.fail("name", "'" + p.name + "' names two parameters");
+    const YAML::Node k = s.raw("keys", "a scene key or a list of them", "the scene keys the parameter sets (one value for all)");
+    if (k.IsScalar()) p.keys = {k.as<std::string>()};
+    else if (k.IsSequence() && k.size() > 0)
+      for (const YAML::Node& key : k) p.keys.push_back(key.as<std::string>());
+    else s.fail("keys", "is neither a key nor a list of keys");
+    p.applies_to = s.choice("applies_to", {"test", "prepare", "both"}, "test",
+                            "the runs the keys are set in: test (preparations shared), prepare, or both");
+    // A key may be two parameters only in different runs (the preparation's friction and the test's).
+    for (const std::string& key : p.keys)
+      for (const std::string scope : {"test", "prepare"})
+        if ((p.applies_to == "both" || p.applies_to == scope) && !keys.insert(scope + " " + key).second)
+          s.fail("keys", "'" + key + "' is set by two parameters in the " + scope + " runs");
+    const bool uniform = s.has("uniform"), log_uniform = s.has("log_uniform"), values = s.has("values");
+    if (uniform + log_uniform + values != 1)
+      s.fail("uniform", "give exactly one prior: uniform: [low, high], log_uniform: [low, high] or values: [a, b, ...]");
+    if (values) {
+      const YAML::Node v = s.raw("values", "a list of at least 2 values", "the values the parameter may take (equally likely)");
+      if (!v.IsSequence() || v.size() < 2) s.fail("values", "is not a list of at least 2 values");
+      p.prior = Parameter::Prior::Values;
+      for (const YAML::Node& x : v) p.values.push_back(x.as<std::string>());
+    } else {
+      const std::string key = uniform ? "uniform" : "log_uniform";
+      const std::vector<double> r = s.numbers(key, "", {-1e300, 1e300}, 2, 2, "the prior's range [low, high]");
+      if (!(r[0] < r[1])) s.fail(key, "needs low < high");
+      if (log_uniform && !(r[0] > 0)) s.fail(key, "needs low > 0 (a log-uniform prior)");
+      p.prior = uniform ? Parameter::Prior::Uniform : Parameter::Prior::LogUniform;
+      p.low = r[0], p.high = r[1];
+    }
+    s.finish();
+    c.parameters.push_back(std::move(p));
+  }
+  if (c.parameters.empty()) root.fail("parameters", "is empty: name at least one scene key to infer");
+  root.finish();
+  return c;
+}
+
+}  // namespace calibration

@@ -1,0 +1,268 @@
+#include "posterior_report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+#include <yaml-cpp/yaml.h>
+
+#include "io/hdf5.hpp"
+#include "study/format.hpp"
+#include "study/markdown_table.hpp"
+#include "study/series.hpp"
+
+namespace calibration {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+void write_file(const fs::path& path, const std::string& text) {
+  const fs::path partial = path.string() + ".partial";
+  {
+    std::ofstream out(partial);
+    out << text;
+    if (!out) throw std::runtime_error(partial.string() + ": cannot be written");
+  }
+  fs::rename(partial, path);
+}
+
+std::string g(double x) { return validation::format_number(x); }
+
+std::string prior_text(const Parameter& p) {
+  if (p.prior == Parameter::Prior::Values) {
+    std::string s = "one of";
+    for (const std::string& v : p.values) s += " " + v;
+    return s;
+  }
+  return std::string(p.prior == Parameter::Prior::Uniform ? "uniform" : "log-uniform") + " [" +
+         validation::significant(p.low, 3) + ", " + validation::significant(p.high, 3) + "]";
+}
+
+std::size_t best_set(const Outcome& o) {
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < o.sets.size(); ++i)
+    if (o.sets[i].log_likelihood > o.sets[best].log_likelihood) best = i;
+  return best;
+}
+
+// 20 bins of the unit interval (a discrete parameter: its values), weighted posterior mass per bin
+// over the prior's.
+std::string marginal_data(const Parameter& p, std::size_t j, const Outcome& o) {
+  const std::size_t bins = p.discrete() ? p.values.size() : 20;
+  std::vector<double> mass(bins, 0.0);
+  for (std::size_t i = 0; i < o.sets.size(); ++i) {
+    const double u = o.sets[i].u(static_cast<Eigen::Index>(j));
+    mass[std::min(bins - 1, static_cast<std::size_t>(u * static_cast<double>(bins)))] += o.weights[i];
+  }
+  std::ostringstream s;
+  s << "# " << p.name << ": posterior mass per bin of the prior over the prior's (1: the prior)\n";
+  s << "# value_low value_centre value_high density_over_prior\n";
+  for (std::size_t b = 0; b < bins; ++b) {
+    const double lo = static_cast<double>(b) / static_cast<double>(bins), hi = static_cast<double>(b + 1) / static_cast<double>(bins);
+    s << g(p.value(lo)) << " " << g(p.value(0.5 * (lo + hi))) << " " << g(p.value(std::min(hi, 1 - 1e-12))) << " "
+      << g(mass[b] * static_cast<double>(bins)) << "\n";
+  }
+  return s.str();
+}
+
+// The reference points; then, for each sample of the best set, its curve on its last stage.
+std::string curve_data(const CurveRow& c, const std::vector<validation::Sample>& samples) {
+  std::ostringstream s;
+  s << "# " << c.name << ": " << c.y << " against " << c.x << "\n# block 0: the reference (x y sd)\n";
+  for (const CurvePoint& p : c.points) s << g(p.x) << " " << g(p.y) << " " << g(p.sd) << "\n";
+  const double x_max = std::max_element(c.points.begin(), c.points.end(), [](auto& a, auto& b) { return a.x < b.x; })->x;
+  for (const validation::Sample& sample : samples) {
+    s << "\n\n# block: the best set's " << (sample.name.empty() ? "sample" : sample.name) << " (x y)\n";
+    const auto d = sample.densities.find(c.density);
+    if (d == sample.densities.end()) continue;
+    for (const validation::TestResult& t : d->second.tests) {
+      if (t.name != c.test) continue;
+      const auto& x = validation::column(t.series, c.x);
+      const auto& y = validation::column(t.series, c.y);
+      const auto& stage = validation::column(t.series, "stage");
+      for (std::size_t i = 0; i < x.size(); ++i)
+        if (stage[i] == stage.back() && x[i] <= 1.05 * x_max) s << g(x[i]) << " " << g(y[i]) << "\n";
+    }
+  }
+  return s.str();
+}
+
+}  // namespace
+
+std::map<std::string, double> parameters_of_result(const Calibration& c, const std::string& result) {
+  dem::h5::Handle f = dem::h5::open_file_read(result);
+  const YAML::Node scene = YAML::Load(dem::h5::read_text(f, "scene_yaml"));
+  std::map<std::string, double> values;
+  for (const Parameter& p : c.parameters) {
+    std::optional<double> value;
+    for (const std::string& key : p.keys) {
+      YAML::Node n = YAML::Clone(scene);
+      std::stringstream path(key);
+      for (std::string part; std::getline(path, part, '.');) {
+        if (!n.IsMap() || !n[part]) throw std::runtime_error(result + ": its scene has no " + key);
+        n = n[part];
+      }
+      const double x = n.as<double>();
+      if (value && *value != x) throw std::runtime_error(result + ": the keys of " + p.name + " differ");
+      value = x;
+    }
+    values[p.name] = *value;
+  }
+  return values;
+}
+
+void write_report(const Outcome& o, const std::map<std::string, double>& truth) {
+  const Calibration& c = o.calibration;
+  const fs::path dir = c.report;
+  fs::create_directories(dir);
+  const std::size_t d = c.parameters.size();
+  const IterationSummary& last = o.iterations.back();
+  const std::size_t best = best_set(o);
+
+  json j;
+  j["schema"] = 1;
+  j["name"] = c.name;
+  j["method"] = "adaptive multiple importance sampling: Sobol draws from defensive-mixture proposals, every set weighted "
+                "against the mixture of all proposals; likelihood exp(-chi2/2)";
+  j["study"] = fs::relative(c.study, dir).string();
+  j["references"] = fs::relative(c.references, dir).string();
+  j["source"] = o.references.source;
+  j["profile"] = o.profile;
+  j["seeds"] = o.seeds;
+  j["engine"] = o.engine;
+  j["converged"] = o.converged;
+  j["stop_reason"] = o.stop_reason;
+  j["runs"] = o.runs;
+  j["core_seconds"] = o.core_seconds;
+  j["effective_sample_size"] = last.ess;
+  for (const IterationSummary& it : o.iterations) {
+    json x{{"iteration", it.number}, {"sets", it.sets}, {"scored", it.valued}, {"effective_sample_size", it.ess}, {"moved", it.moved}};
+    for (std::size_t k = 0; k < d; ++k) x["mean"][c.parameters[k].name] = it.marginals[k].mean, x["sd"][c.parameters[k].name] = it.marginals[k].sd;
+    j["iterations"].push_back(x);
+  }
+  for (std::size_t k = 0; k < d; ++k) {
+    const Parameter& p = c.parameters[k];
+    const Marginal& m = last.marginals[k];
+    json x{{"name", p.name}, {"keys", p.keys}, {"applies_to", p.applies_to}, {"prior", prior_text(p)},
+           {"mean", m.mean}, {"sd", m.sd}, {"median", m.median}, {"lower_95", m.lower_95}, {"upper_95", m.upper_95},
+           {"narrowing", m.narrowing}, {"identified", m.identified}, {"best", p.value(o.sets[best].u(static_cast<Eigen::Index>(k)))}};
+    if (const auto t = truth.find(p.name); t != truth.end())
+      x["truth"] = t->second, x["truth_inside_95"] = t->second >= m.lower_95 && t->second <= m.upper_95;
+    j["parameters"].push_back(x);
+  }
+  std::vector<Eigen::VectorXd> u;
+  for (const ParameterSet& s : o.sets) u.push_back(s.u);
+  const Eigen::MatrixXd r = correlations(u, o.weights);
+  for (Eigen::Index a = 0; a < r.rows(); ++a) {
+    std::vector<double> row;
+    for (Eigen::Index b = 0; b < r.cols(); ++b) row.push_back(r(a, b));
+    j["correlations"].push_back(row);
+  }
+  j["best_set"] = {{"name", o.sets[best].name}, {"chi2", o.sets[best].misfit.chi2}};
+  for (std::size_t i = 0; i < o.sets.size(); ++i) {
+    const ParameterSet& s = o.sets[i];
+    json x{{"name", s.name}, {"iteration", s.iteration}, {"weight", o.weights[i]}, {"scored", s.misfit.valued}};
+    if (s.misfit.valued) x["chi2"] = s.misfit.chi2;
+    for (std::size_t k = 0; k < d; ++k) x["values"][c.parameters[k].name] = c.parameters[k].value(s.u(static_cast<Eigen::Index>(k)));
+    for (const RowMisfit& m : s.misfit.rows) {
+      json row{{"name", m.name}, {"points", m.points}};
+      if (m.valued) row["chi2"] = m.chi2; else row["note"] = m.note;
+      x["rows"].push_back(row);
+    }
+    j["sets"].push_back(x);
+  }
+  write_file(dir / "posterior.json", j.dump(1) + "\n");
+
+  // Figure data.
+  std::ostringstream sets;
+  sets << "# every parameter set: iteration, its values, chi2 (NaN: not scored), posterior weight\n# iteration";
+  for (const Parameter& p : c.parameters) sets << " " << p.name;
+  sets << " chi2 weight\n";
+  for (std::size_t i = 0; i < o.sets.size(); ++i) {
+    sets << o.sets[i].iteration;
+    for (std::size_t k = 0; k < d; ++k) sets << " " << g(c.parameters[k].value(o.sets[i].u(static_cast<Eigen::Index>(k))));
+    sets << " " << (o.sets[i].misfit.valued ? g(o.sets[i].misfit.chi2) : "NaN") << " " << g(o.weights[i]) << "\n";
+  }
+  write_file(dir / "sets.dat", sets.str());
+  for (std::size_t k = 0; k < d; ++k) write_file(dir / ("marginal_" + std::to_string(k + 1) + ".dat"), marginal_data(c.parameters[k], k, o));
+  const auto best_samples = o.samples.find(o.sets[best].name);
+  for (std::size_t k = 0; k < o.references.curves.size(); ++k)
+    write_file(dir / ("curve_" + std::to_string(k + 1) + ".dat"),
+               curve_data(o.references.curves[k], best_samples == o.samples.end() ? std::vector<validation::Sample>{} : best_samples->second));
+  validation::GnuplotValues v;
+  v.number("parameters", static_cast<double>(d));
+  v.number("curves", static_cast<double>(o.references.curves.size()));
+  v.number("samples", best_samples == o.samples.end() ? 0.0 : static_cast<double>(best_samples->second.size()));
+  std::vector<std::string> names, xs, ys, titles;
+  for (const Parameter& p : c.parameters) names.push_back(p.name + (p.prior == Parameter::Prior::LogUniform ? " (log scale)" : ""));
+  for (const CurveRow& row : o.references.curves) xs.push_back(row.x), ys.push_back(row.y), titles.push_back(row.name);
+  v.texts("parameter", names);
+  v.texts("curve_x", xs);
+  v.texts("curve_y", ys);
+  v.texts("curve_title", titles);
+  for (std::size_t k = 0; k < d; ++k) {
+    v.number("log_" + std::to_string(k + 1), c.parameters[k].prior == Parameter::Prior::LogUniform);
+    const auto t = truth.find(c.parameters[k].name);
+    v.number("truth_" + std::to_string(k + 1), t == truth.end() ? NAN : t->second);
+  }
+  write_file(dir / "values.gp", v.text_file("calibration " + c.name + ": what calibration.gp draws"));
+
+  // The tables.
+  std::ostringstream md;
+  md << "Calibration `" << c.name << "` of the study `" << fs::path(c.study).filename().string() << "` (profile " << o.profile
+     << ", " << o.seeds.size() << " sample(s) per set) against " << o.references.source << ". Engine " << o.engine << ".\n\n";
+  md << o.sets.size() << " parameter sets in " << o.iterations.size() << " iterations of " << c.batch << " (" << o.runs
+     << " runs, " << validation::significant(o.core_seconds / 60, 3) << " core-min recorded); effective sample size "
+     << validation::significant(last.ess, 3) << "; " << (o.converged ? "converged: " : "not converged: ") << o.stop_reason << ".\n\n";
+  std::vector<std::string> head{"parameter", "prior", "posterior mean ± sd", "95 % interval", "prior sd / posterior sd", "identified"};
+  if (!truth.empty()) head.insert(head.begin() + 2, "truth");
+  validation::MarkdownTable t(head);
+  for (std::size_t k = 0; k < d; ++k) {
+    const Parameter& p = c.parameters[k];
+    const Marginal& m = last.marginals[k];
+    std::vector<std::string> cells{p.name, prior_text(p), validation::significant(m.mean, 3) + " ± " + validation::significant(m.sd, 2),
+                                   "[" + validation::significant(m.lower_95, 3) + ", " + validation::significant(m.upper_95, 3) + "]",
+                                   validation::significant(m.narrowing, 2),
+                                   m.identified ? "yes" : "no: the references barely narrow its prior"};
+    if (!truth.empty()) {
+      const auto tr = truth.find(p.name);
+      cells.insert(cells.begin() + 2, tr == truth.end() ? "" :
+                   validation::significant(tr->second, 3) + (tr->second >= m.lower_95 && tr->second <= m.upper_95 ? " (inside)" : " (OUTSIDE)"));
+    }
+    t.row(cells);
+  }
+  md << t.text() << "\n";
+  if (d > 1) {
+    std::vector<std::string> ch{"correlation"};
+    for (const Parameter& p : c.parameters) ch.push_back(p.name);
+    validation::MarkdownTable ct(ch);
+    for (std::size_t a = 0; a < d; ++a) {
+      std::vector<std::string> cells{c.parameters[a].name};
+      for (std::size_t b = 0; b < d; ++b) cells.push_back(validation::fixed(r(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)), 2));
+      ct.row(cells);
+    }
+    md << ct.text() << "\n";
+  }
+  validation::MarkdownTable it({"iteration", "sets", "scored (all so far)", "effective sample size", "largest move"});
+  for (const IterationSummary& s : o.iterations)
+    it.row({std::to_string(s.number), std::to_string(s.sets), std::to_string(s.valued), validation::significant(s.ess, 3),
+            s.number == 1 ? "" : validation::fixed(s.moved, 3)});
+  md << it.text() << "\n";
+  md << "Best set " << o.sets[best].name << " (χ² " << validation::significant(o.sets[best].misfit.chi2, 3) << "):";
+  for (std::size_t k = 0; k < d; ++k)
+    md << " " << c.parameters[k].name << " = " << validation::significant(c.parameters[k].value(o.sets[best].u(static_cast<Eigen::Index>(k))), 4)
+       << (k + 1 < d ? "," : ".");
+  md << "\n";
+  validation::MarkdownTable rows({"reference", "points", "χ² at the best set", "χ² per point"});
+  for (const RowMisfit& m : o.sets[best].misfit.rows)
+    rows.row({m.name, std::to_string(m.points), validation::significant(m.chi2, 3),
+              m.points > 0 ? validation::significant(m.chi2 / m.points, 2) : ""});
+  md << "\n" << rows.text();
+  write_file(dir / "section.md", md.str());
+}
+
+}  // namespace calibration

@@ -1,0 +1,196 @@
+#include "references.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "config/yaml_section.hpp"
+#include "study/ensemble.hpp"
+
+namespace calibration {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::vector<std::string> split_csv(const std::string& line) {
+  std::vector<std::string> out;
+  std::stringstream in(line);
+  for (std::string cell; std::getline(in, cell, ',');) {
+    cell.erase(0, cell.find_first_not_of(" \t\r"));
+    cell.erase(cell.find_last_not_of(" \t\r") + 1);
+    out.push_back(cell);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<CurvePoint> read_curve_csv(const std::string& file) {
+  std::ifstream in(file);
+  if (!in) throw dem::ConfigError(file + ": cannot be read (a curve: CSV with columns x, y and optionally sd)");
+  std::vector<CurvePoint> points;
+  std::string line;
+  int number = 0;
+  bool header = false;
+  while (std::getline(in, line)) {
+    ++number;
+    if (line.empty() || line[0] == '#') continue;
+    const std::vector<std::string> cells = split_csv(line);
+    if (!header) {  // the first line that is not a comment names the columns
+      header = true;
+      if (cells.size() < 2 || cells.size() > 3)
+        throw dem::ConfigError(file + ":" + std::to_string(number) + ": the header names " + std::to_string(cells.size()) +
+                               " columns; a curve has 2 or 3: x, y and optionally sd");
+      continue;
+    }
+    CurvePoint p;
+    double* slots[] = {&p.x, &p.y, &p.sd};
+    for (std::size_t k = 0; k < cells.size() && k < 3; ++k) {
+      std::string why;
+      if (!dem::parse_decimal(cells[k], *slots[k], why) || !std::isfinite(*slots[k]))
+        throw dem::ConfigError(file + ":" + std::to_string(number) + ": column " + std::to_string(k + 1) + " is '" +
+                               cells[k].substr(0, 40) + "', not a finite number" + (why.empty() ? "" : " (" + why + ")"));
+    }
+    if (cells.size() < 2 || cells.size() > 3)
+      throw dem::ConfigError(file + ":" + std::to_string(number) + ": " + std::to_string(cells.size()) +
+                             " columns where the header has 2 or 3");
+    if (p.sd < 0) throw dem::ConfigError(file + ":" + std::to_string(number) + ": sd is negative");
+    points.push_back(p);
+  }
+  if (points.empty()) throw dem::ConfigError(file + ": no points (a header line, then x, y[, sd] per line)");
+  return points;
+}
+
+References read_references(const std::string& file, const std::string& profile) {
+  dem::Section root = dem::Section::load_file(file);
+  References r;
+  r.file = file;
+  r.source = root.text("source", std::nullopt, "where the reference values come from (a paper, a lab, a synthetic truth)");
+  for (dem::Section c : root.list("curves", "curves the runs' time series are fitted to")) {
+    CurveRow row;
+    row.name = c.text("name", std::nullopt, "what tables call the curve");
+    row.file = c.file_path("file", "the curve: a CSV with a header line and columns x, y and optionally sd");
+    row.x = c.text("x", std::nullopt, "the run's time-series column along the curve (e.g. strain_3)");
+    row.y = c.text("y", std::nullopt, "the run's time-series column compared (e.g. q_over_p, volumetric_strain)");
+    row.density = c.text("density", std::nullopt, "the study's density whose runs are read");
+    row.test = c.text("test", std::nullopt, "the study's test whose runs are read");
+    row.specimens = static_cast<int>(c.integer("specimens", 1, 1000, 1, "specimens the curve averages (its sd is their scatter)"));
+    row.tolerance = c.number("tolerance", "", {0, 1e300}, 0.0, "how well y is read off the source, in y's unit");
+    c.finish();
+    row.points = read_curve_csv(row.file);
+    if (row.tolerance == 0 && std::all_of(row.points.begin(), row.points.end(), [](const CurvePoint& p) { return p.sd == 0; }))
+      c.fail("tolerance", "is 0 and the curve has no sd column: give one of them (the misfit divides by it)");
+    r.curves.push_back(std::move(row));
+  }
+  if (root.has("rows")) {
+    r.rows_file = root.file_path("rows", "a validate reference file whose scalar rows are fitted too");
+    r.rows = validation::load_references(r.rows_file, profile);
+  }
+  root.finish();
+  if (r.curves.empty() && r.rows.empty()) root.fail("curves", "is empty and no rows are given: nothing to fit");
+  return r;
+}
+
+std::vector<std::optional<double>> curve_on_run(const CurveRow& c, const validation::TestResult& t) {
+  const std::vector<double>& x = validation::column(t.series, c.x);
+  const std::vector<double>& y = validation::column(t.series, c.y);
+  std::size_t first = 0;
+  if (const auto s = t.series.find("stage"); s != t.series.end() && !s->second.empty()) {
+    const double last = s->second.back();
+    while (first < s->second.size() && s->second[first] != last) ++first;
+  }
+  std::vector<std::optional<double>> out;
+  for (const CurvePoint& p : c.points) {
+    std::optional<double> v;
+    for (std::size_t i = first; i + 1 < x.size() && !v; ++i) {
+      const double a = x[i] - p.x, b = x[i + 1] - p.x;
+      if (a == 0) v = y[i];
+      else if ((a < 0) != (b < 0) || b == 0) v = y[i] + (y[i + 1] - y[i]) * (-a) / (b - a);
+    }
+    out.push_back(v);
+  }
+  return out;
+}
+
+namespace {
+
+const validation::TestResult* find_named_test(const validation::DensityResults& d, const std::string& name) {
+  for (const validation::TestResult& t : d.tests)
+    if (t.name == name) return &t;
+  return nullptr;
+}
+
+RowMisfit curve_misfit(const CurveRow& c, const std::vector<validation::Sample>& samples) {
+  RowMisfit m{c.name, 0, 0, "", true};
+  std::vector<std::vector<std::optional<double>>> per_sample;
+  for (const validation::Sample& s : samples) {
+    const auto d = s.densities.find(c.density);
+    const validation::TestResult* t = d == s.densities.end() ? nullptr : find_named_test(d->second, c.test);
+    if (!t) {
+      m.valued = false, m.note = s.name + ": no complete result of " + c.density + " " + c.test;
+      return m;
+    }
+    per_sample.push_back(curve_on_run(c, *t));
+  }
+  const double n_samples = static_cast<double>(samples.size());
+  for (std::size_t j = 0; j < c.points.size(); ++j) {
+    std::vector<double> ys;
+    for (std::size_t k = 0; k < per_sample.size(); ++k) {
+      if (!per_sample[k][j]) {
+        m.valued = false;
+        std::ostringstream why;
+        why << samples[k].name << ": the run's " << c.x << " never reaches " << c.points[j].x << " on its last stage";
+        m.note = why.str();
+        return m;
+      }
+      ys.push_back(*per_sample[k][j]);
+    }
+    const validation::Spread s = validation::spread(ys);
+    const CurvePoint& p = c.points[j];
+    const double sample_var = samples.size() >= 3 ? s.sd * s.sd : p.sd * p.sd;
+    const double var = c.tolerance * c.tolerance + p.sd * p.sd / c.specimens + sample_var / n_samples;
+    const double r = s.mean - p.y;
+    m.chi2 += var > 0 ? r * r / var : (r == 0 ? 0 : INFINITY);
+    ++m.points;
+  }
+  return m;
+}
+
+RowMisfit row_misfit(const validation::Row& row, const std::vector<validation::Sample>& samples) {
+  RowMisfit m{row.name, 0, 1, "", true};
+  const validation::RowResult r = validation::evaluate(row, samples);
+  if (r.valued < static_cast<int>(samples.size())) {
+    m.valued = false;
+    for (const auto& s : r.samples)
+      if (!s.measured.value) m.note = s.sample + ": " + s.measured.note;
+    return m;
+  }
+  if (row.rule != "interval") {
+    m.chi2 = -2 * std::log((r.holds + 0.5) / (r.valued + 1.0));
+    return m;
+  }
+  const double mean = r.spread.mean;
+  const double distance = r.paper.contains(mean) ? 0 : std::min(std::abs(mean - r.paper.low), std::abs(mean - r.paper.high));
+  double sd = std::max(r.spread.sd, row.resolution);
+  if (sd == 0) sd = row.tolerance, m.note = "one sample and no resolution: the row's tolerance stands for its scatter";
+  const double var = sd * sd * (1 + 1.0 / r.spread.n);
+  m.chi2 = distance == 0 ? 0 : var > 0 ? distance * distance / var : INFINITY;
+  return m;
+}
+
+}  // namespace
+
+SetMisfit score(const References& refs, const std::vector<validation::Sample>& samples) {
+  SetMisfit s;
+  for (const CurveRow& c : refs.curves) s.rows.push_back(curve_misfit(c, samples));
+  for (const validation::Row& row : refs.rows) s.rows.push_back(row_misfit(row, samples));
+  for (const RowMisfit& m : s.rows) {
+    s.valued &= m.valued;
+    s.chi2 += m.chi2;
+  }
+  return s;
+}
+
+}  // namespace calibration

@@ -1,0 +1,70 @@
+#pragma once
+// What a calibration fits: curves (a lab test's y against x, e.g. q/p and volumetric strain against
+// axial strain, with the specimens' scatter) and, optionally, the scalar rows of a validate
+// reference file (reference_data/paper.yaml or a user's own), each turned into a misfit chi^2.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "judge/rows.hpp"
+#include "study/results.hpp"
+
+namespace calibration {
+
+struct CurvePoint {
+  double x = 0, y = 0;
+  double sd = 0;  // the specimens' standard deviation of y at x (0: one specimen, or not given)
+};
+
+struct CurveRow {
+  std::string name;
+  std::string file;           // the CSV: x, y and optionally sd columns, a header line naming them
+  std::string x, y;           // the run's time-series columns (strain_3, q_over_p, volumetric_strain, ...)
+  std::string density, test;  // the runs it reads: the study's density and test names
+  int specimens = 1;          // how many specimens the curve averages (its sd is their scatter)
+  double tolerance = 0;       // how well y is read off the source (digitising), in y's unit
+  std::vector<CurvePoint> points;
+};
+
+struct References {
+  std::string file;
+  std::string source;              // where the reference values come from (shown in the report)
+  std::vector<CurveRow> curves;
+  std::string rows_file;           // a validate reference file, or ""
+  std::vector<validation::Row> rows;
+};
+
+// Reads a calibration's reference file (YAML; errors name the file and the key) and its curves.
+References read_references(const std::string& file, const std::string& profile);
+std::vector<CurvePoint> read_curve_csv(const std::string& file);
+
+// The misfit of one row on a parameter set's samples.
+struct RowMisfit {
+  std::string name;
+  double chi2 = 0;  // sum over the row's points of ((model - reference) / sigma)^2
+  int points = 0;
+  std::string note;  // why the row has no value (a run that does not reach a point's x, ...)
+  bool valued = true;
+};
+
+struct SetMisfit {
+  std::vector<RowMisfit> rows;
+  double chi2 = 0;
+  bool valued = true;  // false: some row could not be computed (the set's likelihood is 0)
+};
+
+// The curve's y on one run: on the run's last stage, where x first reaches each point's x (linear
+// between the two rows that bracket it); empty when the stage never reaches it.
+std::vector<std::optional<double>> curve_on_run(const CurveRow& c, const validation::TestResult& t);
+
+// chi^2 of each row on the samples (one DensityResults map per sample) of a parameter set:
+// - a curve point: (mean of the samples' y - y_ref)^2 / sigma^2, sigma^2 = tolerance^2 + sd^2 /
+//   specimens + s^2 / m, s the samples' sd of y at the point when m >= 3 samples, else the
+//   reference's sd (one specimen's scatter stands for one sample's: 1 or 2 samples cannot measure it);
+// - a scalar row of rule interval: the distance of the samples' mean to the reference's region,
+//   over sigma^2 = sd^2 (1 + 1/m) (the reference is one sample), sd at least the row's resolution;
+// - a row of rule majority or every (a trend, an ordering): -2 ln((k + 1/2) / (m + 1)), k of the m
+//   samples in which the statement holds (0.0 when all hold in many samples).
+SetMisfit score(const References& refs, const std::vector<validation::Sample>& samples);
+
+}  // namespace calibration

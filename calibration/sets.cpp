@@ -1,0 +1,53 @@
+#include "sets.hpp"
+
+#include <tuple>
+
+namespace calibration {
+
+pipeline::Variant variant_of(const Calibration& c, const ParameterSet& s) {
+  pipeline::Variant v;
+  v.name = s.name;
+  for (std::size_t j = 0; j < c.parameters.size(); ++j) {
+    const Parameter& p = c.parameters[j];
+    const std::string value = p.value_text(s.u(static_cast<Eigen::Index>(j)));
+    pipeline::Overrides& into = p.applies_to == "test" ? v.test : p.applies_to == "prepare" ? v.prepare : v.set;
+    for (const std::string& key : p.keys) into.emplace_back(key, value);
+  }
+  return v;
+}
+
+std::map<std::string, std::vector<validation::Sample>> samples_of_sets(const std::vector<pipeline::PlannedRun>& runs) {
+  using Key = std::tuple<std::string, std::int64_t, std::string>;  // variant, seed, density
+  std::map<Key, std::string> preparation;
+  for (const pipeline::PlannedRun& r : runs)
+    if (r.test.empty())
+      for (const std::string& v : r.variants) preparation[{v, r.seed.value_or(0), r.density}] = r.result;
+  std::map<std::string, std::map<std::int64_t, validation::Sample>> by_set;
+  for (const pipeline::PlannedRun& r : runs) {
+    if (r.test.empty()) continue;
+    for (const std::string& v : r.variants) {
+      validation::Sample& s = by_set[v][r.seed.value_or(0)];
+      s.name = r.seed ? "seed" + std::to_string(*r.seed) : "";
+      validation::DensityResults& d = s.densities[r.density];
+      if (!d.prepared) {
+        const auto p = preparation.find({v, r.seed.value_or(0), r.density});
+        try {
+          if (p != preparation.end()) validation::load_preparation(p->second, d);
+        } catch (const std::exception&) {
+          d.missing_runs.push_back("prepare");
+        }
+      }
+      try {
+        d.tests.push_back(validation::load_test(r.result, r.test));
+      } catch (const std::exception&) {
+        d.missing_runs.push_back(r.test);
+      }
+    }
+  }
+  std::map<std::string, std::vector<validation::Sample>> out;
+  for (auto& [v, seeds] : by_set)
+    for (auto& [seed, sample] : seeds) out[v].push_back(std::move(sample));
+  return out;
+}
+
+}  // namespace calibration

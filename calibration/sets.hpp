@@ -1,0 +1,34 @@
+#pragma once
+// Parameter sets as the pipeline runs them: each set is a variant of the calibration's study (its
+// parameters' keys as overrides), planned, run and read back as an ensemble of samples.
+#include <map>
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "calibration_file.hpp"
+#include "config/study_config.hpp"
+#include "plan/run_plan.hpp"
+#include "references.hpp"
+#include "study/results.hpp"
+
+namespace calibration {
+
+struct ParameterSet {
+  std::string name;  // i<iteration>s<index>, the variant's name
+  int iteration = 0;
+  Eigen::VectorXd u;  // on the unit cube
+  double log_likelihood = 0;
+  SetMisfit misfit;
+};
+
+// The variant that runs a set: each parameter's keys set to its value, in the runs it applies to.
+pipeline::Variant variant_of(const Calibration& c, const ParameterSet& s);
+
+// The samples of each variant (by name) from a plan's runs: per seed, the preparation's and the
+// tests' complete results; a result that is missing or not complete is left out (the set's
+// misfit then says which).
+std::map<std::string, std::vector<validation::Sample>> samples_of_sets(const std::vector<pipeline::PlannedRun>& runs);
+
+}  // namespace calibration

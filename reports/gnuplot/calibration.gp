@@ -1,0 +1,57 @@
+# A calibration's figures, from the data calibrate writes to its report folder (run there):
+#   posterior.png: each parameter's posterior density over its prior's (marginal_<j>.dat), the
+#     truth as a dashed line when the references were made by the engine, and, for two or more
+#     parameters, every set run in the plane of the first two, coloured by its posterior weight;
+#   curves.png: each reference curve (with its specimens' sd) and the best set's samples.
+# Values: values.gp (calibrate). gnuplot calibration.gp, in the report folder.
+load 'values.gp'
+load 'style.gp'
+set terminal pngcairo size 1200,450 font ",11" enhanced
+set output 'posterior.png'
+n = int(parameters)
+panels = n + (n >= 2 ? 1 : 0)
+set multiplot layout 1, panels title "Posterior (bars: mass over the prior's; dashed: the truth when known)" font ",12"
+do for [j = 1:n] {
+  unset logscale x
+  if (value(sprintf("log_%d", j)) > 0) { set logscale x }
+  set xlabel value(sprintf("parameter_%d", j)) noenhanced
+  set ylabel "posterior / prior"
+  t = value(sprintf("truth_%d", j))
+  unset arrow
+  if (t == t) { set arrow 1 from first t, graph 0 to first t, graph 1 nohead dt 2 lw 2 lc rgb "#d62728" }
+  set yrange [0:*]
+  plot sprintf("marginal_%d.dat", j) u 2:4:1:3 w boxxyerror fs solid 0.5 lc rgb "#1f77b4" notitle, \
+       1 w l dt 3 lc rgb "#555555" t "prior"
+}
+if (n >= 2) {
+  unset arrow
+  unset logscale x
+  if (value("log_1") > 0) { set logscale x }
+  if (value("log_2") > 0) { set logscale y }
+  set yrange [*:*]
+  set xlabel value("parameter_1") noenhanced
+  set ylabel value("parameter_2") noenhanced
+  set cblabel "weight"
+  set palette defined (0 "#dddddd", 1 "#1f77b4", 2 "#08306b")
+  t1 = value("truth_1"); t2 = value("truth_2")
+  plot "sets.dat" u 2:3:(column(n + 3)) w p pt 7 ps 0.8 lc palette notitle, \
+       (t1 == t1 ? "+" : "") u (t1):(t2) every ::0::0 w p pt 3 ps 3 lw 2 lc rgb "#d62728" t "truth"
+}
+unset multiplot
+
+set output 'curves.png'
+m = int(curves)
+set terminal pngcairo size 600 * m, 450 font ",11" enhanced
+set output 'curves.png'
+unset logscale
+set multiplot layout 1, m title "References (points: mean ± sd of the specimens) and the best set's samples (lines)" font ",12"
+do for [k = 1:m] {
+  set xlabel value(sprintf("curve_x_%d", k)) noenhanced
+  set ylabel value(sprintf("curve_y_%d", k)) noenhanced
+  set title value(sprintf("curve_title_%d", k)) noenhanced
+  set yrange [*:*]
+  set key bottom right
+  plot sprintf("curve_%d.dat", k) index 0 u 1:2:3 w yerrorbars pt 7 ps 1 lc rgb "#000000" t "reference", \
+       for [b = 1:int(samples)] sprintf("curve_%d.dat", k) index b u 1:2 w l lw 1.5 lc rgb "#1f77b4" t (b == 1 ? "best set" : "")
+}
+unset multiplot

@@ -1,0 +1,89 @@
+// The calibrate tool end to end on 64-sphere samples: it plans, runs two iterations, writes its
+// posterior, and, started again, replays itself: every run reused and the same posterior.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/io/io_test_support.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string bin = std::string(DEM_BINARY_DIR) + "/bin/";
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+}  // namespace
+
+TEST_CASE("calibrate runs, writes its posterior, and replays itself from its runs", "[calibration][cli]") {
+  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "calibrate_cli";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string src = DEM_SOURCE_DIR;
+  std::ofstream(dir / "study.yaml") << "name: tiny\noutput: results\npreparation: " << src << "/scenes/prepare_dense.yaml\n"
+                                    << "densities: [{name: dense, friction: 0.0}]\n"
+                                    << "tests: [{name: triaxial, scene: " << src << "/scenes/tests/triaxial_drained.yaml, "
+                                    << "set: {\"stages[1].until.strain\": 0.01}}]\n"
+                                    << "profiles: {quick: {lattice: 4, seeds: 1}}\n";
+  // A typed curve (q/p of 64 spheres is whatever it is: the test checks the mechanism, not a value).
+  std::ofstream(dir / "curve.csv") << "strain_3,q_over_p,sd\n0.002,0.8,0.1\n0.008,0.9,0.1\n";
+  std::ofstream(dir / "refs.yaml") << "source: typed\ncurves: [{name: qp, file: curve.csv, x: strain_3, y: q_over_p, "
+                                   << "density: dense, test: triaxial}]\n";
+  std::ofstream(dir / "cal.yaml") << "name: tiny\nstudy: study.yaml\nreferences: refs.yaml\nreport: report\n"
+                                  << "parameters: [{name: friction, keys: material.friction, uniform: [0.1, 0.9]}]\n"
+                                  << "batch: 3\nmin_iterations: 2\nmax_iterations: 2\n";
+  const std::string cmd = "cd '" + dir.string() + "' && '" + bin + "calibrate' cal.yaml -j 2 --threads 1";
+  const auto plan = dem::test::run_command(cmd + " --plan 2>&1");
+  INFO(plan.out);
+  REQUIRE(plan.exit_code == 0);
+  CHECK_THAT(plan.out, Catch::Contains("first iteration: 4 runs (1 shared by every set, 3 for its sets still to run)"));
+  CHECK_FALSE(fs::exists(dir / "report" / "posterior.json"));
+
+  const auto first = dem::test::run_command(cmd + " 2>&1");
+  INFO(first.out);
+  REQUIRE(first.exit_code == 0);
+  const nlohmann::json p = nlohmann::json::parse(read(dir / "report" / "posterior.json"));
+  REQUIRE(p["sets"].size() == 6);
+  double total = 0;
+  for (const auto& s : p["sets"]) total += s["weight"].get<double>();
+  CHECK(total == Approx(1));
+  const auto& f = p["parameters"][0];
+  CHECK(f["lower_95"].get<double>() <= f["median"].get<double>());
+  CHECK(f["median"].get<double>() <= f["upper_95"].get<double>());
+  CHECK(f["lower_95"].get<double>() >= 0.1);
+  CHECK(f["upper_95"].get<double>() <= 0.9);
+  CHECK(p["iterations"].size() == 2);
+  CHECK(fs::exists(dir / "report" / "section.md"));
+  CHECK(fs::exists(dir / "report" / "curve_1.dat"));
+
+  // Again: the same draws, every run reused (no "started"), the same posterior.
+  const std::string before = read(dir / "report" / "posterior.json");
+  const auto again = dem::test::run_command(cmd + " 2>&1");
+  INFO(again.out);
+  REQUIRE(again.exit_code == 0);
+  CHECK(again.out.find("] started ") == std::string::npos);
+  CHECK(read(dir / "report" / "posterior.json") == before);
+}
+
+TEST_CASE("calibrate refuses bad input with the file and key", "[calibration][cli]") {
+  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "calibrate_cli_bad";
+  fs::create_directories(dir);
+  std::ofstream(dir / "cal.yaml") << "name: x\nstudy: nosuch.yaml\nreferences: r.yaml\nreport: out\n"
+                                  << "parameters: [{name: a, keys: k, uniform: [1, 0]}]\n";
+  const auto r = dem::test::run_command("'" + bin + "calibrate' '" + (dir / "cal.yaml").string() + "' 2>&1");
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.out, Catch::Contains("cal.yaml") && Catch::Contains("uniform") && Catch::Contains("low < high"));
+  const auto missing = dem::test::run_command("'" + bin + "calibrate' '" + (dir / "none.yaml").string() + "' 2>&1");
+  CHECK(missing.exit_code == 2);
+  CHECK_THAT(missing.out, Catch::Contains("none.yaml"));
+}

@@ -1,0 +1,116 @@
+// The calibration's references: curves read from CSV, their misfit on a run's series, and the
+// calibration file's errors.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+
+#include "calibration_file.hpp"
+#include "config/yaml_section.hpp"
+#include "references.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "calibration_refs";
+
+std::string write(const std::string& name, const std::string& text) {
+  fs::create_directories(dir);
+  std::ofstream(dir / name) << text;
+  return (dir / name).string();
+}
+
+std::string error_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+
+// A run whose last stage has y = 2 x for x = 0 ... 1 (an earlier stage has other values).
+validation::TestResult line_run() {
+  validation::TestResult t;
+  t.name = "triaxial";
+  for (int i = 0; i < 3; ++i) t.series["stage"].push_back(0), t.series["x"].push_back(0.7), t.series["y"].push_back(9);
+  for (int i = 0; i <= 10; ++i) t.series["stage"].push_back(1), t.series["x"].push_back(0.1 * i), t.series["y"].push_back(0.2 * i);
+  return t;
+}
+
+std::vector<validation::Sample> samples_of(const std::vector<validation::TestResult>& runs) {
+  std::vector<validation::Sample> out;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    validation::Sample s;
+    s.name = "seed" + std::to_string(i + 1);
+    s.densities["dense"].tests.push_back(runs[i]);
+    out.push_back(s);
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("a curve is read on the run's last stage, where x first reaches each point", "[calibration]") {
+  calibration::CurveRow c;
+  c.x = "x", c.y = "y";
+  c.points = {{0.25, 0, 0}, {0.7, 0, 0}, {1.5, 0, 0}};
+  const auto v = calibration::curve_on_run(c, line_run());
+  REQUIRE(v[0]);
+  CHECK(*v[0] == Approx(0.5));  // between the rows at 0.2 and 0.3, not the first stage's 9
+  CHECK(*v[1] == Approx(1.4));
+  CHECK_FALSE(v[2]);            // never reached
+}
+
+TEST_CASE("a curve's chi2 divides by the tolerance, the specimens' and the samples' scatter", "[calibration]") {
+  calibration::References r;
+  calibration::CurveRow c{"line", "", "x", "y", "dense", "triaxial", 4, 0.1, {{0.5, 1.2, 0.2}}};
+  r.curves = {c};
+  // One sample: its scatter is taken as one specimen's (0.2): var = 0.1^2 + 0.2^2 / 4 + 0.2^2 / 1 = 0.06.
+  const auto one = calibration::score(r, samples_of({line_run()}));
+  REQUIRE(one.valued);
+  CHECK(one.chi2 == Approx(0.2 * 0.2 / 0.06));
+  // Three samples with y = 2x, 2x + 0.1, 2x - 0.1: mean 1.0, sd 0.1: var = 0.01 + 0.01 + 0.01 / 3.
+  std::vector<validation::TestResult> three{line_run(), line_run(), line_run()};
+  for (double& y : three[1].series["y"]) y += 0.1;
+  for (double& y : three[2].series["y"]) y -= 0.1;
+  const auto m = calibration::score(r, samples_of(three));
+  CHECK(m.chi2 == Approx(0.04 / (0.01 + 0.01 + 0.01 / 3)));
+  CHECK(m.rows[0].points == 1);
+  // A point beyond the run: the set is not scored, and the note says why.
+  r.curves[0].points.push_back({2.0, 4.0, 0.2});
+  const auto beyond = calibration::score(r, samples_of({line_run()}));
+  CHECK_FALSE(beyond.valued);
+  CHECK_THAT(beyond.rows[0].note, Catch::Contains("never reaches 2"));
+}
+
+TEST_CASE("bad curve files and calibration files name the file, line and key", "[calibration]") {
+  CHECK_THAT(error_of([] { calibration::read_curve_csv(write("a.csv", "x,y\n1,2\n3,abc\n")); }),
+             Catch::Contains("a.csv:3") && Catch::Contains("'abc'"));
+  CHECK_THAT(error_of([] { calibration::read_curve_csv(write("b.csv", "x,y,sd,z\n")); }), Catch::Contains("4 columns"));
+  CHECK_THAT(error_of([] { calibration::read_curve_csv(write("c.csv", "x,y\n")); }), Catch::Contains("no points"));
+  CHECK_THAT(error_of([] { calibration::read_curve_csv(write("d.csv", "x,y,sd\n1,2,-1\n")); }), Catch::Contains("negative"));
+  const std::string head = "name: c\nstudy: s.yaml\nreferences: r.yaml\nreport: out\n";
+  CHECK_THAT(error_of([&] { calibration::read_calibration(write("e.yaml", head + "parameters: [{name: a, keys: k}]\n")); }),
+             Catch::Contains("exactly one prior"));
+  CHECK_THAT(error_of([&] { calibration::read_calibration(write("f.yaml", head + "parameters: [{name: a, keys: k, log_uniform: [0, 1]}]\n")); }),
+             Catch::Contains("log_uniform") && Catch::Contains("low > 0"));
+  CHECK_THAT(error_of([&] {
+               calibration::read_calibration(write("g.yaml", head + "parameters: [{name: a, keys: k, uniform: [0, 1]}, "
+                                                                   "{name: b, keys: [j, k], uniform: [0, 1]}]\n"));
+             }),
+             Catch::Contains("'k' is set by two parameters in the test runs"));
+  // The same key in the preparation and in the test: two parameters (the paper's two frictions).
+  CHECK(calibration::read_calibration(write("g2.yaml", head + "parameters: [{name: a, keys: k, applies_to: prepare, uniform: [0, 1]}, "
+                                                            "{name: b, keys: k, uniform: [0, 1]}]\n")).parameters.size() == 2);
+  CHECK_THAT(error_of([&] { calibration::read_calibration(write("h.yaml", head + "parameters: [{name: a, keys: k, values: [1]}]\n")); }),
+             Catch::Contains("at least 2 values"));
+  CHECK_THAT(error_of([&] { calibration::read_calibration(write("i.yaml", head + "parameters: [{name: a, keys: k, uniform: [0, 1], applies: test}]\n")); }),
+             Catch::Contains("applies"));
+  const auto ok = calibration::read_calibration(write("j.yaml", head + "batch: 4\nparameters: [{name: a, keys: [k1, k2], applies_to: both, uniform: [0, 2]}]\n"));
+  CHECK(ok.batch == 4);
+  CHECK(ok.parameters[0].keys == std::vector<std::string>{"k1", "k2"});
+  CHECK(ok.parameters[0].applies_to == "both");
+}
