@@ -13,6 +13,7 @@
 #include "study/format.hpp"
 #include "study/markdown_table.hpp"
 #include "study/series.hpp"
+#include "study/stamp.hpp"
 
 namespace calibration {
 namespace fs = std::filesystem;
@@ -175,6 +176,14 @@ void write_report(const Outcome& o, const std::map<std::string, double>& truth) 
     }
     j["sets"].push_back(x);
   }
+  // The stamp of the runs (engine, baseline, spheres, samples, date), for the report's section line.
+  validation::Stamp stamp;
+  try {
+    stamp = validation::stamp_of_results(o.results, o.sets.front().name);
+  } catch (const std::exception&) {
+  }
+  j["stamp"] = validation::stamp_json(stamp);
+  validation::write_stamp_file(dir.string(), stamp);
   write_file(dir / "posterior.json", j.dump(1) + "\n");
 
   // Figure data.

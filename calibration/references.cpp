@@ -68,7 +68,8 @@ References read_references(const std::string& file, const std::string& profile) 
   References r;
   r.file = file;
   r.source = root.text("source", std::nullopt, "where the reference values come from (a paper, a lab, a synthetic truth)");
-  for (dem::Section c : root.list("curves", "curves the runs' time series are fitted to")) {
+  for (dem::Section c : root.has("curves") ? root.list("curves", "curves the runs' time series are fitted to")
+                                            : std::vector<dem::Section>{}) {
     CurveRow row;
     row.name = c.text("name", std::nullopt, "what tables call the curve");
     row.file = c.file_path("file", "the curve: a CSV with a header line and columns x, y and optionally sd");

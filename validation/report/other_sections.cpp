@@ -16,6 +16,8 @@ const std::vector<OtherStudySection>& other_study_sections() {
       {"Appendix: Stability", "file.stability", "stability/stamp.json", "", "scenes/stability/base.yaml"},
       {"Appendix: Critical state: friction, void ratio and coordination against μ", "file.critical_state", "critical_state/stamp.json", "", ""},
       {"Appendix: Liquefaction: cyclic stress ratio against cycles", "file.liquefaction", "liquefaction/stamp.json", "", ""},
+      {"Appendix: Calibration: parameters from references", "file.calibration", "calibration/synthetic_triaxial/stamp.json", "",
+       "pipeline/studies/calibration_triaxial.yaml"},
   };
   return list;
 }
