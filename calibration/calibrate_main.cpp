@@ -16,6 +16,7 @@
 
 #include "calibrate.hpp"
 #include "config/yaml_section.hpp"
+#include "io/atomic_file.hpp"
 #include "io/failure.hpp"
 #include "posterior_report.hpp"
 #include "study/ensemble.hpp"
@@ -26,16 +27,10 @@ namespace {
 namespace fs = std::filesystem;
 using calibration::CurvePoint;
 
-// Writes `text` to `file` whole (through FILE.partial, renamed), its folder made if missing.
+// Writes `text` to `file` whole (io/atomic_file.hpp), its folder made if missing.
 void write_whole(const std::string& file, const std::string& text) {
   if (fs::path(file).has_parent_path()) fs::create_directories(fs::path(file).parent_path());
-  const std::string partial = file + ".partial";
-  {
-    std::ofstream out(partial);
-    out << text;
-    if (!out.flush()) throw std::runtime_error(partial + ": cannot be written");
-  }
-  fs::rename(partial, file);
+  dem::write_file_atomically(file, text);
 }
 
 int parse(CLI::App& app, int argc, char** argv) {

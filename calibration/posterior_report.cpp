@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <yaml-cpp/yaml.h>
 
+#include "io/atomic_file.hpp"
 #include "io/hdf5.hpp"
 #include "study/format.hpp"
 #include "study/markdown_table.hpp"
@@ -21,15 +22,7 @@ using nlohmann::json;
 
 namespace {
 
-void write_file(const fs::path& path, const std::string& text) {
-  const fs::path partial = path.string() + ".partial";
-  {
-    std::ofstream out(partial);
-    out << text;
-    if (!out) throw std::runtime_error(partial.string() + ": cannot be written");
-  }
-  fs::rename(partial, path);
-}
+void write_file(const fs::path& path, const std::string& text) { dem::write_file_atomically(path.string(), text); }
 
 std::string g(double x) { return validation::format_number(x); }
 
