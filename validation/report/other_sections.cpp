@@ -18,6 +18,7 @@ const std::vector<OtherStudySection>& other_study_sections() {
       {"Appendix: Liquefaction: cyclic stress ratio against cycles", "file.liquefaction", "liquefaction/stamp.json", "", ""},
       {"Appendix: Calibration: parameters from references", "file.calibration", "calibration/synthetic_triaxial/stamp.json", "",
        "pipeline/studies/calibration_triaxial.yaml"},
+      {"Appendix: Against published DEM values", "file.literature", "literature/validation.json", "stamp", ""},
   };
   return list;
 }

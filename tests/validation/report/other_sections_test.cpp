@@ -53,7 +53,7 @@ TEST_CASE("report stamps: every section another study makes is listed once, unde
     REQUIRE(tmpl.find("{{" + s.table_key + "}}") != std::string::npos);
     REQUIRE(++keys[s.table_key] == 1);
   }
-  REQUIRE(keys.size() == 6);  // decisions, convergence, stability, critical state, liquefaction, calibration
+  REQUIRE(keys.size() == 7);  // decisions, convergence, stability, critical state, liquefaction, literature, calibration
 }
 
 TEST_CASE("report stamps: a stamp on the paper study's baseline is said under its heading", "[report][stamp]") {
