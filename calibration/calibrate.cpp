@@ -11,6 +11,7 @@
 #include "exec/slurm.hpp"
 #include "plan/plan_cost.hpp"
 #include "study/format.hpp"
+#include "surrogate.hpp"
 
 namespace calibration {
 namespace fs = std::filesystem;
@@ -98,9 +99,12 @@ std::optional<Outcome> run_calibration(const Calibration& c, const RunOptions& o
     std::vector<Eigen::VectorXd> all_u;
     std::vector<double> all_ll;
     for (const ParameterSet& s : out.sets) all_u.push_back(s.u), all_ll.push_back(s.log_likelihood);
-    // The Gaussian spans at least the best 2d + 2 sets (a covariance in d dimensions needs d + 1).
-    const Proposal q = it == 1 ? Proposal{}
-                               : fit_proposal(all_u, proposal_weights(all_u, all_ll, proposals, drawn, 2.0 * d + 2), c.prior_share);
+    // After the first iteration: fitted to the posterior on the response surface when there is
+    // one, else to the sets' weights tempered to span at least the best 2d + 2 sets.
+    const Proposal q = it == 1                       ? Proposal{}
+                       : !out.posterior_from.empty() ? fit_proposal(out.posterior_u, out.posterior_w, c.prior_share)
+                                                     : fit_proposal(all_u, proposal_weights(all_u, all_ll, proposals, drawn, 2.0 * d + 2),
+                                                                    c.prior_share);
     const std::vector<Eigen::VectorXd> batch = sampler.draw(q, c.batch);
     proposals.push_back(q);
     drawn.push_back(c.batch);
@@ -138,6 +142,26 @@ std::optional<Outcome> run_calibration(const Calibration& c, const RunOptions& o
     std::vector<double> log_likelihood;
     for (const ParameterSet& s : out.sets) u.push_back(s.u), log_likelihood.push_back(s.log_likelihood);
     out.weights = importance_weights(u, log_likelihood, proposals, drawn);
+    // The posterior: on a response surface fitted to the sets near it (surrogate.hpp), when the
+    // references are curves; else the sets' own weights. The surface's region: the Gaussian this
+    // iteration drew from (the first: one fitted to the best sets).
+    const Proposal region = it > 1 ? proposals.back()
+                                   : fit_proposal(u, proposal_weights(u, log_likelihood, proposals, drawn, 2.0 * quadratic_terms(d)), 0);
+    out.posterior_from.clear();
+    out.posterior_u = u, out.posterior_w = out.weights;
+    if (const std::optional<ResponseSurface> surface = fit_surface(out.references, out.sets, region)) {
+      std::vector<Eigen::VectorXd> pu;
+      std::vector<double> pw;
+      sample_surface(*surface, out.references, 4000, pu, pw);
+      if (!pu.empty()) {
+        out.posterior_u = std::move(pu), out.posterior_w = std::move(pw);
+        out.surface_sets = surface->sets;
+        out.surface_noise = surface->noise_to_reference;
+        out.posterior_from = "response surface";
+        out.region_centre = surface->centre;
+        out.region_sd = surface->scale * surface->radius;
+      }
+    }
     IterationSummary summary;
     summary.number = it;
     summary.sets = c.batch;
@@ -149,32 +173,45 @@ std::optional<Outcome> run_calibration(const Calibration& c, const RunOptions& o
                                  if (!m.valued) return m.name + ": " + m.note;
                                return std::string("?");
                              }()));
-    summary.ess = effective_sample_size(out.weights);
-    for (std::size_t j = 0; j < c.parameters.size(); ++j) summary.marginals.push_back(marginal(c.parameters[j], j, u, out.weights));
+    summary.ess = effective_sample_size(out.posterior_w);
+    summary.sets_ess = effective_sample_size(out.weights);
+    for (std::size_t j = 0; j < c.parameters.size(); ++j)
+      summary.marginals.push_back(marginal(c.parameters[j], j, out.posterior_u, out.posterior_w));
+    // On a surface, the posterior's mean +- 2 sd must lie inside the region it was fitted in.
+    summary.contained = true;
+    if (!out.posterior_from.empty())
+      for (std::size_t j = 0; j < c.parameters.size(); ++j) {
+        const Eigen::Index k = static_cast<Eigen::Index>(j);
+        summary.contained &= std::abs(summary.marginals[j].unit_mean - out.region_centre(k)) + 2 * summary.marginals[j].unit_sd <=
+                             out.region_sd(k);
+      }
     summary.moved = before.empty() ? 1 : largest_move(before, summary.marginals);
     before = summary.marginals;
-    std::printf("[calibrate] iteration %d: %d of %zu sets scored, effective sample size %.1f, moved %.3f of the prior ranges;",
-                it, summary.valued, out.sets.size(), summary.ess, summary.moved);
+    std::printf("[calibrate] iteration %d: %d of %zu sets scored; posterior from %s (effective sample size %.1f), moved %.3f of "
+                "the prior ranges;", it, summary.valued, out.sets.size(),
+                out.posterior_from.empty() ? "the sets' weights" : ("a response surface over " + std::to_string(out.surface_sets) + " sets").c_str(),
+                summary.ess, summary.moved);
     for (std::size_t j = 0; j < c.parameters.size(); ++j)
       std::printf(" %s %.4g +- %.3g", c.parameters[j].name.c_str(), summary.marginals[j].mean, summary.marginals[j].sd);
     std::printf("\n");
     std::fflush(stdout);
     out.iterations.push_back(summary);
-    if (it >= c.min_iterations && summary.moved <= c.tolerance && summary.ess >= c.min_effective_sets) {
+    if (it >= c.min_iterations && summary.moved <= c.tolerance && summary.ess >= c.min_effective_sets && summary.contained) {
       out.converged = true;
-      char why[200];
-      std::snprintf(why, sizeof why, "no posterior mean or sd moved by more than %.3g of its prior range (%.3g) in iteration %d, "
-                    "and the posterior rests on %.1f effective sets (at least %.3g asked)", c.tolerance, summary.moved, it, summary.ess,
-                    c.min_effective_sets);
-      out.stop_reason = why;
+      out.stop_reason = "no posterior mean or sd moved by more than " + validation::significant(c.tolerance, 3) +
+                        " of its prior range (" + validation::significant(summary.moved, 2) + ") in iteration " + std::to_string(it) +
+                        ", and the posterior rests on " + validation::significant(summary.ess, 3) + " effective points (at least " +
+                        validation::significant(c.min_effective_sets, 3) + " asked)" +
+                        (out.posterior_from.empty() ? "" : " inside the region of its response surface");
       break;
     }
   }
   if (!out.converged)
     out.stop_reason = "max_iterations (" + std::to_string(c.max_iterations) + ") reached before the posterior settled (it moved " +
                       validation::significant(out.iterations.back().moved, 2) + " of a prior range in the last iteration and rests on " +
-                      validation::significant(out.iterations.back().ess, 2) + " effective sets, " +
-                      validation::significant(c.min_effective_sets, 3) + " asked)";
+                      validation::significant(out.iterations.back().ess, 2) + " effective points, " +
+                      validation::significant(c.min_effective_sets, 3) + " asked" +
+                      (out.iterations.back().contained ? "" : "; its mean +- 2 sd reaches out of its response surface's region") + ")";
   // What the runs cost, from their results.
   const std::vector<pipeline::PlannedRun> runs = plan_sets(c, study, profile, out.sets, out.results, out.engine);
   for (const pipeline::PlannedRun& r : runs)

@@ -27,7 +27,9 @@ struct IterationSummary {
   int number = 0;
   int sets = 0;             // run this iteration
   int valued = 0;           // of all sets so far, those with a misfit
-  double ess = 0;           // effective sample size of the weights after it
+  double ess = 0;           // effective sample size of the posterior's points after it
+  double sets_ess = 0;      // of the sets' own weights (exp(-chi2/2) over the proposals)
+  bool contained = true;    // on a response surface: the posterior's mean +- 2 sd inside its region
   std::vector<Marginal> marginals;
   double moved = 0;         // the largest change of a unit mean or sd since the iteration before
 };
@@ -38,7 +40,15 @@ struct Outcome {
   std::string profile, engine, results;  // results: the folder of the runs
   std::vector<std::int64_t> seeds;
   std::vector<ParameterSet> sets;
-  std::vector<double> weights;
+  std::vector<double> weights;  // the sets' own: likelihood exp(-chi2/2) over the proposals' mixture
+  // The posterior's points: on the response surface (posterior_from "response surface"), else the
+  // sets with their weights (posterior_from empty).
+  std::vector<Eigen::VectorXd> posterior_u;
+  std::vector<double> posterior_w;
+  std::string posterior_from;
+  int surface_sets = 0;
+  double surface_noise = 0;  // the surface's residual sd over the reference mean's sd, on average
+  Eigen::VectorXd region_centre, region_sd;
   std::vector<IterationSummary> iterations;
   bool converged = false;
   std::string stop_reason;

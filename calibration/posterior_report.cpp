@@ -48,9 +48,9 @@ std::size_t best_set(const Outcome& o) {
 std::string marginal_data(const Parameter& p, std::size_t j, const Outcome& o) {
   const std::size_t bins = p.discrete() ? p.values.size() : 20;
   std::vector<double> mass(bins, 0.0);
-  for (std::size_t i = 0; i < o.sets.size(); ++i) {
-    const double u = o.sets[i].u(static_cast<Eigen::Index>(j));
-    mass[std::min(bins - 1, static_cast<std::size_t>(u * static_cast<double>(bins)))] += o.weights[i];
+  for (std::size_t i = 0; i < o.posterior_u.size(); ++i) {
+    const double u = o.posterior_u[i](static_cast<Eigen::Index>(j));
+    mass[std::min(bins - 1, static_cast<std::size_t>(u * static_cast<double>(bins)))] += o.posterior_w[i];
   }
   std::ostringstream s;
   s << "# " << p.name << ": posterior mass per bin of the prior over the prior's (1: the prior)\n";
@@ -132,9 +132,15 @@ void write_report(const Outcome& o, const std::map<std::string, double>& truth) 
   j["stop_reason"] = o.stop_reason;
   j["runs"] = o.runs;
   j["core_seconds"] = o.core_seconds;
+  j["posterior_from"] = o.posterior_from.empty() ? "the sets' weights" : o.posterior_from;
+  if (!o.posterior_from.empty())
+    j["response_surface"] = {{"sets", o.surface_sets}, {"points", o.posterior_u.size()},
+                             {"residual_sd_over_reference_sd", o.surface_noise}};
   j["effective_sample_size"] = last.ess;
+  j["sets_effective_sample_size"] = last.sets_ess;
   for (const IterationSummary& it : o.iterations) {
-    json x{{"iteration", it.number}, {"sets", it.sets}, {"scored", it.valued}, {"effective_sample_size", it.ess}, {"moved", it.moved}};
+    json x{{"iteration", it.number}, {"sets", it.sets},       {"scored", it.valued},          {"effective_sample_size", it.ess},
+           {"sets_effective_sample_size", it.sets_ess}, {"moved", it.moved}, {"inside_region", it.contained}};
     for (std::size_t k = 0; k < d; ++k) x["mean"][c.parameters[k].name] = it.marginals[k].mean, x["sd"][c.parameters[k].name] = it.marginals[k].sd;
     j["iterations"].push_back(x);
   }
@@ -148,9 +154,7 @@ void write_report(const Outcome& o, const std::map<std::string, double>& truth) 
       x["truth"] = t->second, x["truth_inside_95"] = t->second >= m.lower_95 && t->second <= m.upper_95;
     j["parameters"].push_back(x);
   }
-  std::vector<Eigen::VectorXd> u;
-  for (const ParameterSet& s : o.sets) u.push_back(s.u);
-  const Eigen::MatrixXd r = correlations(u, o.weights);
+  const Eigen::MatrixXd r = correlations(o.posterior_u, o.posterior_w);
   for (Eigen::Index a = 0; a < r.rows(); ++a) {
     std::vector<double> row;
     for (Eigen::Index b = 0; b < r.cols(); ++b) row.push_back(r(a, b));
@@ -181,7 +185,7 @@ void write_report(const Outcome& o, const std::map<std::string, double>& truth) 
 
   // Figure data.
   std::ostringstream sets;
-  sets << "# every parameter set: iteration, its values, chi2 (NaN: not scored), posterior weight\n# iteration";
+  sets << "# every parameter set: iteration, its values, chi2 (NaN: not scored), its own weight exp(-chi2/2) over the proposals\n# iteration";
   for (const Parameter& p : c.parameters) sets << " " << p.name;
   sets << " chi2 weight\n";
   for (std::size_t i = 0; i < o.sets.size(); ++i) {
@@ -220,6 +224,11 @@ void write_report(const Outcome& o, const std::map<std::string, double>& truth) 
   md << o.sets.size() << " parameter sets in " << o.iterations.size() << " iterations of " << c.batch << " (" << o.runs
      << " runs, " << validation::significant(o.core_seconds / 60, 3) << " core-min recorded); effective sample size "
      << validation::significant(last.ess, 3) << "; " << (o.converged ? "converged: " : "not converged: ") << o.stop_reason << ".\n\n";
+  if (!o.posterior_from.empty())
+    md << "The posterior is sampled on a response surface (a quadratic in the parameters per curve point) fitted to the "
+       << o.surface_sets << " sets nearest it, at " << o.posterior_u.size() << " points: the sets' own misfits carry the noise of "
+       << "their samples (their scatter about the surface is " << validation::significant(o.surface_noise, 2)
+       << " times the reference mean's sd, on average), which would let the luckiest set carry the posterior.\n\n";
   std::vector<std::string> head{"parameter", "prior", "posterior mean ± sd", "95 % interval", "prior sd / posterior sd", "identified"};
   if (!truth.empty()) head.insert(head.begin() + 2, "truth");
   validation::MarkdownTable t(head);
@@ -249,7 +258,7 @@ void write_report(const Outcome& o, const std::map<std::string, double>& truth) 
     }
     md << ct.text() << "\n";
   }
-  validation::MarkdownTable it({"iteration", "sets", "scored (all so far)", "effective sample size", "largest move"});
+  validation::MarkdownTable it({"iteration", "sets", "scored (all so far)", "effective points of the posterior", "largest move"});
   for (const IterationSummary& s : o.iterations)
     it.row({std::to_string(s.number), std::to_string(s.sets), std::to_string(s.valued), validation::significant(s.ess, 3),
             s.number == 1 ? "" : validation::fixed(s.moved, 3)});

@@ -152,6 +152,9 @@ RowMisfit curve_misfit(const CurveRow& c, const std::vector<validation::Sample>&
     const CurvePoint& p = c.points[j];
     const double sample_var = samples.size() >= 3 ? s.sd * s.sd : p.sd * p.sd;
     const double var = c.tolerance * c.tolerance + p.sd * p.sd / c.specimens + sample_var / n_samples;
+    m.model.push_back(s.mean);
+    m.model_sd.push_back(s.sd);
+    m.samples = static_cast<int>(samples.size());
     const double r = s.mean - p.y;
     m.chi2 += var > 0 ? r * r / var : (r == 0 ? 0 : INFINITY);
     ++m.points;

@@ -45,6 +45,9 @@ struct RowMisfit {
   int points = 0;
   std::string note;  // why the row has no value (a run that does not reach a point's x, ...)
   bool valued = true;
+  std::vector<double> model;     // a curve's: the samples' mean y at each point (surrogate.hpp fits it)
+  std::vector<double> model_sd;  // ... and their sd (0 for one sample)
+  int samples = 0;               // the samples it was computed on
 };
 
 struct SetMisfit {

@@ -1,0 +1,74 @@
+// The response surface: a quadratic fit recovers a known quadratic and its noise, and the
+// posterior sampled on it is the analytic one.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+
+#include "surrogate.hpp"
+
+using calibration::fit_quadratic;
+
+TEST_CASE("a quadratic fit recovers a quadratic, and the noise about it", "[calibration]") {
+  calibration::ResponseSurface s;
+  s.centre = Eigen::Vector2d(0.5, 0.5), s.scale = Eigen::Vector2d(1, 1);
+  std::vector<Eigen::VectorXd> x;
+  std::vector<double> exact, noisy;
+  std::mt19937_64 rng(7);
+  std::normal_distribution<double> noise(0, 0.05);
+  for (int i = 0; i < 400; ++i) {
+    const Eigen::Vector2d u((i % 20) / 19.0, (i / 20) / 19.0);
+    x.push_back(s.features(u));
+    const double z0 = u(0) - 0.5, z1 = u(1) - 0.5;
+    exact.push_back(1 + 2 * z0 - 3 * z1 + 0.5 * z0 * z0 + 4 * z0 * z1 - z1 * z1);  // features: 1, z0, z1, z0^2, z0 z1, z1^2
+    noisy.push_back(exact.back() + noise(rng));
+  }
+  const auto q = fit_quadratic(x, exact);
+  const Eigen::VectorXd expected = (Eigen::VectorXd(6) << 1, 2, -3, 0.5, 4, -1).finished();
+  CHECK((q.coefficients - expected).cwiseAbs().maxCoeff() < 1e-9);
+  CHECK(q.residual_variance < 1e-18);
+  // With noise of sd 0.05: the residual variance within 15 % of 0.0025 (its relative sd is
+  // sqrt(2 / 394) = 7 %), the prediction variance at the centre about 0.0025 / 400 x a few.
+  const auto n = fit_quadratic(x, noisy);
+  CHECK(n.residual_variance == Approx(0.0025).epsilon(0.15));
+  CHECK(n.variance(s.features(Eigen::Vector2d(0.5, 0.5))) < 0.0025 / 400 * 10);
+}
+
+TEST_CASE("the posterior on a surface is the analytic one", "[calibration]") {
+  // One parameter; three curve points whose model values are a_j + b_j u exactly, b = (1, 2, -1),
+  // each set on one sample; the reference is the model at u* = 0.4, with sd 0.1 of one specimen.
+  // Each point's variance: 0.1^2 (the reference's mean) + 0.1^2 / 1 (the model's one sample, whose
+  // scatter the reference's sd stands for); the surface has no noise, so adds none. The posterior
+  // is Gaussian with mean 0.4 and sd 1 / sqrt(sum b^2 / 0.02) = 0.0577. 4,000 weighted points: the
+  // mean within 0.005, the sd within 10 %.
+  calibration::References refs;
+  calibration::CurveRow c{"line", "", "x", "y", "dense", "t", 1, 0, {}};
+  const double a[] = {0.1, 0.2, 0.3}, b[] = {1, 2, -1};
+  for (int j = 0; j < 3; ++j) c.points.push_back({static_cast<double>(j), a[j] + b[j] * 0.4, 0.1});
+  refs.curves = {c};
+  std::vector<calibration::ParameterSet> sets;
+  for (int i = 0; i < 21; ++i) {
+    calibration::ParameterSet s;
+    s.u = Eigen::VectorXd::Constant(1, 0.2 + 0.02 * i);
+    calibration::RowMisfit m{"line", 0, 3, "", true, {}, {}, 1};
+    for (int j = 0; j < 3; ++j) m.model.push_back(a[j] + b[j] * s.u(0));
+    s.misfit.rows = {m};
+    sets.push_back(s);
+  }
+  calibration::Proposal region;
+  region.mean = Eigen::VectorXd::Constant(1, 0.4);
+  region.covariance = Eigen::MatrixXd::Constant(1, 1, 0.01);
+  const auto surface = calibration::fit_surface(refs, sets, region);
+  REQUIRE(surface);
+  CHECK(surface->sets == 21);  // all within 3 sd (0.1 to 0.7)
+  std::vector<Eigen::VectorXd> u;
+  std::vector<double> w;
+  calibration::sample_surface(*surface, refs, 4000, u, w);
+  const calibration::Parameter p{"x", {"x"}, "test", calibration::Parameter::Prior::Uniform, 0, 1, {}};
+  const auto m = calibration::marginal(p, 0, u, w);
+  CHECK(m.mean == Approx(0.4).margin(0.005));
+  CHECK(m.sd == Approx(1 / std::sqrt(300.0)).epsilon(0.1));
+  // Too few sets for the features (2 x 3 = 6 needed for one parameter): no surface.
+  sets.resize(5);
+  CHECK_FALSE(calibration::fit_surface(refs, sets, region));
+}
