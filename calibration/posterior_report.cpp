@@ -43,22 +43,45 @@ std::size_t best_set(const Outcome& o) {
   return best;
 }
 
-// 20 bins of the unit interval (a discrete parameter: its values), weighted posterior mass per bin
-// over the prior's.
-std::string marginal_data(const Parameter& p, std::size_t j, const Outcome& o) {
-  const std::size_t bins = p.discrete() ? p.values.size() : 20;
+// 30 bins over the posterior's range on the unit interval (its mean -+ 4 sd, within [0, 1]; a
+// discrete parameter: its values): the posterior's density over the prior's in each.
+std::string marginal_data(const Parameter& p, std::size_t j, const Outcome& o, const Marginal& m) {
+  const bool discrete = p.discrete();
+  const std::size_t bins = discrete ? p.values.size() : 30;
+  const double lo = discrete ? 0 : std::max(0.0, m.unit_mean - 4 * m.unit_sd);
+  const double hi = discrete ? 1 : std::min(1.0, m.unit_mean + 4 * m.unit_sd);
+  const double width = (hi - lo) / static_cast<double>(bins);
   std::vector<double> mass(bins, 0.0);
   for (std::size_t i = 0; i < o.posterior_u.size(); ++i) {
     const double u = o.posterior_u[i](static_cast<Eigen::Index>(j));
-    mass[std::min(bins - 1, static_cast<std::size_t>(u * static_cast<double>(bins)))] += o.posterior_w[i];
+    if (u < lo || u > hi || width <= 0) continue;
+    mass[std::min(bins - 1, static_cast<std::size_t>((u - lo) / width))] += o.posterior_w[i];
   }
   std::ostringstream s;
-  s << "# " << p.name << ": posterior mass per bin of the prior over the prior's (1: the prior)\n";
+  s << "# " << p.name << ": the posterior's density over the prior's, in bins of the posterior's range\n";
   s << "# value_low value_centre value_high density_over_prior\n";
   for (std::size_t b = 0; b < bins; ++b) {
-    const double lo = static_cast<double>(b) / static_cast<double>(bins), hi = static_cast<double>(b + 1) / static_cast<double>(bins);
-    s << g(p.value(lo)) << " " << g(p.value(0.5 * (lo + hi))) << " " << g(p.value(std::min(hi, 1 - 1e-12))) << " "
-      << g(mass[b] * static_cast<double>(bins)) << "\n";
+    const double a = lo + width * static_cast<double>(b), z = std::min(1 - 1e-12, a + width);
+    s << g(p.value(a)) << " " << g(p.value(0.5 * (a + z))) << " " << g(p.value(z)) << " " << g(width > 0 ? mass[b] / width : 0) << "\n";
+  }
+  return s.str();
+}
+
+// 1,000 points resampled from the posterior's weighted points (systematic resampling: deterministic).
+std::string posterior_points(const Outcome& o) {
+  const Calibration& c = o.calibration;
+  std::ostringstream s;
+  s << "# 1,000 points resampled from the posterior (their values)\n#";
+  for (const Parameter& p : c.parameters) s << " " << p.name;
+  s << "\n";
+  double cumulative = 0;
+  std::size_t i = 0;
+  for (int k = 0; k < 1000 && !o.posterior_u.empty(); ++k) {
+    const double target = (k + 0.5) / 1000;
+    while (i + 1 < o.posterior_u.size() && cumulative + o.posterior_w[i] < target) cumulative += o.posterior_w[i++];
+    for (std::size_t j = 0; j < c.parameters.size(); ++j)
+      s << (j ? " " : "") << g(c.parameters[j].value(o.posterior_u[i](static_cast<Eigen::Index>(j))));
+    s << "\n";
   }
   return s.str();
 }
@@ -194,7 +217,9 @@ void write_report(const Outcome& o, const std::map<std::string, double>& truth) 
     sets << " " << (o.sets[i].misfit.valued ? g(o.sets[i].misfit.chi2) : "NaN") << " " << g(o.weights[i]) << "\n";
   }
   write_file(dir / "sets.dat", sets.str());
-  for (std::size_t k = 0; k < d; ++k) write_file(dir / ("marginal_" + std::to_string(k + 1) + ".dat"), marginal_data(c.parameters[k], k, o));
+  for (std::size_t k = 0; k < d; ++k)
+    write_file(dir / ("marginal_" + std::to_string(k + 1) + ".dat"), marginal_data(c.parameters[k], k, o, last.marginals[k]));
+  write_file(dir / "posterior_points.dat", posterior_points(o));
   const auto best_samples = o.samples.find(o.sets[best].name);
   for (std::size_t k = 0; k < o.references.curves.size(); ++k)
     write_file(dir / ("curve_" + std::to_string(k + 1) + ".dat"),
@@ -204,16 +229,19 @@ void write_report(const Outcome& o, const std::map<std::string, double>& truth) 
   v.number("curves", static_cast<double>(o.references.curves.size()));
   v.number("samples", best_samples == o.samples.end() ? 0.0 : static_cast<double>(best_samples->second.size()));
   std::vector<std::string> names, xs, ys, titles;
-  for (const Parameter& p : c.parameters) names.push_back(p.name + (p.prior == Parameter::Prior::LogUniform ? " (log scale)" : ""));
+  for (const Parameter& p : c.parameters) names.push_back(p.name);
   for (const CurveRow& row : o.references.curves) xs.push_back(row.x), ys.push_back(row.y), titles.push_back(row.name);
   v.texts("parameter", names);
   v.texts("curve_x", xs);
   v.texts("curve_y", ys);
   v.texts("curve_title", titles);
   for (std::size_t k = 0; k < d; ++k) {
-    v.number("log_" + std::to_string(k + 1), c.parameters[k].prior == Parameter::Prior::LogUniform);
     const auto t = truth.find(c.parameters[k].name);
     v.number("truth_" + std::to_string(k + 1), t == truth.end() ? NAN : t->second);
+    // The range the scatter panel shows: the posterior's mean -+ 6 sd on the unit interval.
+    const Marginal& m = last.marginals[k];
+    v.number("low_" + std::to_string(k + 1), c.parameters[k].value(std::max(0.0, m.unit_mean - 6 * m.unit_sd)));
+    v.number("high_" + std::to_string(k + 1), c.parameters[k].value(std::min(1.0, m.unit_mean + 6 * m.unit_sd)));
   }
   write_file(dir / "values.gp", v.text_file("calibration " + c.name + ": what calibration.gp draws"));
 

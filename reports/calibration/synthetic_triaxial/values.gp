@@ -1,0 +1,22 @@
+# calibration synthetic_triaxial: what calibration.gp draws
+parameters = 2
+curves = 2
+samples = 2
+parameter_n = 2
+parameter_1 = "friction"
+parameter_2 = "stiffness"
+curve_x_n = 2
+curve_x_1 = "strain_3"
+curve_x_2 = "strain_3"
+curve_y_n = 2
+curve_y_1 = "q_over_p"
+curve_y_2 = "volumetric_strain"
+curve_title_n = 2
+curve_title_1 = "q/p against axial strain"
+curve_title_2 = "volumetric strain against axial strain"
+truth_1 = 0.3
+low_1 = 0.2684715048
+high_1 = 0.3233221921
+truth_2 = 1800000
+low_2 = 1651335.266
+high_2 = 2085214.112
