@@ -24,13 +24,19 @@ std::string set_name(int iteration, int index) {
   return buf;
 }
 
-// Every set so far as variants of the study, planned (copies joined) into the results folder.
-std::vector<pipeline::PlannedRun> plan_sets(const Calibration& c, pipeline::Study study, const pipeline::Profile& profile,
-                                            const std::vector<ParameterSet>& sets, const std::string& out,
-                                            const std::string& engine) {
+// The study with every set so far as its variants.
+pipeline::Study with_sets(const Calibration& c, pipeline::Study study, const std::vector<ParameterSet>& sets) {
   study.variants.clear();
   for (const ParameterSet& s : sets) study.variants.push_back(variant_of(c, s));
-  return pipeline::join_studies({{study.name, pipeline::plan_study(study, profile, out, engine)}});
+  return study;
+}
+
+// Every set so far planned (copies joined) into the results folder.
+std::vector<pipeline::PlannedRun> plan_sets(const Calibration& c, const pipeline::Study& study, const pipeline::Profile& profile,
+                                            const std::vector<ParameterSet>& sets, const std::string& out,
+                                            const std::string& engine) {
+  const pipeline::Study s = with_sets(c, study, sets);
+  return pipeline::join_studies({{s.name, pipeline::plan_study(s, profile, out, engine)}});
 }
 
 double largest_move(const std::vector<Marginal>& a, const std::vector<Marginal>& b) {
@@ -122,7 +128,7 @@ std::optional<Outcome> run_calibration(const Calibration& c, const RunOptions& o
     }
     if (!lock) lock = pipeline::lock_results_folder(out.results);
     pipeline::write_scenes(runs);
-    pipeline::write_manifest(runs, study, out.results);
+    pipeline::write_manifest(runs, with_sets(c, study, out.sets), out.results);
     std::printf("[calibrate] iteration %d: %d sets, %zu runs planned (finished ones are reused)\n", it, c.batch, runs.size());
     std::fflush(stdout);
     pipeline::Outcome ran;

@@ -65,6 +65,10 @@ TEST_CASE("calibrate runs, writes its posterior, and replays itself from its run
   CHECK(p["iterations"].size() == 2);
   CHECK(fs::exists(dir / "report" / "section.md"));
   CHECK(fs::exists(dir / "report" / "curve_1.dat"));
+  // The manifest lists every set's runs (what the stamp and compare-runs read).
+  const std::string manifest = read(dir / "results" / "calibration_tiny" / "quick" / "runs.tsv");
+  CHECK_THAT(manifest, Catch::Contains("i1s001\tdense\ttriaxial") && Catch::Contains("i2s003\tdense\ttriaxial"));
+  CHECK(p["stamp"]["spheres"] == 64);
 
   // Again: the same draws, every run reused (no "started"), the same posterior.
   const std::string before = read(dir / "report" / "posterior.json");
