@@ -49,15 +49,15 @@ set xtics norotate
 
 set output 'curves.png'
 m = int(curves)
-set terminal pngcairo size 600 * m, 450 font ",11" enhanced
+set terminal pngcairo size (m > 1 ? 600 * m : 800), 450 font ",11" enhanced
 set output 'curves.png'
 unset logscale
-set multiplot layout 1, m title "References (points: mean ± sd of the specimens) and the best set's samples (lines)" font ",12"
+set autoscale xy
+set multiplot layout 1, m title "References (points: mean ± sd) and the best set's samples (lines)" font ",12"
 do for [k = 1:m] {
   set xlabel value(sprintf("curve_x_%d", k)) noenhanced
   set ylabel value(sprintf("curve_y_%d", k)) noenhanced
   set title value(sprintf("curve_title_%d", k)) noenhanced
-  set yrange [*:*]
   set key bottom right
   plot sprintf("curve_%d.dat", k) index 0 u 1:2:3 w yerrorbars pt 7 ps 1 lc rgb "#000000" t "reference", \
        for [b = 1:int(samples)] sprintf("curve_%d.dat", k) index b u 1:2 w l lw 1.5 lc rgb "#1f77b4" t (b == 1 ? "best set" : "")
