@@ -109,7 +109,7 @@ TEST_CASE("a flat likelihood leaves the prior: not identified", "[calibration]")
   CHECK_FALSE(m.identified);
 }
 
-TEST_CASE("a failed set weighs nothing; all failed, all weigh nothing", "[calibration]") {
+TEST_CASE("a failed set weighs nothing, and when all failed none weighs anything", "[calibration]") {
   std::vector<Eigen::VectorXd> u(3, Eigen::VectorXd::Constant(1, 0.5));
   const auto w = calibration::importance_weights(u, {-1.0, -INFINITY, -1.0}, {calibration::Proposal{}}, {3});
   CHECK(w[1] == 0);
