@@ -18,8 +18,8 @@ namespace dem {
 struct ThreadChoiceSettings {
   double window_s = 0.25;         // a trial's length, and the window the count in use is measured over
   double first_trial_s = 0.5;     // the first trial starts this long after the run (at a window end)
-  double min_interval_s = 4.0;    // from the end of a trial to the next: after a switch, or a drop (below)
-  double max_interval_s = 16.0;   // the interval doubles after each trial that keeps the count in use, up to this
+  double min_interval_s = 4.0;    // from the end of a trial to the next: at first, after a switch, after a drop (below)
+  double max_interval_s = 16.0;   // the interval doubles at each trial that keeps the count in use, up to this
   double margin = 0.05;           // the other count is kept only if it made this much more steps per second
   double drop = 0.3;              // a window of the count in use this much slower than its rate at the last trial (its
                                   // first window before any) starts a trial at once

@@ -65,5 +65,5 @@ echo "| as it is | $i1 ($(spread idle1)) | $i2 ($(spread idle2)) | $(ratio "$i1"
 echo "| beside a busy core | $b1 ($(spread busy1)) | $b2 ($(spread busy2)) | $(ratio "$b1" "$b2") | $(shares busy2) |"
 echo
 echo "Wall time of \`dem run scenes/tests/test1.yaml\`${path:+ cut to the path $path} (1,000 spheres), median (min-max) of"
-echo "$reps repetitions, the four ways interleaved; \"beside a busy core\": with a shell loop at the same priority."
+echo "$reps repetition$([ "$reps" = 1 ] || echo s), the four ways interleaved; \"beside a busy core\": with a shell loop at the same priority."
 echo "Load average (1, 5, 15 min) at the start: $load_start; at the end: $(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo unknown)."

@@ -4,7 +4,8 @@
 //
 // The expectations follow from the default settings: a trial of the other count lasts one 0.25 s
 // window; the first starts 0.5 s into the run; after a trial that keeps the count in use the next
-// starts 4, 8, 16, 16, ... s later (16 s at most), after a switch 4 s later, each at the end of a
+// starts twice the interval before it later (4 s at first: 8, 16, 16, ... s; 16 s at most), after a
+// switch 4 s later, each at the end of a
 // window of the count in use; a window of that count more than 30 % slower than its rate at the
 // last trial starts a trial at once; the other count must be more than 5 % faster to be kept.
 #include <catch2/catch.hpp>
@@ -64,12 +65,12 @@ TEST_CASE("idle, the run keeps 2 threads and its trials of 1 cost under 1 % of i
   m.run(choice, 300);
   REQUIRE(choice.threads() == 2);
   REQUIRE(choice.switches() == 0);
-  // Trials start near 0.5, 4.75, 13 and 29.25 s, then every 16.25 s (each up to a window later,
-  // at the end of a window of 2 threads): 4 + 16 up to 300 s, one fewer if they come late.
-  REQUIRE(choice.trials() >= 19);
-  REQUIRE(choice.trials() <= 20);
+  // Trials start near 0.5, 8.75 and 25 s, then every 16.25 s (each up to a window later, at the
+  // end of a window of 2 threads): 3 + 16 up to 300 s, one fewer if they come late.
+  REQUIRE(choice.trials() >= 18);
+  REQUIRE(choice.trials() <= 19);
   // Each trial is one window of 0.25 s (plus the last call's 10 ms at most) at 1,000 instead of
-  // 1,600 steps/s: about 20 x 0.25 x 600 = 3,000 steps fewer than 2 threads throughout.
+  // 1,600 steps/s: about 19 x 0.25 x 600 = 2,850 steps fewer than 2 threads throughout.
   const double all_on_two = 1600.0 * m.t;
   REQUIRE(static_cast<double>(m.steps) > 0.99 * all_on_two);
   REQUIRE(static_cast<double>(m.steps) < all_on_two);
@@ -85,8 +86,8 @@ TEST_CASE("beside a busy process, the run moves to 1 thread at its first trial a
   m.run(choice, 300);
   REQUIRE(choice.threads() == 1);
   REQUIRE(choice.switches() == 1);  // every trial of 2 threads after it lost
-  // 2 threads: the first 0.5 s and a 0.25 s trial after 4, 8, 16, 16, ... s (20 of them), 5.5 s
-  // in all at 700 instead of 1,000 steps/s: about 1,650 steps fewer than 1 thread throughout.
+  // 2 threads: the first 0.5 s and a 0.25 s trial after 4 s, then 8, 16, 16, ... s (19 of them),
+  // 5.3 s in all at 700 instead of 1,000 steps/s: about 1,600 steps fewer than 1 thread throughout.
   REQUIRE(static_cast<double>(m.steps) > 0.99 * 1000.0 * m.t);
 }
 
