@@ -165,6 +165,19 @@ void catch_stop_signals() {
   }
 }
 
+// What a run asked for more than one thread did with them (run/thread_choice.hpp), for the last line.
+std::string threads_line(int asked, const dem::RunSummary& s) {
+  char text[256];
+  if (s.threads == 1) {
+    std::snprintf(text, sizeof text, "; on 1 thread: %d asked, but one chunk of 512 particles leaves a second thread nothing", asked);
+  } else {
+    const double share = s.steps > 0 ? 100.0 * static_cast<double>(s.steps_on_one_thread) / static_cast<double>(s.steps) : 0;
+    std::snprintf(text, sizeof text, "; %d threads, %.0f %% of the steps on 1 thread: %d trial%s of the other count, %d won", s.threads,
+                  share, s.thread_trials, s.thread_trials == 1 ? "" : "s", s.thread_switches);
+  }
+  return text;
+}
+
 struct RunArgs {
   std::string scene_file, out, input_hash;
   std::vector<std::string> sets;  // KEY=VALUE
@@ -250,8 +263,10 @@ int run(const RunArgs& args) {
       throw;
     }
     line.clear();
-    std::fprintf(stderr, "%s: %lld steps in %.1f s (%.3g steps/s) -> %s\n", scene.name.c_str(),
-                 static_cast<long long>(s.steps), s.wall_time_s, static_cast<double>(s.steps) / s.wall_time_s, out.c_str());
+    std::fprintf(stderr, "%s: %lld steps in %.1f s (%.3g steps/s", scene.name.c_str(), static_cast<long long>(s.steps),
+                 s.wall_time_s, static_cast<double>(s.steps) / s.wall_time_s);
+    if (threads > 1) std::fputs(threads_line(threads, s).c_str(), stderr);
+    std::fprintf(stderr, ") -> %s\n", out.c_str());
     return 0;
   } catch (const dem::ConfigError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
@@ -466,7 +481,8 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--out", ra.out, "the result file, RESULT.h5 (or .hdf5)")->required();
   run_cmd->add_option("--set", ra.sets, "KEY=VALUE: override a scene key, e.g. particles.lattice.seed=2 (repeatable)")
       ->allow_extra_args(false);
-  run_cmd->add_option("--threads", ra.threads, "threads inside the run (the result is bit for bit the same for any count)")
+  run_cmd->add_option("--threads", ra.threads, "threads inside the run (the result is bit for bit the same for any count): the run tries 1 thread "
+                      "now and then and keeps whichever steps faster, e.g. 1 beside other busy processes")
       ->check(CLI::Range(1, 256))->default_val(1);
   run_cmd->add_flag("--quiet", ra.quiet, "no progress line");
   run_cmd->add_option("--progress-interval", ra.progress_interval_s,

@@ -11,9 +11,11 @@
 #include <new>
 #include <numbers>
 #include <optional>
+#include <omp.h>
 #include <sstream>
 
 #include "analysis/measurements.hpp"
+#include "dynamics/kernel.hpp"  // chunk_count
 #include "control/stress_path.hpp"
 #include "analysis/time_series.hpp"
 #include "config/yaml_section.hpp"
@@ -21,6 +23,7 @@
 #include "io/result_writer.hpp"
 #include "io/state_io.hpp"
 #include "run/checkpoint.hpp"
+#include "run/thread_choice.hpp"
 
 namespace dem {
 
@@ -186,6 +189,7 @@ void run_steps(Simulation& sim, const SceneConfig& scene, const StageHooks& hook
     if (hooks.row && (row || output_due(sim, scene))) hooks.row(sim, loop.where());
     if (hooks.frame && frame_due(sim, scene)) hooks.frame(sim);
     if (hooks.progress && k % progress_every == 0) hooks.progress(sim, loop.progress());
+    if (hooks.pace && k % hooks.pace_every == 0) hooks.pace(sim);
     if (loop.done()) return;
   }
 }
@@ -598,6 +602,23 @@ RunSummary run_stages(Simulation& sim, const SceneConfig& scene, const Checkpoin
                       ResultWriter& out) {
   using clock = std::chrono::steady_clock;
   StageHooks hooks;
+  const auto seconds_since = [](clock::time_point t0) { return std::chrono::duration<double>(clock::now() - t0).count(); };
+  // The threads (run/thread_choice.hpp): those asked (omp_set_num_threads), at most one per chunk
+  // of particles (a second thread has no chunk of its own below two); on more than one, the run
+  // measures its step rate and keeps 1 thread or all of them, whichever steps faster. The clock is
+  // read every pace_every steps: about every 8,000 particle-steps.
+  const std::size_t particles = sim.particles().size();
+  const int usable = static_cast<int>(std::min<std::ptrdiff_t>(omp_get_max_threads(), std::max<std::ptrdiff_t>(1, chunk_count(particles))));
+  ThreadChoice threads(usable);
+  int running = usable;
+  omp_set_num_threads(usable);
+  if (usable > 1) {
+    hooks.pace_every = std::max<std::int64_t>(1, 8192 / static_cast<std::int64_t>(std::max<std::size_t>(1, particles)));
+    hooks.pace = [&](const Simulation& s) {
+      const int next = threads.update(seconds_since(start), s.step_count());
+      if (next != running) omp_set_num_threads(running = next);
+    };
+  }
   // Rows are where the energy balance is looked at: a run whose balance no longer closes (an
   // unstable or too coarse time step) stops, after the row that shows it is written.
   const std::int64_t frame_every = scene.output.frames_interval_steps;
@@ -634,6 +655,7 @@ RunSummary run_stages(Simulation& sim, const SceneConfig& scene, const Checkpoin
                      where);
     last_checkpoint_step = s.step_count();
     last_checkpoint_wall = clock::now();
+    threads.restart(seconds_since(start), s.step_count());  // the writing is not stepping
   };
   hooks.stop = observer.stop;
   hooks.warning = [&](const std::string& w) {
@@ -665,7 +687,12 @@ RunSummary run_stages(Simulation& sim, const SceneConfig& scene, const Checkpoin
   std::error_code gone;  // the result supersedes the checkpoint (a stale one would only be resumed to the same end)
   if (std::filesystem::remove(checkpoint_path(out_path), gone); gone && observer.warning)
     observer.warning(checkpoint_path(out_path) + ": not removed: " + gone.message());
-  return {sim.step_count(), wall};
+  RunSummary summary{sim.step_count(), wall};
+  summary.threads = usable;
+  summary.steps_on_one_thread = threads.steps_on_one();
+  summary.thread_trials = threads.trials();
+  summary.thread_switches = threads.switches();
+  return summary;
 }
 
 }  // namespace
@@ -674,6 +701,11 @@ RunSummary run_scene(const SceneConfig& scene, const std::string& out_path, cons
                      const std::string& input_hash, Resume resume) {
   using clock = std::chrono::steady_clock;
   auto start = clock::now();
+  // run_stages picks the thread count as it goes; the caller's count is set again however the run ends.
+  struct ThreadsAsAsked {
+    int n = omp_get_max_threads();
+    ~ThreadsAsAsked() { omp_set_num_threads(n); }
+  } threads_as_asked;
   const std::string source_bytes = read_particle_source(scene);  // the particle file, read once
   Simulation sim = build_simulation(scene, source_bytes);       // all input checks happen before the output file exists
   const std::string identity = run_identity(scene, input_hash, source_bytes);

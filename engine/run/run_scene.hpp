@@ -69,6 +69,10 @@ struct StageHooks {
   std::function<void(const Simulation&, const StageCursor&)> checkpoint;
   // Read before every step when set: non-zero (a signal number) stops the stage with RunInterrupted.
   const volatile std::sig_atomic_t* stop = nullptr;
+  // After every pace_every-th step of a stage's loop when set: where a run on several threads
+  // measures its step rate and picks its thread count for the next steps (run/thread_choice.hpp).
+  std::function<void(const Simulation&)> pace;
+  std::int64_t pace_every = 1;
 };
 
 // Thrown between two steps when StageHooks::stop (RunObserver::stop) became non-zero: the run was
@@ -112,6 +116,12 @@ std::string energy_error_cause(const Simulation& sim);
 struct RunSummary {
   std::int64_t steps = 0;
   double wall_time_s = 0;
+  // Threads (run/thread_choice.hpp): the count the run could use (those asked, at most one per
+  // chunk of 512 particles), and with more than one, the steps this run made on one thread and
+  // the trials of the other count that it made and kept.
+  int threads = 1;
+  std::int64_t steps_on_one_thread = 0;
+  int thread_trials = 0, thread_switches = 0;
 };
 
 // What run_scene does with a checkpoint left at <out>.checkpoint by an earlier, killed run of

@@ -82,39 +82,13 @@ done
   --sizes "$size_files" --size-plan "$size_plan" --cores "$(nproc)" \
   --cpu "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')" \
   --load-start "$load_start" --load-end "$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo unknown)"
-# Threads beside other work: the 1,000-sphere Test 1 (scenes/tests/test1.yaml, a whole `dem run`) on 1
-# and 2 threads, on the machine as it is and beside a busy core (a shell loop at the same priority).
-# OpenMP threads that spin while they wait made 2 threads 28 times slower than 1 beside a busy core
-# (Test 1's first leg: 90.9 s against 3.3 s) and, on a machine at load average 8, the whole Test 1
-# 344.7 s against 32.0 s (38.7 s waiting passively); dem's threads wait passively
-# (engine/cli/dem_main.cpp), and this table shows what that leaves.
+# Threads beside other work: the 1,000-sphere Test 1 (scenes/tests/test1.yaml, whole `dem run`s) on 1
+# and 2 threads, on the machine as it is and beside a busy core (a shell loop at the same priority),
+# 3 interleaved repetitions (busy_core.sh; about 5 min). OpenMP threads that spin while they wait
+# made 2 threads 28 times slower than 1 beside a busy core (Test 1's first leg: 90.9 s against
+# 3.3 s) and, on a machine at load average 8, the whole Test 1 344.7 s against 32.0 s (38.7 s
+# waiting passively); dem's threads wait passively (engine/cli/dem_main.cpp), and a run on several
+# threads keeps 1 thread while that steps faster (engine/run/thread_choice.hpp).
 echo "== threads beside a busy core (dem run scenes/tests/test1.yaml) =="
-run_seconds() {  # run_seconds THREADS: wall seconds of one run
-  rm -f "$work"/threads.h5*
-  local start end
-  start=$(date +%s.%N)
-  "$build/bin/dem" run scenes/tests/test1.yaml --out "$work/threads.h5" --threads "$1" --no-resume --quiet >/dev/null 2>&1 ||
-    { echo "run_bench: dem run scenes/tests/test1.yaml --threads $1 failed" >&2; exit 1; }
-  end=$(date +%s.%N)
-  awk -v a="$start" -v b="$end" 'BEGIN { printf "%.1f", b - a }'
-}
-idle1=$(run_seconds 1) idle2=$(run_seconds 2)
-sh -c 'while :; do :; done' &
-busy=$!
-trap 'kill "$busy" 2>/dev/null' EXIT  # never left behind, however the script ends
-busy1=$(run_seconds 1) busy2=$(run_seconds 2)
-kill "$busy"
-ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", b / a }'; }
-{
-  echo
-  echo "### Threads beside other work"
-  echo
-  echo "| machine | 1 thread (s) | 2 threads (s) | 2 / 1 thread |"
-  echo "|---|---|---|---|"
-  echo "| as it is | $idle1 | $idle2 | $(ratio "$idle1" "$idle2") |"
-  echo "| beside a busy core | $busy1 | $busy2 | $(ratio "$busy1" "$busy2") |"
-  echo
-  echo "Wall time of one \`dem run scenes/tests/test1.yaml\` (1,000 spheres, Test 1 whole), once each; \"beside a busy"
-  echo "core\": with a shell loop running at the same priority. Load average at the end: $(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo unknown)."
-} >> "$out/bench.md"
+"$here/busy_core.sh" "$build" "${BUSY_REPS:-3}" >>"$out/bench.md"
 cat "$out/bench.md"

@@ -6,6 +6,7 @@
 #include <omp.h>
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <tuple>
 #include <type_traits>
@@ -38,8 +39,10 @@ struct Squeeze {
 
 // 1,000 spheres (3.0-4.5 mm) on a 10x10x10 lattice of spacing 4.6 mm (or side^3 spheres), compressed
 // to 100 kPa with the adaptive stress servo for `steps` steps: contacts form, slide and break.
-// `skin`: the Verlet skin [m], or the default.
-inline Simulation compressed(double friction, int threads, int steps, int side = 10, const std::string& skin = "") {
+// `skin`: the Verlet skin [m], or the default. With `threads_at`, step i runs on threads_at(i)
+// threads instead (as a run that changes its count between steps, run/thread_choice.hpp).
+inline Simulation compressed(double friction, int threads, int steps, int side = 10, const std::string& skin = "",
+                             const std::function<int(int)>& threads_at = {}) {
   const std::string n = std::to_string(side);
   const std::string text =
       "name: threads\n"
@@ -56,7 +59,10 @@ inline Simulation compressed(double friction, int threads, int steps, int side =
   omp_set_num_threads(threads);
   Simulation sim = build_simulation(scene);
   Squeeze squeeze(scene);
-  for (int i = 0; i < steps; ++i) squeeze.step(sim);
+  for (int i = 0; i < steps; ++i) {
+    if (threads_at) omp_set_num_threads(threads_at(i));
+    squeeze.step(sim);
+  }
   omp_set_num_threads(saved);
   return sim;
 }
