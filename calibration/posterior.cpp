@@ -72,7 +72,6 @@ Eigen::VectorXd Sampler::next() {
   boost::random::sobol& s = engine_->sobol;
   const double span = static_cast<double>(s.max() - s.min()) + 1.0;
   for (int j = 0; j < d_; ++j) v(j) = (static_cast<double>(s() - s.min()) + 0.5) / span;
-  ++used_;
   return v;
 }
 

@@ -49,12 +49,10 @@ class Sampler {
  public:
   explicit Sampler(int dimensions);
   std::vector<Eigen::VectorXd> draw(const Proposal& q, int n);
-  std::uint64_t points_used() const { return used_; }
 
  private:
   Eigen::VectorXd next();
   int d_;
-  std::uint64_t used_ = 0;
   struct Engine;
   std::shared_ptr<Engine> engine_;
 };

@@ -140,16 +140,13 @@ void draw_weighted(const ResponseSurface& s, const References& refs, const Eigen
 
 void sample_surface(const ResponseSurface& s, const References& refs, int n, std::vector<Eigen::VectorXd>& u,
                     std::vector<double>& w) {
-  const Eigen::Index d = s.centre.size();
   std::mt19937_64 rng(20261127);
   // First from the region's Gaussian, then again from a Gaussian fitted to those weights (twice
   // their covariance), which puts the points where the posterior is.
-  Eigen::MatrixXd cov = s.region_inverse.inverse();
-  draw_weighted(s, refs, s.centre, cov, n, rng, u, w);
+  draw_weighted(s, refs, s.centre, s.region_inverse.inverse(), n, rng, u, w);
   if (u.empty()) return;
   const Proposal q = fit_proposal(u, w, 0, 2, 1e-4);
   draw_weighted(s, refs, q.mean, q.covariance, n, rng, u, w);
-  (void)d;
 }
 
 }  // namespace calibration
