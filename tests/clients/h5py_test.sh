@@ -2,7 +2,7 @@
 # A result read by a real client: h5py (Debian's python3-h5py, installed here if missing; the test
 # is skipped with exit 77 if it cannot be) reads a short run's result and checks it against
 # `dem table` and `dem state` (tests/clients/h5py_client.py); pandas reads `dem table --csv` and the
-# README's one-liners run (tests/clients/pandas_client.py).
+# docs/results.md one-liners run (tests/clients/pandas_client.py).
 #   tests/clients/h5py_test.sh BIN_DIR WORKDIR
 set -u
 bin=$1 work=$2
@@ -24,12 +24,12 @@ fi
   { echo "h5py test: the run failed:"; cat "$work/run.log"; exit 1; }
 "$py" "$here/h5py_client.py" "$bin/dem" "$work/result.h5" || exit 1
 # dem table --csv through pandas (python3-pandas; this part is skipped alone if it cannot be had)
-# and the README's one-liners.
+# and the one-liners of docs/results.md.
 if ! "$py" -c 'import pandas' 2> /dev/null; then
   $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends python3-pandas >> "$work/apt.log" 2>&1
 fi
 if "$py" -c 'import pandas' 2> /dev/null; then
-  "$py" "$here/pandas_client.py" "$bin/dem" "$work/result.h5" "$here/../../README.md" || exit 1
+  "$py" "$here/pandas_client.py" "$bin/dem" "$work/result.h5" "$here/../../docs/results.md" || exit 1
 else
   echo "pandas client: python3-pandas cannot be installed here (see $work/apt.log): not run"
 fi

@@ -2,10 +2,10 @@
 what h5py reads from the result file, and the headers are `name [unit]` with the units attribute
 of each dataset.
 
-    python3 tests/clients/pandas_client.py DEM RESULT.h5 README.md
+    python3 tests/clients/pandas_client.py DEM RESULT.h5 docs/results.md
 
 `--csv` prints 17 significant digits, which read back give the same double, so the comparison is
-exact (with pandas' round-trip parser; its default fast parser may differ in the last bit). Then the Python one-liners of README.md (its lines with `python3 -c '`) run with RESULT.h5
+exact (with pandas' round-trip parser; its default fast parser may differ in the last bit). Then the Python one-liners of docs/results.md (its lines with `python3 -c '`) run with RESULT.h5
 replaced by this result and build/bin/dem by DEM; each must succeed and print a number.
 """
 import io
@@ -44,7 +44,7 @@ def main():
     one_liners = [line for line in open(readme, encoding="utf-8") if "python3 -c '" in line]
     assert one_liners, f"{readme} shows no 'python3 -c' one-liner"
     for line in one_liners:
-        # The README names Debian's /usr/bin/python3; this test runs them with its own interpreter.
+        # The doc names Debian's /usr/bin/python3; this test runs them with its own interpreter.
         command = re.sub(r"(/usr/bin/)?python3\b", sys.executable, line.strip().replace("RESULT.h5", result).replace("build/bin/dem", dem))
         out = subprocess.run(["bash", "-c", command], capture_output=True, text=True)
         assert out.returncode == 0, f"README one-liner failed: {command}\n{out.stderr}"

@@ -29,13 +29,9 @@ run @@ build/bin/dem table RESULT.h5 time p void_ratio coordination_number
 run @@ build/bin/dem summary RESULT.h5
 run @@ build/bin/dem keys; build/bin/dem columns
 run @@ build/bin/dem run --help
-run @@ /usr/bin/python3 -c 'import h5py; print(h5py.File("RESULT.h5", "r")["timeseries/p"][-1])'
-run @@ build/bin/dem table RESULT.h5 --csv | /usr/bin/python3 -c 'import sys, pandas; print(pandas.read_csv(sys.stdin)["p [Pa]"].max())'
 run @@ build/bin/pipeline new my_study.yaml --from paper
 run @@ build/bin/pipeline my_study.yaml --plan
 skip @@ build/bin/pipeline my_study.yaml --profile quick -j 2 @@ 54 runs of 1,000 spheres, minutes of CPU beyond this test's budget; its plan ran above
-skip @@ make calibration-example @@ 16 runs of 1,000 spheres, about 2 minutes of both cores beyond this test's budget; its plan runs below
-run @@ build/bin/calibrate examples/calibration/calibration.yaml --plan
 EOF
 )
 # Field N (1: what, 2: the README line, 3: the command or the reason, 4: why) of an entry.
