@@ -105,6 +105,7 @@ ShearSummary summarise_shear(const Columns& series, double cs_from, double cs_to
   std::vector<dem::Vec3> principal;
   for (std::size_t i : rows) principal.push_back(principal_stresses(stress_of({series, i})));
   std::vector<double> phi, e_cs, cn_cs, cnm_cs, qp_cs, p_cs, b_cs;
+  dem::Vec3 cs_principal = dem::Vec3::Zero();  // summed over the critical-state rows
   double best = -std::numeric_limits<double>::infinity();
   out.peak_phi_raw_deg = best;
   out.p_min_Pa = std::numeric_limits<double>::infinity(), out.p_max_Pa = -out.p_min_Pa;
@@ -126,6 +127,7 @@ ShearSummary summarise_shear(const Columns& series, double cs_from, double cs_to
     if (strain >= cs_from && strain <= cs_to) {
       const double f = mobilised_friction_deg(principal[k]);
       phi.push_back(f);
+      cs_principal += principal[k];
       e_cs.push_back(e[rows[k]]);
       cn_cs.push_back(cn[rows[k]]);
       cnm_cs.push_back(cnm[rows[k]]);
@@ -138,7 +140,16 @@ ShearSummary summarise_shear(const Columns& series, double cs_from, double cs_to
   out.peak_pi = pi_point(out.peak_principal_Pa);
   out.peak_p_Pa = out.peak_principal_Pa.sum() / 3;
   out.cs_rows = phi.size();
-  out.phi_deg = spread(phi), out.void_ratio = spread(e_cs), out.coordination = spread(cn_cs);
+  // The critical-state angle is that of the mean principal stresses over the window, as the peak's
+  // is of its window's mean: one definition wherever an angle is quoted (the rate series' too); the
+  // sd and the interval stay the row-to-row scatter of the single rows' angles, about it.
+  out.phi_deg = spread(phi);
+  if (!phi.empty()) {
+    const double shift = mobilised_friction_deg(cs_principal / static_cast<double>(phi.size())) - out.phi_deg.mean;
+    out.phi_deg.mean += shift;
+    if (out.phi_deg.low) *out.phi_deg.low += shift, *out.phi_deg.high += shift;
+  }
+  out.void_ratio = spread(e_cs), out.coordination = spread(cn_cs);
   out.coordination_mechanical = spread(cnm_cs), out.q_over_p = spread(qp_cs), out.p_Pa = spread(p_cs), out.b = spread(b_cs);
   return out;
 }

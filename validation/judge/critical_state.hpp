@@ -70,6 +70,8 @@ struct ShearSummary {
   double p_min_Pa = 0, p_max_Pa = 0;  // over every row of the shear: how well p was held
   // The critical state: over the rows with cs_from <= |strain_3| <= cs_to. The sd is the
   // row-to-row scatter about the mean (the rows are correlated: it is not the error of the mean).
+  // phi_deg's mean is the mobilised angle of the rows' mean principal stresses (not the mean of
+  // the rows' angles, which a row-to-row scatter raises), its sd the scatter of the rows' angles.
   std::size_t cs_rows = 0;
   Spread phi_deg, void_ratio, coordination, coordination_mechanical, q_over_p, p_Pa, b;
 };

@@ -44,7 +44,7 @@ std::string against_reference(const RateSeries& s, const ShearRun& table_run, co
   for (const validation::Row& row : rows) {
     if (row.quantity != "critical_state_friction_angle" || row.density + "_" + row.test != table_run.run) continue;
     const double off = s.phi_deg - row.reference;
-    const double at_rate = validation::compression_friction_deg(table_run.summary->q_over_p.mean) - row.reference;
+    const double at_rate = table_run.summary->phi_deg.mean - row.reference;
     std::ostringstream md;
     md << " The reference row \"" << row.name << "\" (" << row.source.substr(0, row.source.find(':')) << ") gives " << number(row.reference)
        << "° with a reading tolerance of " << number(row.tolerance) << "°: the quasi-static φ is " << (off >= 0 ? "+" : "") << fixed(off, 2)
@@ -151,7 +151,7 @@ std::string rates_section(const std::vector<RateSeries>& series, const std::stri
         "the intercept's standard error (n − 2 degrees of freedom), and φ from it (triaxial compression: sin φ = 3η/(6 + η), η = q/p; "
         "its se to first order).\n\n";
   validation::MarkdownTable t({"μ", "run", "strain rate (s⁻¹)", "d (mm)", "ρ (kg/m³)", "p at cs (kPa)", "I", "√I", "q/p at cs",
-                               "φ from q/p (°)", "note"});
+                               "φ at cs (°)", "note"});
   for (const RateSeries& s : series) {
     for (const RatePoint& p : s.points) {
       const ShearRun& r = *p.run;
@@ -159,7 +159,7 @@ std::string rates_section(const std::vector<RateSeries>& series, const std::stri
       t.row({number(s.mu), r.run + " (" + p.study + ")", number(r.rate_per_s), fixed(1e3 * r.diameter_m, 3), number(r.density_kg_per_m3),
              has ? fixed(r.summary->p_Pa.mean / 1e3, 1) : "—", std::isfinite(p.inertial) ? validation::significant(p.inertial, 3) : "—",
              std::isfinite(p.inertial) ? validation::significant(std::sqrt(p.inertial), 3) : "—", has ? mean_sd(r.summary->q_over_p, 3) : "—",
-             has ? fixed(validation::compression_friction_deg(r.summary->q_over_p.mean), 2) : "—",
+             has ? fixed(r.summary->phi_deg.mean, 2) : "—",
              !r.summary ? r.note : r.held ? "" : "left out of the fit: " + r.note.substr(0, r.note.size() >= 2 ? r.note.size() - 2 : 0)});
     }
     if (s.fit)
@@ -188,7 +188,7 @@ std::string rates_section(const std::vector<RateSeries>& series, const std::stri
       const double at = fastest->run->summary->q_over_p.mean;
       md << "; the quasi-static q/p is " << fixed(100 * std::abs(f.intercept / at - 1), 1) << (f.intercept < at ? " % below" : " % above") << " the " << number(fastest->run->rate_per_s)
          << " s⁻¹ value (" << fixed(at, 3) << "), φ " << fixed(s.phi_deg, 2) << "° against "
-         << fixed(validation::compression_friction_deg(at), 2) << "°";
+         << fixed(fastest->run->summary->phi_deg.mean, 2) << "°";
     }
     if (f.n > 2) {
       const double quantile = validation::t_quantile(1 - (1 - validation::prediction_level) / 2, f.n - 2);

@@ -152,7 +152,8 @@ std::string critical_state_table(const std::vector<ShearRun>& runs, const ShearR
   md << "\nPeak φ: the largest mobilised friction angle, sin φ = (σ1 − σ3)/(σ1 + σ3) of the principal stresses of the full tensor, "
         "after a centred mean of the principal stresses over 1 % of axial strain (the largest single row is in `critical_state.dat`). "
         "Critical state: mean ± sd over the rows with 0.3 ≤ |ε3| ≤ 0.4; the sd is the row-to-row scatter, not the error of the mean "
-        "(the rows are correlated). CN mechanical = (2Nc − N1)/(Np − N0 − N1) (Thornton 2000) leaves out the rattlers, which carry no "
+        "(the rows are correlated); φ is that of the rows' mean principal stresses, with the scatter of the rows' angles, "
+        "the same φ every table of this section gives for a run. CN mechanical = (2Nc − N1)/(Np − N0 − N1) (Thornton 2000) leaves out the rattlers, which carry no "
         "load and whose share changes with μ; it is the coordination of the network that carries the stress. ⚠: p at the peak or "
         "at the critical state more than 5 % from the constraint's, or b at the critical state more than 0.05 from the target: the "
         "run is not the test its name says (p at the critical state is at most " << fixed(100 * worst_p, 1)

@@ -146,6 +146,34 @@ TEST_CASE("peak and critical state of a synthetic constant-p shear", "[critical-
   CHECK(s.b.mean == Approx(0).margin(1e-12));  // compression: s2 = s3
 }
 
+TEST_CASE("critical state: the angle is that of the window's mean stresses, with the rows' scatter", "[critical-state][report-sections]") {
+  // Compression at p = 100 kPa, the critical-state rows alternating 10 and 50 deg: the mean
+  // stresses (sigma_1 and sigma_3 averaged over the rows) give asin((S1 - S3)/(S1 + S3)), computed
+  // here from the same stress construction, which is not the mean of the rows' angles.
+  const double deg = std::numbers::pi / 180;
+  validation::Columns c;
+  for (const dem::SeriesColumn& col : dem::series_columns()) c[col.name] = {};
+  double s1 = 0, s3 = 0, angles = 0;
+  int n = 0;
+  for (int i = 0; i <= 200; ++i) {
+    const double strain = 0.002 * i, phi = strain >= 0.3 ? (i % 2 ? 50 : 10) : 30, p = 1e5;
+    const double s = std::sin(phi * deg), ratio = (1 + s) / (1 - s), lateral = 3 * p / (ratio + 2);
+    for (auto& [name, v] : c) v.push_back(0.0);
+    c["stage"].back() = 1, c["strain_3"].back() = strain;
+    c["stress_11"].back() = lateral, c["stress_22"].back() = lateral, c["stress_33"].back() = ratio * lateral;
+    if (strain >= 0.3) s1 += ratio * lateral, s3 += lateral, angles += phi, ++n;
+  }
+  const validation::ShearSummary s = validation::summarise_shear(c);
+  REQUIRE(s.cs_rows == static_cast<std::size_t>(n));
+  const double expected = std::asin((s1 - s3) / (s1 + s3)) / deg;
+  CHECK(std::abs(expected - angles / n) > 0.2);  // the point of the test: not the rows' mean angle
+  CHECK(s.phi_deg.mean == Approx(expected).epsilon(1e-12));
+  // The scatter is the rows' (10 and 50 alternating, 26 of one and 25 of the other: sd about 20).
+  CHECK(s.phi_deg.sd == Approx(20).epsilon(0.02));
+  REQUIRE(s.phi_deg.low.has_value());
+  CHECK((*s.phi_deg.low + *s.phi_deg.high) / 2 == Approx(expected).epsilon(1e-12));
+}
+
 TEST_CASE("mean ± sd over an ensemble's samples of the critical state", "[critical-state][report-sections]") {
   // Three samples: critical phi 30.1, 30.5, 30.9 (mean 30.5, deviations -0.4, 0, +0.4:
   // sample sd sqrt(0.32 / 2) = 0.4); q/p 0.55, 0.56, 0.60 (mean 0.57, deviations -0.02, -0.01,
