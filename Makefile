@@ -31,7 +31,7 @@ LIQUEFACTION   ?= results/liquefaction_loose/paper results/liquefaction_medium/p
 CELL_STUDIES   ?= pipeline/studies/critical_state.yaml
 EXECUTOR    ?=                          # local or slurm (pipeline --executor); empty: the study files' executor key, else local
 
-.PHONY: all deps build tools examples example-samples install test kill-test slurm-test sanitize clang-test fuzz bench quick study convergence report decisions decisions-report readings-report report-sections literature literature-report critical-state liquefaction samples samples-study cyclic-tests render calibration-demo calibration-example clean
+.PHONY: all deps build tools examples example-samples install test kill-test slurm-test sanitize clang-test fuzz bench quick study convergence report decisions decisions-report convergence-report stability-report critical-state-report liquefaction-report readings-report report-sections literature literature-report critical-state liquefaction samples samples-study cyclic-tests render calibration-demo calibration-example clean
 
 # Everything: install, build the tools, run the full study (an ensemble of 5 samples per density,
 # reusing finished runs), validate it, draw the figures and write reports/index.md (the tests are
@@ -205,7 +205,7 @@ study: tools
 # (reports/convergence/, committed: summary.json is what later reports read).
 convergence: tools
 	$(BUILD)/bin/pipeline pipeline/studies/convergence.yaml --profile paper -j $(JOBS) $(if $(strip $(EXECUTOR)),--executor $(strip $(EXECUTOR)))
-	reports/convergence/make_section.sh $(BUILD)/bin $(CONVERGENCE) reports/convergence
+	$(MAKE) --no-print-directory convergence-report
 
 # The same with the quick profile (1,000 spheres, at most 2 cycles per repeat block), validated
 # and drawn into build/quick-report (reports/ is kept for the full study).
@@ -239,10 +239,10 @@ report: tools
 	$(BUILD)/bin/ensemble-cycles $(RESULTS) reports/figures/ensemble
 	reports/make_figures.sh $(BUILD)/bin $(RESULTS) reports/figures $(strip $(SAMPLE))
 	-$(BUILD)/bin/figure-data samples-table $(RESULTS) --references reference_data/paper.yaml --per-sample > reports/samples.md
-	-reports/convergence/make_section.sh $(BUILD)/bin $(CONVERGENCE) reports/convergence
-	reports/stability/make_section.sh $(BUILD)/bin $(STABILITY) reports/stability
-	-reports/critical_state/make_section.sh $(BUILD)/bin $(CRITICAL_STATE) reports/critical_state $(CRITICAL_STATE_ENSEMBLE) $(CRITICAL_STATE_RATES)
-	-reports/liquefaction/make_section.sh $(BUILD)/bin reports/liquefaction $(LIQUEFACTION)
+	-$(MAKE) --no-print-directory convergence-report
+	$(MAKE) --no-print-directory stability-report
+	-$(MAKE) --no-print-directory critical-state-report
+	-$(MAKE) --no-print-directory liquefaction-report
 	-$(MAKE) --no-print-directory literature-report
 	$(BUILD)/bin/report --results $(RESULTS) --references reference_data/paper.yaml --out reports --sample $(strip $(SAMPLE)) \
 	  --baseline $(BASELINE) --decisions $(DECISIONS) --stability $(STABILITY) $(REPORT_SOURCE)
@@ -267,24 +267,22 @@ literature-report: tools
 	  $(BUILD)/bin/validate --results $(FCC_RESULTS) --references reference_data/literature_fcc.yaml --out reports/literature/fcc; \
 	else echo "literature: no results in $(FCC_RESULTS) yet (make literature)"; fi
 
-# The report from the studies that are here, every other section kept from the report before
-# (`report --previous`; its header names those sections; the verdicts judged again from the
-# committed reports/validation.json when the paper study's results are not here): after running one study (make
-# critical-state, make literature, ...) on a machine without the paper study's results.
+# The report from the studies that are here, on a machine without the paper study's results (after
+# running one study: make critical-state, make literature, ...): the verdicts judged again from the
+# committed reports/validation.json, and what the text takes from the paper study's results read
+# back from reports/study_values.json, which the last report written with them left.
 report-sections: tools
 	-$(MAKE) --no-print-directory decisions-report
 	-$(MAKE) --no-print-directory readings-report
-	-reports/critical_state/make_section.sh $(BUILD)/bin $(CRITICAL_STATE) reports/critical_state $(CRITICAL_STATE_ENSEMBLE) $(CRITICAL_STATE_RATES)
-	-reports/liquefaction/make_section.sh $(BUILD)/bin reports/liquefaction $(LIQUEFACTION)
-	-reports/convergence/make_section.sh $(BUILD)/bin $(CONVERGENCE) reports/convergence
+	-$(MAKE) --no-print-directory critical-state-report
+	-$(MAKE) --no-print-directory liquefaction-report
+	-$(MAKE) --no-print-directory convergence-report
 	-$(MAKE) --no-print-directory literature-report
 	@if [ -f $(RESULTS)/runs.tsv ]; then \
 	  $(BUILD)/bin/validate --results $(RESULTS) --references reference_data/paper.yaml --out reports $(VALIDATION_DECISIONS); \
 	else $(BUILD)/bin/validate --from-json reports/validation.json --references reference_data/paper.yaml --out reports $(VALIDATION_DECISIONS); fi || true
-	cp reports/index.md $(BUILD)/previous_index.md
 	$(BUILD)/bin/report --results $(RESULTS) --references reference_data/paper.yaml --out reports --sample $(strip $(SAMPLE)) \
-	  --baseline $(BASELINE) --decisions $(DECISIONS) --stability $(STABILITY) \
-	  --previous $(BUILD)/previous_index.md $(REPORT_SOURCE)
+	  --baseline $(BASELINE) --decisions $(DECISIONS) --stability $(STABILITY) $(REPORT_SOURCE)
 	reports/render_html.sh reports/index.md reports/index.html
 
 # The paper's open choices (docs/method.md#open-choices): each reading one at a time from the baseline, 3
@@ -298,12 +296,12 @@ decisions: tools
 # so); neither: a study not run yet is said so.
 decisions-report: tools
 	@if [ -f $(DECISIONS)/runs.tsv ]; then \
-	  $(BUILD)/bin/compare-runs decisions $(DECISIONS) reports/decisions --references reference_data/paper.yaml --ensemble $(RESULTS) && \
-	  (cd reports/decisions && GNUPLOT_LIB=$(CURDIR)/reports/gnuplot gnuplot $(CURDIR)/reports/gnuplot/tornado.gp); \
+	  $(BUILD)/bin/compare-runs decisions $(DECISIONS) reports/decisions --references reference_data/paper.yaml --ensemble $(RESULTS) \
+	    --draw reports/gnuplot; \
 	elif [ -f reports/decisions/decisions.json ]; then \
 	  echo "decisions: no results in $(DECISIONS); re-drawing from reports/decisions/decisions.json"; \
-	  $(BUILD)/bin/compare-runs decisions --from-json reports/decisions/decisions.json reports/decisions --references reference_data/paper.yaml && \
-	  (cd reports/decisions && GNUPLOT_LIB=$(CURDIR)/reports/gnuplot gnuplot $(CURDIR)/reports/gnuplot/tornado.gp); \
+	  $(BUILD)/bin/compare-runs decisions --from-json reports/decisions/decisions.json reports/decisions --references reference_data/paper.yaml \
+	    --draw reports/gnuplot; \
 	else echo "decisions: no results in $(DECISIONS) yet (make decisions)"; fi
 
 # The readings that explain the misses, measured again at the paper's size (8,000 spheres; the
@@ -317,8 +315,7 @@ readings-report: tools
 	  dir=results/readings_$$r/paper; \
 	  if [ -f $$dir/runs.tsv ]; then \
 	    $(BUILD)/bin/compare-runs decisions $$dir reports/readings/$$r --references reference_data/paper.yaml \
-	      --baseline-results $(RESULTS) --ensemble $(RESULTS) && \
-	    (cd reports/readings/$$r && GNUPLOT_LIB=$(CURDIR)/reports/gnuplot gnuplot $(CURDIR)/reports/gnuplot/tornado.gp); \
+	      --baseline-results $(RESULTS) --ensemble $(RESULTS) --draw reports/gnuplot; \
 	  else echo "readings: no results in $$dir yet (build/bin/pipeline pipeline/studies/paper.yaml pipeline/studies/readings_$$r.yaml --profile paper: with the paper study in the same call, its samples are copied)"; fi; \
 	done
 
@@ -331,7 +328,7 @@ readings-report: tools
 critical-state: tools
 	$(BUILD)/bin/pipeline pipeline/studies/critical_state.yaml pipeline/studies/critical_state_ensemble.yaml \
 	  pipeline/studies/critical_state_rates.yaml --profile paper -j $(JOBS) $(if $(strip $(EXECUTOR)),--executor $(strip $(EXECUTOR)))
-	reports/critical_state/make_section.sh $(BUILD)/bin $(CRITICAL_STATE) reports/critical_state $(CRITICAL_STATE_ENSEMBLE) $(CRITICAL_STATE_RATES)
+	$(MAKE) --no-print-directory critical-state-report
 
 # Undrained cyclic triaxial tests of the loose and the medium sample to liquefaction, and their
 # unloaded holds, on 3 samples each (pipeline/studies/liquefaction_{loose,medium}.yaml, in one
@@ -340,7 +337,28 @@ critical-state: tools
 liquefaction: tools
 	$(BUILD)/bin/pipeline pipeline/studies/liquefaction_loose.yaml pipeline/studies/liquefaction_medium.yaml --profile paper \
 	  -j $(JOBS) $(if $(strip $(EXECUTOR)),--executor $(strip $(EXECUTOR)))
-	reports/liquefaction/make_section.sh $(BUILD)/bin reports/liquefaction $(LIQUEFACTION)
+	$(MAKE) --no-print-directory liquefaction-report
+
+# Each section another study feeds, from that study's results (compare-runs, its figures drawn with
+# --draw reports/gnuplot); a study not run yet is said so. The convergence section without its
+# results is re-drawn from its committed summary.json; the critical state's ensemble and rates are
+# added when they have run.
+convergence-report: tools
+	$(BUILD)/bin/compare-runs convergence $(CONVERGENCE) reports/convergence --threads 1 --draw reports/gnuplot \
+	  $$([ ! -f reports/validation.json ] || echo --validation reports/validation.json)
+stability-report: tools
+	@if [ -f $(STABILITY)/runs.tsv ]; then $(BUILD)/bin/compare-runs stability $(STABILITY) reports/stability --report-only; \
+	else echo "stability: no results in $(STABILITY) yet (make study)"; fi
+critical-state-report: tools
+	@if [ -f $(CRITICAL_STATE)/runs.tsv ]; then \
+	  $(BUILD)/bin/compare-runs critical-state $(CRITICAL_STATE) reports/critical_state --draw reports/gnuplot \
+	    $$([ ! -f $(CRITICAL_STATE_ENSEMBLE)/runs.tsv ] || echo --ensemble $(CRITICAL_STATE_ENSEMBLE)) \
+	    $$([ ! -f $(CRITICAL_STATE_RATES)/runs.tsv ] || echo --rates $(CRITICAL_STATE_RATES) --references reference_data/literature.yaml); \
+	else echo "critical-state: no results in $(CRITICAL_STATE) yet (make critical-state)"; fi
+liquefaction-report: tools
+	@folders="$$(for d in $(LIQUEFACTION); do [ ! -f $$d/runs.tsv ] || echo $$d; done)"; \
+	if [ -n "$$folders" ]; then $(BUILD)/bin/compare-runs liquefaction reports/liquefaction $$folders --draw reports/gnuplot; \
+	else echo "liquefaction: no results in $(LIQUEFACTION) yet (make liquefaction)"; fi
 
 # The samples before shearing (pipeline/studies/samples.yaml): the three preparation scenes at
 # full size, 3 seeds, viscous and local damping (18 runs of 8,000 spheres), then the table of them

@@ -3,7 +3,7 @@
 # one colour per density, its Pareto front as a line, and the tolerances of the table (1, 5, 10 %).
 # Data: errors.dat and front.dat (build/bin/compare-runs convergence; columns: density, setting,
 # core-seconds, largest relative error, its half-width, on the front, the quantity). Runs in
-# reports/convergence/ (reports/convergence/make_section.sh).
+# reports/convergence/ (compare-runs convergence --draw, make convergence-report).
 load 'style.gp'
 set terminal pngcairo size 1100,800 font ",11" enhanced
 set output 'error_vs_time.png'

@@ -10,7 +10,7 @@
 # sd, e and sd, CN and sd, peak φ and sd); with --rates, the quasi-static critical φ (I -> 0) with
 # its standard error, just right of its μ (rates_qs.dat: label, μ, q/p and se, φ and se, slope,
 # points, monotonic). `for [k = 1:has_ensemble]` draws a set only when there is one (an empty
-# iteration draws nothing). Runs in reports/critical_state/ (reports/critical_state/make_section.sh).
+# iteration draws nothing). Runs in reports/critical_state/ (compare-runs critical-state --draw, make critical-state-report).
 load 'style.gp'
 load 'values.gp'
 set terminal pngcairo size 1000,750 font ",11" enhanced

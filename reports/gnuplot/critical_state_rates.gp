@@ -5,7 +5,7 @@
 # --rates; columns: label, series, μ, strain rate, d, ρ, p at cs, I, sqrt I, q/p at cs and its
 # row-to-row sd, used 1/0), rates_qs.dat (label, μ, q/p and se at I = 0, φ and se, slope, points,
 # monotonic) and values.gp (rate_series_n, rate_mu_<k>, rate_intercept_<k>, rate_slope_<k>).
-# Runs in reports/critical_state/ (reports/critical_state/make_section.sh).
+# Runs in reports/critical_state/ (compare-runs critical-state --draw, make critical-state-report).
 load 'style.gp'
 load 'values.gp'
 set terminal pngcairo size 1000,750 font ",11" enhanced

@@ -3,7 +3,7 @@
 # and runs in the folder of its data. The figures of the study then load 'values.gp', which
 # build/bin/figure-data wrote beside their data files (the numbers the scripts read: the paper's
 # values from reference_data/paper.yaml, the settings of the resolved scenes, which results exist).
-# reports/make_figures.sh and reports/convergence/make_section.sh run them with GNUPLOT_LIB
+# reports/make_figures.sh and compare-runs --draw (validation/sections/draw.cpp) run them with GNUPLOT_LIB
 # pointing here.
 
 set grid lc rgb "#dddddd"

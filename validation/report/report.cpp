@@ -1,7 +1,7 @@
 #include "report/report.hpp"
 #include "report/other_sections.hpp"
 
-#include "core/text.hpp"
+
 
 #include <algorithm>
 #include <cmath>
@@ -31,26 +31,7 @@ std::string trim(const std::string& s) {
 
 const std::vector<std::string>& densities = paper_densities();
 
-// The text before the first level-2 heading, then each "## heading" section in order.
-std::pair<std::string, std::vector<std::pair<std::string, std::string>>> sections_of(const std::string& text) {
-  std::pair<std::string, std::vector<std::pair<std::string, std::string>>> out;
-  std::size_t at = 0;
-  while (at < text.size()) {
-    std::size_t end = text.find('\n', at);
-    end = end == std::string::npos ? text.size() : end + 1;
-    const std::string line = text.substr(at, end - at);
-    if (line.rfind("## ", 0) == 0) out.second.emplace_back(line.substr(0, line.find_last_not_of("\r\n") + 1), "");
-    (out.second.empty() ? out.first : out.second.back().second) += line;
-    at = end;
-  }
-  return out;
-}
-
 }  // namespace
-
-std::string paragraph_not_here(const std::string& mode, const std::string& text) {
-  return "<!-- inputs not here: the paragraph " + mode + " \"" + text + "\" -->";
-}
 
 std::string section_name(const std::string& heading_line) {
   std::string name = heading_line.substr(0, heading_line.find_last_not_of("\r\n") + 1);
@@ -62,76 +43,6 @@ std::string section_name(const std::string& heading_line) {
   for (const char* mark : {other_baseline_mark})
     if (name.rfind(mark, 0) == 0) return name.substr(std::string(mark).size());
   return name;
-}
-
-namespace {
-
-// The lines of `text`, without their newlines.
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> out;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) out.push_back(line);
-  return out;
-}
-
-// The paragraph of `previous` a paragraph_not_here marker names ("" if it has none): from line `at`
-// on, the lines up to the next blank one.
-std::string paragraph_at(const std::vector<std::string>& lines, std::size_t at) {
-  std::string out;
-  for (; at < lines.size() && !trim(lines[at]).empty(); ++at) out += (out.empty() ? "" : "\n") + lines[at];
-  return out;
-}
-
-std::string find_paragraph(const std::vector<std::string>& lines, const std::string& mode, const std::string& text) {
-  for (std::size_t i = 0; i < lines.size(); ++i) {
-    if (mode == "starting" && lines[i].rfind(text, 0) == 0 && (i == 0 || trim(lines[i - 1]).empty())) return paragraph_at(lines, i);
-    if (mode == "after" && lines[i] == text) {
-      std::size_t j = i + 1;
-      while (j < lines.size() && trim(lines[j]).empty()) ++j;
-      if (j < lines.size() && lines[j].rfind("![", 0) != 0 && lines[j].rfind("#", 0) != 0) return paragraph_at(lines, j);
-      return "";
-    }
-  }
-  return "";
-}
-
-// Each paragraph_not_here marker of `text` replaced by its paragraph in `previous`.
-std::string keep_paragraphs(const std::string& text, const std::string& previous, std::vector<std::string>& kept) {
-  const std::string lead = "<!-- inputs not here: the paragraph ";
-  const std::vector<std::string> lines = lines_of(previous);
-  std::string out;
-  std::size_t from = 0;
-  for (std::size_t at; (at = text.find(lead, from)) != std::string::npos;) {
-    const std::size_t end = text.find("\" -->", at);
-    if (end == std::string::npos) break;
-    const std::string inner = text.substr(at + lead.size(), end - at - lead.size());  // mode "text
-    const std::size_t quote = inner.find(" \"");
-    const std::string mode = inner.substr(0, quote), what = quote == std::string::npos ? "" : inner.substr(quote + 2);
-    const std::string paragraph = find_paragraph(lines, mode, what);
-    out += text.substr(from, at - from) + paragraph;
-    if (!paragraph.empty()) kept.push_back("¶ " + what);
-    from = end + 5;
-  }
-  return out + text.substr(from);
-}
-
-}  // namespace
-
-std::string keep_sections_without_inputs(const std::string& fresh, const std::string& previous, std::vector<std::string>& kept) {
-  const auto now = sections_of(fresh), before = sections_of(previous);
-  std::string out = now.first;
-  for (const auto& section : now.second) {
-    const auto& [heading, text] = section;  // a lambda takes the pair (clang 14 captures no structured binding)
-    const std::string name = section_name(section.first);
-    const auto old = std::find_if(before.second.begin(), before.second.end(), [&](const auto& s) { return section_name(s.first) == name; });
-    if (text.find(inputs_not_here) != std::string::npos && old != before.second.end()) {
-      out += heading + "\n" + old->second.substr(std::min(old->second.find('\n') + 1, old->second.size()));  // fresh heading, old body
-      kept.push_back(name);
-    } else {
-      out += text;
-    }
-  }
-  return keep_paragraphs(out, previous, kept);
 }
 
 std::string fill(const std::string& t, const Values& values) {
@@ -277,32 +188,6 @@ std::string shear_control_table(const std::vector<Sample>& samples) {
     md.row(cells);
   }
   return md.text();
-}
-
-namespace {
-
-std::string first_line(const std::string& s) { return s.substr(0, s.find('\n')); }
-
-}  // namespace
-
-void check_previous_report(const std::string& previous, const std::string& fresh, const std::string& what) {
-  if (const std::size_t at = dem::first_non_text(previous); at != std::string::npos)
-    throw std::runtime_error(what + " is not a report: binary content at byte " + std::to_string(at) +
-                             " (an HDF5 or other binary file?); give an earlier reports/index.md");
-  const std::string title = first_line(fresh), theirs = first_line(previous);
-  if (theirs != title)
-    throw std::runtime_error(what + " is not a report of this template: its first line is '" +
-                             (theirs.size() > 80 ? theirs.substr(0, 80) + "..." : theirs) + "', expected '" + title + "'");
-  if (previous.find("\nGenerated on ") == std::string::npos)
-    throw std::runtime_error(what + " is not a report of this template: it has no 'Generated on' line");
-  // The last section of `fresh`, by its name (section_name: an earlier report may have it outside the appendix).
-  const auto sections = sections_of(fresh).second;
-  const std::string last = sections.empty() ? "" : section_name(sections.back().first);
-  const auto theirs_sections = sections_of(previous).second;
-  const bool has_last = last.empty() || std::any_of(theirs_sections.begin(), theirs_sections.end(),
-                                                    [&](const auto& s) { return section_name(s.first) == last; });
-  if (previous.empty() || previous.back() != '\n' || !has_last)
-    throw std::runtime_error(what + " is cut short: it ends before its last section '" + (sections.empty() ? std::string() : sections.back().first) + "' (a truncated copy?)");
 }
 
 }  // namespace validation

@@ -25,31 +25,10 @@ namespace validation {
 // std::runtime_error naming it (a typo in a template is an error, not an empty gap).
 std::string fill(const std::string& tmpl, const Values& values);
 
-// What a template writes in a section whose inputs are not on this machine (the study's results,
-// say): `report --previous FILE` then takes that section from FILE, an earlier report, instead.
-inline constexpr const char* inputs_not_here = "<!-- inputs not here -->";
-
-// What a template writes in place of one paragraph whose inputs are not here (a figure's note, the
-// readings the runs used), in a section that is otherwise written from what is here: `report
-// --previous` then takes that paragraph from the earlier report. "starting": the paragraph of the
-// earlier report whose first line starts with `text`; "after": the paragraph that follows the
-// line `text` (a figure's image line: its note).
-std::string paragraph_not_here(const std::string& mode, const std::string& text);
-
-// A section's name as keep_sections_without_inputs matches it: its heading without the "#"s,
-// without an "Appendix: " prefix ("## Appendix: What was run" -> "What was run") and without a
-// "⚠ from another baseline: " mark (other_sections.hpp), so that a section moved into the appendix,
-// or headed as from another baseline, still finds itself in an earlier report.
+// A section's name: its heading without the "#"s, without an "Appendix: " prefix ("## Appendix:
+// What was run" -> "What was run") and without a "⚠ from another baseline: " mark
+// (other_sections.hpp).
 std::string section_name(const std::string& heading_line);
-
-// `fresh` (a report just written) with every level-2 section ("## heading" up to the next) that
-// holds inputs_not_here replaced by the body of `previous`'s section of the same name
-// (section_name), under `fresh`'s heading, if it has one; then every paragraph_not_here marker
-// replaced by that paragraph of `previous` (a marker whose paragraph `previous` lacks is dropped).
-// The names of the sections taken from `previous` are appended to `kept`, and, for each paragraph,
-// "¶ " and its text (`starting`) or line (`after`). The text before the first heading is `fresh`'s.
-std::string keep_sections_without_inputs(const std::string& fresh, const std::string& previous, std::vector<std::string>& kept);
-
 
 // What the notes are computed from: the ensemble, the sample the single-run figures show, the
 // rows the validation judges (their verdicts are computed here, on the same samples) and the
@@ -81,11 +60,5 @@ std::string state_a_table(const std::vector<Sample>& samples);
 // largest |engineering shear strain| the cell took and the largest |sigma_ij| / p, over every row
 // of its tests ("—" where a column is missing, e.g. results written before the columns existed).
 std::string shear_control_table(const std::vector<Sample>& samples);
-
-// Throws, naming `what` (the option and file), unless `previous` is a whole report of this
-// template: text (no NUL byte, valid UTF-8: not an HDF5 or other binary file), the same title line
-// as `fresh`, a "Generated on" line, and the last section of `fresh` present with the file ending
-// in a newline (a report cut short is not taken).
-void check_previous_report(const std::string& previous, const std::string& fresh, const std::string& what);
 
 }  // namespace validation

@@ -295,7 +295,8 @@ void add_tables(Values& v, const fs::path& report, const std::vector<Row>& paper
   v["file.readings"] = readings_text(report, paper);
 }
 
-void add_setup(Values& v, const fs::path& report, bool have_results) {
+void add_setup(Values& v, const fs::path& report, const std::string& settings_from) {
+  const bool have_results = !settings_from.empty();
   // The study's settings: from its results' resolved scenes (add_settings), else from what
   // figure-data recorded of them in reports/figures/values.gp; a setting neither gives is left out.
   const std::map<std::string, std::string> gp = gnuplot_values(report / "figures" / "values.gp");
@@ -342,7 +343,7 @@ void add_setup(Values& v, const fs::path& report, bool have_results) {
     md.row({"judged", std::to_string(record.value("total", 0)) + " rows of `" + record.value("references", std::string("the reference file")) + "` (profile " +
                           record.value("profile", std::string("not recorded")) + "), each on every sample"});
   v["setup.table"] = md.rows() ? md.text() : "";
-  v["setup.from"] = have_results ? "the resolved scenes of the results and `reports/validation.json`"
+  v["setup.from"] = have_results ? settings_from + " and `reports/validation.json`"
                                  : "`reports/validation.json` and `reports/figures/values.gp`, which `validate` and `figure-data` wrote from the results";
 }
 
@@ -373,8 +374,20 @@ void add_baseline(Values& v, const std::string& baseline_file, const std::vector
   if (!samples.empty()) v["shear_control.table"] = shear_control_table(samples);
 }
 
-void add_figures(Values& v, const fs::path& report, const std::string& notes_tsv,
-                 const std::vector<std::pair<std::string, Columns>>& energy_series) {
+Values values_from_results(const ReportInputs& in, const std::string& results, const std::string& baseline_file,
+                           const std::vector<std::string>& densities) {
+  Values v = figure_values(in);
+  if (!v.count("sample")) v["sample"] = in.sample.empty() ? "—" : in.sample;
+  const auto energy_series = add_runs(v, in.samples, densities);
+  add_settings(v, results, true);
+  add_baseline(v, baseline_file, in.rows, in.samples);
+  std::vector<std::pair<std::string, const Columns*>> runs;
+  for (const auto& [name, c] : energy_series) runs.emplace_back(name, &c);
+  v["energy.table"] = runs.empty() ? "" : energy_table(runs);
+  return v;
+}
+
+void add_figures(Values& v, const fs::path& report, const std::string& notes_tsv) {
   std::error_code ec;
   std::string readme = read_text(report / "figures" / "README.md");
   if (!readme.empty() && readme.rfind("# ", 0) == 0) readme = readme.substr(readme.find('\n') + 1);
@@ -388,14 +401,12 @@ void add_figures(Values& v, const fs::path& report, const std::string& notes_tsv
     }
   }
   std::sort(pngs.begin(), pngs.end());
-  // Each figure with its note; without the results the notes (computed from them) are the previous
-  // report's (`report --previous`: paragraph_not_here). The paper's two headline checks (e0 and CN
-  // of every sample, q/p against F^s_d/F^s_m) come first, in their own section, and not again.
-  const bool have_results = v.count("have_results") && !v.at("have_results").empty();
+  // Each figure with its note. The paper's two headline checks (e0 and CN of every sample, q/p
+  // against F^s_d/F^s_m) come first, in their own section, and not again.
   const std::vector<std::string> headline = {"fig00_samples.png", "fig13_strong_fabric.png", "fig14_strong_fabric_all.png"};
   const auto with_note = [&](const std::string& png) {
     const std::string image = "![" + png.substr(0, png.size() - 4) + "](figures/" + png + ")";
-    return "\n" + image + "\n\n" + (have_results ? figure_note(notes_tsv, png, v) : paragraph_not_here("after", image)) + "\n";
+    return "\n" + image + "\n\n" + figure_note(notes_tsv, png, v) + "\n";
   };
   std::string figs, heads;
   for (const std::string& png : pngs)
@@ -408,10 +419,6 @@ void add_figures(Values& v, const fs::path& report, const std::string& notes_tsv
   for (const std::string& png : renders) r += "![" + png.substr(0, png.size() - 4) + "](figures/" + png + ")\n";
   v["renders"] = r;
   v["energy.figure"] = fs::exists(report / "figures" / "fig_energy.png") ? "yes" : "";
-  // The energy balance of the chosen sample's runs, and the note on the energy figure.
-  std::vector<std::pair<std::string, const Columns*>> runs;
-  for (const auto& [name, c] : energy_series) runs.emplace_back(name, &c);
-  v["energy.table"] = runs.empty() ? "" : energy_table(runs);
   v["energy.note"] = figure_note(notes_tsv, "fig_energy.png", v);
 }
 

@@ -38,9 +38,10 @@ void add_settings(Values& v, const std::string& results, bool have_results);
 void add_tables(Values& v, const std::filesystem::path& report, const std::vector<Row>& paper, const std::string& decisions_results);
 
 // setup.table (the study in one small table: its samples, spheres, preparation, tests and the rows
-// judged, from reports/validation.json and the results' settings, or without the results from
-// reports/figures/values.gp, which figure-data wrote from them) and setup.from (where from).
-void add_setup(Values& v, const std::filesystem::path& report, bool have_results);
+// judged, from reports/validation.json and the setting.* keys of `v`, said to come from
+// `settings_from`; with `settings_from` "", from reports/figures/values.gp, which figure-data wrote
+// from the results) and setup.from (where from).
+void add_setup(Values& v, const std::filesystem::path& report, const std::string& settings_from);
 
 // stability.* and validation.prediction_percent from the stability study's results (the
 // convergence section's table carries its own settings and stamp).
@@ -49,11 +50,16 @@ void add_study_settings(Values& v, const std::string& stability_results);
 // baseline.*, state_a.table and shear_control.table (the earlier baseline given by --baseline).
 void add_baseline(Values& v, const std::string& baseline_file, const std::vector<Row>& rows, const std::vector<Sample>& samples);
 
-// file.figures_readme, figures (every figure with its note; without the results, the note is the
-// previous report's: paragraph_not_here), headline_figures (Figs. 0, 13 and 14, not in figures),
-// figure.fig00, renders, energy.*: the figures under
-// `report`/figures with the notes of `notes_tsv`; `energy_series` from add_runs.
-void add_figures(Values& v, const std::filesystem::path& report, const std::string& notes_tsv,
-                 const std::vector<std::pair<std::string, Columns>>& energy_series);
+// Every key above that the paper study's results give, in one map (what study_values.json keeps):
+// figure_values(in), add_runs, add_settings, add_baseline (with `baseline_file`, "" for none) and
+// energy.table (the energy balance of the chosen sample's runs).
+Values values_from_results(const ReportInputs& in, const std::string& results, const std::string& baseline_file,
+                           const std::vector<std::string>& densities);
+
+// file.figures_readme, figures (every figure with its note, computed from `v`: a note whose data
+// is not in `v` says what it lacks), headline_figures (Figs. 0, 13 and 14, not in figures),
+// figure.fig00, renders, energy.figure, energy.note: the figures under `report`/figures with the
+// notes of `notes_tsv`.
+void add_figures(Values& v, const std::filesystem::path& report, const std::string& notes_tsv);
 
 }  // namespace validation

@@ -215,7 +215,7 @@ int critical_state(const Manifest& manifest, const std::string& results, const s
       break;
     }
   // The ensemble and the rates studies, each from its own folder (a folder without a manifest is
-  // an error: make_section.sh passes only folders that have one).
+  // an error: make critical-state-report passes only folders that have one).
   std::vector<ShearRun> ensemble_runs, rate_runs;
   std::vector<EnsembleGroup> groups;
   std::vector<RateSeries> series;

@@ -7,6 +7,9 @@
 //   compare-runs decisions --from-json DECISIONS_JSON OUT_DIR [--references FILE]
 //   compare-runs critical-state RESULTS_DIR OUT_DIR [--ensemble DIR] [--rates DIR]
 //   compare-runs liquefaction OUT_DIR RESULTS_DIR...
+// Every mode takes --draw GNUPLOT_DIR (reports/gnuplot): its section's figures drawn in OUT_DIR
+// once its data are written (sections/draw.hpp declares them). convergence without results
+// (RESULTS_DIR has no runs.tsv) but with OUT_DIR/summary.json re-draws from that summary, and says so.
 // Each mode is a file of compare_runs/ (what it writes: modes.hpp); this one parses the arguments
 // (every sub-command answers --help) and calls it. stability, critical-state and liquefaction also
 // write OUT_DIR/stamp.json, decisions a "stamp" in decisions.json (study/stamp.hpp).
@@ -21,6 +24,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "sections/draw.hpp"
 #include "sections/modes.hpp"
 #include "study/stamp.hpp"
 #include "io/failure.hpp"
@@ -144,6 +148,11 @@ int tool_main(int argc, char** argv) {
   liquefaction->add_option("OUT_DIR", liquefaction_out, "where the tables and the figures' data go (made if missing)")->required();
   liquefaction->add_option("RESULTS_DIR", liquefaction_folders, "the studies' results folders")->required();
 
+  std::string draw_dir;
+  for (CLI::App* mode : {convergence, stability, decisions, critical, liquefaction})
+    mode->add_option("--draw", draw_dir, "draw the section's figures in OUT_DIR with the gnuplot scripts of this folder (reports/gnuplot)")
+        ->check(CLI::ExistingDirectory);
+
   if (argc < 2) {  // what there is
     std::fputs(app.help().c_str(), stderr);
     return 2;
@@ -178,14 +187,33 @@ int tool_main(int argc, char** argv) {
       return 2;
     }
   }
+  // Without its results, the convergence section is re-drawn from the summary its results left.
+  if (*convergence && convergence_summary.empty() && !std::filesystem::exists(std::filesystem::path(convergence_f.results) / "runs.tsv") &&
+      std::filesystem::exists(std::filesystem::path(convergence_f.out) / "summary.json")) {
+    convergence_summary = (std::filesystem::path(convergence_f.out) / "summary.json").string();
+    std::fprintf(stderr, "compare-runs: no results in %s; the convergence section re-drawn from %s\n", convergence_f.results.c_str(),
+                 convergence_summary.c_str());
+    convergence_f.results = convergence_f.out;
+  }
+  // A mode's status, its figures drawn when its data are written (0, or 1: a stability case not
+  // acceptable); a figure that cannot be drawn makes a 0 a 1.
+  const std::string mode = argv[1];
+  const auto drawn = [&](int status, const std::string& out) {
+    if (draw_dir.empty() || (status != 0 && status != 1)) return status;
+    const int d = compare_runs::draw_section(mode, out, draw_dir);
+    return status == 0 ? d : status;
+  };
   try {
     if (*convergence && !convergence_summary.empty()) {
       std::filesystem::create_directories(convergence_f.results);
-      return compare_runs::convergence_from_summary(convergence_summary, convergence_f.results, reference, validation_json);
+      return drawn(compare_runs::convergence_from_summary(convergence_summary, convergence_f.results, reference, validation_json),
+                   convergence_f.results);
     }
     if (*liquefaction)
-      return stamped(compare_runs::liquefaction(liquefaction_out, liquefaction_folders), liquefaction_out, liquefaction_folders);
-    if (*decisions && !from_json.empty()) return compare_runs::decisions_from_json(from_json, decisions_f.results, references);
+      return drawn(stamped(compare_runs::liquefaction(liquefaction_out, liquefaction_folders), liquefaction_out, liquefaction_folders),
+                   liquefaction_out);
+    if (*decisions && !from_json.empty())
+      return drawn(compare_runs::decisions_from_json(from_json, decisions_f.results, references), decisions_f.results);
     const Folders& f = *convergence ? convergence_f : *stability ? stability_f : *decisions ? decisions_f : critical_f;
     compare_runs::Manifest manifest;
     try {
@@ -195,9 +223,9 @@ int tool_main(int argc, char** argv) {
       return 2;
     }
     std::filesystem::create_directories(f.out);
-    if (*convergence) return compare_runs::convergence(manifest, f.results, f.out, reference, threads_per_run, validation_json);
+    if (*convergence) return drawn(compare_runs::convergence(manifest, f.results, f.out, reference, threads_per_run, validation_json), f.out);
     if (*stability) return stamped(compare_runs::stability(manifest, f.results, f.out, report_only), f.out, {f.results});
-    if (*decisions) return compare_runs::decisions(manifest, f.results, f.out, references, baseline, ensemble, baseline_results);
+    if (*decisions) return drawn(compare_runs::decisions(manifest, f.results, f.out, references, baseline, ensemble, baseline_results), f.out);
     if (*critical) {
       for (const std::string& dir : {critical_ensemble, critical_rates})
         if (!dir.empty()) try {
@@ -206,8 +234,9 @@ int tool_main(int argc, char** argv) {
             std::fprintf(stderr, "error: %s\n", e.what());
             return 2;
           }
-      return stamped(compare_runs::critical_state(manifest, f.results, f.out, critical_ensemble, critical_rates, critical_references), f.out,
-                     {f.results, critical_ensemble, critical_rates});
+      return drawn(stamped(compare_runs::critical_state(manifest, f.results, f.out, critical_ensemble, critical_rates, critical_references),
+                           f.out, {f.results, critical_ensemble, critical_rates}),
+                   f.out);
     }
     return 2;  // not reached: parse() requires one sub-command
   } catch (const std::exception& e) {  // a result that cannot be read, a folder that cannot be made

@@ -6,20 +6,24 @@
 // figures plot and the verdicts of the validation rows about them.
 //   report --results DIR --references FILE --out REPORT_DIR [--profile NAME] [--sample NAME]
 //          [--templates DIR] [--baseline FILE] [--decisions DIR] [--stability DIR]
-//          [--source TEXT] [--note TEXT] [--previous FILE] [--allow-other-baseline]
+//          [--source TEXT] [--note TEXT] [--allow-other-baseline]
 // REPORT_DIR holds what the other tools wrote (validation.md, verdicts.md, figures/, samples.md,
 // decisions/, convergence/, stability/, critical_state/, liquefaction/, bench.md); a part that is
 // missing is said so in its section. --baseline: an earlier baseline's validation.json, compared
-// row by row. Under the heading of each section another study made (report/other_sections.hpp) a
+// row by row. What the text takes from the paper study's results is written to
+// REPORT_DIR/study_values.json whenever they are here, and read from it when they are not
+// (report/study_values.hpp), so the report is written again anywhere from committed files. Under the heading of each section another study made (report/other_sections.hpp) a
 // line says the engine, baseline, size and date of its numbers; a section whose baseline
 // differs from the paper study's (REPORT_DIR/validation.json's stamp) is refused (exit 1, naming
-// it) unless --allow-other-baseline, which heads it "⚠ from another baseline". Exit status: 0; 1 if the report cannot be written, a template names an unknown key
-// or a result file is there but cannot be read; 2 for bad arguments or a --results that is not a
-// folder (one that does not exist is accepted with --previous).
+// it) unless --allow-other-baseline, which heads it "⚠ from another baseline"; so is a
+// study_values.json from another baseline. Exit status: 0; 1 if the report cannot be written, a
+// template names an unknown key or a result file is there but cannot be read; 2 for bad arguments
+// or a --results that is not a folder (one that does not exist is accepted when REPORT_DIR has a
+// study_values.json).
 #include <cstdio>
 #include <filesystem>
 #include <map>
-#include <regex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +34,7 @@
 #include "report/other_sections.hpp"
 #include "report/report.hpp"
 #include "report/report_values.hpp"
+#include "report/study_values.hpp"
 #include "study/format.hpp"
 #include "study/manifest.hpp"
 #include "study/paths.hpp"
@@ -37,37 +42,6 @@
 
 namespace fs = std::filesystem;
 
-namespace {
-
-// Sections whose inputs are not here (the paper study's results, on a machine that ran only some
-// studies) from the previous report, said so in the header.
-std::string with_previous_sections(const std::string& text, const std::string& tmpl, validation::Values& v, const std::string& file) {
-  const std::string previous = validation::read_text(file);
-  if (previous.empty()) throw std::runtime_error("--previous '" + file + "' is missing or empty");
-  validation::check_previous_report(previous, text, "--previous '" + file + "'");
-  std::vector<std::string> kept;
-  validation::keep_sections_without_inputs(text, previous, kept);
-  if (kept.empty()) return text;
-  std::smatch m;
-  v["kept_from"] = std::regex_search(previous, m, std::regex(R"(Generated on (\S+))")) ? m[1].str() : "date not written";
-  // The sections by name; the paragraphs ("¶ " + what found them) counted: the notes of the figures
-  // (found after their image line) and the others.
-  std::vector<std::string> sections;
-  std::size_t notes = 0, others = 0;
-  for (const std::string& k : kept)
-    if (k.rfind("¶ ", 0) != 0) sections.push_back(k);
-    else if (k.find("![") != std::string::npos) ++notes;
-    else ++others;
-  v["kept"] = sections.empty() ? "" : "\"" + validation::joined(sections, "\", \"") + "\"";
-  std::string paragraphs;
-  if (others) paragraphs = std::to_string(others) + " paragraph" + (others == 1 ? "" : "s") + " computed from the results";
-  if (notes) paragraphs += (paragraphs.empty() ? "" : " and ") + std::string("the notes of ") + std::to_string(notes) + " figures";
-  v["kept_paragraphs"] = paragraphs;
-  kept.clear();
-  return validation::keep_sections_without_inputs(validation::fill(tmpl, v), previous, kept);
-}
-
-}  // namespace
 
 // The tool; main runs it under guarded_main (a file system error names its path, exit 1).
 int tool_main(int argc, char** argv) {
@@ -88,8 +62,6 @@ int tool_main(int argc, char** argv) {
   option("--stability", "the stability study's results folder (its settings for the text)");
   option("--source", "what the report was made from (e.g. the commit)");
   option("--note", "a note printed at the top of the report");
-  option("--previous", "an earlier report: each section whose inputs are not here (e.g. the paper study's results) is taken "
-                       "from it, and the header names those sections and that report's date");
   bool allow_other_baseline = false;
   app.add_flag("--allow-other-baseline", allow_other_baseline,
                "keep a section another study made on another baseline than the paper study's (its stamp says which), "
@@ -108,11 +80,12 @@ int tool_main(int argc, char** argv) {
   const std::string results = opt["--results"], out = opt["--out"];
   std::error_code ec;
   // Nothing to report on is an error: --results must be a folder; one that does not exist only
-  // with --previous (a machine without that study's results keeps its sections from that report).
+  // when the report's folder keeps what an earlier report took from the results (study_values.json).
   if (const std::string bad = validation::folder_problem(results);
-      !bad.empty() && !(bad == "does not exist" && !opt["--previous"].empty())) {
+      !bad.empty() && !(bad == "does not exist" && fs::exists(fs::path(out) / validation::study_values_file, ec))) {
     std::fprintf(stderr, "report: --results '%s' %s (a study's results folder: seed<N>/ folders or one sample's results%s)\n",
-                 results.c_str(), bad.c_str(), bad == "does not exist" ? "; --previous FILE keeps the sections without results" : "");
+                 results.c_str(), bad.c_str(),
+                 bad == "does not exist" ? "; without it, REPORT_DIR/study_values.json, which a report written with the results leaves" : "");
     return 2;
   }
   if (fs::exists(out, ec) && !fs::is_directory(out, ec)) {
@@ -133,12 +106,31 @@ int tool_main(int argc, char** argv) {
     if (have_results) in.samples = validation::load_samples(results, densities, missing);
     if (validation::report_unreadable("report", missing)) return 1;  // lost, not merely not run
     in.sample = opt["--sample"];
-    validation::Values v = validation::figure_values(in);
-    if (!v.count("sample")) v["sample"] = in.sample.empty() ? "—" : in.sample, v["samples_n"] = "0";  // no results: the sample named
-
-    validation::add_provenance(v, src, have_results && !in.samples.empty(), missing.size());
-    const auto energy_series = validation::add_runs(v, in.samples, densities);
-    validation::add_settings(v, results, have_results);
+    // The values the results give: computed and kept beside the report, or read back from there.
+    const bool fresh = have_results && !in.samples.empty();
+    std::optional<validation::StudyValues> from_results;
+    if (fresh) {
+      from_results = validation::StudyValues{validation::stamp_of_results(results), validation::shown_path(results),
+                                             validation::values_from_results(in, results, opt["--baseline"], densities)};
+      validation::write_study_values(report, *from_results);
+    } else {
+      from_results = validation::read_study_values(report);
+    }
+    validation::Values v = fresh ? validation::Values{} : validation::figure_values(in);  // no samples: the constants the text quotes
+    if (from_results) {
+      for (const auto& [k, val] : from_results->values) v[k] = val;
+    } else {
+      v["sample"] = in.sample.empty() ? "—" : in.sample, v["samples_n"] = "0";  // no results: the sample named
+      validation::add_settings(v, results, false);
+    }
+    const bool read_back = from_results && !fresh;
+    const std::string values_file = (report / validation::study_values_file).string();
+    validation::add_provenance(v, src, from_results.has_value(), missing.size());
+    if (read_back) {
+      v["results"] = from_results->results;
+      v["values.file"] = values_file;
+      v["values.stamp"] = validation::stamp_text(from_results->stamp);
+    }
     validation::add_tables(v, report, in.paper, opt["--decisions"]);
     const validation::Stamp paper_stamp = validation::read_paper_stamp(report);
     v["stamp.paper"] = paper_stamp.recorded() ? validation::stamp_text(paper_stamp)
@@ -147,18 +139,29 @@ int tool_main(int argc, char** argv) {
     std::vector<std::string> elsewhere;
     for (const auto& [section, differs] : validation::sections_from_elsewhere(report, v, paper_stamp))
       elsewhere.push_back("\"" + validation::section_name(section.heading) + "\" (another " + differs + ")");
+    // The values read back must come from the results validation.json judged: another baseline is
+    // refused as a section would be.
+    if (read_back) {
+      if (const std::string differs = validation::stamp_difference(from_results->stamp, paper_stamp); !differs.empty()) {
+        if (!allow_other_baseline) {
+          std::fprintf(stderr, "report: %s was written from results on another %s than reports/validation.json's (%s against %s); "
+                               "write the report with the results here, or keep it with --allow-other-baseline\n",
+                       values_file.c_str(), differs.c_str(), from_results->stamp.baseline.c_str(), paper_stamp.baseline.c_str());
+          return 1;
+        }
+        elsewhere.push_back("the values of `" + values_file + "` (another " + differs + ")");
+      }
+    }
     v["stamp.elsewhere"] = allow_other_baseline ? validation::joined(elsewhere, ", ") : "";
-    validation::add_setup(v, report, have_results && !in.samples.empty());
+    validation::add_setup(v, report, !from_results ? "" : read_back ? "`" + values_file + "`" : "the resolved scenes of the results");
     validation::add_study_settings(v, opt["--stability"]);
-    validation::add_baseline(v, opt["--baseline"], in.rows, in.samples);
     const std::string notes = validation::read_text(fs::path(opt["--templates"]) / "figure_notes.tsv");
     if (notes.empty()) throw std::runtime_error(opt["--templates"] + "/figure_notes.tsv is missing or empty");
-    validation::add_figures(v, report, notes, energy_series);
+    validation::add_figures(v, report, notes);
 
     const std::string tmpl = validation::read_text(fs::path(opt["--templates"]) / "index.md");
     if (tmpl.empty()) throw std::runtime_error(opt["--templates"] + "/index.md is missing or empty");
     std::string text = validation::fill(tmpl, v);
-    if (!opt["--previous"].empty()) text = with_previous_sections(text, tmpl, v, opt["--previous"]);
     // Each section another study made, with its stamp; one from another baseline is refused unless allowed.
     const validation::StampedReport stamped = validation::stamp_sections(text, report, v, paper_stamp, allow_other_baseline);
     if (!stamped.refused.empty()) {

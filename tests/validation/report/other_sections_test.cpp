@@ -120,7 +120,7 @@ TEST_CASE("report stamps: another baseline is refused, then headed ⚠ with --al
                          "baseline `2222222222222222` (spheres not recorded, samples not recorded, 2026-11-26); the paper study's numbers "
                          "were made by engine `0.1.0+aaaa` on baseline `1111111111111111` (8,000 spheres, 5 samples, 2026-11-27)") !=
           std::string::npos);
-  // Still the same section for `report --previous`.
+  // Still the same section by its name.
   REQUIRE(validation::section_name("## Appendix: ⚠ from another baseline: Convergence: error against run time") ==
           "Convergence: error against run time");
   // Another engine (commit) on the same baseline: kept, unmarked, its line naming its engine.

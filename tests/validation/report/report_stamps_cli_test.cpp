@@ -33,8 +33,6 @@ TEST_CASE("report: a section from another baseline refused, then kept under ⚠ 
   const fs::path dir = dem::test::scratch_dir("report_stamps_cli");
   const fs::path out = dir / "reports";
   fs::copy(source + "/reports", out, fs::copy_options::recursive);
-  const std::string previous = (dir / "previous_index.md").string();
-  fs::copy_file(source + "/reports/index.md", previous);
   const nlohmann::ordered_json paper = {{"engine", "0.1.0+aaaa"}, {"baseline", "1111111111111111"}, {"spheres", 8000}, {"samples", 5}, {"date", "2026-11-27"}};
   set_key(out / "validation.json", "stamp", paper);
   set_key(out / "decisions" / "decisions.json", "stamp",
@@ -46,7 +44,7 @@ TEST_CASE("report: a section from another baseline refused, then kept under ⚠ 
       << R"({"engine": "0.1.0+aaaa", "baseline": "2222222222222222", "spheres": 8000, "samples": 1, "date": "2026-11-25"})" << "\n";
   const std::string before = dem::test::read_bytes((out / "index.md").string());
   const std::string report = "cd '" + source + "' && '" + bin + "report' --results '" + (dir / "no_results").string() +
-                             "' --references reference_data/paper.yaml --out '" + out.string() + "' --sample seed1 --previous '" + previous + "'";
+                             "' --references reference_data/paper.yaml --out '" + out.string() + "' --sample seed1";
   const auto refused = dem::test::run_command(report + " 2>&1");
   INFO(refused.out);
   CHECK(refused.exit_code == 1);
@@ -68,10 +66,42 @@ TEST_CASE("report: a section from another baseline refused, then kept under ⚠ 
                                    "`1111111111111111` (1,000 spheres, 3 samples, 2026-11-02).*\n"));
   CHECK_THAT(text, Catch::Contains("\n## Appendix: Liquefaction: cyclic stress ratio against cycles\n\n*Stamp not recorded: made before stamps "
                                    "(its engine and baseline are unknown).*\n"));
-  // Written again from itself (--previous the ⚠ report): the section still found, one stamp line.
-  fs::copy_file(out / "index.md", previous, fs::copy_options::overwrite_existing);
+  // Written again: the same text (the date aside, which is today's both times).
   const auto again = dem::test::run_command(report + " --allow-other-baseline 2>&1");
   INFO(again.out);
   REQUIRE(again.exit_code == 0);
   CHECK(dem::test::read_bytes((out / "index.md").string()) == text);
+}
+
+TEST_CASE("report: values read back from other results than validation.json judged are refused", "[report][stamp][cli]") {
+  const fs::path dir = dem::test::scratch_dir("report_values_cli");
+  const fs::path out = dir / "reports";
+  fs::copy(source + "/reports", out, fs::copy_options::recursive);
+  REQUIRE(fs::exists(out / "study_values.json"));
+  set_key(out / "validation.json", "stamp",
+          {{"engine", "0.1.0+aaaa"}, {"baseline", "1111111111111111"}, {"spheres", 8000}, {"samples", 5}, {"date", "2026-11-27"}});
+  set_key(out / "study_values.json", "stamp",
+          {{"engine", "0.1.0+bbbb"}, {"baseline", "3333333333333333"}, {"spheres", 1000}, {"samples", 3}, {"date", "2026-11-26"}});
+  const std::string before = dem::test::read_bytes((out / "index.md").string());
+  const std::string report = "cd '" + source + "' && '" + bin + "report' --results '" + (dir / "no_results").string() +
+                             "' --references reference_data/paper.yaml --out '" + out.string() + "' --sample seed1";
+  const auto refused = dem::test::run_command(report + " 2>&1");
+  INFO(refused.out);
+  CHECK(refused.exit_code == 1);
+  CHECK_THAT(refused.out, Catch::Contains("study_values.json was written from results on another baseline") &&
+                              Catch::Contains("3333333333333333") && Catch::Contains("1111111111111111"));
+  CHECK(dem::test::read_bytes((out / "index.md").string()) == before);
+  // Kept on purpose: said in the header, with the stamp of the values.
+  set_key(out / "convergence" / "summary.json", "baseline", "1111111111111111");
+  const auto kept = dem::test::run_command(report + " --allow-other-baseline 2>&1");
+  INFO(kept.out);
+  REQUIRE(kept.exit_code == 0);
+  const std::string text = dem::test::read_bytes((out / "index.md").string());
+  CHECK_THAT(text, Catch::Contains("the values of `" + (out / "study_values.json").string() + "` (another baseline)"));
+  CHECK_THAT(text, Catch::Contains("made by engine `0.1.0+bbbb` on baseline `3333333333333333` (1,000 spheres, 3 samples, 2026-11-26)"));
+  // A file that is not of this shape: exit 1, naming it.
+  std::ofstream(out / "study_values.json") << R"({"values": {"a": 1}})" << "\n";
+  const auto bad = dem::test::run_command(report + " 2>&1");
+  CHECK(bad.exit_code == 1);
+  CHECK_THAT(bad.out, Catch::Contains("study_values.json: value \"a\" is not text"));
 }

@@ -1,9 +1,10 @@
 // The report's summary first: on the committed reports/ (the paper study's results are not on this
-// machine), `validate --from-json` then `report --previous` as `make report-sections` does, and the
-// index.md it writes puts the verdicts in its first 40 lines, reads at most 450 lines before its
-// first appendix with no table cell there over 200 characters (the compact verdict table's at
-// most 80), keeps every section of the earlier report, and leaves no placeholder. And the keeping
-// of sections and paragraphs from an earlier report across the move into the appendix.
+// machine), `validate --from-json` then `report` as `make report-sections` does, reading back what
+// the committed report took from the results (study_values.json), and the index.md it writes
+// puts the verdicts in its first 40 lines, reads at most 450 lines before its first appendix with
+// no table cell there over 200 characters (the compact verdict table's at most 80), has every
+// section of the committed report, its text but for the lines that say where it was written
+// from, and leaves no placeholder.
 #include <catch2/catch.hpp>
 
 #include <filesystem>
@@ -46,35 +47,11 @@ std::set<std::string> section_names(const std::string& text) {
 
 }  // namespace
 
-TEST_CASE("report --previous: a section moved into the appendix, and a paragraph, are the previous report's", "[report]") {
-  const std::string marker = validation::inputs_not_here;
-  const std::string fresh = "# Title\nGenerated on 2026-11-27\n\n## Verdicts\nnew table\n\n" +
-                            validation::paragraph_not_here("starting", "Readings used") + "\n\n## Figures\n\n![f](figures/f.png)\n\n" +
-                            validation::paragraph_not_here("after", "![f](figures/f.png)") + "\n\n![g](figures/g.png)\n\n" +
-                            validation::paragraph_not_here("after", "![g](figures/g.png)") + "\n\n## Appendix: What was run\n" + marker +
-                            "\n";
-  const std::string previous = "# Title\nGenerated on 2026-11-20\n\n## Verdicts\nold table\n\nReadings used (first line):\ngrading by count.\n\n"
-                               "## Figures\n\n![f](figures/f.png)\n\nThe note of f,\non two lines.\n\n## What was run\nold runs\n";
-  std::vector<std::string> kept;
-  const std::string out = validation::keep_sections_without_inputs(fresh, previous, kept);
-  // Verdicts and Figures have their inputs: fresh, but for the paragraphs the markers name; g has
-  // no note in the previous report (its marker is dropped); What was run is the previous body under
-  // the fresh heading.
-  CHECK(out == "# Title\nGenerated on 2026-11-27\n\n## Verdicts\nnew table\n\nReadings used (first line):\ngrading by count.\n\n## Figures\n\n"
-               "![f](figures/f.png)\n\nThe note of f,\non two lines.\n\n![g](figures/g.png)\n\n\n\n## Appendix: What was run\nold runs\n");
-  CHECK(kept == std::vector<std::string>{"What was run", "¶ Readings used", "¶ ![f](figures/f.png)"});
-  CHECK(validation::section_name("## Appendix: What was run\n") == "What was run");
-  CHECK(validation::section_name("### A sample in ParaView") == "A sample in ParaView");
-  // The previous report ends with its last section under its old name: not cut short.
-  CHECK_NOTHROW(validation::check_previous_report(previous, "# Title\n\n## Appendix: What was run\nx\n", "--previous 'old.md'"));
-}
-
 TEST_CASE("report: the committed report written again from what is committed, its summary first", "[report][summary]") {
   const fs::path dir = dem::test::scratch_dir("report_summary");
   const fs::path out = dir / "reports";
   fs::copy(source + "/reports", out, fs::copy_options::recursive);
-  const std::string previous = (dir / "previous_index.md").string();
-  fs::copy_file(source + "/reports/index.md", previous);
+  const std::string committed = dem::test::read_bytes(source + "/reports/index.md");
   std::string decisions = " --decisions '" + (out / "decisions" / "decisions.json").string() + "'";
   for (const char* r : {"loose", "medium_dense", "dashpot"})  // the Makefile's READINGS
     if (fs::exists(out / "readings" / r / "decisions.json"))
@@ -85,7 +62,7 @@ TEST_CASE("report: the committed report written again from what is committed, it
   REQUIRE(v.exit_code == 0);
   const auto r = dem::test::run_command("cd '" + source + "' && '" + bin + "report' --results '" + (dir / "no_results").string() +
                                         "' --references reference_data/paper.yaml --out '" + out.string() + "' --sample seed1 --baseline "
-                                        "reports/baselines/orthorhombic_validation.json --previous '" + previous + "' 2>&1");
+                                        "reports/baselines/orthorhombic_validation.json 2>&1");
   INFO(r.out);
   REQUIRE(r.exit_code == 0);
   const std::string text = dem::test::read_bytes((out / "index.md").string());
@@ -130,12 +107,24 @@ TEST_CASE("report: the committed report written again from what is committed, it
   // its rows) and figure-data's record of the settings, values.gp (samples.md: 8000 particles a sample).
   CHECK_THAT(text, Catch::Contains("| samples | 5 per density (loose, medium, dense), seed1–seed5 |"));
   CHECK_THAT(text, Catch::Contains("| spheres per sample | 8,000 |"));
-  // No section of the earlier report lost, none printed twice; no placeholder.
-  const std::set<std::string> before = section_names(dem::test::read_bytes(previous)), now = section_names(text);
+  // Every section of the committed report, none printed twice, and the same text but for the lines
+  // that say where the values came from (the header's, the set-up's source, the scenes' folder);
+  // no placeholder.
+  const std::set<std::string> before = section_names(committed), now = section_names(text);
   for (const std::string& s : before) {
     INFO(s);
     CHECK(now.count(s) == 1);
   }
+  CHECK_THAT(text, Catch::Contains("(its values read back from `" + (out / "study_values.json").string() + "`)"));
+  const auto body = [](const std::string& t) {
+    std::string out;
+    for (const std::string& line : lines_of(t))
+      if (line.rfind("Generated on ", 0) != 0 && line.rfind("Source: ", 0) != 0 && line.rfind("The results were written by", 0) != 0 &&
+          line.rfind("was read back from", 0) != 0 && line.find("every value of the paper judged on every sample (from") == std::string::npos)
+        out += line + "\n";
+    return out;
+  };
+  CHECK(body(text) == body(committed));
   std::size_t size_checks = 0;
   for (const std::string& line : lines) size_checks += line.find("Size check: this study's baseline") != std::string::npos;
   CHECK(size_checks == 1);

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -15,9 +16,12 @@
 #include "study/format.hpp"
 #include "report/report.hpp"
 #include "report/report_values.hpp"
+#include "report/study_values.hpp"
+#include "engine/io/io_test_support.hpp"
 #include "validation/markdown_cells.hpp"
 
 using namespace validation;
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -544,49 +548,36 @@ TEST_CASE("report: its tables read back cell by cell, a '|' in a name kept in it
   }
 }
 
-TEST_CASE("report --previous: a section whose inputs are not here is the previous report's", "[report]") {
-  const std::string marker = validation::inputs_not_here;
-  const std::string fresh = "# Title\nGenerated on 2026-11-26\n\n## A\nnew A\n\n## B\n" + marker + "\nno results\n\n## C\nnew C " + marker + "\n";
-  const std::string previous = "# Title\nGenerated on 2026-11-20\n\n## A\nold A\n\n## B\nold B\n";
-  std::vector<std::string> kept;
-  const std::string out = validation::keep_sections_without_inputs(fresh, previous, kept);
-  // A has its inputs: the fresh one; B has none: the previous one; C has none, but the previous
-  // report has no C: the fresh one (which says so). The header is the fresh one's.
-  CHECK(out == "# Title\nGenerated on 2026-11-26\n\n## A\nnew A\n\n## B\nold B\n## C\nnew C " + marker + "\n");
-  REQUIRE(kept.size() == 1);
-  CHECK(kept[0] == "B");
-  SECTION("a heading must match as a whole line") {
-    std::vector<std::string> none;
-    CHECK(validation::keep_sections_without_inputs("## Bee\n" + marker + "\n", previous, none) == "## Bee\n" + marker + "\n");
-    CHECK(none.empty());
+TEST_CASE("report: the values from the results kept beside the report and read back", "[report]") {
+  const fs::path dir = dem::test::scratch_dir("report_study_values");
+  StudyValues s;
+  s.stamp.engine = "0.1.0+abc";
+  s.stamp.baseline = "1234567890abcdef";
+  s.stamp.spheres = 8000;
+  s.stamp.samples = 5;
+  s.stamp.date = "2026-11-28";
+  s.results = "results/study/paper";
+  s.values = {{"fig02.e0_dense", "0.541"}, {"runs_table", "| a | b |\n|---|---|\n| ε | σ₁ |\n"}, {"empty", ""}};
+  CHECK_FALSE(read_study_values(dir).has_value());  // no file: nothing, not an error
+  write_study_values(dir, s);
+  const auto back = read_study_values(dir);
+  REQUIRE(back.has_value());
+  CHECK(back->values == s.values);
+  CHECK(back->results == s.results);
+  CHECK(back->stamp.engine == s.stamp.engine);
+  CHECK(back->stamp.baseline == s.stamp.baseline);
+  CHECK(back->stamp.spheres == 8000);
+  CHECK(back->stamp.samples == 5);
+  CHECK(back->stamp.date == "2026-11-28");
+  // Not JSON, or not of its shape: an error naming the file.
+  const std::string file = (dir / "study_values.json").string();
+  for (const std::string& bad : {std::string("{\"values\": [1]}"), std::string("[]"), std::string("{\"values\": {\"k\": 2}}"), std::string("not json")}) {
+    dem::test::write_text(file, bad);
+    INFO(bad);
+    CHECK_THROWS_WITH(read_study_values(dir), Catch::Contains(file));
   }
 }
 
-TEST_CASE("report --previous: junk, an HDF5 file and a report cut short are refused, naming the file", "[report]") {
-  const std::string fresh = "# Title\nGenerated on 2026-11-26\n\n## A\nnew A\n\n## Provenance\nnew\n";
-  const std::string what = "--previous 'old.md'";
-  const std::string whole = "# Title\nGenerated on 2026-11-20\n\n## A\nold A\n\n## Provenance\nold\n";
-  CHECK_NOTHROW(validation::check_previous_report(whole, fresh, what));
-  std::ifstream h5(std::string(DEM_SOURCE_DIR) + "/scenes/samples/dense_1k.h5", std::ios::binary);
-  std::string hdf5(4096, '\0');
-  h5.read(hdf5.data(), 4096);  // the HDF5 signature starts with 0x89, no UTF-8 lead byte
-  CHECK_THROWS_WITH(validation::check_previous_report(hdf5, fresh, what),
-                    "--previous 'old.md' is not a report: binary content at byte 0 (an HDF5 or other binary file?); give an earlier "
-                    "reports/index.md");
-  CHECK_THROWS_WITH(validation::check_previous_report("hello\n", fresh, what),
-                    "--previous 'old.md' is not a report of this template: its first line is 'hello', expected '# Title'");
-  CHECK_THROWS_WITH(validation::check_previous_report("# Title\nno date\n", fresh, what),
-                    "--previous 'old.md' is not a report of this template: it has no 'Generated on' line");
-  // Cut in the middle of a line, and cut at a line end before the last section.
-  for (const std::string& cut : {whole.substr(0, whole.size() - 2), whole.substr(0, whole.find("## Provenance"))})
-    CHECK_THROWS_WITH(validation::check_previous_report(cut, fresh, what),
-                      "--previous 'old.md' is cut short: it ends before its last section '## Provenance' (a truncated copy?)");
-}
-
-// No number in the report's text is typed. After taking out what is not a number of the
-// results (keys, code spans, names: §N, Fig. N, Test N, TC1, σ1, ε3), the digits left in the
-// templates are the paper's own captions and definitions, listed here one by one; a number typed
-// into a sentence (a note's "reaches 0.22–0.69 %", a method's "limit 1 %") fails this test.
 TEST_CASE("report: the templates type no number of the results", "[report][template]") {
   const std::vector<std::string> allowed = {
       "axis 1 vertical",           // the render's orientation

@@ -13,6 +13,8 @@
 #include <sstream>
 #include <string>
 
+#include <sys/wait.h>
+
 #include "sections/convergence_budget.hpp"
 #include "study/ensemble.hpp"
 
@@ -147,5 +149,22 @@ TEST_CASE("compare-runs convergence --summary: the section from a summary made b
   const std::string log = read(dir / "log");
   CHECK(log.find("bad.json") != std::string::npos);
   CHECK(log.find("'engine'") != std::string::npos);
+
+  // Without results but with its summary.json: re-drawn from it (the same table), said so, and with
+  // --draw its figure drawn by reports/gnuplot/convergence_error_vs_time.gp; --draw naming no folder: exit 2.
+  fs::rename(dir / "table.md", dir / "table_from_summary.md");
+  const std::string again = bin + " convergence " + (dir / "no_results").string() + " " + dir.string() + " --draw '" + DEM_SOURCE_DIR +
+                            "/reports/gnuplot' > " + (dir / "log").string() + " 2>&1";
+  const int drawn = std::system(again.c_str());
+  INFO(read(dir / "log"));
+  CHECK_THAT(read(dir / "log"), Catch::Contains("no results in " + (dir / "no_results").string() + "; the convergence section re-drawn from"));
+  CHECK(read(dir / "table.md") == read(dir / "table_from_summary.md"));
+  if (std::system("command -v gnuplot > /dev/null 2>&1") == 0) {
+    CHECK(drawn == 0);
+    CHECK(fs::file_size(dir / "error_vs_time.png") > 1000);
+  }
+  const std::string nowhere = bin + " convergence --summary " + (dir / "summary.json").string() + " " + dir.string() + " --draw " +
+                              (dir / "no_such_folder").string() + " > " + (dir / "log").string() + " 2>&1";
+  CHECK(WEXITSTATUS(std::system(nowhere.c_str())) == 2);
   fs::remove_all(dir);
 }

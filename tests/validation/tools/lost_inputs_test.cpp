@@ -57,11 +57,11 @@ TEST_CASE("validation tools: a results folder that is missing or a file exits 2 
     CHECK_THAT(r.out, Contains(c.said == "does not exist" ? nosuch.string() : file.string()));
   }
   CHECK_FALSE(fs::exists(dir / "r1" / "index.md"));  // no report on nothing
-  // --previous keeps the sections of an earlier report: a missing --results is then allowed (the
-  // machine has not run that study), but a file still is not.
-  dem::test::write_text((dir / "previous.md").string(), "# Report\n\nGenerated on 2026-01-01\n");
-  const auto r = tool("report", "--results " + q(file) + " --references '" + refs + "' --out " + q(dir / "r3") + " --previous " +
-                                    q(dir / "previous.md"));
+  // A report's folder that keeps what an earlier report took from the results (study_values.json):
+  // a missing --results is then allowed (the machine has not run that study), but a file still is not.
+  fs::create_directories(dir / "r3");
+  dem::test::write_text((dir / "r3" / "study_values.json").string(), "{\"values\": {}}\n");
+  const auto r = tool("report", "--results " + q(file) + " --references '" + refs + "' --out " + q(dir / "r3"));
   CHECK(r.exit_code == 2);
 }
 
