@@ -148,8 +148,8 @@ std::optional<Outcome> run_calibration(const Calibration& c, const RunOptions& o
     std::vector<double> log_likelihood;
     for (const ParameterSet& s : out.sets) u.push_back(s.u), log_likelihood.push_back(s.log_likelihood);
     out.weights = importance_weights(u, log_likelihood, proposals, drawn);
-    // The posterior: on a response surface fitted to the sets near it (surrogate.hpp), when the
-    // references are curves; else the sets' own weights. The surface's region: the Gaussian this
+    // The posterior: on a response surface fitted to the sets near it (surrogate.hpp), when enough
+    // sets are scored; else the sets' own weights. The surface's region: the Gaussian this
     // iteration drew from (the first: one fitted to the best sets).
     const Proposal region = it > 1 ? proposals.back()
                                    : fit_proposal(u, proposal_weights(u, log_likelihood, proposals, drawn, 2.0 * quadratic_terms(d)), 0);

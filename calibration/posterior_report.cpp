@@ -252,11 +252,15 @@ void write_report(const Outcome& o, const std::map<std::string, double>& truth) 
   md << o.sets.size() << " parameter sets in " << o.iterations.size() << " iterations of " << c.batch << " (" << o.runs
      << " runs, " << validation::significant(o.core_seconds / 60, 3) << " core-min recorded); effective sample size "
      << validation::significant(last.ess, 3) << "; " << (o.converged ? "converged: " : "not converged: ") << o.stop_reason << ".\n\n";
-  if (!o.posterior_from.empty())
-    md << "The posterior is sampled on a response surface (a quadratic in the parameters per curve point) fitted to the "
+  if (!o.posterior_from.empty()) {
+    md << "The posterior is sampled on a response surface (a quadratic in the parameters per curve point and per scalar row) fitted "
+          "to the "
        << o.surface_sets << " sets nearest it, at " << o.posterior_u.size() << " points: the sets' own misfits carry the noise of "
-       << "their samples (their scatter about the surface is " << validation::significant(o.surface_noise, 2)
-       << " times the reference mean's sd, on average), which would let the luckiest set carry the posterior.\n\n";
+       << "their samples";
+    if (o.surface_noise > 0)
+      md << " (their scatter about the surface is " << validation::significant(o.surface_noise, 2) << " times the reference mean's sd, on average)";
+    md << ", which would let the luckiest set carry the posterior.\n\n";
+  }
   std::vector<std::string> head{"parameter", "prior", "posterior mean ± sd", "95 % interval", "prior sd / posterior sd", "identified"};
   if (!truth.empty()) head.insert(head.begin() + 2, "truth");
   validation::MarkdownTable t(head);

@@ -171,6 +171,8 @@ RowMisfit row_misfit(const validation::Row& row, const std::vector<validation::S
       if (!s.measured.value) m.note = s.sample + ": " + s.measured.note;
     return m;
   }
+  // What the response surface fits (surrogate.hpp): the samples' mean value and their sd.
+  m.model = {r.spread.mean}, m.model_sd = {r.spread.sd}, m.samples = r.valued;
   if (row.rule != "interval") {
     m.chi2 = -2 * std::log((r.holds + 0.5) / (r.valued + 1.0));
     return m;

@@ -1,5 +1,7 @@
 #include "surrogate.hpp"
 
+#include "study/ensemble.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -53,12 +55,21 @@ double ResponseSurface::log_likelihood(const References& refs, const Eigen::Vect
       ll += -0.5 * r * r / var - 0.5 * std::log(2 * M_PI * var);
     }
   }
+  for (const RowSurface& row : rows) {
+    const double sd = std::sqrt(row.q.sample_variance + row.q.variance(x)), mean = row.q.value(x);
+    const auto below = [&](double v) {  // P(value < v)
+      if (std::isinf(v)) return v > 0 ? 1.0 : 0.0;
+      if (sd == 0) return mean < v ? 1.0 : 0.0;
+      return 0.5 * std::erfc(-(v - mean) / (sd * std::sqrt(2.0)));
+    };
+    ll += std::log(std::max(below(row.high) - below(row.low), 1e-300));
+  }
   return ll;
 }
 
 std::optional<ResponseSurface> fit_surface(const References& refs, const std::vector<ParameterSet>& sets,
                                            const Proposal& region) {
-  if (refs.curves.empty() || !refs.rows.empty()) return std::nullopt;
+  if (refs.curves.empty() && refs.rows.empty()) return std::nullopt;
   std::vector<const ParameterSet*> scored;
   for (const ParameterSet& s : sets)
     if (s.misfit.valued) scored.push_back(&s);
@@ -104,6 +115,24 @@ std::optional<ResponseSurface> fit_surface(const References& refs, const std::ve
       if (p.sd > 0) ratio += std::sqrt(per_point.back().residual_variance) / (p.sd / std::sqrt(refs.curves[c].specimens)), ++points;
     }
     s.curves.push_back(std::move(per_point));
+  }
+  for (std::size_t r = 0; r < refs.rows.size(); ++r) {
+    const validation::Row& row = refs.rows[r];
+    const std::size_t at = refs.curves.size() + r;  // the row's misfit follows the curves' (score)
+    std::vector<double> y;
+    double variance = 0;
+    for (std::size_t i = 0; i < used; ++i) {
+      const RowMisfit& m = by_distance[i].second->misfit.rows[at];
+      y.push_back(m.model.at(0));
+      variance += m.model_sd.at(0) * m.model_sd.at(0) / static_cast<double>(used);
+    }
+    RowSurface rs;
+    rs.q = fit_quadratic(x, y);
+    rs.q.samples = std::max(1, by_distance[0].second->misfit.rows[at].samples);
+    rs.q.sample_variance = rs.q.samples >= 2 ? variance : std::pow(row.resolution > 0 ? row.resolution : row.tolerance, 2);
+    const validation::Region region_of_row = validation::paper_region(row.check, row.reference, row.tolerance);
+    rs.low = region_of_row.low, rs.high = region_of_row.high;
+    s.rows.push_back(rs);
   }
   s.noise_to_reference = points > 0 ? ratio / points : 0;
   return s;

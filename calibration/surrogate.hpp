@@ -35,28 +35,42 @@ struct Quadratic {
 // Ordinary least squares of y on the features of each row of x; needs more rows than features.
 Quadratic fit_quadratic(const std::vector<Eigen::VectorXd>& features, const std::vector<double>& y);
 
+// A scalar row of a validate reference file on the surface: its samples' mean as a quadratic, and
+// the values that agree with the paper's statement (validation::paper_region: the reading widened by
+// its tolerance, or a half-line for a trend).
+struct RowSurface {
+  Quadratic q;
+  double low = 0, high = 0;
+};
+
 struct ResponseSurface {
   Eigen::VectorXd centre, scale;  // the region: centre and sd of the proposal it was fitted in
   double radius = 3;              // in units of the proposal's Mahalanobis distance
   Eigen::MatrixXd region_inverse; // the proposal's inverse covariance
   std::vector<std::vector<Quadratic>> curves;  // per curve, per point
+  std::vector<RowSurface> rows;                // per scalar row
   int sets = 0;                   // the sets it was fitted to
   double noise_to_reference = 0;  // mean over points of the residual sd over the reference's sd of its mean
 
   Eigen::VectorXd features(const Eigen::VectorXd& u) const;
   bool inside(const Eigen::VectorXd& u) const;
-  // ln p(references | u) on the surface: Gaussian per point, variance tolerance^2 + sd^2 /
+  // ln p(references | u) on the surface. A curve point: Gaussian, variance tolerance^2 + sd^2 /
   // specimens + sample_variance / samples (the model's mean is over a few samples, not the
-  // population) + the surface's prediction variance at u.
+  // population) + the surface's prediction variance at u. A scalar row: the paper's statement is
+  // about its one specimen, so ln P(one sample's value lies in the row's region), that value normal
+  // about the surface's mean with variance sample_variance + the prediction variance; an interval
+  // row and a trend are then read alike.
   double log_likelihood(const References& refs, const Eigen::VectorXd& u) const;
 };
 
 // The number of quadratic features in d dimensions: 1 + d + d (d + 1) / 2.
 int quadratic_terms(int d);
 
-// The surface of every curve point over the sets inside `region` (Mahalanobis distance <= 3 of its
-// Gaussian); when fewer than 2 x the features are inside, the region widens to take the nearest
-// that many. None without curves or with too few scored sets.
+// The surface of every curve point and scalar row over the sets inside `region` (Mahalanobis
+// distance <= 3 of its Gaussian); when fewer than 2 x the features are inside, the region widens to
+// take the nearest that many. A row's sample_variance: the mean over those sets of its samples'
+// variance (2 or more samples a set), else its resolution^2, else its tolerance^2. None without
+// references or with too few scored sets.
 std::optional<ResponseSurface> fit_surface(const References& refs, const std::vector<ParameterSet>& sets,
                                            const Proposal& region);
 

@@ -72,3 +72,54 @@ TEST_CASE("the posterior on a surface is the analytic one", "[calibration]") {
   sets.resize(5);
   CHECK_FALSE(calibration::fit_surface(refs, sets, region));
 }
+
+TEST_CASE("a scalar row on the surface: the probability that one sample lies in the paper's region", "[calibration]") {
+  // One parameter; a row whose samples' mean is 2 u exactly, with a samples' sd of 0.05 (3 samples
+  // a set), read by the paper as 0.8 within 0.1 (region [0.7, 0.9]). The likelihood at u is
+  // P(0.7 < X < 0.9), X ~ N(2u, 0.05^2) (the surface is exact: no prediction variance), whose
+  // posterior under a uniform prior is symmetric about u = 0.4, with variance, computed here by
+  // quadrature of the same density: the posterior sd within 10 % and the mean within 0.005.
+  calibration::References refs;
+  validation::Row row;
+  row.name = "value";
+  row.check = "within", row.reference = 0.8, row.tolerance = 0.1, row.resolution = 0.001;
+  refs.rows = {row};
+  std::vector<calibration::ParameterSet> sets;
+  for (int i = 0; i < 21; ++i) {
+    calibration::ParameterSet s;
+    s.u = Eigen::VectorXd::Constant(1, 0.2 + 0.02 * i);
+    calibration::RowMisfit m{"value", 0, 1, "", true, {2 * s.u(0)}, {0.05}, 3};
+    s.misfit.rows = {m};
+    sets.push_back(s);
+  }
+  calibration::Proposal region;
+  region.mean = Eigen::VectorXd::Constant(1, 0.4);
+  region.covariance = Eigen::MatrixXd::Constant(1, 1, 0.01);
+  const auto surface = calibration::fit_surface(refs, sets, region);
+  REQUIRE(surface);
+  REQUIRE(surface->rows.size() == 1);
+  CHECK(surface->rows[0].q.sample_variance == Approx(0.0025));
+  CHECK(surface->rows[0].low == Approx(0.7));
+  CHECK(surface->rows[0].high == Approx(0.9));
+  // The likelihood at u = 0.4 (X centred in the region): ln(Phi(2) - Phi(-2)).
+  CHECK(surface->log_likelihood(refs, Eigen::VectorXd::Constant(1, 0.4)) == Approx(std::log(std::erf(2 / std::sqrt(2.0)))).epsilon(1e-6));
+  // The posterior's moments by quadrature over the surface's region (0.1 to 0.7).
+  const auto density = [](double u) {
+    const auto phi = [](double z) { return 0.5 * std::erfc(-z / std::sqrt(2.0)); };
+    return phi((0.9 - 2 * u) / 0.05) - phi((0.7 - 2 * u) / 0.05);
+  };
+  double z = 0, m1 = 0, m2 = 0;
+  for (int i = 0; i <= 60000; ++i) {
+    const double u = 0.1 + 0.6 * i / 60000.0, p = density(u);
+    z += p, m1 += p * u, m2 += p * u * u;
+  }
+  const double mean = m1 / z, sd = std::sqrt(m2 / z - mean * mean);
+  std::vector<Eigen::VectorXd> u;
+  std::vector<double> w;
+  calibration::sample_surface(*surface, refs, 4000, u, w);
+  const calibration::Parameter p{"x", {"x"}, "test", calibration::Parameter::Prior::Uniform, 0, 1, {}};
+  const auto m = calibration::marginal(p, 0, u, w);
+  CHECK(mean == Approx(0.4).margin(1e-6));
+  CHECK(m.mean == Approx(mean).margin(0.005));
+  CHECK(m.sd == Approx(sd).epsilon(0.1));
+}
