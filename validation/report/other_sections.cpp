@@ -38,15 +38,14 @@ bool is_stamp_line(const std::string& line) {
   return line.rfind("*Made by engine ", 0) == 0 || line.rfind("*Stamp not recorded", 0) == 0 || line.rfind("*⚠ Made by engine ", 0) == 0;
 }
 
-// A stamp as the first words of a sentence: "Made by engine ..." or "Stamp not recorded: ...".
-std::string sentence(const Stamp& s) {
+}  // namespace
+
+std::string stamp_sentence(const Stamp& s) {
   std::string text = stamp_text(s);
   if (!s.recorded()) return "Stamp " + text;
   text[0] = 'M';
   return text;
 }
-
-}  // namespace
 
 Stamp read_section_stamp(const fs::path& report, const OtherStudySection& section) {
   return stamp_in(report / section.stamp_file, section.stamp_key);
@@ -96,7 +95,7 @@ StampedReport stamp_sections(const std::string& text, const fs::path& report, co
     const std::string own = section.own_scene.empty() || !stamp.recorded()
                                 ? ""
                                 : " Its baseline is its own scene's (`" + section.own_scene + "`), not the paper study's, by design.";
-    std::string line = "*" + sentence(stamp) + "." + own + "*";
+    std::string line = "*" + stamp_sentence(stamp) + "." + own + "*";
     std::string new_heading = heading;
     if (!differs.empty()) {
       const std::string both = "this section's " + stamp.baseline + " / " + stamp.engine + ", the paper study's " + paper.baseline + " / " +
@@ -109,7 +108,7 @@ StampedReport stamp_sections(const std::string& text, const fs::path& report, co
       const char* mark = other_baseline_mark;
       const std::string name = section.heading.rfind("Appendix: ", 0) == 0 ? section.heading.substr(10) : section.heading;
       new_heading = std::string("## ") + (name == section.heading ? "" : "Appendix: ") + mark + name;
-      line = "*⚠ " + sentence(stamp) + "; the paper study's numbers were " + stamp_text(paper) + " (kept by `report --allow-other-baseline`)." +
+      line = "*⚠ " + stamp_sentence(stamp) + "; the paper study's numbers were " + stamp_text(paper) + " (kept by `report --allow-other-baseline`)." +
              own + "*";
       out.other.push_back(section.heading);
     }

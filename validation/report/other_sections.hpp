@@ -35,6 +35,8 @@ Stamp read_paper_stamp(const std::filesystem::path& report);
 // "made by engine `E` on baseline `B` (8,000 spheres, 5 samples, 2026-11-27)"; a stamp with nothing
 // recorded: "not recorded: made before stamps (its engine and baseline are unknown)".
 std::string stamp_text(const Stamp& s);
+// The same as the first words of a sentence: "Made by engine ..." or "Stamp not recorded: ...".
+std::string stamp_sentence(const Stamp& s);
 
 // What differs between a section's stamp and the paper study's: "baseline" or "" (the same, or one
 // of the two not recorded: nothing to compare; not compared unless `baselines`, i.e. not for a study

@@ -15,6 +15,7 @@
 
 #include "io/hdf5.hpp"
 #include "judge/decisions_file.hpp"
+#include "report/other_sections.hpp"
 #include "sections/variants.hpp"
 #include "source_hash.hpp"
 #include "study/format.hpp"
@@ -128,6 +129,7 @@ std::string readings_text(const fs::path& report, const std::vector<Row>& paper)
   std::string readings, check_heading, check_intro;
   std::vector<std::string> check_header;
   std::vector<std::pair<std::string, std::vector<std::string>>> check_rows;  // a table line, its studies
+  const Stamp paper_stamp = read_paper_stamp(report);
   for (const std::string& name : names) {
     const std::string size = recorded_size(report / "readings" / name / "decisions.json", paper);
     // A study named by its densities (readings_medium_dense) is "of the medium and dense
@@ -144,7 +146,13 @@ std::string readings_text(const fs::path& report, const std::vector<Row>& paper)
       if (it == check_rows.end()) check_rows.push_back({line, {name}});
       else it->second.push_back(name);
     }
-    readings += "### " + title + " (" + (size.empty() ? "size not recorded" : size) + ")\n\n" +
+    // Its stamp, as a section's (other_sections.hpp); one from another baseline than the paper
+    // study's is marked, since the readings are measured against the paper study's samples.
+    const Stamp stamp = read_section_stamp(report, {"", "", "readings/" + name + "/decisions.json", "stamp", ""});
+    const std::string differs = stamp_difference(stamp, paper_stamp);
+    std::string line = stamp_sentence(stamp);
+    if (!differs.empty()) line = "⚠ " + line + "; another " + differs + " than the paper study's (" + stamp_text(paper_stamp) + ")";
+    readings += "### " + title + " (" + (size.empty() ? "size not recorded" : size) + ")\n\n*" + line + ".*\n\n" +
                 std::regex_replace(table, std::regex("(^|\n)### "), "$1#### ") + "\n";
   }
   if (check_rows.empty() || check_header.size() < 2) return readings;

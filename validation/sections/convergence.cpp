@@ -71,6 +71,9 @@ std::string signed_percent(const Estimate& e, double scale) {
   const char* f = std::abs(v) < 0.1 && (!std::isfinite(h) || h < 0.1) ? "%+.3f" : "%+.2f";
   std::snprintf(buf, sizeof buf, f, v);
   std::string s = buf;
+  // A value that rounds to zero has no sign to show: a rounding error of either sign gave "-0.000"
+  // from the results and "+0.000" from their summary for the same error.
+  if (s.find_first_not_of("+-0.") == std::string::npos) s[0] = '+';
   if (std::isfinite(h)) {
     std::snprintf(buf, sizeof buf, std::abs(h) < 0.1 ? " ± %.3f" : " ± %.2f", h);
     s += buf;

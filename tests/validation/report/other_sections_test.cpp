@@ -12,6 +12,7 @@
 #include "engine/io/io_test_support.hpp"
 #include "report/other_sections.hpp"
 #include "report/report.hpp"
+#include "report/report_values.hpp"
 
 namespace fs = std::filesystem;
 using validation::Stamp;
@@ -137,4 +138,27 @@ TEST_CASE("report stamps: a listed heading missing from the report is an error n
   const std::string stability = "\n## Appendix: Stability\n";
   text.replace(text.find(stability), stability.size(), "\n## Appendix: Stable\n");
   REQUIRE_THROWS_WITH(validation::stamp_sections(text, dir, all_run(), paper, false), Catch::Contains("## Appendix: Stability"));
+}
+
+TEST_CASE("report: each reading's table says its stamp, marked when on another baseline", "[report][stamp]") {
+  const fs::path dir = dem::test::scratch_dir("readings_stamps");
+  write_json(dir / "validation.json", {{"stamp", validation::stamp_json({"0.1.0+aaaa", "1111111111111111", 8000, 5, "2026-11-28"})}});
+  for (const char* r : {"loose", "dashpot"}) {
+    fs::create_directories(dir / "readings" / r);
+    std::ofstream(dir / "readings" / r / "table.md") << "| row | shift |\n|---|---|\n| a | +1 |\n";
+  }
+  // Only a stamp in decisions.json (not a whole decisions file: its size is then not recorded).
+  write_json(dir / "readings" / "loose" / "decisions.json",
+             {{"stamp", validation::stamp_json({"0.1.0+aaaa", "1111111111111111", 8000, 3, "2026-11-28"})}});
+  write_json(dir / "readings" / "dashpot" / "decisions.json",
+             {{"stamp", validation::stamp_json({"0.1.0+bbbb", "2222222222222222", 8000, 3, "2026-11-20"})}});
+  validation::Values v;
+  validation::add_tables(v, dir, {}, "");
+  const std::string& text = v.at("file.readings");
+  INFO(text);
+  CHECK_THAT(text, Catch::Contains("### Readings of the loose sample (size not recorded)\n\n*Made by engine `0.1.0+aaaa` on baseline "
+                                   "`1111111111111111` (8,000 spheres, 3 samples, 2026-11-28).*\n"));
+  CHECK_THAT(text, Catch::Contains("### Readings: dashpot (size not recorded)\n\n*⚠ Made by engine `0.1.0+bbbb` on baseline "
+                                   "`2222222222222222` (8,000 spheres, 3 samples, 2026-11-20); another baseline than the paper study's "
+                                   "(made by engine `0.1.0+aaaa` on baseline `1111111111111111` (8,000 spheres, 5 samples, 2026-11-28)).*\n"));
 }
