@@ -23,6 +23,15 @@ Manifest read_manifest(const std::string& dir) {
   return m;
 }
 
+bool any_outcome(const Manifest& manifest, const std::string& dir) {
+  std::error_code ec;
+  for (const ManifestLine& l : manifest.lines) {
+    const std::string result = validation::result_under(dir, l);
+    if (validation::is_complete(result) || std::filesystem::exists(result + ".outcome", ec)) return true;
+  }
+  return false;
+}
+
 double wall_time(const std::string& result) {
   try {
     dem::h5::Handle f = dem::h5::open_file_read(result);

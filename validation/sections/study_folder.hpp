@@ -27,6 +27,11 @@ struct Manifest {
 // Throws std::runtime_error naming the file if there is none or a line has fewer than 8 fields.
 Manifest read_manifest(const std::string& dir);
 
+// Whether any run of the manifest has an outcome: a complete result, or the pipeline's record of
+// a run that stopped. A manifest with none is a study planned (`pipeline --plan` writes runs.tsv)
+// or started but with nothing finished: no section is drawn from it.
+bool any_outcome(const Manifest& manifest, const std::string& dir);
+
 // The run time recorded in a complete result (0 if there is none).
 double wall_time(const std::string& result);
 

@@ -25,6 +25,7 @@
 #include <CLI/CLI.hpp>
 
 #include "sections/draw.hpp"
+#include "study/settings.hpp"
 #include "sections/modes.hpp"
 #include "study/stamp.hpp"
 #include "io/failure.hpp"
@@ -209,9 +210,19 @@ int tool_main(int argc, char** argv) {
       return drawn(compare_runs::convergence_from_summary(convergence_summary, convergence_f.results, reference, validation_json),
                    convergence_f.results);
     }
-    if (*liquefaction)
+    // A study with nothing finished (planned, or started) draws no section: its committed tables stay.
+    const auto nothing_finished = [](const std::string& dir) {
+      std::fprintf(stderr, "compare-runs: no finished run in %s (its runs.tsv lists runs, none has a result or a recorded stop: "
+                           "a study planned or still running); nothing written\n", dir.c_str());
+      return 1;
+    };
+    if (*liquefaction) {
+      bool any = false;
+      for (const std::string& dir : liquefaction_folders) any = any || compare_runs::any_outcome(compare_runs::read_manifest(dir), dir);
+      if (!any) return nothing_finished(validation::joined(liquefaction_folders, ", "));
       return drawn(stamped(compare_runs::liquefaction(liquefaction_out, liquefaction_folders), liquefaction_out, liquefaction_folders),
                    liquefaction_out);
+    }
     if (*decisions && !from_json.empty())
       return drawn(compare_runs::decisions_from_json(from_json, decisions_f.results, references), decisions_f.results);
     const Folders& f = *convergence ? convergence_f : *stability ? stability_f : *decisions ? decisions_f : critical_f;
@@ -222,18 +233,21 @@ int tool_main(int argc, char** argv) {
       std::fprintf(stderr, "error: %s\n", e.what());
       return 2;
     }
+    if (!compare_runs::any_outcome(manifest, f.results)) return nothing_finished(f.results);
     std::filesystem::create_directories(f.out);
     if (*convergence) return drawn(compare_runs::convergence(manifest, f.results, f.out, reference, threads_per_run, validation_json), f.out);
     if (*stability) return stamped(compare_runs::stability(manifest, f.results, f.out, report_only), f.out, {f.results});
     if (*decisions) return drawn(compare_runs::decisions(manifest, f.results, f.out, references, baseline, ensemble, baseline_results), f.out);
     if (*critical) {
       for (const std::string& dir : {critical_ensemble, critical_rates})
-        if (!dir.empty()) try {
-            compare_runs::read_manifest(dir);
+        if (!dir.empty()) {
+          try {
+            if (!compare_runs::any_outcome(compare_runs::read_manifest(dir), dir)) return nothing_finished(dir);
           } catch (const std::exception& e) {
             std::fprintf(stderr, "error: %s\n", e.what());
             return 2;
           }
+        }
       return drawn(stamped(compare_runs::critical_state(manifest, f.results, f.out, critical_ensemble, critical_rates, critical_references),
                            f.out, {f.results, critical_ensemble, critical_rates}),
                    f.out);

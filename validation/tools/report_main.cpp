@@ -112,6 +112,9 @@ int tool_main(int argc, char** argv) {
     if (fresh) {
       from_results = validation::StudyValues{validation::stamp_of_results(results), validation::shown_path(results),
                                              validation::values_from_results(in, results, opt["--baseline"], densities)};
+      // The stability study's settings, which its section quotes, kept with them when its results are here.
+      if (!opt["--stability"].empty() && fs::exists(fs::path(opt["--stability"]) / "runs.tsv", ec))
+        validation::add_study_settings(from_results->values, opt["--stability"]);
       validation::write_study_values(report, *from_results);
     } else {
       from_results = validation::read_study_values(report);
@@ -154,7 +157,9 @@ int tool_main(int argc, char** argv) {
     }
     v["stamp.elsewhere"] = allow_other_baseline ? validation::joined(elsewhere, ", ") : "";
     validation::add_setup(v, report, !from_results ? "" : read_back ? "`" + values_file + "`" : "the resolved scenes of the results");
-    validation::add_study_settings(v, opt["--stability"]);
+    // The stability study's settings: from its results, else as the values file kept them.
+    if (!v.count("have_stability") || (!opt["--stability"].empty() && fs::exists(fs::path(opt["--stability"]) / "runs.tsv", ec)))
+      validation::add_study_settings(v, opt["--stability"]);
     const std::string notes = validation::read_text(fs::path(opt["--templates"]) / "figure_notes.tsv");
     if (notes.empty()) throw std::runtime_error(opt["--templates"] + "/figure_notes.tsv is missing or empty");
     validation::add_figures(v, report, notes);

@@ -35,6 +35,7 @@ TEST_CASE("report: a section from another baseline refused, then kept under ⚠ 
   fs::copy(source + "/reports", out, fs::copy_options::recursive);
   const nlohmann::ordered_json paper = {{"engine", "0.1.0+aaaa"}, {"baseline", "1111111111111111"}, {"spheres", 8000}, {"samples", 5}, {"date", "2026-11-27"}};
   set_key(out / "validation.json", "stamp", paper);
+  set_key(out / "study_values.json", "stamp", paper);  // the values from the same results
   set_key(out / "decisions" / "decisions.json", "stamp",
           {{"engine", "0.1.0+aaaa"}, {"baseline", "1111111111111111"}, {"spheres", 1000}, {"samples", 3}, {"date", "2026-11-02"}});
   // The committed convergence summary has its own (real) baseline: put it on the paper's here, so

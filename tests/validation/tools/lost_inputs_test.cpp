@@ -79,6 +79,32 @@ TEST_CASE("validation tools: a results folder without a single result exits 1", 
   CHECK_FALSE(fs::exists(dir / "f" / "values.gp"));  // no data files holding only headers
 }
 
+TEST_CASE("compare-runs: a study planned but not run draws no section and leaves the committed one", "[tools][lost]") {
+  // A runs.tsv as `pipeline --plan` writes it (runs listed, none run): every mode exits 1 naming the
+  // folder, and the section's folder keeps the table that was there.
+  const fs::path dir = dem::test::scratch_dir("lost_inputs_planned");
+  const fs::path results = dir / "results", out = dir / "section";
+  fs::create_directories(results);
+  fs::create_directories(out);
+  dem::test::write_text((results / "runs.tsv").string(),
+                        "# variant\tdensity\ttest\trun\tresult\tstarts_from\tmay_fail\tsettings\tseed\n"
+                        "baseline\tdense\t-\tseed1/baseline_dense_prepare\t" + (results / "seed1" / "baseline_dense_prepare.h5").string() +
+                        "\t-\t0\tas written\t1\n"
+                        "baseline\tdense\tcompression_mu0\tseed1/dense_compression_mu0\t" + (results / "seed1" / "dense_compression_mu0.h5").string() +
+                        "\tseed1/baseline_dense_prepare\t0\tas written\t1\n");
+  dem::test::write_text((out / "table.md").string(), "the committed table\n");
+  for (const std::string& mode : {"decisions", "critical-state", "stability", "convergence"}) {
+    const auto r = tool("compare-runs", mode + " " + q(results) + " " + q(out));
+    INFO(mode << ":\n" << r.out);
+    CHECK(r.exit_code == 1);
+    CHECK_THAT(r.out, Contains("no finished run in " + results.string()));
+  }
+  const auto l = tool("compare-runs", "liquefaction " + q(out) + " " + q(results));
+  INFO(l.out);
+  CHECK(l.exit_code == 1);
+  CHECK(dem::test::read_bytes((out / "table.md").string()) == "the committed table\n");
+}
+
 TEST_CASE("validation tools: a result file that is there but truncated is named and fails the tool", "[tools][lost]") {
   // A sample of one complete preparation (dense) and a loose one cut to 4 KiB (its HDF5 superblock
   // and little else): the loose density must not vanish in silence.
