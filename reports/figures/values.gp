@@ -37,6 +37,7 @@ lattice_side_mm = 100
 particles = 8000
 target_pressure_kPa = 100
 sample_side_mm = 75
+fig00_samples_rows = 15
 has_loose_test1 = 1
 fig09_scale_loose_test1 = 100
 fig09_cycle5_loose_test1 = 5
