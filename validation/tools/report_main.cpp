@@ -108,13 +108,13 @@ int tool_main(int argc, char** argv) {
     in.sample = opt["--sample"];
     // The values the results give: computed and kept beside the report, or read back from there.
     const bool fresh = have_results && !in.samples.empty();
+    const bool stability_here = !opt["--stability"].empty() && fs::exists(fs::path(opt["--stability"]) / "runs.tsv", ec);
     std::optional<validation::StudyValues> from_results;
     if (fresh) {
       from_results = validation::StudyValues{validation::stamp_of_results(results), validation::shown_path(results),
                                              validation::values_from_results(in, results, opt["--baseline"], densities)};
       // The stability study's settings, which its section quotes, kept with them when its results are here.
-      if (!opt["--stability"].empty() && fs::exists(fs::path(opt["--stability"]) / "runs.tsv", ec))
-        validation::add_study_settings(from_results->values, opt["--stability"]);
+      if (stability_here) validation::add_study_settings(from_results->values, opt["--stability"]);
       validation::write_study_values(report, *from_results);
     } else {
       from_results = validation::read_study_values(report);
@@ -157,9 +157,9 @@ int tool_main(int argc, char** argv) {
     }
     v["stamp.elsewhere"] = allow_other_baseline ? validation::joined(elsewhere, ", ") : "";
     validation::add_setup(v, report, !from_results ? "" : read_back ? "`" + values_file + "`" : "the resolved scenes of the results");
-    // The stability study's settings: from its results, else as the values file kept them.
-    if (!v.count("have_stability") || (!opt["--stability"].empty() && fs::exists(fs::path(opt["--stability"]) / "runs.tsv", ec)))
-      validation::add_study_settings(v, opt["--stability"]);
+    // The stability study's settings: read once from its results (above, with fresh values), else as
+    // the values file kept them, else none.
+    if ((stability_here && !fresh) || !v.count("have_stability")) validation::add_study_settings(v, stability_here ? opt["--stability"] : "");
     const std::string notes = validation::read_text(fs::path(opt["--templates"]) / "figure_notes.tsv");
     if (notes.empty()) throw std::runtime_error(opt["--templates"] + "/figure_notes.tsv is missing or empty");
     validation::add_figures(v, report, notes);
