@@ -37,11 +37,121 @@ struct Folders {
   std::string results, out;
 };
 
+// Every option of every mode, parsed into one place.
+struct Options {
+  Folders convergence, stability, decisions, critical;
+  std::string reference = "reference", baseline = "baseline", references = "reference_data/paper.yaml";
+  std::string ensemble, baseline_results, from_json;                    // decisions
+  std::string convergence_summary, validation_json;                     // convergence
+  int threads_per_run = 1;
+  bool report_only = false;                                             // stability
+  std::string critical_ensemble, critical_rates, critical_references;  // critical-state
+  std::string liquefaction_out;
+  std::vector<std::string> liquefaction_folders;
+  std::string draw_dir;  // every mode
+};
+
+// The sub-commands, to ask which one was given.
+struct Modes {
+  CLI::App *convergence, *stability, *decisions, *critical, *liquefaction;
+};
+
 CLI::App* study_mode(CLI::App& app, const std::string& name, const std::string& what, Folders& f) {
   CLI::App* cmd = app.add_subcommand(name, what);
   cmd->add_option("RESULTS_DIR", f.results, "the study's results folder (its runs.tsv, written by build/bin/pipeline)")->required();
   cmd->add_option("OUT_DIR", f.out, "where the tables and the figures' data go (made if missing)")->required();
   return cmd;
+}
+
+// Not study_mode(): with --summary the one folder given is OUT_DIR (checked after parsing).
+CLI::App* convergence_mode(CLI::App& app, Options& o) {
+  CLI::App* cmd = app.add_subcommand(
+      "convergence", "the error budget of the reference's settings in time step, rate and size, every setting's error against the "
+                     "converged values with its cost: summary.json (from results), table.md, errors.dat, front.dat");
+  cmd->add_option("RESULTS_DIR", o.convergence.results,
+                  "the study's results folder (its runs.tsv, written by build/bin/pipeline); left out with --summary");
+  cmd->add_option("OUT_DIR", o.convergence.out, "where the tables and the figure's data go (made if missing)");
+  cmd->add_option("--reference", o.reference, "the variant at the paper's settings")->capture_default_str();
+  cmd->add_option("--threads", o.threads_per_run, "threads each run used (core-seconds = wall time x threads)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1024));
+  cmd->add_option("--validation", o.validation_json, "the paper study's validation.json: each inconsistent row's miss against the budget")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--summary", o.convergence_summary,
+                  "re-draw the section from this summary.json (written beside table.md from the results), without the results "
+                  "(compare-runs convergence --summary FILE OUT_DIR)")
+      ->check(CLI::ExistingFile);
+  return cmd;
+}
+
+// Not study_mode(): with --from-json the one folder given is OUT_DIR (checked after parsing).
+CLI::App* decisions_mode(CLI::App& app, Options& o) {
+  CLI::App* cmd = app.add_subcommand("decisions",
+                                     "every validation row on every reading's ensemble against the baseline's: table.md, decisions.json, "
+                                     "tornado_<group>.dat, tornado_values.gp");
+  cmd->add_option("RESULTS_DIR", o.decisions.results,
+                  "the study's results folder (its runs.tsv, written by build/bin/pipeline); left out with --from-json");
+  cmd->add_option("OUT_DIR", o.decisions.out, "where the tables and the figures' data go (made if missing)");
+  CLI::Option* reference = cmd->add_option("--reference", o.baseline, "the baseline reading")->capture_default_str();
+  cmd->add_option("--references", o.references, "the validation rows (the paper's values)")->capture_default_str();
+  CLI::Option* ensemble =
+      cmd->add_option("--ensemble", o.ensemble, "the paper study's results: verdicts and causes are judged on its full-size ensemble");
+  CLI::Option* baseline_results =
+      cmd->add_option("--baseline-results", o.baseline_results,
+                      "for a study of readings only (no baseline of its own): the study whose samples of the same seeds are the "
+                      "baseline (e.g. results/study/paper)");
+  cmd->add_option("--from-json", o.from_json,
+                  "re-draw table.md, tornado_<group>.dat and tornado_values.gp from this decisions.json alone, without the study's "
+                  "results (compare-runs decisions --from-json FILE OUT_DIR): shifts restated against the rows' resolutions")
+      ->check(CLI::ExistingFile)
+      ->excludes(reference)
+      ->excludes(ensemble)
+      ->excludes(baseline_results);
+  return cmd;
+}
+
+CLI::App* critical_mode(CLI::App& app, Options& o) {
+  CLI::App* cmd = study_mode(app, "critical-state",
+                             "peak and critical state of each constant-p shear, the peaks in the pi-plane: table.md, "
+                             "critical_state.dat, pi_plane.dat, values.gp",
+                             o.critical);
+  cmd->add_option("--ensemble", o.critical_ensemble,
+                  "an ensemble study's results (pipeline/studies/critical_state_ensemble.yaml): mean ± sd over its samples "
+                  "of each loading and μ (ensemble.dat)");
+  cmd->add_option("--rates", o.critical_rates,
+                  "a rates study's results (pipeline/studies/critical_state_rates.yaml): critical q/p against sqrt(I) with "
+                  "this study's runs of the same μ, taken to I -> 0 (rates.dat, rates_qs.dat)");
+  cmd->add_option("--references", o.critical_references,
+                  "validation rows (e.g. reference_data/literature.yaml): a critical_state_friction_angle row that reads a rate "
+                  "series' run is compared with the series' quasi-static φ (with --rates)")
+      ->check(CLI::ExistingFile);
+  return cmd;
+}
+
+Modes declare_modes(CLI::App& app, Options& o) {
+  Modes m{};
+  m.convergence = convergence_mode(app, o);
+  m.stability = study_mode(app, "stability", "what became of each case: table.md (exit 1 if a case is not acceptable)", o.stability);
+  m.stability->add_flag("--report-only", o.report_only, "mark a case that is not acceptable in the table, and exit 0");
+  m.decisions = decisions_mode(app, o);
+  m.critical = critical_mode(app, o);
+  m.liquefaction = app.add_subcommand("liquefaction",
+                                      "CSR against N_L and r_u against cycles of the undrained cyclic tests of every folder: "
+                                      "table.md, csr_nl.dat, ru.dat, values.gp");
+  m.liquefaction->add_option("OUT_DIR", o.liquefaction_out, "where the tables and the figures' data go (made if missing)")->required();
+  m.liquefaction->add_option("RESULTS_DIR", o.liquefaction_folders, "the studies' results folders")->required();
+  for (CLI::App* mode : {m.convergence, m.stability, m.decisions, m.critical, m.liquefaction})
+    mode->add_option("--draw", o.draw_dir, "draw the section's figures in OUT_DIR with the gnuplot scripts of this folder (reports/gnuplot)")
+        ->check(CLI::ExistingDirectory);
+  return m;
+}
+
+// decisions and convergence take RESULTS_DIR and OUT_DIR, or OUT_DIR alone (parsed into
+// f.results) with a file to re-draw from (`alone`, given as `flag`); the error, or "".
+std::string folders_error(const Folders& f, const std::string& alone, const std::string& flag, const std::string& mode) {
+  const bool both = !f.out.empty(), none = f.results.empty();
+  if (!alone.empty()) return both ? flag + " takes OUT_DIR alone (no RESULTS_DIR)" : none ? flag + " needs OUT_DIR" : "";
+  return both ? "" : mode + " needs RESULTS_DIR and OUT_DIR (or " + flag + " FILE OUT_DIR)";
 }
 
 // OUT/stamp.json from the studies a section was made from (their engine, baseline, size, date:
@@ -62,6 +172,64 @@ int stamped(int status, const std::string& out, const std::vector<std::string>& 
   return status;
 }
 
+// A study with nothing finished (planned, or started) draws no section: its committed tables stay.
+int nothing_finished(const std::string& dir) {
+  std::fprintf(stderr, "compare-runs: no finished run in %s (its runs.tsv lists runs, none has a result or a recorded stop: "
+                       "a study planned or still running); nothing written\n", dir.c_str());
+  return 1;
+}
+
+// 0 when the study in `dir` has a finished run; else the exit status: 1 (nothing finished), 2 (no
+// manifest). `manifest` receives it.
+int finished(const std::string& dir, compare_runs::Manifest& manifest) {
+  try {
+    manifest = compare_runs::read_manifest(dir);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 2;
+  }
+  return compare_runs::any_outcome(manifest, dir) ? 0 : nothing_finished(dir);
+}
+
+// The mode given, run; a mode's status with its figures drawn when its data are written (0, or 1: a
+// stability case not acceptable); a figure that cannot be drawn makes a 0 a 1.
+int run_mode(const std::string& mode, const Modes& m, const Options& o) {
+  const auto drawn = [&](int status, const std::string& out) {
+    if (o.draw_dir.empty() || (status != 0 && status != 1)) return status;
+    const int d = compare_runs::draw_section(mode, out, o.draw_dir);
+    return status == 0 ? d : status;
+  };
+  if (*m.convergence && !o.convergence_summary.empty()) {
+    std::filesystem::create_directories(o.convergence.results);
+    return drawn(compare_runs::convergence_from_summary(o.convergence_summary, o.convergence.results, o.reference, o.validation_json),
+                 o.convergence.results);
+  }
+  if (*m.liquefaction) {
+    bool any = false;
+    for (const std::string& dir : o.liquefaction_folders) any = any || compare_runs::any_outcome(compare_runs::read_manifest(dir), dir);
+    if (!any) return nothing_finished(validation::joined(o.liquefaction_folders, ", "));
+    return drawn(stamped(compare_runs::liquefaction(o.liquefaction_out, o.liquefaction_folders), o.liquefaction_out, o.liquefaction_folders),
+                 o.liquefaction_out);
+  }
+  if (*m.decisions && !o.from_json.empty())
+    return drawn(compare_runs::decisions_from_json(o.from_json, o.decisions.results, o.references), o.decisions.results);
+  const Folders& f = *m.convergence ? o.convergence : *m.stability ? o.stability : *m.decisions ? o.decisions : o.critical;
+  compare_runs::Manifest manifest;
+  if (const int rc = finished(f.results, manifest)) return rc;
+  std::filesystem::create_directories(f.out);
+  if (*m.convergence) return drawn(compare_runs::convergence(manifest, f.results, f.out, o.reference, o.threads_per_run, o.validation_json), f.out);
+  if (*m.stability) return stamped(compare_runs::stability(manifest, f.results, f.out, o.report_only), f.out, {f.results});
+  if (*m.decisions) return drawn(compare_runs::decisions(manifest, f.results, f.out, o.references, o.baseline, o.ensemble, o.baseline_results), f.out);
+  for (const std::string& dir : {o.critical_ensemble, o.critical_rates}) {
+    compare_runs::Manifest other;
+    if (!dir.empty())
+      if (const int rc = finished(dir, other)) return rc;
+  }
+  return drawn(stamped(compare_runs::critical_state(manifest, f.results, f.out, o.critical_ensemble, o.critical_rates, o.critical_references),
+                       f.out, {f.results, o.critical_ensemble, o.critical_rates}),
+               f.out);
+}
+
 }  // namespace
 
 // The tool; main runs it under guarded_main (a file system error names its path, exit 1).
@@ -70,89 +238,8 @@ int tool_main(int argc, char** argv) {
                "from the pipeline's manifest RESULTS_DIR/runs.tsv"};
   app.name("compare-runs");
   app.require_subcommand(1);
-
-  Folders convergence_f, stability_f, decisions_f, critical_f;
-  std::string reference = "reference", baseline = "baseline", references = "reference_data/paper.yaml", ensemble, baseline_results;
-  bool report_only = false;
-  // Not study_mode(): with --summary the one folder given is OUT_DIR (checked after parsing).
-  std::string convergence_summary, validation_json;
-  int threads_per_run = 1;
-  CLI::App* convergence = app.add_subcommand(
-      "convergence", "the error budget of the reference's settings in time step, rate and size, every setting's error against the "
-                     "converged values with its cost: summary.json (from results), table.md, errors.dat, front.dat");
-  convergence->add_option("RESULTS_DIR", convergence_f.results,
-                          "the study's results folder (its runs.tsv, written by build/bin/pipeline); left out with --summary");
-  convergence->add_option("OUT_DIR", convergence_f.out, "where the tables and the figure's data go (made if missing)");
-  convergence->add_option("--reference", reference, "the variant at the paper's settings")->capture_default_str();
-  convergence->add_option("--threads", threads_per_run, "threads each run used (core-seconds = wall time x threads)")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 1024));
-  convergence->add_option("--validation", validation_json,
-                          "the paper study's validation.json: each inconsistent row's miss against the budget")
-      ->check(CLI::ExistingFile);
-  convergence
-      ->add_option("--summary", convergence_summary,
-                   "re-draw the section from this summary.json (written beside table.md from the results), without the results "
-                   "(compare-runs convergence --summary FILE OUT_DIR)")
-      ->check(CLI::ExistingFile);
-
-  CLI::App* stability = study_mode(app, "stability", "what became of each case: table.md (exit 1 if a case is not acceptable)", stability_f);
-  stability->add_flag("--report-only", report_only, "mark a case that is not acceptable in the table, and exit 0");
-
-  // Not study_mode(): with --from-json the one folder given is OUT_DIR (checked after parsing).
-  std::string from_json;
-  CLI::App* decisions = app.add_subcommand("decisions",
-                                           "every validation row on every reading's ensemble against the baseline's: table.md, decisions.json, "
-                                           "tornado_<group>.dat, tornado_values.gp");
-  decisions->add_option("RESULTS_DIR", decisions_f.results,
-                        "the study's results folder (its runs.tsv, written by build/bin/pipeline); left out with --from-json");
-  decisions->add_option("OUT_DIR", decisions_f.out, "where the tables and the figures' data go (made if missing)");
-  CLI::Option* reference_opt = decisions->add_option("--reference", baseline, "the baseline reading")->capture_default_str();
-  decisions->add_option("--references", references, "the validation rows (the paper's values)")->capture_default_str();
-  CLI::Option* ensemble_opt =
-      decisions->add_option("--ensemble", ensemble, "the paper study's results: verdicts and causes are judged on its full-size ensemble");
-  CLI::Option* baseline_results_opt =
-      decisions->add_option("--baseline-results", baseline_results,
-                            "for a study of readings only (no baseline of its own): the study whose samples of the same seeds are the "
-                            "baseline (e.g. results/study/paper)");
-  decisions
-      ->add_option("--from-json", from_json,
-                   "re-draw table.md, tornado_<group>.dat and tornado_values.gp from this decisions.json alone, without the study's "
-                   "results (compare-runs decisions --from-json FILE OUT_DIR): shifts restated against the rows' resolutions")
-      ->check(CLI::ExistingFile)
-      ->excludes(reference_opt)
-      ->excludes(ensemble_opt)
-      ->excludes(baseline_results_opt);
-
-  CLI::App* critical = study_mode(app, "critical-state",
-                                  "peak and critical state of each constant-p shear, the peaks in the pi-plane: table.md, "
-                                  "critical_state.dat, pi_plane.dat, values.gp",
-                                  critical_f);
-  std::string critical_ensemble, critical_rates, critical_references;
-  critical->add_option("--ensemble", critical_ensemble,
-                       "an ensemble study's results (pipeline/studies/critical_state_ensemble.yaml): mean ± sd over its samples "
-                       "of each loading and μ (ensemble.dat)");
-  critical->add_option("--rates", critical_rates,
-                       "a rates study's results (pipeline/studies/critical_state_rates.yaml): critical q/p against sqrt(I) with "
-                       "this study's runs of the same μ, taken to I -> 0 (rates.dat, rates_qs.dat)");
-  critical
-      ->add_option("--references", critical_references,
-                   "validation rows (e.g. reference_data/literature.yaml): a critical_state_friction_angle row that reads a rate "
-                   "series' run is compared with the series' quasi-static φ (with --rates)")
-      ->check(CLI::ExistingFile);
-
-  std::string liquefaction_out;
-  std::vector<std::string> liquefaction_folders;
-  CLI::App* liquefaction = app.add_subcommand("liquefaction",
-                                              "CSR against N_L and r_u against cycles of the undrained cyclic tests of every folder: "
-                                              "table.md, csr_nl.dat, ru.dat, values.gp");
-  liquefaction->add_option("OUT_DIR", liquefaction_out, "where the tables and the figures' data go (made if missing)")->required();
-  liquefaction->add_option("RESULTS_DIR", liquefaction_folders, "the studies' results folders")->required();
-
-  std::string draw_dir;
-  for (CLI::App* mode : {convergence, stability, decisions, critical, liquefaction})
-    mode->add_option("--draw", draw_dir, "draw the section's figures in OUT_DIR with the gnuplot scripts of this folder (reports/gnuplot)")
-        ->check(CLI::ExistingDirectory);
+  Options o;
+  const Modes m = declare_modes(app, o);
 
   if (argc < 2) {  // what there is
     std::fputs(app.help().c_str(), stderr);
@@ -169,90 +256,23 @@ int tool_main(int argc, char** argv) {
     const int rc = app.exit(e);  // prints the help, or the error naming the option
     return rc == 0 ? 0 : 2;      // bad arguments: exit 2, as always
   }
-  // decisions: RESULTS_DIR and OUT_DIR, or OUT_DIR alone with --from-json (then in `results`).
-  if (*decisions) {
-    const bool both = !decisions_f.out.empty(), none = decisions_f.results.empty();
-    const char* error = !from_json.empty() ? (both ? "--from-json takes OUT_DIR alone (no RESULTS_DIR)" : none ? "--from-json needs OUT_DIR" : nullptr)
-                                           : (!both ? "decisions needs RESULTS_DIR and OUT_DIR (or --from-json FILE OUT_DIR)" : nullptr);
-    if (error) {
-      std::fprintf(stderr, "compare-runs: %s\nRun with --help for more information.\n", error);
-      return 2;
-    }
-  }
-  if (*convergence) {
-    const bool both = !convergence_f.out.empty(), none = convergence_f.results.empty();
-    const char* error = !convergence_summary.empty() ? (both ? "--summary takes OUT_DIR alone (no RESULTS_DIR)" : none ? "--summary needs OUT_DIR" : nullptr)
-                                                     : (!both ? "convergence needs RESULTS_DIR and OUT_DIR (or --summary FILE OUT_DIR)" : nullptr);
-    if (error) {
-      std::fprintf(stderr, "compare-runs: %s\nRun with --help for more information.\n", error);
-      return 2;
-    }
+  const std::string error = *m.decisions     ? folders_error(o.decisions, o.from_json, "--from-json", "decisions")
+                            : *m.convergence ? folders_error(o.convergence, o.convergence_summary, "--summary", "convergence")
+                                             : "";
+  if (!error.empty()) {
+    std::fprintf(stderr, "compare-runs: %s\nRun with --help for more information.\n", error.c_str());
+    return 2;
   }
   // Without its results, the convergence section is re-drawn from the summary its results left.
-  if (*convergence && convergence_summary.empty() && !std::filesystem::exists(std::filesystem::path(convergence_f.results) / "runs.tsv") &&
-      std::filesystem::exists(std::filesystem::path(convergence_f.out) / "summary.json")) {
-    convergence_summary = (std::filesystem::path(convergence_f.out) / "summary.json").string();
-    std::fprintf(stderr, "compare-runs: no results in %s; the convergence section re-drawn from %s\n", convergence_f.results.c_str(),
-                 convergence_summary.c_str());
-    convergence_f.results = convergence_f.out;
+  if (*m.convergence && o.convergence_summary.empty() && !std::filesystem::exists(std::filesystem::path(o.convergence.results) / "runs.tsv") &&
+      std::filesystem::exists(std::filesystem::path(o.convergence.out) / "summary.json")) {
+    o.convergence_summary = (std::filesystem::path(o.convergence.out) / "summary.json").string();
+    std::fprintf(stderr, "compare-runs: no results in %s; the convergence section re-drawn from %s\n", o.convergence.results.c_str(),
+                 o.convergence_summary.c_str());
+    o.convergence.results = o.convergence.out;
   }
-  // A mode's status, its figures drawn when its data are written (0, or 1: a stability case not
-  // acceptable); a figure that cannot be drawn makes a 0 a 1.
-  const std::string mode = argv[1];
-  const auto drawn = [&](int status, const std::string& out) {
-    if (draw_dir.empty() || (status != 0 && status != 1)) return status;
-    const int d = compare_runs::draw_section(mode, out, draw_dir);
-    return status == 0 ? d : status;
-  };
   try {
-    if (*convergence && !convergence_summary.empty()) {
-      std::filesystem::create_directories(convergence_f.results);
-      return drawn(compare_runs::convergence_from_summary(convergence_summary, convergence_f.results, reference, validation_json),
-                   convergence_f.results);
-    }
-    // A study with nothing finished (planned, or started) draws no section: its committed tables stay.
-    const auto nothing_finished = [](const std::string& dir) {
-      std::fprintf(stderr, "compare-runs: no finished run in %s (its runs.tsv lists runs, none has a result or a recorded stop: "
-                           "a study planned or still running); nothing written\n", dir.c_str());
-      return 1;
-    };
-    if (*liquefaction) {
-      bool any = false;
-      for (const std::string& dir : liquefaction_folders) any = any || compare_runs::any_outcome(compare_runs::read_manifest(dir), dir);
-      if (!any) return nothing_finished(validation::joined(liquefaction_folders, ", "));
-      return drawn(stamped(compare_runs::liquefaction(liquefaction_out, liquefaction_folders), liquefaction_out, liquefaction_folders),
-                   liquefaction_out);
-    }
-    if (*decisions && !from_json.empty())
-      return drawn(compare_runs::decisions_from_json(from_json, decisions_f.results, references), decisions_f.results);
-    const Folders& f = *convergence ? convergence_f : *stability ? stability_f : *decisions ? decisions_f : critical_f;
-    compare_runs::Manifest manifest;
-    try {
-      manifest = compare_runs::read_manifest(f.results);
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "error: %s\n", e.what());
-      return 2;
-    }
-    if (!compare_runs::any_outcome(manifest, f.results)) return nothing_finished(f.results);
-    std::filesystem::create_directories(f.out);
-    if (*convergence) return drawn(compare_runs::convergence(manifest, f.results, f.out, reference, threads_per_run, validation_json), f.out);
-    if (*stability) return stamped(compare_runs::stability(manifest, f.results, f.out, report_only), f.out, {f.results});
-    if (*decisions) return drawn(compare_runs::decisions(manifest, f.results, f.out, references, baseline, ensemble, baseline_results), f.out);
-    if (*critical) {
-      for (const std::string& dir : {critical_ensemble, critical_rates})
-        if (!dir.empty()) {
-          try {
-            if (!compare_runs::any_outcome(compare_runs::read_manifest(dir), dir)) return nothing_finished(dir);
-          } catch (const std::exception& e) {
-            std::fprintf(stderr, "error: %s\n", e.what());
-            return 2;
-          }
-        }
-      return drawn(stamped(compare_runs::critical_state(manifest, f.results, f.out, critical_ensemble, critical_rates, critical_references),
-                           f.out, {f.results, critical_ensemble, critical_rates}),
-                   f.out);
-    }
-    return 2;  // not reached: parse() requires one sub-command
+    return run_mode(argv[1], m, o);
   } catch (const std::exception& e) {  // a result that cannot be read, a folder that cannot be made
     std::fprintf(stderr, "error: %s\n", dem::describe_failure(e).c_str());
     return 1;
