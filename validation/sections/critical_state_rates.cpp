@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <numbers>
 #include <optional>
 #include <sstream>
@@ -36,22 +37,55 @@ double inertial_of(const ShearRun& r) {
   return validation::inertial_number(r.rate_per_s, r.diameter_m, r.density_kg_per_m3, r.summary->p_Pa.mean);
 }
 
-// A reference row of the critical-state angle that reads the series' run at the study's rate (its
-// density_test is the run's name): its value beside the quasi-static φ, since the row's own verdict is
-// at that rate and the reference holds at I -> 0. Empty when no row reads the run.
-std::string against_reference(const RateSeries& s, const ShearRun& table_run, const std::vector<validation::Row>& rows) {
+// A point the fit uses: finished, the test its name says, with an inertial number and rows at cs.
+bool usable(const RatePoint& p) {
+  return p.run->summary && p.run->held && std::isfinite(p.inertial) && p.run->summary->q_over_p.n;
+}
+
+// What a quasi-static reference is judged on at I -> 0: at least this many rates, with at least
+// this many samples (seeds) at each, so that the fit's interval rests on degrees of freedom and
+// the samples' scatter rather than on one sample's line through three points.
+constexpr std::size_t rates_to_judge = 4, samples_per_rate_to_judge = 2;
+
+// A reference row of the critical-state angle that reads one of the series' runs (its density_test is
+// the run's name, one of the critical-state table's): judged on the quasi-static φ when the series can
+// judge it (above), else its distance given for information only. The literature section does not
+// judge the row at the run's finite rate either. Empty when no row reads a run of the series.
+std::string against_reference(const RateSeries& s, const std::vector<validation::Row>& rows) {
   if (!s.fit) return "";
+  std::map<double, std::size_t> samples;  // usable points per rate
+  for (const RatePoint& p : s.points)
+    if (usable(p)) ++samples[p.run->rate_per_s];
+  std::size_t fewest = samples.empty() ? 0 : samples.begin()->second, most = fewest;
+  for (const auto& [rate, n] : samples) fewest = std::min(fewest, n), most = std::max(most, n);
+  const double half_width = s.fit->n > 2 ? validation::t_quantile(1 - (1 - validation::prediction_level) / 2, s.fit->n - 2) * s.phi_se_deg : NAN;
+  const std::string each = fewest == most ? std::to_string(fewest) : std::to_string(fewest) + "–" + std::to_string(most);
   for (const validation::Row& row : rows) {
-    if (row.quantity != "critical_state_friction_angle" || row.density + "_" + row.test != table_run.run) continue;
+    if (row.quantity != "critical_state_friction_angle") continue;
+    const auto read = std::find_if(s.points.begin(), s.points.end(),
+                                   [&](const RatePoint& p) { return usable(p) && p.run->run == row.density + "_" + row.test; });
+    if (read == s.points.end()) continue;
+    const ShearRun& table_run = *read->run;
     const double off = s.phi_deg - row.reference;
     const double at_rate = table_run.summary->phi_deg.mean - row.reference;
     std::ostringstream md;
     md << " The reference row \"" << row.name << "\" (" << row.source.substr(0, row.source.find(':')) << ") gives " << number(row.reference)
-       << "° with a reading tolerance of " << number(row.tolerance) << "°: the quasi-static φ is " << (off >= 0 ? "+" : "") << fixed(off, 2)
-       << "° from it (" << (std::abs(off) <= row.tolerance ? "within" : "beyond") << " the tolerance";
-    if (s.fit->n > 2) md << "; its se " << fixed(s.phi_se_deg, 2) << "°";
-    md << "), the " << number(table_run.rate_per_s) << " s⁻¹ run's " << (at_rate >= 0 ? "+" : "") << fixed(at_rate, 2)
-       << "° (the literature section judges the row at that rate).";
+       << "° with a reading tolerance of " << number(row.tolerance) << "°";
+    const std::string interval = std::isfinite(half_width) ? "its " + number(100 * validation::prediction_level) + " % interval ± " + fixed(half_width, 2) + "°"
+                                                           : "no interval: two points";
+    if (samples.size() >= rates_to_judge && fewest >= samples_per_rate_to_judge) {
+      const bool reaches = std::abs(off) <= row.tolerance + half_width;
+      md << ". Judged at I → 0 on " << samples.size() << " rates of " << each << " samples each: the quasi-static φ is "
+         << (off >= 0 ? "+" : "") << fixed(off, 2) << "° from it (" << interval << "), "
+         << (reaches ? "✅ consistent: the interval reaches the reference's region" : "❌ inconsistent: the interval does not reach the reference's region");
+    } else {
+      md << ". ⚠ Not judged at I → 0: the fit has " << samples.size() << (samples.size() == 1 ? " rate" : " rates") << " of " << each
+         << (fewest == 1 && most == 1 ? " sample" : " samples") << " each, and a judgement needs at least " << rates_to_judge
+         << " rates with " << samples_per_rate_to_judge << " or more samples at each. For information only: the quasi-static φ is "
+         << (off >= 0 ? "+" : "") << fixed(off, 2) << "° from it (" << interval << ")";
+    }
+    md << "; the " << number(table_run.rate_per_s) << " s⁻¹ run's is " << (at_rate >= 0 ? "+" : "") << fixed(at_rate, 2)
+       << "° (not quasi-static: the literature section does not judge the row on it).";
     return md.str();
   }
   return "";
@@ -178,7 +212,7 @@ std::string rates_section(const std::vector<RateSeries>& series, const std::stri
     const validation::LineFit& f = *s.fit;
     const RatePoint* fastest = nullptr;  // the fastest point used (the rate the table above is at)
     for (const RatePoint& p : s.points)
-      if (p.run->summary && p.run->held && std::isfinite(p.inertial) && p.run->summary->q_over_p.n) {
+      if (usable(p)) {
         fastest = &p;
         break;
       }
@@ -197,7 +231,7 @@ std::string rates_section(const std::vector<RateSeries>& series, const std::stri
          << validation::significant(quantile * f.intercept_se, 2) << " in q/p)";
     }
     md << (s.problems.empty() ? ". q/p changes monotonically with I." : ". ⚠ " + s.problems + ".");
-    if (fastest) md << against_reference(s, *fastest->run, rows);
+    md << against_reference(s, rows);
     md << "\n\n";
   }
   md << "![critical q/p against the square root of the inertial number, with the fits](rates.png)\n";

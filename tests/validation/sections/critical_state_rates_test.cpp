@@ -1,6 +1,6 @@
 // compare-runs critical-state with --rates, --references and --ensemble on hand-made results: the
 // quasi-static q/p of a rate series is the intercept of its line against sqrt(I), its φ is set beside
-// the literature row that reads the same run (within or beyond the row's tolerance), and the
+// the literature row that reads the same run (judged only on 4 rates of 2 samples or more), and the
 // ensemble's compression and extension are told apart by Welch's t. Every expected number is
 // computed here from the stresses the files are given.
 #include <catch2/catch.hpp>
@@ -148,9 +148,11 @@ TEST_CASE("compare-runs critical-state: the quasi-static φ beside the literatur
   CHECK(intercept == Approx(0.2).margin(1e-12));
   CHECK(se < 1e-12);
   CHECK(phi == Approx(phi_qs).margin(1e-9));
-  CHECK(table.find("gives 5.76° with a reading tolerance of 1°: the quasi-static φ is " + off.str() + "° from it (within the tolerance") !=
+  // Three rates of one sample each: too few to judge a quasi-static reference; the distance is given.
+  CHECK(table.find("gives 5.76° with a reading tolerance of 1°. ⚠ Not judged at I → 0: the fit has 3 rates of 1 sample each") !=
         std::string::npos);
-  CHECK(table.find("the 1 s⁻¹ run's " + at_rate.str() + "°") != std::string::npos);
+  CHECK(table.find("For information only: the quasi-static φ is " + off.str() + "° from it") != std::string::npos);
+  CHECK(table.find("the 1 s⁻¹ run's is " + at_rate.str() + "°") != std::string::npos);
 
   // Welch's t of extension - compression from the samples' critical φ.
   const auto phi_of = [](double s1, double s3) { return std::asin((s1 - s3) / (s1 + s3)) * 180 / std::numbers::pi; };
@@ -168,8 +170,68 @@ TEST_CASE("compare-runs critical-state: the quasi-static φ beside the literatur
   t << "t = " << (me - mc) / std::sqrt(vc / 3 + ve / 3) << " against t(0.975, 2) = 4.30";
   CHECK(table.find(t.str()) != std::string::npos);
 
-  // A tolerance of 0.1° puts the same φ beyond it.
+  // A tolerance of 0.1° changes nothing: still not judged.
   run((dir / "main").string() + " " + (dir / "out2").string() + " --rates " + (dir / "rates").string() + " --references " + narrow,
       dir / "log2.txt");
-  CHECK(read_file(dir / "out2" / "table.md").find("from it (beyond the tolerance") != std::string::npos);
+  CHECK(read_file(dir / "out2" / "table.md").find("Not judged at I → 0") != std::string::npos);
+}
+
+TEST_CASE("compare-runs critical-state: a quasi-static row judged at I to 0 on 4 rates of 2 or more samples", "[critical-state][compare-runs]") {
+  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "compare_runs_critical_state_judged";
+  fs::remove_all(dir);
+  // μ = 0: the main study's one run at 1/s on the line q/p = 0.2 + 4 sqrt(I); the rates study's two
+  // samples at each of 1, 0.5, 0.25 and 0.125/s at the line ± delta. The means at each rate lie on
+  // the line, so the intercept is 0.2; its standard error is that of ordinary least squares over the
+  // 9 points (7 degrees of freedom), computed below from the points alone.
+  constexpr double delta = 0.001;
+  const auto sqrt_i = [](double rate) { return std::sqrt(rate * 2 * radius * std::sqrt(rho / p0)); };
+  const auto eta_at = [&](double rate) { return 0.2 + 4 * sqrt_i(rate); };
+  std::vector<double> x{sqrt_i(1)}, y{eta_at(1)};
+  write_manifest(dir / "main", {{0, "compression_mu0"}});
+  write_shear(dir / "main" / "dense_compression_mu0.h5", 0, 1, eta_at(1), false);
+  std::vector<std::pair<int, std::string>> rate_runs;
+  for (const double rate : {1.0, 0.5, 0.25, 0.125})
+    for (int seed = 1; seed <= 2; ++seed) {
+      std::ostringstream name;
+      name << "rate" << rate << "_mu0";
+      rate_runs.push_back({seed, name.str()});
+      const double eta = eta_at(rate) + (seed == 1 ? delta : -delta);
+      write_shear(dir / "rates" / ("seed" + std::to_string(seed)) / ("dense_" + name.str() + ".h5"), 0, rate, eta, false);
+      x.push_back(sqrt_i(rate)), y.push_back(eta);
+    }
+  write_manifest(dir / "rates", rate_runs);
+  double mx = 0, my = 0, sxx = 0, ssr = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) mx += x[i] / x.size(), my += y[i] / x.size();
+  for (std::size_t i = 0; i < x.size(); ++i) sxx += (x[i] - mx) * (x[i] - mx);
+  for (std::size_t i = 0; i < x.size(); ++i) ssr += std::pow(y[i] - eta_at(1) + 4 * (sqrt_i(1) - x[i]), 2);  // residuals from the line
+  const double se_eta = std::sqrt(ssr / 7 * (1.0 / x.size() + mx * mx / sxx));
+  // φ = asin(3η/(6 + η)): dφ/dη = 18 / ((6 + η)² cos φ), in degrees; t(0.975, 7) = 2.3646.
+  const double phi_qs = compression_phi_deg(0.2);
+  const double half = 2.3646 * se_eta * 18 / (6.2 * 6.2 * std::cos(phi_qs * std::numbers::pi / 180)) * 180 / std::numbers::pi;
+  std::ostringstream half_text;
+  half_text << std::fixed;
+  half_text.precision(2);
+  half_text << "95 % interval ± " << half << "°";
+  const auto references = [&](const std::string& name, double tolerance) {
+    std::ofstream r(dir / name);
+    r << "source: \"test\"\nrows:\n  - name: \"critical angle\"\n    quantity: critical_state_friction_angle\n    density: dense\n"
+      << "    test: compression_mu0\n    reference: 5.76\n    check: within\n    tolerance: " << tolerance << "\n    resolution: 0.01\n"
+      << "    source: \"Peyneau & Roux: the quasi-static limit\"\n    reason: \"a hand-made row\"\n";
+    return (dir / name).string();
+  };
+  // |φ - 5.76| = 0.21°: within 1° (consistent); beyond 0.1° plus the interval's half-width (inconsistent).
+  REQUIRE(std::abs(phi_qs - 5.76) < 1);
+  REQUIRE(std::abs(phi_qs - 5.76) > 0.1 + half);
+  run((dir / "main").string() + " " + (dir / "out").string() + " --rates " + (dir / "rates").string() + " --references " +
+          references("wide.yaml", 1.0),
+      dir / "log1.txt");
+  const std::string wide = read_file(dir / "out" / "table.md");
+  INFO(wide);
+  CHECK(wide.find("Judged at I → 0 on 4 rates of 2–3 samples each") != std::string::npos);
+  CHECK(wide.find(half_text.str()) != std::string::npos);
+  CHECK(wide.find("✅ consistent: the interval reaches the reference's region") != std::string::npos);
+  run((dir / "main").string() + " " + (dir / "out2").string() + " --rates " + (dir / "rates").string() + " --references " +
+          references("narrow.yaml", 0.1),
+      dir / "log2.txt");
+  CHECK(read_file(dir / "out2" / "table.md").find("❌ inconsistent: the interval does not reach") != std::string::npos);
 }
