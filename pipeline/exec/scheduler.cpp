@@ -11,6 +11,7 @@
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -194,7 +195,10 @@ Outcome execute(const std::vector<PlannedRun>& runs, const std::string& dem, int
     if (it == running.end()) continue;
     const std::size_t i = it->second;
     running.erase(it);
-    tracker.end(i, {WIFEXITED(status), WIFEXITED(status) ? WEXITSTATUS(status) : 0, ""});
+    const std::string signal = WIFSIGNALED(status) ? std::string("killed by signal ") + std::to_string(WTERMSIG(status)) + " (" +
+                                                         sigabbrev_np(WTERMSIG(status)) + ")"
+                                                   : "";
+    tracker.end(i, {WIFEXITED(status), WIFEXITED(status) ? WEXITSTATUS(status) : 0, signal});
   }
   return tracker.outcome();
 }

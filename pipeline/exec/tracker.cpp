@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "io/file_lock.hpp"
 #include "io/hdf5.hpp"
 #include "io/xdmf.hpp"
 
@@ -25,6 +26,22 @@ std::string stop_message(const PlannedRun& r) {
   while (std::getline(log, line))
     if (line.rfind("error: ", 0) == 0) last = line.substr(7);
   return last;
+}
+
+// A run killed where dem's own handlers cannot run (SIGKILL: the out-of-memory killer, kill -9, a
+// cluster's hard limit) leaves its .partial with the status "running". The pipeline saw it end, so
+// it puts how in the status, unless a process holds the run's lock again (a run started since).
+// The checkpoint stays: the next run resumes from it as after any stop.
+void mark_killed(const PlannedRun& r, const std::string& how) {
+  const std::string partial = r.result + ".partial";
+  try {
+    std::error_code ec;
+    if (!std::filesystem::exists(partial, ec) || dem::FileLock::held_by_a_process(r.result + ".lock")) return;
+    dem::h5::Handle f = dem::h5::open_file_write(partial);
+    if (dem::h5::has_attribute(f, "status") && dem::h5::get_string_attribute(f, "status") == "running")
+      dem::h5::set_attribute(f, "status", "failed: " + (how.empty() ? std::string("ended without a status") : how) + " (seen by the pipeline)");
+  } catch (const std::exception&) {  // not a readable result: the run's FAILED line says what is known
+  }
 }
 
 // The result of `from` as the result of `to`, which computes the same (PlannedRun::copy_of): the
@@ -169,6 +186,7 @@ void Tracker::end(std::size_t i, const Ending& e) {
   } else {
     state_[i] = RunState::Failed;
     ++out_.failed;
+    if (!e.exited) mark_killed(r, e.note);
     report("FAILED " + r.name + " (" + (e.note.empty() ? "" : e.note + "; ") + "see " + r.log + ")");
   }
 }
