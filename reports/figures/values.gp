@@ -108,3 +108,5 @@ q_tc_kPa = 22.22222222
 q_te_kPa = 20.68965517
 fig12_max = 0.3
 fig13_max = 0.3
+fig00_slopes_rows = 15
+paper_slope_tolerance = 0.25

@@ -1,8 +1,10 @@
 // Figs. 7, 10, 11 (figure_entry.hpp): εv, the coordination number and the sliding fraction at the end
-// of each cycle, over every sample of the ensemble (ensemble_cycle_table), and their notes.
+// of each cycle, over every sample of the ensemble (ensemble_cycle_table), and their notes; and the
+// second headline check, the slope of q/p against F^s_d/F^s_m of every sample (fig00_slopes).
 #include <cmath>
 
 #include "figures/figure_entry.hpp"
+#include "judge/quantities.hpp"
 #include "study/format.hpp"
 #include "study/manifest.hpp"
 
@@ -45,10 +47,35 @@ void cycle_figure_values(NoteContext& c, Values& v, const std::string& d, int la
   v["fig11.verdict_" + d] = d == "loose" ? c.phrase("sliding_change", d) : c.phrase("sliding_change_magnitude", d);
 }
 
+// The headline check after shearing: the slope of q/p against F^s_d/F^s_m of every sample (the
+// validation row's own quantity, over all its tests), by density (1 loose, 2 medium, 3 dense, the
+// x of the figure), labelled by sample; the paper's value and the row's tolerance in values.gp.
+void fig00_slopes(const FigureSource& src, FigureFolder& out) {
+  const std::string quantity = "qp_strong_fabric_slope";
+  Table t;
+  t.columns = {"density [1]", "slope of q/p against F^s_d/F^s_m [1]"};
+  for (std::size_t k = 0; k < src.densities.size(); ++k)
+    for (const Sample& s : src.samples) {
+      const auto it = s.densities.find(src.densities[k]);
+      if (it == s.densities.end() || it->second.tests.empty()) continue;
+      const Measured m = compute({quantity, src.densities[k]}, it->second);
+      if (!m.value) continue;
+      t.labels.push_back(s.name.empty() ? "the sample" : s.name);
+      t.rows.push_back({static_cast<double>(k + 1), *m.value});
+    }
+  out.write("fig00_slopes.dat", t, "the slope of q/p against F^s_d/F^s_m of every sample, all its tests (" + src.results + ")");
+  out.values.number("fig00_slopes_rows", static_cast<double>(t.size()));
+  double tolerance = NAN;
+  for (const Row& r : src.paper)
+    if (r.quantity == quantity) tolerance = r.tolerance;
+  out.values.number("paper_slope_tolerance", tolerance);
+}
+
 }  // namespace
 
-// Figs. 7, 10, 11: per-cycle statistics over every sample of the ensemble.
+// Figs. 7, 10, 11: per-cycle statistics over every sample of the ensemble; the slopes of every sample.
 void cycle_figures_data(const FigureSource& src, FigureFolder& out) {
+  fig00_slopes(src, out);
   const std::map<std::string, std::string> files = {
       {"epsv_percent", "fig07_epsv_cycles"}, {"coordination", "fig10_coordination"}, {"sliding_percent", "fig11_sliding"}};
   for (const CycleQuantity& cq : cycle_quantities())

@@ -28,7 +28,7 @@ void sample_figures_data(const FigureSource& src, FigureFolder& out);  // Figs. 
 void sample_figures_notes(NoteContext& c, Values& v);
 void single_run_figures_data(const FigureSource& src, FigureFolder& out);  // Figs. 3-6, 8, 9, 12, 13 (single_run_figures.cpp)
 void single_run_figures_notes(NoteContext& c, Values& v);
-void cycle_figures_data(const FigureSource& src, FigureFolder& out);  // Figs. 7, 10, 11 (cycle_figures.cpp)
+void cycle_figures_data(const FigureSource& src, FigureFolder& out);  // Figs. 0 (slopes), 7, 10, 11 (cycle_figures.cpp)
 void cycle_figures_notes(NoteContext& c, Values& v);
 void energy_figures_data(const FigureSource& src, FigureFolder& out);  // the energy balance (energy_figures.cpp)
 void energy_figures_notes(NoteContext& c, Values& v);

@@ -154,6 +154,7 @@ void fig13_values(NoteContext& c, Values& v) {
     v["fig13.slope_" + d] = r->valued > 1 ? mean_pm_sd(r->spread.mean, r->spread.sd) : fixed_unsigned_zero(r->spread.mean, 2);
     v["fig13.range_" + d] = range_fixed(m.lo, m.hi, 2);
     v["fig13.verdict_" + d] = c.phrase("qp_strong_fabric_slope", d);
+    v["fig13.inside_" + d] = std::to_string(r->holds) + " of " + std::to_string(r->valued);
   }
   v["fig13.paper"] = c.paper("qp_strong_fabric_slope", "loose");
 }

@@ -411,7 +411,7 @@ void add_figures(Values& v, const fs::path& report, const std::string& notes_tsv
   std::sort(pngs.begin(), pngs.end());
   // Each figure with its note. The paper's two headline checks (e0 and CN of every sample, q/p
   // against F^s_d/F^s_m) come first, in their own section, and not again.
-  const std::vector<std::string> headline = {"fig00_samples.png", "fig13_strong_fabric.png", "fig14_strong_fabric_all.png"};
+  const std::vector<std::string> headline = {"fig00_samples.png", "fig00_slopes.png", "fig13_strong_fabric.png", "fig14_strong_fabric_all.png"};
   const auto with_note = [&](const std::string& png) {
     const std::string image = "![" + png.substr(0, png.size() - 4) + "](figures/" + png + ")";
     return "\n" + image + "\n\n" + figure_note(notes_tsv, png, v) + "\n";

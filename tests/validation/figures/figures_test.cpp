@@ -214,6 +214,8 @@ TEST_CASE("figure-data on a synthetic result: known columns, and every figure sc
   series["leg"] = {-1, 0, 1};
   series["volumetric_strain"] = {0, 0.001, 0.003};
   series["coordination_number"] = {4.2, 4.1, 4.0};
+  series["q_over_p"] = {0, 0.3225, 0};  // q/p of the rows' stresses: row 2, q = 32.25 kPa at p = 100 kPa
+  series["strong_fabric_ratio"] = {0, 0.3, 0.1};
   {
     dem::h5::Handle f = dem::h5::create_file((dir / "results" / "loose_test1.h5").string());
     dem::h5::set_attribute(f, "status", std::string("complete"));
@@ -247,6 +249,14 @@ TEST_CASE("figure-data on a synthetic result: known columns, and every figure sc
   // The samples before shearing: no preparation here, so a header and no row (the figure says "not run").
   CHECK(slurp(dir / "figs" / "fig00_samples.dat").find("density [1]\tvoid ratio e0 [1]\tcoordination number [1]\n") != std::string::npos);
   CHECK(values.find("fig00_samples_rows = 0\n") != std::string::npos);
+  // The slope after shearing: through the origin over the rows of a leg (not row 1, leg -1):
+  // (0.3 x 0.3225 + 0.1 x 0) / (0.3^2 + 0.1^2) = 0.9675, loose (1); the paper's 1 ± 0.25 beside it.
+  const std::string slopes = slurp(dir / "figs" / "fig00_slopes.dat");
+  INFO(slopes);
+  CHECK(slopes.find("density [1]\tslope of q/p against F^s_d/F^s_m [1]\n") != std::string::npos);
+  CHECK(slopes.find("\t1\t0.9675\n") != std::string::npos);
+  CHECK(values.find("fig00_slopes_rows = 1\n") != std::string::npos);
+  CHECK(values.find("paper_slope_tolerance = 0.25\n") != std::string::npos);
   // No absolute path of this machine in anything written.
   for (const auto& e : fs::directory_iterator(dir / "figs")) CHECK(slurp(e.path()).find(dir.string()) == std::string::npos);
   // Every static script draws from this partial set (missing runs say "not run"): gnuplot exits 0.
@@ -259,6 +269,7 @@ TEST_CASE("figure-data on a synthetic result: known columns, and every figure sc
     CHECK(fs::exists(dir / "figs" / "fig03_stress_paths.png"));
     CHECK(fs::exists(dir / "figs" / "fig10_coordination.png"));
     CHECK(fs::exists(dir / "figs" / "fig00_samples.png"));
+    CHECK(fs::exists(dir / "figs" / "fig00_slopes.png"));
   }
 }
 

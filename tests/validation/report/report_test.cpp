@@ -238,7 +238,7 @@ TEST_CASE("report: templates fill keys and conditionals, and refuse unknown keys
   // Every key of the real templates is known to the tool: filled from a fixture, no note falls back.
   const Values v = figure_values(inputs(Fixture{}));
   for (const char* png : {"fig02_samples.png", "fig03_stress_paths.png", "fig04_q_p.png", "fig06_epsv.png", "fig07_epsv_cycles.png",
-                          "fig10_coordination.png", "fig11_sliding.png", "fig13_strong_fabric.png", "fig_energy.png"}) {
+                          "fig10_coordination.png", "fig11_sliding.png", "fig13_strong_fabric.png", "fig00_slopes.png", "fig_energy.png"}) {
     INFO(png);
     CHECK(note(v, png).find("No comparison") == std::string::npos);
   }
@@ -380,6 +380,11 @@ TEST_CASE("report: every number in the figure notes is the fixture's", "[report]
     const std::string n14 = note(v, "fig14_strong_fabric_all.png");
     CHECK(n14.find(v.at("fig13.slope_dense")) != std::string::npos);
     CHECK(n14.find("as in the paper / as in the paper / unlike the paper") != std::string::npos);
+    // The headline figure after shearing quotes the same slopes, and the samples within the paper's
+    // 1 ± 0.25: loose 1.00-1.02 and medium 1.20-1.22 all 3, dense 1.40-1.42 none.
+    const std::string n0 = note(v, "fig00_slopes.png");
+    CHECK(n0.find(v.at("fig13.slope_medium") + " (medium)") != std::string::npos);
+    CHECK(captured(n0, R"(tolerance in (\d) of (\d), (\d) of (\d) and (\d) of (\d) samples)") == std::vector<double>{3, 3, 3, 3, 0, 3});
   }
   SECTION("energy: the work of Test 1 from the common row, the gap relative to it (0, 0.1 %, 0)") {
     const std::string n = note(v, "fig_energy.png");
