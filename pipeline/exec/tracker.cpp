@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include <yaml-cpp/yaml.h>
+
 #include "io/file_lock.hpp"
 #include "io/hdf5.hpp"
 #include "io/xdmf.hpp"
@@ -44,6 +46,20 @@ void mark_killed(const PlannedRun& r, const std::string& how) {
   }
 }
 
+// The scene a copy records: the source's as the engine resolved it (every default filled in, as in
+// any result, so that what is read from it, e.g. the baseline of its settings, is the source's),
+// under the copy's own name; the study's text of the copy's scene if the source's has no name line.
+std::string copied_scene(const std::string& resolved_source, const std::string& copy_scene_text) {
+  std::string name;
+  try {
+    name = YAML::Load(copy_scene_text)["name"].as<std::string>("");
+  } catch (const YAML::Exception&) {
+  }
+  if (name.empty() || resolved_source.rfind("name: ", 0) != 0) return copy_scene_text;
+  const std::size_t end = resolved_source.find('\n');
+  return "name: " + name + (end == std::string::npos ? "" : resolved_source.substr(end));
+}
+
 // The result of `from` as the result of `to`, which computes the same (PlannedRun::copy_of): the
 // file copied with `to`'s input hash and scene, renamed into place complete, with its XDMF.
 void copy_result(const PlannedRun& from, const PlannedRun& to) {
@@ -51,9 +67,10 @@ void copy_result(const PlannedRun& from, const PlannedRun& to) {
   std::filesystem::copy_file(from.result, partial, std::filesystem::copy_options::overwrite_existing);
   {
     dem::h5::Handle f = dem::h5::open_file_write(partial);
+    const std::string resolved = dem::h5::has_text(f, "scene_yaml") ? dem::h5::read_text(f, "scene_yaml") : "";
     dem::h5::set_attribute(f, "input_hash", to.hash);
     dem::h5::set_attribute(f, "scene_file", to.scene_file);
-    dem::h5::write_text(f, "scene_yaml", to.scene_text);
+    dem::h5::write_text(f, "scene_yaml", copied_scene(resolved, to.scene_text));
     dem::h5::set_attribute(f, "copied_from", from.result);
   }
   std::filesystem::rename(partial, to.result);

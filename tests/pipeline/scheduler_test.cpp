@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include <yaml-cpp/yaml.h>
+
 #include "config/study_config.hpp"
 #include "exec/scheduler.hpp"
 #include "exec/tracker.hpp"
@@ -154,6 +156,14 @@ TEST_CASE("pipeline: several studies share one list of runs, each test after its
     CHECK(fs::exists(root / "first" / "out" / "dense_test1.h5"));
     CHECK(fs::exists(root / "second" / "out" / "dense_test1.h5"));
     for (const auto& r : runs) CHECK(pipeline::up_to_date(r.result, r.hash));  // a copy carries its own input hash
+    // and the scene the engine resolved for the run it copies (defaults filled in), under its own name
+    for (const auto& r : runs) {
+      if (r.copy_of < 0) continue;
+      const auto text = [](const std::string& file) { return dem::h5::read_text(dem::h5::open_file_read(file), "scene_yaml"); };
+      const std::string copy = text(r.result), source = text(runs[static_cast<std::size_t>(r.copy_of)].result);
+      CHECK(copy.substr(copy.find('\n')) == source.substr(source.find('\n')));
+      CHECK(copy.rfind("name: " + YAML::Load(r.scene_text)["name"].as<std::string>() + "\n", 0) == 0);
+    }
     o = pipeline::execute(runs, dem_binary, 2);  // and is reused like any result
     CHECK(o.reused == 8);
     CHECK(o.ran + o.copied == 0);

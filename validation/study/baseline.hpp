@@ -17,7 +17,9 @@ namespace validation {
 std::string baseline_of(const std::string& scene_yaml, const std::string& where = "scene");
 
 // The baseline of a result's resolved scene (`scene_yaml`); "" if the file is not there or has no
-// scene; throws, naming the file, if it is there but cannot be read.
+// scene; throws, naming the file, if it is there but cannot be read. A pipeline's copy of a run
+// (`copied_from`) has the baseline of the run it copies while that file is here (a copy made before
+// copies recorded the resolved scene holds the study's text of it).
 std::string baseline_of_result(const std::string& result);
 
 }  // namespace validation

@@ -3,8 +3,10 @@
 // how the YAML is written (key order, number spelling) does not.
 #include <catch2/catch.hpp>
 
+#include <filesystem>
 #include <string>
 
+#include "io/hdf5.hpp"
 #include "study/baseline.hpp"
 
 using validation::baseline_of;
@@ -87,4 +89,27 @@ TEST_CASE("baseline: key order and number spelling do not change it", "[baseline
 
 TEST_CASE("baseline: text that is not YAML is refused, naming it", "[baseline]") {
   REQUIRE_THROWS_WITH(baseline_of("a: [1, 2", "x.h5"), Catch::Contains("x.h5"));
+}
+
+TEST_CASE("baseline: a copied result has the baseline of the run it copies while that run is here", "[baseline]") {
+  // The pipeline's copy of a run (the same scene but for its name) recorded, before, the scene as the
+  // study wrote it: no defaults filled in (here: no law, no max_energy_error), so its own text has
+  // another baseline than the resolved scene of the run it copies.
+  const std::filesystem::path dir = std::filesystem::path(DEM_BINARY_DIR) / "test_tmp" / "baseline_copy";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string as_written = replaced(replaced(scene, "law: linear, ", ""), "max_energy_error: 0.01, ", "");
+  REQUIRE(baseline_of(as_written) != baseline_of(scene));
+  const auto write = [&](const std::string& name, const std::string& text, const std::string& copied_from) {
+    dem::h5::Handle f = dem::h5::create_file((dir / name).string());
+    dem::h5::write_text(f, "scene_yaml", text);
+    if (!copied_from.empty()) dem::h5::set_attribute(f, "copied_from", copied_from);
+    return (dir / name).string();
+  };
+  const std::string source = write("source.h5", scene, "");
+  const std::string copy = write("copy.h5", as_written, source);
+  CHECK(validation::baseline_of_result(copy) == baseline_of(scene));
+  // The run it copies gone: the copy's own text is all there is.
+  std::filesystem::remove(source);
+  CHECK(validation::baseline_of_result(copy) == baseline_of(as_written));
 }
