@@ -41,6 +41,7 @@ TEST_CASE("report: a section from another baseline refused, then kept under ⚠ 
   // The committed convergence summary has its own (real) baseline: put it on the paper's here, so
   // that the critical state is the one section from another baseline.
   set_key(out / "convergence" / "summary.json", "baseline", "1111111111111111");
+  set_key(out / "literature" / "validation.json", "stamp", paper);  // judged on results of their own, stamped
   std::ofstream(out / "critical_state" / "stamp.json")
       << R"({"engine": "0.1.0+aaaa", "baseline": "2222222222222222", "spheres": 8000, "samples": 1, "date": "2026-11-25"})" << "\n";
   const std::string before = dem::test::read_bytes((out / "index.md").string());
