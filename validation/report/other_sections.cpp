@@ -19,6 +19,8 @@ const std::vector<OtherStudySection>& other_study_sections() {
       {"Appendix: Calibration: parameters from references", "file.calibration", "calibration/synthetic_triaxial/stamp.json", "",
        "pipeline/studies/calibration_triaxial.yaml"},
       {"Appendix: Against published DEM values", "file.literature", "literature/validation.json", "stamp", ""},
+      {"Appendix: Thornton's face-centred cubic array", "file.literature_fcc", "literature/fcc/validation.json", "stamp",
+       "pipeline/studies/fcc_thornton.yaml"},
   };
   return list;
 }

@@ -54,7 +54,7 @@ TEST_CASE("report stamps: every section another study makes is listed once, unde
     REQUIRE(tmpl.find("{{" + s.table_key + "}}") != std::string::npos);
     REQUIRE(++keys[s.table_key] == 1);
   }
-  REQUIRE(keys.size() == 7);  // decisions, convergence, stability, critical state, liquefaction, literature, calibration
+  REQUIRE(keys.size() == 8);  // decisions, convergence, stability, critical state, liquefaction, literature, calibration, FCC array
 }
 
 TEST_CASE("report stamps: a stamp on the paper study's baseline is said under its heading", "[report][stamp]") {
@@ -70,6 +70,15 @@ TEST_CASE("report stamps: a stamp on the paper study's baseline is said under it
                         "design.*\n\nbody of Appendix: Stability\n") != std::string::npos);
   REQUIRE(out.text.find("## Appendix: What the paper's open choices change\n\n*Made by engine `0.1.0+aaaa` on baseline "
                         "`1111111111111111` (1,000 spheres, 3 samples, 2026-11-02).*\n") != std::string::npos);
+  // Thornton's FCC array (108 equal spheres of its own lattice): its stamp inside its validation.json,
+  // its baseline its own study's, said and never compared with the paper study's.
+  write_json(dir / "literature" / "fcc" / "validation.json",
+             {{"stamp", validation::stamp_json({"0.1.0+aaaa", "4444444444444444", 108, 1, "2026-11-28"})}});
+  const auto fcc = validation::stamp_sections(report_text(), dir, all_run(), paper, false);
+  REQUIRE(fcc.refused.empty());
+  REQUIRE(fcc.text.find("## Appendix: Thornton's face-centred cubic array\n\n*Made by engine `0.1.0+aaaa` on baseline `4444444444444444` "
+                        "(108 spheres, 1 sample, 2026-11-28). Its baseline is its own scene's (`pipeline/studies/fcc_thornton.yaml`), "
+                        "not the paper study's, by design.*\n") != std::string::npos);
   REQUIRE(out.text.find("⚠") == std::string::npos);
   // Stamped again (a section's line already there): replaced, not doubled.
   const auto again = validation::stamp_sections(out.text, dir, all_run(), paper, false);
