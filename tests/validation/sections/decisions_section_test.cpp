@@ -14,6 +14,7 @@
 
 #include "engine/io/io_test_support.hpp"
 #include "io/hdf5.hpp"
+#include "study/baseline.hpp"
 
 namespace fs = std::filesystem;
 
@@ -122,6 +123,20 @@ rows:
   CHECK(j.at("stamp").at("samples") == 3);
   CHECK(j.at("stamp").at("engine") == "not recorded");
   CHECK(j.at("stamp").at("baseline") == "not recorded");
+  {
+    // With scenes: the stamp's baseline is that of the study the readings are shifts from (its
+    // seed1 preparation), not the reading's own, which changes the preparation by design.
+    const std::string paper_scene = "name: seed1/loose_prepare\nmaterial: {kn: 1000000}\n";
+    for (const auto& [file, text] : {std::pair{dir / "paper" / "seed1" / "loose_prepare.h5", paper_scene},
+                                     {dir / "readings" / "seed1" / "r_loose_prepare.h5", std::string("name: x\nmaterial: {kn: 2000000}\n")}}) {
+      dem::h5::Handle f = dem::h5::open_file_write(file.string());
+      dem::h5::write_text(f, "scene_yaml", text);
+    }
+    const auto again = dem::test::run_command(common + " --baseline-results '" + (dir / "paper").string() + "' 2>&1");
+    REQUIRE(again.exit_code == 0);
+    std::ifstream stamped(dir / "out" / "decisions.json");
+    CHECK(nlohmann::json::parse(stamped).at("stamp").at("baseline") == validation::baseline_of(paper_scene));
+  }
   REQUIRE(j.at("rows").size() == 2);  // the medium row left out
   const nlohmann::json& e0 = j.at("rows")[0];
   CHECK(e0.at("name") == "e0, loose");
