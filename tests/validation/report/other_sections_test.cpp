@@ -70,6 +70,10 @@ TEST_CASE("report stamps: a stamp on the paper study's baseline is said under it
                         "design.*\n\nbody of Appendix: Stability\n") != std::string::npos);
   REQUIRE(out.text.find("## Appendix: What the paper's open choices change\n\n*Made by engine `0.1.0+aaaa` on baseline "
                         "`1111111111111111` (1,000 spheres, 3 samples, 2026-11-02).*\n") != std::string::npos);
+  REQUIRE(out.text.find("⚠") == std::string::npos);
+  // Stamped again (a section's line already there): replaced, not doubled.
+  const auto again = validation::stamp_sections(out.text, dir, all_run(), paper, false);
+  REQUIRE(again.text == out.text);
   // Thornton's FCC array (108 equal spheres of its own lattice): its stamp inside its validation.json,
   // its baseline its own study's, said and never compared with the paper study's.
   write_json(dir / "literature" / "fcc" / "validation.json",
@@ -79,10 +83,6 @@ TEST_CASE("report stamps: a stamp on the paper study's baseline is said under it
   REQUIRE(fcc.text.find("## Appendix: Thornton's face-centred cubic array\n\n*Made by engine `0.1.0+aaaa` on baseline `4444444444444444` "
                         "(108 spheres, 1 sample, 2026-11-28). Its baseline is its own scene's (`pipeline/studies/fcc_thornton.yaml`), "
                         "not the paper study's, by design.*\n") != std::string::npos);
-  REQUIRE(out.text.find("⚠") == std::string::npos);
-  // Stamped again (a section's line already there): replaced, not doubled.
-  const auto again = validation::stamp_sections(out.text, dir, all_run(), paper, false);
-  REQUIRE(again.text == out.text);
 }
 
 TEST_CASE("report stamps: a section without a stamp says so; a section not run has no line", "[report][stamp]") {

@@ -82,6 +82,15 @@ void write_manifest(const fs::path& dir, const std::vector<std::pair<int, std::s
   }
 }
 
+// A reference file with the literature row of the frictionless critical angle (5.76 deg) at `tolerance`.
+std::string write_references(const fs::path& file, double tolerance) {
+  std::ofstream r(file);
+  r << "source: \"test\"\nrows:\n  - name: \"critical angle\"\n    quantity: critical_state_friction_angle\n    density: dense\n"
+    << "    test: compression_mu0\n    reference: 5.76\n    check: within\n    tolerance: " << tolerance << "\n    resolution: 0.01\n"
+    << "    source: \"Peyneau & Roux: the quasi-static limit\"\n    reason: \"a hand-made row\"\n";
+  return file.string();
+}
+
 double compression_phi_deg(double eta) { return std::asin(3 * eta / (6 + eta)) * 180 / std::numbers::pi; }
 
 std::string run(const std::string& args, const fs::path& log) {
@@ -115,13 +124,7 @@ TEST_CASE("compare-runs critical-state: the quasi-static φ beside the literatur
     write_shear(seed / "dense_extension_mu0.5.h5", 0.5, 1, ext[s], true);
   }
   // The literature row of the frictionless critical angle, at two tolerances.
-  const auto references = [&](const std::string& name, double tolerance) {
-    std::ofstream r(dir / name);
-    r << "source: \"test\"\nrows:\n  - name: \"critical angle\"\n    quantity: critical_state_friction_angle\n    density: dense\n"
-      << "    test: compression_mu0\n    reference: 5.76\n    check: within\n    tolerance: " << tolerance << "\n    resolution: 0.01\n"
-      << "    source: \"Peyneau & Roux: the quasi-static limit\"\n    reason: \"a hand-made row\"\n";
-    return (dir / name).string();
-  };
+  const auto references = [&](const std::string& name, double tolerance) { return write_references(dir / name, tolerance); };
   const std::string wide = references("wide.yaml", 1.0), narrow = references("narrow.yaml", 0.1);
 
   const double phi_qs = compression_phi_deg(0.2);  // 5.5535...
@@ -212,13 +215,7 @@ TEST_CASE("compare-runs critical-state: a quasi-static row judged at I to 0 on 4
   half_text << std::fixed;
   half_text.precision(2);
   half_text << "95 % interval ± " << half << "°";
-  const auto references = [&](const std::string& name, double tolerance) {
-    std::ofstream r(dir / name);
-    r << "source: \"test\"\nrows:\n  - name: \"critical angle\"\n    quantity: critical_state_friction_angle\n    density: dense\n"
-      << "    test: compression_mu0\n    reference: 5.76\n    check: within\n    tolerance: " << tolerance << "\n    resolution: 0.01\n"
-      << "    source: \"Peyneau & Roux: the quasi-static limit\"\n    reason: \"a hand-made row\"\n";
-    return (dir / name).string();
-  };
+  const auto references = [&](const std::string& name, double tolerance) { return write_references(dir / name, tolerance); };
   // |φ - 5.76| = 0.21°: within 1° (consistent); beyond 0.1° plus the interval's half-width (inconsistent).
   REQUIRE(std::abs(phi_qs - 5.76) < 1);
   REQUIRE(std::abs(phi_qs - 5.76) > 0.1 + half);
