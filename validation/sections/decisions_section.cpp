@@ -182,16 +182,6 @@ std::string group_sections(const std::vector<std::string>& groups, const std::ve
   return md;
 }
 
-// The stamp of a decisions study: its engine, size and date, and the baseline its readings are
-// shifts from: its own baseline reading's, or for a study of readings only (`baseline_results`),
-// that of the study whose samples of the same seeds are its baseline. A reading that changes the
-// preparation has another baseline by design; the first one's would mark the section ⚠.
-validation::Stamp decisions_stamp(const std::string& results, const std::string& baseline, const std::string& baseline_results) {
-  validation::Stamp s = validation::stamp_of_results(results, baseline);
-  if (!baseline_results.empty()) s.baseline = validation::stamp_of_results(baseline_results).baseline;
-  return s;
-}
-
 // The size check: the baseline of this study against the paper study's ensemble (its own sample
 // size), row by row, in units of the paper ensemble's standard deviation.
 std::string size_check(const std::vector<RowDecision>& decided, std::size_t samples) {
@@ -355,7 +345,7 @@ int decisions(const Manifest& manifest, const std::string& results, const std::s
     dem::write_file_atomically(
         (fs::path(out) / "decisions.json").string(),
         decisions_json(baseline, baseline_results.empty() ? "" : relative_paths(baseline_results, baseline_results), size, decided, missing.size(),
-                       decisions_stamp(results, baseline, baseline_results))
+                       validation::stamp_of_results(results, baseline, baseline_results))
                 .dump(2) +
             "\n");
   } catch (const std::exception& e) {

@@ -43,6 +43,12 @@ long count_field(const nlohmann::json& j, const char* key) {
 
 }  // namespace
 
+Stamp stamp_of_results(const std::string& dir, const std::string& variant, const std::string& baseline_results) {
+  Stamp s = stamp_of_results(dir, variant);
+  if (!baseline_results.empty()) s.baseline = stamp_of_results(baseline_results).baseline;
+  return s;
+}
+
 Stamp stamp_of_results(const std::string& dir, const std::string& variant) {
   const std::vector<ManifestLine> manifest = read_manifest(dir);  // throws naming the folder
   Stamp s;

@@ -28,6 +28,11 @@ inline constexpr const char* not_recorded = "not recorded";
 // the spheres, the manifest the samples, the newest complete result the date. Throws, naming the
 // folder, when it has no manifest; a field its results do not give stays not recorded.
 Stamp stamp_of_results(const std::string& dir, const std::string& variant = "");
+// The stamp of a study of variants: as above, but for a study of readings only, whose baseline is
+// another study's samples of the same seeds (`baseline_results`), the baseline is that study's.
+// A reading that changes the preparation has another baseline by design; its own would mark the
+// section as made on another baseline.
+Stamp stamp_of_results(const std::string& dir, const std::string& variant, const std::string& baseline_results);
 
 // Several studies' stamps made one (a section fed by several, e.g. the liquefaction studies of
 // two densities): a field on which they differ lists every value ("a, b"), so that it differs from
