@@ -66,6 +66,7 @@ std::string against_reference(const RateSeries& s, const std::vector<validation:
                                    [&](const RatePoint& p) { return usable(p) && p.run->run == row.density + "_" + row.test; });
     if (read == s.points.end()) continue;
     const ShearRun& table_run = *read->run;
+    const auto signed_deg = [](double x) { return (x >= 0 ? "+" : "") + fixed(x, 2) + "°"; };
     const double off = s.phi_deg - row.reference;
     const double at_rate = table_run.summary->phi_deg.mean - row.reference;
     std::ostringstream md;
@@ -76,16 +77,16 @@ std::string against_reference(const RateSeries& s, const std::vector<validation:
     if (samples.size() >= rates_to_judge && fewest >= samples_per_rate_to_judge) {
       const bool reaches = std::abs(off) <= row.tolerance + half_width;
       md << ". Judged at I → 0 on " << samples.size() << " rates of " << each << " samples each: the quasi-static φ is "
-         << (off >= 0 ? "+" : "") << fixed(off, 2) << "° from it (" << interval << "), "
+         << signed_deg(off) << " from it (" << interval << "), "
          << (reaches ? "✅ consistent: the interval reaches the reference's region" : "❌ inconsistent: the interval does not reach the reference's region");
     } else {
       md << ". ⚠ Not judged at I → 0: the fit has " << samples.size() << (samples.size() == 1 ? " rate" : " rates") << " of " << each
          << (fewest == 1 && most == 1 ? " sample" : " samples") << " each, and a judgement needs at least " << rates_to_judge
          << " rates with " << samples_per_rate_to_judge << " or more samples at each. For information only: the quasi-static φ is "
-         << (off >= 0 ? "+" : "") << fixed(off, 2) << "° from it (" << interval << ")";
+         << signed_deg(off) << " from it (" << interval << ")";
     }
-    md << "; the " << number(table_run.rate_per_s) << " s⁻¹ run's is " << (at_rate >= 0 ? "+" : "") << fixed(at_rate, 2)
-       << "° (not quasi-static: the literature section does not judge the row on it).";
+    md << "; the " << number(table_run.rate_per_s) << " s⁻¹ run's is " << signed_deg(at_rate)
+       << " (not quasi-static: the literature section does not judge the row on it).";
     return md.str();
   }
   return "";

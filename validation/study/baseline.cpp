@@ -112,43 +112,23 @@ std::string baseline_of(const std::string& scene_yaml, const std::string& where)
   return buf;
 }
 
-namespace {
-
-// The baseline of the scene a result file holds ("" when it holds none).
-std::string baseline_of_result_text(const std::string& result) {
-  std::string text;
+std::string baseline_of_result(const std::string& result) {
+  std::error_code ec;
+  if (!std::filesystem::exists(result, ec)) return "";
+  std::string text, source;
   try {
     dem::h5::Handle f = dem::h5::open_file_read(result);
-    if (!dem::h5::has_text(f, "scene_yaml")) return "";
-    text = dem::h5::read_text(f, "scene_yaml");
+    if (dem::h5::has_attribute(f, "copied_from")) source = dem::h5::get_string_attribute(f, "copied_from");
+    if (dem::h5::has_text(f, "scene_yaml")) text = dem::h5::read_text(f, "scene_yaml");
   } catch (const std::exception& e) {
     throw std::runtime_error(result + ": cannot be read as a result (" + e.what() + ")");
   }
-  return baseline_of(text, result);
-}
-
-}  // namespace
-
-std::string baseline_of_result(const std::string& result) {
-  // A copy (the pipeline's, of a run of the same scene but for its name) holds the scene as the
-  // study wrote it, not as the engine resolved it (defaults filled, numbers as doubles): its
-  // baseline is that of the run it copies while that run is here. A few hops at most: a copy names
-  // an original.
-  std::string file = result;
-  for (int hop = 0; hop < 8; ++hop) {
-    std::error_code ec;
-    if (!std::filesystem::exists(file, ec)) return hop == 0 ? "" : baseline_of_result_text(result);
-    std::string source;
-    try {
-      dem::h5::Handle f = dem::h5::open_file_read(file);
-      if (dem::h5::has_attribute(f, "copied_from")) source = dem::h5::get_string_attribute(f, "copied_from");
-    } catch (const std::exception& e) {
-      throw std::runtime_error(file + ": cannot be read as a result (" + e.what() + ")");
-    }
-    if (source.empty() || !std::filesystem::exists(source, ec)) return baseline_of_result_text(file);
-    file = source;
-  }
-  return baseline_of_result_text(result);
+  // A copy (the pipeline's, of a run of the same scene but for its name) made before copies kept
+  // the resolved scene holds the study's text of it (no defaults filled in): its baseline is that of
+  // the run it copies while that run is here (a copy is made from a finished result, so the chain
+  // back to the run that computed it has no loop).
+  if (!source.empty() && source != result && std::filesystem::exists(source, ec)) return baseline_of_result(source);
+  return text.empty() ? "" : baseline_of(text, result);
 }
 
 }  // namespace validation
