@@ -226,8 +226,11 @@ quick: build
 # says so; a missing or unfinished one does not fail the report). build/bin/report writes
 # index.md from reports/templates/ and computes every number in its prose (validation/report/);
 # reports/render_html.sh renders it into reports/index.html (cmark-gfm), the page a referee opens;
-# BASELINE is an earlier baseline's validation.json it compares every row with.
+# BASELINE is an earlier baseline's validation.json it compares every row with. A section whose
+# stamp is another baseline or engine source than the paper study's is kept headed "⚠ from another
+# ..." (and said as a warning) by OTHER_SECTIONS; OTHER_SECTIONS= makes report refuse it instead.
 BASELINE ?= reports/baselines/orthorhombic_validation.json
+OTHER_SECTIONS ?= --allow-other-baseline
 # The decisions files validate takes the rows' causes from: the decisions study's and the readings'.
 VALIDATION_DECISIONS = --decisions reports/decisions/decisions.json $$(for r in $(READINGS); do \
 	    f=reports/readings/$$r/decisions.json; [ ! -f $$f ] || echo --decisions $$f; done)
@@ -245,7 +248,7 @@ report: tools
 	-$(MAKE) --no-print-directory liquefaction-report
 	-$(MAKE) --no-print-directory literature-report
 	$(BUILD)/bin/report --results $(RESULTS) --references reference_data/paper.yaml --out reports --sample $(strip $(SAMPLE)) \
-	  --baseline $(BASELINE) --decisions $(DECISIONS) --stability $(STABILITY) $(REPORT_SOURCE)
+	  --baseline $(BASELINE) --decisions $(DECISIONS) --stability $(STABILITY) $(REPORT_SOURCE) $(OTHER_SECTIONS)
 	reports/render_html.sh reports/index.md reports/index.html
 
 # Published DEM values: reference_data/literature.yaml against the critical-state ensemble
@@ -282,7 +285,7 @@ report-sections: tools
 	  $(BUILD)/bin/validate --results $(RESULTS) --references reference_data/paper.yaml --out reports $(VALIDATION_DECISIONS); \
 	else $(BUILD)/bin/validate --from-json reports/validation.json --references reference_data/paper.yaml --out reports $(VALIDATION_DECISIONS); fi || true
 	$(BUILD)/bin/report --results $(RESULTS) --references reference_data/paper.yaml --out reports --sample $(strip $(SAMPLE)) \
-	  --baseline $(BASELINE) --decisions $(DECISIONS) --stability $(STABILITY) $(REPORT_SOURCE)
+	  --baseline $(BASELINE) --decisions $(DECISIONS) --stability $(STABILITY) $(REPORT_SOURCE) $(OTHER_SECTIONS)
 	reports/render_html.sh reports/index.md reports/index.html
 
 # The paper's open choices (docs/method.md#open-choices): each reading one at a time from the baseline, 3
@@ -332,10 +335,10 @@ critical-state: tools
 
 # Undrained cyclic triaxial tests of the loose and the medium sample to liquefaction, and their
 # unloaded holds, on 3 samples each (pipeline/studies/liquefaction_{loose,medium}.yaml, in one
-# call), then their section (reports/liquefaction/: per density and CSR the median N_L over the
+# call with the paper study, whose samples they shear: copied, not prepared again), then their section (reports/liquefaction/: per density and CSR the median N_L over the
 # samples with its range, every test, CSR against N_L, r_u against cycles).
 liquefaction: tools
-	$(BUILD)/bin/pipeline pipeline/studies/liquefaction_loose.yaml pipeline/studies/liquefaction_medium.yaml --profile paper \
+	$(BUILD)/bin/pipeline pipeline/studies/paper.yaml pipeline/studies/liquefaction_loose.yaml pipeline/studies/liquefaction_medium.yaml --profile paper \
 	  -j $(JOBS) $(if $(strip $(EXECUTOR)),--executor $(strip $(EXECUTOR)))
 	$(MAKE) --no-print-directory liquefaction-report
 

@@ -128,7 +128,7 @@ std::optional<Outcome> run_calibration(const Calibration& c, const RunOptions& o
     }
     if (!lock) lock = pipeline::lock_results_folder(out.results);
     pipeline::write_scenes(runs);
-    pipeline::write_manifest(runs, with_sets(c, study, out.sets), out.results);
+    pipeline::write_manifest(runs, with_sets(c, study, out.sets), out.results, out.engine);
     std::printf("[calibrate] iteration %d: %d sets, %zu runs planned (finished ones are reused)\n", it, c.batch, runs.size());
     std::fflush(stdout);
     pipeline::Outcome ran;

@@ -433,12 +433,14 @@ void write_scenes(const std::vector<PlannedRun>& runs) {
   }
 }
 
-void write_manifest(const std::vector<PlannedRun>& runs, const Study& study, const std::string& out_dir) {
+void write_manifest(const std::vector<PlannedRun>& runs, const Study& study, const std::string& out_dir,
+                    const std::string& engine_version) {
   fs::create_directories(out_dir);
   std::map<std::string, std::string> settings;
   for (const Variant& v : study.variants) settings[v.name] = describe(v);
   std::ostringstream text;
-  text << "# variant\tdensity\ttest\trun\tresult\tstarts_from\tmay_fail\tsettings\tseed\n";
+  text << "# engine source " << engine_version << "\n";
+  text << "# variant\tdensity\ttest\trun\tresult\tstarts_from\tmay_fail\tsettings\tseed\tinput_hash\n";
   // Grouped by variant in the study's order (the order of the report's tables).
   std::vector<std::string> order;
   for (const Variant& v : study.variants) order.push_back(v.name);
@@ -450,7 +452,7 @@ void write_manifest(const std::vector<PlannedRun>& runs, const Study& study, con
            << '\t' << r.result << '\t'
            << (r.depends_on >= 0 ? runs[static_cast<std::size_t>(r.depends_on)].name : std::string("-")) << '\t'
            << (r.may_fail ? 1 : 0) << '\t' << (settings.count(v) ? settings[v] : "as written") << '\t'
-             << (r.seed ? std::to_string(*r.seed) : std::string("-")) << '\n';
+             << (r.seed ? std::to_string(*r.seed) : std::string("-")) << '\t' << r.hash << '\n';
   const fs::path file = fs::path(out_dir) / "runs.tsv", tmp = fs::path(out_dir) / "runs.tsv.tmp";
   std::ofstream(tmp) << text.str();
   fs::rename(tmp, file);  // atomic: a reader never sees half a manifest

@@ -53,8 +53,11 @@ std::vector<PlannedRun> join_studies(const std::vector<StudyPlan>& plans);
 void write_scenes(const std::vector<PlannedRun>& runs);
 
 // Writes <out_dir>/runs.tsv: one line per run and variant it belongs to, with the variant's
-// settings (what build/bin/compare-runs reads).
-void write_manifest(const std::vector<PlannedRun>& runs, const Study& study, const std::string& out_dir);
+// settings and the run's input hash (what build/bin/compare-runs reads), under a first line naming
+// the engine the hashes are planned for ("# engine source ENGINE_VERSION"): a result whose
+// input_hash is its line's was made by that engine from those inputs.
+void write_manifest(const std::vector<PlannedRun>& runs, const Study& study, const std::string& out_dir,
+                    const std::string& engine_version);
 
 using dem::content_hash;  // core/content_hash.hpp
 

@@ -3,8 +3,11 @@
 
 #include <filesystem>
 #include <fstream>
+#include <algorithm>
 #include <set>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "config/scene_config.hpp"
 #include "config/study_config.hpp"
@@ -55,6 +58,30 @@ TEST_CASE("the paper study plans a preparation per density and every test after 
   CHECK(names.size() == runs.size());
   const dem::SceneConfig loose = dem::scene_from_text(runs[0].scene_text, runs[0].scene_file);
   CHECK(std::get<dem::LinearFrictionLaw>(loose.material.law).tangential.mu == 0.5);
+}
+
+TEST_CASE("the manifest names the engine its input hashes are planned for, and each run's hash", "[pipeline]") {
+  const pipeline::Study study = pipeline::load_study(study_file);
+  const auto runs = pipeline::plan_study(study, study.profile("quick"), out + "/manifest", "engine-A schema 4");
+  pipeline::write_manifest(runs, study, out + "/manifest", "engine-A schema 4");
+  std::ifstream in(out + "/manifest/runs.tsv");
+  std::string line;
+  REQUIRE(std::getline(in, line));
+  CHECK(line == "# engine source engine-A schema 4");
+  REQUIRE(std::getline(in, line));
+  CHECK(line.rfind("# variant", 0) == 0);
+  std::size_t listed = 0;
+  while (std::getline(in, line)) {
+    std::vector<std::string> f;
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, '\t');) f.push_back(cell);
+    REQUIRE(f.size() == 10);
+    const auto run = std::find_if(runs.begin(), runs.end(), [&](const pipeline::PlannedRun& r) { return r.name == f[3]; });
+    REQUIRE(run != runs.end());
+    CHECK(f[9] == run->hash);
+    ++listed;
+  }
+  CHECK(listed == runs.size());
 }
 
 TEST_CASE("input hashes change with the engine, the scene and the sample a test starts from", "[pipeline]") {

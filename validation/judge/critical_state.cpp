@@ -172,11 +172,4 @@ double inertial_number(double rate_per_s, double diameter_m, double density_kg_p
   return p_Pa > 0 ? std::abs(rate_per_s) * diameter_m * std::sqrt(density_kg_per_m3 / p_Pa) : std::nan("");
 }
 
-double compression_friction_deg(double q_over_p) { return std::asin(3 * q_over_p / (6 + q_over_p)) * 180 / std::numbers::pi; }
-
-double compression_friction_slope_deg(double q_over_p) {
-  const double sin_phi = 3 * q_over_p / (6 + q_over_p);
-  return 18 / ((6 + q_over_p) * (6 + q_over_p)) / std::sqrt(1 - sin_phi * sin_phi) * 180 / std::numbers::pi;
-}
-
 }  // namespace validation

@@ -94,11 +94,4 @@ ShearEnsemble shear_ensemble(const std::vector<ShearSummary>& samples);
 // I = rate d sqrt(rho / p). NaN for p <= 0.
 double inertial_number(double rate_per_s, double diameter_m, double density_kg_per_m3, double p_Pa);
 
-// The mobilised friction angle [deg] of triaxial compression (s2 = s3, q = s1 - s3) at stress
-// ratio eta = q/p: s1 = p + 2q/3, s3 = p - q/3, so sin phi = (s1 - s3)/(s1 + s3) = 3 eta / (6 + eta).
-double compression_friction_deg(double q_over_p);
-// Its derivative d phi / d eta [deg per unit eta]: d(3 eta / (6 + eta)) / d eta = 18 / (6 + eta)^2,
-// over cos phi; what a standard error of eta becomes in phi (to first order).
-double compression_friction_slope_deg(double q_over_p);
-
 }  // namespace validation

@@ -57,7 +57,14 @@ Stamp read_paper_stamp(const fs::path& report) { return stamp_in(report / "valid
 
 std::string stamp_text(const Stamp& s) {
   if (!s.recorded()) return "not recorded: made before stamps (its engine and baseline are unknown)";
-  const std::string engine = s.engine.empty() ? "an engine not recorded" : "engine `" + s.engine + "`";
+  std::string engine = s.engine.empty() ? "an engine not recorded" : "engine `" + s.engine + "`";
+  if (!s.engine_source.empty() || s.other_engine_results > 0) {
+    engine += " (source " + (s.engine_source.empty() ? std::string("not recorded") : "`" + s.engine_source + "`");
+    if (s.other_engine_results > 0)
+      engine += "; " + std::to_string(s.other_engine_results) + (s.other_engine_results == 1 ? " result" : " results") +
+                " not made by it from their inputs";
+    engine += ")";
+  }
   const std::string baseline = s.baseline.empty() ? "a baseline not recorded" : "baseline `" + s.baseline + "`";
   const std::string spheres = s.spheres > 0 ? thousands(s.spheres) + " spheres" : "spheres not recorded";
   const std::string samples = s.samples > 0 ? std::to_string(s.samples) + " sample" + (s.samples == 1 ? "" : "s") : "samples not recorded";
@@ -66,7 +73,9 @@ std::string stamp_text(const Stamp& s) {
 
 std::string stamp_difference(const Stamp& section, const Stamp& paper, bool baselines) {
   const bool baseline = baselines && !section.baseline.empty() && !paper.baseline.empty() && section.baseline != paper.baseline;
-  return baseline ? "baseline" : "";
+  const bool engine = !paper.engine_source.empty() && section.recorded() &&
+                      (section.engine_source != paper.engine_source || section.other_engine_results > 0);
+  return baseline && engine ? "baseline and engine" : baseline ? "baseline" : engine ? "engine" : "";
 }
 
 std::vector<std::pair<OtherStudySection, std::string>> sections_from_elsewhere(const fs::path& report,
@@ -107,7 +116,7 @@ StampedReport stamp_sections(const std::string& text, const fs::path& report, co
                               "baseline / engine: " + both + "); `report --allow-other-baseline` keeps it, headed ⚠");
         continue;
       }
-      const char* mark = other_baseline_mark;
+      const std::string mark = other_mark(differs);
       const std::string name = section.heading.rfind("Appendix: ", 0) == 0 ? section.heading.substr(10) : section.heading;
       new_heading = std::string("## ") + (name == section.heading ? "" : "Appendix: ") + mark + name;
       line = "*⚠ " + stamp_sentence(stamp) + "; the paper study's numbers were " + stamp_text(paper) + " (kept by `report --allow-other-baseline`)." +

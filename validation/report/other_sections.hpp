@@ -38,11 +38,13 @@ std::string stamp_text(const Stamp& s);
 // The same as the first words of a sentence: "Made by engine ..." or "Stamp not recorded: ...".
 std::string stamp_sentence(const Stamp& s);
 
-// What differs between a section's stamp and the paper study's: "baseline" or "" (the same, or one
-// of the two not recorded: nothing to compare; not compared unless `baselines`, i.e. not for a study
-// of its own scene). Engines are not compared: the recorded version is the commit, which changes
-// with every commit whatever it touches (a committed section would be refused by the next commit's
-// report); each stamp line names its engine, so a difference is said, not hidden.
+// What differs between a section's stamp and the paper study's: "baseline", "engine", "baseline and
+// engine" or "". Baselines: "" when one of the two is not recorded (nothing to compare), and not
+// compared unless `baselines` (not for a study of its own scene). Engines by their source hash, not
+// the commit (which changes with every commit whatever it touches): once the paper study's is
+// recorded, a stamped section whose results are not all checked to be that engine's differs
+// (another source, some results stale, or no source recorded: not checked). A section with no
+// stamp at all says so in its line ("Stamp not recorded") and is not compared.
 std::string stamp_difference(const Stamp& section, const Stamp& paper, bool baselines = true);
 
 // The sections, of those whose table key is filled in `values`, whose stamp differs from `paper`
@@ -68,6 +70,8 @@ StampedReport stamp_sections(const std::string& text, const std::filesystem::pat
                              const Stamp& paper, bool allow_other);
 
 // The marks stamp_sections puts before a heading's name (section_name takes them off).
-inline constexpr const char* other_baseline_mark = "⚠ from another baseline: ";
+// The heading mark of a section whose `differs` (stamp_difference) is not the paper study's:
+// "⚠ from another baseline: ", "⚠ from another engine: ", ...
+inline std::string other_mark(const std::string& differs) { return "⚠ from another " + differs + ": "; }
 
 }  // namespace validation

@@ -14,6 +14,7 @@
 #include "study/baseline.hpp"
 #include "study/paths.hpp"
 #include "study/results.hpp"
+#include "study/stamp.hpp"
 
 namespace validation {
 namespace {
@@ -119,6 +120,8 @@ ConvergenceSummary summarise_convergence(const compare_runs::Manifest& manifest,
     }
   }
   s.engine = engines_of(s.runs);
+  const Stamp checked = stamp_of_results(results);
+  s.engine_source = checked.engine_source, s.other_engine_results = checked.other_engine_results;
   set_size(s);
   return s;
 }
@@ -132,6 +135,9 @@ ConvergenceSummary merge_summaries(ConvergenceSummary now, const ConvergenceSumm
     const auto it = at.find(key(r));
     if (it == at.end()) now.runs.push_back(r);
     else if (!now.runs[it->second].status.empty()) now.runs[it->second] = r;
+    else continue;
+    // A run kept from `before` was checked against before's engine, if at all.
+    if (before.engine_source != now.engine_source) now.engine_source.clear();
   }
   now.engine = engines_of(now.runs);
   if (now.baseline.empty()) now.baseline = before.baseline;
@@ -145,6 +151,8 @@ std::string summary_json(const ConvergenceSummary& s) {
   j["what"] = "the convergence study's runs: settings, cost (core-seconds: preparation + test) and headline quantities";
   j["results"] = s.results;
   j["engine"] = s.engine;
+  j["engine_source"] = s.engine_source.empty() ? not_recorded : s.engine_source;
+  if (s.other_engine_results > 0) j["other_engine_results"] = s.other_engine_results;
   j["baseline"] = s.baseline;
   j["date"] = s.date;
   j["spheres"] = s.spheres;
@@ -176,6 +184,9 @@ ConvergenceSummary read_convergence_summary(const std::string& file) {
     s.results = need(j, "results", "the file").get<std::string>();
     s.engine = need(j, "engine", "the file").get<std::string>();
     s.baseline = need(j, "baseline", "the file").get<std::string>();
+    s.engine_source = j.value("engine_source", std::string());  // summaries from before it was recorded: not checked
+    if (s.engine_source == not_recorded) s.engine_source.clear();
+    s.other_engine_results = j.value("other_engine_results", 0L);
     s.date = need(j, "date", "the file").get<std::string>();
     s.spheres = j.value("spheres", 0L);  // the reference's size (the report's stamp)
     s.samples = j.value("samples", 0L);

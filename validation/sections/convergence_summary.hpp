@@ -27,6 +27,8 @@ struct ConvergenceSummary {
   int schema = 1;
   std::string results;    // the results folder it was read from, relative
   std::string engine;     // the runs' software versions, with their counts when several
+  std::string engine_source;      // the engine source every result was checked to be made by (study/stamp.hpp; "": not checked)
+  long other_engine_results = 0;  // results not by it from their manifest's inputs
   std::string baseline;   // baseline_of (study/baseline.hpp) the reference's first preparation
   long spheres = 0;       // the reference's spheres and samples (complete runs)
   long samples = 0;

@@ -49,8 +49,9 @@ struct RatePoint {
 struct RateSeries {
   double mu = NAN;
   std::vector<RatePoint> points;  // fastest first
-  std::optional<validation::LineFit> fit;
-  double phi_deg = NAN, phi_se_deg = NAN;  // the quasi-static φ (compression) from the intercept, and its se
+  std::optional<validation::LineFit> fit;      // q/p against sqrt(I)
+  std::optional<validation::LineFit> phi_fit;  // sin φ against sqrt(I): φ of the rows' mean principal stresses, the tables' φ
+  double phi_deg = NAN, phi_se_deg = NAN;      // the quasi-static φ, asin of phi_fit's intercept, and its se to first order
   std::string problems;           // why the fit is poor, or why there is none
 };
 

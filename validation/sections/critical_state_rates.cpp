@@ -100,7 +100,7 @@ std::vector<RateSeries> rate_series(const std::vector<ShearRun>& rates, const st
   const auto add = [&](const ShearRun& r, const std::string& study) {
     if (r.loading != "compression") return;
     auto s = std::find_if(out.begin(), out.end(), [&](const RateSeries& x) { return x.mu == r.mu; });
-    if (s == out.end()) s = out.insert(out.end(), RateSeries{r.mu, {}, std::nullopt, NAN, NAN, ""});
+    if (s == out.end()) s = out.insert(out.end(), RateSeries{r.mu, {}, std::nullopt, std::nullopt, NAN, NAN, ""});
     s->points.push_back({&r, study, inertial_of(r)});
   };
   for (const ShearRun& r : rates) add(r, rates_name);
@@ -109,13 +109,16 @@ std::vector<RateSeries> rate_series(const std::vector<ShearRun>& rates, const st
       if (r.loading == "compression" && r.mu == s.mu) s.points.push_back({&r, main_name, inertial_of(r)});
   for (RateSeries& s : out) {
     std::sort(s.points.begin(), s.points.end(), [](const RatePoint& a, const RatePoint& b) { return a.run->rate_per_s > b.run->rate_per_s; });
-    std::vector<double> x, y;
+    std::vector<double> x, y, sin_phi;
     std::vector<std::string> unfinished, not_held, no_value;  // the runs left out, by why (each run's note is in the table)
     for (const RatePoint& p : s.points) {
       if (!p.run->summary) unfinished.push_back(p.run->run);
       else if (!p.run->held) not_held.push_back(p.run->run);
       else if (!std::isfinite(p.inertial) || !p.run->summary->q_over_p.n) no_value.push_back(p.run->run);
-      else x.push_back(std::sqrt(p.inertial)), y.push_back(p.run->summary->q_over_p.mean);
+      else {
+        x.push_back(std::sqrt(p.inertial)), y.push_back(p.run->summary->q_over_p.mean);
+        sin_phi.push_back(std::sin(p.run->summary->phi_deg.mean * std::numbers::pi / 180));
+      }
     }
     const auto left_out = [&](const std::vector<std::string>& names, const std::string& why) {
       if (names.empty()) return;
@@ -131,8 +134,12 @@ std::vector<RateSeries> rate_series(const std::vector<ShearRun>& rates, const st
       continue;
     }
     s.fit = validation::fit_line(x, y);
-    s.phi_deg = validation::compression_friction_deg(s.fit->intercept);
-    s.phi_se_deg = validation::compression_friction_slope_deg(s.fit->intercept) * s.fit->intercept_se;
+    // φ is extrapolated as itself, not converted from the q/p intercept: the tables' φ (and a
+    // literature row's) is that of the principal stresses, which sin φ = 3η/(6 + η) equals only
+    // when σ2 = σ3 exactly (the frictionless 1/s run: 7.98° against 7.90° from its q/p).
+    s.phi_fit = validation::fit_line(x, sin_phi);
+    s.phi_deg = std::asin(s.phi_fit->intercept) * 180 / std::numbers::pi;
+    s.phi_se_deg = s.phi_fit->intercept_se / std::sqrt(1 - s.phi_fit->intercept * s.phi_fit->intercept) * 180 / std::numbers::pi;
     if (!s.fit->monotonic) s.problems += "poor fit: q/p does not change monotonically with I; ";
     if (s.fit->slope < 0) s.problems += "q/p falls as I grows (slope " + validation::significant(s.fit->slope, 2) + "): the line is no rate effect of the usual sign; ";
     if (s.fit->n == 2) s.problems += "two points: the line goes through both, no standard error; ";
@@ -164,7 +171,7 @@ validation::Table rates_data(const std::vector<RateSeries>& series) {
 validation::Table rates_quasi_static_data(const std::vector<RateSeries>& series) {
   validation::Table t;
   t.comments = {"compare-runs critical-state --rates: the quasi-static limit of each rate series, the fit of q/p against sqrt(I) at I = 0;",
-                "phi from q/p in triaxial compression, sin phi = 3 eta / (6 + eta); its se to first order from the intercept's"};
+                "phi: the same fit of sin phi (the rows' mean principal stresses, sin phi = (s1 - s3) / (s1 + s3)) at I = 0; its se to first order"};
   t.columns = {"mu [1]", "q_over_p [1]", "q_over_p_se [1]", "phi [deg]", "phi_se [deg]", "slope [1]", "points [1]", "monotonic [1]"};
   for (const RateSeries& s : series) {
     if (!s.fit) continue;
@@ -183,8 +190,8 @@ std::string rates_section(const std::vector<RateSeries>& series, const std::stri
         "the resolved scene's axial strain rate and particle density, d the mean diameter of the run's spheres, p its mean stress at "
         "the critical state; q/p at cs is the window mean ± the row-to-row sd, as above. A least-squares line of the window means "
         "against √I, taken to I → 0, gives the quasi-static q/p with "
-        "the intercept's standard error (n − 2 degrees of freedom), and φ from it (triaxial compression: sin φ = 3η/(6 + η), η = q/p; "
-        "its se to first order).\n\n";
+        "the intercept's standard error (n − 2 degrees of freedom). The same line through sin φ (φ of the window's mean principal "
+        "stresses, the φ of every table here and of the literature rows) gives the quasi-static φ, with its se to first order.\n\n";
   validation::MarkdownTable t({"μ", "run", "strain rate (s⁻¹)", "d (mm)", "ρ (kg/m³)", "p at cs (kPa)", "I", "√I", "q/p at cs",
                                "φ at cs (°)", "note"});
   for (const RateSeries& s : series) {

@@ -31,9 +31,18 @@ std::vector<ManifestLine> read_manifest(const std::string& dir) {
     if (const auto [it, fresh] = line_of.emplace(f[0] + '\t' + f[3], no); !fresh)
       throw std::runtime_error(at + ": the run '" + f[3] + "' again" + (f[0] == "-" ? "" : " for variant '" + f[0] + "'") +
                                " (line " + std::to_string(it->second) + " lists it)");
-    lines.push_back({f[0], f[1], f[2], f[3], f[4], f[5], f[7], f[6] == "1", f.size() > 8 && !f[8].empty() ? f[8] : "-"});
+    lines.push_back({f[0], f[1], f[2], f[3], f[4], f[5], f[7], f[6] == "1", f.size() > 8 && !f[8].empty() ? f[8] : "-",
+                     f.size() > 9 ? f[9] : ""});
   }
   return lines;
+}
+
+std::string manifest_engine_source(const std::string& dir) {
+  std::ifstream in(fs::path(dir) / "runs.tsv");
+  std::string line;
+  const std::string prefix = "# engine source ";
+  if (!std::getline(in, line) || line.rfind(prefix, 0) != 0) return "";
+  return line.substr(prefix.size());
 }
 
 std::string sample_of(const ManifestLine& line) { return line.seed == "-" ? "" : "seed" + line.seed; }

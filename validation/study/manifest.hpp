@@ -10,10 +10,15 @@ struct ManifestLine {
   std::string variant, density, test, run, result, starts_from, settings;  // "-": no variant / a preparation
   bool may_fail = false;
   std::string seed = "-";  // the sample of an ensemble ("-": a study of one sample)
+  std::string input_hash;  // what its result records when made by the manifest's engine ("": an older manifest)
 };
 
 // DIR/runs.tsv; throws std::runtime_error if it is missing or a line has fewer than 8 fields.
 std::vector<ManifestLine> read_manifest(const std::string& dir);
+
+// The engine DIR/runs.tsv's input hashes are planned for (its first line, "# engine source
+// HASH schema N", written by the pipeline); "" when the manifest does not say (an older one).
+std::string manifest_engine_source(const std::string& dir);
 
 // Where a line's result is under `dir`, wherever the study ran: DIR/[seed<N>/]<file name> (the
 // manifest records the path the pipeline wrote, which moves with a copied or moved folder).

@@ -75,11 +75,21 @@ Stamp stamp_of_results(const std::string& dir, const std::string& variant) {
       if (prepared.sample.count("particles")) s.spheres = std::lround(prepared.sample.at("particles"));
     }
   }
+  const std::string source = manifest_engine_source(dir);
+  bool hashes_listed = !source.empty();
   for (const ManifestLine& l : manifest) {
     const std::string file = result_under(dir, l);
     if (!is_complete(file)) continue;
     s.date = std::max(s.date, day_written(file));  // YYYY-MM-DD sorts as it reads
+    if (l.input_hash.empty()) {
+      hashes_listed = false;
+      continue;
+    }
+    dem::h5::Handle f = dem::h5::open_file_read(file);
+    const std::string recorded = dem::h5::has_attribute(f, "input_hash") ? dem::h5::get_string_attribute(f, "input_hash") : "";
+    if (recorded != l.input_hash) ++s.other_engine_results;
   }
+  if (hashes_listed) s.engine_source = source;
   return s;
 }
 
@@ -95,8 +105,10 @@ Stamp combined(const std::vector<Stamp>& stamps) {
   };
   for (const Stamp& s : stamps) {
     if (!s.recorded()) continue;  // a study whose results give nothing (not run, or not finished)
-    if (first) out = s, first = false;
+    if (first) out = s, out.other_engine_results = 0, first = false;
     join(out.engine, s.engine);
+    join(out.engine_source, s.engine_source);
+    out.other_engine_results += s.other_engine_results;
     join(out.baseline, s.baseline);
     out.date = std::max(out.date, s.date);
   }
@@ -106,6 +118,8 @@ Stamp combined(const std::vector<Stamp>& stamps) {
 nlohmann::ordered_json stamp_json(const Stamp& s) {
   nlohmann::ordered_json j;
   j["engine"] = s.engine.empty() ? not_recorded : s.engine;
+  j["engine_source"] = s.engine_source.empty() ? not_recorded : s.engine_source;
+  if (s.other_engine_results > 0) j["other_engine_results"] = s.other_engine_results;
   j["baseline"] = s.baseline.empty() ? not_recorded : s.baseline;
   if (s.spheres > 0) j["spheres"] = s.spheres;
   else j["spheres"] = not_recorded;
@@ -119,6 +133,8 @@ Stamp stamp_from_json(const nlohmann::json& j) {
   Stamp s;
   if (!j.is_object()) return s;
   s.engine = text_field(j, "engine");
+  s.engine_source = text_field(j, "engine_source");
+  s.other_engine_results = count_field(j, "other_engine_results");
   s.baseline = text_field(j, "baseline");
   s.spheres = count_field(j, "spheres");
   s.samples = count_field(j, "samples");

@@ -11,11 +11,13 @@
 namespace validation {
 
 struct Stamp {
-  std::string engine;    // the results' software_version ("": not recorded)
+  std::string engine;    // the results' software_version ("": not recorded): the commit of the build
   std::string baseline;  // baseline_of the study's first preparation (seed1, its first density)
   long spheres = 0;      // of that preparation (0: not recorded)
   long samples = 0;      // the samples the study's manifest lists (0: not recorded)
   std::string date;      // the day (UTC, YYYY-MM-DD) its last result was written
+  std::string engine_source;      // the engine source hash every result was checked to be made by ("": not recorded)
+  long other_engine_results = 0;  // results not made by engine_source from their manifest's inputs (stale)
   bool recorded() const { return !engine.empty() || !baseline.empty(); }
 };
 
@@ -25,7 +27,9 @@ inline constexpr const char* not_recorded = "not recorded";
 // The stamp of the study whose results are in `dir` (its runs.tsv): its first preparation (of seed1,
 // or of the study's one sample; the manifest's first density; of `variant` when the study has it,
 // e.g. the decisions study's baseline reading) gives the engine, the baseline and
-// the spheres, the manifest the samples, the newest complete result the date. Throws, naming the
+// the spheres, the manifest the samples, the newest complete result the date. The engine source is
+// the manifest's when every complete result records its line's input hash (the pipeline's plan
+// for that engine and those inputs); the results that do not are counted. Throws, naming the
 // folder, when it has no manifest; a field its results do not give stays not recorded.
 Stamp stamp_of_results(const std::string& dir, const std::string& variant = "");
 // The stamp of a study of variants: as above, but for a study of readings only, whose baseline is
@@ -40,7 +44,8 @@ Stamp stamp_of_results(const std::string& dir, const std::string& variant, const
 // engine or baseline (a study not run yet) is left out, unless none has them (then the first).
 Stamp combined(const std::vector<Stamp>& stamps);
 
-// {"engine", "baseline", "spheres", "samples", "date"}, each "not recorded" when it is not.
+// {"engine", "engine_source", "baseline", "spheres", "samples", "date"}, each "not recorded" when
+// it is not, and "other_engine_results" when there are any.
 nlohmann::ordered_json stamp_json(const Stamp& s);
 // The stamp in `j` (an object with those keys, any of them missing or "not recorded"); a `j`
 // that is not an object: nothing recorded.

@@ -13,10 +13,10 @@
 // row by row. What the text takes from the paper study's results is written to
 // REPORT_DIR/study_values.json whenever they are here, and read from it when they are not
 // (report/study_values.hpp), so the report is written again anywhere from committed files. Under the heading of each section another study made (report/other_sections.hpp) a
-// line says the engine, baseline, size and date of its numbers; a section whose baseline
-// differs from the paper study's (REPORT_DIR/validation.json's stamp) is refused (exit 1, naming
-// it) unless --allow-other-baseline, which heads it "⚠ from another baseline"; so is a
-// study_values.json from another baseline. Exit status: 0; 1 if the report cannot be written, a
+// line says the engine, baseline, size and date of its numbers; a section whose baseline or
+// engine source differs from the paper study's (REPORT_DIR/validation.json's stamp) is refused
+// (exit 1, naming it) unless --allow-other-baseline, which heads it "⚠ from another baseline" (or
+// engine); so is a study_values.json from another baseline or engine. Exit status: 0; 1 if the report cannot be written, a
 // template names an unknown key or a result file is there but cannot be read; 2 for bad arguments
 // or a --results that is not a folder (one that does not exist is accepted when REPORT_DIR has a
 // study_values.json).
@@ -64,8 +64,8 @@ int tool_main(int argc, char** argv) {
   option("--note", "a note printed at the top of the report");
   bool allow_other_baseline = false;
   app.add_flag("--allow-other-baseline", allow_other_baseline,
-               "keep a section another study made on another baseline than the paper study's (its stamp says which), "
-               "headed \"⚠ from another baseline\"; without it such a section is refused (exit 1)");
+               "keep a section another study made on another baseline or engine source than the paper study's (its stamp "
+               "says which), headed \"⚠ from another baseline\" (or engine); without it such a section is refused (exit 1)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -174,7 +174,7 @@ int tool_main(int argc, char** argv) {
       std::fprintf(stderr, "report: %s not written\n", (report / "index.md").c_str());
       return 1;
     }
-    for (const std::string& h : stamped.other) std::fprintf(stderr, "report: warning: '%s' kept from another baseline (headed ⚠)\n", h.c_str());
+    for (const std::string& h : stamped.other) std::fprintf(stderr, "report: warning: '%s' kept from another baseline or engine (headed ⚠)\n", h.c_str());
     text = stamped.text;
     dem::write_file_atomically((report / "index.md").string(), text);
     std::fprintf(stderr, "report written to %s (%zu sample(s) of %s%s)\n", (report / "index.md").c_str(), in.samples.size(),

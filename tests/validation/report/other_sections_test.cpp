@@ -141,6 +141,39 @@ TEST_CASE("report stamps: another baseline is refused, then headed ⚠ with --al
                                   "`1111111111111111`") != std::string::npos);
 }
 
+TEST_CASE("report stamps: another engine source is refused, then headed ⚠; another commit of the same source is not", "[report][stamp]") {
+  const fs::path dir = dem::test::scratch_dir("report_stamp_engine");
+  Stamp paper_checked = paper;
+  paper_checked.engine_source = "S schema 4";
+  Stamp section{"0.1.0+bbbb", "3333333333333333", 216, 1, "2026-11-20"};
+  const auto with = [&](const std::string& source, long stale) {
+    Stamp s = section;
+    s.engine_source = source, s.other_engine_results = stale;
+    write_json(dir / "stability" / "stamp.json", validation::stamp_json(s));
+    return validation::stamp_sections(report_text(), dir, all_run(), paper_checked, false);
+  };
+  // The same source built at another commit: the same engine, said in its line.
+  const auto same = with("S schema 4", 0);
+  REQUIRE(same.refused.empty());
+  REQUIRE(same.text.find("\n## Appendix: Stability\n\n*Made by engine `0.1.0+bbbb` (source `S schema 4`) on baseline") != std::string::npos);
+  // Another source; the same source with a stale result; no source recorded (not checked): refused.
+  for (const auto& [source, stale] : std::vector<std::pair<std::string, long>>{{"T schema 4", 0}, {"S schema 4", 2}, {"", 0}}) {
+    const auto refused = with(source, stale);
+    REQUIRE(refused.refused.size() == 1);
+    REQUIRE_THAT(refused.refused.front(), Catch::Contains("Stability") && Catch::Contains("another engine"));
+  }
+  // Kept when allowed, headed ⚠ from another engine, and still the same section by its name.
+  write_json(dir / "stability" / "stamp.json", validation::stamp_json(Stamp{"0.1.0+bbbb", "3333333333333333", 216, 1, "2026-11-20", "S schema 4", 2}));
+  const auto kept = validation::stamp_sections(report_text(), dir, all_run(), paper_checked, true);
+  REQUIRE(kept.other == std::vector<std::string>{"Appendix: Stability"});
+  REQUIRE(kept.text.find("\n## Appendix: ⚠ from another engine: Stability\n\n*⚠ Made by engine `0.1.0+bbbb` (source `S schema 4`; 2 results "
+                         "not made by it from their inputs) on baseline") != std::string::npos);
+  REQUIRE(validation::section_name("## Appendix: ⚠ from another engine: Stability") == "Stability");
+  // A section with no stamp at all says so, and is not compared.
+  fs::remove(dir / "stability" / "stamp.json");
+  REQUIRE(validation::stamp_sections(report_text(), dir, all_run(), paper_checked, false).refused.empty());
+}
+
 TEST_CASE("report stamps: a listed heading missing from the report is an error naming it", "[report][stamp]") {
   const fs::path dir = dem::test::scratch_dir("report_stamp_heading");
   std::string text = report_text();

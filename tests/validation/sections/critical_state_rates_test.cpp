@@ -91,7 +91,26 @@ std::string write_references(const fs::path& file, double tolerance) {
   return file.string();
 }
 
-double compression_phi_deg(double eta) { return std::asin(3 * eta / (6 + eta)) * 180 / std::numbers::pi; }
+// sin φ of a compression at stress ratio η with σ2 = σ3 (the fixture's runs): σ1 = p + 2q/3,
+// σ3 = p - q/3, so (σ1 - σ3)/(σ1 + σ3) = 3η/(6 + η).
+double compression_sin_phi(double eta) { return 3 * eta / (6 + eta); }
+
+// Ordinary least squares of y on x, worked out here: the intercept and its standard error
+// s sqrt(1/n + mean(x)^2 / Sxx), s^2 = SSR / (n - 2).
+struct Intercept {
+  double value = 0, se = 0;
+};
+Intercept least_squares_intercept(const std::vector<double>& x, const std::vector<double>& y) {
+  const double n = static_cast<double>(x.size());
+  double mx = 0, my = 0, sxx = 0, sxy = 0, ssr = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) mx += x[i] / n, my += y[i] / n;
+  for (std::size_t i = 0; i < x.size(); ++i) sxx += (x[i] - mx) * (x[i] - mx), sxy += (x[i] - mx) * (y[i] - my);
+  const double slope = sxy / sxx, intercept = my - slope * mx;
+  for (std::size_t i = 0; i < x.size(); ++i) ssr += std::pow(y[i] - intercept - slope * x[i], 2);
+  return {intercept, std::sqrt(ssr / (n - 2) * (1 / n + mx * mx / sxx))};
+}
+
+double degrees_of_sin(double s) { return std::asin(s) * 180 / std::numbers::pi; }
 
 std::string run(const std::string& args, const fs::path& log) {
   const int rc = std::system((bin + " critical-state " + args + " > " + log.string() + " 2>&1").c_str());
@@ -106,8 +125,10 @@ TEST_CASE("compare-runs critical-state: the quasi-static φ beside the literatur
   const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "compare_runs_critical_state";
   fs::remove_all(dir);
   // μ = 0 at 1, 0.5 and 0.25 /s: q/p = 0.2 + 4 sqrt(I) exactly, I = rate d sqrt(rho / p), so the
-  // fit's intercept is 0.2 with no scatter and the quasi-static φ is asin(0.6 / 6.2).
-  const auto eta_at = [](double rate) { return 0.2 + 4 * std::sqrt(rate * 2 * radius * std::sqrt(rho / p0)); };
+  // q/p fit's intercept is 0.2 with no scatter. φ is fitted as itself: the line through the runs'
+  // sin φ (not quite straight in sqrt(I)) taken to I = 0.
+  const auto sqrt_i = [](double rate) { return std::sqrt(rate * 2 * radius * std::sqrt(rho / p0)); };
+  const auto eta_at = [&](double rate) { return 0.2 + 4 * sqrt_i(rate); };
   write_manifest(dir / "main", {{0, "compression_mu0"}});
   write_shear(dir / "main" / "dense_compression_mu0.h5", 0, 1, eta_at(1), false);
   write_manifest(dir / "rates", {{0, "rate0.5_mu0"}, {0, "rate0.25_mu0"}});
@@ -127,14 +148,17 @@ TEST_CASE("compare-runs critical-state: the quasi-static φ beside the literatur
   const auto references = [&](const std::string& name, double tolerance) { return write_references(dir / name, tolerance); };
   const std::string wide = references("wide.yaml", 1.0), narrow = references("narrow.yaml", 0.1);
 
-  const double phi_qs = compression_phi_deg(0.2);  // 5.5535...
+  std::vector<double> x, sin_phi;
+  for (const double rate : {1.0, 0.5, 0.25}) x.push_back(sqrt_i(rate)), sin_phi.push_back(compression_sin_phi(eta_at(rate)));
+  const double phi_qs = degrees_of_sin(least_squares_intercept(x, sin_phi).value);
+  REQUIRE(std::abs(phi_qs - degrees_of_sin(compression_sin_phi(0.2))) < 0.05);  // near asin(0.6 / 6.2) = 5.55°, not it
   std::ostringstream off, at_rate;
   off << std::fixed;
   off.precision(2);
   off << phi_qs - 5.76;
   at_rate << std::fixed;
   at_rate.precision(2);
-  at_rate << "+" << compression_phi_deg(eta_at(1)) - 5.76;
+  at_rate << "+" << degrees_of_sin(compression_sin_phi(eta_at(1))) - 5.76;
 
   run((dir / "main").string() + " " + (dir / "out").string() + " --rates " + (dir / "rates").string() + " --references " + wide + " --ensemble " +
           (dir / "ensemble").string(),
@@ -183,13 +207,12 @@ TEST_CASE("compare-runs critical-state: a quasi-static row judged at I to 0 on 4
   const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "compare_runs_critical_state_judged";
   fs::remove_all(dir);
   // μ = 0: the main study's one run at 1/s on the line q/p = 0.2 + 4 sqrt(I); the rates study's two
-  // samples at each of 1, 0.5, 0.25 and 0.125/s at the line ± delta. The means at each rate lie on
-  // the line, so the intercept is 0.2; its standard error is that of ordinary least squares over the
-  // 9 points (7 degrees of freedom), computed below from the points alone.
+  // samples at each of 1, 0.5, 0.25 and 0.125/s at the line ± delta. φ is judged on the line
+  // through the 9 runs' sin φ (7 degrees of freedom), worked out below from the points alone.
   constexpr double delta = 0.001;
   const auto sqrt_i = [](double rate) { return std::sqrt(rate * 2 * radius * std::sqrt(rho / p0)); };
   const auto eta_at = [&](double rate) { return 0.2 + 4 * sqrt_i(rate); };
-  std::vector<double> x{sqrt_i(1)}, y{eta_at(1)};
+  std::vector<double> x{sqrt_i(1)}, y{compression_sin_phi(eta_at(1))};
   write_manifest(dir / "main", {{0, "compression_mu0"}});
   write_shear(dir / "main" / "dense_compression_mu0.h5", 0, 1, eta_at(1), false);
   std::vector<std::pair<int, std::string>> rate_runs;
@@ -200,17 +223,13 @@ TEST_CASE("compare-runs critical-state: a quasi-static row judged at I to 0 on 4
       rate_runs.push_back({seed, name.str()});
       const double eta = eta_at(rate) + (seed == 1 ? delta : -delta);
       write_shear(dir / "rates" / ("seed" + std::to_string(seed)) / ("dense_" + name.str() + ".h5"), 0, rate, eta, false);
-      x.push_back(sqrt_i(rate)), y.push_back(eta);
+      x.push_back(sqrt_i(rate)), y.push_back(compression_sin_phi(eta));
     }
   write_manifest(dir / "rates", rate_runs);
-  double mx = 0, my = 0, sxx = 0, ssr = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) mx += x[i] / x.size(), my += y[i] / x.size();
-  for (std::size_t i = 0; i < x.size(); ++i) sxx += (x[i] - mx) * (x[i] - mx);
-  for (std::size_t i = 0; i < x.size(); ++i) ssr += std::pow(y[i] - eta_at(1) + 4 * (sqrt_i(1) - x[i]), 2);  // residuals from the line
-  const double se_eta = std::sqrt(ssr / 7 * (1.0 / x.size() + mx * mx / sxx));
-  // φ = asin(3η/(6 + η)): dφ/dη = 18 / ((6 + η)² cos φ), in degrees; t(0.975, 7) = 2.3646.
-  const double phi_qs = compression_phi_deg(0.2);
-  const double half = 2.3646 * se_eta * 18 / (6.2 * 6.2 * std::cos(phi_qs * std::numbers::pi / 180)) * 180 / std::numbers::pi;
+  // φ = asin(intercept of sin φ): dφ = d(sin φ) / cos φ, in degrees; t(0.975, 7) = 2.3646.
+  const Intercept fit = least_squares_intercept(x, y);
+  const double phi_qs = degrees_of_sin(fit.value);
+  const double half = 2.3646 * fit.se / std::sqrt(1 - fit.value * fit.value) * 180 / std::numbers::pi;
   std::ostringstream half_text;
   half_text << std::fixed;
   half_text.precision(2);

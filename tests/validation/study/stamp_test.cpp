@@ -81,6 +81,50 @@ TEST_CASE("stamp: from a study's results, its first preparation of seed1 and the
   REQUIRE_THROWS_WITH(validation::stamp_of_results((dir / "nothing").string()), Catch::Contains("nothing"));
 }
 
+TEST_CASE("stamp: the engine source is the manifest's only when every result records its line's input hash", "[stamp]") {
+  const fs::path dir = dem::test::scratch_dir("stamp_engine_source");
+  // Two samples' preparations and tests; the manifest planned for engine source S with each run's
+  // input hash h-<run>. A result the pipeline made from those inputs records that hash.
+  const auto manifest = [&](bool with_hashes) {
+    std::ofstream runs(dir / "runs.tsv");
+    if (with_hashes) runs << "# engine source S schema 4\n";
+    runs << "# variant\tdensity\ttest\trun\tresult\tstarts_from\tmay_fail\tsettings\tseed" << (with_hashes ? "\tinput_hash" : "") << "\n";
+    for (int seed : {1, 2})
+      for (const std::string test : {"-", "test1"}) {
+        const std::string run = "seed" + std::to_string(seed) + "/dense_" + (test == "-" ? "prepare" : test);
+        runs << "-\tdense\t" << test << "\t" << run << "\t/elsewhere/" << run << ".h5\t-\t0\tx\t" << seed;
+        if (with_hashes) runs << "\th-" << run;
+        runs << "\n";
+      }
+  };
+  const auto result = [&](int seed, const std::string& what, const std::string& hash) {
+    const fs::path file = dir / ("seed" + std::to_string(seed)) / ("dense_" + what + ".h5");
+    write_result(file, "A", scene(1e-6, seed), 8);
+    dem::h5::Handle f = dem::h5::open_file_write(file.string());
+    dem::h5::set_attribute(f, "input_hash", hash);
+  };
+  for (int seed : {1, 2})
+    for (const std::string what : {"prepare", "test1"}) result(seed, what, "h-seed" + std::to_string(seed) + "/dense_" + what);
+  manifest(true);
+  const validation::Stamp all = validation::stamp_of_results(dir.string());
+  REQUIRE(all.engine_source == "S schema 4");
+  REQUIRE(all.other_engine_results == 0);
+  // One result made from other inputs or by another engine (its hash is not its line's): counted,
+  // and the stamp says so in JSON.
+  result(2, "test1", "h-older");
+  const validation::Stamp stale = validation::stamp_of_results(dir.string());
+  REQUIRE(stale.other_engine_results == 1);
+  const validation::Stamp back = validation::stamp_from_json(nlohmann::json::parse(validation::stamp_json(stale).dump()));
+  REQUIRE(back.engine_source == "S schema 4");
+  REQUIRE(back.other_engine_results == 1);
+  // A manifest from before it listed hashes: no engine source recorded, nothing counted.
+  manifest(false);
+  const validation::Stamp older = validation::stamp_of_results(dir.string());
+  REQUIRE(older.engine_source.empty());
+  REQUIRE(older.other_engine_results == 0);
+  REQUIRE(older.engine == "A");
+}
+
 TEST_CASE("stamp: JSON written and read back; what is missing is not recorded", "[stamp]") {
   const validation::Stamp s{"0.1.0+abc", "0123456789abcdef", 8000, 5, "2026-11-27"};
   const validation::Stamp back = validation::stamp_from_json(nlohmann::json::parse(validation::stamp_json(s).dump()));
@@ -90,7 +134,8 @@ TEST_CASE("stamp: JSON written and read back; what is missing is not recorded", 
   REQUIRE(back.samples == 5);
   REQUIRE(back.date == s.date);
   const nlohmann::ordered_json none = validation::stamp_json(validation::Stamp{});
-  for (const char* key : {"engine", "baseline", "spheres", "samples", "date"}) REQUIRE(none.at(key) == "not recorded");
+  for (const char* key : {"engine", "engine_source", "baseline", "spheres", "samples", "date"}) REQUIRE(none.at(key) == "not recorded");
+  REQUIRE_FALSE(none.contains("other_engine_results"));
   REQUIRE_FALSE(validation::stamp_from_json(none).recorded());
   REQUIRE_FALSE(validation::stamp_from_json(nlohmann::json()).recorded());  // no stamp at all
   // Only some fields (the convergence summary's engine, baseline and date).
