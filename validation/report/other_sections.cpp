@@ -72,6 +72,7 @@ std::string stamp_text(const Stamp& s) {
 }
 
 std::string stamp_difference(const Stamp& section, const Stamp& paper, bool baselines) {
+  if (!paper.engine_source.empty() && !section.recorded()) return unstamped;
   const bool baseline = baselines && !section.baseline.empty() && !paper.baseline.empty() && section.baseline != paper.baseline;
   const bool engine = !paper.engine_source.empty() && section.recorded() &&
                       (section.engine_source != paper.engine_source || section.other_engine_results > 0);
@@ -109,11 +110,10 @@ StampedReport stamp_sections(const std::string& text, const fs::path& report, co
     std::string line = "*" + stamp_sentence(stamp) + "." + own + "*";
     std::string new_heading = heading;
     if (!differs.empty()) {
-      const std::string both = "this section's " + stamp.baseline + " / " + stamp.engine + ", the paper study's " + paper.baseline + " / " +
-                               paper.engine;
       if (!allow_other) {
-        out.refused.push_back("section '" + section.heading + "' (" + section.stamp_file + ") is from another " + differs + " than the paper study (" +
-                              "baseline / engine: " + both + "); `report --allow-other-baseline` keeps it, headed ⚠");
+        out.refused.push_back("section '" + section.heading + "' (" + section.stamp_file + ") is from another " + differs +
+                              " than the paper study (this section's numbers were " + stamp_text(stamp) + "; the paper study's " +
+                              stamp_text(paper) + "); `report --allow-other-baseline` keeps it, headed ⚠");
         continue;
       }
       const std::string mark = other_mark(differs);

@@ -43,8 +43,9 @@ std::string stamp_sentence(const Stamp& s);
 // compared unless `baselines` (not for a study of its own scene). Engines by their source hash, not
 // the commit (which changes with every commit whatever it touches): once the paper study's is
 // recorded, a stamped section whose results are not all checked to be that engine's differs
-// (another source, some results stale, or no source recorded: not checked). A section with no
-// stamp at all says so in its line ("Stamp not recorded") and is not compared.
+// (another source, some results stale, or no source recorded: not checked), and so does a
+// section with no stamp at all (`unstamped`; before the paper study's engine source was recorded,
+// such a section was only said to be so in its line, "Stamp not recorded").
 std::string stamp_difference(const Stamp& section, const Stamp& paper, bool baselines = true);
 
 // The sections, of those whose table key is filled in `values`, whose stamp differs from `paper`
@@ -70,8 +71,13 @@ StampedReport stamp_sections(const std::string& text, const std::filesystem::pat
                              const Stamp& paper, bool allow_other);
 
 // The marks stamp_sections puts before a heading's name (section_name takes them off).
+// What stamp_difference says of a section with no stamp (read after "another").
+inline constexpr const char* unstamped = "engine and baseline (not stamped)";
+
 // The heading mark of a section whose `differs` (stamp_difference) is not the paper study's:
-// "⚠ from another baseline: ", "⚠ from another engine: ", ...
-inline std::string other_mark(const std::string& differs) { return "⚠ from another " + differs + ": "; }
+// "⚠ from another baseline: ", "⚠ from another engine: ", ..., "⚠ not stamped: ".
+inline std::string other_mark(const std::string& differs) {
+  return differs == unstamped ? "⚠ not stamped: " : "⚠ from another " + differs + ": ";
+}
 
 }  // namespace validation

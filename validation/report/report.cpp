@@ -40,7 +40,7 @@ std::string section_name(const std::string& heading_line) {
   const std::string appendix = "Appendix: ";
   if (name.rfind(appendix, 0) == 0) name = name.substr(appendix.size());
   // A section headed as from another baseline (stamp_sections) is still that section.
-  for (const char* differs : {"baseline", "engine", "baseline and engine"})
+  for (const char* differs : {"baseline", "engine", "baseline and engine", unstamped})
     if (const std::string mark = other_mark(differs); name.rfind(mark, 0) == 0) return name.substr(mark.size());
   return name;
 }

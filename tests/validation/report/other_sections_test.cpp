@@ -146,11 +146,12 @@ TEST_CASE("report stamps: another engine source is refused, then headed ⚠; ano
   Stamp paper_checked = paper;
   paper_checked.engine_source = "S schema 4";
   Stamp section{"0.1.0+bbbb", "3333333333333333", 216, 1, "2026-11-20"};
+  const std::map<std::string, std::string> stability_run = {{"file.stability", "| a table |"}};  // the only section run
   const auto with = [&](const std::string& source, long stale) {
     Stamp s = section;
     s.engine_source = source, s.other_engine_results = stale;
     write_json(dir / "stability" / "stamp.json", validation::stamp_json(s));
-    return validation::stamp_sections(report_text(), dir, all_run(), paper_checked, false);
+    return validation::stamp_sections(report_text(), dir, stability_run, paper_checked, false);
   };
   // The same source built at another commit: the same engine, said in its line.
   const auto same = with("S schema 4", 0);
@@ -164,14 +165,22 @@ TEST_CASE("report stamps: another engine source is refused, then headed ⚠; ano
   }
   // Kept when allowed, headed ⚠ from another engine, and still the same section by its name.
   write_json(dir / "stability" / "stamp.json", validation::stamp_json(Stamp{"0.1.0+bbbb", "3333333333333333", 216, 1, "2026-11-20", "S schema 4", 2}));
-  const auto kept = validation::stamp_sections(report_text(), dir, all_run(), paper_checked, true);
+  const auto kept = validation::stamp_sections(report_text(), dir, stability_run, paper_checked, true);
   REQUIRE(kept.other == std::vector<std::string>{"Appendix: Stability"});
   REQUIRE(kept.text.find("\n## Appendix: ⚠ from another engine: Stability\n\n*⚠ Made by engine `0.1.0+bbbb` (source `S schema 4`; 2 results "
                          "not made by it from their inputs) on baseline") != std::string::npos);
   REQUIRE(validation::section_name("## Appendix: ⚠ from another engine: Stability") == "Stability");
-  // A section with no stamp at all says so, and is not compared.
+  // A section with no stamp at all, once the paper study's engine source is recorded: refused,
+  // or headed "⚠ not stamped".
   fs::remove(dir / "stability" / "stamp.json");
-  REQUIRE(validation::stamp_sections(report_text(), dir, all_run(), paper_checked, false).refused.empty());
+  const auto unstamped = validation::stamp_sections(report_text(), dir, stability_run, paper_checked, false);
+  REQUIRE(unstamped.refused.size() == 1);
+  REQUIRE_THAT(unstamped.refused.front(), Catch::Contains("another engine and baseline (not stamped)"));
+  const auto unstamped_kept = validation::stamp_sections(report_text(), dir, stability_run, paper_checked, true);
+  REQUIRE(unstamped_kept.text.find("\n## Appendix: ⚠ not stamped: Stability\n\n*⚠ Stamp not recorded") != std::string::npos);
+  REQUIRE(validation::section_name("## Appendix: ⚠ not stamped: Stability") == "Stability");
+  // Before the paper study's engine source was recorded, no stamp was only said in its line.
+  REQUIRE(validation::stamp_sections(report_text(), dir, stability_run, paper, false).refused.empty());
 }
 
 TEST_CASE("report stamps: a listed heading missing from the report is an error naming it", "[report][stamp]") {
