@@ -74,8 +74,7 @@ std::string stamp_text(const Stamp& s) {
 std::string stamp_difference(const Stamp& section, const Stamp& paper, bool baselines) {
   if (!paper.engine_source.empty() && !section.recorded()) return unstamped;
   const bool baseline = baselines && !section.baseline.empty() && !paper.baseline.empty() && section.baseline != paper.baseline;
-  const bool engine = !paper.engine_source.empty() && section.recorded() &&
-                      (section.engine_source != paper.engine_source || section.other_engine_results > 0);
+  const bool engine = !paper.engine_source.empty() && (section.engine_source != paper.engine_source || section.other_engine_results > 0);
   return baseline && engine ? "baseline and engine" : baseline ? "baseline" : engine ? "engine" : "";
 }
 

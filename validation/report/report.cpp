@@ -1,5 +1,4 @@
 #include "report/report.hpp"
-#include "report/other_sections.hpp"
 
 
 
@@ -39,9 +38,8 @@ std::string section_name(const std::string& heading_line) {
   name = trim(name);
   const std::string appendix = "Appendix: ";
   if (name.rfind(appendix, 0) == 0) name = name.substr(appendix.size());
-  // A section headed as from another baseline (stamp_sections) is still that section.
-  for (const char* differs : {"baseline", "engine", "baseline and engine", unstamped})
-    if (const std::string mark = other_mark(differs); name.rfind(mark, 0) == 0) return name.substr(mark.size());
+  // A section headed ⚠ by stamp_sections (other_mark: "⚠ ...: ") is still that section.
+  if (const std::size_t end = name.find(": "); name.rfind("⚠ ", 0) == 0 && end != std::string::npos) return name.substr(end + 2);
   return name;
 }
 

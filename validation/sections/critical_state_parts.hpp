@@ -49,9 +49,10 @@ struct RatePoint {
 struct RateSeries {
   double mu = NAN;
   std::vector<RatePoint> points;  // fastest first
-  std::optional<validation::LineFit> fit;      // q/p against sqrt(I)
-  std::optional<validation::LineFit> phi_fit;  // sin φ against sqrt(I): φ of the rows' mean principal stresses, the tables' φ
-  double phi_deg = NAN, phi_se_deg = NAN;      // the quasi-static φ, asin of phi_fit's intercept, and its se to first order
+  std::optional<validation::LineFit> fit;  // q/p against sqrt(I)
+  // The quasi-static φ, from the same line through sin φ (of the rows' mean principal stresses, the
+  // tables' φ) at I = 0, and its se to first order.
+  double phi_deg = NAN, phi_se_deg = NAN;
   std::string problems;           // why the fit is poor, or why there is none
 };
 

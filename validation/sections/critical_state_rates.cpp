@@ -100,7 +100,7 @@ std::vector<RateSeries> rate_series(const std::vector<ShearRun>& rates, const st
   const auto add = [&](const ShearRun& r, const std::string& study) {
     if (r.loading != "compression") return;
     auto s = std::find_if(out.begin(), out.end(), [&](const RateSeries& x) { return x.mu == r.mu; });
-    if (s == out.end()) s = out.insert(out.end(), RateSeries{r.mu, {}, std::nullopt, std::nullopt, NAN, NAN, ""});
+    if (s == out.end()) s = out.insert(out.end(), RateSeries{r.mu, {}, std::nullopt, NAN, NAN, ""});
     s->points.push_back({&r, study, inertial_of(r)});
   };
   for (const ShearRun& r : rates) add(r, rates_name);
@@ -136,10 +136,10 @@ std::vector<RateSeries> rate_series(const std::vector<ShearRun>& rates, const st
     s.fit = validation::fit_line(x, y);
     // φ is extrapolated as itself, not converted from the q/p intercept: the tables' φ (and a
     // literature row's) is that of the principal stresses, which sin φ = 3η/(6 + η) equals only
-    // when σ2 = σ3 exactly (the frictionless 1/s run: 7.98° against 7.90° from its q/p).
-    s.phi_fit = validation::fit_line(x, sin_phi);
-    s.phi_deg = std::asin(s.phi_fit->intercept) * 180 / std::numbers::pi;
-    s.phi_se_deg = s.phi_fit->intercept_se / std::sqrt(1 - s.phi_fit->intercept * s.phi_fit->intercept) * 180 / std::numbers::pi;
+    // when σ2 = σ3 exactly.
+    const validation::LineFit phi = validation::fit_line(x, sin_phi);
+    s.phi_deg = std::asin(phi.intercept) * 180 / std::numbers::pi;
+    s.phi_se_deg = phi.intercept_se / std::sqrt(1 - phi.intercept * phi.intercept) * 180 / std::numbers::pi;
     if (!s.fit->monotonic) s.problems += "poor fit: q/p does not change monotonically with I; ";
     if (s.fit->slope < 0) s.problems += "q/p falls as I grows (slope " + validation::significant(s.fit->slope, 2) + "): the line is no rate effect of the usual sign; ";
     if (s.fit->n == 2) s.problems += "two points: the line goes through both, no standard error; ";
