@@ -46,9 +46,14 @@ double largest_move(const std::vector<Marginal>& a, const std::vector<Marginal>&
   return moved;
 }
 
-void print_plan(const Calibration& c, std::vector<pipeline::PlannedRun>& runs, int jobs) {
+// `results_root`: the folder the study's results folders are in, where this engine's finished runs
+// of other studies give a throughput when none of the calibration's own has finished.
+void print_plan(const Calibration& c, std::vector<pipeline::PlannedRun>& runs, int jobs, const std::string& results_root,
+                const std::string& engine) {
   const std::optional<double> recorded = pipeline::use_recorded_costs(runs);
-  const double throughput = recorded.value_or(pipeline::default_throughput);
+  const std::optional<pipeline::MachineThroughput> machine =
+      recorded ? std::nullopt : pipeline::recorded_throughput_under(results_root, engine);
+  const double throughput = recorded ? *recorded : machine ? machine->particle_steps_per_s : pipeline::default_throughput;
   std::vector<bool> todo(runs.size());
   for (std::size_t i = 0; i < runs.size(); ++i) todo[i] = runs[i].copy_of < 0 && !pipeline::up_to_date(runs[i].result, runs[i].hash);
   const std::vector<double> cost = pipeline::run_costs(runs, todo);
@@ -67,8 +72,11 @@ void print_plan(const Calibration& c, std::vector<pipeline::PlannedRun>& runs, i
               "about %.1f min on %d core(s)\n", runs.size(), shared_runs, set_runs, shared + per_iteration, first / 60, jobs);
   std::printf("all %d iterations at most: %.3g particle-steps, %.1f core-min, about %.1f min on %d core(s)\n",
               c.max_iterations, total, total / throughput / 60, total / throughput / 60 / jobs, jobs);
-  std::printf("(throughput %.3g particle-steps/s per core: %s)\n", throughput,
-              recorded ? "recorded by the finished runs in the results folder" : "the engine's make bench figure");
+  const std::string from = recorded ? "recorded by the finished runs in the results folder"
+                           : machine ? "recorded by " + std::to_string(machine->runs) + " finished runs of this engine in " +
+                                           std::to_string(machine->studies) + " results folders under " + results_root
+                                     : "the engine's make bench figure; no run of this engine has finished here yet";
+  std::printf("(throughput %.3g particle-steps/s per core: %s)\n", throughput, from.c_str());
 }
 
 }  // namespace
@@ -86,7 +94,13 @@ std::optional<Outcome> run_calibration(const Calibration& c, const RunOptions& o
   out.engine = pipeline::engine_version(o.dem);
   if (out.engine.empty()) throw dem::ConfigError("cannot run the engine '" + o.dem + " --source-hash'");
   out.results = (fs::path(study.output) / ("calibration_" + c.name) / profile.name).lexically_normal().string();
-  // Check every curve row names a density and a test of the study before anything runs.
+  // Check every parameter's densities and every curve row's density and test are the study's
+  // before anything runs.
+  for (const Parameter& p : c.parameters)
+    for (const std::string& density : p.densities)
+      if (std::none_of(study.densities.begin(), study.densities.end(), [&](const auto& d) { return d.name == density; }))
+        throw dem::ConfigError(c.file + ": parameters: " + p.name + ": densities: '" + density + "' is not a density of the study " +
+                               c.study);
   for (const CurveRow& row : out.references.curves) {
     const bool density = std::any_of(study.densities.begin(), study.densities.end(), [&](const auto& d) { return d.name == row.density; });
     const bool test = std::any_of(study.tests.begin(), study.tests.end(), [&](const auto& t) { return t.name == row.test; });
@@ -123,7 +137,7 @@ std::optional<Outcome> run_calibration(const Calibration& c, const RunOptions& o
     }
     std::vector<pipeline::PlannedRun> runs = plan_sets(c, study, profile, out.sets, out.results, out.engine);
     if (o.plan_only) {
-      print_plan(c, runs, o.jobs);
+      print_plan(c, runs, o.jobs, fs::path(study.output).parent_path().string(), out.engine);
       return std::nullopt;
     }
     if (!lock) lock = pipeline::lock_results_folder(out.results);

@@ -1,11 +1,23 @@
 #include "calibration_file.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
 #include "config/yaml_section.hpp"
 
 namespace calibration {
+namespace {
+
+// A scene key a parameter sets: in the tests or the preparations, of one density or ("") of all.
+struct Claim {
+  std::string scope, density, key;
+  bool overlaps(const Claim& o) const {
+    return scope == o.scope && key == o.key && (density.empty() || o.density.empty() || density == o.density);
+  }
+};
+
+}  // namespace
 
 Calibration read_calibration(const std::string& file) {
   dem::Section root = dem::Section::load_file(file);
@@ -28,7 +40,8 @@ Calibration read_calibration(const std::string& file) {
                                      "stop only when the posterior rests on at least this many effective sets (default: batch)");
   c.prior_share = root.number("prior_share", "", {0, 1, true, true}, 0.2,
                               "share of the prior in each proposal after the first (defensive mixture)");
-  std::set<std::string> names, keys;
+  std::set<std::string> names;
+  std::vector<Claim> claims;  // the keys the parameters so far set
   for (dem::Section s : root.list("parameters", "the scene keys inferred, each with its prior")) {
     Parameter p;
     p.name = s.text("name", std::nullopt, "what tables call the parameter");
@@ -40,11 +53,27 @@ Calibration read_calibration(const std::string& file) {
     else s.fail("keys", "is neither a key nor a list of keys");
     p.applies_to = s.choice("applies_to", {"test", "prepare", "both"}, "test",
                             "the runs the keys are set in: test (preparations shared), prepare, or both");
-    // A key may be two parameters only in different runs (the preparation's friction and the test's).
+    if (s.has("densities")) {
+      const YAML::Node d = s.raw("densities", "a list of density names", "the densities whose tests the keys are set in (default: all)");
+      if (!d.IsSequence() || d.size() == 0) s.fail("densities", "is not a non-empty list of density names");
+      for (const YAML::Node& name : d) p.densities.push_back(name.as<std::string>());
+      if (p.applies_to != "test")
+        s.fail("densities", "sets the keys in some densities' tests only: it needs applies_to: test (got " + p.applies_to + ")");
+    }
+    // A key may be two parameters only in different runs: the preparation's friction and the
+    // test's, or the tests of two densities. A claim without a density covers every density.
     for (const std::string& key : p.keys)
-      for (const std::string scope : {"test", "prepare"})
-        if ((p.applies_to == "both" || p.applies_to == scope) && !keys.insert(scope + " " + key).second)
-          s.fail("keys", "'" + key + "' is set by two parameters in the " + scope + " runs");
+      for (const std::string scope : {"test", "prepare"}) {
+        if (p.applies_to != "both" && p.applies_to != scope) continue;
+        const std::vector<std::string> in = scope == "test" && !p.densities.empty() ? p.densities : std::vector<std::string>{""};
+        for (const std::string& density : in) {
+          const Claim claim{scope, density, key};
+          if (std::any_of(claims.begin(), claims.end(), [&](const Claim& other) { return other.overlaps(claim); }))
+            s.fail("keys", "'" + key + "' is set by two parameters in the " + scope + " runs" +
+                               (density.empty() ? "" : " of the " + density + " sample"));
+          claims.push_back(claim);
+        }
+      }
     const bool uniform = s.has("uniform"), log_uniform = s.has("log_uniform"), values = s.has("values");
     if (uniform + log_uniform + values != 1)
       s.fail("uniform", "give exactly one prior: uniform: [low, high], log_uniform: [low, high] or values: [a, b, ...]");

@@ -18,6 +18,8 @@ struct Parameter {
   Prior prior = Prior::Uniform;
   double low = 0, high = 1;            // Uniform, LogUniform
   std::vector<std::string> values;     // Values, as YAML text
+  // The densities whose tests the keys are set in (applies_to test only); empty: every density.
+  std::vector<std::string> densities;
 
   bool discrete() const { return prior == Prior::Values; }
   // The value at u (numbers as text the way scene files take them).

@@ -173,6 +173,7 @@ void write_report(const Outcome& o, const std::map<std::string, double>& truth) 
     json x{{"name", p.name}, {"keys", p.keys}, {"applies_to", p.applies_to}, {"prior", prior_text(p)},
            {"mean", m.mean}, {"sd", m.sd}, {"median", m.median}, {"lower_95", m.lower_95}, {"upper_95", m.upper_95},
            {"narrowing", m.narrowing}, {"identified", m.identified}, {"best", p.value(o.sets[best].u(static_cast<Eigen::Index>(k)))}};
+    if (!p.densities.empty()) x["densities"] = p.densities;
     if (const auto t = truth.find(p.name); t != truth.end())
       x["truth"] = t->second, x["truth_inside_95"] = t->second >= m.lower_95 && t->second <= m.upper_95;
     j["parameters"].push_back(x);

@@ -1,5 +1,6 @@
 #include "sets.hpp"
 
+#include <algorithm>
 #include <tuple>
 
 namespace calibration {
@@ -10,6 +11,14 @@ pipeline::Variant variant_of(const Calibration& c, const ParameterSet& s) {
   for (std::size_t j = 0; j < c.parameters.size(); ++j) {
     const Parameter& p = c.parameters[j];
     const std::string value = p.value_text(s.u(static_cast<Eigen::Index>(j)));
+    if (!p.densities.empty()) {  // some densities' tests only
+      for (const std::string& density : p.densities) {
+        auto into = std::find_if(v.per_density.begin(), v.per_density.end(), [&](const auto& e) { return e.first == density; });
+        if (into == v.per_density.end()) into = v.per_density.insert(v.per_density.end(), {density, {}});
+        for (const std::string& key : p.keys) into->second.emplace_back(key, value);
+      }
+      continue;
+    }
     pipeline::Overrides& into = p.applies_to == "test" ? v.test : p.applies_to == "prepare" ? v.prepare : v.set;
     for (const std::string& key : p.keys) into.emplace_back(key, value);
   }

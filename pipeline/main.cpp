@@ -209,6 +209,10 @@ int tool_main(int argc, char** argv) {
         print_plan(runs, throughput, "--throughput");
       else if (recorded_throughput)
         print_plan(runs, *recorded_throughput, "the finished runs' recorded particle-steps over their wall time");
+      else if (const auto machine = pipeline::recorded_throughput_under(fs::path(studies.front().output).parent_path().string(), version))
+        print_plan(runs, machine->particle_steps_per_s,
+                   "none of these runs has finished yet: what " + std::to_string(machine->runs) + " finished runs of this engine in " +
+                       std::to_string(machine->studies) + " results folders beside them recorded, particle-steps over wall time");
       else
         print_plan(runs, throughput,
                    "the engine's, measured by make bench on this project's 2-core machine (reports/bench.md: 8,000 "

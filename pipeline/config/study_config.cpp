@@ -216,6 +216,7 @@ std::string describe(const Variant& v) {
   add("preparation: ", v.prepare);
   add("test: ", v.test);
   for (const auto& [test, o] : v.per_test) add(test + ": ", o);
+  for (const auto& [density, o] : v.per_density) add(density + " tests: ", o);
   if (v.shear_with_preparation_friction) out += (out.empty() ? "" : "; ") + std::string("shearing friction = the preparation's");
   if (v.time_step_fraction) {
     std::ostringstream f;
@@ -331,6 +332,25 @@ Study load_study(const std::string& file) {
         per.finish();
       } else {
         v.optional_child("per_test", "scene overrides of single tests, by test name");
+      }
+      if (v.has("per_density")) {
+        const YAML::Node pd = v.raw("per_density", "a mapping of density names to scene overrides",
+                                    "scene overrides of one density's tests, by density name (e.g. {dense: {material.friction: 0.0}})");
+        if (!pd.IsMap() || pd.size() == 0) v.fail("per_density", "must be a non-empty mapping of density names to scene overrides");
+        if (st.tests.empty()) v.fail("per_density", "sets the tests of a density; this study has no tests");
+        dem::Section per(pd, v.file(), v.key_path("per_density"));
+        for (const auto& kv : pd) {
+          const std::string density = kv.first.IsScalar() ? kv.first.Scalar() : "";
+          if (std::none_of(st.densities.begin(), st.densities.end(), [&](const Density& d) { return d.name == density; })) {
+            std::string known;
+            for (const Density& d : st.densities) known += (known.empty() ? "" : ", ") + d.name;
+            v.fail("per_density." + density, "is not a density of this study (densities: " + known + ")");
+          }
+          var.per_density.emplace_back(density, read_overrides(per, density, true, "scene overrides of this density's tests"));
+        }
+        per.finish();
+      } else {
+        v.optional_child("per_density", "scene overrides of one density's tests, by density name");
       }
       var.shear_with_preparation_friction =
           v.boolean("shear_with_preparation_friction", false,

@@ -32,6 +32,7 @@ struct Variant {
   Overrides set;            // applied to the preparation and the tests
   Overrides prepare, test;  // then these, to the preparation only / the tests only
   std::vector<std::pair<std::string, Overrides>> per_test;  // then these, to the named test only
+  std::vector<std::pair<std::string, Overrides>> per_density;  // then these, to the named density's tests only
   bool shear_with_preparation_friction = false;  // the tests' material.friction = the density's preparation friction
   std::optional<double> time_step_fraction;  // numerics.time_step = this x the sample's critical step
   bool may_fail = false;    // a run that stops with a message is an outcome, not a study failure

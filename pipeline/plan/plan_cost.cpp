@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <map>
 #include <string>
 #include <limits>
@@ -43,6 +45,37 @@ std::optional<double> use_recorded_costs(std::vector<PlannedRun>& runs) {
   }
   if (wall_s > 0) return particle_steps / wall_s;
   return std::nullopt;
+}
+
+std::optional<MachineThroughput> recorded_throughput_under(const std::string& root, const std::string& engine_version) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::is_directory(root, ec)) return std::nullopt;
+  MachineThroughput m;
+  double particle_steps = 0, wall_s = 0;
+  for (auto it = fs::recursive_directory_iterator(root, fs::directory_options::skip_permission_denied, ec);
+       !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+    if (it.depth() >= 3) it.disable_recursion_pending();
+    if (it->path().filename() != "runs.tsv" || !it->is_regular_file(ec)) continue;
+    std::ifstream manifest(it->path());
+    std::string line;
+    if (!std::getline(manifest, line) || line != "# engine source " + engine_version) continue;
+    int counted = 0;
+    while (std::getline(manifest, line)) {
+      if (line.empty() || line[0] == '#') continue;
+      std::istringstream fields(line);
+      std::string result;
+      for (int column = 0; column < 5 && std::getline(fields, result, '\t'); ++column) {
+      }
+      const std::optional<ResultCost> cost = result.empty() ? std::nullopt : result_cost(result);
+      if (!cost || !cost->wall_s || *cost->wall_s <= 0) continue;
+      particle_steps += cost->particle_steps, wall_s += *cost->wall_s, ++counted;
+    }
+    m.runs += counted, m.studies += counted > 0;
+  }
+  if (wall_s <= 0) return std::nullopt;
+  m.particle_steps_per_s = particle_steps / wall_s;
+  return m;
 }
 
 std::vector<double> run_costs(const std::vector<PlannedRun>& runs, const std::vector<bool>& todo) {

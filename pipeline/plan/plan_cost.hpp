@@ -22,6 +22,17 @@ inline constexpr double default_throughput = 3.5e7;
 // of their recorded wall times together, none without one.
 std::optional<double> use_recorded_costs(std::vector<PlannedRun>& runs);
 
+// What the finished runs of one engine source recorded on this machine, for a plan whose own runs
+// have none yet: the particle-steps over the wall time of every complete result listed in a
+// runs.tsv at most three folders below `root` (results/<study>/<profile>/runs.tsv, a
+// calibration's one deeper) whose first line names `engine_version`. None when no such run
+// recorded a wall time.
+struct MachineThroughput {
+  double particle_steps_per_s = 0;
+  int runs = 0, studies = 0;
+};
+std::optional<MachineThroughput> recorded_throughput_under(const std::string& root, const std::string& engine_version);
+
 // `todo[i]`: run i has to run; a reused result or a copy (copy_of) costs nothing.
 std::vector<double> run_costs(const std::vector<PlannedRun>& runs, const std::vector<bool>& todo);
 

@@ -366,6 +366,9 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
           for (const auto& [test, overrides] : v.per_test)
             if (test == t.name)
               for (const auto& [key, value] : overrides) dem::apply_override(ts, t.scene, key, value);
+          for (const auto& [density, overrides] : v.per_density)
+            if (density == d.name)
+              for (const auto& [key, value] : overrides) dem::apply_override(ts, t.scene, key, value);
           if (v.shear_with_preparation_friction) {
             std::ostringstream mu;
             mu << d.friction;

@@ -9,6 +9,7 @@
 #include "calibration_file.hpp"
 #include "config/yaml_section.hpp"
 #include "references.hpp"
+#include "sets.hpp"
 
 namespace fs = std::filesystem;
 
@@ -105,6 +106,25 @@ TEST_CASE("bad curve files and calibration files name the file, line and key", "
   // The same key in the preparation and in the test: two parameters (the paper's two frictions).
   CHECK(calibration::read_calibration(write("g2.yaml", head + "parameters: [{name: a, keys: k, applies_to: prepare, uniform: [0, 1]}, "
                                                             "{name: b, keys: k, uniform: [0, 1]}]\n")).parameters.size() == 2);
+  // The same key in the tests of two densities: two parameters; in all tests and one density's: one key twice.
+  const auto by_density = calibration::read_calibration(
+      write("g3.yaml", head + "parameters: [{name: a, keys: k, densities: [dense], uniform: [0, 1]}, "
+                              "{name: b, keys: k, densities: [medium], uniform: [0, 1]}]\n"));
+  CHECK(by_density.parameters[0].densities == std::vector<std::string>{"dense"});
+  calibration::ParameterSet set;
+  set.u = Eigen::Vector2d(0.5, 0.25);
+  const pipeline::Variant v = calibration::variant_of(by_density, set);
+  CHECK(v.test.empty());
+  CHECK(v.per_density == std::vector<std::pair<std::string, pipeline::Overrides>>{{"dense", {{"k", "0.5"}}}, {"medium", {{"k", "0.25"}}}});
+  CHECK_THAT(error_of([&] {
+               calibration::read_calibration(write("g4.yaml", head + "parameters: [{name: a, keys: k, densities: [dense], uniform: [0, 1]}, "
+                                                                    "{name: b, keys: k, uniform: [0, 1]}]\n"));
+             }),
+             Catch::Contains("'k' is set by two parameters in the test runs"));
+  CHECK_THAT(error_of([&] {
+               calibration::read_calibration(write("g5.yaml", head + "parameters: [{name: a, keys: k, densities: [dense], applies_to: both, uniform: [0, 1]}]\n"));
+             }),
+             Catch::Contains("densities") && Catch::Contains("applies_to: test"));
   CHECK_THAT(error_of([&] { calibration::read_calibration(write("h.yaml", head + "parameters: [{name: a, keys: k, values: [1]}]\n")); }),
              Catch::Contains("at least 2 values"));
   CHECK_THAT(error_of([&] { calibration::read_calibration(write("i.yaml", head + "parameters: [{name: a, keys: k, uniform: [0, 1], applies: test}]\n")); }),

@@ -15,6 +15,7 @@
 #include "exec/scheduler.hpp"
 #include "exec/tracker.hpp"
 #include "io/hdf5.hpp"
+#include "plan/plan_cost.hpp"
 #include "plan/run_plan.hpp"
 #include "pipeline/tiny_scenes.hpp"
 
@@ -223,4 +224,34 @@ TEST_CASE("pipeline: the ETA learns from finished runs what their family takes a
   CHECK(tracker.eta_seconds() == Approx(82.0));
   tracker.set_workers(2);
   CHECK(tracker.eta_seconds() == Approx(41.0));
+}
+
+TEST_CASE("pipeline: a plan without finished runs takes what this engine's runs in other results folders recorded", "[pipeline][plan]") {
+  const fs::path root = fs::path(DEM_BINARY_DIR) / "test_tmp" / "machine_throughput";
+  fs::remove_all(root);
+  const auto manifest = [&](const fs::path& folder, const std::string& engine, const std::vector<std::string>& results) {
+    fs::create_directories(folder);
+    std::ofstream f(folder / "runs.tsv");
+    f << "# engine source " << engine << "\n# variant\tdensity\ttest\trun\tresult\tstarts_from\tmay_fail\tsettings\tseed\tinput_hash\n";
+    for (const std::string& r : results) f << "-\tloose\t-\t" << r << "\t" << (folder / (r + ".h5")).string() << "\t-\t0\tas written\t-\th\n";
+  };
+  // Engine E: 1,000 steps of 10 spheres in 2 s, and 2,000 steps of 10 in 2 s (30,000 particle-steps in 4 s);
+  // a run without a wall time and a run listed but never finished are left out.
+  manifest(root / "a" / "paper", "E schema 4", {"one", "two", "no_wall", "not_run"});
+  write_result(root / "a" / "paper" / "one.h5", "h", 1000, 10, 2.0);
+  write_result(root / "a" / "paper" / "two.h5", "h", 2000, 10, 2.0);
+  write_result(root / "a" / "paper" / "no_wall.h5", "h", 5000, 10, std::nullopt);
+  // A calibration's folder, one level deeper: counted (1,000 x 10 in 6 s).
+  manifest(root / "calibration" / "calibration_c" / "paper", "E schema 4", {"three"});
+  write_result(root / "calibration" / "calibration_c" / "paper" / "three.h5", "h", 1000, 10, 6.0);
+  // Another engine's runs: not counted.
+  manifest(root / "b" / "paper", "F schema 4", {"fast"});
+  write_result(root / "b" / "paper" / "fast.h5", "h", 1000000, 10, 1.0);
+  const auto m = pipeline::recorded_throughput_under(root.string(), "E schema 4");
+  REQUIRE(m);
+  CHECK(m->particle_steps_per_s == Approx(40000.0 / 10.0));
+  CHECK(m->runs == 3);
+  CHECK(m->studies == 2);
+  CHECK_FALSE(pipeline::recorded_throughput_under(root.string(), "G schema 4"));
+  CHECK_FALSE(pipeline::recorded_throughput_under((root / "missing").string(), "E schema 4"));
 }

@@ -1,6 +1,6 @@
 // Ensembles of samples (study key seeds) and the decisions study's variant keys: every run once
-// per seed in its own folder, on that seed's sample; per_test changes one test; shearing with the
-// preparation friction follows the density; bad input names the key.
+// per seed in its own folder, on that seed's sample; per_test changes one test, per_density one
+// density's tests; shearing with the preparation friction follows the density; bad input names the key.
 #include <catch2/catch.hpp>
 
 #include <filesystem>
@@ -92,6 +92,9 @@ TEST_CASE("seeds: bad input names the key", "[pipeline][ensemble]") {
              Catch::Contains("prepare.particles.lattice.seed") && Catch::Contains("seeds choose the samples"));
   CHECK_THAT(message(two_densities + profiles + "variants: [{name: a, per_test: {test9: {numerics.time_step: 1.0e-6}}}]\n"),
              Catch::Contains("per_test.test9") && Catch::Contains("test1, test2"));
+  CHECK_THAT(message(two_densities + profiles + "variants: [{name: a, per_density: {medium: {material.friction: 0.2}}}]\n"),
+             Catch::Contains("per_density.medium") && Catch::Contains("loose, dense"));
+  CHECK_THAT(message(two_densities + profiles + "variants: [{name: a, per_density: []}]\n"), Catch::Contains("per_density"));
 }
 
 TEST_CASE("per_test changes one test; shearing with the preparation friction follows the density", "[pipeline][ensemble]") {
@@ -107,6 +110,14 @@ TEST_CASE("per_test changes one test; shearing with the preparation friction fol
   CHECK(dem::friction_coefficient(scene(r.at("prepmu_dense_test1")).material.law) == 0.0);  // the dense sample's preparation friction
   CHECK(dem::friction_coefficient(scene(r.at("prepmu_loose_test1")).material.law) == 0.5);
   CHECK(dem::friction_coefficient(scene(r.at("base_dense_test1")).material.law) == 0.5);   // the test scene's shearing friction
+  // per_density: the named density's tests only; its preparation and the other density as written.
+  const auto pd = plan(dir, two_densities + "profiles: {paper: {lattice: 2}, quick: {lattice: 2}}\n"
+                                            "variants: [{name: base}, {name: dmu, per_density: {dense: {material.friction: 0.25}}}]\n");
+  CHECK(dem::friction_coefficient(scene(pd.at("dmu_dense_test1")).material.law) == 0.25);
+  CHECK(dem::friction_coefficient(scene(pd.at("dmu_dense_test2")).material.law) == 0.25);
+  CHECK(pd.at("dmu_loose_test1").hash == pd.at("base_loose_test1").hash);
+  CHECK(pd.at("dmu_dense_test1").hash != pd.at("base_dense_test1").hash);
+  CHECK(pd.count("dmu_dense_prepare") == 0);  // the preparation is base's, shared
   // join_studies: a test whose resolved scene is the baseline's but for its name is a copy of it.
   const pipeline::Study study = load(dir, two_densities + "profiles: {paper: {lattice: 2}, quick: {lattice: 2}}\n"
                                                           "variants: [{name: base}, {name: slow2, per_test: {test2: {\"stages[0].duration\": 2.0e-4}}}]\n");
