@@ -43,6 +43,13 @@ std::string Parameter::value_text(double u) const {
   return exact(value(u));
 }
 
+std::vector<std::pair<std::string, std::string>> Parameter::overrides(double u) const {
+  if (!readings.empty()) return readings[bin(u, readings.size())];
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const std::string& key : keys) out.emplace_back(key, value_text(u));
+  return out;
+}
+
 double Parameter::unit_of(double x) const {
   switch (prior) {
     case Prior::Uniform: return (x - low) / (high - low);

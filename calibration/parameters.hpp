@@ -2,7 +2,8 @@
 // The parameters a calibration infers: scene keys with a prior range. Each parameter lives on the
 // unit interval u in [0, 1], where its prior is uniform; its value is u mapped onto the range
 // (uniform), onto the logarithm of the range (log_uniform), or onto one of a list of values
-// (values: u picks the k-th of K by floor(u K)).
+// (values: u picks the k-th of K by floor(u K); readings: the same, each value a named set of
+// scene keys and values).
 #include <string>
 #include <vector>
 
@@ -17,13 +18,18 @@ struct Parameter {
   std::string applies_to = "test";
   Prior prior = Prior::Uniform;
   double low = 0, high = 1;            // Uniform, LogUniform
-  std::vector<std::string> values;     // Values, as YAML text
+  std::vector<std::string> values;     // Values, as YAML text (of readings: their names)
   // The densities whose tests the keys are set in (applies_to test only); empty: every density.
   std::vector<std::string> densities;
+  // Values that are readings: each a set of scene keys and values (parallel to values, which holds
+  // their names); keys then lists every key any reading sets.
+  std::vector<std::vector<std::pair<std::string, std::string>>> readings;
 
   bool discrete() const { return prior == Prior::Values; }
-  // The value at u (numbers as text the way scene files take them).
+  // The value at u (numbers as text the way scene files take them; a reading's name).
   std::string value_text(double u) const;
+  // The scene keys and values the parameter sets at u: each key with the value, or the reading's.
+  std::vector<std::pair<std::string, std::string>> overrides(double u) const;
   // The value at u as a number (Values: the value when it is a number, else its index).
   double value(double u) const;
   // The unit coordinate of a value (the inverse of value; for Values the middle of its bin).

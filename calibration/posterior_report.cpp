@@ -114,16 +114,28 @@ std::map<std::string, double> parameters_of_result(const Calibration& c, const s
   dem::h5::Handle f = dem::h5::open_file_read(result);
   const YAML::Node scene = YAML::Load(dem::h5::read_text(f, "scene_yaml"));
   std::map<std::string, double> values;
+  const auto at = [&](const std::string& key) {
+    YAML::Node n = YAML::Clone(scene);
+    std::stringstream path(key);
+    for (std::string part; std::getline(path, part, '.');) {
+      if (!n.IsMap() || !n[part]) throw std::runtime_error(result + ": its scene has no " + key);
+      n = n[part];
+    }
+    return n;
+  };
   for (const Parameter& p : c.parameters) {
+    if (!p.readings.empty()) {  // the reading whose every key the scene holds; its value (Parameter::value)
+      for (std::size_t k = 0; k < p.readings.size() && !values.count(p.name); ++k)
+        if (std::all_of(p.readings[k].begin(), p.readings[k].end(), [&](const std::pair<std::string, std::string>& kv) {
+              return at(kv.first).as<std::string>() == YAML::Load(kv.second).as<std::string>();
+            }))
+          values[p.name] = p.value((static_cast<double>(k) + 0.5) / static_cast<double>(p.readings.size()));
+      if (!values.count(p.name)) throw std::runtime_error(result + ": its scene holds none of the readings of " + p.name);
+      continue;
+    }
     std::optional<double> value;
     for (const std::string& key : p.keys) {
-      YAML::Node n = YAML::Clone(scene);
-      std::stringstream path(key);
-      for (std::string part; std::getline(path, part, '.');) {
-        if (!n.IsMap() || !n[part]) throw std::runtime_error(result + ": its scene has no " + key);
-        n = n[part];
-      }
-      const double x = n.as<double>();
+      const double x = at(key).as<double>();
       if (value && *value != x) throw std::runtime_error(result + ": the keys of " + p.name + " differ");
       value = x;
     }

@@ -10,17 +10,17 @@ pipeline::Variant variant_of(const Calibration& c, const ParameterSet& s) {
   v.name = s.name;
   for (std::size_t j = 0; j < c.parameters.size(); ++j) {
     const Parameter& p = c.parameters[j];
-    const std::string value = p.value_text(s.u(static_cast<Eigen::Index>(j)));
+    const auto overrides = p.overrides(s.u(static_cast<Eigen::Index>(j)));
     if (!p.densities.empty()) {  // some densities' tests only
       for (const std::string& density : p.densities) {
         auto into = std::find_if(v.per_density.begin(), v.per_density.end(), [&](const auto& e) { return e.first == density; });
         if (into == v.per_density.end()) into = v.per_density.insert(v.per_density.end(), {density, {}});
-        for (const std::string& key : p.keys) into->second.emplace_back(key, value);
+        into->second.insert(into->second.end(), overrides.begin(), overrides.end());
       }
       continue;
     }
     pipeline::Overrides& into = p.applies_to == "test" ? v.test : p.applies_to == "prepare" ? v.prepare : v.set;
-    for (const std::string& key : p.keys) into.emplace_back(key, value);
+    into.insert(into.end(), overrides.begin(), overrides.end());
   }
   return v;
 }

@@ -12,21 +12,21 @@
 using calibration::Parameter;
 
 TEST_CASE("a parameter maps the unit interval onto its prior", "[calibration]") {
-  Parameter u{"mu", {"material.friction"}, "test", Parameter::Prior::Uniform, 0.1, 0.9, {}, {}};
+  Parameter u{"mu", {"material.friction"}, "test", Parameter::Prior::Uniform, 0.1, 0.9, {}, {}, {}};
   CHECK(u.value(0.5) == Approx(0.5));
   CHECK(u.unit_of(0.3) == Approx(0.25));
-  Parameter l{"kn", {"material.kn"}, "test", Parameter::Prior::LogUniform, 1e5, 1e7, {}, {}};
+  Parameter l{"kn", {"material.kn"}, "test", Parameter::Prior::LogUniform, 1e5, 1e7, {}, {}, {}};
   CHECK(l.value(0.5) == Approx(1e6));      // the geometric middle
   CHECK(l.unit_of(1e6) == Approx(0.5));
   CHECK(l.value_text(1.0) == "10000000");
-  Parameter v{"law", {"material.law"}, "both", Parameter::Prior::Values, 0, 0, {"linear", "hertz_mindlin", "0.5"}, {}};
+  Parameter v{"law", {"material.law"}, "both", Parameter::Prior::Values, 0, 0, {"linear", "hertz_mindlin", "0.5"}, {}, {}};
   CHECK(v.value_text(0.0) == "linear");
   CHECK(v.value_text(0.5) == "hertz_mindlin");
   CHECK(v.value_text(1.0) == "0.5");       // u = 1 is the last bin's
   CHECK(v.value(0.9) == 0.5);              // a number is its value
   CHECK(v.value(0.1) == 0);                // a word is its index
   CHECK(u.prior_unit_sd() == Approx(1 / std::sqrt(12.0)));
-  Parameter two{"b", {"k"}, "test", Parameter::Prior::Values, 0, 0, {"1", "2"}, {}};
+  Parameter two{"b", {"k"}, "test", Parameter::Prior::Values, 0, 0, {"1", "2"}, {}, {}};
   CHECK(two.prior_unit_sd() == Approx(0.25));  // bins' middles 0.25 and 0.75: sd 0.25
 }
 
@@ -72,7 +72,7 @@ TEST_CASE("importance weights recover a known posterior", "[calibration]") {
   // (truncation at 0 and 1 is 6 sd away, negligible). Five iterations of 64 draws, each proposal
   // fitted to the weights so far: the mean within 0.015 (3 x sd / sqrt(ESS) for ESS > 100) and the
   // sd within 20 % (its relative error is about 1 / sqrt(2 ESS)).
-  const Parameter p{"x", {"x"}, "test", Parameter::Prior::Uniform, 0, 1, {}, {}};
+  const Parameter p{"x", {"x"}, "test", Parameter::Prior::Uniform, 0, 1, {}, {}, {}};
   calibration::Sampler s(1);
   std::vector<calibration::Proposal> proposals;
   std::vector<int> drawn;
@@ -99,7 +99,7 @@ TEST_CASE("importance weights recover a known posterior", "[calibration]") {
 }
 
 TEST_CASE("a flat likelihood leaves the prior: not identified", "[calibration]") {
-  const Parameter p{"x", {"x"}, "test", Parameter::Prior::Uniform, 0, 1, {}, {}};
+  const Parameter p{"x", {"x"}, "test", Parameter::Prior::Uniform, 0, 1, {}, {}, {}};
   calibration::Sampler s(1);
   const auto u = s.draw(calibration::Proposal{}, 63);
   const std::vector<double> w = calibration::importance_weights(u, std::vector<double>(63, -3.0), {calibration::Proposal{}}, {63});

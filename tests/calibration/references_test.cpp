@@ -125,6 +125,34 @@ TEST_CASE("bad curve files and calibration files name the file, line and key", "
                calibration::read_calibration(write("g5.yaml", head + "parameters: [{name: a, keys: k, densities: [dense], applies_to: both, uniform: [0, 1]}]\n"));
              }),
              Catch::Contains("densities") && Catch::Contains("applies_to: test"));
+  // Readings: each value a named set of keys; the parameter's keys are all of theirs.
+  const auto readings = calibration::read_calibration(
+      write("r1.yaml", head + "parameters: [{name: d, readings: [{name: body, set: {t: 0.05, c: 0.0}}, "
+                              "{name: dashpots, set: {c: 0.05, t: 0.0}}]}]\n"));
+  const calibration::Parameter& d = readings.parameters[0];
+  CHECK(d.keys == std::vector<std::string>{"t", "c"});
+  CHECK(d.values == std::vector<std::string>{"body", "dashpots"});
+  CHECK(d.overrides(0.9) == std::vector<std::pair<std::string, std::string>>{{"c", "0.05"}, {"t", "0.0"}});
+  calibration::ParameterSet first;
+  first.u = Eigen::VectorXd::Constant(1, 0.1);
+  CHECK(calibration::variant_of(readings, first).test == pipeline::Overrides{{"t", "0.05"}, {"c", "0.0"}});
+  CHECK_THAT(error_of([&] {
+               calibration::read_calibration(write("r2.yaml", head + "parameters: [{name: d, keys: t, readings: [{name: a, set: {t: 1}}, {name: b, set: {t: 2}}]}]\n"));
+             }),
+             Catch::Contains("keys: is given beside readings"));
+  CHECK_THAT(error_of([&] {
+               calibration::read_calibration(write("r3.yaml", head + "parameters: [{name: d, readings: [{name: a, set: {t: 1}}, {name: b, set: {t: 2}}]}, "
+                                                                    "{name: e, keys: t, uniform: [0, 1]}]\n"));
+             }),
+             Catch::Contains("'t' is set by two parameters"));
+  CHECK_THAT(error_of([&] {
+               calibration::read_calibration(write("r4.yaml", head + "parameters: [{name: d, readings: [{name: a, set: {t: 1}}]}]\n"));
+             }),
+             Catch::Contains("at least 2 readings"));
+  CHECK_THAT(error_of([&] {
+               calibration::read_calibration(write("r5.yaml", head + "parameters: [{name: d, values: [1, 2], readings: [{name: a, set: {t: 1}}, {name: b, set: {t: 2}}]}]\n"));
+             }),
+             Catch::Contains("exactly one prior"));
   CHECK_THAT(error_of([&] { calibration::read_calibration(write("h.yaml", head + "parameters: [{name: a, keys: k, values: [1]}]\n")); }),
              Catch::Contains("at least 2 values"));
   CHECK_THAT(error_of([&] { calibration::read_calibration(write("i.yaml", head + "parameters: [{name: a, keys: k, uniform: [0, 1], applies: test}]\n")); }),

@@ -64,7 +64,7 @@ TEST_CASE("the posterior on a surface is the analytic one", "[calibration]") {
   std::vector<Eigen::VectorXd> u;
   std::vector<double> w;
   calibration::sample_surface(*surface, refs, 4000, u, w);
-  const calibration::Parameter p{"x", {"x"}, "test", calibration::Parameter::Prior::Uniform, 0, 1, {}, {}};
+  const calibration::Parameter p{"x", {"x"}, "test", calibration::Parameter::Prior::Uniform, 0, 1, {}, {}, {}};
   const auto m = calibration::marginal(p, 0, u, w);
   CHECK(m.mean == Approx(0.4).margin(0.005));
   CHECK(m.sd == Approx(1 / std::sqrt(300.0)).epsilon(0.1));
@@ -117,7 +117,7 @@ TEST_CASE("a scalar row on the surface: the probability that one sample lies in 
   std::vector<Eigen::VectorXd> u;
   std::vector<double> w;
   calibration::sample_surface(*surface, refs, 4000, u, w);
-  const calibration::Parameter p{"x", {"x"}, "test", calibration::Parameter::Prior::Uniform, 0, 1, {}, {}};
+  const calibration::Parameter p{"x", {"x"}, "test", calibration::Parameter::Prior::Uniform, 0, 1, {}, {}, {}};
   const auto m = calibration::marginal(p, 0, u, w);
   CHECK(mean == Approx(0.4).margin(1e-6));
   CHECK(m.mean == Approx(mean).margin(0.005));
