@@ -4,7 +4,10 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
+
+#include <yaml-cpp/yaml.h>
 
 #include <nlohmann/json.hpp>
 
@@ -77,6 +80,49 @@ TEST_CASE("calibrate runs, writes its posterior, and replays itself from its run
   REQUIRE(again.exit_code == 0);
   CHECK(again.out.find("] started ") == std::string::npos);
   CHECK(read(dir / "report" / "posterior.json") == before);
+}
+
+TEST_CASE("calibrate sets a density's parameter in that density's tests only, and a reading's keys together", "[calibration][cli]") {
+  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "calibrate_cli_density";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string src = DEM_SOURCE_DIR;
+  std::ofstream(dir / "study.yaml") << "name: two\noutput: results\npreparation: " << src << "/scenes/prepare_dense.yaml\n"
+                                    << "densities: [{name: loose, friction: 0.5}, {name: dense, friction: 0.0}]\n"
+                                    << "tests: [{name: triaxial, scene: " << src << "/scenes/tests/triaxial_drained.yaml, "
+                                    << "set: {\"stages[1].until.strain\": 0.002}}]\n"
+                                    << "profiles: {quick: {lattice: 4}}\n";
+  std::ofstream(dir / "curve.csv") << "strain_3,q_over_p,sd\n0.001,0.5,0.1\n";
+  std::ofstream(dir / "refs.yaml") << "source: typed\ncurves: [{name: qp, file: curve.csv, x: strain_3, y: q_over_p, "
+                                   << "density: dense, test: triaxial}]\n";
+  std::ofstream(dir / "cal.yaml")
+      << "name: two\nstudy: study.yaml\nreferences: refs.yaml\nreport: report\nparameters:\n"
+      << "  - {name: dense_friction, keys: material.friction, densities: [dense], uniform: [0.1, 0.3]}\n"
+      << "  - {name: test_damping, readings: [{name: body, set: {damping.translational: 0.05, material.contact_damping: 0.0}},\n"
+      << "                                  {name: dashpots, set: {damping.translational: 0.0, material.contact_damping: 0.05}}]}\n"
+      << "batch: 4\nmin_iterations: 1\nmax_iterations: 1\n";
+  const auto r = dem::test::run_command("cd '" + dir.string() + "' && '" + bin + "calibrate' cal.yaml -j 2 --threads 1 2>&1");
+  INFO(r.out);
+  REQUIRE(r.exit_code == 0);
+  const nlohmann::json p = nlohmann::json::parse(read(dir / "report" / "posterior.json"));
+  REQUIRE(p["sets"].size() == 4);
+  std::set<double> readings;
+  for (const auto& set : p["sets"]) {
+    const std::string name = set["name"];
+    INFO(name);
+    CHECK(set["scored"].get<bool>());  // its runs, dashpots or not, finished
+    const YAML::Node dense = YAML::LoadFile((dir / "results" / "calibration_two" / "quick" / "scenes" / (name + "_dense_triaxial.yaml")).string());
+    const YAML::Node loose = YAML::LoadFile((dir / "results" / "calibration_two" / "quick" / "scenes" / (name + "_loose_triaxial.yaml")).string());
+    CHECK(dense["material"]["friction"].as<double>() == Approx(set["values"]["dense_friction"].get<double>()));
+    CHECK(loose["material"]["friction"].as<double>() == 0.5);  // the test scene's, as written
+    const bool dashpots = set["values"]["test_damping"].get<double>() == 1;  // a reading's value: its index
+    readings.insert(set["values"]["test_damping"].get<double>());
+    for (const YAML::Node& scene : {dense, loose}) {
+      CHECK(scene["material"]["contact_damping"].as<double>() == (dashpots ? 0.05 : 0.0));
+      CHECK(scene["damping"]["translational"].as<double>() == (dashpots ? 0.0 : 0.05));
+    }
+  }
+  CHECK(readings == std::set<double>{0, 1});  // both readings drawn in 4 quasi-random sets
 }
 
 TEST_CASE("calibrate refuses bad input with the file and key", "[calibration][cli]") {
