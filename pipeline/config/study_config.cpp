@@ -76,6 +76,31 @@ Overrides read_overrides(dem::Section& s, const std::string& key, bool for_test,
   return out;
 }
 
+// `key: {name: {scene key: value, ...}, ...}`: test overrides of the study's tests or densities by
+// name (`what`: "test" or "density"); a name that is not one of `names` is refused listing them.
+std::vector<std::pair<std::string, Overrides>> read_named_overrides(dem::Section& v, const std::string& key, const std::string& what,
+                                                                    const std::vector<std::string>& names, const std::string& doc) {
+  std::vector<std::pair<std::string, Overrides>> out;
+  if (!v.has(key)) {
+    v.optional_child(key, doc);
+    return out;
+  }
+  const YAML::Node n = v.raw(key, "a mapping of " + what + " names to scene overrides", doc);
+  if (!n.IsMap() || n.size() == 0) v.fail(key, "must be a non-empty mapping of " + what + " names to scene overrides");
+  dem::Section per(n, v.file(), v.key_path(key));
+  for (const auto& kv : n) {
+    const std::string name = kv.first.IsScalar() ? kv.first.Scalar() : "";
+    if (std::find(names.begin(), names.end(), name) == names.end()) {
+      std::string known;
+      for (const std::string& k : names) known += (known.empty() ? "" : ", ") + k;
+      v.fail(key + "." + name, "is not a " + what + " of this study (" + (what == "density" ? "densities" : what + "s") + ": " + known + ")");
+    }
+    out.emplace_back(name, read_overrides(per, name, true, "scene overrides of this " + what + (what == "density" ? "'s tests" : "")));
+  }
+  per.finish();
+  return out;
+}
+
 // `seeds: N` (the seeds 1..N) or `seeds: [a, b, ...]` (distinct); the samples of an ensemble.
 std::vector<std::int64_t> read_seeds(dem::Section& s, const std::vector<std::int64_t>& def) {
   const std::string doc = "the samples: N (seeds 1..N) or a list of distinct seeds of the diameter sampler";
@@ -315,43 +340,14 @@ Study load_study(const std::string& file) {
       var.set = read_overrides(v, "set", false, "scene overrides of the preparation and the tests");
       var.prepare = read_overrides(v, "prepare", false, "scene overrides of the preparation");
       var.test = read_overrides(v, "test", true, "scene overrides of the tests");
-      if (v.has("per_test")) {
-        const YAML::Node pt = v.raw("per_test", "a mapping of test names to scene overrides",
-                                    "scene overrides of single tests, by test name (e.g. {test3: {stages[0].path: [...]}})");
-        if (!pt.IsMap() || pt.size() == 0) v.fail("per_test", "must be a non-empty mapping of test names to scene overrides");
-        dem::Section per(pt, v.file(), v.key_path("per_test"));
-        for (const auto& kv : pt) {
-          const std::string test = kv.first.IsScalar() ? kv.first.Scalar() : "";
-          if (std::none_of(st.tests.begin(), st.tests.end(), [&](const TestCase& t) { return t.name == test; })) {
-            std::string known;
-            for (const TestCase& t : st.tests) known += (known.empty() ? "" : ", ") + t.name;
-            v.fail("per_test." + test, "is not a test of this study (tests: " + known + ")");
-          }
-          var.per_test.emplace_back(test, read_overrides(per, test, true, "scene overrides of this test"));
-        }
-        per.finish();
-      } else {
-        v.optional_child("per_test", "scene overrides of single tests, by test name");
-      }
-      if (v.has("per_density")) {
-        const YAML::Node pd = v.raw("per_density", "a mapping of density names to scene overrides",
-                                    "scene overrides of one density's tests, by density name (e.g. {dense: {material.friction: 0.0}})");
-        if (!pd.IsMap() || pd.size() == 0) v.fail("per_density", "must be a non-empty mapping of density names to scene overrides");
-        if (st.tests.empty()) v.fail("per_density", "sets the tests of a density; this study has no tests");
-        dem::Section per(pd, v.file(), v.key_path("per_density"));
-        for (const auto& kv : pd) {
-          const std::string density = kv.first.IsScalar() ? kv.first.Scalar() : "";
-          if (std::none_of(st.densities.begin(), st.densities.end(), [&](const Density& d) { return d.name == density; })) {
-            std::string known;
-            for (const Density& d : st.densities) known += (known.empty() ? "" : ", ") + d.name;
-            v.fail("per_density." + density, "is not a density of this study (densities: " + known + ")");
-          }
-          var.per_density.emplace_back(density, read_overrides(per, density, true, "scene overrides of this density's tests"));
-        }
-        per.finish();
-      } else {
-        v.optional_child("per_density", "scene overrides of one density's tests, by density name");
-      }
+      std::vector<std::string> test_names, density_names;
+      for (const TestCase& t : st.tests) test_names.push_back(t.name);
+      for (const Density& d : st.densities) density_names.push_back(d.name);
+      var.per_test = read_named_overrides(v, "per_test", "test", test_names,
+                                          "scene overrides of single tests, by test name (e.g. {test3: {stages[0].path: [...]}})");
+      var.per_density = read_named_overrides(v, "per_density", "density", density_names,
+                                             "scene overrides of one density's tests, by density name (e.g. {dense: {material.friction: 0.0}})");
+      if (!var.per_density.empty() && st.tests.empty()) v.fail("per_density", "sets the tests of a density; this study has no tests");
       var.shear_with_preparation_friction =
           v.boolean("shear_with_preparation_friction", false,
                     "the tests shear with the density's preparation friction instead of their scenes' material.friction");
