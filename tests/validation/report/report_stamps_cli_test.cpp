@@ -42,6 +42,7 @@ TEST_CASE("report: a section from another baseline refused, then kept under ⚠ 
   // that the critical state is the one section from another baseline.
   set_key(out / "convergence" / "summary.json", "baseline", "1111111111111111");
   set_key(out / "literature" / "validation.json", "stamp", paper);  // judged on results of their own, stamped
+  fs::remove(out / "liquefaction" / "stamp.json");  // a section made before stamps: said so, not refused
   std::ofstream(out / "critical_state" / "stamp.json")
       << R"({"engine": "0.1.0+aaaa", "baseline": "2222222222222222", "spheres": 8000, "samples": 1, "date": "2026-11-25"})" << "\n";
   const std::string before = dem::test::read_bytes((out / "index.md").string());
