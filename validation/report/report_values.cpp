@@ -288,6 +288,8 @@ void add_tables(Values& v, const fs::path& report, const std::vector<Row>& paper
   v["file.critical_state"] = fs::exists(report / "critical_state" / "table.md") ? section_table(report, "critical_state") : "";
   include("file.calibration", fs::path("calibration") / "synthetic_triaxial" / "section.md");
   v["calibration_plot"] = fs::exists(report / "calibration" / "synthetic_triaxial" / "posterior.png") ? "1" : "";
+  include("file.calibration_open_choices", fs::path("calibration") / "paper_open_choices" / "section.md");
+  v["calibration_open_choices_plot"] = fs::exists(report / "calibration" / "paper_open_choices" / "posterior.png") ? "1" : "";
   v["file.liquefaction"] = fs::exists(report / "liquefaction" / "table.md") ? section_table(report, "liquefaction") : "";
   v["convergence_plot"] = fs::exists(report / "convergence" / "error_vs_time.png") ? "yes" : "";
   // The size the decisions table was measured at: its decisions.json's own record, else (the
