@@ -3,9 +3,11 @@
 //   calibrate CALIBRATION.yaml [--profile P] [-j N] [--threads T] [--executor local|slurm] [--plan] [--truth FILE]
 //   calibrate lab-curve --x COLUMN --y COLUMN --at X1,X2,... --out FILE.csv RESULT.h5...
 //   calibrate truth CALIBRATION.yaml RESULT.h5 --out FILE.json
+//   calibrate variant CALIBRATION.yaml [--set NAME]
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -19,6 +21,7 @@
 #include "io/atomic_file.hpp"
 #include "io/failure.hpp"
 #include "posterior_report.hpp"
+#include "sets.hpp"
 #include "study/ensemble.hpp"
 #include "study/json_file.hpp"
 #include "study/series.hpp"
@@ -100,6 +103,38 @@ int truth(int argc, char** argv) {
   return 0;
 }
 
+// One set of a finished calibration as a study variant (YAML), to run it elsewhere: at another
+// size, on more samples (e.g. the best set at the paper's size).
+int variant(int argc, char** argv) {
+  std::string file, set_name;
+  CLI::App app{"calibrate variant: a set of a finished calibration (default: its best) as a study variant, one YAML line "
+               "for a study's variants: list"};
+  app.add_option("calibration", file, "the calibration file")->required();
+  app.add_option("--set", set_name, "the set's name in posterior.json (default: best_set)");
+  if (const int rc = parse(app, argc, argv); rc >= 0) return rc;
+  const calibration::Calibration c = calibration::read_calibration(file);
+  const std::string posterior = (fs::path(c.report) / "posterior.json").string();
+  const nlohmann::json j = validation::read_json_file(posterior);
+  if (set_name.empty()) {
+    if (!j.contains("best_set") || !j["best_set"].contains("name")) throw dem::ConfigError(posterior + ": best_set.name is missing");
+    set_name = j["best_set"]["name"].get<std::string>();
+  }
+  const auto sets = j.value("sets", nlohmann::json::array());
+  const auto found = std::find_if(sets.begin(), sets.end(), [&](const nlohmann::json& s) { return s.value("name", "") == set_name; });
+  if (found == sets.end()) throw dem::ConfigError(posterior + ": no set named '" + set_name + "'");
+  calibration::ParameterSet s;
+  s.name = set_name;
+  s.u.resize(static_cast<Eigen::Index>(c.parameters.size()));
+  for (std::size_t k = 0; k < c.parameters.size(); ++k) {
+    const calibration::Parameter& p = c.parameters[k];
+    if (!(*found)["values"].contains(p.name) || !(*found)["values"][p.name].is_number())
+      throw dem::ConfigError(posterior + ": set " + set_name + " has no value of " + p.name + " (another calibration file?)");
+    s.u(static_cast<Eigen::Index>(k)) = p.unit_of((*found)["values"][p.name].get<double>());
+  }
+  std::printf("%s\n", pipeline::variant_yaml(calibration::variant_of(c, s)).c_str());
+  return 0;
+}
+
 int calibrate(int argc, char** argv) {
   const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   std::string file, truth_file;
@@ -117,7 +152,8 @@ int calibrate(int argc, char** argv) {
   app.add_flag("--plan", o.plan_only, "print what the first iteration runs and what max_iterations would cost; run nothing");
   app.add_option("--truth", truth_file, "a demonstration's true parameters (calibrate truth), set beside the posterior once it is final");
   app.add_option("--dem", o.dem, "the engine (default: dem beside this program)");
-  app.footer("calibrate lab-curve --help and calibrate truth --help: the demonstration's synthetic references.");
+  app.footer("calibrate lab-curve --help and calibrate truth --help: the demonstration's synthetic references; calibrate variant --help: "
+             "a finished calibration's set as a study variant.");
   if (const int rc = parse(app, argc, argv); rc >= 0) return rc;
   o.threads = threads > 0 ? threads : std::max(1, cores / o.jobs);
   if (o.dem.empty()) o.dem = (fs::canonical("/proc/self/exe").parent_path() / "dem").string();
@@ -142,6 +178,7 @@ int tool_main(int argc, char** argv) {
   try {
     if (argc > 1 && std::string(argv[1]) == "lab-curve") return lab_curve(argc - 1, argv + 1);
     if (argc > 1 && std::string(argv[1]) == "truth") return truth(argc - 1, argv + 1);
+    if (argc > 1 && std::string(argv[1]) == "variant") return variant(argc - 1, argv + 1);
     return calibrate(argc, argv);
   } catch (const dem::ConfigError& e) {
     std::fprintf(stderr, "calibrate: %s\n", e.what());

@@ -251,6 +251,27 @@ std::string describe(const Variant& v) {
   return out.empty() ? "as written" : out;
 }
 
+std::string variant_yaml(const Variant& v) {
+  const auto overrides = [](const Overrides& o) {
+    YAML::Node n(YAML::NodeType::Map);
+    for (const auto& [key, value] : o) n[key] = YAML::Load(value);
+    return n;
+  };
+  YAML::Node n(YAML::NodeType::Map);
+  n["name"] = v.name;
+  if (!v.set.empty()) n["set"] = overrides(v.set);
+  if (!v.prepare.empty()) n["prepare"] = overrides(v.prepare);
+  if (!v.test.empty()) n["test"] = overrides(v.test);
+  for (const auto& [test, o] : v.per_test) n["per_test"][test] = overrides(o);
+  for (const auto& [density, o] : v.per_density) n["per_density"][density] = overrides(o);
+  if (v.shear_with_preparation_friction) n["shear_with_preparation_friction"] = true;
+  if (v.time_step_fraction) n["time_step_fraction"] = *v.time_step_fraction;
+  if (v.may_fail) n["may_fail"] = true;
+  YAML::Emitter e;
+  e << YAML::Flow << n;
+  return e.c_str();
+}
+
 const Profile& Study::default_profile() const {
   for (const Profile& p : profiles)
     if (p.name == "paper") return p;

@@ -82,6 +82,10 @@ struct Study {
 // The variant's settings in one line (the tables of the report name variants by them).
 std::string describe(const Variant& v);
 
+// The variant as a study file writes it under variants: (one flow mapping), so that a variant made
+// by a program (a calibration's set) can be pasted into a study and read back the same.
+std::string variant_yaml(const Variant& v);
+
 // Reads and validates a study; relative paths are taken from the study file's folder.
 Study load_study(const std::string& file);
 

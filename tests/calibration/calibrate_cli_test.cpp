@@ -2,6 +2,7 @@
 // posterior, and, started again, replays itself: every run reused and the same posterior.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -123,6 +124,18 @@ TEST_CASE("calibrate sets a density's parameter in that density's tests only, an
     }
   }
   CHECK(readings == std::set<double>{0, 1});  // both readings drawn in 4 quasi-random sets
+  // The best set as a study variant: its value of the dense friction in the dense tests, its reading's keys.
+  const auto best = dem::test::run_command("cd '" + dir.string() + "' && '" + bin + "calibrate' variant cal.yaml 2>&1");
+  INFO(best.out);
+  REQUIRE(best.exit_code == 0);
+  const YAML::Node variant = YAML::Load(best.out);
+  CHECK(variant["name"].as<std::string>() == p["best_set"]["name"].get<std::string>());
+  const auto& best_set = *std::find_if(p["sets"].begin(), p["sets"].end(), [&](const auto& set) { return set["name"] == p["best_set"]["name"]; });
+  CHECK(variant["per_density"]["dense"]["material.friction"].as<double>() == Approx(best_set["values"]["dense_friction"].get<double>()));
+  CHECK(variant["test"]["material.contact_damping"].as<double>() == (best_set["values"]["test_damping"].get<double>() == 1 ? 0.05 : 0.0));
+  const auto missing = dem::test::run_command("cd '" + dir.string() + "' && '" + bin + "calibrate' variant cal.yaml --set i9s999 2>&1");
+  CHECK(missing.exit_code == 2);
+  CHECK_THAT(missing.out, Catch::Contains("no set named 'i9s999'"));
 }
 
 TEST_CASE("calibrate refuses bad input with the file and key", "[calibration][cli]") {

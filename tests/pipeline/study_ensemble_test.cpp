@@ -154,3 +154,26 @@ TEST_CASE("the input hash covers the bytes of the particle file a preparation re
   fs::remove(dir / "parts.csv");
   CHECK_THROWS_AS(plan(dir, study), dem::ConfigError);
 }
+
+TEST_CASE("a variant written by variant_yaml reads back the same in a study", "[pipeline][ensemble]") {
+  const fs::path dir = fresh("variant_yaml");
+  pipeline::Variant v;
+  v.name = "i2s005";
+  v.set = {{"damping.form", "local"}};
+  v.prepare = {{"stages[0].hold.unbalanced_force_ratio", "0.0031622776601683794"}, {"stages[0].zero_shear_stress", "false"}};
+  v.test = {{"material.contact_damping", "0.05"}};
+  v.per_test = {{"test2", {{"stages[0].path", "[TC1, {repeat: 2, path: [TC2, TC3]}]"}}}};
+  v.per_density = {{"dense", {{"material.friction", "0.125"}}}};
+  const std::string yaml = pipeline::variant_yaml(v);
+  INFO(yaml);
+  const pipeline::Study study = load(dir, two_densities + "profiles: {paper: {lattice: 2}, quick: {lattice: 2}}\nvariants: [" + yaml + "]\n");
+  REQUIRE(study.variants.size() == 1);
+  const pipeline::Variant& back = study.variants[0];
+  CHECK(back.name == v.name);
+  CHECK(back.set == v.set);
+  CHECK(back.prepare == v.prepare);
+  CHECK(back.test == v.test);
+  CHECK(back.per_test == v.per_test);
+  CHECK(back.per_density == v.per_density);
+  CHECK_FALSE(back.shear_with_preparation_friction);
+}
