@@ -155,7 +155,9 @@ std::optional<Outcome> run_calibration(const Calibration& c, const RunOptions& o
     out.samples = samples_of_sets(runs);
     for (ParameterSet& s : out.sets) {
       if (s.iteration != it) continue;
-      s.misfit = score(out.references, out.samples[s.name]);
+      s.misfit = score_complete(out.references, out.samples[s.name]);
+      for (const std::string& left : s.misfit.left_out)
+        std::printf("[calibrate] set %s scored without %s\n", s.name.c_str(), left.c_str());
       s.log_likelihood = s.misfit.valued ? -0.5 * s.misfit.chi2 : -INFINITY;
     }
     std::vector<Eigen::VectorXd> u;

@@ -201,6 +201,7 @@ void write_report(const Outcome& o, const std::map<std::string, double>& truth) 
     const ParameterSet& s = o.sets[i];
     json x{{"name", s.name}, {"iteration", s.iteration}, {"weight", o.weights[i]}, {"scored", s.misfit.valued}};
     if (s.misfit.valued) x["chi2"] = s.misfit.chi2;
+    if (!s.misfit.left_out.empty()) x["samples_left_out"] = s.misfit.left_out;
     for (std::size_t k = 0; k < d; ++k) x["values"][c.parameters[k].name] = c.parameters[k].value(s.u(static_cast<Eigen::Index>(k)));
     for (const RowMisfit& m : s.misfit.rows) {
       json row{{"name", m.name}, {"points", m.points}};
@@ -265,6 +266,10 @@ void write_report(const Outcome& o, const std::map<std::string, double>& truth) 
   md << o.sets.size() << " parameter sets in " << o.iterations.size() << " iterations of " << c.batch << " (" << o.runs
      << " runs, " << validation::significant(o.core_seconds / 60, 3) << " core-min recorded); effective sample size "
      << validation::significant(last.ess, 3) << "; " << (o.converged ? "converged: " : "not converged: ") << o.stop_reason << ".\n\n";
+  const auto short_of = std::count_if(o.sets.begin(), o.sets.end(), [](const ParameterSet& s) { return !s.misfit.left_out.empty(); });
+  if (short_of > 0)
+    md << short_of << " of the sets " << (short_of == 1 ? "was" : "were")
+       << " scored without a sample some run of which did not finish (`posterior.json`: `samples_left_out`).\n\n";
   if (!o.posterior_from.empty()) {
     md << "The posterior is sampled on a response surface (a quadratic in the parameters per curve point and per scalar row) fitted "
           "to the "

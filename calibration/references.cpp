@@ -199,4 +199,20 @@ SetMisfit score(const References& refs, const std::vector<validation::Sample>& s
   return s;
 }
 
+SetMisfit score_complete(const References& refs, const std::vector<validation::Sample>& samples, std::size_t min_samples) {
+  std::vector<validation::Sample> complete;
+  std::vector<std::string> left_out;
+  for (const validation::Sample& s : samples) {
+    std::string lacks;
+    for (const auto& [density, d] : s.densities)
+      for (const std::string& run : d.missing_runs) lacks += (lacks.empty() ? "" : ", ") + density + " " + run;
+    if (lacks.empty()) complete.push_back(s);
+    else left_out.push_back((s.name.empty() ? std::string("the sample") : s.name) + " (no " + lacks + ")");
+  }
+  if (left_out.empty() || complete.size() < std::min(min_samples, samples.size())) return score(refs, samples);
+  SetMisfit m = score(refs, complete);
+  m.left_out = std::move(left_out);
+  return m;
+}
+
 }  // namespace calibration

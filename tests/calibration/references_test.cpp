@@ -162,3 +162,26 @@ TEST_CASE("bad curve files and calibration files name the file, line and key", "
   CHECK(ok.parameters[0].keys == std::vector<std::string>{"k1", "k2"});
   CHECK(ok.parameters[0].applies_to == "both");
 }
+
+TEST_CASE("a set is scored on its samples whose runs all finished, when at least two did", "[calibration]") {
+  calibration::References refs;
+  validation::Row row;
+  row.name = "e0, loose", row.quantity = "e0", row.check = "within", row.density = "loose";
+  row.reference = 0.73, row.tolerance = 0.02;
+  refs.rows.push_back(row);
+  const auto sample = [](const std::string& name, std::vector<std::string> missing) {
+    validation::Sample s;
+    s.name = name;
+    s.densities["loose"].missing_runs = std::move(missing);
+    return s;
+  };
+  const std::vector<validation::Sample> two_complete = {sample("seed1", {}), sample("seed2", {}), sample("seed3", {"prepare", "test1"})};
+  const calibration::SetMisfit m = calibration::score_complete(refs, two_complete);
+  CHECK(m.left_out == std::vector<std::string>{"seed3 (no loose prepare, loose test1)"});
+  CHECK(m.rows.size() == 1);
+  // One complete sample of three: scored on all, nothing left out (the row then says what is missing).
+  const std::vector<validation::Sample> one_complete = {sample("seed1", {}), sample("seed2", {"test2"}), sample("seed3", {"prepare"})};
+  CHECK(calibration::score_complete(refs, one_complete).left_out.empty());
+  // Every sample complete: nothing left out.
+  CHECK(calibration::score_complete(refs, {sample("seed1", {}), sample("seed2", {})}).left_out.empty());
+}
