@@ -8,6 +8,9 @@ namespace calibration {
 pipeline::Variant variant_of(const Calibration& c, const ParameterSet& s) {
   pipeline::Variant v;
   v.name = s.name;
+  // A run the engine stops with a message (a guard, a refused value) is an outcome of the set: its
+  // stop is recorded and not run again in every iteration; the set is scored without that sample.
+  v.may_fail = true;
   for (std::size_t j = 0; j < c.parameters.size(); ++j) {
     const Parameter& p = c.parameters[j];
     const auto overrides = p.overrides(s.u(static_cast<Eigen::Index>(j)));

@@ -23,7 +23,8 @@ struct ParameterSet {
   SetMisfit misfit;
 };
 
-// The variant that runs a set: each parameter's keys set to its value, in the runs it applies to.
+// The variant that runs a set: each parameter's keys set to its value, in the runs it applies to;
+// may_fail (a run the engine stops is recorded, not run again).
 pipeline::Variant variant_of(const Calibration& c, const ParameterSet& s);
 
 // The samples of each variant (by name) from a plan's runs: per seed, the preparation's and the
