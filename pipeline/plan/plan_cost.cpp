@@ -64,10 +64,9 @@ std::optional<MachineThroughput> recorded_throughput_under(const std::string& ro
     while (std::getline(manifest, line)) {
       if (line.empty() || line[0] == '#') continue;
       std::istringstream fields(line);
-      std::string result;
-      for (int column = 0; column < 5 && std::getline(fields, result, '\t'); ++column) {
-      }
-      const std::optional<ResultCost> cost = result.empty() ? std::nullopt : result_cost(result);
+      std::vector<std::string> columns;  // variant, density, test, run, result, ... (write_manifest)
+      for (std::string column; std::getline(fields, column, '\t');) columns.push_back(column);
+      const std::optional<ResultCost> cost = columns.size() < 5 ? std::nullopt : result_cost(columns[4]);
       if (!cost || !cost->wall_s || *cost->wall_s <= 0) continue;
       particle_steps += cost->particle_steps, wall_s += *cost->wall_s, ++counted;
     }
