@@ -4,6 +4,7 @@
 #include <cmath>
 #include <set>
 
+#include "config/study_config.hpp"
 #include "config/yaml_section.hpp"
 
 namespace calibration {
@@ -18,22 +19,16 @@ struct Claim {
 };
 
 // `readings: [{name: body, set: {damping.translational: 0.05}}, ...]`: a discrete parameter whose
-// values are named sets of scene keys; its keys are every key any of them sets, in order.
+// values are named sets of scene keys (read as a study variant's overrides are); its keys are
+// every key any of them sets, in order.
 void read_readings(dem::Section& s, Parameter& p) {
   for (dem::Section r : s.list("readings", "the values, each a named set of scene keys and values (equally likely)")) {
     const std::string name = r.text("name", std::nullopt, "what tables call this reading");
     if (std::find(p.values.begin(), p.values.end(), name) != p.values.end()) r.fail("name", "'" + name + "' names two readings");
-    const YAML::Node set = r.raw("set", "a mapping of scene keys to values", "the scene keys this reading sets");
-    if (!set.IsMap() || set.size() == 0) r.fail("set", "must be a non-empty mapping of scene keys to values");
-    std::vector<std::pair<std::string, std::string>> overrides;
-    for (const auto& kv : set) {
-      const std::string key = kv.first.Scalar();
-      if (!kv.second || kv.second.IsNull()) r.fail("set." + key, "needs a value");
-      YAML::Emitter e;
-      e << YAML::Flow << kv.second;
-      overrides.emplace_back(key, e.c_str());
+    if (!r.has("set")) r.fail("set", "is missing: the scene keys this reading sets");
+    pipeline::Overrides overrides = pipeline::read_overrides(r, "set", p.applies_to != "prepare", "the scene keys this reading sets");
+    for (const auto& [key, value] : overrides)
       if (std::find(p.keys.begin(), p.keys.end(), key) == p.keys.end()) p.keys.push_back(key);
-    }
     r.finish();
     p.values.push_back(name);
     p.readings.push_back(std::move(overrides));
@@ -71,6 +66,8 @@ Calibration read_calibration(const std::string& file) {
     Parameter p;
     p.name = s.text("name", std::nullopt, "what tables call the parameter");
     if (!names.insert(p.name).second) s.fail("name", "'" + p.name + "' names two parameters");
+    p.applies_to = s.choice("applies_to", {"test", "prepare", "both"}, "test",
+                            "the runs the keys are set in: test (preparations shared), prepare, or both");
     if (s.has("readings")) {  // each value a named set of keys: the keys are theirs
       if (s.has("keys")) s.fail("keys", "is given beside readings: a parameter of readings takes its keys from them");
       read_readings(s, p);
@@ -81,8 +78,6 @@ Calibration read_calibration(const std::string& file) {
         for (const YAML::Node& key : k) p.keys.push_back(key.as<std::string>());
       else s.fail("keys", "is neither a key nor a list of keys");
     }
-    p.applies_to = s.choice("applies_to", {"test", "prepare", "both"}, "test",
-                            "the runs the keys are set in: test (preparations shared), prepare, or both");
     if (s.has("densities")) {
       const YAML::Node d = s.raw("densities", "a list of density names", "the densities whose tests the keys are set in (default: all)");
       if (!d.IsSequence() || d.size() == 0) s.fail("densities", "is not a non-empty list of density names");
@@ -108,13 +103,12 @@ Calibration read_calibration(const std::string& file) {
     if (uniform + log_uniform + values + !p.readings.empty() != 1)
       s.fail("uniform", "give exactly one prior: uniform: [low, high], log_uniform: [low, high], values: [a, b, ...] or "
                         "readings: [{name: a, set: {key: value, ...}}, ...]");
-    if (!p.readings.empty()) {
-    } else if (values) {
+    if (values) {
       const YAML::Node v = s.raw("values", "a list of at least 2 values", "the values the parameter may take (equally likely)");
       if (!v.IsSequence() || v.size() < 2) s.fail("values", "is not a list of at least 2 values");
       p.prior = Parameter::Prior::Values;
       for (const YAML::Node& x : v) p.values.push_back(x.as<std::string>());
-    } else {
+    } else if (uniform || log_uniform) {  // (readings: read_readings set the values and the prior)
       const std::string key = uniform ? "uniform" : "log_uniform";
       const std::vector<double> r = s.numbers(key, "", {-1e300, 1e300}, 2, 2, "the prior's range [low, high]");
       if (!(r[0] < r[1])) s.fail(key, "needs low < high");

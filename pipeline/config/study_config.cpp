@@ -42,6 +42,8 @@ void check_path_name(const dem::Section& s, const std::string& key, const std::s
                 "name: no / or \\, no '..', no leading dot, no control characters");
 }
 
+}  // namespace
+
 // A mapping of scene key paths to values (`numerics.time_step: 2.0e-6`, `stages[0].rate: 4.0e6`),
 // as `dem run --set` takes them. The keys' form is checked here; whether each is a scene key is
 // checked when the plan parses the resolved scenes (the engine's parser names what is allowed).
@@ -75,6 +77,8 @@ Overrides read_overrides(dem::Section& s, const std::string& key, bool for_test,
   }
   return out;
 }
+
+namespace {
 
 // `key: {name: {scene key: value, ...}, ...}`: test overrides of the study's tests or densities by
 // name (`what`: "test" or "density"); a name that is not one of `names` is refused listing them.

@@ -8,10 +8,19 @@
 #include <utility>
 #include <vector>
 
+namespace dem {
+class Section;
+}
+
 namespace pipeline {
 
 // Scene overrides, (key path, YAML value) in the order written: what `dem run --set` takes.
 using Overrides = std::vector<std::pair<std::string, std::string>>;
+
+// `key:` of `s`, a mapping of scene key paths to values, as Overrides (each value as flow YAML);
+// the keys' form checked, and with `for_test` the keys the pipeline sets in a test refused. Absent:
+// none (the key declared, so that a misspelt one gets a suggestion).
+Overrides read_overrides(dem::Section& s, const std::string& key, bool for_test, const std::string& doc);
 
 struct Density {
   std::string name;    // loose, medium, dense
