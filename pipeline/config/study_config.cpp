@@ -300,6 +300,7 @@ Study load_study(const std::string& file) {
   st.output = resolve(file, root.text("output", std::nullopt, "results folder, relative to the study file"));
   st.preparation = resolve(file, root.text("preparation", std::nullopt, "preparation scene template (docs/method.md#preparation)"));
   require_file(root, "preparation", st.preparation);
+  st.preparation_set = read_overrides(root, "preparation_set", false, "scene overrides of the preparation in every variant");
   std::set<std::string> names;
   for (dem::Section& d : root.list("densities", "the samples: name and friction during preparation")) {
     Density den;

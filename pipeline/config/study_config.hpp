@@ -78,6 +78,7 @@ struct Study {
   std::string name;
   std::string output;       // results folder (absolute)
   std::string preparation;  // preparation scene template (absolute); friction set per density
+  Overrides preparation_set;  // overrides of the preparation in every variant (before the variant's)
   std::vector<Density> densities;
   std::vector<TestCase> tests;      // may be empty when the study has variants (preparations only)
   std::vector<Profile> profiles;

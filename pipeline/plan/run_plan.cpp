@@ -311,6 +311,7 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
           dem::apply_override(scene, study.preparation, "particles.lattice.n", "[" + n + ", " + n + ", " + n + "]");
         if (sample_of.seed)
           dem::apply_override(scene, study.preparation, "particles.lattice.seed", std::to_string(*sample_of.seed));
+        for (const auto& [key, value] : study.preparation_set) dem::apply_override(scene, study.preparation, key, value);
         for (const auto& [key, value] : v.set) dem::apply_override(scene, study.preparation, key, value);
         for (const auto& [key, value] : v.prepare) dem::apply_override(scene, study.preparation, key, value);
         if (v.time_step_fraction) {

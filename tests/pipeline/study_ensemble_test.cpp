@@ -132,6 +132,27 @@ TEST_CASE("per_test changes one test; shearing with the preparation friction fol
                                                       {"base_dense_test2", "base_dense_test1"}});
 }
 
+TEST_CASE("preparation_set reaches every variant's preparation and no test; a variant's own keys win", "[pipeline][ensemble]") {
+  const fs::path dir = fresh("ensemble_preparation_set");
+  const std::string study = "name: e\noutput: out\npreparation: prep.yaml\n"
+                            "preparation_set: {numerics.max_energy_error: 0.5}\n"
+                            "densities: [{name: loose, friction: 0.5}]\n"
+                            "tests: [{name: test1, scene: test.yaml}]\n"
+                            "profiles: {quick: {lattice: 2}}\n";
+  const auto r = plan(dir, study + "variants: [{name: base}, {name: own, prepare: {numerics.max_energy_error: 0.2}}]\n");
+  CHECK(scene(r.at("base_loose_prepare")).max_energy_error == 0.5);
+  CHECK(scene(r.at("own_loose_prepare")).max_energy_error == 0.2);   // the variant's, applied after
+  CHECK(scene(r.at("base_loose_test1")).max_energy_error == 0.05);   // the engine's default: tests as written
+  // Without variants (the paper study's form) too; an empty or misspelt key is refused with its path.
+  CHECK(scene(plan(dir, study).at("loose_prepare")).max_energy_error == 0.5);
+  std::string empty = study;
+  empty.replace(empty.find("{numerics.max_energy_error: 0.5}"), 32, "{}");
+  CHECK_THROWS_WITH(load(dir, empty), Catch::Contains("preparation_set"));
+  std::string misspelt = study;
+  misspelt.replace(misspelt.find("max_energy_error"), 16, "max_energy_eror");
+  CHECK_THROWS_WITH(plan(dir, misspelt), Catch::Contains("max_energy_eror"));
+}
+
 TEST_CASE("the input hash covers the bytes of the particle file a preparation reads", "[pipeline][inputs]") {
   const fs::path dir = fresh("inputs_csv");
   const auto write_csv = [&](const std::string& second_radius) {
