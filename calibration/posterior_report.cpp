@@ -11,6 +11,7 @@
 
 #include "io/atomic_file.hpp"
 #include "io/hdf5.hpp"
+#include "row_verdicts.hpp"
 #include "study/format.hpp"
 #include "study/markdown_table.hpp"
 #include "study/series.hpp"
@@ -197,15 +198,21 @@ void write_report(const Outcome& o, const std::map<std::string, double>& truth) 
     j["correlations"].push_back(row);
   }
   j["best_set"] = {{"name", o.sets[best].name}, {"chi2", o.sets[best].misfit.chi2}};
+  const RowVerdicts verdicts = tally_rows(o.sets, best);
+  if (verdicts.rows > 0) j["rows_consistent"] = rows_json(verdicts, o.sets);
   for (std::size_t i = 0; i < o.sets.size(); ++i) {
     const ParameterSet& s = o.sets[i];
     json x{{"name", s.name}, {"iteration", s.iteration}, {"weight", o.weights[i]}, {"scored", s.misfit.valued}};
     if (s.misfit.valued) x["chi2"] = s.misfit.chi2;
+    if (const auto c = std::find_if(verdicts.sets.begin(), verdicts.sets.end(), [&](const SetCount& k) { return k.set == i; });
+        c != verdicts.sets.end())
+      x["consistent_rows"] = c->consistent, x["judged_rows"] = c->judged;
     if (!s.misfit.left_out.empty()) x["samples_left_out"] = s.misfit.left_out;
     for (std::size_t k = 0; k < d; ++k) x["values"][c.parameters[k].name] = c.parameters[k].value(s.u(static_cast<Eigen::Index>(k)));
     for (const RowMisfit& m : s.misfit.rows) {
       json row{{"name", m.name}, {"points", m.points}};
       if (m.valued) row["chi2"] = m.chi2; else row["note"] = m.note;
+      if (m.consistent) row["consistent"] = *m.consistent;
       x["rows"].push_back(row);
     }
     j["sets"].push_back(x);
@@ -323,6 +330,7 @@ void write_report(const Outcome& o, const std::map<std::string, double>& truth) 
     rows.row({m.name, std::to_string(m.points), validation::significant(m.chi2, 3),
               m.points > 0 ? validation::significant(m.chi2 / m.points, 2) : ""});
   md << "\n" << rows.text();
+  if (verdicts.rows > 0) md << "\n" << rows_markdown(verdicts, o.sets);
   write_file(dir / "section.md", md.str());
 }
 

@@ -173,6 +173,7 @@ RowMisfit row_misfit(const validation::Row& row, const std::vector<validation::S
   }
   // What the response surface fits (surrogate.hpp): the samples' mean value and their sd.
   m.model = {r.spread.mean}, m.model_sd = {r.spread.sd}, m.samples = r.valued;
+  if (r.verdict != validation::Verdict::NotJudged) m.consistent = r.verdict == validation::Verdict::Consistent;
   if (row.rule != "interval") {
     m.chi2 = -2 * std::log((r.holds + 0.5) / (r.valued + 1.0));
     return m;

@@ -48,6 +48,9 @@ struct RowMisfit {
   std::vector<double> model;     // a curve's: the samples' mean y at each point (surrogate.hpp fits it)
   std::vector<double> model_sd;  // ... and their sd (0 for one sample)
   int samples = 0;               // the samples it was computed on
+  // A scalar row judged by validate's rules on these samples (validation::evaluate): consistent or
+  // not; empty for a curve and for a row validate does not judge.
+  std::optional<bool> consistent;
 };
 
 struct SetMisfit {

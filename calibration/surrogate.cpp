@@ -16,11 +16,15 @@ Quadratic fit_quadratic(const std::vector<Eigen::VectorXd>& features, const std:
   Eigen::MatrixXd x(n, p);
   Eigen::VectorXd v(n);
   for (Eigen::Index i = 0; i < n; ++i) x.row(i) = features[static_cast<std::size_t>(i)].transpose(), v(i) = y[static_cast<std::size_t>(i)];
-  const Eigen::MatrixXd xtx_inv = (x.transpose() * x).completeOrthogonalDecomposition().pseudoInverse();
+  // A parameter of two values (a discrete reading) makes its square a combination of 1 and itself:
+  // the features are then of lower rank than p, and the residuals have n - rank degrees of freedom.
+  const auto decomposition = (x.transpose() * x).completeOrthogonalDecomposition();
+  const Eigen::MatrixXd xtx_inv = decomposition.pseudoInverse();
+  const Eigen::Index rank = decomposition.rank();
   Quadratic q;
   q.coefficients = xtx_inv * x.transpose() * v;
   const double rss = (v - x * q.coefficients).squaredNorm();
-  q.residual_variance = n > p ? rss / static_cast<double>(n - p) : 0;
+  q.residual_variance = n > rank ? rss / static_cast<double>(n - rank) : 0;
   q.covariance = q.residual_variance * xtx_inv;
   return q;
 }

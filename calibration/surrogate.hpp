@@ -32,7 +32,8 @@ struct Quadratic {
   double variance(const Eigen::VectorXd& x) const { return x.dot(covariance * x); }
 };
 
-// Ordinary least squares of y on the features of each row of x; needs more rows than features.
+// Ordinary least squares of y on the features of each row of x (minimum norm where the features
+// are of lower rank, as a two-valued parameter's square is); needs more rows than that rank.
 Quadratic fit_quadratic(const std::vector<Eigen::VectorXd>& features, const std::vector<double>& y);
 
 // A scalar row of a validate reference file on the surface: its samples' mean as a quadratic, and

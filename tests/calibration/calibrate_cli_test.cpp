@@ -92,10 +92,14 @@ TEST_CASE("calibrate sets a density's parameter in that density's tests only, an
                                     << "densities: [{name: loose, friction: 0.5}, {name: dense, friction: 0.0}]\n"
                                     << "tests: [{name: triaxial, scene: " << src << "/scenes/tests/triaxial_drained.yaml, "
                                     << "set: {\"stages[1].until.strain\": 0.002}}]\n"
-                                    << "profiles: {quick: {lattice: 4}}\n";
+                                    << "profiles: {quick: {lattice: 4, seeds: 2}}\n";
   std::ofstream(dir / "curve.csv") << "strain_3,q_over_p,sd\n0.001,0.5,0.1\n";
+  // Two scalar rows whose verdicts are known in every set: a packing's e0 lies in [0.3, 1.5], never near 5.
+  std::ofstream(dir / "rows.yaml") << "source: typed\nrows:\n"
+                                   << "  - {name: wide, quantity: void_ratio_after_preparation, density: dense, reference: 0.9, check: within, tolerance: 0.6, reason: wide, source: typed}\n"
+                                   << "  - {name: far, quantity: void_ratio_after_preparation, density: dense, reference: 5.0, check: within, tolerance: 0.1, reason: far, source: typed}\n";
   std::ofstream(dir / "refs.yaml") << "source: typed\ncurves: [{name: qp, file: curve.csv, x: strain_3, y: q_over_p, "
-                                   << "density: dense, test: triaxial}]\n";
+                                   << "density: dense, test: triaxial}]\nrows: rows.yaml\n";
   std::ofstream(dir / "cal.yaml")
       << "name: two\nstudy: study.yaml\nreferences: refs.yaml\nreport: report\nparameters:\n"
       << "  - {name: dense_friction, keys: material.friction, densities: [dense], uniform: [0.1, 0.3]}\n"
@@ -112,8 +116,11 @@ TEST_CASE("calibrate sets a density's parameter in that density's tests only, an
     const std::string name = set["name"];
     INFO(name);
     CHECK(set["scored"].get<bool>());  // its runs, dashpots or not, finished
-    const YAML::Node dense = YAML::LoadFile((dir / "results" / "calibration_two" / "quick" / "scenes" / (name + "_dense_triaxial.yaml")).string());
-    const YAML::Node loose = YAML::LoadFile((dir / "results" / "calibration_two" / "quick" / "scenes" / (name + "_loose_triaxial.yaml")).string());
+    const fs::path scenes = dir / "results" / "calibration_two" / "quick" / "scenes" / "seed2";
+    const YAML::Node dense = YAML::LoadFile((scenes / (name + "_dense_triaxial.yaml")).string());
+    const YAML::Node loose = YAML::LoadFile((scenes / (name + "_loose_triaxial.yaml")).string());
+    CHECK(set["judged_rows"] == 2);  // on its 2 samples, as validate judges a study
+    CHECK(set["consistent_rows"] == 1);
     CHECK(dense["material"]["friction"].as<double>() == Approx(set["values"]["dense_friction"].get<double>()));
     CHECK(loose["material"]["friction"].as<double>() == 0.5);  // the test scene's, as written
     const bool dashpots = set["values"]["test_damping"].get<double>() == 1;  // a reading's value: its index
@@ -124,6 +131,12 @@ TEST_CASE("calibrate sets a density's parameter in that density's tests only, an
     }
   }
   CHECK(readings == std::set<double>{0, 1});  // both readings drawn in 4 quasi-random sets
+  const nlohmann::json& rows = p["rows_consistent"];
+  CHECK(rows["sets_with_every_row_consistent"] == 0);
+  CHECK(rows["per_row"][0]["consistent_sets"] == 4);
+  CHECK(rows["per_row"][1]["consistent_sets"] == 0);
+  CHECK(rows["per_row"][1]["judged_sets"] == 4);
+  CHECK_THAT(read(dir / "report" / "section.md"), Catch::Contains("no set run makes all 2 consistent"));
   // The best set as a study variant: its value of the dense friction in the dense tests, its reading's keys.
   const auto best = dem::test::run_command("cd '" + dir.string() + "' && '" + bin + "calibrate' variant cal.yaml 2>&1");
   INFO(best.out);

@@ -34,6 +34,27 @@ TEST_CASE("a quadratic fit recovers a quadratic, and the noise about it", "[cali
   CHECK(n.variance(s.features(Eigen::Vector2d(0.5, 0.5))) < 0.0025 / 400 * 10);
 }
 
+TEST_CASE("a two-valued parameter's square adds no degree of freedom to the fit's noise", "[calibration]") {
+  // u0 takes two values (a discrete reading), u1 four: of the 6 features, z0^2 = a + b z0, so the
+  // rank is 5 and 12 points leave 7 degrees of freedom, not 6. Over 4,000 fits the mean residual
+  // variance is within 5 % of the noise's 0.0025 (its relative sd is sqrt(2 / 7 / 4000) = 0.85 %);
+  // dividing by 6 would make it 7 / 6 of it, 17 % high.
+  calibration::ResponseSurface s;
+  s.centre = Eigen::Vector2d(0.5, 0.5), s.scale = Eigen::Vector2d(0.25, 0.3);
+  std::vector<Eigen::VectorXd> x;
+  for (int i = 0; i < 12; ++i) x.push_back(s.features(Eigen::Vector2d(i % 2 ? 0.75 : 0.25, (i / 2 % 4) / 3.0)));
+  std::mt19937_64 rng(11);
+  std::normal_distribution<double> noise(0, 0.05);
+  double mean = 0;
+  const int fits = 4000;
+  for (int k = 0; k < fits; ++k) {
+    std::vector<double> y;
+    for (int i = 0; i < 12; ++i) y.push_back(1 + (i % 2) - 0.5 * (i / 2 % 4) + noise(rng));
+    mean += fit_quadratic(x, y).residual_variance / fits;
+  }
+  CHECK(mean == Approx(0.0025).epsilon(0.05));
+}
+
 TEST_CASE("the posterior on a surface is the analytic one", "[calibration]") {
   // One parameter; three curve points whose model values are a_j + b_j u exactly, b = (1, 2, -1),
   // each set on one sample; the reference is the model at u* = 0.4, with sd 0.1 of one specimen.
