@@ -25,7 +25,9 @@ while [ "$done_kills" -lt "$kills" ]; do
   # Each life is killed a random 0 ... 0.3 s after it has written a checkpoint of its own, so
   # that every life makes progress however loaded the machine is, and the kill lands anywhere:
   # in a step, a row, the next checkpoint's write or the final rename.
-  while kill -0 "$pid" 2> /dev/null && [ "$(checkpoint_step)" = "${last:-0}" ]; do sleep 0.02; done
+  # (No checkpoint file yet reads as no step: a life starved of CPU beside other work waits too.)
+  new_checkpoint() { local step; step=$(checkpoint_step); [ -n "$step" ] && [ "$step" != "$last" ]; }
+  while kill -0 "$pid" 2> /dev/null && ! new_checkpoint; do sleep 0.02; done
   sleep "0.$((RANDOM % 4))$((RANDOM % 10))"
   if kill -9 "$pid" 2> /dev/null; then
     wait "$pid" 2> /dev/null
