@@ -39,6 +39,15 @@ std::vector<pipeline::PlannedRun> plan_sets(const Calibration& c, const pipeline
   return pipeline::join_studies({{s.name, pipeline::plan_study(s, profile, out, engine)}});
 }
 
+// What the runs cost, from their results (wall time x threads; a copy costs nothing).
+double recorded_core_seconds(const std::vector<pipeline::PlannedRun>& runs, int threads) {
+  double seconds = 0;
+  for (const pipeline::PlannedRun& r : runs)
+    if (r.copy_of < 0)
+      if (const auto cost = pipeline::result_cost(r.result); cost && cost->wall_s) seconds += *cost->wall_s * threads;
+  return seconds;
+}
+
 double largest_move(const std::vector<Marginal>& a, const std::vector<Marginal>& b) {
   double moved = 0;
   for (std::size_t j = 0; j < a.size(); ++j)
@@ -218,6 +227,7 @@ std::optional<Outcome> run_calibration(const Calibration& c, const RunOptions& o
     std::printf("\n");
     std::fflush(stdout);
     out.iterations.push_back(summary);
+    out.core_seconds = recorded_core_seconds(runs, o.threads);
     if (it >= c.min_iterations && summary.moved <= c.tolerance && summary.ess >= c.min_effective_sets && summary.contained) {
       out.converged = true;
       out.stop_reason = "no posterior mean or sd moved by more than " + validation::significant(c.tolerance, 3) +
@@ -227,6 +237,11 @@ std::optional<Outcome> run_calibration(const Calibration& c, const RunOptions& o
                         (out.posterior_from.empty() ? "" : " inside the region of its response surface");
       break;
     }
+    if (it < c.max_iterations && o.after_iteration) {
+      out.stop_reason = "still iterating: iteration " + std::to_string(it) + " of at most " + std::to_string(c.max_iterations) +
+                        " done (it moved " + validation::significant(summary.moved, 2) + " of a prior range); start it again to go on";
+      o.after_iteration(out);
+    }
   }
   if (!out.converged)
     out.stop_reason = "max_iterations (" + std::to_string(c.max_iterations) + ") reached before the posterior settled (it moved " +
@@ -234,11 +249,6 @@ std::optional<Outcome> run_calibration(const Calibration& c, const RunOptions& o
                       validation::significant(out.iterations.back().ess, 2) + " effective points, " +
                       validation::significant(c.min_effective_sets, 3) + " asked" +
                       (out.iterations.back().contained ? "" : "; its mean +- 2 sd reaches out of its response surface's region") + ")";
-  // What the runs cost, from their results.
-  const std::vector<pipeline::PlannedRun> runs = plan_sets(c, study, profile, out.sets, out.results, out.engine);
-  for (const pipeline::PlannedRun& r : runs)
-    if (r.copy_of < 0)
-      if (const auto cost = pipeline::result_cost(r.result); cost && cost->wall_s) out.core_seconds += *cost->wall_s * o.threads;
   return out;
 }
 

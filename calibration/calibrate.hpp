@@ -3,6 +3,7 @@
 // every finished run), score them against the references, weight every set so far, and stop when
 // the posterior no longer moves (posterior.hpp for the method).
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -15,12 +16,18 @@
 
 namespace calibration {
 
+struct Outcome;
+
 struct RunOptions {
   std::string dem;          // the engine
   std::string profile;      // the study's profile ("": its default)
   int jobs = 1, threads = 1;
   std::string executor = "local";  // or slurm
   bool plan_only = false;
+  // Called after each iteration but the last with the outcome so far (stop_reason says it goes
+  // on): the report is then written every iteration, and a calibration a session's end stops
+  // leaves its posterior so far.
+  std::function<void(const Outcome&)> after_iteration;
 };
 
 struct IterationSummary {

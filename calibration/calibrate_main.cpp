@@ -167,6 +167,11 @@ int calibrate(int argc, char** argv) {
       truth_values[p.name] = t["parameters"][p.name].get<double>();
     }
   }
+  o.after_iteration = [&](const calibration::Outcome& so_far) {
+    calibration::write_report(so_far, {});
+    std::printf("[calibrate] the posterior so far in %s/posterior.json\n", c.report.c_str());
+    std::fflush(stdout);
+  };
   const std::optional<calibration::Outcome> outcome = calibration::run_calibration(c, o);
   if (!outcome) return 0;
   calibration::write_report(*outcome, truth_values);

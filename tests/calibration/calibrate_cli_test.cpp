@@ -67,6 +67,12 @@ TEST_CASE("calibrate runs, writes its posterior, and replays itself from its run
   CHECK(f["lower_95"].get<double>() >= 0.1);
   CHECK(f["upper_95"].get<double>() <= 0.9);
   CHECK(p["iterations"].size() == 2);
+  // The report was written after the first iteration too (the posterior so far), once; the final
+  // one says why it stopped.
+  std::size_t so_far = 0;
+  for (std::size_t at = first.out.find("the posterior so far"); at != std::string::npos; at = first.out.find("the posterior so far", at + 1)) ++so_far;
+  CHECK(so_far == 1);
+  CHECK_THAT(p["stop_reason"].get<std::string>(), !Catch::Contains("still iterating"));
   CHECK(fs::exists(dir / "report" / "section.md"));
   CHECK(fs::exists(dir / "report" / "curve_1.dat"));
   // The manifest lists every set's runs (what the stamp and compare-runs read).
