@@ -1,5 +1,6 @@
 #include "row_verdicts.hpp"
 
+#include <algorithm>
 #include <sstream>
 
 #include "study/markdown_table.hpp"
@@ -44,6 +45,24 @@ RowVerdicts tally_rows(const std::vector<ParameterSet>& sets, std::size_t best) 
     if (judged_somewhere) v.per_row.push_back(t);
   }
   v.rows = static_cast<int>(v.per_row.size());
+  // Pairs: a row q consistent in some set, but in none of the sets where row r is.
+  const auto consistent = [&](const SetCount& c, std::size_t row) {
+    const std::optional<bool>& k = sets[c.set].misfit.rows[row].consistent;
+    return k && *k;
+  };
+  std::vector<std::size_t> index;  // of each tallied row in the sets' rows
+  for (std::size_t r = 0; r < first.size(); ++r)
+    for (const RowTally& t : v.per_row)
+      if (t.name == first[r].name) index.push_back(r);
+  for (std::size_t a = 0; a < v.per_row.size(); ++a) {
+    if (v.per_row[a].consistent_sets == 0) continue;
+    for (std::size_t b = 0; b < v.per_row.size(); ++b) {
+      if (b == a || v.per_row[b].consistent_sets == 0) continue;
+      const bool together = std::any_of(v.sets.begin(), v.sets.end(),
+                                        [&](const SetCount& c) { return consistent(c, index[a]) && consistent(c, index[b]); });
+      if (!together) v.per_row[a].never_with.push_back(v.per_row[b].name);
+    }
+  }
   for (const SetCount& c : v.sets) v.all_consistent += c.judged == v.rows && c.consistent == v.rows ? 1 : 0;
   return v;
 }
@@ -59,6 +78,7 @@ nlohmann::json rows_json(const RowVerdicts& v, const std::vector<ParameterSet>& 
     nlohmann::json r{{"name", t.name}, {"consistent_sets", t.consistent_sets}, {"judged_sets", t.judged_sets}};
     if (t.most_with >= 0) r["most_rows_consistent_with_it"] = t.most_with;
     if (t.at_best) r["consistent_at_best_set"] = *t.at_best;
+    if (!t.never_with.empty()) r["never_consistent_with"] = t.never_with;
     j["per_row"].push_back(r);
   }
   return j;
@@ -73,13 +93,18 @@ std::string rows_markdown(const RowVerdicts& v, const std::vector<ParameterSet>&
   md << "the most in any of the " << v.sets.size() << " scored sets is **" << v.most->consistent << "** (" << sets[v.most->set].name << "); ";
   if (v.all_consistent == 0) md << "**no set run makes all " << n << " consistent**.";
   else md << "**" << v.all_consistent << (v.all_consistent == 1 ? " set makes" : " sets make") << " all " << n << " consistent**.";
-  md << " Row by row: in how many sets the row is consistent, and the most rows consistent in one of those sets "
-        "(a row whose sets all lose others is one the space trades against them).\n\n";
-  validation::MarkdownTable t({"row", "at the best set", "consistent in (of the sets judging it)", "the most rows consistent in such a set"});
-  for (const RowTally& r : v.per_row)
+  md << " Row by row: in how many sets the row is consistent, the most rows consistent in one of those sets, and "
+        "the rows consistent in some set but in none of those (what the space trades the row against).\n\n";
+  validation::MarkdownTable t({"row", "at the best set", "consistent in (of the sets judging it)", "the most rows consistent in such a set",
+                               "never consistent together with"});
+  for (const RowTally& r : v.per_row) {
+    std::string never;
+    for (std::size_t k = 0; k < r.never_with.size() && k < 2; ++k) never += (k ? "; " : "") + r.never_with[k];
+    if (r.never_with.size() > 2) never += " and " + std::to_string(r.never_with.size() - 2) + " more (posterior.json)";
     t.row({r.name, !r.at_best ? "not judged" : *r.at_best ? "✅" : "❌",
            std::to_string(r.consistent_sets) + " of " + std::to_string(r.judged_sets),
-           r.most_with < 0 ? "—" : std::to_string(r.most_with) + " of " + n});
+           r.most_with < 0 ? "—" : std::to_string(r.most_with) + " of " + n, r.consistent_sets == 0 ? "" : never.empty() ? "—" : never});
+  }
   md << t.text();
   return md.str();
 }

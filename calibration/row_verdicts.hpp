@@ -26,6 +26,9 @@ struct RowTally {
   int judged_sets = 0;      // scored sets in which it is judged
   int most_with = -1;       // the most rows consistent in one of those sets (-1: none)
   std::optional<bool> at_best;
+  // The rows consistent in some set but in none of those where this one is: what it is traded
+  // against (empty when it is consistent in no set).
+  std::vector<std::string> never_with;
 };
 
 struct RowVerdicts {

@@ -54,10 +54,13 @@ TEST_CASE("rows are counted consistent set by set and row by row; no set makes a
   CHECK(v.per_row[1].at_best == std::optional<bool>(true));
   CHECK(v.per_row[2].judged_sets == 2);
   CHECK(!v.per_row[2].at_best);
+  CHECK(v.per_row[0].never_with == std::vector<std::string>{"b"});  // a and b: never in one set
+  CHECK(v.per_row[1].never_with == std::vector<std::string>{"a", "c"});
+  CHECK(v.per_row[2].never_with == std::vector<std::string>{"b"});
   const std::string md = calibration::rows_markdown(v, sets);
   CHECK_THAT(md, Catch::Contains("**1 of 3** rows are consistent"));
   CHECK_THAT(md, Catch::Contains("no set run makes all 3 consistent"));
-  CHECK_THAT(md, Catch::Contains("| b | ✅ | 1 of 3 | 1 of 3 |"));
+  CHECK_THAT(md, Catch::Contains("| b | ✅ | 1 of 3 | 1 of 3 | a; c |"));
   const nlohmann::json j = calibration::rows_json(v, sets);
   CHECK(j["sets_with_every_row_consistent"] == 0);
   CHECK(j["most"]["name"] == "s1");
