@@ -60,6 +60,13 @@ std::string marginal_data(const Parameter& p, std::size_t j, const Outcome& o, c
   }
   std::ostringstream s;
   s << "# " << p.name << ": the posterior's density over the prior's, in bins of the posterior's range\n";
+  if (discrete) {  // a bar per value, at its index, labelled with the value
+    s << "# index-0.4 index index+0.4 density_over_prior value\n";
+    for (std::size_t b = 0; b < bins; ++b)
+      s << g(static_cast<double>(b) - 0.4) << " " << b << " " << g(static_cast<double>(b) + 0.4) << " "
+        << g(width > 0 ? mass[b] / width : 0) << " " << p.value_text(lo + width * (static_cast<double>(b) + 0.5)) << "\n";
+    return s.str();
+  }
   s << "# value_low value_centre value_high density_over_prior\n";
   for (std::size_t b = 0; b < bins; ++b) {
     const double a = lo + width * static_cast<double>(b), z = std::min(1 - 1e-12, a + width);
@@ -256,9 +263,24 @@ void write_report(const Outcome& o, const std::map<std::string, double>& truth) 
   v.texts("curve_x", xs);
   v.texts("curve_y", ys);
   v.texts("curve_title", titles);
+  // The plane the scatter panel shows: of the continuous parameters, the two most correlated in
+  // the posterior (none with fewer than two).
+  int pair_a = 0, pair_b = 0;
+  double strongest = -1;
+  for (std::size_t a = 0; a < d; ++a)
+    for (std::size_t b = a + 1; b < d; ++b)
+      if (!c.parameters[a].discrete() && !c.parameters[b].discrete() &&
+          std::abs(r(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b))) > strongest)
+        strongest = std::abs(r(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b))), pair_a = static_cast<int>(a) + 1,
+        pair_b = static_cast<int>(b) + 1;
+  v.number("pair_a", pair_a);
+  v.number("pair_b", pair_b);
   for (std::size_t k = 0; k < d; ++k) {
     const auto t = truth.find(c.parameters[k].name);
     v.number("truth_" + std::to_string(k + 1), t == truth.end() ? NAN : t->second);
+    v.number("discrete_" + std::to_string(k + 1), c.parameters[k].discrete() ? 1 : 0);
+    v.number("log_" + std::to_string(k + 1), c.parameters[k].prior == Parameter::Prior::LogUniform ? 1 : 0);
+    v.number("values_" + std::to_string(k + 1), static_cast<double>(c.parameters[k].values.size()));
     // The range the scatter panel shows: the posterior's mean -+ 6 sd on the unit interval.
     const Marginal& m = last.marginals[k];
     v.number("low_" + std::to_string(k + 1), c.parameters[k].value(std::max(0.0, m.unit_mean - 6 * m.unit_sd)));

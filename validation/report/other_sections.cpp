@@ -18,8 +18,9 @@ const std::vector<OtherStudySection>& other_study_sections() {
       {"Appendix: Liquefaction: cyclic stress ratio against cycles", "file.liquefaction", "liquefaction/stamp.json", "", ""},
       {"Appendix: Calibration: parameters from references", "file.calibration", "calibration/synthetic_triaxial/stamp.json", "",
        "pipeline/studies/calibration_triaxial.yaml"},
+      // Its sets vary the preparation (the readings are its parameters): a baseline of its own by design.
       {"Appendix: Calibration: the paper's open choices, jointly", "file.calibration_open_choices",
-       "calibration/paper_open_choices/stamp.json", "", ""},
+       "calibration/paper_open_choices/stamp.json", "", "pipeline/studies/calibration_paper.yaml"},
       {"Appendix: Against published DEM values", "file.literature", "literature/validation.json", "stamp", ""},
       {"Appendix: Thornton's face-centred cubic array", "file.literature_fcc", "literature/fcc/validation.json", "stamp",
        "pipeline/studies/fcc_thornton.yaml"},
