@@ -75,6 +75,21 @@ std::string marginal_data(const Parameter& p, std::size_t j, const Outcome& o, c
   return s.str();
 }
 
+// "viscous 0.71, local 0.29": the posterior's weight on each value of a parameter of values.
+std::string value_shares(const Parameter& p, std::size_t j, const Outcome& o) {
+  std::vector<double> share(p.values.size(), 0.0);
+  double total = 0;
+  for (std::size_t i = 0; i < o.posterior_u.size(); ++i) {
+    const double u = o.posterior_u[i](static_cast<Eigen::Index>(j));
+    const auto b = std::min(p.values.size() - 1, static_cast<std::size_t>(std::max(0.0, u) * static_cast<double>(p.values.size())));
+    share[b] += o.posterior_w[i], total += o.posterior_w[i];
+  }
+  std::string text;
+  for (std::size_t b = 0; b < share.size(); ++b)
+    text += (b ? ", " : "") + p.values[b] + " " + validation::fixed(total > 0 ? share[b] / total : 0, 2);
+  return text;
+}
+
 // 1,000 points resampled from the posterior's weighted points (systematic resampling: deterministic).
 std::string posterior_points(const Outcome& o) {
   const Calibration& c = o.calibration;
@@ -292,7 +307,7 @@ void write_report(const Outcome& o, const std::map<std::string, double>& truth) 
   std::ostringstream md;
   md << "Calibration `" << c.name << "` of the study `" << fs::path(c.study).filename().string() << "` (profile " << o.profile
      << ", " << o.seeds.size() << " sample(s) per set) against " << o.references.source << ". Engine " << o.engine << ".\n\n";
-  md << o.sets.size() << " parameter sets in " << o.iterations.size() << " iterations of " << c.batch << " (" << o.runs
+  md << o.sets.size() << " parameter sets in " << o.iterations.size() << (o.iterations.size() == 1 ? " iteration of " : " iterations of ") << c.batch << " (" << o.runs
      << " runs, " << validation::significant(o.core_seconds / 60, 3) << " core-min recorded); effective sample size "
      << validation::significant(last.ess, 3) << "; " << (o.converged ? "converged: " : "not converged: ") << o.stop_reason << ".\n\n";
   const auto short_of = std::count_if(o.sets.begin(), o.sets.end(), [](const ParameterSet& s) { return !s.misfit.left_out.empty(); });
@@ -314,8 +329,11 @@ void write_report(const Outcome& o, const std::map<std::string, double>& truth) 
   for (std::size_t k = 0; k < d; ++k) {
     const Parameter& p = c.parameters[k];
     const Marginal& m = last.marginals[k];
-    std::vector<std::string> cells{p.name, prior_text(p), validation::significant(m.mean, 3) + " ± " + validation::significant(m.sd, 2),
-                                   "[" + validation::significant(m.lower_95, 3) + ", " + validation::significant(m.upper_95, 3) + "]",
+    // A parameter of values: the posterior's share of each value (its mean of indices means nothing).
+    std::vector<std::string> cells{p.name, prior_text(p),
+                                   p.discrete() ? value_shares(p, k, o)
+                                                : validation::significant(m.mean, 3) + " ± " + validation::significant(m.sd, 2),
+                                   p.discrete() ? "—" : "[" + validation::significant(m.lower_95, 3) + ", " + validation::significant(m.upper_95, 3) + "]",
                                    validation::significant(m.narrowing, 2),
                                    m.identified ? "yes" : "no: the references barely narrow its prior"};
     if (!truth.empty()) {
@@ -344,7 +362,9 @@ void write_report(const Outcome& o, const std::map<std::string, double>& truth) 
   md << it.text() << "\n";
   md << "Best set " << o.sets[best].name << " (χ² " << validation::significant(o.sets[best].misfit.chi2, 3) << "):";
   for (std::size_t k = 0; k < d; ++k)
-    md << " " << c.parameters[k].name << " = " << validation::significant(c.parameters[k].value(o.sets[best].u(static_cast<Eigen::Index>(k))), 4)
+    md << " " << c.parameters[k].name << " = "
+       << (c.parameters[k].discrete() ? c.parameters[k].value_text(o.sets[best].u(static_cast<Eigen::Index>(k)))
+                                      : validation::significant(c.parameters[k].value(o.sets[best].u(static_cast<Eigen::Index>(k))), 4))
        << (k + 1 < d ? "," : ".");
   md << "\n";
   validation::MarkdownTable rows({"reference", "points", "χ² at the best set", "χ² per point"});
