@@ -32,7 +32,7 @@ RowVerdicts tally_rows(const std::vector<ParameterSet>& sets, std::size_t best) 
   // lists the same rows in the same order: references.cpp, score).
   const std::vector<RowMisfit>& first = sets[v.sets.front().set].misfit.rows;
   for (std::size_t r = 0; r < first.size(); ++r) {
-    RowTally t{first[r].name};
+    RowTally t{first[r].name, r};
     bool judged_somewhere = false;
     for (const SetCount& c : v.sets) {
       const std::optional<bool>& k = sets[c.set].misfit.rows[r].consistent;
@@ -50,17 +50,13 @@ RowVerdicts tally_rows(const std::vector<ParameterSet>& sets, std::size_t best) 
     const std::optional<bool>& k = sets[c.set].misfit.rows[row].consistent;
     return k && *k;
   };
-  std::vector<std::size_t> index;  // of each tallied row in the sets' rows
-  for (std::size_t r = 0; r < first.size(); ++r)
-    for (const RowTally& t : v.per_row)
-      if (t.name == first[r].name) index.push_back(r);
-  for (std::size_t a = 0; a < v.per_row.size(); ++a) {
-    if (v.per_row[a].consistent_sets == 0) continue;
-    for (std::size_t b = 0; b < v.per_row.size(); ++b) {
-      if (b == a || v.per_row[b].consistent_sets == 0) continue;
-      const bool together = std::any_of(v.sets.begin(), v.sets.end(),
-                                        [&](const SetCount& c) { return consistent(c, index[a]) && consistent(c, index[b]); });
-      if (!together) v.per_row[a].never_with.push_back(v.per_row[b].name);
+  for (RowTally& a : v.per_row) {
+    if (a.consistent_sets == 0) continue;
+    for (const RowTally& b : v.per_row) {
+      if (&b == &a || b.consistent_sets == 0) continue;
+      const bool together =
+          std::any_of(v.sets.begin(), v.sets.end(), [&](const SetCount& c) { return consistent(c, a.row) && consistent(c, b.row); });
+      if (!together) a.never_with.push_back(b.name);
     }
   }
   for (const SetCount& c : v.sets) v.all_consistent += c.judged == v.rows && c.consistent == v.rows ? 1 : 0;

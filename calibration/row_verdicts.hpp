@@ -22,6 +22,7 @@ struct SetCount {
 
 struct RowTally {
   std::string name;
+  std::size_t row = 0;      // its index in every set's misfit rows
   int consistent_sets = 0;  // scored sets in which the row is consistent
   int judged_sets = 0;      // scored sets in which it is judged
   int most_with = -1;       // the most rows consistent in one of those sets (-1: none)
