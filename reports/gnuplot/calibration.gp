@@ -17,7 +17,7 @@ panels = n + (pa > 0 ? 1 : 0)
 # One row up to 4 panels, else rows of 4 (7 readings: 2 rows).
 columns = panels <= 4 ? panels : 4
 rows = (panels + columns - 1) / columns
-set terminal pngcairo size (columns < 2 ? 600 : 300 * columns), 60 + 360 * rows font ",11" enhanced
+set terminal pngcairo size (columns < 3 ? 900 : 300 * columns), 60 + 360 * rows font ",11" enhanced  # 900: the title's width
 set output 'posterior.png'
 set multiplot layout rows, columns title "Posterior over the prior (bars, over the posterior's range; dashed: the truth when known)" font ",12"
 unset key
