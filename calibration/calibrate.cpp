@@ -5,10 +5,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <numeric>
+#include <set>
 
 #include "config/yaml_section.hpp"
 #include "exec/scheduler.hpp"
 #include "exec/slurm.hpp"
+#include "ledger.hpp"
 #include "plan/plan_cost.hpp"
 #include "study/format.hpp"
 #include "surrogate.hpp"
@@ -48,6 +50,29 @@ double recorded_core_seconds(const std::vector<pipeline::PlannedRun>& runs, int 
   return seconds;
 }
 
+// The input hashes of the runs each set needs, sorted, by set name.
+std::map<std::string, std::vector<std::string>> run_hashes_by_set(const std::vector<pipeline::PlannedRun>& runs) {
+  std::map<std::string, std::vector<std::string>> out;
+  for (const pipeline::PlannedRun& r : runs)
+    for (const std::string& v : r.variants) out[v].push_back(r.hash);
+  for (auto& [set, hashes] : out) std::sort(hashes.begin(), hashes.end());
+  return out;
+}
+
+// Each set's share of the runs it needs and of their recorded cost: a run shared by k sets counts
+// 1/k for each, so that the shares add up to the plan's runs and cost.
+std::map<std::string, std::pair<double, double>> run_shares(const std::vector<pipeline::PlannedRun>& runs, int threads) {
+  std::map<std::string, std::pair<double, double>> out;
+  for (const pipeline::PlannedRun& r : runs) {
+    double cost = 0;
+    if (r.copy_of < 0)
+      if (const auto c = pipeline::result_cost(r.result); c && c->wall_s) cost = *c->wall_s * threads;
+    const double k = static_cast<double>(r.variants.size());
+    for (const std::string& v : r.variants) out[v].first += 1 / k, out[v].second += cost / k;
+  }
+  return out;
+}
+
 double largest_move(const std::vector<Marginal>& a, const std::vector<Marginal>& b) {
   double moved = 0;
   for (std::size_t j = 0; j < a.size(); ++j)
@@ -57,8 +82,9 @@ double largest_move(const std::vector<Marginal>& a, const std::vector<Marginal>&
 
 // `results_root`: the folder the study's results folders are in, where this engine's finished runs
 // of other studies give a throughput when none of the calibration's own has finished.
+// `ledger_sets`: the sets the ledger holds, which no iteration runs again.
 void print_plan(const Calibration& c, std::vector<pipeline::PlannedRun>& runs, int jobs, const std::string& results_root,
-                const std::string& engine) {
+                const std::string& engine, int first_in_ledger, std::size_t ledger_sets) {
   const std::optional<double> recorded = pipeline::use_recorded_costs(runs);
   const std::optional<pipeline::MachineThroughput> machine =
       recorded ? std::nullopt : pipeline::recorded_throughput_under(results_root, engine);
@@ -74,11 +100,16 @@ void print_plan(const Calibration& c, std::vector<pipeline::PlannedRun>& runs, i
     (is_shared ? shared_runs : set_runs) += todo[i];
   }
   const double first = pipeline::estimated_wall_time_s(runs, cost, jobs, throughput);
-  const double total = shared + per_iteration * c.max_iterations;
+  // The ledger's sets cost nothing: at most max_iterations x batch sets less those.
+  const double left = std::max(0.0, static_cast<double>(c.max_iterations) * c.batch - static_cast<double>(ledger_sets));
+  const double total = (ledger_sets > 0 && left == 0 ? 0 : shared) + per_iteration / c.batch * left;
   std::printf("calibration %s: %zu parameter(s), %d sets per iteration, at most %d iterations\n", c.name.c_str(),
               c.parameters.size(), c.batch, c.max_iterations);
   std::printf("first iteration: %zu runs (%d shared by every set, %d for its sets still to run), %.3g particle-steps, "
               "about %.1f min on %d core(s)\n", runs.size(), shared_runs, set_runs, shared + per_iteration, first / 60, jobs);
+  if (ledger_sets > 0)
+    std::printf("the ledger of scored sets (%s/scored_sets.json) holds %zu set(s), %d of them of the first iteration: "
+                "they are not run again\n", c.report.c_str(), ledger_sets, first_in_ledger);
   std::printf("all %d iterations at most: %.3g particle-steps, %.1f core-min, about %.1f min on %d core(s)\n",
               c.max_iterations, total, total / throughput / 60, total / throughput / 60 / jobs, jobs);
   const std::string from = recorded ? "recorded by the finished runs in the results folder"
@@ -124,6 +155,9 @@ std::optional<Outcome> run_calibration(const Calibration& c, const RunOptions& o
   std::vector<int> drawn;
   std::vector<Marginal> before;
   std::unique_ptr<dem::FileLock> lock;
+  const std::string ledger_file = (fs::path(c.report) / "scored_sets.json").string();
+  const Ledger ledger = read_ledger(ledger_file, references_hash(out.references));
+  std::map<std::string, ScoredSet> from_ledger;  // the sets scored from the ledger, by name
   for (int it = 1; it <= c.max_iterations; ++it) {
     std::vector<Eigen::VectorXd> all_u;
     std::vector<double> all_ll;
@@ -144,31 +178,92 @@ std::optional<Outcome> run_calibration(const Calibration& c, const RunOptions& o
       s.u = batch[static_cast<std::size_t>(k)];
       out.sets.push_back(std::move(s));
     }
-    std::vector<pipeline::PlannedRun> runs = plan_sets(c, study, profile, out.sets, out.results, out.engine);
+    // This iteration's sets the ledger has scored (their runs planned with the same hashes) are
+    // not run again; a set whose every run has its finished result here is scored on its runs.
+    // (Planned with every set to run so far: a run several sets share is named after the first.)
+    std::vector<ParameterSet> to_run;
+    for (const ParameterSet& s : out.sets)
+      if (!from_ledger.count(s.name)) to_run.push_back(s);
+    std::vector<pipeline::PlannedRun> runs = plan_sets(c, study, profile, to_run, out.results, out.engine);
+    const std::map<std::string, std::vector<std::string>> batch_hashes = run_hashes_by_set(runs);
+    std::set<std::string> unfinished;  // the sets some run of which has no finished result here
+    for (const pipeline::PlannedRun& r : runs)
+      if (!pipeline::up_to_date(r.result, r.hash))
+        unfinished.insert(r.variants.begin(), r.variants.end());
+    int in_ledger = 0;
+    for (ParameterSet& s : out.sets) {
+      if (s.iteration != it || !unfinished.count(s.name)) continue;
+      const auto h = batch_hashes.find(s.name);
+      if (const ScoredSet* e = h == batch_hashes.end() ? nullptr : ledger.find(s.name, s.u, h->second)) {
+        s.u = e->u, s.misfit = e->misfit;
+        from_ledger.emplace(s.name, *e);
+        ++in_ledger;
+      }
+    }
     if (o.plan_only) {
-      print_plan(c, runs, o.jobs, fs::path(study.output).parent_path().string(), out.engine);
+      print_plan(c, runs, o.jobs, fs::path(study.output).parent_path().string(), out.engine, in_ledger, ledger.sets.size());
       return std::nullopt;
     }
-    if (!lock) lock = pipeline::lock_results_folder(out.results);
-    pipeline::write_scenes(runs);
-    pipeline::write_manifest(runs, with_sets(c, study, out.sets), out.results, out.engine);
-    std::printf("[calibrate] iteration %d: %d sets, %zu runs planned (finished ones are reused)\n", it, c.batch, runs.size());
+    if (in_ledger > 0) {
+      to_run.erase(std::remove_if(to_run.begin(), to_run.end(), [&](const ParameterSet& s) { return from_ledger.count(s.name) > 0; }),
+                   to_run.end());
+      runs = to_run.empty() ? std::vector<pipeline::PlannedRun>{} : plan_sets(c, study, profile, to_run, out.results, out.engine);
+    }
+    std::printf("[calibrate] iteration %d: %d sets (%d scored in the ledger), %zu runs planned (finished ones are reused)\n", it,
+                c.batch, in_ledger, runs.size());
     std::fflush(stdout);
-    pipeline::Outcome ran;
-    if (o.executor == "slurm")
-      ran = pipeline::slurm::execute(runs, std::vector<pipeline::SlurmOptions>(runs.size(), study.slurm), o.dem);
-    else
-      ran = pipeline::execute(runs, o.dem, o.jobs, o.threads);
-    if (ran.interrupted) throw dem::ConfigError("interrupted: start the calibration again to go on (finished runs are reused)");
-    out.runs = static_cast<int>(runs.size());
+    if (!runs.empty()) {
+      if (!lock) lock = pipeline::lock_results_folder(out.results);
+      pipeline::write_scenes(runs);
+      pipeline::write_manifest(runs, with_sets(c, study, to_run), out.results, out.engine);
+      pipeline::Outcome ran;
+      if (o.executor == "slurm")
+        ran = pipeline::slurm::execute(runs, std::vector<pipeline::SlurmOptions>(runs.size(), study.slurm), o.dem);
+      else
+        ran = pipeline::execute(runs, o.dem, o.jobs, o.threads);
+      if (ran.interrupted) throw dem::ConfigError("interrupted: start the calibration again to go on (finished runs are reused)");
+    }
+    const std::map<std::string, std::pair<double, double>> shares = run_shares(runs, o.threads);
+    double ledger_runs = 0, ledger_seconds = 0;
+    for (const auto& [name, e] : from_ledger) ledger_runs += e.runs, ledger_seconds += e.core_seconds;
+    out.runs = static_cast<int>(runs.size() + std::lround(ledger_runs));
+    out.ledger_sets = static_cast<int>(from_ledger.size());
     out.samples = samples_of_sets(runs);
     for (ParameterSet& s : out.sets) {
-      if (s.iteration != it) continue;
+      if (s.iteration != it || from_ledger.count(s.name)) continue;
       s.misfit = score_complete(out.references, out.samples[s.name]);
       for (const std::string& left : s.misfit.left_out)
         std::printf("[calibrate] set %s scored without %s\n", s.name.c_str(), left.c_str());
-      s.log_likelihood = s.misfit.valued ? -0.5 * s.misfit.chi2 : -INFINITY;
     }
+    for (ParameterSet& s : out.sets)
+      if (s.iteration == it) s.log_likelihood = s.misfit.valued ? -0.5 * s.misfit.chi2 : -INFINITY;
+    // The stamp: of the runs here when some ran, their date the latest of theirs and the ledger's.
+    out.stamp = ledger.stamp;
+    if (!to_run.empty()) try {
+        validation::Stamp here = validation::stamp_of_results(out.results, to_run.front().name);
+        if (ledger.stamp.recorded()) here.date = std::max(here.date, ledger.stamp.date);
+        out.stamp = here;
+      } catch (const std::exception&) {
+      }
+    // The ledger: every set scored so far (with its share of the runs and their cost), and the
+    // entries of sets not drawn yet (a later iteration may draw them again).
+    Ledger next;
+    next.references_hash = ledger.references_hash;
+    next.stamp = out.stamp;
+    const std::map<std::string, std::vector<std::string>> hashes = run_hashes_by_set(runs);
+    for (const ParameterSet& s : out.sets) {
+      if (const auto e = from_ledger.find(s.name); e != from_ledger.end()) {
+        next.sets.push_back(e->second);
+        continue;
+      }
+      const auto share = shares.find(s.name);
+      const auto h = hashes.find(s.name);
+      next.sets.push_back({s.name, s.u, h == hashes.end() ? std::vector<std::string>{} : h->second, s.misfit,
+                           share == shares.end() ? 0 : share->second.first, share == shares.end() ? 0 : share->second.second});
+    }
+    for (const ScoredSet& e : ledger.sets)
+      if (std::none_of(out.sets.begin(), out.sets.end(), [&](const ParameterSet& s) { return s.name == e.name; })) next.sets.push_back(e);
+    write_ledger(ledger_file, next);
     std::vector<Eigen::VectorXd> u;
     std::vector<double> log_likelihood;
     for (const ParameterSet& s : out.sets) u.push_back(s.u), log_likelihood.push_back(s.log_likelihood);
@@ -227,7 +322,7 @@ std::optional<Outcome> run_calibration(const Calibration& c, const RunOptions& o
     std::printf("\n");
     std::fflush(stdout);
     out.iterations.push_back(summary);
-    out.core_seconds = recorded_core_seconds(runs, o.threads);
+    out.core_seconds = recorded_core_seconds(runs, o.threads) + ledger_seconds;
     if (it >= c.min_iterations && summary.moved <= c.tolerance && summary.ess >= c.min_effective_sets && summary.contained) {
       out.converged = true;
       out.stop_reason = "no posterior mean or sd moved by more than " + validation::significant(c.tolerance, 3) +

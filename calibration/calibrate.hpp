@@ -1,7 +1,8 @@
 #pragma once
 // The calibration loop: draw a batch of parameter sets, run them through the pipeline (reusing
-// every finished run), score them against the references, weight every set so far, and stop when
-// the posterior no longer moves (posterior.hpp for the method).
+// every finished run, and every set the report folder's ledger of scored sets holds: ledger.hpp),
+// score them against the references, weight every set so far, and stop when the posterior no
+// longer moves (posterior.hpp for the method).
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -12,6 +13,7 @@
 #include "calibration_file.hpp"
 #include "posterior.hpp"
 #include "references.hpp"
+#include "study/stamp.hpp"
 #include "sets.hpp"
 
 namespace calibration {
@@ -61,6 +63,8 @@ struct Outcome {
   std::string stop_reason;
   int runs = 0;               // runs planned over all iterations (reused ones included)
   double core_seconds = 0;    // recorded by their results (wall time x threads)
+  int ledger_sets = 0;        // sets whose score came from the ledger (ledger.hpp), not from runs here
+  validation::Stamp stamp;    // of the runs (engine, baseline, spheres, samples, date)
   std::map<std::string, std::vector<validation::Sample>> samples;  // of each set (for the figures)
 };
 

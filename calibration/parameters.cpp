@@ -38,6 +38,8 @@ double Parameter::value(double u) const {
   return 0;
 }
 
+std::size_t Parameter::value_index(double u) const { return bin(u, values.size()); }
+
 std::string Parameter::value_text(double u) const {
   if (prior == Prior::Values) return values[bin(u, values.size())];
   return exact(value(u));

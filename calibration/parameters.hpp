@@ -30,6 +30,8 @@ struct Parameter {
   std::string value_text(double u) const;
   // The scene keys and values the parameter sets at u: each key with the value, or the reading's.
   std::vector<std::pair<std::string, std::string>> overrides(double u) const;
+  // The index of the value at u (Values: floor(u K) within 0..K-1).
+  std::size_t value_index(double u) const;
   // The value at u as a number (Values: the value when it is a number, else its index).
   double value(double u) const;
   // The unit coordinate of a value (the inverse of value; for Values the middle of its bin).

@@ -44,28 +44,43 @@ std::size_t best_set(const Outcome& o) {
   return best;
 }
 
-// 30 bins over the posterior's range on the unit interval (its mean -+ 4 sd, within [0, 1]; a
-// discrete parameter: its values): the posterior's density over the prior's in each.
+// The posterior's weight on each value of a parameter of values (its unit interval cut in equal
+// parts, one per value), over its total.
+std::vector<double> value_masses(const Parameter& p, std::size_t j, const Outcome& o) {
+  std::vector<double> mass(p.values.size(), 0.0);
+  double total = 0;
+  for (std::size_t i = 0; i < o.posterior_u.size(); ++i) {
+    mass[p.value_index(o.posterior_u[i](static_cast<Eigen::Index>(j)))] += o.posterior_w[i];
+    total += o.posterior_w[i];
+  }
+  if (total > 0)
+    for (double& m : mass) m /= total;
+  return mass;
+}
+
+// The posterior's density over the prior's: a parameter of values, a bar per value; else 30 bins
+// over the posterior's range on the unit interval (its mean -+ 4 sd, within [0, 1]).
 std::string marginal_data(const Parameter& p, std::size_t j, const Outcome& o, const Marginal& m) {
-  const bool discrete = p.discrete();
-  const std::size_t bins = discrete ? p.values.size() : 30;
-  const double lo = discrete ? 0 : std::max(0.0, m.unit_mean - 4 * m.unit_sd);
-  const double hi = discrete ? 1 : std::min(1.0, m.unit_mean + 4 * m.unit_sd);
+  std::ostringstream s;
+  s << "# " << p.name << ": the posterior's density over the prior's, in bins of the posterior's range\n";
+  if (p.discrete()) {  // a bar per value, at its index, labelled with the value
+    const std::vector<double> mass = value_masses(p, j, o);
+    const double n = static_cast<double>(mass.size());
+    s << "# index-0.4 index index+0.4 density_over_prior value\n";
+    for (std::size_t b = 0; b < mass.size(); ++b)
+      s << g(static_cast<double>(b) - 0.4) << " " << b << " " << g(static_cast<double>(b) + 0.4) << " " << g(mass[b] * n) << " "
+        << p.values[b] << "\n";
+    return s.str();
+  }
+  const std::size_t bins = 30;
+  const double lo = std::max(0.0, m.unit_mean - 4 * m.unit_sd);
+  const double hi = std::min(1.0, m.unit_mean + 4 * m.unit_sd);
   const double width = (hi - lo) / static_cast<double>(bins);
   std::vector<double> mass(bins, 0.0);
   for (std::size_t i = 0; i < o.posterior_u.size(); ++i) {
     const double u = o.posterior_u[i](static_cast<Eigen::Index>(j));
     if (u < lo || u > hi || width <= 0) continue;
     mass[std::min(bins - 1, static_cast<std::size_t>((u - lo) / width))] += o.posterior_w[i];
-  }
-  std::ostringstream s;
-  s << "# " << p.name << ": the posterior's density over the prior's, in bins of the posterior's range\n";
-  if (discrete) {  // a bar per value, at its index, labelled with the value
-    s << "# index-0.4 index index+0.4 density_over_prior value\n";
-    for (std::size_t b = 0; b < bins; ++b)
-      s << g(static_cast<double>(b) - 0.4) << " " << b << " " << g(static_cast<double>(b) + 0.4) << " "
-        << g(width > 0 ? mass[b] / width : 0) << " " << p.value_text(lo + width * (static_cast<double>(b) + 0.5)) << "\n";
-    return s.str();
   }
   s << "# value_low value_centre value_high density_over_prior\n";
   for (std::size_t b = 0; b < bins; ++b) {
@@ -77,16 +92,9 @@ std::string marginal_data(const Parameter& p, std::size_t j, const Outcome& o, c
 
 // "viscous 0.71, local 0.29": the posterior's weight on each value of a parameter of values.
 std::string value_shares(const Parameter& p, std::size_t j, const Outcome& o) {
-  std::vector<double> share(p.values.size(), 0.0);
-  double total = 0;
-  for (std::size_t i = 0; i < o.posterior_u.size(); ++i) {
-    const double u = o.posterior_u[i](static_cast<Eigen::Index>(j));
-    const auto b = std::min(p.values.size() - 1, static_cast<std::size_t>(std::max(0.0, u) * static_cast<double>(p.values.size())));
-    share[b] += o.posterior_w[i], total += o.posterior_w[i];
-  }
+  const std::vector<double> mass = value_masses(p, j, o);
   std::string text;
-  for (std::size_t b = 0; b < share.size(); ++b)
-    text += (b ? ", " : "") + p.values[b] + " " + validation::fixed(total > 0 ? share[b] / total : 0, 2);
+  for (std::size_t b = 0; b < mass.size(); ++b) text += (b ? ", " : "") + p.values[b] + " " + validation::fixed(mass[b], 2);
   return text;
 }
 
@@ -189,6 +197,7 @@ void write_report(const Outcome& o, const std::map<std::string, double>& truth) 
   j["converged"] = o.converged;
   j["stop_reason"] = o.stop_reason;
   j["runs"] = o.runs;
+  j["sets_from_ledger"] = o.ledger_sets;
   j["core_seconds"] = o.core_seconds;
   j["posterior_from"] = o.posterior_from.empty() ? "the sets' weights" : o.posterior_from;
   if (!o.posterior_from.empty())
@@ -240,13 +249,8 @@ void write_report(const Outcome& o, const std::map<std::string, double>& truth) 
     j["sets"].push_back(x);
   }
   // The stamp of the runs (engine, baseline, spheres, samples, date), for the report's section line.
-  validation::Stamp stamp;
-  try {
-    stamp = validation::stamp_of_results(o.results, o.sets.front().name);
-  } catch (const std::exception&) {
-  }
-  j["stamp"] = validation::stamp_json(stamp);
-  validation::write_stamp_file(dir.string(), stamp);
+  j["stamp"] = validation::stamp_json(o.stamp);
+  validation::write_stamp_file(dir.string(), o.stamp);
   write_file(dir / "posterior.json", j.dump(1) + "\n");
 
   // Figure data.
@@ -310,6 +314,9 @@ void write_report(const Outcome& o, const std::map<std::string, double>& truth) 
   md << o.sets.size() << " parameter sets in " << o.iterations.size() << (o.iterations.size() == 1 ? " iteration of " : " iterations of ") << c.batch << " (" << o.runs
      << " runs, " << validation::significant(o.core_seconds / 60, 3) << " core-min recorded); effective sample size "
      << validation::significant(last.ess, 3) << "; " << (o.converged ? "converged: " : "not converged: ") << o.stop_reason << ".\n\n";
+  if (o.ledger_sets > 0)
+    md << o.ledger_sets << " of the sets were scored in earlier calls whose runs' results are not kept here: their scores come "
+       << "from the ledger `scored_sets.json`, which records each set's run hashes and misfit.\n\n";
   const auto short_of = std::count_if(o.sets.begin(), o.sets.end(), [](const ParameterSet& s) { return !s.misfit.left_out.empty(); });
   if (short_of > 0)
     md << short_of << " of the sets " << (short_of == 1 ? "was" : "were")

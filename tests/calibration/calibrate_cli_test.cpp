@@ -87,6 +87,42 @@ TEST_CASE("calibrate runs, writes its posterior, and replays itself from its run
   REQUIRE(again.exit_code == 0);
   CHECK(again.out.find("] started ") == std::string::npos);
   CHECK(read(dir / "report" / "posterior.json") == before);
+
+  // On a machine without the runs' results (another session): every set's score comes from the
+  // ledger beside the report, nothing runs, and the posterior is the same but for the recorded
+  // cost, which is summed set by set (the same to rounding) and the count of sets from the ledger.
+  fs::remove_all(dir / "results");
+  const auto plan_again = dem::test::run_command(cmd + " --plan 2>&1");
+  INFO(plan_again.out);
+  CHECK_THAT(plan_again.out, Catch::Contains("holds 6 set(s), 3 of them of the first iteration: they are not run again"));
+  CHECK_THAT(plan_again.out, Catch::Contains("all 2 iterations at most: 0 particle-steps"));
+  const auto resumed = dem::test::run_command(cmd + " 2>&1");
+  INFO(resumed.out);
+  REQUIRE(resumed.exit_code == 0);
+  CHECK(resumed.out.find("] started ") == std::string::npos);
+  CHECK_FALSE(fs::exists(dir / "results"));
+  nlohmann::json from_ledger = nlohmann::json::parse(read(dir / "report" / "posterior.json"));
+  nlohmann::json from_runs = p;
+  CHECK(from_ledger["sets_from_ledger"] == 6);
+  CHECK(from_runs["sets_from_ledger"] == 0);
+  CHECK(from_ledger["core_seconds"].get<double>() == Approx(from_runs["core_seconds"].get<double>()).epsilon(1e-12));
+  for (nlohmann::json* j : {&from_ledger, &from_runs}) j->erase("core_seconds"), j->erase("sets_from_ledger");
+  CHECK(from_ledger == from_runs);
+  CHECK_THAT(read(dir / "report" / "section.md"), Catch::Contains("6 of the sets were scored in earlier calls"));
+
+  // Other references: the ledger's scores do not count, and the sets run again.
+  std::ofstream(dir / "curve.csv") << "strain_3,q_over_p,sd\n0.002,0.7,0.1\n0.008,0.9,0.1\n";
+  const auto other = dem::test::run_command(cmd + " 2>&1");
+  INFO(other.out);
+  REQUIRE(other.exit_code == 0);
+  CHECK(other.out.find("] started ") != std::string::npos);
+  CHECK(nlohmann::json::parse(read(dir / "report" / "posterior.json"))["sets_from_ledger"] == 0);
+
+  // A damaged ledger is an error naming it, not a silent rerun.
+  std::ofstream(dir / "report" / "scored_sets.json") << "{\"schema\": 1, \"sets\": 3}";
+  const auto damaged = dem::test::run_command(cmd + " --plan 2>&1");
+  CHECK(damaged.exit_code != 0);
+  CHECK_THAT(damaged.out, Catch::Contains("scored_sets.json: not a ledger of scored sets"));
 }
 
 TEST_CASE("calibrate sets a density's parameter in that density's tests only, and a reading's keys together", "[calibration][cli]") {

@@ -1,0 +1,132 @@
+#include "ledger.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "config/yaml_section.hpp"
+#include "core/content_hash.hpp"
+#include "io/atomic_file.hpp"
+#include "io/particle_csv.hpp"
+#include "study/json_file.hpp"
+
+namespace calibration {
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+namespace {
+
+constexpr int schema = 1;
+
+// A number as JSON: null when it is not finite (JSON has no NaN), read back as NaN.
+json number(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
+double number_of(const json& j) { return j.is_number() ? j.get<double>() : NAN; }
+json numbers(const std::vector<double>& xs) {
+  json out = json::array();
+  for (const double x : xs) out.push_back(number(x));
+  return out;
+}
+std::vector<double> numbers_of(const json& j) {
+  std::vector<double> out;
+  for (const json& x : j) out.push_back(number_of(x));
+  return out;
+}
+
+json misfit_json(const SetMisfit& m) {
+  json j{{"chi2", number(m.chi2)}, {"valued", m.valued}, {"left_out", m.left_out}, {"rows", json::array()}};
+  for (const RowMisfit& r : m.rows) {
+    json row{{"name", r.name},   {"chi2", number(r.chi2)}, {"points", r.points},          {"note", r.note},
+             {"valued", r.valued}, {"model", numbers(r.model)}, {"model_sd", numbers(r.model_sd)}, {"samples", r.samples}};
+    if (r.consistent) row["consistent"] = *r.consistent;
+    j["rows"].push_back(row);
+  }
+  return j;
+}
+
+SetMisfit misfit_of(const json& j) {
+  SetMisfit m;
+  m.chi2 = number_of(j.at("chi2"));
+  m.valued = j.at("valued").get<bool>();
+  m.left_out = j.at("left_out").get<std::vector<std::string>>();
+  for (const json& row : j.at("rows")) {
+    RowMisfit r;
+    r.name = row.at("name").get<std::string>();
+    r.chi2 = number_of(row.at("chi2"));
+    r.points = row.at("points").get<int>();
+    r.note = row.at("note").get<std::string>();
+    r.valued = row.at("valued").get<bool>();
+    r.model = numbers_of(row.at("model"));
+    r.model_sd = numbers_of(row.at("model_sd"));
+    r.samples = row.at("samples").get<int>();
+    if (row.contains("consistent")) r.consistent = row["consistent"].get<bool>();
+    m.rows.push_back(std::move(r));
+  }
+  return m;
+}
+
+}  // namespace
+
+const ScoredSet* Ledger::find(const std::string& name, const Eigen::VectorXd& u, const std::vector<std::string>& run_hashes) const {
+  for (const ScoredSet& s : sets)
+    // The unit values to within what the scene's text of a value keeps: the run hashes say the
+    // scenes are the same.
+    if (s.name == name && s.u.size() == u.size() && (s.u - u).cwiseAbs().maxCoeff() <= 1e-9 && s.run_hashes == run_hashes) return &s;
+  return nullptr;
+}
+
+std::string references_hash(const References& refs) {
+  std::string text = dem::read_whole_file(refs.file);
+  if (!refs.rows_file.empty()) text += dem::read_whole_file(refs.rows_file);
+  for (const CurveRow& c : refs.curves) text += dem::read_whole_file(c.file);
+  return dem::content_hash(text);
+}
+
+Ledger read_ledger(const std::string& file, const std::string& references_hash) {
+  Ledger l;
+  l.references_hash = references_hash;
+  if (!fs::exists(file)) return l;
+  const json j = validation::read_json_file(file);
+  try {
+    if (j.at("schema").get<int>() != schema)
+      throw dem::ConfigError(file + ": schema " + j["schema"].dump() + " is not " + std::to_string(schema) +
+                             " (written by another version of calibrate: delete it to run its sets again)");
+    if (j.at("references_hash").get<std::string>() != references_hash) return l;
+    l.stamp = validation::stamp_from_json(j.at("stamp"));
+    for (const json& s : j.at("sets")) {
+      ScoredSet e;
+      e.name = s.at("name").get<std::string>();
+      const std::vector<double> u = s.at("u").get<std::vector<double>>();
+      e.u = Eigen::Map<const Eigen::VectorXd>(u.data(), static_cast<Eigen::Index>(u.size()));
+      e.run_hashes = s.at("run_hashes").get<std::vector<std::string>>();
+      e.misfit = misfit_of(s.at("misfit"));
+      e.runs = s.at("runs").get<double>();
+      e.core_seconds = s.at("core_seconds").get<double>();
+      l.sets.push_back(std::move(e));
+    }
+  } catch (const json::exception& e) {
+    throw dem::ConfigError(file + ": not a ledger of scored sets (" + e.what() + "): delete it to run its sets again");
+  }
+  return l;
+}
+
+void write_ledger(const std::string& file, const Ledger& ledger) {
+  json j{{"schema", schema},
+         {"about", "every set this calibration scored, so that it goes on without the runs' results: a set drawn again "
+                   "with the same unit values, run hashes and references takes its score from here"},
+         {"references_hash", ledger.references_hash},
+         {"stamp", validation::stamp_json(ledger.stamp)},
+         {"sets", json::array()}};
+  for (const ScoredSet& s : ledger.sets)
+    j["sets"].push_back({{"name", s.name},
+                         {"u", std::vector<double>(s.u.data(), s.u.data() + s.u.size())},
+                         {"run_hashes", s.run_hashes},
+                         {"runs", s.runs},
+                         {"core_seconds", s.core_seconds},
+                         {"misfit", misfit_json(s.misfit)}});
+  if (fs::path(file).has_parent_path()) fs::create_directories(fs::path(file).parent_path());
+  dem::write_file_atomically(file, j.dump(1) + "\n");
+}
+
+}  // namespace calibration
