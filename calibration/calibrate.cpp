@@ -41,12 +41,16 @@ std::vector<pipeline::PlannedRun> plan_sets(const Calibration& c, const pipeline
   return pipeline::join_studies({{s.name, pipeline::plan_study(s, profile, out, engine)}});
 }
 
-// What the runs cost, from their results (wall time x threads; a copy costs nothing).
+// What a run cost, from its result (wall time x threads; a copy, or a run not finished: nothing).
+double recorded_core_seconds(const pipeline::PlannedRun& r, int threads) {
+  if (r.copy_of >= 0) return 0;
+  const auto cost = pipeline::result_cost(r.result);
+  return cost && cost->wall_s ? *cost->wall_s * threads : 0;
+}
+
 double recorded_core_seconds(const std::vector<pipeline::PlannedRun>& runs, int threads) {
   double seconds = 0;
-  for (const pipeline::PlannedRun& r : runs)
-    if (r.copy_of < 0)
-      if (const auto cost = pipeline::result_cost(r.result); cost && cost->wall_s) seconds += *cost->wall_s * threads;
+  for (const pipeline::PlannedRun& r : runs) seconds += recorded_core_seconds(r, threads);
   return seconds;
 }
 
@@ -64,9 +68,7 @@ std::map<std::string, std::vector<std::string>> run_hashes_by_set(const std::vec
 std::map<std::string, std::pair<double, double>> run_shares(const std::vector<pipeline::PlannedRun>& runs, int threads) {
   std::map<std::string, std::pair<double, double>> out;
   for (const pipeline::PlannedRun& r : runs) {
-    double cost = 0;
-    if (r.copy_of < 0)
-      if (const auto c = pipeline::result_cost(r.result); c && c->wall_s) cost = *c->wall_s * threads;
+    const double cost = recorded_core_seconds(r, threads);
     const double k = static_cast<double>(r.variants.size());
     for (const std::string& v : r.variants) out[v].first += 1 / k, out[v].second += cost / k;
   }
@@ -102,7 +104,7 @@ void print_plan(const Calibration& c, std::vector<pipeline::PlannedRun>& runs, i
   const double first = pipeline::estimated_wall_time_s(runs, cost, jobs, throughput);
   // The ledger's sets cost nothing: at most max_iterations x batch sets less those.
   const double left = std::max(0.0, static_cast<double>(c.max_iterations) * c.batch - static_cast<double>(ledger_sets));
-  const double total = (ledger_sets > 0 && left == 0 ? 0 : shared) + per_iteration / c.batch * left;
+  const double total = left > 0 ? shared + per_iteration / c.batch * left : 0;
   std::printf("calibration %s: %zu parameter(s), %d sets per iteration, at most %d iterations\n", c.name.c_str(),
               c.parameters.size(), c.batch, c.max_iterations);
   std::printf("first iteration: %zu runs (%d shared by every set, %d for its sets still to run), %.3g particle-steps, "
@@ -185,7 +187,8 @@ std::optional<Outcome> run_calibration(const Calibration& c, const RunOptions& o
     for (const ParameterSet& s : out.sets)
       if (!from_ledger.count(s.name)) to_run.push_back(s);
     std::vector<pipeline::PlannedRun> runs = plan_sets(c, study, profile, to_run, out.results, out.engine);
-    const std::map<std::string, std::vector<std::string>> batch_hashes = run_hashes_by_set(runs);
+    // Input hashes are of content: the same whichever sets a plan holds.
+    const std::map<std::string, std::vector<std::string>> hashes = run_hashes_by_set(runs);
     std::set<std::string> unfinished;  // the sets some run of which has no finished result here
     for (const pipeline::PlannedRun& r : runs)
       if (!pipeline::up_to_date(r.result, r.hash))
@@ -193,8 +196,8 @@ std::optional<Outcome> run_calibration(const Calibration& c, const RunOptions& o
     int in_ledger = 0;
     for (ParameterSet& s : out.sets) {
       if (s.iteration != it || !unfinished.count(s.name)) continue;
-      const auto h = batch_hashes.find(s.name);
-      if (const ScoredSet* e = h == batch_hashes.end() ? nullptr : ledger.find(s.name, s.u, h->second)) {
+      const auto h = hashes.find(s.name);
+      if (const ScoredSet* e = h == hashes.end() ? nullptr : ledger.find(s.name, s.u, h->second)) {
         s.u = e->u, s.misfit = e->misfit;
         from_ledger.emplace(s.name, *e);
         ++in_ledger;
@@ -250,7 +253,6 @@ std::optional<Outcome> run_calibration(const Calibration& c, const RunOptions& o
     Ledger next;
     next.references_hash = ledger.references_hash;
     next.stamp = out.stamp;
-    const std::map<std::string, std::vector<std::string>> hashes = run_hashes_by_set(runs);
     for (const ParameterSet& s : out.sets) {
       if (const auto e = from_ledger.find(s.name); e != from_ledger.end()) {
         next.sets.push_back(e->second);
