@@ -1,7 +1,8 @@
 // The threads a run uses (run/thread_choice.hpp, run_stages): at most one per chunk of 512
-// particles, and the caller's count set again when the run ends. The runs here last well under the
-// half second before a run's first trial of another count, so which count steps faster never
-// enters (thread_choice_test.cpp drives that with a made-up clock).
+// particles, and the caller's count set again when the run ends. Which count steps faster is not
+// checked here: on a loaded machine (ctest -j2) the 1,000-sphere run may last past its first trial
+// of 1 thread, so whether it tries 1 depends on the load. thread_choice_test.cpp drives that with
+// a made-up clock.
 #include <catch2/catch.hpp>
 
 #include <omp.h>
@@ -47,6 +48,9 @@ TEST_CASE("a run uses at most one thread per chunk of 512 particles and gives th
   CHECK(one.steps == 300);
   CHECK(one.threads == 1);
   CHECK(one.thread_trials == 0);
+  CHECK(two.steps == 300);
   CHECK(two.threads == 2);
-  CHECK(two.steps_on_one_thread == 0);  // no trial in 300 steps of 1,000 spheres (a few ms)
+  // It starts on 2: a trial of 1 begins only after a whole window of the count in use, so,
+  // however loaded the machine, some of its steps ran on 2 threads.
+  CHECK(two.steps_on_one_thread < two.steps);
 }
