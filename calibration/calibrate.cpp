@@ -41,16 +41,21 @@ std::vector<pipeline::PlannedRun> plan_sets(const Calibration& c, const pipeline
   return pipeline::join_studies({{s.name, pipeline::plan_study(s, profile, out, engine)}});
 }
 
-// What a run cost, from its result (wall time x threads; a copy, or a run not finished: nothing).
-double recorded_core_seconds(const pipeline::PlannedRun& r, int threads) {
-  if (r.copy_of >= 0) return 0;
+// What a run cost, from its result: its core-seconds (wall time x threads) and particle-steps;
+// a copy, or a run not finished: nothing.
+struct RunCost {
+  double core_seconds = 0, particle_steps = 0;
+};
+RunCost recorded_cost(const pipeline::PlannedRun& r, int threads) {
+  if (r.copy_of >= 0) return {};
   const auto cost = pipeline::result_cost(r.result);
-  return cost && cost->wall_s ? *cost->wall_s * threads : 0;
+  if (!cost || !cost->wall_s) return {};
+  return {*cost->wall_s * threads, cost->particle_steps};
 }
 
 double recorded_core_seconds(const std::vector<pipeline::PlannedRun>& runs, int threads) {
   double seconds = 0;
-  for (const pipeline::PlannedRun& r : runs) seconds += recorded_core_seconds(r, threads);
+  for (const pipeline::PlannedRun& r : runs) seconds += recorded_cost(r, threads).core_seconds;
   return seconds;
 }
 
@@ -65,12 +70,19 @@ std::map<std::string, std::vector<std::string>> run_hashes_by_set(const std::vec
 
 // Each set's share of the runs it needs and of their recorded cost: a run shared by k sets counts
 // 1/k for each, so that the shares add up to the plan's runs and cost.
-std::map<std::string, std::pair<double, double>> run_shares(const std::vector<pipeline::PlannedRun>& runs, int threads) {
-  std::map<std::string, std::pair<double, double>> out;
+struct RunShare {
+  double runs = 0;
+  RunCost cost;
+};
+std::map<std::string, RunShare> run_shares(const std::vector<pipeline::PlannedRun>& runs, int threads) {
+  std::map<std::string, RunShare> out;
   for (const pipeline::PlannedRun& r : runs) {
-    const double cost = recorded_core_seconds(r, threads);
+    const RunCost cost = recorded_cost(r, threads);
     const double k = static_cast<double>(r.variants.size());
-    for (const std::string& v : r.variants) out[v].first += 1 / k, out[v].second += cost / k;
+    for (const std::string& v : r.variants) {
+      RunShare& share = out[v];
+      share.runs += 1 / k, share.cost.core_seconds += cost.core_seconds / k, share.cost.particle_steps += cost.particle_steps / k;
+    }
   }
   return out;
 }
@@ -84,40 +96,77 @@ double largest_move(const std::vector<Marginal>& a, const std::vector<Marginal>&
 
 // `results_root`: the folder the study's results folders are in, where this engine's finished runs
 // of other studies give a throughput when none of the calibration's own has finished.
-// `ledger_sets`: the sets the ledger holds, which no iteration runs again.
+// `in_ledger`: the first iteration's sets the ledger has scored; no iteration runs again any set
+// of the ledger.
 void print_plan(const Calibration& c, std::vector<pipeline::PlannedRun>& runs, int jobs, const std::string& results_root,
-                const std::string& engine, int first_in_ledger, std::size_t ledger_sets) {
+                const std::string& engine, const std::set<std::string>& in_ledger, const Ledger& ledger) {
+  // The throughput: of this plan's finished runs; else of this engine's other runs on this
+  // machine; else of the runs that scored the ledger's sets (on the machine that ran them); else
+  // the make bench figure.
   const std::optional<double> recorded = pipeline::use_recorded_costs(runs);
   const std::optional<pipeline::MachineThroughput> machine =
       recorded ? std::nullopt : pipeline::recorded_throughput_under(results_root, engine);
-  const double throughput = recorded ? *recorded : machine ? machine->particle_steps_per_s : pipeline::default_throughput;
-  std::vector<bool> todo(runs.size());
-  for (std::size_t i = 0; i < runs.size(); ++i) todo[i] = runs[i].copy_of < 0 && !pipeline::up_to_date(runs[i].result, runs[i].hash);
+  const std::optional<double> scored = ledger.throughput();
+  const double throughput = recorded ? *recorded
+                            : machine ? machine->particle_steps_per_s
+                            : scored  ? *scored
+                                      : pipeline::default_throughput;
+  // The first iteration runs what has no result here and is needed by a set not in the ledger.
+  std::set<std::string> first_sets, unfinished;
+  std::vector<bool> done(runs.size()), todo(runs.size());
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const pipeline::PlannedRun& r = runs[i];
+    done[i] = r.copy_of >= 0 || pipeline::up_to_date(r.result, r.hash);
+    todo[i] = !done[i] && std::any_of(r.variants.begin(), r.variants.end(), [&](const std::string& v) { return !in_ledger.count(v); });
+    first_sets.insert(r.variants.begin(), r.variants.end());
+    if (!done[i]) unfinished.insert(r.variants.begin(), r.variants.end());
+  }
   const std::vector<double> cost = pipeline::run_costs(runs, todo);
-  double shared = 0, per_iteration = 0;
+  // A later iteration's set costs what a first-iteration set's own runs cost, whether they ran
+  // here or not; the runs every set shares are run once, if they are not here.
+  double shared = 0, first_own = 0, own_per_set = 0, shared_needed = 0;
   int shared_runs = 0, set_runs = 0;
   for (std::size_t i = 0; i < runs.size(); ++i) {
-    const bool is_shared = runs[i].variants.size() > 1;
-    (is_shared ? shared : per_iteration) += cost[i];
-    (is_shared ? shared_runs : set_runs) += todo[i];
+    if (runs[i].variants.size() > 1) {
+      shared += cost[i], shared_runs += todo[i];
+      if (!done[i]) shared_needed += runs[i].cost;
+    } else {
+      first_own += cost[i], set_runs += todo[i];
+      if (runs[i].copy_of < 0) own_per_set += runs[i].cost / c.batch;
+    }
   }
   const double first = pipeline::estimated_wall_time_s(runs, cost, jobs, throughput);
-  // The ledger's sets cost nothing: at most max_iterations x batch sets less those.
-  const double left = std::max(0.0, static_cast<double>(c.max_iterations) * c.batch - static_cast<double>(ledger_sets));
-  const double total = left > 0 ? shared + per_iteration / c.batch * left : 0;
+  // Sets no iteration runs: the first iteration's finished here or in the ledger, and the ledger's
+  // of later iterations (drawn again as they were, from the same scores) when its first-iteration
+  // entries were scored on runs of this plan's inputs (an engine or a scene changed since: none).
+  const std::map<std::string, std::vector<std::string>> hashes = run_hashes_by_set(runs);
+  const bool current = std::all_of(ledger.sets.begin(), ledger.sets.end(), [&](const ScoredSet& e) {
+    const auto h = hashes.find(e.name);
+    return !first_sets.count(e.name) || (h != hashes.end() && h->second == e.run_hashes);
+  });
+  std::size_t scored_sets = 0;
+  for (const std::string& set : first_sets) scored_sets += !unfinished.count(set) || in_ledger.count(set);
+  if (current)
+    for (const ScoredSet& e : ledger.sets) scored_sets += !first_sets.count(e.name);
+  const double left = std::max(0.0, static_cast<double>(c.max_iterations) * c.batch - static_cast<double>(scored_sets));
+  const double total = left > 0 ? shared_needed + own_per_set * left : 0;
   std::printf("calibration %s: %zu parameter(s), %d sets per iteration, at most %d iterations\n", c.name.c_str(),
               c.parameters.size(), c.batch, c.max_iterations);
   std::printf("first iteration: %zu runs (%d shared by every set, %d for its sets still to run), %.3g particle-steps, "
-              "about %.1f min on %d core(s)\n", runs.size(), shared_runs, set_runs, shared + per_iteration, first / 60, jobs);
-  if (ledger_sets > 0)
-    std::printf("the ledger of scored sets (%s/scored_sets.json) holds %zu set(s), %d of them of the first iteration: "
-                "they are not run again\n", c.report.c_str(), ledger_sets, first_in_ledger);
-  std::printf("all %d iterations at most: %.3g particle-steps, %.1f core-min, about %.1f min on %d core(s)\n",
-              c.max_iterations, total, total / throughput / 60, total / throughput / 60 / jobs, jobs);
+              "about %.1f min on %d core(s)\n", runs.size(), shared_runs, set_runs, shared + first_own, first / 60, jobs);
+  if (!ledger.sets.empty())
+    std::printf("the ledger of scored sets (%s/scored_sets.json) holds %zu set(s), %zu of them of the first iteration: "
+                "%s\n", c.report.c_str(), ledger.sets.size(), in_ledger.size(),
+                current ? "they are not run again"
+                        : "some were scored on runs of other inputs (an engine or a scene changed): those run again, "
+                          "and the later iterations' are counted as still to score");
+  std::printf("all %d iterations at most (%.0f sets still to score): %.3g particle-steps, %.1f core-min, about %.1f min on %d core(s)\n",
+              c.max_iterations, left, total, total / throughput / 60, total / throughput / 60 / jobs, jobs);
   const std::string from = recorded ? "recorded by the finished runs in the results folder"
                            : machine ? "recorded by " + std::to_string(machine->runs) + " finished runs of this engine in " +
                                            std::to_string(machine->studies) + " results folders under " + results_root
-                                     : "the engine's make bench figure; no run of this engine has finished here yet";
+                           : scored ? "recorded by the runs of the ledger's scored sets, on the machine that ran them"
+                                    : "the engine's make bench figure; no run of this engine has finished here yet";
   std::printf("(throughput %.3g particle-steps/s per core: %s)\n", throughput, from.c_str());
 }
 
@@ -193,27 +242,27 @@ std::optional<Outcome> run_calibration(const Calibration& c, const RunOptions& o
     for (const pipeline::PlannedRun& r : runs)
       if (!pipeline::up_to_date(r.result, r.hash))
         unfinished.insert(r.variants.begin(), r.variants.end());
-    int in_ledger = 0;
+    std::set<std::string> in_ledger;  // this iteration's
     for (ParameterSet& s : out.sets) {
       if (s.iteration != it || !unfinished.count(s.name)) continue;
       const auto h = hashes.find(s.name);
       if (const ScoredSet* e = h == hashes.end() ? nullptr : ledger.find(s.name, s.u, h->second)) {
         s.u = e->u, s.misfit = e->misfit;
         from_ledger.emplace(s.name, *e);
-        ++in_ledger;
+        in_ledger.insert(s.name);
       }
     }
     if (o.plan_only) {
-      print_plan(c, runs, o.jobs, fs::path(study.output).parent_path().string(), out.engine, in_ledger, ledger.sets.size());
+      print_plan(c, runs, o.jobs, fs::path(study.output).parent_path().string(), out.engine, in_ledger, ledger);
       return std::nullopt;
     }
-    if (in_ledger > 0) {
+    if (!in_ledger.empty()) {
       to_run.erase(std::remove_if(to_run.begin(), to_run.end(), [&](const ParameterSet& s) { return from_ledger.count(s.name) > 0; }),
                    to_run.end());
       runs = to_run.empty() ? std::vector<pipeline::PlannedRun>{} : plan_sets(c, study, profile, to_run, out.results, out.engine);
     }
-    std::printf("[calibrate] iteration %d: %d sets (%d scored in the ledger), %zu runs planned (finished ones are reused)\n", it,
-                c.batch, in_ledger, runs.size());
+    std::printf("[calibrate] iteration %d: %d sets (%zu scored in the ledger), %zu runs planned (finished ones are reused)\n", it,
+                c.batch, in_ledger.size(), runs.size());
     std::fflush(stdout);
     if (!runs.empty()) {
       if (!lock) lock = pipeline::lock_results_folder(out.results);
@@ -226,7 +275,7 @@ std::optional<Outcome> run_calibration(const Calibration& c, const RunOptions& o
         ran = pipeline::execute(runs, o.dem, o.jobs, o.threads);
       if (ran.interrupted) throw dem::ConfigError("interrupted: start the calibration again to go on (finished runs are reused)");
     }
-    const std::map<std::string, std::pair<double, double>> shares = run_shares(runs, o.threads);
+    const std::map<std::string, RunShare> shares = run_shares(runs, o.threads);
     double ledger_runs = 0, ledger_seconds = 0;
     for (const auto& [name, e] : from_ledger) ledger_runs += e.runs, ledger_seconds += e.core_seconds;
     out.runs = static_cast<int>(runs.size() + std::lround(ledger_runs));
@@ -258,10 +307,11 @@ std::optional<Outcome> run_calibration(const Calibration& c, const RunOptions& o
         next.sets.push_back(e->second);
         continue;
       }
-      const auto share = shares.find(s.name);
+      const auto found = shares.find(s.name);
+      const RunShare share = found == shares.end() ? RunShare{} : found->second;
       const auto h = hashes.find(s.name);
-      next.sets.push_back({s.name, s.u, h == hashes.end() ? std::vector<std::string>{} : h->second, s.misfit,
-                           share == shares.end() ? 0 : share->second.first, share == shares.end() ? 0 : share->second.second});
+      next.sets.push_back({s.name, s.u, h == hashes.end() ? std::vector<std::string>{} : h->second, s.misfit, share.runs,
+                           share.cost.core_seconds, share.cost.particle_steps});
     }
     for (const ScoredSet& e : ledger.sets)
       if (std::none_of(out.sets.begin(), out.sets.end(), [&](const ParameterSet& s) { return s.name == e.name; })) next.sets.push_back(e);

@@ -76,6 +76,14 @@ const ScoredSet* Ledger::find(const std::string& name, const Eigen::VectorXd& u,
   return nullptr;
 }
 
+std::optional<double> Ledger::throughput() const {
+  double particle_steps = 0, core_seconds = 0;
+  for (const ScoredSet& s : sets)
+    if (s.particle_steps > 0 && s.core_seconds > 0) particle_steps += s.particle_steps, core_seconds += s.core_seconds;
+  if (core_seconds <= 0) return std::nullopt;
+  return particle_steps / core_seconds;
+}
+
 std::string references_hash(const References& refs) {
   std::string text = dem::read_whole_file(refs.file);
   if (!refs.rows_file.empty()) text += dem::read_whole_file(refs.rows_file);
@@ -103,6 +111,7 @@ Ledger read_ledger(const std::string& file, const std::string& references_hash) 
       e.misfit = misfit_of(s.at("misfit"));
       e.runs = s.at("runs").get<double>();
       e.core_seconds = s.at("core_seconds").get<double>();
+      e.particle_steps = s.value("particle_steps", 0.0);
       l.sets.push_back(std::move(e));
     }
   } catch (const json::exception& e) {
@@ -124,6 +133,7 @@ void write_ledger(const std::string& file, const Ledger& ledger) {
                          {"run_hashes", s.run_hashes},
                          {"runs", s.runs},
                          {"core_seconds", s.core_seconds},
+                         {"particle_steps", s.particle_steps},
                          {"misfit", misfit_json(s.misfit)}});
   if (fs::path(file).has_parent_path()) fs::create_directories(fs::path(file).parent_path());
   dem::write_file_atomically(file, j.dump(1) + "\n");

@@ -4,6 +4,7 @@
 // takes a set's score from here instead of running the set again. An entry counts only for the
 // same set drawn again (its name and unit values), whose runs are planned with the same input
 // hashes (scene and engine source), scored against references of the same content.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,7 @@ struct ScoredSet {
   SetMisfit misfit;
   double runs = 0;          // its share of the runs it needs (a run k sets need counts 1/k for each)
   double core_seconds = 0;  // its share of their recorded cost
+  double particle_steps = 0;  // its share of their recorded particle-steps (0 in entries written without)
 };
 
 struct Ledger {
@@ -30,6 +32,9 @@ struct Ledger {
 
   // The entry of the set, or null when there is none with these unit values and run hashes.
   const ScoredSet* find(const std::string& name, const Eigen::VectorXd& u, const std::vector<std::string>& run_hashes) const;
+  // The particle-steps per core-second its entries' runs recorded, on the machine that ran them
+  // (null when no entry recorded both).
+  std::optional<double> throughput() const;
 };
 
 // A hash of the references' content: their file, the rows file it reads and every curve's CSV.

@@ -51,6 +51,15 @@ TEST_CASE("calibrate runs, writes its posterior, and replays itself from its run
   INFO(plan.out);
   REQUIRE(plan.exit_code == 0);
   CHECK_THAT(plan.out, Catch::Contains("first iteration: 4 runs (1 shared by every set, 3 for its sets still to run)"));
+  CHECK_THAT(plan.out, Catch::Contains("all 2 iterations at most (6 sets still to score)"));
+  const auto particle_steps = [](const std::string& out, const std::string& line) {  // the figure after `line`
+    const std::size_t at = out.find(line);
+    return at == std::string::npos ? std::string("(no line)") : out.substr(at + line.size(), out.find(" particle-steps", at) - at - line.size());
+  };
+  // With nothing run, the first iteration costs the shared run and 3 sets' own runs, all 2
+  // iterations the shared run and 6 sets' own runs.
+  const std::string first_iteration = particle_steps(plan.out, "for its sets still to run), ");
+  CHECK(std::stod(particle_steps(plan.out, "(6 sets still to score): ")) > std::stod(first_iteration));
   CHECK_FALSE(fs::exists(dir / "report" / "posterior.json"));
 
   const auto first = dem::test::run_command(cmd + " 2>&1");
@@ -95,7 +104,25 @@ TEST_CASE("calibrate runs, writes its posterior, and replays itself from its run
   const auto plan_again = dem::test::run_command(cmd + " --plan 2>&1");
   INFO(plan_again.out);
   CHECK_THAT(plan_again.out, Catch::Contains("holds 6 set(s), 3 of them of the first iteration: they are not run again"));
-  CHECK_THAT(plan_again.out, Catch::Contains("all 2 iterations at most: 0 particle-steps"));
+  CHECK_THAT(plan_again.out, Catch::Contains("all 2 iterations at most (0 sets still to score): 0 particle-steps"));
+  // The throughput: the one the ledger's runs recorded, none of them being here.
+  CHECK_THAT(plan_again.out, Catch::Contains("recorded by the runs of the ledger's scored sets"));
+  {  // Without the ledger's second iteration: its 3 sets are still to score, on the shared run (not
+     // here) and 3 sets' own runs, which is what the first iteration cost with nothing run.
+    nlohmann::json ledger = nlohmann::json::parse(read(dir / "report" / "scored_sets.json"));
+    const std::string saved = ledger.dump();
+    nlohmann::json first_only = nlohmann::json::array();
+    for (const auto& s : ledger["sets"])
+      if (s["name"].get<std::string>().rfind("i1", 0) == 0) first_only.push_back(s);
+    REQUIRE(first_only.size() == 3);
+    ledger["sets"] = first_only;
+    std::ofstream(dir / "report" / "scored_sets.json") << ledger.dump();
+    const auto part = dem::test::run_command(cmd + " --plan 2>&1");
+    INFO(part.out);
+    CHECK_THAT(part.out, Catch::Contains("first iteration: 4 runs (0 shared by every set, 0 for its sets still to run), 0 particle-steps"));
+    CHECK(particle_steps(part.out, "(3 sets still to score): ") == first_iteration);
+    std::ofstream(dir / "report" / "scored_sets.json") << saved;
+  }
   const auto resumed = dem::test::run_command(cmd + " 2>&1");
   INFO(resumed.out);
   REQUIRE(resumed.exit_code == 0);
