@@ -96,10 +96,12 @@ double largest_move(const std::vector<Marginal>& a, const std::vector<Marginal>&
 
 // `results_root`: the folder the study's results folders are in, where this engine's finished runs
 // of other studies give a throughput when none of the calibration's own has finished.
-// `in_ledger`: the first iteration's sets the ledger has scored; no iteration runs again any set
-// of the ledger.
+// `hashes`: the run hashes each set needs (run_hashes_by_set of `runs`); `unfinished`: the sets
+// some run of which has no finished result here; `in_ledger`: the first iteration's sets the
+// ledger has scored. No iteration runs again any set of the ledger.
 void print_plan(const Calibration& c, std::vector<pipeline::PlannedRun>& runs, int jobs, const std::string& results_root,
-                const std::string& engine, const std::set<std::string>& in_ledger, const Ledger& ledger) {
+                const std::string& engine, const std::map<std::string, std::vector<std::string>>& hashes,
+                const std::set<std::string>& unfinished, const std::set<std::string>& in_ledger, const Ledger& ledger) {
   // The throughput: of this plan's finished runs; else of this engine's other runs on this
   // machine; else of the runs that scored the ledger's sets (on the machine that ran them); else
   // the make bench figure.
@@ -111,15 +113,13 @@ void print_plan(const Calibration& c, std::vector<pipeline::PlannedRun>& runs, i
                             : machine ? machine->particle_steps_per_s
                             : scored  ? *scored
                                       : pipeline::default_throughput;
-  // The first iteration runs what has no result here and is needed by a set not in the ledger.
-  std::set<std::string> first_sets, unfinished;
+  // The first iteration runs what has no result here and is needed by a set not in the ledger (a
+  // copy of another run costs no engine time).
   std::vector<bool> done(runs.size()), todo(runs.size());
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const pipeline::PlannedRun& r = runs[i];
     done[i] = r.copy_of >= 0 || pipeline::up_to_date(r.result, r.hash);
     todo[i] = !done[i] && std::any_of(r.variants.begin(), r.variants.end(), [&](const std::string& v) { return !in_ledger.count(v); });
-    first_sets.insert(r.variants.begin(), r.variants.end());
-    if (!done[i]) unfinished.insert(r.variants.begin(), r.variants.end());
   }
   const std::vector<double> cost = pipeline::run_costs(runs, todo);
   // A later iteration's set costs what a first-iteration set's own runs cost, whether they ran
@@ -139,15 +139,14 @@ void print_plan(const Calibration& c, std::vector<pipeline::PlannedRun>& runs, i
   // Sets no iteration runs: the first iteration's finished here or in the ledger, and the ledger's
   // of later iterations (drawn again as they were, from the same scores) when its first-iteration
   // entries were scored on runs of this plan's inputs (an engine or a scene changed since: none).
-  const std::map<std::string, std::vector<std::string>> hashes = run_hashes_by_set(runs);
   const bool current = std::all_of(ledger.sets.begin(), ledger.sets.end(), [&](const ScoredSet& e) {
     const auto h = hashes.find(e.name);
-    return !first_sets.count(e.name) || (h != hashes.end() && h->second == e.run_hashes);
+    return h == hashes.end() || h->second == e.run_hashes;
   });
   std::size_t scored_sets = 0;
-  for (const std::string& set : first_sets) scored_sets += !unfinished.count(set) || in_ledger.count(set);
+  for (const auto& [set, set_hashes] : hashes) scored_sets += !unfinished.count(set) || in_ledger.count(set);
   if (current)
-    for (const ScoredSet& e : ledger.sets) scored_sets += !first_sets.count(e.name);
+    for (const ScoredSet& e : ledger.sets) scored_sets += !hashes.count(e.name);
   const double left = std::max(0.0, static_cast<double>(c.max_iterations) * c.batch - static_cast<double>(scored_sets));
   const double total = left > 0 ? shared_needed + own_per_set * left : 0;
   std::printf("calibration %s: %zu parameter(s), %d sets per iteration, at most %d iterations\n", c.name.c_str(),
@@ -253,7 +252,8 @@ std::optional<Outcome> run_calibration(const Calibration& c, const RunOptions& o
       }
     }
     if (o.plan_only) {
-      print_plan(c, runs, o.jobs, fs::path(study.output).parent_path().string(), out.engine, in_ledger, ledger);
+      print_plan(c, runs, o.jobs, fs::path(study.output).parent_path().string(), out.engine, hashes, unfinished, in_ledger,
+                 ledger);
       return std::nullopt;
     }
     if (!in_ledger.empty()) {
