@@ -65,9 +65,10 @@ if (pa > 0) {
   set title (n > 2 ? "the most correlated pair" : "near the posterior") font ",11"
   set key top right box opaque font ",9"
   t1 = value(sprintf("truth_%d", pa)); t2 = value(sprintf("truth_%d", pb))
-  plot "posterior_points.dat" u pa:pb w p pt 7 ps 0.3 lc rgb "#801f77b4" t "posterior", \
-       "sets.dat" u (column(pa + 1)):(column(pb + 1)) w p pt 6 ps 1.2 lw 1.5 lc rgb "#333333" t "sets run", \
-       (t1 == t1 ? "+" : "") u (t1):(t2) every ::0::0 w p pt 3 ps 3 lw 2 lc rgb "#d62728" t "truth"
+  # The truth's marker only when the truth is known (NaN otherwise).
+  truth_plot = (t1 == t1) ? sprintf(', "+" u (%.17g):(%.17g) every ::0::0 w p pt 3 ps 3 lw 2 lc rgb "#d62728" t "truth"', t1, t2) : ""
+  eval('plot "posterior_points.dat" u pa:pb w p pt 7 ps 0.3 lc rgb "#801f77b4" t "posterior", ' . \
+       '"sets.dat" u (column(pa + 1)):(column(pb + 1)) w p pt 6 ps 1.2 lw 1.5 lc rgb "#333333" t "sets run"' . truth_plot)
   unset title
   unset logscale
   set format y "%.3g"
