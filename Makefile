@@ -96,8 +96,8 @@ calibration-demo: tools
 	cd $(CAL_REPORT) && GNUPLOT_LIB=$(CURDIR)/reports/gnuplot gnuplot $(CURDIR)/reports/gnuplot/calibration.gp
 
 # The paper's open choices calibrated jointly (pipeline/calibrations/paper_open_choices.yaml,
-# docs/calibration.md): 16 sets an iteration at 512 spheres on 3 samples, about 85 min an
-# iteration on 2 cores, over several sessions (finished runs are reused; the report is written
+# docs/calibration.md): 16 sets an iteration at 512 spheres on 3 samples, 72-85 min an
+# iteration on 2 cores as measured, over several sessions (finished runs are reused; the report is written
 # after every iteration). Then open-choices-check: its best set at 8,000 spheres on 3 samples,
 # judged like the paper study. The study it runs, pipeline/studies/calibration_paper_best.yaml, is
 # written from calibration_paper.yaml and the best set (calibrate variant).
