@@ -15,6 +15,7 @@
 
 #include "io/hdf5.hpp"
 #include "judge/decisions_file.hpp"
+#include "report/open_choices_check.hpp"
 #include "report/other_sections.hpp"
 #include "sections/variants.hpp"
 #include "source_hash.hpp"
@@ -290,6 +291,7 @@ void add_tables(Values& v, const fs::path& report, const std::vector<Row>& paper
   v["calibration_plot"] = fs::exists(report / "calibration" / "synthetic_triaxial" / "posterior.png") ? "1" : "";
   include("file.calibration_open_choices", fs::path("calibration") / "paper_open_choices" / "section.md");
   v["calibration_open_choices_plot"] = fs::exists(report / "calibration" / "paper_open_choices" / "posterior.png") ? "1" : "";
+  v["calibration_open_choices_check"] = open_choices_check_text(report);
   v["file.liquefaction"] = fs::exists(report / "liquefaction" / "table.md") ? section_table(report, "liquefaction") : "";
   v["convergence_plot"] = fs::exists(report / "convergence" / "error_vs_time.png") ? "yes" : "";
   // The size the decisions table was measured at: its decisions.json's own record, else (the

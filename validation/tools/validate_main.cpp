@@ -1,7 +1,8 @@
 // validate: judges a study's results against a reference file (reference_data/paper.yaml, or a
 // user's own: validation/README.md), writes validation.json, validation.md and verdicts.md.
 // validation.json records the stamp of the numbers (study/stamp.hpp: engine, baseline, spheres,
-// samples, date); --from-json keeps the stamp the record has (none: "not recorded").
+// samples, date); --from-json keeps the stamp the record has (none: "not recorded"). For a study of
+// variants, judged_from names the variants its rows read (a calibration's best set: which one).
 //   validate --results DIR --references FILE --out DIR [--profile NAME] [--decisions decisions.json]...
 //   validate --from-json validation.json --references FILE --out DIR [--profile NAME] [--decisions ...]...
 // DIR is a study's results folder, with the manifest the pipeline writes (DIR/runs.tsv): an
@@ -222,6 +223,11 @@ nlohmann::ordered_json validation_json(const Options& o, const std::string& labe
   json["profile"] = o.profile;
   json["references"] = o.references;
   json["judged_from"] = !from_results ? nlohmann::ordered_json{{"validation_json", o.from_json}} : nlohmann::ordered_json{{"results", o.results}};
+  // A study of variants: the ones the rows read, so that a record names the set it judged.
+  std::set<std::string> variants;
+  for (const Judged& j : judged)
+    if (from_results && j.runs.variant != "-") variants.insert(j.runs.variant);
+  if (!variants.empty()) json["judged_from"]["variants"] = variants;
   json["stamp"] = validation::stamp_json(stamp);
   json["rules"] = {
       {"interval", "consistent: the " + label + "'s value, widened by the row's tolerance, overlaps the " +

@@ -25,6 +25,20 @@ const std::string refs = std::string(DEM_SOURCE_DIR) + "/reference_data/paper.ya
 
 dem::test::CommandResult validate(const std::string& args) { return dem::test::run_command("'" + bin + "' " + args + " 2>&1"); }
 
+// DIR/runs.tsv of the paper's layout (each density's preparation and 5 tests) for seeds 1..`seeds`,
+// every run of `variant` ("-": a study without variants; else its runs named `variant`_...).
+void write_paper_manifest(const fs::path& dir, int seeds, const std::string& variant) {
+  std::ofstream runs(dir / "runs.tsv");
+  runs << "# variant\tdensity\ttest\trun\tresult\tstarts_from\tmay_fail\tsettings\tseed\n";
+  const std::string prefix = variant == "-" ? "" : variant + "_";
+  for (int seed = 1; seed <= seeds; ++seed)
+    for (const std::string d : {"loose", "medium", "dense"})
+      for (const std::string t : {"-", "test1", "test2", "test3", "test4", "test5"}) {
+        const std::string run = "seed" + std::to_string(seed) + "/" + prefix + d + "_" + (t == "-" ? "prepare" : t);
+        runs << variant << "\t" << d << "\t" << t << "\t" << run << "\t/x/" << run << ".h5\t-\t0\tas written\t" << seed << "\n";
+      }
+}
+
 }  // namespace
 
 TEST_CASE("validate: an --out or --results that cannot be used is a clear error, exit 2", "[validate][cli]") {
@@ -60,16 +74,7 @@ TEST_CASE("validate: missing results and a deleted sample make exit 1, and are l
   fs::remove_all(dir);
   fs::create_directories(dir / "results" / "seed1");
   fs::create_directories(dir / "results" / "seed2");
-  {
-    std::ofstream runs(dir / "results" / "runs.tsv");
-    runs << "# variant\tdensity\ttest\trun\tresult\tstarts_from\tmay_fail\tsettings\tseed\n";
-    for (int seed = 1; seed <= 3; ++seed)
-      for (const std::string d : {"loose", "medium", "dense"})
-        for (const std::string t : {"-", "test1", "test2", "test3", "test4", "test5"}) {
-          const std::string run = "seed" + std::to_string(seed) + "/" + d + "_" + (t == "-" ? "prepare" : t);
-          runs << "-\t" << d << "\t" << t << "\t" << run << "\t/x/" << run << ".h5\t-\t0\tas written\t" << seed << "\n";
-        }
-  }
+  write_paper_manifest(dir / "results", 3, "-");
   const auto validate_profile = [&](const std::string& profile) {
     return validate("--results '" + (dir / "results").string() + "' --references '" + refs + "' --out '" + (dir / profile).string() +
                     "' --profile " + profile);
@@ -91,7 +96,25 @@ TEST_CASE("validate: missing results and a deleted sample make exit 1, and are l
     CHECK(j.at("missing_results").front() == "seed1/loose_prepare.h5");
     CHECK(j.at("complete") == false);
     CHECK(j.at("samples").size() == 2);
+    CHECK_FALSE(j.at("judged_from").contains("variants"));  // a study without variants names none
   }
+}
+
+TEST_CASE("validate: a study of one variant records that variant as the one its rows read", "[validate][cli]") {
+  // The layout above with every run of the variant `best` (as `make open-choices-check` runs a
+  // calibration's best set): rows that name no variant take the study's only one.
+  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "validate_cli_variant";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "results" / "seed1");
+  fs::create_directories(dir / "results" / "seed2");
+  write_paper_manifest(dir / "results", 2, "best");
+  const auto r = validate("--results '" + (dir / "results").string() + "' --references '" + refs + "' --out '" + (dir / "out").string() +
+                          "' --profile quick");
+  CHECK(r.exit_code == 1);  // no result files: every row not judged, the record written all the same
+  std::ifstream f(dir / "out" / "validation.json");
+  const nlohmann::json j = nlohmann::json::parse(f);
+  CHECK(j.at("judged_from").at("variants") == nlohmann::json::array({"best"}));
+  CHECK(j.at("missing_results").front() == "seed1/best_loose_prepare.h5");
 }
 
 TEST_CASE("validate: a study without runs.tsv, and rows that name what the study lacks, exit 2", "[validate][cli][references]") {

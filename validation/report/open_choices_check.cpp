@@ -1,0 +1,111 @@
+#include "report/open_choices_check.hpp"
+
+#include <map>
+#include <set>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "report/other_sections.hpp"
+#include "study/format.hpp"
+#include "study/json_file.hpp"
+#include "study/markdown_table.hpp"
+#include "study/settings.hpp"
+#include "study/stamp.hpp"
+
+namespace fs = std::filesystem;
+
+namespace validation {
+
+namespace {
+
+const char* const check_dir = "calibration/paper_open_choices/best";
+
+// "consistent", "inconsistent" or "not judged" as the report's tables mark them.
+std::string marked(const std::string& verdict) {
+  if (verdict == "consistent") return "✅ consistent";
+  if (verdict == "inconsistent") return "❌ inconsistent";
+  return verdict;
+}
+
+// Row name -> verdict, from a validation.json.
+std::map<std::string, std::string> verdicts_of(const nlohmann::json& validation) {
+  std::map<std::string, std::string> out;
+  for (const auto& r : validation.at("rows")) out[r.at("name").get<std::string>()] = r.at("verdict").get<std::string>();
+  return out;
+}
+
+// "8,000 spheres, 3 samples" from a stamp; "size not recorded" without one.
+std::string size_of(const Stamp& s) {
+  if (s.spheres <= 0 || s.samples <= 0) return "size not recorded";
+  return thousands(s.spheres) + " spheres, " + std::to_string(s.samples) + " sample" + (s.samples == 1 ? "" : "s");
+}
+
+}  // namespace
+
+std::string open_choices_check_text(const fs::path& report) {
+  const fs::path check_file = report / check_dir / "validation.json";
+  const fs::path posterior_file = report / "calibration" / "paper_open_choices" / "posterior.json";
+  std::error_code ec;
+  if (!fs::exists(check_file, ec) || !fs::exists(posterior_file, ec)) return "";
+  const nlohmann::json check = read_json_file(check_file.string());
+  const nlohmann::json posterior = read_json_file(posterior_file.string());
+  const std::string best = posterior.at("best_set").at("name").get<std::string>();
+
+  // The set the check judged: its record names it (validate records a study's variants).
+  std::set<std::string> judged_sets;
+  if (check.contains("judged_from") && check.at("judged_from").contains("variants"))
+    for (const auto& v : check.at("judged_from").at("variants")) judged_sets.insert(v.get<std::string>());
+  if (judged_sets != std::set<std::string>{best})
+    return "⚠ The check in `" + std::string(check_dir) + "/` judged " +
+           (judged_sets.empty() ? std::string("a study that does not name its set") : "the set(s) " + joined(std::vector<std::string>(judged_sets.begin(), judged_sets.end()), ", ")) +
+           ", not the calibration's best set `" + best + "`, so it is not set beside the calibration here: `make open-choices-check` runs the best set.\n";
+
+  const Stamp check_stamp = stamp_from_json(check.at("stamp"));
+  const Stamp calibration_stamp = stamp_from_json(posterior.at("stamp"));
+  const Stamp paper_stamp = read_paper_stamp(report);
+  std::map<std::string, std::string> at_calibration;
+  for (const auto& r : posterior.at("rows_consistent").at("per_row"))
+    at_calibration[r.at("name").get<std::string>()] =
+        !r.contains("consistent_at_best_set") ? "not judged" : r.at("consistent_at_best_set").get<bool>() ? "consistent" : "inconsistent";
+  std::map<std::string, std::string> at_paper;
+  if (fs::exists(report / "validation.json", ec)) at_paper = verdicts_of(read_json_file((report / "validation.json").string()));
+
+  const auto& counts = posterior.at("rows_consistent").at("best_set");
+  std::string out = "`make open-choices-check` ran the calibration's best set, `" + best +
+                    "`, as the paper study is run, and `validate` judged it against the same rows (every row with its values: `" +
+                    check_dir + "/verdicts.md`). " + stamp_sentence(check_stamp) + ".";
+  if (check_stamp.engine_source != calibration_stamp.engine_source)
+    out += " ⚠ Another engine than the calibration's (`" + calibration_stamp.engine_source + "`).";
+  out += "\n\nAt " + size_of(check_stamp) + " per density, **" + std::to_string(check.at("consistent").get<int>()) + " of " +
+         std::to_string(check.at("total").get<int>()) + "** rows are consistent (" + std::to_string(check.at("inconsistent").get<int>()) +
+         " inconsistent, " + std::to_string(check.at("not_judged").get<int>()) + " not judged); at the calibration's " +
+         size_of(calibration_stamp) + ", the same set made " + std::to_string(counts.at("consistent").get<int>()) + " of " +
+         std::to_string(counts.at("judged").get<int>()) + " consistent.";
+  if (!check.at("complete").get<bool>())
+    out += " **Incomplete:** " + std::to_string(check.at("missing_results").size()) +
+           " result file(s) missing; the rows are judged on what is there.";
+  out += "\n\n";
+
+  // The rows not consistent everywhere, in the reference file's order.
+  std::vector<std::string> headings = {"row"};
+  if (!at_paper.empty()) headings.push_back("the paper study (" + size_of(paper_stamp) + ")");
+  headings.push_back("best set, calibration (" + size_of(calibration_stamp) + ")");
+  headings.push_back("best set, check (" + size_of(check_stamp) + ")");
+  MarkdownTable table(headings);
+  for (const auto& r : check.at("rows")) {
+    const std::string name = r.at("name").get<std::string>(), verdict = r.at("verdict").get<std::string>();
+    const std::string calibrated = at_calibration.count(name) ? at_calibration.at(name) : "not judged";
+    const std::string paper = at_paper.count(name) ? at_paper.at(name) : "not judged";
+    if (verdict == "consistent" && calibrated == "consistent" && (at_paper.empty() || paper == "consistent")) continue;
+    std::vector<std::string> cells = {cell(name)};
+    if (!at_paper.empty()) cells.push_back(marked(paper));
+    cells.push_back(marked(calibrated));
+    cells.push_back(marked(verdict));
+    table.row(cells);
+  }
+  if (table.rows() == 0) return out + "Every row is consistent in each.\n";
+  return out + "The rows not consistent in each (the others are):\n\n" + table.text();
+}
+
+}  // namespace validation
