@@ -103,15 +103,13 @@ TEST_CASE("validate: missing results and a deleted sample make exit 1, and are l
 TEST_CASE("validate: a study of one variant records that variant as the one its rows read", "[validate][cli]") {
   // The layout above with every run of the variant `best` (as `make open-choices-check` runs a
   // calibration's best set): rows that name no variant take the study's only one.
-  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "validate_cli_variant";
-  fs::remove_all(dir);
-  fs::create_directories(dir / "results" / "seed1");
-  fs::create_directories(dir / "results" / "seed2");
-  write_paper_manifest(dir / "results", 2, "best");
-  const auto r = validate("--results '" + (dir / "results").string() + "' --references '" + refs + "' --out '" + (dir / "out").string() +
-                          "' --profile quick");
+  const fs::path results = fs::path(dem::test::scratch_dir("validate_cli_variant")) / "results";
+  for (const char* seed : {"seed1", "seed2"}) fs::create_directories(results / seed);
+  write_paper_manifest(results, 2, "best");
+  const fs::path out = results.parent_path() / "out";
+  const auto r = validate("--results '" + results.string() + "' --references '" + refs + "' --out '" + out.string() + "' --profile quick");
   CHECK(r.exit_code == 1);  // no result files: every row not judged, the record written all the same
-  std::ifstream f(dir / "out" / "validation.json");
+  std::ifstream f(out / "validation.json");
   const nlohmann::json j = nlohmann::json::parse(f);
   CHECK(j.at("judged_from").at("variants") == nlohmann::json::array({"best"}));
   CHECK(j.at("missing_results").front() == "seed1/best_loose_prepare.h5");
