@@ -99,7 +99,8 @@ calibration-demo: tools
 # docs/calibration.md): 16 sets an iteration at 512 spheres on 3 samples, 72-85 min an
 # iteration on 2 cores as measured, over several sessions (finished runs are reused; the report is written
 # after every iteration). Then open-choices-check: its best set at 8,000 spheres on 3 samples,
-# judged like the paper study. The study it runs, pipeline/studies/calibration_paper_best.yaml, is
+# judged like the paper study (54 runs; 99 min on 2 cores for the dashpot best set, measured;
+# finished runs are reused across sessions). The study it runs, pipeline/studies/calibration_paper_best.yaml, is
 # written from calibration_paper.yaml and the best set (calibrate variant).
 OPEN := pipeline/calibrations/paper_open_choices.yaml
 OPEN_REPORT := reports/calibration/paper_open_choices
