@@ -96,12 +96,14 @@ double largest_move(const std::vector<Marginal>& a, const std::vector<Marginal>&
 
 // `results_root`: the folder the study's results folders are in, where this engine's finished runs
 // of other studies give a throughput when none of the calibration's own has finished.
-// `hashes`: the run hashes each set needs (run_hashes_by_set of `runs`); `unfinished`: the sets
-// some run of which has no finished result here; `in_ledger`: the first iteration's sets the
-// ledger has scored. No iteration runs again any set of the ledger.
+// `hashes`: the run hashes each set needs (run_hashes_by_set of `runs`); `finished`: per run,
+// whether its finished result is here; `unfinished`: the sets some run of which is not;
+// `in_ledger`: the first iteration's sets the ledger has scored. No iteration runs again any set
+// of the ledger.
 void print_plan(const Calibration& c, std::vector<pipeline::PlannedRun>& runs, int jobs, const std::string& results_root,
                 const std::string& engine, const std::map<std::string, std::vector<std::string>>& hashes,
-                const std::set<std::string>& unfinished, const std::set<std::string>& in_ledger, const Ledger& ledger) {
+                const std::vector<bool>& finished, const std::set<std::string>& unfinished, const std::set<std::string>& in_ledger,
+                const Ledger& ledger) {
   // The throughput: of this plan's finished runs; else of this engine's other runs on this
   // machine; else of the runs that scored the ledger's sets (on the machine that ran them); else
   // the make bench figure.
@@ -118,7 +120,7 @@ void print_plan(const Calibration& c, std::vector<pipeline::PlannedRun>& runs, i
   std::vector<bool> done(runs.size()), todo(runs.size());
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const pipeline::PlannedRun& r = runs[i];
-    done[i] = r.copy_of >= 0 || pipeline::up_to_date(r.result, r.hash);
+    done[i] = r.copy_of >= 0 || finished[i];
     todo[i] = !done[i] && std::any_of(r.variants.begin(), r.variants.end(), [&](const std::string& v) { return !in_ledger.count(v); });
   }
   const std::vector<double> cost = pipeline::run_costs(runs, todo);
@@ -144,7 +146,7 @@ void print_plan(const Calibration& c, std::vector<pipeline::PlannedRun>& runs, i
     return h == hashes.end() || h->second == e.run_hashes;
   });
   std::size_t scored_sets = 0;
-  for (const auto& [set, set_hashes] : hashes) scored_sets += !unfinished.count(set) || in_ledger.count(set);
+  for (const auto& entry : hashes) scored_sets += !unfinished.count(entry.first) || in_ledger.count(entry.first);
   if (current)
     for (const ScoredSet& e : ledger.sets) scored_sets += !hashes.count(e.name);
   const double left = std::max(0.0, static_cast<double>(c.max_iterations) * c.batch - static_cast<double>(scored_sets));
@@ -237,10 +239,12 @@ std::optional<Outcome> run_calibration(const Calibration& c, const RunOptions& o
     std::vector<pipeline::PlannedRun> runs = plan_sets(c, study, profile, to_run, out.results, out.engine);
     // Input hashes are of content: the same whichever sets a plan holds.
     const std::map<std::string, std::vector<std::string>> hashes = run_hashes_by_set(runs);
-    std::set<std::string> unfinished;  // the sets some run of which has no finished result here
-    for (const pipeline::PlannedRun& r : runs)
-      if (!pipeline::up_to_date(r.result, r.hash))
-        unfinished.insert(r.variants.begin(), r.variants.end());
+    std::vector<bool> finished(runs.size());  // per run: its finished result is here
+    std::set<std::string> unfinished;         // the sets some run of which has none
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+      finished[i] = pipeline::up_to_date(runs[i].result, runs[i].hash);
+      if (!finished[i]) unfinished.insert(runs[i].variants.begin(), runs[i].variants.end());
+    }
     std::set<std::string> in_ledger;  // this iteration's
     for (ParameterSet& s : out.sets) {
       if (s.iteration != it || !unfinished.count(s.name)) continue;
@@ -252,8 +256,8 @@ std::optional<Outcome> run_calibration(const Calibration& c, const RunOptions& o
       }
     }
     if (o.plan_only) {
-      print_plan(c, runs, o.jobs, fs::path(study.output).parent_path().string(), out.engine, hashes, unfinished, in_ledger,
-                 ledger);
+      print_plan(c, runs, o.jobs, fs::path(study.output).parent_path().string(), out.engine, hashes, finished, unfinished,
+                 in_ledger, ledger);
       return std::nullopt;
     }
     if (!in_ledger.empty()) {

@@ -28,10 +28,6 @@ std::string interval(const RowResult& e) {
 // "3 of 5": the samples in which the row holds, of those with a value.
 std::string holds_in(const RowResult& e) { return std::to_string(e.holds) + " of " + std::to_string(e.valued); }
 
-const char* mark(Verdict v) {
-  return v == Verdict::Consistent ? "✅ consistent" : v == Verdict::Inconsistent ? "❌ inconsistent" : "— not judged";
-}
-
 // The verdict with the row's warnings after it: "✅ consistent ⚠ samples too few to judge: ...".
 std::string verdict_cell(const RowResult& e) {
   std::string cell = mark(e.verdict);
@@ -64,6 +60,10 @@ TurnsInconsistent side_effects_of(const std::vector<Judged>& judged) {
 }
 
 }  // namespace
+
+const char* mark(Verdict v) {
+  return v == Verdict::Consistent ? "✅ consistent" : v == Verdict::Inconsistent ? "❌ inconsistent" : "— not judged";
+}
 
 VerdictCounts count_verdicts(const std::vector<Judged>& judged) {
   VerdictCounts c;

@@ -35,6 +35,9 @@ VerdictCounts count_verdicts(const std::vector<Judged>& judged);
 // The reference's statement as a region: "0.73 ± 0.02", "≥ 0.05", "≤ 0".
 std::string statement(const Row& r);
 
+// A verdict as the tables mark it: "✅ consistent", "❌ inconsistent", "— not judged".
+const char* mark(Verdict v);
+
 // A row of validation.json: the row's definition, every sample's value (with its note, and its
 // misfit when it has one) and the verdict.
 nlohmann::ordered_json json_row(const Judged& j);

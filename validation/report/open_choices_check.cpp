@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "judge/verdicts.hpp"
 #include "report/other_sections.hpp"
 #include "study/format.hpp"
 #include "study/json_file.hpp"
@@ -21,18 +22,17 @@ namespace {
 
 const char* const check_dir = "calibration/paper_open_choices/best";
 
-// "consistent", "inconsistent" or "not judged" as the report's tables mark them.
-std::string marked(const std::string& verdict) {
-  if (verdict == "consistent") return "✅ consistent";
-  if (verdict == "inconsistent") return "❌ inconsistent";
-  return verdict;
+// Row name -> verdict, from a validation.json.
+std::map<std::string, Verdict> verdicts_of(const nlohmann::json& validation) {
+  std::map<std::string, Verdict> out;
+  for (const auto& r : validation.at("rows")) out[r.at("name").get<std::string>()] = verdict_from_string(r.at("verdict").get<std::string>());
+  return out;
 }
 
-// Row name -> verdict, from a validation.json.
-std::map<std::string, std::string> verdicts_of(const nlohmann::json& validation) {
-  std::map<std::string, std::string> out;
-  for (const auto& r : validation.at("rows")) out[r.at("name").get<std::string>()] = r.at("verdict").get<std::string>();
-  return out;
+// A row's verdict in `verdicts`; not there: not judged.
+Verdict verdict_in(const std::map<std::string, Verdict>& verdicts, const std::string& row) {
+  const auto it = verdicts.find(row);
+  return it == verdicts.end() ? Verdict::NotJudged : it->second;
 }
 
 // "8,000 spheres, 3 samples" from a stamp; "size not recorded" without one.
@@ -64,11 +64,12 @@ std::string open_choices_check_text(const fs::path& report) {
   const Stamp check_stamp = stamp_from_json(check.at("stamp"));
   const Stamp calibration_stamp = stamp_from_json(posterior.at("stamp"));
   const Stamp paper_stamp = read_paper_stamp(report);
-  std::map<std::string, std::string> at_calibration;
+  std::map<std::string, Verdict> at_calibration;
   for (const auto& r : posterior.at("rows_consistent").at("per_row"))
-    at_calibration[r.at("name").get<std::string>()] =
-        !r.contains("consistent_at_best_set") ? "not judged" : r.at("consistent_at_best_set").get<bool>() ? "consistent" : "inconsistent";
-  std::map<std::string, std::string> at_paper;
+    at_calibration[r.at("name").get<std::string>()] = !r.contains("consistent_at_best_set")            ? Verdict::NotJudged
+                                                      : r.at("consistent_at_best_set").get<bool>() ? Verdict::Consistent
+                                                                                                   : Verdict::Inconsistent;
+  std::map<std::string, Verdict> at_paper;
   if (fs::exists(report / "validation.json", ec)) at_paper = verdicts_of(read_json_file((report / "validation.json").string()));
 
   const auto& counts = posterior.at("rows_consistent").at("best_set");
@@ -94,14 +95,14 @@ std::string open_choices_check_text(const fs::path& report) {
   headings.push_back("best set, check (" + size_of(check_stamp) + ")");
   MarkdownTable table(headings);
   for (const auto& r : check.at("rows")) {
-    const std::string name = r.at("name").get<std::string>(), verdict = r.at("verdict").get<std::string>();
-    const std::string calibrated = at_calibration.count(name) ? at_calibration.at(name) : "not judged";
-    const std::string paper = at_paper.count(name) ? at_paper.at(name) : "not judged";
-    if (verdict == "consistent" && calibrated == "consistent" && (at_paper.empty() || paper == "consistent")) continue;
+    const std::string name = r.at("name").get<std::string>();
+    const Verdict checked = verdict_from_string(r.at("verdict").get<std::string>());
+    const Verdict calibrated = verdict_in(at_calibration, name), paper = verdict_in(at_paper, name);
+    if (checked == Verdict::Consistent && calibrated == Verdict::Consistent && (at_paper.empty() || paper == Verdict::Consistent)) continue;
     std::vector<std::string> cells = {cell(name)};
-    if (!at_paper.empty()) cells.push_back(marked(paper));
-    cells.push_back(marked(calibrated));
-    cells.push_back(marked(verdict));
+    if (!at_paper.empty()) cells.push_back(mark(paper));
+    cells.push_back(mark(calibrated));
+    cells.push_back(mark(checked));
     table.row(cells);
   }
   if (table.rows() == 0) return out + "Every row is consistent in each.\n";

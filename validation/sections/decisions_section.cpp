@@ -367,10 +367,7 @@ std::optional<double> json_number(const nlohmann::ordered_json& j, const char* k
 }
 
 Verdict verdict_of(const nlohmann::ordered_json& j, const char* key) {
-  const std::string v = j.contains(key) && j.at(key).is_string() ? j.at(key).get<std::string>() : "";
-  return v == validation::to_string(Verdict::Consistent) ? Verdict::Consistent
-         : v == validation::to_string(Verdict::Inconsistent) ? Verdict::Inconsistent
-                                                              : Verdict::NotJudged;
+  return validation::verdict_from_string(j.contains(key) && j.at(key).is_string() ? j.at(key).get<std::string>() : "");
 }
 
 // A result as decisions.json records it: its mean and sd. `samples`: how many samples it had, when

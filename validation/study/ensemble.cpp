@@ -44,6 +44,12 @@ const char* to_string(Verdict v) {
   return "?";
 }
 
+Verdict verdict_from_string(const std::string& text) {
+  for (Verdict v : {Verdict::Consistent, Verdict::Inconsistent})
+    if (text == to_string(v)) return v;
+  return Verdict::NotJudged;
+}
+
 Verdict judge(const Spread& s, const Region& paper) {
   if (!s.low || !s.high) return Verdict::NotJudged;
   return *s.low <= paper.high && paper.low <= *s.high ? Verdict::Consistent : Verdict::Inconsistent;

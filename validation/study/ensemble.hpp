@@ -36,6 +36,8 @@ Spread spread(const std::vector<double>& values, double level = prediction_level
 
 enum class Verdict { Consistent, Inconsistent, NotJudged };
 const char* to_string(Verdict v);
+// The verdict to_string names; any other text (a record without one): NotJudged.
+Verdict verdict_from_string(const std::string& text);
 
 // NotJudged with fewer than two samples (no verdict rests on one sample); otherwise whether the
 // prediction interval and the paper's region overlap.
