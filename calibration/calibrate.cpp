@@ -397,7 +397,7 @@ std::optional<Outcome> run_calibration(const Calibration& c, const RunOptions& o
   if (!out.converged)
     out.stop_reason = "max_iterations (" + std::to_string(c.max_iterations) + ") reached before the posterior settled (it moved " +
                       validation::significant(out.iterations.back().moved, 2) + " of a prior range in the last iteration and rests on " +
-                      validation::significant(out.iterations.back().ess, 2) + " effective points, " +
+                      validation::significant(out.iterations.back().ess, 3) + " effective points, " +
                       validation::significant(c.min_effective_sets, 3) + " asked" +
                       (out.iterations.back().contained ? "" : "; its mean +- 2 sd reaches out of its response surface's region") + ")";
   return out;

@@ -140,6 +140,10 @@ int tool_main(int argc, char** argv) {
   CLI::Option* threads_opt = app.add_option("--threads", threads,
       "threads inside each run (default: cores / runs at once, at least 1; results do not depend on it)")
       ->check(CLI::Range(1, 256));
+  std::vector<std::string> only;
+  app.add_option("--variant", only,
+      "run only this variant of the study (repeat for several; with one study file): the others' results stay as they are, "
+      "and runs.tsv lists only these");
   app.add_option("--dem", dem, "the engine (default: dem beside this program)");
   app.add_flag("--plan", plan_only,
       "write the resolved scenes, list the runs with their particle-steps, the critical path and the wall time "
@@ -170,6 +174,10 @@ int tool_main(int argc, char** argv) {
     std::fprintf(stderr, "pipeline: --out names the results folder of one study; give one study file with it\n");
     return 2;
   }
+  if (study_files.size() > 1 && !only.empty()) {
+    std::fprintf(stderr, "pipeline: --variant names variants of one study; give one study file with it\n");
+    return 2;
+  }
   if (std::error_code ec; !out.empty() && fs::exists(out, ec) && !fs::is_directory(out, ec)) {
     std::fprintf(stderr, "pipeline: --out '%s' is not a folder (the results folder of the study: made if missing)\n", out.c_str());
     return 2;
@@ -185,7 +193,8 @@ int tool_main(int argc, char** argv) {
     std::vector<pipeline::StudyPlan> plans;
     std::vector<std::string> profiles;
     for (const std::string& study_file : study_files) {
-      const pipeline::Study& study = studies.emplace_back(pipeline::load_study(study_file));
+      pipeline::Study& study = studies.emplace_back(pipeline::load_study(study_file));
+      if (!only.empty()) pipeline::keep_variants(study, only);
       const pipeline::Profile& p = profile.empty() ? study.default_profile() : study.profile(profile);
       profiles.push_back(p.name);
       const std::string& study_out = outs.emplace_back(

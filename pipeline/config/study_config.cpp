@@ -252,6 +252,7 @@ std::string describe(const Variant& v) {
     f << *v.time_step_fraction;
     out += (out.empty() ? "" : "; ") + std::string("time step = ") + f.str() + " x critical";
   }
+  if (!v.seeds.empty()) out += (out.empty() ? "" : "; ") + std::to_string(v.seeds.size()) + " samples of its own";
   return out.empty() ? "as written" : out;
 }
 
@@ -271,9 +272,23 @@ std::string variant_yaml(const Variant& v) {
   if (v.shear_with_preparation_friction) n["shear_with_preparation_friction"] = true;
   if (v.time_step_fraction) n["time_step_fraction"] = *v.time_step_fraction;
   if (v.may_fail) n["may_fail"] = true;
+  if (!v.seeds.empty()) {
+    n["seeds"] = YAML::Node(YAML::NodeType::Sequence);
+    for (const std::int64_t s : v.seeds) n["seeds"].push_back(s);
+  }
   YAML::Emitter e;
   e << YAML::Flow << n;
   return e.c_str();
+}
+
+void keep_variants(Study& study, const std::vector<std::string>& names) {
+  std::string known;
+  for (const Variant& v : study.variants) known += (known.empty() ? "" : ", ") + v.name;
+  for (const std::string& name : names)
+    if (std::none_of(study.variants.begin(), study.variants.end(), [&](const Variant& v) { return v.name == name; }))
+      throw dem::ConfigError(study.file + ": --variant " + name + ": the study has no such variant" +
+                             (known.empty() ? " (it has no variants)" : " (its variants: " + known + ")"));
+  std::erase_if(study.variants, [&](const Variant& v) { return std::find(names.begin(), names.end(), v.name) == names.end(); });
 }
 
 const Profile& Study::default_profile() const {
@@ -398,6 +413,9 @@ Study load_study(const std::string& file) {
               v.fail("time_step_fraction", "and numerics.time_step both set the time step; keep one");
       }
       var.may_fail = v.boolean("may_fail", may_fail, "a run that stops with a message is an outcome, not a failure");
+      var.seeds = read_seeds(v, {});
+      if (!var.seeds.empty() && !ensemble)
+        v.fail("seeds", "gives this variant its own samples in place of the profile's; the study has no seeds (an ensemble) to replace");
       v.finish();
       st.variants.push_back(var);
     }

@@ -45,6 +45,9 @@ struct Variant {
   bool shear_with_preparation_friction = false;  // the tests' material.friction = the density's preparation friction
   std::optional<double> time_step_fraction;  // numerics.time_step = this x the sample's critical step
   bool may_fail = false;    // a run that stops with a message is an outcome, not a study failure
+  // Its own samples (study key seeds, same forms) in place of the profile's: e.g. many small
+  // samples beside a few large ones. Empty: the profile's. Only in an ensemble.
+  std::vector<std::int64_t> seeds;
 };
 
 struct Profile {
@@ -98,5 +101,9 @@ std::string variant_yaml(const Variant& v);
 
 // Reads and validates a study; relative paths are taken from the study file's folder.
 Study load_study(const std::string& file);
+
+// Keeps only the named variants, in the study's order (pipeline --variant); throws ConfigError
+// naming an unknown one and the study's variants.
+void keep_variants(Study& study, const std::vector<std::string>& names);
 
 }  // namespace pipeline

@@ -253,8 +253,21 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
     std::string folder;  // "" or "seed<N>/"
   };
   std::vector<Sample> samples;
-  for (const std::int64_t s : profile.seeds) samples.push_back({s, "seed" + std::to_string(s) + "/"});
+  // The profile's seeds, then those only some variants run (a variant's own seeds replace the profile's).
+  std::vector<std::int64_t> seeds = profile.seeds;
+  for (const Variant& v : variants)
+    for (const std::int64_t s : v.seeds)
+      if (std::find(seeds.begin(), seeds.end(), s) == seeds.end()) seeds.push_back(s);
+  for (const Variant& v : variants)
+    if (!v.seeds.empty() && profile.seeds.empty())
+      throw dem::ConfigError(study.file + ": variants (" + v.name + "): seeds: the profile " + profile.name +
+                             " runs the template's one sample (no seeds), so there are no samples for a variant's own to replace");
+  for (const std::int64_t s : seeds) samples.push_back({s, "seed" + std::to_string(s) + "/"});
   if (samples.empty()) samples.push_back({});
+  const auto runs_on = [&](const Variant& v, const Sample& sample) {
+    const std::vector<std::int64_t>& own = v.seeds.empty() ? profile.seeds : v.seeds;
+    return !sample.seed || std::find(own.begin(), own.end(), *sample.seed) != own.end();
+  };
   auto paths = [&](PlannedRun& r) {
     r.scene_file = (fs::path(out_dir) / "scenes" / (r.name + ".yaml")).string();
     r.result = (fs::path(out_dir) / (r.name + ".h5")).string();
@@ -274,6 +287,7 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
                    runs.size(), sample_no, samples.size(), std::chrono::duration<double>(now - started).count());
     }
     const Variant& v = variants[vi];
+    if (!runs_on(v, sample_of)) continue;
     const std::string where = named ? "variants[" + std::to_string(vi) + "] (" + v.name + ")" : "";
     const std::string prefix = sample_of.folder + (named ? v.name + "_" : "");
     for (const Density& d : study.densities) {

@@ -198,3 +198,39 @@ TEST_CASE("a variant written by variant_yaml reads back the same in a study", "[
   CHECK(back.per_density == v.per_density);
   CHECK_FALSE(back.shear_with_preparation_friction);
 }
+
+TEST_CASE("a variant's own seeds replace the profile's for it alone; --variant keeps some variants", "[pipeline][ensemble]") {
+  const fs::path dir = fresh("ensemble_variant_seeds");
+  const std::string text = two_densities + "profiles: {paper: {lattice: 2}, quick: {lattice: 2, seeds: 2}}\n"
+                           "variants: [{name: ref}, {name: big, prepare: {particles.lattice.n: [3, 3, 3]}, seeds: [2, 5, 6]}]\n";
+  const auto r = plan(dir, text);
+  // ref on seeds 1, 2 and big on 2, 5, 6: 5 samples x 2 densities x (preparation + 2 tests).
+  CHECK(r.size() == 30);
+  CHECK(r.count("seed1/ref_loose_prepare") == 1);
+  CHECK(r.count("seed5/ref_loose_prepare") == 0);
+  CHECK(r.count("seed1/big_loose_prepare") == 0);
+  for (const char* s : {"seed2", "seed5", "seed6"}) CHECK(r.count(std::string(s) + "/big_dense_test2") == 1);
+  CHECK(scene(r.at("seed6/big_dense_prepare")).particles.lattice.seed == 6);
+  CHECK(scene(r.at("seed6/big_dense_prepare")).particles.lattice.n[0] == 3);
+
+  // Own seeds without an ensemble to replace: refused, naming the key.
+  const auto message = [&](const std::string& t, const std::string& profile) {
+    try {
+      plan(dir, t, profile);
+    } catch (const dem::ConfigError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  CHECK_THAT(message(two_densities + "profiles: {paper: {lattice: 2}}\nvariants: [{name: a, seeds: 3}]\n", "paper"),
+             Catch::Contains("seeds") && Catch::Contains("no seeds"));
+  // An ensemble in one profile only: a profile without seeds has no samples to replace.
+  CHECK_THAT(message(text, "paper"), Catch::Contains("big") && Catch::Contains("no seeds"));
+
+  // keep_variants: the named ones in the study's order; an unknown name lists the study's.
+  pipeline::Study study = load(dir, text);
+  pipeline::keep_variants(study, {"big"});
+  REQUIRE(study.variants.size() == 1);
+  CHECK(study.variants.front().name == "big");
+  CHECK_THROWS_WITH(pipeline::keep_variants(study, {"nope"}), Catch::Contains("--variant nope") && Catch::Contains("big"));
+}

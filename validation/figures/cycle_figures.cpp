@@ -37,7 +37,7 @@ void cycle_figure_values(NoteContext& c, Values& v, const std::string& d, int la
     if (s1 && sc) sliding.add((*sc)[1] - (*s1)[1]);
   }
   if (growth.any()) v["fig07.growth_" + d] = range_text(growth.lo, growth.hi);
-  if (dense_abs.any()) v["fig07.max_abs_" + d] = significant(dense_abs.hi, 2);
+  if (dense_abs.any()) v["fig07.max_abs_" + d] = significant_upper_bound(dense_abs.hi, 2);  // "stays below" it
   v["fig07.verdict_" + d] = d == "dense" ? c.phrase("ev_growth_magnitude", d) : c.phrase("ev_growth", d);
   if (cn0.any()) v["fig10.start_" + d] = range_fixed(cn0.lo, cn0.hi, 2);
   if (cn1.any()) v["fig10.cycle1_" + d] = range_fixed(cn1.lo, cn1.hi, 2);

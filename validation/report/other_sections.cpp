@@ -106,8 +106,10 @@ StampedReport stamp_sections(const std::string& text, const fs::path& report, co
     if (key == values.end() || key->second.empty()) continue;  // not run yet: the section says so, and has no numbers
     const Stamp stamp = read_section_stamp(report, section);
     const std::string differs = stamp_difference(stamp, paper, section.own_scene.empty());
-    const std::string own = section.own_scene.empty() || !stamp.recorded()
-                                ? ""
+    // A section of its own scene says whose baseline its numbers are on, as its stamp records it.
+    const std::string own = section.own_scene.empty() || !stamp.recorded() || stamp.baseline.empty() ? ""
+                            : stamp.baseline == paper.baseline
+                                ? " Its baseline is the paper study's, though it may run a scene of its own (`" + section.own_scene + "`)."
                                 : " Its baseline is its own scene's (`" + section.own_scene + "`), not the paper study's, by design.";
     std::string line = "*" + stamp_sentence(stamp) + "." + own + "*";
     std::string new_heading = heading;

@@ -43,6 +43,10 @@ constexpr int paper_samples = 5;
 // A quantity whose converged value is known to better than this (relative half-width) can judge
 // settings; the others' errors are the samples' scatter.
 constexpr double resolved_below = 0.10;
+// Pairs whose correlation is below this share too little of the sample for the difference to
+// beat the scatter: the variance of a difference is 2 sd^2 (1 - r), no smaller than unpaired
+// samples' 2 sd^2 unless r > 0, and half of it only at r = 0.5.
+constexpr double decorrelated_below = 0.5;
 
 // The quantities in reading order and their headings.
 const std::vector<std::pair<std::string, std::string>>& headline() {
@@ -81,6 +85,12 @@ std::string signed_percent(const Estimate& e, double scale) {
   return s + " %";
 }
 
+std::string fixed2(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2f", x);
+  return buf;
+}
+
 // "1.23 ± 0.40 %" (a magnitude or an sd: no sign).
 std::string unsigned_percent(const Estimate& e, double scale = 1) {
   const std::string s = signed_percent(e, scale);
@@ -107,7 +117,7 @@ std::vector<double> list(const PerSeed& p) {
 // A setting: its runs' shared settings (from its first complete run).
 struct Setting {
   std::string variant;
-  double dt = nan, rate = nan, core_s = 0;
+  double dt = nan, prep_dt = nan, rate = nan, core_s = 0;  // the test's and the preparation's time step
   long spheres = 0;
   int samples = 0;
 };
@@ -118,7 +128,7 @@ std::map<std::string, Setting> settings_of(const Runs& runs) {
     Setting x{variant};
     for (const auto& [seed, r] : seeds) {
       if (!r->status.empty()) continue;
-      if (x.samples == 0) x.dt = r->time_step_s, x.rate = r->rate_Pa_s, x.spheres = r->spheres;
+      if (x.samples == 0) x.dt = r->time_step_s, x.prep_dt = r->preparation_time_step_s, x.rate = r->rate_Pa_s, x.spheres = r->spheres;
       x.core_s += r->core_s;
       ++x.samples;
     }
@@ -133,20 +143,30 @@ struct DensityBudget {
   std::string density;
   std::vector<Budget> budgets;
   std::map<std::string, Setting> settings;
-  std::string dt_half, dt_quarter, larger;  // the variants the factors used ("" none)
-  std::vector<std::string> rates;           // the rate variants, the paper's among them
+  std::string dt_half, dt_quarter;            // the time step of the test only, on the reference's samples ("" none)
+  std::string both_half, both_quarter;        // the time step of the preparation and the test
+  std::vector<std::string> rates;             // the rate variants, the paper's among them
+  std::vector<std::string> sizes;             // the other sizes' variants
 };
 
+// The quantities of the prepared sample: the test's time step does not touch them.
+bool of_preparation(const std::string& quantity) { return quantity == "e0" || quantity == "coordination"; }
+
+validation::FactorError not_run(const std::string& why) { return {{nan, nan}, why, false}; }
+
 DensityBudget analyse(const std::string& density, const Runs& runs, const std::string& reference) {
-  DensityBudget d{density, {}, settings_of(runs), "", "", "", {}};
+  DensityBudget d{density, {}, settings_of(runs), "", "", "", "", {}, {}};
   const Setting& ref = d.settings.at(reference);
   for (const auto& [variant, s] : d.settings) {
     if (s.samples == 0 || variant == reference) continue;
     const bool dt_same = same(s.dt, ref.dt), rate_same = same(s.rate, ref.rate), n_same = s.spheres == ref.spheres;
-    if (rate_same && n_same && same(s.dt, ref.dt / 2)) d.dt_half = variant;
-    if (rate_same && n_same && same(s.dt, ref.dt / 4)) d.dt_quarter = variant;
-    if (dt_same && n_same && !rate_same) d.rates.push_back(variant);
-    if (dt_same && rate_same && s.spheres > ref.spheres && (d.larger.empty() || s.spheres > d.settings.at(d.larger).spheres)) d.larger = variant;
+    const bool prep_same = same(s.prep_dt, ref.prep_dt), prep_with_test = same(s.prep_dt, s.dt);
+    if (rate_same && n_same && prep_same && same(s.dt, ref.dt / 2)) d.dt_half = variant;
+    if (rate_same && n_same && prep_same && same(s.dt, ref.dt / 4)) d.dt_quarter = variant;
+    if (rate_same && n_same && prep_with_test && same(s.dt, ref.dt / 2)) d.both_half = variant;
+    if (rate_same && n_same && prep_with_test && same(s.dt, ref.dt / 4)) d.both_quarter = variant;
+    if (dt_same && prep_same && n_same && !rate_same) d.rates.push_back(variant);
+    if (dt_same && prep_same && rate_same && !n_same) d.sizes.push_back(variant);
   }
   for (const auto& [name, heading] : headline()) {
     const PerSeed paper = values(runs, reference, name);
@@ -154,15 +174,33 @@ DensityBudget analyse(const std::string& density, const Runs& runs, const std::s
     Budget b;
     b.quantity = name;
     b.paper = validation::mean_of(list(paper));
-    b.time_step = validation::time_step_error(paper, values(runs, d.dt_half, name), values(runs, d.dt_quarter, name));
+    const PerSeed both_half = values(runs, d.both_half, name), both_quarter = values(runs, d.both_quarter, name);
+    if (of_preparation(name)) {
+      b.time_step = {{0, 0}, "the prepared sample's: the test's step does not touch it", false};
+      b.preparation_step = validation::time_step_error(paper, both_half, both_quarter);
+    } else if (d.dt_quarter.empty()) {
+      b.time_step = not_run("the test's step alone not run");
+      b.preparation_step = validation::time_step_error(paper, both_half, both_quarter);
+      b.preparation_step.how = "preparation and test together: " + b.preparation_step.how;
+    } else {
+      b.time_step = validation::time_step_error(paper, values(runs, d.dt_half, name), values(runs, d.dt_quarter, name));
+      if (d.both_quarter.empty()) {
+        b.preparation_step = not_run("no preparation at the finest step");
+      } else {
+        // The same seeds prepared at the paper's step and at the finest, both sheared at the finest.
+        b.preparation_step = validation::paired_difference(values(runs, d.dt_quarter, name), both_quarter);
+        b.preparation_step.how = "the same seeds prepared at " + d.dt_quarter + "'s and " + d.both_quarter + "'s step: finest step";
+      }
+    }
     std::map<double, PerSeed> by_rate = {{ref.rate, paper}};
     for (const std::string& v : d.rates) by_rate[d.settings.at(v).rate] = values(runs, v, name);
     b.rate = validation::rate_error(by_rate, ref.rate);
-    b.size = d.larger.empty() ? validation::FactorError{{nan, nan}, "no larger sample ran", false}
-                              : validation::size_error(paper, ref.spheres, values(runs, d.larger, name), d.settings.at(d.larger).spheres);
+    std::map<long, PerSeed> by_size = {{ref.spheres, paper}};
+    for (const std::string& v : d.sizes) by_size[d.settings.at(v).spheres] = values(runs, v, name);
+    b.size = d.sizes.empty() ? not_run("no other size ran") : validation::size_error(by_size, ref.spheres);
     b.sd_one = validation::sd_of(list(paper));
     b.sd_mean = b.sd_one / std::sqrt(paper_samples);
-    b.converged = validation::converged_value(b.paper, b.time_step, b.rate, b.size);
+    b.converged = validation::converged_value(b.paper, {&b.time_step, &b.preparation_step, &b.rate, &b.size});
     d.budgets.push_back(b);
   }
   return d;
@@ -199,14 +237,41 @@ std::string settings_text(const Setting& s) {
   return buf;
 }
 
-// The paragraph on the paper study's inconsistent rows: is each miss larger than the budget?
-std::string verdict_reading(const std::vector<DensityBudget>& all, const std::string& validation_json) {
-  // A row's quantity -> the budget's quantity and the factor to the row's units.
+// The factors of a budget in the table's order, with their names.
+std::vector<std::pair<std::string, const validation::FactorError*>> factors_of(const Budget& b) {
+  return {{"Δt of the test", &b.time_step}, {"Δt of the preparation", &b.preparation_step}, {"rate", &b.rate}, {"size", &b.size}};
+}
+
+// A row of the paper study's validation.json and the budget of its quantity at its density, if
+// this study measured it: the factor from the budget's units to the row's, and whether cycles 1–2
+// of Test 1 stand for the row's cycles.
+struct RowBudget {
+  const Budget* budget = nullptr;
+  double scale = 1;
+  bool proxy = false;
+};
+
+RowBudget budget_of_row(const nlohmann::json& row, const std::vector<DensityBudget>& all) {
+  // A row's quantity -> the budget's quantity and the factor to the row's units (εv: a fraction in
+  // the summary, % in the rows).
   static const std::map<std::string, std::pair<std::string, double>> maps = {
       {"qp_strong_fabric_slope", {"qp_slope", 1}}, {"void_ratio_after_preparation", {"e0", 1}},
       {"coordination_after_preparation", {"coordination", 1}}, {"ev_growth", {"ev_growth_1_2", 100}},
-      {"cn_change", {"cn_change_1_2", 1}}};
-  const nlohmann::json j = validation::read_json_file(validation_json);
+      {"ev_growth_magnitude", {"ev_growth_1_2", 100}}, {"cn_change", {"cn_change_1_2", 1}},
+      {"cn_change_magnitude", {"cn_change_1_2", 1}}};
+  const std::string quantity = row.at("quantity").get<std::string>(), density = row.value("density", "");
+  RowBudget r;
+  if (!maps.count(quantity)) return r;
+  for (const DensityBudget& d : all)
+    if (d.density == density)
+      for (const Budget& x : d.budgets)
+        if (x.quantity == maps.at(quantity).first) r.budget = &x, r.scale = maps.at(quantity).second;
+  r.proxy = maps.at(quantity).first.find("_1_2") != std::string::npos;
+  return r;
+}
+
+// The paragraph on the paper study's inconsistent rows: is each miss larger than the budget?
+std::string verdict_reading(const std::vector<DensityBudget>& all, const nlohmann::json& j, const std::string& validation_json) {
   std::ostringstream md;
   validation::MarkdownTable t({"inconsistent row", "miss (ours to paper)", "budget of the settings (far end)", "reading"});
   int n = 0;
@@ -219,37 +284,72 @@ std::string verdict_reading(const std::vector<DensityBudget>& all, const std::st
     const validation::Region region =
         validation::paper_region(row.at("check").get<std::string>(), row.at("reference").get<double>(), row.value("tolerance", 0.0));
     const double miss = region.contains(mean) ? 0 : std::min(std::abs(mean - region.low), std::abs(mean - region.high));
-    const Budget* b = nullptr;
-    double scale = 1;
-    for (const DensityBudget& d : all)
-      if (d.density == density && maps.count(quantity))
-        for (const Budget& x : d.budgets)
-          if (x.quantity == maps.at(quantity).first) b = &x, scale = maps.at(quantity).second;
-    if (!b) {
+    const RowBudget rb = budget_of_row(row, all);
+    if (!rb.budget) {
       const bool ran = std::any_of(all.begin(), all.end(), [&](const DensityBudget& d) { return d.density == density; });
       t.row({name, number(miss), "—", !ran ? "not covered: this study did not run the " + density + " density"
-                                      : maps.count(quantity) ? "not covered: not measured here (e.g. fewer than two cycles)"
-                                                             : "not covered: the study has no such quantity (one test)"});
+                                      : "not covered: the study has no such quantity (one test, two cycles)"});
       continue;
     }
     double point = 0, far = 0;  // the errors' sum as estimated, and with each at the far end of its interval
-    for (const validation::FactorError* f : {&b->time_step, &b->rate, &b->size})
+    for (const auto& [factor, f] : factors_of(*rb.budget))
       if (std::isfinite(f->error.value)) {
         point += std::abs(f->error.value);
         far += std::abs(f->error.value) + (std::isfinite(f->error.half_width) ? f->error.half_width : 0);
       }
-    point *= scale, far *= scale;
-    const bool proxy = quantity == "ev_growth" || quantity == "cn_change";
+    point *= rb.scale, far *= rb.scale;
     std::string reading = miss > far     ? "larger than the budget: not the settings' error"
                           : miss <= point ? "within the budget: no evidence against the reproduction"
                                           : "beyond the estimated errors, within their intervals: these samples cannot tell";
-    if (proxy) reading += " (cycles 1–2 of Test 1 stand for the row's 1–5)";
+    if (rb.proxy) reading += " (cycles 1–2 of Test 1 stand for the row's 1–5)";
     t.row({name, number(miss), number(point) + " (≤ " + number(far) + ")", reading});
   }
   if (n == 0) return "";
   md << "\nThe paper study's inconsistent rows (`" << validation::shown_path(validation_json) << "`) against the budget: the miss is the distance "
-        "from our ensemble's mean to the paper's region; the budget the sum of the paper's settings' time-step, rate and size "
-        "errors as estimated (and with each at the far end of its interval), in the row's units.\n\n"
+        "from our ensemble's mean to the paper's region; the budget the sum of the paper's settings' errors in the test's and the "
+        "preparation's time step, the rate and the size as estimated (and with each at the far end of its interval), in the row's units.\n\n"
+     << t.text();
+  return md.str();
+}
+
+// Is each factor's error known well enough to judge the rows it serves? Every row of the paper
+// study whose quantity the budget measures: its scale (the tolerance, or for a one-sided row the
+// threshold's distance from zero), the widest half-width of the four factors in the row's units,
+// and for each factor wider than the scale the samples that would bring it within.
+std::string precision_table(const std::vector<DensityBudget>& all, const nlohmann::json& j) {
+  validation::MarkdownTable t({"row", "scale", "widest 95 % half-width", "of", "within", "samples it would need"});
+  int rows = 0, within = 0;
+  for (const auto& row : j.at("rows")) {
+    const RowBudget rb = budget_of_row(row, all);
+    if (!rb.budget) continue;
+    const double tol = row.value("tolerance", 0.0) > 0 ? row.value("tolerance", 0.0) : std::abs(row.at("reference").get<double>());
+    if (!(tol > 0)) continue;
+    double widest = 0;
+    std::string of, needs;
+    bool known = true;
+    for (const auto& [factor, f] : factors_of(*rb.budget)) {
+      if (!std::isfinite(f->error.value)) continue;
+      const double hw = f->error.half_width * rb.scale;
+      if (!std::isfinite(hw)) known = false;
+      else if (hw > widest) widest = hw, of = factor;
+      if (!(hw <= tol)) {
+        const long n = validation::samples_needed(*f, tol / rb.scale);
+        needs += (needs.empty() ? "" : "; ") + factor + ": " +
+                 (n < 0 ? std::string("cannot say") : std::to_string(n) + (f->across_sizes ? " samples over the sizes (today " +
+                                                                             std::to_string(f->samples) + ")" : " per setting (today " +
+                                                                             std::to_string(f->samples) + ")"));
+      }
+    }
+    const bool ok = known && widest <= tol;
+    ++rows, within += ok;
+    t.row({row.at("name").get<std::string>() + (rb.proxy ? " (cycles 1–2)" : ""), number(tol), known ? number(widest) : "—", of,
+           ok ? "yes" : "no", needs.empty() ? "—" : needs});
+  }
+  if (rows == 0) return "";
+  std::ostringstream md;
+  md << "\nIs each factor's error known to within the rows it serves? For each row of the paper study that the budget measures: "
+        "the row's tolerance (for a one-sided row, its threshold's distance from zero), the widest 95 % half-width of the four "
+        "factors in the row's units, and the samples a wider factor would need. " << within << " of " << rows << " rows within.\n\n"
      << t.text();
   return md.str();
 }
@@ -270,8 +370,15 @@ int write_section(const ConvergenceSummary& s, const std::string& out, const std
     }
     all.push_back(analyse(d, runs, reference));
   }
-  double core_s = 0;
-  for (const ConvergenceRun& r : s.runs) core_s += r.core_s;
+  // A preparation several settings share ran once: counted once where the runs record its part.
+  double core_s = 0, shared_s = 0;
+  std::set<std::string> preparations;
+  for (const ConvergenceRun& r : s.runs) {
+    core_s += r.core_s;
+    char key[160];
+    std::snprintf(key, sizeof key, "%s/%d/%ld/%.6g", r.density.c_str(), r.seed, r.spheres, r.preparation_time_step_s);
+    if (std::isfinite(r.preparation_core_s) && !preparations.insert(key).second) shared_s += r.preparation_core_s;
+  }
   std::ostringstream md;
   std::set<std::string> variants;
   for (const ConvergenceRun& r : s.runs) variants.insert(r.variant);
@@ -279,7 +386,8 @@ int write_section(const ConvergenceSummary& s, const std::string& out, const std
      << densities.size() << " densities, engine `" << s.engine
      << "`, baseline `" << s.baseline << "`, summarised " << s.date << " from `" << s.results << "`; "
      << std::lround(core_s / 60) << " core-minutes summed over the settings' samples (a preparation several settings share counted with "
-        "each; " << s.threads << " thread per run).\n";
+        "each; " << s.threads << " thread per run), " << std::lround((core_s - shared_s) / 60)
+     << " with each shared preparation counted once where its runs record it.\n";
   std::string errors_dat = "# density\tvariant\tcore_s\tlargest_relative_error\thalf_width\tpareto\tquantity\n", front_dat = errors_dat;
   for (const DensityBudget& d : all) {
     const Runs& runs = by_density.at(d.density);
@@ -288,25 +396,51 @@ int write_section(const ConvergenceSummary& s, const std::string& out, const std
        << " samples)\n\nEach factor's error is the paper's settings' value minus the converged value in that factor, in % of the "
           "converged value, with its 95 % interval; one sample and mean of " << paper_samples
        << " are the scatter between samples (sd, and sd/√" << paper_samples << ").\n\n";
-    validation::MarkdownTable t({"quantity", "paper's settings", "Δt", "rate", "size", "one sample", "mean of 5", "converged"});
+    validation::MarkdownTable t({"quantity", "paper's settings", "Δt of the test", "Δt of the preparation", "rate", "size", "one sample",
+                                 "mean of 5", "converged"});
+    validation::MarkdownTable pairs({"quantity", "Δt of the test", "Δt of the preparation", "rate"});
     std::map<std::string, std::vector<std::string>> hows;  // "factor: how" -> quantities
+    std::vector<std::string> unhelped;                      // "quantity (factor)" where the pairs decorrelated
     for (const Budget& b : d.budgets) {
       const double c = b.converged.value;
       t.row({heading_of(b.quantity), number(b.paper.value) + " ± " + number(b.paper.half_width), signed_percent(b.time_step.error, c),
-             signed_percent(b.rate.error, c), signed_percent(b.size.error, c), unsigned_percent({b.sd_one, nan}, c),
-             unsigned_percent({b.sd_mean, nan}, c), number(c) + " ± " + number(b.converged.half_width)});
-      hows["Δt: " + b.time_step.how].push_back(heading_of(b.quantity));
+             signed_percent(b.preparation_step.error, c), signed_percent(b.rate.error, c), signed_percent(b.size.error, c),
+             unsigned_percent({b.sd_one, nan}, c), unsigned_percent({b.sd_mean, nan}, c),
+             number(c) + " ± " + number(b.converged.half_width)});
+      std::vector<std::string> r;
+      for (const auto& [factor, f] : factors_of(b)) {
+        if (f == &b.size) continue;
+        r.push_back(std::isfinite(f->correlation) ? fixed2(f->correlation) : "—");
+        if (std::isfinite(f->correlation) && f->correlation < decorrelated_below) unhelped.push_back(heading_of(b.quantity) + " (" + factor + ")");
+      }
+      pairs.row({heading_of(b.quantity), r[0], r[1], r[2]});
+      hows["Δt of the test: " + b.time_step.how].push_back(heading_of(b.quantity));
+      hows["Δt of the preparation: " + b.preparation_step.how].push_back(heading_of(b.quantity));
       hows["rate: " + b.rate.how].push_back(heading_of(b.quantity));
       hows["size: " + b.size.how].push_back(heading_of(b.quantity));
     }
-    md << t.text() << "\nHow each factor was taken to its limit (Δt: " << (d.dt_half.empty() ? "—" : d.dt_half) << ", "
-       << (d.dt_quarter.empty() ? "—" : d.dt_quarter) << "; rates: " << d.rates.size() + 1 << "; size: "
-       << (d.larger.empty() ? "—" : d.larger) << "):\n\n";
+    std::string sizes;
+    for (const std::string& v : d.sizes) sizes += (sizes.empty() ? "" : ", ") + v;
+    md << t.text() << "\nHow each factor was taken to its limit (Δt of the test: " << (d.dt_half.empty() ? "—" : d.dt_half) << ", "
+       << (d.dt_quarter.empty() ? "—" : d.dt_quarter) << "; of the preparation: " << (d.both_half.empty() ? "—" : d.both_half) << ", "
+       << (d.both_quarter.empty() ? "—" : d.both_quarter) << "; rates: " << d.rates.size() + 1 << "; sizes: "
+       << (sizes.empty() ? "—" : sizes) << "):\n\n";
     for (const auto& [how, qs] : hows) {
       md << "- " << how << ": ";
       for (std::size_t k = 0; k < qs.size(); ++k) md << (k ? ", " : "") << qs[k];
       md << "\n";
     }
+    md << "\nHow well the pairs held: the correlation over the samples of the paper's setting's values with the other "
+          "setting's (Δt of the test: the finest step on the same prepared samples; of the preparation: the same seeds prepared at "
+          "the paper's and the finest step; rate: the slowest rate on the same prepared samples). Near 1 the pairs cancel the "
+          "samples' scatter; below " << fixed2(decorrelated_below) << " pairing did not help";
+    if (unhelped.empty()) md << " (no quantity here).\n\n";
+    else {
+      md << ": ";
+      for (std::size_t k = 0; k < unhelped.size(); ++k) md << (k ? ", " : "") << unhelped[k];
+      md << ".\n\n";
+    }
+    md << pairs.text();
     // Every setting against the converged values.
     std::vector<std::string> names, quantities;
     for (const Budget& b : d.budgets)
@@ -364,7 +498,10 @@ int write_section(const ConvergenceSummary& s, const std::string& out, const std
          << (sure ? ", the whole interval within" : ", its interval reaching beyond") << ").\n";
     }
   }
-  if (!validation_json.empty()) md << verdict_reading(all, validation_json);
+  if (!validation_json.empty()) {
+    const nlohmann::json j = validation::read_json_file(validation_json);
+    md << precision_table(all, j) << verdict_reading(all, j, validation_json);
+  }
   try {
     dem::write_file_atomically((fs::path(out) / "errors.dat").string(), errors_dat);
     dem::write_file_atomically((fs::path(out) / "front.dat").string(), front_dat);

@@ -97,13 +97,16 @@ ConvergenceSummary summarise_convergence(const compare_runs::Manifest& manifest,
           if (r.status.empty()) r.status = l.run + (stop.exit_code ? ": " + stop.message : " not complete");
           continue;
         }
-        wall += compare_runs::wall_time(file);
+        const double w = compare_runs::wall_time(file);
+        wall += w;
+        if (l.test == "-") r.preparation_core_s = w * threads;
         r.engine = string_attribute(file, "software_version");
         const compare_runs::RunFile run = compare_runs::read_run(file);
         if (l.test == "-") {
           DensityResults d;
           load_preparation(file, d);
           sample = d.sample;
+          if (run.scene) r.preparation_time_step_s = run.scene->time_step_s;
           if (variant == manifest.variants.front() && s.baseline.empty()) s.baseline = baseline_of_result(file);
         } else {
           tests.push_back({l.test, load_test(file, l.test)});
@@ -163,7 +166,7 @@ std::string summary_json(const ConvergenceSummary& s) {
     json q = json::object();
     for (const auto& [name, v] : r.quantities) q[name] = number(v);
     runs.push_back({{"variant", r.variant}, {"density", r.density}, {"seed", r.seed}, {"time_step_s", number(r.time_step_s)},
-                    {"rate_Pa_s", number(r.rate_Pa_s)}, {"spheres", r.spheres}, {"core_s", number(r.core_s)},
+                    {"preparation_time_step_s", number(r.preparation_time_step_s)}, {"rate_Pa_s", number(r.rate_Pa_s)}, {"spheres", r.spheres}, {"core_s", number(r.core_s)}, {"preparation_core_s", number(r.preparation_core_s)},
                     {"status", r.status}, {"engine", r.engine}, {"quantities", q}});
   }
   j["runs"] = runs;
@@ -180,7 +183,10 @@ ConvergenceSummary read_convergence_summary(const std::string& file) {
   ConvergenceSummary s;
   try {
     s.schema = need(j, "schema", "the file").get<int>();
-    if (s.schema != 1) throw std::runtime_error(file + ": convergence summary schema " + std::to_string(s.schema) + ", this tool reads 1");
+    if (s.schema != 1 && s.schema != 2)
+      throw std::runtime_error(file + ": convergence summary schema " + std::to_string(s.schema) + ", this tool reads 1 and 2");
+    const int read_schema = s.schema;
+    s.schema = ConvergenceSummary{}.schema;  // written back in this tool's schema
     s.results = need(j, "results", "the file").get<std::string>();
     s.engine = need(j, "engine", "the file").get<std::string>();
     s.baseline = need(j, "baseline", "the file").get<std::string>();
@@ -199,9 +205,13 @@ ConvergenceSummary read_convergence_summary(const std::string& file) {
       r.density = need(e, "density", where).get<std::string>();
       r.seed = need(e, "seed", where).get<int>();
       r.time_step_s = need(e, "time_step_s", where).get<double>();
+      // Schema 1's variants set one time step for the preparation and the test.
+      r.preparation_time_step_s = read_schema == 1 ? r.time_step_s : need(e, "preparation_time_step_s", where).get<double>();
       r.rate_Pa_s = need(e, "rate_Pa_s", where).get<double>();
       r.spheres = need(e, "spheres", where).get<long>();
       r.core_s = need(e, "core_s", where).get<double>();
+      if (e.contains("preparation_core_s") && !e.at("preparation_core_s").is_null())  // absent or null: not recorded
+        r.preparation_core_s = e.at("preparation_core_s").get<double>();
       r.status = need(e, "status", where).get<std::string>();
       r.engine = need(e, "engine", where).get<std::string>();
       for (const auto& [name, v] : need(e, "quantities", where).items())

@@ -3,6 +3,7 @@
 // settings, cost and headline quantities, stamped with the engine and baseline that made them, so
 // that its section is re-drawn, and re-judged, without the results (a study of hours is not run
 // again in every session).
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -16,15 +17,17 @@ struct ConvergenceRun {
   std::string variant, density;
   int seed = 0;
   double time_step_s = 0, rate_Pa_s = 0;  // the test's time step and stress rate
+  double preparation_time_step_s = 0;     // the preparation's time step (the test's may differ)
   long spheres = 0;
   double core_s = 0;                      // (preparation + test) wall time x threads per run
+  double preparation_core_s = std::numeric_limits<double>::quiet_NaN();  // of it, the preparation's (NaN: not recorded, schema 1)
   std::map<std::string, double> quantities;
   std::string status;                     // empty: both runs complete; else why not
   std::string engine;                     // software_version of its results
 };
 
 struct ConvergenceSummary {
-  int schema = 1;
+  int schema = 2;         // 2: runs record the preparation's time step (1: it was the test's)
   std::string results;    // the results folder it was read from, relative
   std::string engine;     // the runs' software versions, with their counts when several
   std::string engine_source;      // the engine source every result was checked to be made by (study/stamp.hpp; "": not checked)

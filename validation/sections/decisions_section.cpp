@@ -183,9 +183,9 @@ std::string group_sections(const std::vector<std::string>& groups, const std::ve
 }
 
 // The size check: the baseline of this study against the paper study's ensemble (its own sample
-// size), row by row, in units of the paper ensemble's standard deviation.
+// size), row by row, in units of max(the paper ensemble's standard deviation, the row's resolution).
 std::string size_check(const std::vector<RowDecision>& decided, std::size_t samples) {
-  validation::MarkdownTable table({"row", "paper study: mean ± sd", "this study's baseline: mean ± sd", "difference / sd", "verdicts"});
+  validation::MarkdownTable table({"row", "paper study: mean ± sd", "this study's baseline: mean ± sd", "difference / max(sd, resolution)", "verdicts"});
   for (const RowDecision& d : decided) {
     const RowResult& big = *d.full;
     std::string diff = "—";
@@ -196,7 +196,8 @@ std::string size_check(const std::vector<RowDecision>& decided, std::size_t samp
   }
   return "\n### Size check: this study's baseline against the paper study's ensemble\n\n"
          "The same rows on the paper study's samples (" + std::to_string(samples) + " per density, its size) and on this study's "
-         "baseline; the difference of the means in units of the paper ensemble's standard deviation, and both verdicts. "
+         "baseline; the difference of the means in units of the paper ensemble's standard deviation, or of the row's resolution "
+         "where that is larger (a scatter below it says nothing), and both verdicts. "
          "A reading's shift is trusted at this study's size where the two agree.\n\n" + table.text();
 }
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <sstream>
 #include <string>
@@ -98,6 +99,17 @@ inline std::string significant(double x, int digits = 2) {
   std::string s = buf;
   if (s.find_first_not_of("-0.") == std::string::npos && s[0] == '-') s.erase(0, 1);  // "-0.00" -> "0.00"
   return s;
+}
+
+// A bound above x >= 0 to `digits` significant digits, rounded up so that "below" it stays true
+// of x itself (0.0001237 -> "0.00013", where significant() gives "0.00012", which x exceeds).
+inline std::string significant_upper_bound(double x, int digits = 2) {
+  if (!std::isfinite(x) || x < 0) return significant(x, digits);
+  if (x == 0) return "0";
+  const double unit = std::pow(10.0, std::floor(std::log10(x)) - digits + 1);
+  double up = std::ceil(x / unit) * unit;
+  if (std::strtod(significant(up, digits).c_str(), nullptr) <= x) up += unit;  // on a digit: "below" needs the next one
+  return significant(up, digits);
 }
 
 // The largest shift (in sd units) shown as it is; beyond it the tables and sentences say so and

@@ -67,8 +67,10 @@ TEST_CASE("report stamps: a stamp on the paper study's baseline is said under it
   const auto out = validation::stamp_sections(report_text(), dir, all_run(), paper, false);
   REQUIRE(out.refused.empty());
   REQUIRE(out.text.find("## Appendix: Stability\n\n*Made by engine `0.1.0+aaaa` on baseline `1111111111111111` (27 spheres, 1 sample, "
-                        "2026-11-20). Its baseline is its own scene's (`scenes/stability/base.yaml`), not the paper study's, by "
-                        "design.*\n\nbody of Appendix: Stability\n") != std::string::npos);
+                        "2026-11-20). Its baseline is the paper study's, though it may run a scene of its own "
+                        "(`scenes/stability/base.yaml`).*\n\nbody of Appendix: Stability\n") != std::string::npos);
+  // The sentence follows the stamp: never "not the paper study's" over the paper study's baseline.
+  REQUIRE(out.text.find("`1111111111111111` (27 spheres, 1 sample, 2026-11-20). Its baseline is its own scene's") == std::string::npos);
   REQUIRE(out.text.find("## Appendix: What the paper's open choices change\n\n*Made by engine `0.1.0+aaaa` on baseline "
                         "`1111111111111111` (1,000 spheres, 3 samples, 2026-11-02).*\n") != std::string::npos);
   REQUIRE(out.text.find("⚠") == std::string::npos);

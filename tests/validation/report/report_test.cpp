@@ -186,6 +186,11 @@ TEST_CASE("report: digits from the scatter", "[report][format]") {
   CHECK(significant(1.02, 2) == "1.0");
   CHECK(significant(0.0996, 2) == "0.10");
   CHECK(significant(123.4, 2) == "120");
+  // A bound "below" which the value stays: rounded up, never to a number the value exceeds.
+  CHECK(significant_upper_bound(0.0001237, 2) == "0.00013");  // significant() gives 0.00012 < 0.0001237
+  CHECK(significant_upper_bound(0.00012, 2) == "0.00013");    // on a digit: strictly above it
+  CHECK(significant_upper_bound(0.0996, 2) == "0.10");
+  CHECK(significant_upper_bound(0, 2) == "0");
   CHECK(range_text(0.2614, 0.8743) == "0.26–0.87");
   CHECK(range_text(0.00012, 0.00016) == "0.00012–0.00016");
 }

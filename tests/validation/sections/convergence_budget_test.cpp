@@ -67,20 +67,75 @@ TEST_CASE("rate: the line to rate 0 over the paper's rate and slower ones", "[co
   CHECK(std::isnan(rate_error({{2.0, {{1, 1.0}}}}, 2.0).error.value));  // one rate: no line
 }
 
-TEST_CASE("size: the two sizes' means taken to 1/N -> 0", "[convergence]") {
+TEST_CASE("size: two sizes' means taken to 1/N -> 0, the scatter pooled over the sizes", "[convergence]") {
   // Q(N) = Q* + k/N: m0 - m1 = k (1/N0 - 1/N1), and the error at N0 is k/N0 = (m0 - m1) / (1 - N0/N1).
-  const FactorError f = size_error({{1, 1.0}, {2, 1.1}, {3, 0.9}}, 8000, {{1, 0.9}, {2, 1.0}, {3, 0.8}}, 27000);
+  const FactorError f = size_error({{8000, {{1, 1.0}, {2, 1.1}, {3, 0.9}}}, {27000, {{1, 0.9}, {2, 1.0}, {3, 0.8}}}}, 8000);
   CHECK(f.error.value == Approx(0.1 * 27.0 / 19.0).epsilon(1e-9));
-  // Welch: se = sqrt(0.1^2/3 + 0.1^2/3), t with 2 dof, scaled alike.
-  CHECK(f.error.half_width == Approx(4.302652729 * std::sqrt(0.02 / 3) * 27.0 / 19.0).epsilon(1e-6));
-  CHECK(std::isnan(size_error({{1, 1.0}}, 8000, {}, 27000).error.value));
+  // Two points: the line passes through both means, so var(error) = (var m0 + var m1) / (1 - N0/N1)^2,
+  // var m_i = s^2 (N0/N_i) / n_i, with s^2 pooled at the paper's size: each size's sd is 0.1 on 2 dof,
+  // scaled by N_i/N0: s^2 = (0.01 * 2 + 0.01 * 27/8 * 2) / 4; t with the pooled 4 dof.
+  const double s2 = (0.02 + 0.02 * 27.0 / 8.0) / 4;
+  const double se = std::sqrt(s2 / 3 + s2 * (8.0 / 27.0) / 3) * 27.0 / 19.0;
+  CHECK(f.error.half_width == Approx(2.776445105 * se).epsilon(1e-6));
+  CHECK(f.across_sizes);
+  CHECK(f.how.find("two: the 1/N form assumed") != std::string::npos);
+  CHECK(std::isnan(size_error({{8000, {{1, 1.0}}}}, 8000).error.value));                       // one size
+  CHECK(std::isnan(size_error({{8000, {{1, 1.0}}}, {27000, {{1, 2.0}}}}, 8000).error.value));  // no scatter to weigh by
+}
+
+TEST_CASE("size: four sizes on the 1/N line give its error exactly, and the means about it are tested", "[convergence]") {
+  // Q_s(N) = 0.6 + 40/N + o_s, o_s = +-0.01 sqrt(8000/N) (a scatter that shrinks as 1/sqrt(N)):
+  // every size's mean is on the line, chi^2 = 0, and the error at 8,000 is 40/8000 = 0.005.
+  std::map<long, PerSeed> by_size;
+  for (long n : {1000L, 3375L, 8000L, 27000L}) {
+    const double o = 0.01 * std::sqrt(8000.0 / n);
+    by_size[n] = {{1, 0.6 + 40.0 / n + o}, {2, 0.6 + 40.0 / n - o}};
+  }
+  const FactorError f = size_error(by_size, 8000);
+  CHECK(f.error.value == Approx(0.005).epsilon(1e-9));
+  CHECK(f.how.find("χ²/dof 0.00") != std::string::npos);
+  CHECK(f.sd == Approx(0.01 * std::sqrt(2.0)).epsilon(1e-9));  // each size: two values +-o, sd o sqrt 2, scaled to 8,000
+  // One size's mean 0.05 off the line (5 sds of that mean): chi^2/dof > 1, the interval widens by its root.
+  std::map<long, PerSeed> kinked = by_size;
+  for (auto& [seed, x] : kinked.at(3375)) x += 0.05;
+  const FactorError g = size_error(kinked, 8000);
+  CHECK(g.how.find("widened") != std::string::npos);
+  CHECK(g.error.half_width > f.error.half_width);
+}
+
+TEST_CASE("paired settings: the difference, its scatter and the pairs' correlation", "[convergence]") {
+  // b = a - 0.2 on every sample: the difference 0.2 with no scatter, the pairs perfectly correlated.
+  const PerSeed a = {{1, 1.0}, {2, 1.5}, {3, 0.7}}, b = {{1, 0.8}, {2, 1.3}, {3, 0.5}, {4, 9.0}};
+  const FactorError f = paired_difference(a, b);
+  CHECK(f.error.value == Approx(0.2));
+  CHECK(f.error.half_width == Approx(0).margin(1e-12));
+  CHECK(f.samples == 3);  // seed 4 has no pair
+  CHECK(f.correlation == Approx(1.0));
+  // Opposite orders: correlation -1 (computed by hand: x = 1, 2, 3 against y = 3, 2, 1).
+  CHECK(paired_correlation({{1, 1}, {2, 2}, {3, 3}}, {{1, 3}, {2, 2}, {3, 1}}) == Approx(-1.0));
+  CHECK(std::isnan(paired_correlation({{1, 1}, {2, 2}}, {{1, 3}, {2, 2}})));  // two pairs: no correlation said
+}
+
+TEST_CASE("samples needed: the smallest n whose t interval fits the tolerance", "[convergence]") {
+  FactorError f;
+  f.error = {0.5, 3.0};
+  f.samples = 3;
+  f.sd = 1.0;
+  // t(0.975, 5)/sqrt(6) = 2.5706/2.4495 = 1.049 > 1; t(0.975, 6)/sqrt(7) = 2.4469/2.6458 = 0.925 <= 1.
+  CHECK(samples_needed(f, 1.0) == 7);
+  CHECK(samples_needed(f, 3.0) == 0);  // today's interval is within
+  f.across_sizes = true;
+  f.samples = 20;
+  CHECK(samples_needed(f, 1.5) == 80);  // 20 (3/1.5)^2
 }
 
 TEST_CASE("the converged value: the factors' errors removed, intervals in quadrature", "[convergence]") {
-  const Estimate c = converged_value({1.0, 0.03}, {{0.1, 0.04}, "", true}, {{-0.2, 0.12}, "", true}, {{0, std::nan("")}, "", false});
+  const FactorError dt{{0.1, 0.04}, "", true}, rate{{-0.2, 0.12}, "", true}, no_interval{{0, std::nan("")}, "", false},
+      not_measured{{std::nan(""), std::nan("")}, "", false};
+  const Estimate c = converged_value({1.0, 0.03}, {&dt, &rate, &no_interval});
   CHECK(c.value == Approx(1.1));
   CHECK(std::isnan(c.half_width));  // a factor without an interval leaves none
-  const Estimate d = converged_value({1.0, 0.03}, {{0.1, 0.04}, "", true}, {{-0.2, 0.12}, "", true}, {{std::nan(""), std::nan("")}, "", false});
+  const Estimate d = converged_value({1.0, 0.03}, {&dt, &rate, &not_measured});
   CHECK(d.half_width == Approx(std::sqrt(0.03 * 0.03 + 0.04 * 0.04 + 0.12 * 0.12)));  // a factor not measured adds nothing
   const Estimate e = relative_error_to({1.05, 0.03}, {1.0, 0.04});
   CHECK(e.value == Approx(0.05));
@@ -134,11 +189,13 @@ TEST_CASE("compare-runs convergence --summary: the section from a summary made b
   // converged 0.702 (4 significant digits).
   CHECK(table.find("| e0 | 0.742 ± 0.002484 |") != std::string::npos);
   CHECK(table.find("| 0.702 ± ") != std::string::npos);
-  // Each factor's error in % of the converged value: 0.01/0.702, 0.02/0.702, 0.01/0.702. The time
-  // step's is the same on every sample (half-width 0); the rate's half-width is the distance to the
-  // line in sqrt(rate) through the same three points, 0.010607 (1.51 %); the size's is Welch's on
-  // two sds of 0.001, t(0.975, 2) sqrt(2e-6/3) 27/19 = 0.00499 (0.71 %).
-  CHECK(table.find("+1.42 ± 0.000 % | +2.85 ± 1.51 % | +1.42 ± 0.71 %") != std::string::npos);
+  // Each factor's error in % of the converged value: 0 (e0 is the prepared sample's: the test's step
+  // does not touch it), 0.01/0.702 (these variants change the preparation's and the test's step),
+  // 0.02/0.702, 0.01/0.702. The time step's is the same on every sample (half-width 0); the rate's
+  // half-width is the distance to the line in sqrt(rate) through the same three points, 0.010607
+  // (1.51 %); the size's comes from two sds of 0.001 pooled at 8,000 spheres (s^2 = (2e-6 + 2e-6
+  // 27/8) / 4), var = s^2/3 (1 + 8/27), times 27/19 and t(0.975, 4): 0.003836 (0.55 %).
+  CHECK(table.find("+0.000 ± 0.000 % | +1.42 ± 0.000 % | +2.85 ± 1.51 % | +1.42 ± 0.55 %") != std::string::npos);
   CHECK(table.find("Richardson, order 2 (observed 2.0)") != std::string::npos);
 
   // A file that is not a summary: exit 1, the message names the file and the key.
@@ -166,5 +223,56 @@ TEST_CASE("compare-runs convergence --summary: the section from a summary made b
   const std::string nowhere = bin + " convergence --summary " + (dir / "summary.json").string() + " " + dir.string() + " --draw " +
                               (dir / "no_such_folder").string() + " > " + (dir / "log").string() + " 2>&1";
   CHECK(WEXITSTATUS(std::system(nowhere.c_str())) == 2);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("compare-runs convergence: the test's step paired on the same samples, the preparation's apart", "[convergence][compare-runs]") {
+  // The q/p slope of sample s: 1.4 + 0.01 s + 0.002 (dt_test/1us)^2 + 0.004 (dt_prep/1us), and a
+  // preparation at another step is another packing: r_s = +0.001, -0.001, 0 added. The test's step
+  // alone (on the reference's samples) shrinks by 4 per halving: Richardson gives 0.002 on every
+  // sample (half-width 0, the pairs correlated 1). The preparation's: the same seeds prepared at 1
+  // and 0.25 us, sheared at 0.25 us, differ by 0.004 (1 - 0.25) - r_s: 0.003, half-width
+  // t(0.975, 2) 0.001 / sqrt 3 = 0.002484. Paper: 1.42 + 0.006; converged: 1.426 - 0.002 - 0.003 = 1.421.
+  const fs::path dir = fs::temp_directory_path() / ("convergence_paired_test_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const double r[4] = {0, 0.001, -0.001, 0};
+  std::ostringstream runs;
+  runs.precision(17);
+  const auto add = [&](const std::string& variant, double dt_test, double dt_prep, bool own_preparation) {
+    for (int s = 1; s <= 3; ++s) {
+      const double q = 1.4 + 0.01 * s + 0.002 * dt_test * dt_test + 0.004 * dt_prep + (own_preparation ? r[s] : 0);
+      runs << (runs.tellp() > 0 ? ",\n" : "") << R"({"variant": ")" << variant << R"(", "density": "dense", "seed": )" << s
+           << R"(, "time_step_s": )" << dt_test * 1e-6 << R"(, "preparation_time_step_s": )" << dt_prep * 1e-6
+           << R"(, "rate_Pa_s": 2e6, "spheres": 8000, "core_s": 100, "status": "", "engine": "E", "quantities": {"qp_slope": )" << q << "}}";
+    }
+  };
+  add("reference", 1, 1, false);
+  add("dt0p5_test", 0.5, 1, false);
+  add("dt0p25_test", 0.25, 1, false);
+  add("dt0p5", 0.5, 0.5, true);
+  add("dt0p25", 0.25, 0.25, true);
+  std::ofstream(dir / "summary.json") << R"({"schema": 2, "results": "r", "engine": "E", "baseline": "B", "date": "D", )"
+                                      << R"("threads_per_run": 1, "runs": [)" << runs.str() << "]}";
+  // The paper study's row on the slope: inconsistent (1.42 against 1 +- 0.25), tolerance 0.25.
+  std::ofstream(dir / "validation.json") << R"({"rows": [{"name": "slope, dense", "quantity": "qp_strong_fabric_slope", )"
+                                         << R"("density": "dense", "check": "within", "reference": 1.0, "tolerance": 0.25, )"
+                                         << R"("verdict": "inconsistent", "mean": 1.42}]})";
+  const std::string cmd = bin + " convergence --summary " + (dir / "summary.json").string() + " " + dir.string() + " --validation " +
+                          (dir / "validation.json").string() + " > " + (dir / "log").string() + " 2>&1";
+  const int rc = std::system(cmd.c_str());
+  INFO(read(dir / "log"));
+  REQUIRE(rc == 0);
+  const std::string table = read(dir / "table.md");
+  INFO(table);
+  // 0.002 / 1.421 = 0.14 %, 0.003 / 1.421 = 0.21 % +- 0.002484 / 1.421 = 0.17 %; rate and size not run.
+  CHECK_THAT(table, Catch::Contains("| q/p slope | 1.426 ± 0.02484 | +0.14 ± 0.000 % | +0.21 ± 0.17 % | — | — |"));
+  CHECK_THAT(table, Catch::Contains("Δt of the test: Richardson, order 2 (observed 2.0): q/p slope"));
+  CHECK_THAT(table, Catch::Contains("the same seeds prepared at dt0p25_test's and dt0p25's step: finest step: q/p slope"));
+  CHECK_THAT(table, Catch::Contains("| q/p slope | 1.00 |"));  // the test's step: the pairs correlated 1
+  // The precision table: the widest half-width 0.002484 (the preparation's) within 0.25; the miss,
+  // 1.42 - 1.25 = 0.17, beyond the budget's far end 0.002 + 0.003 + 0.002484.
+  CHECK_THAT(table, Catch::Contains("| slope, dense | 0.25 | 0.002484 | Δt of the preparation | yes | — |"));
+  CHECK_THAT(table, Catch::Contains("| slope, dense | 0.17 | 0.005 (≤ 0.007484) | larger than the budget"));
   fs::remove_all(dir);
 }
