@@ -18,6 +18,7 @@
 
 #include "calibrate.hpp"
 #include "config/yaml_section.hpp"
+#include "exec/scheduler.hpp"
 #include "io/atomic_file.hpp"
 #include "io/failure.hpp"
 #include "posterior_report.hpp"
@@ -167,6 +168,11 @@ int calibrate(int argc, char** argv) {
       truth_values[p.name] = t["parameters"][p.name].get<double>();
     }
   }
+  // One calibration at a time in a report folder, from its first run to its last report.
+  std::unique_ptr<dem::FileLock> lock;
+  if (!o.plan_only)
+    lock = pipeline::lock_folder(c.report, ".calibrate.lock", "calibrate",
+                                 "two would each write its ledger of scored sets and its posterior, and one would be lost");
   o.after_iteration = [&](const calibration::Outcome& so_far) {
     calibration::write_report(so_far, {});
     std::printf("[calibrate] the posterior so far in %s/posterior.json\n", c.report.c_str());

@@ -1,0 +1,75 @@
+// The calibrate tool against hostile input, end to end on 64-sphere samples: what it refuses
+// before anything runs, what it keeps, and what it never reports as a result.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/io/io_test_support.hpp"
+#include "io/file_lock.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string bin = std::string(DEM_BINARY_DIR) + "/bin/";
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// A folder with a one-density, one-test study of 64 spheres (`seeds` samples), a calibration of
+// the test's friction (`extra`: more calibration keys) and the reference file `refs`.
+fs::path tiny(const std::string& name, int seeds, const std::string& refs, const std::string& extra = "") {
+  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string src = DEM_SOURCE_DIR;
+  std::ofstream(dir / "study.yaml") << "name: tiny\noutput: results\npreparation: " << src << "/scenes/prepare_dense.yaml\n"
+                                    << "densities: [{name: dense, friction: 0.0}]\n"
+                                    << "tests: [{name: triaxial, scene: " << src << "/scenes/tests/triaxial_drained.yaml, "
+                                    << "set: {\"stages[1].until.strain\": 0.002}}]\n"
+                                    << "profiles: {quick: {lattice: 4, seeds: " << seeds << "}}\n";
+  std::ofstream(dir / "refs.yaml") << refs;
+  std::ofstream(dir / "cal.yaml") << "name: tiny\nstudy: study.yaml\nreferences: refs.yaml\nreport: report\n"
+                                  << "parameters: [{name: friction, keys: material.friction, uniform: [0.1, 0.9]}]\n"
+                                  << "batch: 2\nmin_iterations: 1\nmax_iterations: 1\n"
+                                  << extra;
+  return dir;
+}
+
+dem::test::CommandResult calibrate(const fs::path& dir, const std::string& args = "") {
+  return dem::test::run_command("cd '" + dir.string() + "' && '" + bin + "calibrate' cal.yaml -j 1 --threads 1 " + args + " 2>&1");
+}
+
+}  // namespace
+
+TEST_CASE("calibrate: two calibrations on one report folder at once: the second is refused before it runs anything", "[calibration][cli]") {
+  const fs::path dir = tiny("calibrate_locked", 1, "source: typed\ncurves: [{name: qp, file: c.csv, x: strain_3, y: q_over_p, "
+                                                   "density: dense, test: triaxial}]\n");
+  std::ofstream(dir / "c.csv") << "strain_3,q_over_p,sd\n0.001,0.5,0.1\n";
+  fs::create_directories(dir / "report");
+  std::ofstream(dir / "report" / "posterior.json") << "{\"kept\": true}\n";
+  {
+    // This process stands for a calibration that holds the folder (its lock, as calibrate takes it).
+    const dem::FileLock held((dir / "report" / ".calibrate.lock").string());
+    REQUIRE(held.held());
+    const auto r = calibrate(dir);
+    INFO(r.out);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.out, Catch::Contains("another calibrate is running in") && Catch::Contains("report") &&
+                          Catch::Contains("nothing was run"));
+    CHECK_FALSE(fs::exists(dir / "results"));  // no run planned, written or started
+    CHECK(read(dir / "report" / "posterior.json") == "{\"kept\": true}\n");
+    const auto plan = calibrate(dir, "--plan");  // --plan writes nothing: it needs no lock
+    INFO(plan.out);
+    CHECK(plan.exit_code == 0);
+  }
+  CHECK_FALSE(fs::exists(dir / "report" / ".calibrate.lock"));  // its holder removed it when it let go
+}
