@@ -13,6 +13,7 @@
 #include "ledger.hpp"
 #include "plan/plan_cost.hpp"
 #include "study/format.hpp"
+#include "study/series.hpp"
 #include "surrogate.hpp"
 
 namespace calibration {
@@ -324,7 +325,7 @@ void score_iteration(Loop& l, int it, const IterationPlan& p) {
       std::printf("[calibrate] set %s scored without %s\n", s.name.c_str(), left.c_str());
   }
   for (ParameterSet& s : out.sets)
-    if (s.iteration == it) s.log_likelihood = s.misfit.valued ? -0.5 * s.misfit.chi2 : -INFINITY;
+    if (s.iteration == it) s.log_likelihood = s.misfit.valued && !std::isnan(s.misfit.chi2) ? -0.5 * s.misfit.chi2 : -INFINITY;
   // The stamp: of the runs here when some ran, their date the latest of theirs and the ledger's.
   out.stamp = l.ledger.stamp;
   if (!p.to_run.empty()) try {
@@ -358,6 +359,25 @@ void keep_scores(Loop& l, const IterationPlan& p) {
   write_ledger(l.ledger_file, next);
 }
 
+// A posterior with no finite weight is no posterior: every set's likelihood is 0 (its chi^2
+// infinite) or not a number. Reported, the zeros would show a corner of the prior as the
+// posterior, sd 0, "identified": an error instead, naming a set's row whose chi^2 is not finite.
+void require_weight(const Outcome& out) {
+  const auto positive = [](const std::vector<double>& w) {
+    const double total = std::accumulate(w.begin(), w.end(), 0.0);
+    return std::isfinite(total) && total > 0;
+  };
+  if (positive(out.weights) && positive(out.posterior_w)) return;
+  std::string example;
+  for (const ParameterSet& s : out.sets)
+    for (const RowMisfit& m : s.misfit.rows)
+      if (example.empty() && m.valued && !std::isfinite(m.chi2))
+        example = " (set " + s.name + ": '" + m.name + "' has chi^2 " + validation::format_number(m.chi2) + ")";
+  throw dem::ConfigError("no parameter set has a finite weight: the chi^2 of every set scored is infinite or not a number" + example +
+                         ", so there is no posterior; check the sd and tolerances of " + out.references.file +
+                         " (a point or row whose sd and tolerance are 0 cannot be missed by any run); nothing was reported");
+}
+
 // Every set weighted again; the posterior: on a response surface fitted to the sets near it
 // (surrogate.hpp), when enough sets are scored; else the sets' own weights. The surface's region:
 // the Gaussian this iteration drew from (the first: one fitted to the best sets).
@@ -384,6 +404,7 @@ void weigh(Loop& l, int it) {
       out.region_sd = surface->scale * surface->radius;
     }
   }
+  require_weight(out);
 }
 
 // The first row of the last set that has no value, and why ("no rows" when it has none).

@@ -25,6 +25,30 @@ std::vector<std::string> split_csv(const std::string& line) {
   return out;
 }
 
+// A point's chi^2 divides its residual by the reference's variance, tolerance^2 + sd^2 / specimens
+// (plus the samples', which may be 0): that must be a positive, finite number that is not
+// subnormal (sd = 1e-300 squares to 0), and y over its square root must square to a finite
+// number (y = 1e300), or the point's chi^2 is infinite or not a number whatever the runs give, and
+// no set would weigh anything.
+void check_points(const dem::Section& c, const CurveRow& row) {
+  for (std::size_t k = 0; k < row.points.size(); ++k) {
+    const CurvePoint& p = row.points[k];
+    const double var = row.tolerance * row.tolerance + p.sd * p.sd / row.specimens;
+    std::string why;
+    if (var == 0 && p.sd == 0)
+      why = "has sd 0 and the curve's tolerance is 0: its misfit would divide by 0; give the point an sd > 0 or the curve a tolerance";
+    else if (!std::isnormal(var))
+      why = "has a variance (tolerance^2 + sd^2 / specimens) that underflows to 0 or overflows; give an sd or a tolerance between "
+            "about 1e-150 and 1e150, in y's unit";
+    else if (!std::isfinite(p.y * p.y / var))
+      why = "has a y so large against its sd and tolerance that its misfit would overflow; give y in the unit of the run's column";
+    if (why.empty()) continue;
+    std::ostringstream point;
+    point << "point " << k + 1 << " of " << row.file << " (x = " << p.x << ", y = " << p.y << ", sd = " << p.sd << ")";
+    c.fail("file", "curve '" + row.name + "': " + point.str() + " " + why);
+  }
+}
+
 }  // namespace
 
 std::vector<CurvePoint> read_curve_csv(const std::string& file) {
@@ -33,13 +57,13 @@ std::vector<CurvePoint> read_curve_csv(const std::string& file) {
   std::vector<CurvePoint> points;
   std::string line;
   int number = 0;
-  bool header = false;
+  std::size_t columns = 0;  // the header's: 2 or 3
   while (std::getline(in, line)) {
     ++number;
     if (line.empty() || line[0] == '#') continue;
     const std::vector<std::string> cells = split_csv(line);
-    if (!header) {  // the first line that is not a comment names the columns
-      header = true;
+    if (columns == 0) {  // the first line that is not a comment names the columns
+      columns = cells.size();
       if (cells.size() < 2 || cells.size() > 3)
         throw dem::ConfigError(file + ":" + std::to_string(number) + ": the header names " + std::to_string(cells.size()) +
                                " columns; a curve has 2 or 3: x, y and optionally sd");
@@ -53,9 +77,12 @@ std::vector<CurvePoint> read_curve_csv(const std::string& file) {
         throw dem::ConfigError(file + ":" + std::to_string(number) + ": column " + std::to_string(k + 1) + " is '" +
                                cells[k].substr(0, 40) + "', not a finite number" + (why.empty() ? "" : " (" + why + ")"));
     }
-    if (cells.size() < 2 || cells.size() > 3)
+    // Every row as many columns as the header: a point without its sd would weigh as if exact.
+    if (cells.size() != columns)
       throw dem::ConfigError(file + ":" + std::to_string(number) + ": " + std::to_string(cells.size()) +
-                             " columns where the header has 2 or 3");
+                             " columns where the header has " + std::to_string(columns) +
+                             (columns == 3 ? " (x, y, sd): give every point its sd" : " (x, y)"));
+
     if (p.sd < 0) throw dem::ConfigError(file + ":" + std::to_string(number) + ": sd is negative");
     points.push_back(p);
   }
@@ -83,6 +110,7 @@ References read_references(const std::string& file, const std::string& profile) 
     row.points = read_curve_csv(row.file);
     if (row.tolerance == 0 && std::all_of(row.points.begin(), row.points.end(), [](const CurvePoint& p) { return p.sd == 0; }))
       c.fail("tolerance", "is 0 and the curve has no sd column: give one of them (the misfit divides by it)");
+    check_points(c, row);
     r.curves.push_back(std::move(row));
   }
   if (root.has("rows")) {
@@ -193,7 +221,8 @@ SetMisfit score(const References& refs, const std::vector<validation::Sample>& s
   SetMisfit s;
   for (const CurveRow& c : refs.curves) s.rows.push_back(curve_misfit(c, samples));
   for (const validation::Row& row : refs.rows) s.rows.push_back(row_misfit(row, samples));
-  for (const RowMisfit& m : s.rows) {
+  for (RowMisfit& m : s.rows) {
+    if (m.valued && std::isnan(m.chi2)) m.valued = false, m.note = "its chi^2 is not a number (a value of the runs that is not finite)";
     s.valued &= m.valued;
     s.chi2 += m.chi2;
   }

@@ -50,6 +50,25 @@ dem::test::CommandResult calibrate(const fs::path& dir, const std::string& args 
 
 }  // namespace
 
+TEST_CASE("calibrate: a posterior with no finite weight is an error, never a result", "[calibration][cli]") {
+  // One sample, a bound of e0 no packing reaches (e0 >= 5), no tolerance and no resolution: every
+  // set's chi^2 is the distance over an sd of 0, infinite, so no set weighs anything.
+  const fs::path dir = tiny("calibrate_no_weight", 1,
+                            "source: typed\nrows: rows.yaml\n");
+  std::ofstream(dir / "rows.yaml") << "source: typed\nrows:\n"
+                                   << "  - {name: far, quantity: void_ratio_after_preparation, density: dense, reference: 5.0, "
+                                      "check: at_least, reason: none, source: typed}\n";
+  const auto r = calibrate(dir);
+  INFO(r.out);
+  CHECK(r.exit_code == 2);
+  CHECK_THAT(r.out, Catch::Contains("no parameter set has a finite weight") && Catch::Contains("'far' has chi^2 inf") &&
+                        Catch::Contains("refs.yaml"));
+  CHECK_FALSE(fs::exists(dir / "report" / "posterior.json"));
+  // calibrate variant has nothing to print from.
+  const auto v = dem::test::run_command("cd '" + dir.string() + "' && '" + bin + "calibrate' variant cal.yaml 2>&1");
+  CHECK(v.exit_code != 0);
+}
+
 TEST_CASE("calibrate: two calibrations on one report folder at once: the second is refused before it runs anything", "[calibration][cli]") {
   const fs::path dir = tiny("calibrate_locked", 1, "source: typed\ncurves: [{name: qp, file: c.csv, x: strain_3, y: q_over_p, "
                                                    "density: dense, test: triaxial}]\n");

@@ -185,3 +185,37 @@ TEST_CASE("a set is scored on its samples whose runs all finished, when at least
   // Every sample complete: nothing left out.
   CHECK(calibration::score_complete(refs, {sample("seed1", {}), sample("seed2", {})}).left_out.empty());
 }
+
+TEST_CASE("a curve point no run could be scored against is refused up front, naming the file, the curve and the point", "[calibration]") {
+  const auto refs = [](const std::string& csv, const std::string& curve_keys) {
+    write("p.csv", csv);
+    return error_of([&] {
+      calibration::read_references(write("p.yaml", "source: typed\ncurves: [{name: qp, file: p.csv, x: strain_3, y: q_over_p, "
+                                                   "density: dense, test: triaxial" + curve_keys + "}]\n"),
+                                   "quick");
+    });
+  };
+  // sd 0 at one point, no tolerance: its chi^2 divides by 0 (the whole curve without sd was refused before).
+  const std::string zero = refs("x,y,sd\n0.002,0.8,0.1\n0.008,0.9,0\n", "");
+  CHECK_THAT(zero, Catch::Contains("p.yaml") && Catch::Contains("curve 'qp'") && Catch::Contains("point 2 of") &&
+                       Catch::Contains("p.csv (x = 0.008, y = 0.9, sd = 0) has sd 0"));
+  CHECK(refs("x,y,sd\n0.002,0.8,0.1\n0.008,0.9,0\n", ", tolerance: 0.01") == "accepted");  // the tolerance stands for it
+  // A row without its sd (the header has 3 columns).
+  CHECK_THAT(refs("x,y,sd\n0.002,0.8,0.1\n0.008,0.9\n", ""), Catch::Contains("p.csv:3: 2 columns where the header has 3") &&
+                                                                 Catch::Contains("give every point its sd"));
+  // y = 1e300 against sd 0.1: (y / sd)^2 = 1e602 overflows, whatever the run gives.
+  CHECK_THAT(refs("x,y,sd\n0.002,0.8,0.1\n0.008,1e300,0.1\n", ""), Catch::Contains("point 2 of") && Catch::Contains("would overflow"));
+  // sd = 1e-300: its square, 1e-600, is 0 in double precision.
+  CHECK_THAT(refs("x,y,sd\n0.002,0.8,1e-300\n", ""), Catch::Contains("point 1 of") && Catch::Contains("underflows to 0 or overflows"));
+  CHECK(refs("x,y,sd\n0.002,0.8,1e-100\n", "") == "accepted");  // 1e-200: small, but a number
+}
+
+TEST_CASE("a row whose chi2 is not a number has no value", "[calibration]") {
+  calibration::References r;
+  r.curves = {calibration::CurveRow{"line", "", "x", "y", "dense", "triaxial", 1, 0.1, {{0.5, 1.0, 0.0}}}};
+  validation::TestResult run = line_run();
+  for (double& y : run.series["y"]) y = NAN;  // a run whose column is not finite
+  const calibration::SetMisfit m = calibration::score(r, samples_of({run}));
+  CHECK_FALSE(m.valued);
+  CHECK_THAT(m.rows[0].note, Catch::Contains("not a number"));
+}
