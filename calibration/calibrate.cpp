@@ -156,6 +156,9 @@ void print_plan(const Calibration& c, std::vector<pipeline::PlannedRun>& runs, i
               c.parameters.size(), c.batch, c.max_iterations);
   std::printf("first iteration: %zu runs (%d shared by every set, %d for its sets still to run), %.3g particle-steps, "
               "about %.1f min on %d core(s)\n", runs.size(), shared_runs, set_runs, shared + first_own, first / 60, jobs);
+  if (ledger.other_sets > 0)
+    std::printf("the ledger of scored sets (%s/scored_sets.json) holds %d set(s) scored against other references: none is "
+                "taken, and a run keeps it aside (scored_sets.kept-N.json) before it writes its own\n", c.report.c_str(), ledger.other_sets);
   if (!ledger.sets.empty())
     std::printf("the ledger of scored sets (%s/scored_sets.json) holds %zu set(s), %zu of them of the first iteration: "
                 "%s\n", c.report.c_str(), ledger.sets.size(), in_ledger.size(),
@@ -234,7 +237,7 @@ void start(Loop& l) {
   l.out.results = (fs::path(l.study.output) / ("calibration_" + c.name) / l.profile->name).lexically_normal().string();
   check_inputs(c, l.study, l.out.references);
   l.ledger_file = (fs::path(c.report) / "scored_sets.json").string();
-  l.ledger = read_ledger(l.ledger_file, references_hash(l.out.references));
+  l.ledger = read_ledger(l.ledger_file, l.out.references);
 }
 
 // The iteration's batch, from the prior (the first) or from a proposal fitted after the sets so
@@ -341,7 +344,7 @@ void score_iteration(Loop& l, int it, const IterationPlan& p) {
 void keep_scores(Loop& l, const IterationPlan& p) {
   const std::map<std::string, RunShare> shares = run_shares(p.runs, l.o.threads);
   Ledger next;
-  next.references_hash = l.ledger.references_hash;
+  next.references_key = l.ledger.references_key;
   next.stamp = l.out.stamp;
   for (const ParameterSet& s : l.out.sets) {
     if (const auto e = l.from_ledger.find(s.name); e != l.from_ledger.end()) {
@@ -356,7 +359,9 @@ void keep_scores(Loop& l, const IterationPlan& p) {
   }
   for (const ScoredSet& e : l.ledger.sets)
     if (std::none_of(l.out.sets.begin(), l.out.sets.end(), [&](const ParameterSet& s) { return s.name == e.name; })) next.sets.push_back(e);
-  write_ledger(l.ledger_file, next);
+  if (const std::string kept = write_ledger(l.ledger_file, next, l.out.references); !kept.empty())
+    std::printf("[calibrate] the ledger %s held sets scored against other references or not among this calibration's: "
+                "kept as %s, a new one written\n", l.ledger_file.c_str(), kept.c_str());
 }
 
 // A posterior with no finite weight is no posterior: every set's likelihood is 0 (its chi^2

@@ -92,3 +92,42 @@ TEST_CASE("calibrate: two calibrations on one report folder at once: the second 
   }
   CHECK_FALSE(fs::exists(dir / "report" / ".calibrate.lock"));  // its holder removed it when it let go
 }
+
+TEST_CASE("calibrate: the ledger is keyed on the references as parsed, and a ledger of other references is kept aside", "[calibration][cli]") {
+  const fs::path dir = tiny("calibrate_ledger_key", 1, "source: typed\ncurves: [{name: qp, file: c.csv, x: strain_3, y: q_over_p, "
+                                                      "density: dense, test: triaxial}]\n");
+  std::ofstream(dir / "c.csv") << "strain_3,q_over_p,sd\n0.001,0.5,0.1\n";
+  const auto first = calibrate(dir);
+  INFO(first.out);
+  REQUIRE(first.exit_code == 0);
+  const std::string ledger = read(dir / "report" / "scored_sets.json");
+  REQUIRE(nlohmann::json::parse(ledger)["sets"].size() == 2);
+
+  // A comment in each file, a key moved, a number written another way: the same references. With
+  // the runs' results out of reach, the plan takes both sets from the ledger.
+  std::ofstream(dir / "refs.yaml") << "# the lab's curve\nsource: typed\ncurves: [{file: c.csv, name: qp, x: strain_3, y: q_over_p, "
+                                      "density: dense, test: triaxial}]\n";
+  std::ofstream(dir / "c.csv") << "# measured on 3 May\nstrain_3,q_over_p,sd\n1e-3,0.50,0.1\n";
+  fs::rename(dir / "results", dir / "results.away");
+  const auto plan = calibrate(dir, "--plan");
+  INFO(plan.out);
+  CHECK_THAT(plan.out, Catch::Contains("holds 2 set(s), 2 of them of the first iteration: they are not run again"));
+  CHECK_THAT(plan.out, Catch::Contains("(0 sets still to score)"));
+  fs::rename(dir / "results.away", dir / "results");
+
+  // Another reference value: the ledger's scores do not hold; it is kept aside, whole, not lost.
+  std::ofstream(dir / "c.csv") << "strain_3,q_over_p,sd\n0.001,0.6,0.1\n";
+  const auto other_plan = calibrate(dir, "--plan");
+  CHECK_THAT(other_plan.out, Catch::Contains("holds 2 set(s) scored against other references: none is taken"));
+  const auto other = calibrate(dir);
+  INFO(other.out);
+  REQUIRE(other.exit_code == 0);
+  CHECK_THAT(other.out, Catch::Contains("kept as") && Catch::Contains("scored_sets.kept-1.json"));
+  CHECK(read(dir / "report" / "scored_sets.kept-1.json") == ledger);
+  CHECK(read(dir / "report" / "scored_sets.json") != ledger);
+  // Started again with the same references: the new ledger holds every set it scored; nothing more is kept aside.
+  const auto again = calibrate(dir);
+  INFO(again.out);
+  REQUIRE(again.exit_code == 0);
+  CHECK_FALSE(fs::exists(dir / "report" / "scored_sets.kept-2.json"));
+}
