@@ -205,9 +205,24 @@ struct IterationPlan {
   std::set<std::string> in_ledger;   // this iteration's sets the ledger has scored
 };
 
+// Each set is a variant of the study: its parameters' keys obey the rules of a variant's (no `name`,
+// no seed of an ensemble, ...), checked as the pipeline checks a study's, naming the parameter.
+void check_parameter_keys(const Calibration& c, const pipeline::Study& study) {
+  const bool ensemble = std::any_of(study.profiles.begin(), study.profiles.end(), [](const auto& p) { return !p.seeds.empty(); });
+  for (std::size_t j = 0; j < c.parameters.size(); ++j) {
+    const Parameter& p = c.parameters[j];
+    const std::string scope = p.applies_to == "both" ? "set" : p.applies_to;
+    for (const std::string& key : p.keys)
+      if (const std::string why = pipeline::override_key_refusal(key, scope, ensemble, !study.tests.empty()); !why.empty())
+        throw dem::ConfigError(c.file + ": parameters[" + std::to_string(j) + "] (" + p.name + "): keys: '" + key + "' " + why +
+                               " (in the study " + c.study + ", applies_to: " + p.applies_to + ")");
+  }
+}
+
 // Check every parameter's densities and every curve row's density and test are the study's
 // before anything runs.
 void check_inputs(const Calibration& c, const pipeline::Study& study, const References& refs) {
+  check_parameter_keys(c, study);
   for (const Parameter& p : c.parameters)
     for (const std::string& density : p.densities)
       if (std::none_of(study.densities.begin(), study.densities.end(), [&](const auto& d) { return d.name == density; }))
@@ -321,8 +336,13 @@ void score_iteration(Loop& l, int it, const IterationPlan& p) {
   out.runs = static_cast<int>(p.runs.size() + std::lround(ledger_runs));
   out.ledger_sets = static_cast<int>(l.from_ledger.size());
   out.samples = samples_of_sets(p.runs);
+  std::map<std::string, std::string> stops;  // set -> the engine's message of a run of it that stopped
+  for (const pipeline::PlannedRun& r : p.runs)
+    if (const auto stop = pipeline::recorded_stop(r.result, r.hash))
+      for (const std::string& v : r.variants) stops.emplace(v, stop->message);
   for (ParameterSet& s : out.sets) {
     if (s.iteration != it || l.from_ledger.count(s.name)) continue;
+    if (const auto stop = stops.find(s.name); stop != stops.end()) s.stopped = stop->second;
     s.misfit = score_complete(out.references, out.samples[s.name]);
     for (const std::string& left : s.misfit.left_out)
       std::printf("[calibrate] set %s scored without %s\n", s.name.c_str(), left.c_str());
@@ -414,10 +434,18 @@ void weigh(Loop& l, int it) {
 
 // The first row of the last set that has no value, and why ("no rows" when it has none).
 std::string why_unscored(const ParameterSet& s) {
+  if (!s.stopped.empty()) return "the engine stopped a run of it: " + s.stopped;
   if (s.misfit.rows.empty()) return "no rows";
   for (const RowMisfit& m : s.misfit.rows)
     if (!m.valued) return m.name + ": " + m.note;
   return "?";
+}
+
+// " (2 not scored: they weigh nothing; i1s002: ...)", or "" when every set is scored.
+std::string unscored_text(const Outcome& out) {
+  if (out.unscored.empty()) return "";
+  return " (" + std::to_string(out.unscored.size()) + " not scored: they weigh nothing; " + out.unscored.front() +
+         (out.unscored.size() > 1 ? "; ..." : "") + ")";
 }
 
 IterationSummary summarize(Loop& l, int it) {
@@ -429,6 +457,9 @@ IterationSummary summarize(Loop& l, int it) {
   summary.valued = static_cast<int>(std::count_if(out.sets.begin(), out.sets.end(), [](const auto& s) { return s.misfit.valued; }));
   if (summary.valued == 0)
     throw dem::ConfigError("no parameter set of iteration " + std::to_string(it) + " could be scored: " + why_unscored(out.sets.back()));
+  l.out.unscored.clear();
+  for (const ParameterSet& s : out.sets)
+    if (!s.misfit.valued) l.out.unscored.push_back(s.name + ": " + why_unscored(s));
   summary.ess = effective_sample_size(out.posterior_w);
   summary.sets_ess = effective_sample_size(out.weights);
   for (std::size_t j = 0; j < c.parameters.size(); ++j)
@@ -443,8 +474,8 @@ IterationSummary summarize(Loop& l, int it) {
     }
   summary.moved = l.before.empty() ? 1 : largest_move(l.before, summary.marginals);
   l.before = summary.marginals;
-  std::printf("[calibrate] iteration %d: %d of %zu sets scored; posterior from %s (effective sample size %.1f), moved %.3f of "
-              "the prior ranges;", it, summary.valued, out.sets.size(),
+  std::printf("[calibrate] iteration %d: %d of %zu sets scored%s; posterior from %s (effective sample size %.1f), moved %.3f of "
+              "the prior ranges;", it, summary.valued, out.sets.size(), unscored_text(out).c_str(),
               out.posterior_from.empty() ? "the sets' weights" : ("a response surface over " + std::to_string(out.surface_sets) + " sets").c_str(),
               summary.ess, summary.moved);
   for (std::size_t j = 0; j < c.parameters.size(); ++j)
@@ -506,6 +537,10 @@ std::optional<Outcome> run_calibration(const Calibration& c, const RunOptions& o
     }
   }
   if (!out.converged) out.stop_reason = unsettled_reason(c, out);
+  if (!out.unscored.empty())
+    out.stop_reason += "; " + std::to_string(out.unscored.size()) + " of the " + std::to_string(out.sets.size()) +
+                       " sets could not be scored and weigh nothing, so the posterior covers only the part of the prior the "
+                       "others sample (" + out.unscored.front() + (out.unscored.size() > 1 ? "; ..." : "") + ")";
   return out;
 }
 

@@ -169,7 +169,12 @@ Ledger read_ledger(const std::string& file, const References& refs) {
       return l;
     }
     l.stamp = validation::stamp_from_json(j.at("stamp"));
-    for (const json& s : j.at("sets")) l.sets.push_back(entry_of(s));
+    for (const json& s : j.at("sets")) {
+      l.sets.push_back(entry_of(s));
+      if (const std::string why = recheck(refs, l.sets.back().misfit); !why.empty())
+        throw dem::ConfigError(file + ": set " + l.sets.back().name + ": its score does not follow from its values (" + why +
+                               "): edited or damaged; delete the ledger to run its sets again");
+    }
   } catch (const json::exception& e) {
     throw dem::ConfigError(file + ": not a ledger of scored sets (" + e.what() + "): delete it to run its sets again");
   }

@@ -113,6 +113,17 @@ TEST_CASE("calibrate: the ledger is keyed on the references as parsed, and a led
   INFO(plan.out);
   CHECK_THAT(plan.out, Catch::Contains("holds 2 set(s), 2 of them of the first iteration: they are not run again"));
   CHECK_THAT(plan.out, Catch::Contains("(0 sets still to score)"));
+  {  // A forged chi^2 (the set's and its row's, to agree with each other) is refused, naming the set.
+    nlohmann::json forged = nlohmann::json::parse(ledger);
+    forged["sets"][0]["misfit"]["chi2"] = 0.0;
+    forged["sets"][0]["misfit"]["rows"][0]["chi2"] = 0.0;
+    std::ofstream(dir / "report" / "scored_sets.json") << forged.dump(1);
+    const auto refused = calibrate(dir, "--plan");
+    INFO(refused.out);
+    CHECK(refused.exit_code == 2);
+    CHECK_THAT(refused.out, Catch::Contains("scored_sets.json: set i1s001: its score does not follow from its values"));
+    std::ofstream(dir / "report" / "scored_sets.json") << ledger;
+  }
   fs::rename(dir / "results.away", dir / "results");
 
   // Another reference value: the ledger's scores do not hold; it is kept aside, whole, not lost.
@@ -130,4 +141,42 @@ TEST_CASE("calibrate: the ledger is keyed on the references as parsed, and a led
   INFO(again.out);
   REQUIRE(again.exit_code == 0);
   CHECK_FALSE(fs::exists(dir / "report" / "scored_sets.kept-2.json"));
+  // The calibration file now allows 3 iterations: its set is of an unfinished calibration, and
+  // calibrate variant says what is missing.
+  std::string cal = read(dir / "cal.yaml");
+  cal.replace(cal.find("max_iterations: 1"), 17, "max_iterations: 3");
+  std::ofstream(dir / "cal.yaml") << cal;
+  const auto v = dem::test::run_command("cd '" + dir.string() + "' && '" + bin + "calibrate' variant cal.yaml 2>&1 >/dev/null");
+  INFO(v.out);
+  CHECK_THAT(v.out, Catch::Contains("warning:") && Catch::Contains("unfinished calibration: 1 of at most 3 iterations done, up to 2 "
+                                                                   "more (4 sets) still to run"));
+}
+
+TEST_CASE("calibrate: a parameter's keys obey a study variant's rules, and a scene error names the calibration's set", "[calibration][cli]") {
+  const std::string refs = "source: typed\ncurves: [{name: qp, file: c.csv, x: strain_3, y: q_over_p, density: dense, test: triaxial}]\n";
+  const auto plan_with = [&](const std::string& name, int seeds, const std::string& parameter) {
+    const fs::path dir = tiny(name, seeds, refs);
+    std::ofstream(dir / "c.csv") << "strain_3,q_over_p,sd\n0.001,0.5,0.1\n";
+    std::ofstream(dir / "cal.yaml") << "name: tiny\nstudy: study.yaml\nreferences: refs.yaml\nreport: report\n"
+                                    << "parameters: [" << parameter << "]\nbatch: 2\nmin_iterations: 1\nmax_iterations: 1\n";
+    return calibrate(dir, "--plan");
+  };
+  // `name` is the pipeline's (the runs' names), as in a study's variant.
+  const auto named = plan_with("calibrate_key_name", 1, "{name: n, keys: name, values: [a, b]}");
+  INFO(named.out);
+  CHECK(named.exit_code == 2);
+  CHECK_THAT(named.out, Catch::Contains("cal.yaml: parameters[0] (n): keys: 'name' is set by the pipeline"));
+  // The seed of a 2-sample ensemble is the study's seeds' to choose.
+  const auto seed = plan_with("calibrate_key_seed", 2, "{name: s, keys: particles.lattice.seed, applies_to: prepare, values: [3, 4]}");
+  INFO(seed.out);
+  CHECK(seed.exit_code == 2);
+  CHECK_THAT(seed.out, Catch::Contains("cal.yaml: parameters[0] (s): keys: 'particles.lattice.seed'") &&
+                           Catch::Contains("a variant cannot set the seed of an ensemble"));
+  // A value the engine refuses (friction above 10): the error names the calibration file, the set
+  // and its value, not a list of variants the user never wrote.
+  const auto range = plan_with("calibrate_key_range", 1, "{name: friction, keys: material.friction, uniform: [5, 20]}");
+  INFO(range.out);
+  CHECK(range.exit_code == 2);
+  CHECK_THAT(range.out, Catch::Contains("cal.yaml: set i1s001 (friction = 12.5)") && Catch::Contains("material.friction"));
+  CHECK_THAT(range.out, !Catch::Contains("variants["));
 }
