@@ -64,6 +64,9 @@ struct Outcome {
   int runs = 0;               // runs planned over all iterations (reused ones included)
   double core_seconds = 0;    // recorded by their results (wall time x threads)
   int ledger_sets = 0;        // sets whose score came from the ledger (ledger.hpp), not from runs here
+  // The sets that could not be scored (a run the engine refused or stopped, a point no run
+  // reached), each "name: why": they weigh nothing, so the posterior covers only the rest of the prior.
+  std::vector<std::string> unscored;
   validation::Stamp stamp;    // of the runs (engine, baseline, spheres, samples, date)
   std::map<std::string, std::vector<validation::Sample>> samples;  // of each set (for the figures)
 };

@@ -18,6 +18,7 @@
 
 #include "calibrate.hpp"
 #include "config/yaml_section.hpp"
+#include "exec/scheduler.hpp"
 #include "io/atomic_file.hpp"
 #include "io/failure.hpp"
 #include "posterior_report.hpp"
@@ -103,6 +104,22 @@ int truth(int argc, char** argv) {
   return 0;
 }
 
+// A posterior that has not settled (the calibration still iterating, or stopped by max_iterations)
+// gives a set all the same, with a warning on stderr naming what is missing.
+void warn_if_unsettled(const nlohmann::json& j, const calibration::Calibration& c, const std::string& posterior) {
+  if (j.value("converged", false)) return;
+  const int done = static_cast<int>(j.value("iterations", nlohmann::json::array()).size());
+  const std::size_t sets = j.value("sets", nlohmann::json::array()).size();
+  const std::string why = j.value("stop_reason", std::string("no stop reason recorded"));
+  if (done < c.max_iterations)
+    std::fprintf(stderr, "calibrate variant: warning: %s is of an unfinished calibration: %d of at most %d iterations done, up to %d "
+                 "more (%d sets) still to run (%s); this set is the best of the %zu scored so far\n", posterior.c_str(), done,
+                 c.max_iterations, c.max_iterations - done, (c.max_iterations - done) * c.batch, why.c_str(), sets);
+  else
+    std::fprintf(stderr, "calibrate variant: warning: %s is of a calibration whose posterior did not settle (%s); this set is the "
+                 "best of the %zu scored, not of a settled posterior\n", posterior.c_str(), why.c_str(), sets);
+}
+
 // One set of a finished calibration as a study variant (YAML), to run it elsewhere: at another
 // size, on more samples (e.g. the best set at the paper's size).
 int variant(int argc, char** argv) {
@@ -115,6 +132,7 @@ int variant(int argc, char** argv) {
   const calibration::Calibration c = calibration::read_calibration(file);
   const std::string posterior = (fs::path(c.report) / "posterior.json").string();
   const nlohmann::json j = validation::read_json_file(posterior);
+  warn_if_unsettled(j, c, posterior);
   if (set_name.empty()) {
     if (!j.contains("best_set") || !j["best_set"].contains("name")) throw dem::ConfigError(posterior + ": best_set.name is missing");
     set_name = j["best_set"]["name"].get<std::string>();
@@ -167,6 +185,11 @@ int calibrate(int argc, char** argv) {
       truth_values[p.name] = t["parameters"][p.name].get<double>();
     }
   }
+  // One calibration at a time in a report folder, from its first run to its last report.
+  std::unique_ptr<dem::FileLock> lock;
+  if (!o.plan_only)
+    lock = pipeline::lock_folder(c.report, ".calibrate.lock", "calibrate",
+                                 "two would each write its ledger of scored sets and its posterior, and one would be lost");
   o.after_iteration = [&](const calibration::Outcome& so_far) {
     calibration::write_report(so_far, {});
     std::printf("[calibrate] the posterior so far in %s/posterior.json\n", c.report.c_str());

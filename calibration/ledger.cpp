@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -18,7 +19,7 @@ using json = nlohmann::json;
 
 namespace {
 
-constexpr int schema = 1;
+constexpr int schema = 2;  // 1: keyed on the reference files' bytes (read still)
 
 // A number as JSON: null when it is not finite (JSON has no NaN), read back as NaN.
 json number(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
@@ -84,35 +85,95 @@ std::optional<double> Ledger::throughput() const {
   return particle_steps / core_seconds;
 }
 
-std::string references_hash(const References& refs) {
+std::string references_key(const References& refs) {
+  std::ostringstream t;
+  t.precision(17);  // every double as it is read back
+  for (const CurveRow& c : refs.curves) {
+    t << "curve\n" << c.name << '\n' << c.x << '\n' << c.y << '\n' << c.density << '\n' << c.test << '\n' << c.specimens << ' '
+      << c.tolerance << '\n';
+    for (const CurvePoint& p : c.points) t << p.x << ' ' << p.y << ' ' << p.sd << '\n';
+  }
+  for (const validation::Row& r : refs.rows)
+    t << "row\n" << r.name << '\n' << r.quantity << '\n' << r.check << '\n' << r.variant << '\n' << r.density << '\n' << r.test << '\n'
+      << r.rule << '\n' << r.reference << ' ' << r.tolerance << ' ' << r.resolution << ' ' << r.cycle << ' ' << r.from_cycle << ' '
+      << r.to_cycle << ' ' << r.quasi_static << '\n';
+  return dem::content_hash(t.str());
+}
+
+namespace {
+
+// The hash of the reference files' bytes, the key of a ledger of schema 1.
+std::string references_bytes_hash(const References& refs) {
   std::string text = dem::read_whole_file(refs.file);
   if (!refs.rows_file.empty()) text += dem::read_whole_file(refs.rows_file);
   for (const CurveRow& c : refs.curves) text += dem::read_whole_file(c.file);
   return dem::content_hash(text);
 }
 
-Ledger read_ledger(const std::string& file, const std::string& references_hash) {
+// Whether the ledger `j` was scored against `refs`; throws on a schema it does not know.
+bool scored_against(const json& j, const References& refs, const std::string& file) {
+  const int version = j.at("schema").get<int>();
+  if (version == schema) return j.at("references_key").get<std::string>() == references_key(refs);
+  if (version == 1) return j.at("references_hash").get<std::string>() == references_bytes_hash(refs);
+  throw dem::ConfigError(file + ": schema " + j["schema"].dump() + " is not " + std::to_string(schema) +
+                         " (written by another version of calibrate: delete it to run its sets again)");
+}
+
+ScoredSet entry_of(const json& s) {
+  ScoredSet e;
+  e.name = s.at("name").get<std::string>();
+  const std::vector<double> u = s.at("u").get<std::vector<double>>();
+  e.u = Eigen::Map<const Eigen::VectorXd>(u.data(), static_cast<Eigen::Index>(u.size()));
+  e.run_hashes = s.at("run_hashes").get<std::vector<std::string>>();
+  e.misfit = misfit_of(s.at("misfit"));
+  e.runs = s.at("runs").get<double>();
+  e.core_seconds = s.at("core_seconds").get<double>();
+  e.particle_steps = s.value("particle_steps", 0.0);
+  return e;
+}
+
+// A ledger at `file` that `ledger` does not hold in full is moved aside to <stem>.kept-<N>.json
+// (the first N free); returns that path, or "" when there is none to keep.
+std::string keep_aside(const std::string& file, const Ledger& ledger, const References& refs) {
+  std::error_code ec;
+  if (!fs::exists(fs::symlink_status(file, ec))) return "";
+  bool held = false;
+  try {
+    const json j = validation::read_json_file(file);
+    held = scored_against(j, refs, file) && std::all_of(j.at("sets").begin(), j.at("sets").end(), [&](const json& s) {
+             const ScoredSet e = entry_of(s);
+             return ledger.find(e.name, e.u, e.run_hashes) != nullptr;
+           });
+  } catch (const std::exception&) {  // not readable as a ledger: kept all the same, never overwritten
+  }
+  if (held) return "";
+  const fs::path path(file);
+  for (int n = 1;; ++n) {
+    const fs::path aside = path.parent_path() / (path.stem().string() + ".kept-" + std::to_string(n) + path.extension().string());
+    if (fs::exists(fs::symlink_status(aside, ec))) continue;
+    dem::rename_durably(file, aside.string());
+    return aside.string();
+  }
+}
+
+}  // namespace
+
+Ledger read_ledger(const std::string& file, const References& refs) {
   Ledger l;
-  l.references_hash = references_hash;
+  l.references_key = references_key(refs);
   if (!fs::exists(file)) return l;
   const json j = validation::read_json_file(file);
   try {
-    if (j.at("schema").get<int>() != schema)
-      throw dem::ConfigError(file + ": schema " + j["schema"].dump() + " is not " + std::to_string(schema) +
-                             " (written by another version of calibrate: delete it to run its sets again)");
-    if (j.at("references_hash").get<std::string>() != references_hash) return l;
+    if (!scored_against(j, refs, file)) {
+      l.other_sets = static_cast<int>(j.at("sets").size());
+      return l;
+    }
     l.stamp = validation::stamp_from_json(j.at("stamp"));
     for (const json& s : j.at("sets")) {
-      ScoredSet e;
-      e.name = s.at("name").get<std::string>();
-      const std::vector<double> u = s.at("u").get<std::vector<double>>();
-      e.u = Eigen::Map<const Eigen::VectorXd>(u.data(), static_cast<Eigen::Index>(u.size()));
-      e.run_hashes = s.at("run_hashes").get<std::vector<std::string>>();
-      e.misfit = misfit_of(s.at("misfit"));
-      e.runs = s.at("runs").get<double>();
-      e.core_seconds = s.at("core_seconds").get<double>();
-      e.particle_steps = s.value("particle_steps", 0.0);
-      l.sets.push_back(std::move(e));
+      l.sets.push_back(entry_of(s));
+      if (const std::string why = recheck(refs, l.sets.back().misfit); !why.empty())
+        throw dem::ConfigError(file + ": set " + l.sets.back().name + ": its score does not follow from its values (" + why +
+                               "): edited or damaged; delete the ledger to run its sets again");
     }
   } catch (const json::exception& e) {
     throw dem::ConfigError(file + ": not a ledger of scored sets (" + e.what() + "): delete it to run its sets again");
@@ -120,11 +181,13 @@ Ledger read_ledger(const std::string& file, const std::string& references_hash) 
   return l;
 }
 
-void write_ledger(const std::string& file, const Ledger& ledger) {
+std::string write_ledger(const std::string& file, const Ledger& ledger, const References& refs) {
+  if (fs::path(file).has_parent_path()) fs::create_directories(fs::path(file).parent_path());
+  const std::string kept = keep_aside(file, ledger, refs);
   json j{{"schema", schema},
          {"about", "every set this calibration scored, so that it goes on without the runs' results: a set drawn again "
                    "with the same unit values, run hashes and references takes its score from here"},
-         {"references_hash", ledger.references_hash},
+         {"references_key", ledger.references_key},
          {"stamp", validation::stamp_json(ledger.stamp)},
          {"sets", json::array()}};
   for (const ScoredSet& s : ledger.sets)
@@ -135,8 +198,8 @@ void write_ledger(const std::string& file, const Ledger& ledger) {
                          {"core_seconds", s.core_seconds},
                          {"particle_steps", s.particle_steps},
                          {"misfit", misfit_json(s.misfit)}});
-  if (fs::path(file).has_parent_path()) fs::create_directories(fs::path(file).parent_path());
   dem::write_file_atomically(file, j.dump(1) + "\n");
+  return kept;
 }
 
 }  // namespace calibration

@@ -3,7 +3,7 @@
 // it: a calibration that takes several sessions, on machines that do not keep the runs' results,
 // takes a set's score from here instead of running the set again. An entry counts only for the
 // same set drawn again (its name and unit values), whose runs are planned with the same input
-// hashes (scene and engine source), scored against references of the same content.
+// hashes (scene and engine source), scored against the same references (references_key).
 #include <optional>
 #include <string>
 #include <vector>
@@ -26,9 +26,10 @@ struct ScoredSet {
 };
 
 struct Ledger {
-  std::string references_hash;
+  std::string references_key;  // references_key() of the references its sets were scored against
   validation::Stamp stamp;  // of the runs the entries were scored on
   std::vector<ScoredSet> sets;
+  int other_sets = 0;  // read_ledger: the file's sets scored against other references (not taken)
 
   // The entry of the set, or null when there is none with these unit values and run hashes.
   const ScoredSet* find(const std::string& name, const Eigen::VectorXd& u, const std::vector<std::string>& run_hashes) const;
@@ -37,12 +38,21 @@ struct Ledger {
   std::optional<double> throughput() const;
 };
 
-// A hash of the references' content: their file, the rows file it reads and every curve's CSV.
-std::string references_hash(const References& refs);
+// The key of what the scores depend on: the references as parsed (each curve's name, columns,
+// runs, specimens, tolerance and points; each row's name, quantity, selectors, reference,
+// tolerance, resolution, cycles and rule), not their files' bytes: a comment, a reordered key or a
+// number written another way changes no score, and so keeps the ledger.
+std::string references_key(const References& refs);
 
-// The ledger in `file`: empty when there is none or when it was scored against other references
-// (`references_hash`); throws, naming the file and the key, when it cannot be read as one.
-Ledger read_ledger(const std::string& file, const std::string& references_hash);
-void write_ledger(const std::string& file, const Ledger& ledger);
+// The ledger in `file`: its sets when they were scored against `refs` (its references_key; in a
+// ledger written before there were keys, the hash of the reference files' bytes), else none;
+// throws, naming the file and the key, when it cannot be read as one.
+Ledger read_ledger(const std::string& file, const References& refs);
+
+// Writes `ledger` (scored against `refs`) to `file`. A ledger there that `ledger` does not hold in
+// full (scored against other references, or with a set `ledger` lacks) is never overwritten: it
+// is first moved aside to scored_sets.kept-<N>.json beside it, whose path is returned ("" when
+// nothing was moved).
+std::string write_ledger(const std::string& file, const Ledger& ledger, const References& refs);
 
 }  // namespace calibration

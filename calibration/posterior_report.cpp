@@ -198,6 +198,7 @@ void write_report(const Outcome& o, const std::map<std::string, double>& truth) 
   j["stop_reason"] = o.stop_reason;
   j["runs"] = o.runs;
   j["sets_from_ledger"] = o.ledger_sets;
+  j["unscored_sets"] = o.unscored;  // "name: why" of each set that weighs nothing for want of a score
   j["core_seconds"] = o.core_seconds;
   j["posterior_from"] = o.posterior_from.empty() ? "the sets' weights" : o.posterior_from;
   if (!o.posterior_from.empty())

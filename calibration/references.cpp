@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "analysis/time_series.hpp"
 #include "config/yaml_section.hpp"
 #include "study/ensemble.hpp"
 
@@ -25,6 +26,41 @@ std::vector<std::string> split_csv(const std::string& line) {
   return out;
 }
 
+// A point's chi^2 divides its residual by the reference's variance, tolerance^2 + sd^2 / specimens
+// (plus the samples', which may be 0): that must be a positive, finite number that is not
+// subnormal (sd = 1e-300 squares to 0), and y over its square root must square to a finite
+// number (y = 1e300), or the point's chi^2 is infinite or not a number whatever the runs give, and
+// no set would weigh anything.
+void check_points(const dem::Section& c, const CurveRow& row) {
+  for (std::size_t k = 0; k < row.points.size(); ++k) {
+    const CurvePoint& p = row.points[k];
+    const double var = row.tolerance * row.tolerance + p.sd * p.sd / row.specimens;
+    std::string why;
+    if (var == 0 && p.sd == 0)
+      why = "has sd 0 and the curve's tolerance is 0: its misfit would divide by 0; give the point an sd > 0 or the curve a tolerance";
+    else if (!std::isnormal(var))
+      why = "has a variance (tolerance^2 + sd^2 / specimens) that underflows to 0 or overflows; give an sd or a tolerance between "
+            "about 1e-150 and 1e150, in y's unit";
+    else if (!std::isfinite(p.y * p.y / var))
+      why = "has a y so large against its sd and tolerance that its misfit would overflow; give y in the unit of the run's column";
+    if (why.empty()) continue;
+    std::ostringstream point;
+    point << "point " << k + 1 << " of " << row.file << " (x = " << p.x << ", y = " << p.y << ", sd = " << p.sd << ")";
+    c.fail("file", "curve '" + row.name + "': " + point.str() + " " + why);
+  }
+}
+
+// A curve's column is one of the engine's time-series columns (its table, which the runs write),
+// checked before any run: a misspelt one would be found only once every run had finished.
+void check_column(const dem::Section& c, const std::string& key, const std::string& name) {
+  std::string known;
+  for (const dem::SeriesColumn& col : dem::series_columns()) {
+    if (col.name == name) return;
+    known += (known.empty() ? "" : ", ") + col.name;
+  }
+  c.fail(key, "'" + name + "' is not a column of the runs' time series (dem columns describes them): " + known);
+}
+
 }  // namespace
 
 std::vector<CurvePoint> read_curve_csv(const std::string& file) {
@@ -33,13 +69,13 @@ std::vector<CurvePoint> read_curve_csv(const std::string& file) {
   std::vector<CurvePoint> points;
   std::string line;
   int number = 0;
-  bool header = false;
+  std::size_t columns = 0;  // the header's: 2 or 3
   while (std::getline(in, line)) {
     ++number;
     if (line.empty() || line[0] == '#') continue;
     const std::vector<std::string> cells = split_csv(line);
-    if (!header) {  // the first line that is not a comment names the columns
-      header = true;
+    if (columns == 0) {  // the first line that is not a comment names the columns
+      columns = cells.size();
       if (cells.size() < 2 || cells.size() > 3)
         throw dem::ConfigError(file + ":" + std::to_string(number) + ": the header names " + std::to_string(cells.size()) +
                                " columns; a curve has 2 or 3: x, y and optionally sd");
@@ -53,9 +89,11 @@ std::vector<CurvePoint> read_curve_csv(const std::string& file) {
         throw dem::ConfigError(file + ":" + std::to_string(number) + ": column " + std::to_string(k + 1) + " is '" +
                                cells[k].substr(0, 40) + "', not a finite number" + (why.empty() ? "" : " (" + why + ")"));
     }
-    if (cells.size() < 2 || cells.size() > 3)
+    // Every row as many columns as the header: a point without its sd would weigh as if exact.
+    if (cells.size() != columns)
       throw dem::ConfigError(file + ":" + std::to_string(number) + ": " + std::to_string(cells.size()) +
-                             " columns where the header has 2 or 3");
+                             " columns where the header has " + std::to_string(columns) +
+                             (columns == 3 ? " (x, y, sd): give every point its sd" : " (x, y)"));
     if (p.sd < 0) throw dem::ConfigError(file + ":" + std::to_string(number) + ": sd is negative");
     points.push_back(p);
   }
@@ -75,6 +113,8 @@ References read_references(const std::string& file, const std::string& profile) 
     row.file = c.file_path("file", "the curve: a CSV with a header line and columns x, y and optionally sd");
     row.x = c.text("x", std::nullopt, "the run's time-series column along the curve (e.g. strain_3)");
     row.y = c.text("y", std::nullopt, "the run's time-series column compared (e.g. q_over_p, volumetric_strain)");
+    check_column(c, "x", row.x);
+    check_column(c, "y", row.y);
     row.density = c.text("density", std::nullopt, "the study's density whose runs are read");
     row.test = c.text("test", std::nullopt, "the study's test whose runs are read");
     row.specimens = static_cast<int>(c.integer("specimens", 1, 1000, 1, "specimens the curve averages (its sd is their scatter)"));
@@ -83,6 +123,7 @@ References read_references(const std::string& file, const std::string& profile) 
     row.points = read_curve_csv(row.file);
     if (row.tolerance == 0 && std::all_of(row.points.begin(), row.points.end(), [](const CurvePoint& p) { return p.sd == 0; }))
       c.fail("tolerance", "is 0 and the curve has no sd column: give one of them (the misfit divides by it)");
+    check_points(c, row);
     r.curves.push_back(std::move(row));
   }
   if (root.has("rows")) {
@@ -135,7 +176,6 @@ RowMisfit curve_misfit(const CurveRow& c, const std::vector<validation::Sample>&
     }
     per_sample.push_back(curve_on_run(c, *t));
   }
-  const double n_samples = static_cast<double>(samples.size());
   for (std::size_t j = 0; j < c.points.size(); ++j) {
     std::vector<double> ys;
     for (std::size_t k = 0; k < per_sample.size(); ++k) {
@@ -149,14 +189,10 @@ RowMisfit curve_misfit(const CurveRow& c, const std::vector<validation::Sample>&
       ys.push_back(*per_sample[k][j]);
     }
     const validation::Spread s = validation::spread(ys);
-    const CurvePoint& p = c.points[j];
-    const double sample_var = samples.size() >= 3 ? s.sd * s.sd : p.sd * p.sd;
-    const double var = c.tolerance * c.tolerance + p.sd * p.sd / c.specimens + sample_var / n_samples;
     m.model.push_back(s.mean);
     m.model_sd.push_back(s.sd);
     m.samples = static_cast<int>(samples.size());
-    const double r = s.mean - p.y;
-    m.chi2 += var > 0 ? r * r / var : (r == 0 ? 0 : INFINITY);
+    m.chi2 += point_chi2(c, c.points[j], s.mean, s.sd, m.samples);
     ++m.points;
   }
   return m;
@@ -178,22 +214,83 @@ RowMisfit row_misfit(const validation::Row& row, const std::vector<validation::S
     m.chi2 = -2 * std::log((r.holds + 0.5) / (r.valued + 1.0));
     return m;
   }
-  const double mean = r.spread.mean;
-  const double distance = r.paper.contains(mean) ? 0 : std::min(std::abs(mean - r.paper.low), std::abs(mean - r.paper.high));
-  double sd = std::max(r.spread.sd, row.resolution);
-  if (sd == 0) sd = row.tolerance, m.note = "one sample and no resolution: the row's tolerance stands for its scatter";
-  const double var = sd * sd * (1 + 1.0 / r.spread.n);
-  m.chi2 = distance == 0 ? 0 : var > 0 ? distance * distance / var : INFINITY;
+  if (std::max(r.spread.sd, row.resolution) == 0) m.note = "one sample and no resolution: the row's tolerance stands for its scatter";
+  m.chi2 = interval_chi2(row, r.spread.mean, r.spread.sd, r.spread.n);
   return m;
 }
 
 }  // namespace
 
+double point_chi2(const CurveRow& c, const CurvePoint& p, double mean, double sd, int samples) {
+  const double sample_var = samples >= 3 ? sd * sd : p.sd * p.sd;
+  const double var = c.tolerance * c.tolerance + p.sd * p.sd / c.specimens + sample_var / samples;
+  const double r = mean - p.y;
+  return var > 0 ? r * r / var : (r == 0 ? 0 : INFINITY);
+}
+
+double interval_chi2(const validation::Row& row, double mean, double sd, int samples) {
+  const validation::Region paper = validation::paper_region(row.check, row.reference, row.tolerance);
+  const double distance = paper.contains(mean) ? 0 : std::min(std::abs(mean - paper.low), std::abs(mean - paper.high));
+  double s = std::max(sd, row.resolution);
+  if (s == 0) s = row.tolerance;
+  const double var = s * s * (1 + 1.0 / samples);
+  return distance == 0 ? 0 : var > 0 ? distance * distance / var : INFINITY;
+}
+
+namespace {
+
+bool same_chi2(double a, double b) { return a == b || std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b)); }
+
+std::string recheck_curve(const CurveRow& c, const RowMisfit& m) {
+  const std::size_t n = c.points.size();
+  if (m.points != static_cast<int>(n) || m.model.size() != n || m.model_sd.size() != n || m.samples < 1)
+    return "its values are not one per point of the curve's " + std::to_string(n);
+  double chi2 = 0;
+  for (std::size_t j = 0; j < n; ++j) chi2 += point_chi2(c, c.points[j], m.model[j], m.model_sd[j], m.samples);
+  return same_chi2(chi2, m.chi2) ? "" : "its chi^2 " + std::to_string(m.chi2) + " is not the " + std::to_string(chi2) + " of its values";
+}
+
+std::string recheck_scalar(const validation::Row& row, const RowMisfit& m) {
+  if (m.model.size() != 1 || m.model_sd.size() != 1 || m.samples < 1) return "it does not hold one mean and sd";
+  if (row.rule == "interval") {
+    const double chi2 = interval_chi2(row, m.model[0], m.model_sd[0], m.samples);
+    return same_chi2(chi2, m.chi2) ? "" : "its chi^2 " + std::to_string(m.chi2) + " is not the " + std::to_string(chi2) + " of its values";
+  }
+  // -2 ln((k + 1/2) / (m + 1)) for k of the m samples: k must come out a whole number in [0, m].
+  const double k = (m.samples + 1) * std::exp(-0.5 * m.chi2) - 0.5;
+  if (std::abs(k - std::round(k)) <= 1e-6 && k > -0.5 && k < m.samples + 0.5) return "";
+  return "its chi^2 " + std::to_string(m.chi2) + " is not that of a count of samples in which the statement holds";
+}
+
+}  // namespace
+
+std::string recheck(const References& refs, const SetMisfit& s) {
+  if (s.rows.size() != refs.curves.size() + refs.rows.size())
+    return std::to_string(s.rows.size()) + " rows where the references have " + std::to_string(refs.curves.size() + refs.rows.size());
+  double total = 0;
+  bool valued = true;
+  for (std::size_t k = 0; k < s.rows.size(); ++k) {
+    const RowMisfit& m = s.rows[k];
+    const bool curve = k < refs.curves.size();
+    const std::string& name = curve ? refs.curves[k].name : refs.rows[k - refs.curves.size()].name;
+    if (m.name != name) return "row " + std::to_string(k + 1) + " is '" + m.name + "' where the references have '" + name + "'";
+    if (m.valued)
+      if (const std::string why = curve ? recheck_curve(refs.curves[k], m) : recheck_scalar(refs.rows[k - refs.curves.size()], m); !why.empty())
+        return "'" + m.name + "': " + why;
+    total += m.chi2, valued &= m.valued;
+  }
+  if (valued != s.valued) return "it is called " + std::string(s.valued ? "scored" : "not scored") + " against its rows";
+  if (!(std::isnan(total) && std::isnan(s.chi2)) && !same_chi2(total, s.chi2))
+    return "its chi^2 " + std::to_string(s.chi2) + " is not the sum of its rows' " + std::to_string(total);
+  return "";
+}
+
 SetMisfit score(const References& refs, const std::vector<validation::Sample>& samples) {
   SetMisfit s;
   for (const CurveRow& c : refs.curves) s.rows.push_back(curve_misfit(c, samples));
   for (const validation::Row& row : refs.rows) s.rows.push_back(row_misfit(row, samples));
-  for (const RowMisfit& m : s.rows) {
+  for (RowMisfit& m : s.rows) {
+    if (m.valued && std::isnan(m.chi2)) m.valued = false, m.note = "its chi^2 is not a number (a value of the runs that is not finite)";
     s.valued &= m.valued;
     s.chi2 += m.chi2;
   }

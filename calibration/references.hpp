@@ -82,4 +82,15 @@ std::vector<std::optional<double>> curve_on_run(const CurveRow& c, const validat
 //   samples in which the statement holds (0.0 when all hold in many samples).
 SetMisfit score(const References& refs, const std::vector<validation::Sample>& samples);
 
+// score()'s chi^2 of one curve point, from the samples' mean and sd of y at it, and of a scalar row
+// of rule interval, from the samples' mean and sd of its value.
+double point_chi2(const CurveRow& c, const CurvePoint& p, double mean, double sd, int samples);
+double interval_chi2(const validation::Row& row, double mean, double sd, int samples);
+
+// Why a misfit kept elsewhere (a ledger's) does not follow from what it keeps, "" if it does: each
+// row's chi^2 computed again from its values (a curve's mean and sd per point, a scalar row's mean
+// and sd) against `refs`, a trend's whether it is that of a whole count of samples, the total the
+// sum of the rows. An edited chi^2 is caught; values edited to agree with it are not.
+std::string recheck(const References& refs, const SetMisfit& s);
+
 }  // namespace calibration

@@ -11,6 +11,12 @@ pipeline::Variant variant_of(const Calibration& c, const ParameterSet& s) {
   // A run the engine stops with a message (a guard, a refused value) is an outcome of the set: its
   // stop is recorded and not run again in every iteration; the set is scored without that sample.
   v.may_fail = true;
+  // A scene its values make that the engine refuses is named by the calibration file, the set and
+  // its parameters' values (not as a variant of the study, which has none).
+  v.origin = c.file + ": set " + s.name + " (";
+  for (std::size_t j = 0; j < c.parameters.size(); ++j)
+    v.origin += (j ? ", " : "") + c.parameters[j].name + " = " + c.parameters[j].value_text(s.u(static_cast<Eigen::Index>(j)));
+  v.origin += ")";
   for (std::size_t j = 0; j < c.parameters.size(); ++j) {
     const Parameter& p = c.parameters[j];
     const auto overrides = p.overrides(s.u(static_cast<Eigen::Index>(j)));

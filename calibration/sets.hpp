@@ -21,6 +21,7 @@ struct ParameterSet {
   Eigen::VectorXd u;  // on the unit cube
   double log_likelihood = 0;
   SetMisfit misfit;
+  std::string stopped;  // the engine's message when it stopped (or refused) a run of the set, else ""
 };
 
 // The variant that runs a set: each parameter's keys set to its value, in the runs it applies to;

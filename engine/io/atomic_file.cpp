@@ -1,6 +1,7 @@
 #include "io/atomic_file.hpp"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -23,12 +24,44 @@ std::string folder_of(const std::string& file) {
   return parent.empty() ? "." : parent.string();
 }
 
+// A tool writes a file of its own: the rename would put a regular file where a device node, a FIFO
+// or a link was (as root, over /dev/full), so anything but a regular file is left alone.
+void refuse_non_regular(const std::string& path, const std::string& file) {
+  if (const std::string kind = non_regular_kind(path); !kind.empty())
+    throw std::runtime_error(path + ": is " + kind + ", not a regular file: refused (writing " + file +
+                             " replaces only a regular file or makes a new one); give the path of a regular file");
+}
+
 }  // namespace
+
+std::string non_regular_kind(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  switch (fs::symlink_status(path, ec).type()) {
+    case fs::file_type::not_found:
+    case fs::file_type::regular: return "";
+    case fs::file_type::directory: return "a directory";
+    case fs::file_type::symlink: return "a symbolic link";
+    case fs::file_type::character: return "a character device";
+    case fs::file_type::block: return "a block device";
+    case fs::file_type::fifo: return "a FIFO (named pipe)";
+    case fs::file_type::socket: return "a socket";
+    default: return ec ? "not readable (" + ec.message() + ")" : "not a regular file";
+  }
+}
 
 void write_file_atomically(const std::string& file, const std::string& text) {
   const std::string tmp = file + ".tmp";
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW, 0644);
+  refuse_non_regular(file, file);
+  refuse_non_regular(tmp, file);
+  // O_NONBLOCK: a FIFO put at <file>.tmp since the check fails to open instead of blocking.
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK, 0644);
   if (fd < 0) fail(tmp, "cannot be created", errno);
+  struct stat st{};
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {  // (a device put there since the check: not ours to remove)
+    ::close(fd);
+    throw std::runtime_error(tmp + ": is not a regular file: refused (writing " + file + ")");
+  }
   std::size_t done = 0;
   while (done < text.size()) {
     const ssize_t n = ::write(fd, text.data() + done, text.size() - done);

@@ -8,8 +8,14 @@ namespace dem {
 
 // Writes `text` to `file` through <file>.tmp, fsync of the file and of its folder, then a rename;
 // throws std::runtime_error naming the file and the reason if any step fails (the old file, if
-// any, is then left as it was, and <file>.tmp is removed).
+// any, is then left as it was, and <file>.tmp is removed). Only a regular file is replaced: a
+// `file` or <file>.tmp that is anything else (a device node such as /dev/full, a FIFO, a folder,
+// a symbolic link) is refused before anything is written, and left as it was.
 void write_file_atomically(const std::string& file, const std::string& text);
+
+// "" for a regular file or nothing at all at `path`; otherwise what is there, not following a
+// symbolic link ("a character device", "a FIFO (named pipe)", "a symbolic link", ...).
+std::string non_regular_kind(const std::string& path);
 
 // fsync of a file that was written and closed (by HDF5, say); throws std::runtime_error naming
 // the file and the reason (e.g. "No space left on device").

@@ -5,6 +5,7 @@
 #include <cctype>
 #include <filesystem>
 
+#include "io/atomic_file.hpp"
 #include "io/hdf5.hpp"
 #include "io/xdmf.hpp"
 #include "run/checkpoint.hpp"
@@ -17,22 +18,6 @@ namespace {
 
 bool ends_with(const std::string& s, const std::string& tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
-}
-
-// "" for a regular file or nothing at all; otherwise what is there (not following a symbolic link).
-std::string non_regular_kind(const std::string& path) {
-  std::error_code ec;
-  switch (fs::symlink_status(path, ec).type()) {
-    case fs::file_type::not_found:
-    case fs::file_type::regular: return "";
-    case fs::file_type::directory: return "a directory";
-    case fs::file_type::symlink: return "a symbolic link";
-    case fs::file_type::character: return "a character device";
-    case fs::file_type::block: return "a block device";
-    case fs::file_type::fifo: return "a FIFO (named pipe)";
-    case fs::file_type::socket: return "a socket";
-    default: return ec ? "not readable (" + ec.message() + ")" : "not a regular file";
-  }
 }
 
 // The same file: the same path once symbolic links, "." and ".." are resolved, or, for files

@@ -56,14 +56,12 @@ Overrides read_overrides(dem::Section& s, const std::string& key, bool for_test,
   const YAML::Node n = s.raw(key, "mapping of scene key paths to values", doc);
   if (!n.IsMap() || n.size() == 0)
     s.fail(key, "must be a non-empty mapping of scene key paths to values, e.g. {numerics.time_step: 2.0e-6}");
-  static const std::regex path_re(R"(^[A-Za-z_][A-Za-z0-9_]*(\[[0-9]+\])?(\.[A-Za-z_][A-Za-z0-9_]*(\[[0-9]+\])?)*$)");
   for (const auto& kv : n) {
     const std::string k = kv.first.IsScalar() ? kv.first.Scalar() : "";
-    if (!std::regex_match(k, path_re))
+    if (!is_key_path(k))
       s.fail(key, "'" + k + "' is not a scene key path (names of letters, digits and _, each with an optional [index], joined by '.')");
-    // The pipeline owns these: run names, and which sample a test starts from.
-    if (k == "name" || (for_test && k.rfind("particles", 0) == 0))
-      s.fail(key + "." + k, "is set by the pipeline; allowed: any other scene key (dem keys lists them)");
+    if (const std::string why = override_key_refusal(k, for_test ? "test" : "prepare", false, false); !why.empty())
+      s.fail(key + "." + k, why);
     if (!kv.second || kv.second.IsNull()) s.fail(key + "." + k, "needs a value");
     // A file named in an override is relative to the study file, like every path of a study.
     YAML::Node value = YAML::Clone(kv.second);
@@ -76,6 +74,22 @@ Overrides read_overrides(dem::Section& s, const std::string& key, bool for_test,
     out.emplace_back(k, e.c_str());
   }
   return out;
+}
+
+bool is_key_path(const std::string& key) {
+  static const std::regex path_re(R"(^[A-Za-z_][A-Za-z0-9_]*(\[[0-9]+\])?(\.[A-Za-z_][A-Za-z0-9_]*(\[[0-9]+\])?)*$)");
+  return std::regex_match(key, path_re);
+}
+
+std::string override_key_refusal(const std::string& key, const std::string& scope, bool ensemble, bool has_tests) {
+  if (!is_key_path(key)) return "is not a scene key path (names of letters, digits and _, each with an optional [index], joined by '.')";
+  const bool particles = key.rfind("particles", 0) == 0;
+  // The pipeline owns these: run names, and which sample a test starts from.
+  if (key == "name" || (scope == "test" && particles)) return "is set by the pipeline; allowed: any other scene key (dem keys lists them)";
+  if (scope == "set" && particles && has_tests) return "would change where the tests' particles come from; put it under prepare:";
+  if (scope != "test" && ensemble && key.rfind("particles.lattice.seed", 0) == 0)
+    return "the study's seeds choose the samples; a variant cannot set the seed of an ensemble";
+  return "";
 }
 
 namespace {
@@ -394,16 +408,14 @@ Study load_study(const std::string& file) {
                     "the tests shear with the density's preparation friction instead of their scenes' material.friction");
       if (var.shear_with_preparation_friction && st.tests.empty())
         v.fail("shear_with_preparation_friction", "needs tests to shear (this study has none)");
-      for (const auto& o : var.set)
-        if (o.first.rfind("particles", 0) == 0 && !st.tests.empty())
-          v.fail("set." + o.first, "would change where the tests' particles come from; put it under prepare:");
       const bool ensemble = !seeds.empty() || std::any_of(st.profiles.begin(), st.profiles.end(),
                                                          [](const Profile& p) { return !p.seeds.empty(); });
-      for (const Overrides* o : {&var.set, &var.prepare})
+      for (const Overrides* o : {&var.set, &var.prepare}) {
+        const std::string scope = o == &var.set ? "set" : "prepare";
         for (const auto& kv : *o)
-          if (ensemble && kv.first.rfind("particles.lattice.seed", 0) == 0)
-            v.fail(std::string(o == &var.set ? "set." : "prepare.") + kv.first,
-                   "the study's seeds choose the samples; a variant cannot set the seed of an ensemble");
+          if (const std::string why = override_key_refusal(kv.first, scope, ensemble, !st.tests.empty()); !why.empty())
+            v.fail(scope + "." + kv.first, why);
+      }
       if (v.has("time_step_fraction")) {
         var.time_step_fraction = v.number("time_step_fraction", "", {0, 10, true}, std::nullopt,
                                           "numerics.time_step as a fraction of the sample's critical step 2 sqrt(m_min/kn)");

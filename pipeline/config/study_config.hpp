@@ -22,6 +22,17 @@ using Overrides = std::vector<std::pair<std::string, std::string>>;
 // none (the key declared, so that a misspelt one gets a suggestion).
 Overrides read_overrides(dem::Section& s, const std::string& key, bool for_test, const std::string& doc);
 
+// Whether `key` has the form of a scene key path (names of letters, digits and _, each with an
+// optional [index], joined by '.').
+bool is_key_path(const std::string& key);
+
+// Why an override may not set `key`, "" if it may: the rules of a study's overrides in one place,
+// which read_overrides, the study's variants and calibrate's parameters (each set a variant) apply.
+// `scope`: "set" (the preparation and the tests), "prepare" or "test"; `ensemble`: the study has
+// seeds (a variant cannot set the seed then); `has_tests`: the study has tests (a variant's set:
+// cannot change their particles then).
+std::string override_key_refusal(const std::string& key, const std::string& scope, bool ensemble, bool has_tests);
+
 struct Density {
   std::string name;    // loose, medium, dense
   double friction = 0; // mu during isotropic compression
@@ -48,6 +59,9 @@ struct Variant {
   // Its own samples (study key seeds, same forms) in place of the profile's: e.g. many small
   // samples beside a few large ones. Empty: the profile's. Only in an ensemble.
   std::vector<std::int64_t> seeds;
+  // Where the variant comes from, for messages about its scenes: "" for the study's own
+  // (`<study file>: variants[N] (name)`); a calibration names its file and the set.
+  std::string origin;
 };
 
 struct Profile {

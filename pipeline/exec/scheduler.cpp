@@ -93,22 +93,26 @@ std::optional<Stop> recorded_stop(const std::string& result, const std::string& 
   return std::nullopt;
 }
 
-std::unique_ptr<dem::FileLock> lock_results_folder(const std::string& out_dir) {
-  std::filesystem::create_directories(out_dir);
-  const std::string path = (std::filesystem::path(out_dir) / ".pipeline.lock").string();
+std::unique_ptr<dem::FileLock> lock_folder(const std::string& dir, const std::string& name, const std::string& tool,
+                                           const std::string& why) {
+  std::filesystem::create_directories(dir);
+  const std::string path = (std::filesystem::path(dir) / name).string();
   auto lock = std::make_unique<dem::FileLock>(path);
   if (!lock->held()) {
-    if (!lock->error().empty()) throw dem::ConfigError(out_dir + ": " + lock->error());
+    if (!lock->error().empty()) throw dem::ConfigError(dir + ": " + lock->error());
     std::string holder = dem::FileLock::read_note(path);
     while (!holder.empty() && holder.back() == '\n') holder.pop_back();
-    throw dem::ConfigError("another pipeline is running in " + out_dir + (holder.empty() ? "" : " (" + holder + ")") +
-                           ": two would run the same runs at once and write the same logs; wait for it to end, or stop it "
-                           "(it resumes where it stopped); nothing was run");
+    throw dem::ConfigError("another " + tool + " is running in " + dir + (holder.empty() ? "" : " (" + holder + ")") + ": " + why +
+                           "; wait for it to end, or stop it (it resumes where it stopped); nothing was run");
   }
   char host[256] = {0};
   gethostname(host, sizeof host - 1);
   lock->note("pid " + std::to_string(getpid()) + " on " + host + "\n");
   return lock;
+}
+
+std::unique_ptr<dem::FileLock> lock_results_folder(const std::string& out_dir) {
+  return lock_folder(out_dir, ".pipeline.lock", "pipeline", "two would run the same runs at once and write the same logs");
 }
 
 std::string engine_version(const std::string& dem) {

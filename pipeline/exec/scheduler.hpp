@@ -37,6 +37,12 @@ std::string engine_version(const std::string& dem);
 // (dem::ConfigError naming the folder and the holder's pid, exit 2), before it writes anything.
 std::unique_ptr<dem::FileLock> lock_results_folder(const std::string& out_dir);
 
+// One `tool` per folder, the same way: holds <dir>/<name> or throws dem::ConfigError "another
+// <tool> is running in <dir> (pid ... on host): <why>; wait for it ..." (`calibrate` locks its
+// report folder with it: two calibrations there would each write the ledger and the posterior).
+std::unique_ptr<dem::FileLock> lock_folder(const std::string& dir, const std::string& name, const std::string& tool,
+                                           const std::string& why);
+
 // True if `result` is a complete result whose `input_hash` attribute equals `hash`.
 bool up_to_date(const std::string& result, const std::string& hash);
 

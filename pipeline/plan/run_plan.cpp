@@ -192,16 +192,17 @@ std::string exact(double x) {
   return buf;
 }
 
-// Errors in scenes with a study's overrides name the study file and where the overrides are
-// (`where`, e.g. "variants[2] (dt2)"), then the engine's message (which names the scene key and
-// what is allowed). Without overrides (`where` empty) the engine's message stands alone.
+// Errors in scenes with a study's overrides name where the overrides are written (`where`, e.g.
+// "study.yaml: variants[2] (dt2)", or a calibration's set: Variant::origin), then the engine's
+// message (which names the scene key and what is allowed). Without overrides (`where` empty) the
+// engine's message stands alone.
 template <class F>
-auto in_context(const Study& study, const std::string& where, F&& f) {
+auto in_context(const std::string& where, F&& f) {
   if (where.empty()) return f();
   try {
     return f();
   } catch (const dem::ConfigError& e) {
-    throw dem::ConfigError(study.file + ": " + where + ": " + e.what());
+    throw dem::ConfigError(where + ": " + e.what());
   }
 }
 
@@ -288,7 +289,7 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
     }
     const Variant& v = variants[vi];
     if (!runs_on(v, sample_of)) continue;
-    const std::string where = named ? "variants[" + std::to_string(vi) + "] (" + v.name + ")" : "";
+    const std::string where = !named ? "" : !v.origin.empty() ? v.origin : study.file + ": variants[" + std::to_string(vi) + "] (" + v.name + ")";
     const std::string prefix = sample_of.folder + (named ? v.name + "_" : "");
     for (const Density& d : study.densities) {
       PlannedRun prep;
@@ -316,7 +317,7 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
                                " reads its spheres from a file (particles.csv or particles.state), which no seed changes; "
                                "give seeds only with a particles.lattice preparation");
       dem::Particles sample;  // only for time_step_fraction
-      in_context(study, where, [&] {
+      in_context(where, [&] {
         dem::apply_override(scene, study.preparation, "name", prep.name);
         std::ostringstream mu;
         mu << d.friction;
@@ -346,7 +347,7 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
       } else {
         prep.scene_text = emit(scene, header);
         const dem::SceneConfig parsed =
-            in_context(study, where, [&] { return dem::scene_from_text(prep.scene_text, prep.scene_file); });
+            in_context(where, [&] { return dem::scene_from_text(prep.scene_text, prep.scene_file); });
         prep.hash = content_hash(engine_version + "\n" + unnamed_text + read_files(parsed));
         prep_index = static_cast<int>(runs.size());
         particles[prep_index] = particles_of(parsed);
@@ -362,7 +363,7 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
       for (std::size_t ti = 0; ti < study.tests.size(); ++ti) {
         const TestCase& t = study.tests[ti];
         const std::string test_where =
-            !where.empty() ? where : t.set.empty() ? "" : "tests[" + std::to_string(ti) + "] (" + t.name + ")";
+            !where.empty() ? where : t.set.empty() ? "" : study.file + ": tests[" + std::to_string(ti) + "] (" + t.name + ")";
         PlannedRun run;
         run.name = prefix + d.name + "_" + t.name;
         run.density = d.name;
@@ -372,7 +373,7 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
         run.may_fail = v.may_fail;
         paths(run);
         YAML::Node ts = load_yaml(t.scene);
-        in_context(study, test_where, [&] {
+        in_context(test_where, [&] {
           dem::apply_override(ts, t.scene, "name", run.name);
           dem::apply_override(ts, t.scene, "particles", "{state: " + fs::absolute(from.result).string() + "}");
           for (const auto& [key, value] : t.set) dem::apply_override(ts, t.scene, key, value);
@@ -399,7 +400,7 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
           return 0;
         });
         run.scene_text = emit(ts, header);
-        const dem::SceneConfig tp = in_context(study, test_where, [&] { return dem::scene_from_text(run.scene_text, run.scene_file); });
+        const dem::SceneConfig tp = in_context(test_where, [&] { return dem::scene_from_text(run.scene_text, run.scene_file); });
         run.hash = content_hash(engine_version + "\n" + computed_text(ts) + "\nfrom " + from.hash);
         run.depends_on = prep_index;
         run.spheres = particles[prep_index];

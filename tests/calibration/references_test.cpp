@@ -185,3 +185,80 @@ TEST_CASE("a set is scored on its samples whose runs all finished, when at least
   // Every sample complete: nothing left out.
   CHECK(calibration::score_complete(refs, {sample("seed1", {}), sample("seed2", {})}).left_out.empty());
 }
+
+TEST_CASE("a curve point no run could be scored against is refused up front, naming the file, the curve and the point", "[calibration]") {
+  const auto refs = [](const std::string& csv, const std::string& curve_keys) {
+    write("p.csv", csv);
+    return error_of([&] {
+      calibration::read_references(write("p.yaml", "source: typed\ncurves: [{name: qp, file: p.csv, x: strain_3, y: q_over_p, "
+                                                   "density: dense, test: triaxial" + curve_keys + "}]\n"),
+                                   "quick");
+    });
+  };
+  // sd 0 at one point, no tolerance: its chi^2 divides by 0 (the whole curve without sd was refused before).
+  const std::string zero = refs("x,y,sd\n0.002,0.8,0.1\n0.008,0.9,0\n", "");
+  CHECK_THAT(zero, Catch::Contains("p.yaml") && Catch::Contains("curve 'qp'") && Catch::Contains("point 2 of") &&
+                       Catch::Contains("p.csv (x = 0.008, y = 0.9, sd = 0) has sd 0"));
+  CHECK(refs("x,y,sd\n0.002,0.8,0.1\n0.008,0.9,0\n", ", tolerance: 0.01") == "accepted");  // the tolerance stands for it
+  // A row without its sd (the header has 3 columns).
+  CHECK_THAT(refs("x,y,sd\n0.002,0.8,0.1\n0.008,0.9\n", ""), Catch::Contains("p.csv:3: 2 columns where the header has 3") &&
+                                                                 Catch::Contains("give every point its sd"));
+  // y = 1e300 against sd 0.1: (y / sd)^2 = 1e602 overflows, whatever the run gives.
+  CHECK_THAT(refs("x,y,sd\n0.002,0.8,0.1\n0.008,1e300,0.1\n", ""), Catch::Contains("point 2 of") && Catch::Contains("would overflow"));
+  // sd = 1e-300: its square, 1e-600, is 0 in double precision.
+  CHECK_THAT(refs("x,y,sd\n0.002,0.8,1e-300\n", ""), Catch::Contains("point 1 of") && Catch::Contains("underflows to 0 or overflows"));
+  CHECK(refs("x,y,sd\n0.002,0.8,1e-100\n", "") == "accepted");  // 1e-200: small, but a number
+}
+
+TEST_CASE("a row whose chi2 is not a number has no value", "[calibration]") {
+  calibration::References r;
+  r.curves = {calibration::CurveRow{"line", "", "x", "y", "dense", "triaxial", 1, 0.1, {{0.5, 1.0, 0.0}}}};
+  validation::TestResult run = line_run();
+  for (double& y : run.series["y"]) y = NAN;  // a run whose column is not finite
+  const calibration::SetMisfit m = calibration::score(r, samples_of({run}));
+  CHECK_FALSE(m.valued);
+  CHECK_THAT(m.rows[0].note, Catch::Contains("not a number"));
+}
+
+TEST_CASE("a curve's columns are the engine's, checked when the references are read (before any run)", "[calibration]") {
+  write("col.csv", "x,y,sd\n0.002,0.8,0.1\n");
+  const auto refs = [](const std::string& x, const std::string& y) {
+    return error_of([&] {
+      calibration::read_references(write("col.yaml", "source: typed\ncurves: [{name: qp, file: col.csv, x: " + x + ", y: " + y +
+                                                         ", density: dense, test: triaxial}]\n"),
+                                   "quick");
+    });
+  };
+  CHECK(refs("strain_3", "q_over_p") == "accepted");
+  CHECK_THAT(refs("strain_3", "q_over_P"), Catch::Contains("col.yaml") && Catch::Contains("y") &&
+                                                Catch::Contains("'q_over_P' is not a column of the runs' time series") &&
+                                                Catch::Contains("q_over_p"));  // the list names the right one
+  CHECK_THAT(refs("axial_strain", "q_over_p"), Catch::Contains("'axial_strain' is not a column"));
+}
+
+TEST_CASE("a kept misfit is checked against its own values: an edited chi2 is caught", "[calibration]") {
+  calibration::References r;
+  r.curves = {calibration::CurveRow{"line", "", "x", "y", "dense", "triaxial", 4, 0.1, {{0.5, 1.2, 0.2}, {0.8, 1.5, 0.2}}}};
+  calibration::SetMisfit m;
+  m.rows = {calibration::score(r, samples_of({line_run(), line_run(), line_run()})).rows[0]};  // the curve alone
+  validation::Row row;
+  row.name = "trend", row.rule = "majority";
+  r.rows = {row};
+  calibration::RowMisfit trend{"trend", -2 * std::log((2 + 0.5) / (3 + 1.0)), 1, "", true, {0.4}, {0.1}, 3};  // holds in 2 of 3
+  m.rows.push_back(trend);
+  m.chi2 = m.rows[0].chi2 + m.rows[1].chi2;
+  REQUIRE(m.rows[0].chi2 > 0);
+  CHECK(calibration::recheck(r, m).empty());
+  calibration::SetMisfit forged = m;
+  forged.chi2 = 0;  // the total alone
+  CHECK_THAT(calibration::recheck(r, forged), Catch::Contains("is not the sum of its rows'"));
+  forged = m;
+  forged.rows[0].chi2 = 0, forged.chi2 = forged.rows[1].chi2;  // a curve's chi2 and the total, consistently
+  CHECK_THAT(calibration::recheck(r, forged), Catch::Contains("'line': its chi^2 0.000000 is not the"));
+  forged = m;
+  forged.rows[1].chi2 = 0.1, forged.chi2 = m.rows[0].chi2 + 0.1;  // no whole count of samples gives 0.1
+  CHECK_THAT(calibration::recheck(r, forged), Catch::Contains("'trend'") && Catch::Contains("count of samples"));
+  forged = m;
+  forged.rows[0].name = "other";
+  CHECK_THAT(calibration::recheck(r, forged), Catch::Contains("row 1 is 'other'"));
+}
