@@ -32,6 +32,16 @@
 // (xy at 1/s: the sheared kernels), interleaved, per CPU second; writes BENCH_DIR/shear.json.
 //   dem-bench shear BENCH_DIR STEPS REPETITIONS [SKIN]
 //
+// The contact laws' price: `dem-bench laws` runs the same test on the same sample with each law
+// (run_scene, one thread, the laws interleaved repetition by repetition): linear (the scene's own
+// law), linear with contact dashpots (0.05 of critical, no body damping, as the studies' dashpot
+// reading), Hertz-Mindlin (E = 5 GPa, nu = 0.3: the dt is 0.17 of its critical step; local body
+// damping, as viscous needs a constant stiffness) and linear with rolling resistance (mu_r = 0.1,
+// k_r = 5e5 N/m), per CPU second of the run per step; each law's cost over linear's is taken
+// repetition by repetition. Default: Test 1 on the shipped 1,000-sphere loose sample, cut to its
+// first 2 cycles. Writes BENCH_DIR/laws.json.
+//   dem-bench laws BENCH_DIR REPETITIONS [SCENE] [PATH]
+//
 #include <omp.h>
 #include <sys/resource.h>
 
@@ -340,6 +350,74 @@ int run_shear(const std::string& dir, long steps, int reps, double skin) {
 }
 
 
+// `dem-bench laws`: see the top of the file.
+int run_laws(const std::string& dir, int reps, const std::string& scene_file, const std::string& path) {
+  using Overrides = std::vector<std::pair<std::string, std::string>>;
+  struct Law {
+    const char* name;
+    Overrides set;
+    std::vector<double> cpu_per_step, ratio;  // [s]; over linear's in the same repetition
+    std::int64_t steps = 0;
+  };
+  std::vector<Law> laws{
+      {"linear", {}, {}, {}},
+      {"linear, contact dashpots",
+       {{"material.contact_damping", "0.05"}, {"damping.translational", "0"}, {"damping.rotational", "0"}},
+       {},
+       {}},
+      {"Hertz-Mindlin",
+       {{"material", "{density: 2650, law: hertz_mindlin, young_modulus: 5.0e9, poisson_ratio: 0.3, friction: 0.5}"},
+        {"damping", "{form: local, translational: 0.05, rotational: 0.05}"}},
+       {},
+       {}},
+      {"linear, rolling resistance", {{"material.rolling_friction", "0.1"}, {"material.rolling_stiffness", "5.0e5"}}, {}, {}},
+  };
+  omp_set_num_threads(1);
+  const std::string out = dir + "/laws_run.h5";
+  for (int r = 0; r < reps; ++r)
+    for (Law& law : laws) {
+      Overrides set = law.set;
+      set.emplace_back("stages[0].path", path);
+      const dem::SceneConfig scene = dem::load_scene(scene_file, set);
+      const double cpu0 = thread_cpu_s();
+      const dem::RunSummary run = dem::run_scene(scene, out, {}, "", dem::Resume::Never);
+      law.cpu_per_step.push_back((thread_cpu_s() - cpu0) / static_cast<double>(run.steps));
+      law.ratio.push_back(law.cpu_per_step.back() / laws[0].cpu_per_step.back());
+      law.steps = run.steps;
+    }
+  std::filesystem::remove(out);
+  std::printf("dem-bench laws: %s, path %s, one thread, %d repetitions\n", scene_file.c_str(), path.c_str(), reps);
+  std::printf("%-28s %-8s %-30s %s\n", "law", "steps", "CPU us per step (median; min .. max)", "over linear (median; min .. max)");
+  nlohmann::ordered_json json = {{"code", "cyclic-triax dem"},
+                                 {"version", dem::software_version},
+                                 {"vector_lanes", dem::simd_width()},
+                                 {"scene", scene_file},
+                                 {"path", path},
+                                 {"repetitions", reps},
+                                 {"runs", nlohmann::ordered_json::array()}};
+  for (Law& law : laws) {
+    std::sort(law.cpu_per_step.begin(), law.cpu_per_step.end());
+    std::sort(law.ratio.begin(), law.ratio.end());
+    const double median = law.cpu_per_step[law.cpu_per_step.size() / 2], ratio = law.ratio[law.ratio.size() / 2];
+    std::printf("%-28s %-8lld %8.3f (%.3f .. %.3f)          %.3f (%.3f .. %.3f)\n", law.name, static_cast<long long>(law.steps),
+                1e6 * median, 1e6 * law.cpu_per_step.front(), 1e6 * law.cpu_per_step.back(), ratio, law.ratio.front(),
+                law.ratio.back());
+    std::string keys;
+    for (const auto& [key, value] : law.set) keys += (keys.empty() ? "" : ", ") + key + ": " + value;
+    json["runs"].push_back({{"law", law.name},
+                            {"set", keys},
+                            {"steps", law.steps},
+                            {"cpu_s_per_step_median", median},
+                            {"min", law.cpu_per_step.front()},
+                            {"max", law.cpu_per_step.back()},
+                            {"over_linear_median", ratio},
+                            {"over_linear_min", law.ratio.front()},
+                            {"over_linear_max", law.ratio.back()}});
+  }
+  write_json(dir + "/laws.json", json);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -373,11 +451,28 @@ int main(int argc, char** argv) {
                                                 "against shearing (xy at 1/s); writes BENCH_DIR/shear.json");
   timing(shear);
   shear->add_option("SKIN", skin, "the Verlet skin of the timed runs [m]")->capture_default_str();
+  std::string scene_file = "scenes/tests/test1.yaml", path = "[TC1, {repeat: 2, path: [TC2, TC3, TC1]}]";
+  CLI::App* laws = app.add_subcommand("laws", "the contact laws' price: the same test on the same sample with each law (linear, "
+                                              "contact dashpots, Hertz-Mindlin, rolling resistance), one thread, per CPU second "
+                                              "per step; writes BENCH_DIR/laws.json");
+  laws->add_option("BENCH_DIR", dir, "where laws.json goes")->required();
+  laws->add_option("REPETITIONS", reps, "repetitions (the median is reported)")->required()->check(CLI::PositiveNumber);
+  laws->add_option("SCENE", scene_file, "the test's scene")->capture_default_str();
+  laws->add_option("PATH", path, "its stress path (the first stage's `path`)")->capture_default_str();
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     const int rc = app.exit(e);  // prints the help, or the error naming the option
     return rc == 0 ? 0 : 2;      // bad arguments: exit 2
+  }
+  if (*laws) {
+    std::filesystem::create_directories(dir);
+    try {
+      return run_laws(dir, reps, scene_file, path);
+    } catch (const std::exception& e) {  // a scene that does not load or a run that fails
+      std::fprintf(stderr, "dem-bench laws: %s\n", e.what());
+      return 1;
+    }
   }
   if (*shear) {
     std::filesystem::create_directories(dir);

@@ -23,6 +23,8 @@ inline Mask no_lanes() { return false; }
 inline V select(Mask m, V if_true, V if_false) { return m ? if_true : if_false; }
 inline V keep(Mask m, V a) { return m ? a : 0.0; }  // a where m, else +0.0
 inline Mask both(Mask a, Mask b) { return a && b; }
+inline Mask either(Mask a, Mask b) { return a || b; }
+inline Mask nonzero(V a) { return a != 0.0; }  // true for NaN
 inline unsigned bits(Mask m) { return m ? 1u : 0u; }
 inline Mask not_ge(V a, V b) { return !(a >= b); }
 inline Mask greater(V a, V b) { return a > b; }

@@ -376,4 +376,33 @@ MotionSums forces_and_motion(int simd_lanes, const Law& law, const DampingPolicy
                              const PairIndex& index, const CellRates& rates, double dt, PairForces& out,
                              StepSums& sums, std::vector<Vec3>& force);
 
+// What the second half of the contact dashpots' work reads (dashpot_second_half), as raw pointers.
+struct DashpotWork {
+  const Vec3* __restrict force;   // PairForces::dashpot_force
+  const Vec3* __restrict branch;  // PairForces::dashpot_branch
+  const std::uint32_t* __restrict first;
+  const std::uint32_t* __restrict second;
+  const Vec3* __restrict v;
+  const Vec3* __restrict omega;
+  const double* __restrict radius;
+  Vec3 axial, shear;  // the cell's rates of the coming step (CellRates)
+};
+
+// Laws with contact dashpots: the second half of their work in the step just taken [J]. The
+// dashpots take dt F_d . u_mid in a step: F_d their force at this evaluation (on `second`, normal
+// and tangential), u_mid the relative velocity of the contact point at the mean of the half steps
+// before and after it, u = v_j - v_i - G l - (a_i w_i + a_j w_j) x n (the affine part with the
+// velocity gradient of the coming step, as the next evaluation's closing speed takes it). That is
+// the work the time-centred kinetic energy sees: the leapfrog changes 1/2 m v(n-1/2).v(n+1/2) by
+// dt v(n-1/2).(F_n + F_(n-1))/2, i.e. by dt F_n.(v(n-1/2) + v(n+1/2))/2 summed over the steps.
+// The pair loop books the half with v(n-1/2); this is the half with v(n+1/2), from the forces and
+// branch vectors it stored, `simd_lanes` pairs at a time (the same bits at any width: each pair's
+// term is subtracted from the sum in pair order). Booking dt F_d . u(n-1/2) alone leaves
+// c dt/4 (u_end^2 - u_start^2) open per contact, an O(dt) closure error; with both halves what is
+// left is the leapfrog's O(dt^2) (energy_balance_test.cpp). Instantiated for the laws with
+// dashpots (dynamics/kernel_simd_dashpot.cpp).
+template <class Law>
+double dashpot_second_half(int simd_lanes, const Particles& p, const PairList& pairs, const PairForces& out,
+                           const CellRates& rates, double dt);
+
 }  // namespace dem

@@ -122,6 +122,8 @@ inline Mask no_lanes() { return _mm256_setzero_pd(); }
 inline V select(Mask m, V if_true, V if_false) { return _mm256_blendv_pd(if_false, if_true, m); }
 inline V keep(Mask m, V a) { return _mm256_and_pd(m, a); }  // a where m, else +0.0
 inline Mask both(Mask a, Mask b) { return _mm256_and_pd(a, b); }
+inline Mask either(Mask a, Mask b) { return _mm256_or_pd(a, b); }
+inline Mask nonzero(V a) { return _mm256_cmp_pd(a, zero(), _CMP_NEQ_UQ); }  // true for NaN
 inline unsigned bits(Mask m) { return static_cast<unsigned>(_mm256_movemask_pd(m)); }
 inline Mask not_ge(V a, V b) { return _mm256_cmp_pd(a, b, _CMP_NGE_UQ); }
 inline Mask greater(V a, V b) { return _mm256_cmp_pd(a, b, _CMP_GT_OQ); }
@@ -389,6 +391,8 @@ inline Mask no_lanes() { return 0; }
 inline V select(Mask m, V if_true, V if_false) { return _mm512_mask_blend_pd(m, if_false, if_true); }
 inline V keep(Mask m, V a) { return _mm512_maskz_mov_pd(m, a); }  // a where m, else +0.0
 inline Mask both(Mask a, Mask b) { return static_cast<Mask>(a & b); }
+inline Mask either(Mask a, Mask b) { return static_cast<Mask>(a | b); }
+inline Mask nonzero(V a) { return _mm512_cmp_pd_mask(a, zero(), _CMP_NEQ_UQ); }  // true for NaN
 inline unsigned bits(Mask m) { return m; }
 inline Mask not_ge(V a, V b) { return _mm512_cmp_pd_mask(a, b, _CMP_NGE_UQ); }
 inline Mask greater(V a, V b) { return _mm512_cmp_pd_mask(a, b, _CMP_GT_OQ); }
@@ -524,12 +528,26 @@ MotionSums forces_and_motion(int simd_lanes, const Law& law, const DampingPolicy
   return total_of_chunks(out.motion_sums, wrapped);
 }
 
+template <class Law>
+double dashpot_second_half(int simd_lanes, const Particles& p, const PairList& pairs, const PairForces& out,
+                           const CellRates& rates, double dt) {
+  const DashpotWork w{out.dashpot_force.data(), out.dashpot_branch.data(), pairs.first.data(), pairs.second.data(),
+                      p.v.data(), p.omega.data(), p.radius.data(), rates.axial, rates.shear};
+  const std::size_t n = pairs.size();
+  double lost = 0;
+  std::size_t k = 0;  // pairs before k done by the vector loop
+  if (simd_lanes == 8) k = n / 8 * 8, lost = avx512::dashpot_work<Law>(w, 0, k, lost);
+  if (simd_lanes == 4) k = n / 4 * 4, lost = avx2::dashpot_work<Law>(w, 0, k, lost);
+  lost = one_lane::dashpot_work<Law>(w, k, n, lost);
+  return 0.5 * dt * lost;
+}
+
 // forces_and_motion for every law a scene can choose, both damping forms, orthorhombic and
-// sheared: the table's addresses make the compiler emit each instantiation for
-// dynamics/simulation.cpp to call. Each law is emitted by one of three units: this one the laws of
-// the studies (normal part LinearNormal or HertzNormal), dynamics/kernel_simd_dashpot.cpp the laws
-// with contact dashpots, dynamics/kernel_simd_other.cpp every other law (a new law lands there with
-// no change here). GCC's inlining budget is per unit: with the dashpot laws in this one it stopped
+// sheared, and dashpot_second_half for a law with dashpots: the table's addresses make the
+// compiler emit each instantiation for dynamics/simulation.cpp to call. Each law is emitted by
+// one of three units: this one the laws of the studies (normal part LinearNormal or HertzNormal),
+// dynamics/kernel_simd_dashpot.cpp the laws with contact dashpots, dynamics/kernel_simd_other.cpp
+// every other law (a new law lands there with no change here). GCC's inlining budget is per unit: with the dashpot laws in this one it stopped
 // inlining Accumulator::add into the other laws' loops (2-3 % slower); apart, the studies' laws'
 // code is what it was without them, whatever laws are added.
 #ifndef DEM_KERNEL_UNIT
@@ -552,7 +570,11 @@ constexpr int kernel_unit() {
 }
 template <class Law>
 auto steps_of() {
-  if constexpr (kernel_unit<Law>() == DEM_KERNEL_UNIT) {
+  if constexpr (kernel_unit<Law>() == DEM_KERNEL_UNIT && Law::damped) {
+    return std::make_tuple(&forces_and_motion<Law, ViscousDamping, false>, &forces_and_motion<Law, ViscousDamping, true>,
+                           &forces_and_motion<Law, LocalDamping, false>, &forces_and_motion<Law, LocalDamping, true>,
+                           &dashpot_second_half<Law>);
+  } else if constexpr (kernel_unit<Law>() == DEM_KERNEL_UNIT) {
     return std::make_tuple(&forces_and_motion<Law, ViscousDamping, false>, &forces_and_motion<Law, ViscousDamping, true>,
                            &forces_and_motion<Law, LocalDamping, false>, &forces_and_motion<Law, LocalDamping, true>);
   } else {

@@ -54,38 +54,6 @@ struct Simulation::Kernel {
   virtual double dashpot_second_half(const Simulation& sim) const = 0;
 };
 
-// The contact dashpots take dt F_d . u_mid in a step: F_d their force at this evaluation (on
-// `second`, normal and tangential), u_mid the relative velocity of the contact point at the mean
-// of the half steps before and after it, u = v_j - v_i - G l - (a_i w_i + a_j w_j) x n (the affine
-// part with the velocity gradient of the coming step, as the next evaluation's closing speed
-// takes it). That is the work the time-centred kinetic energy sees: the leapfrog changes
-// 1/2 m v(n-1/2).v(n+1/2) by dt v(n-1/2).(F_n + F_(n-1))/2, i.e. by dt F_n.(v(n-1/2) + v(n+1/2))/2
-// summed over the steps. The pair loop books the half with v(n-1/2); this is the half with
-// v(n+1/2), from the forces and branch vectors it stored. Booking dt F_d . u(n-1/2) alone (as the
-// pair loop did) leaves c dt/4 (u_end^2 - u_start^2) open per contact, an O(dt) closure error;
-// with both halves what is left is the leapfrog's O(dt^2) (energy_balance_test.cpp).
-template <class Law>
-double dashpot_second_half(const Particles& p, const PairList& pairs, const PairForces& out, const CellRates& rates, double dt) {
-  double lost = 0;
-  const Vec3& g = rates.axial;
-  const Vec3& shear = rates.shear;
-  for (std::size_t k = 0; k < pairs.size(); ++k) {
-    const Vec3& f = out.dashpot_force[k];
-    if (f.isZero(0)) continue;  // out of contact (or a dashpot at rest: adds nothing)
-    const std::uint32_t i = pairs.first[k], j = pairs.second[k];
-    const Vec3& l = out.dashpot_branch[k];
-    const Vec3 affine(g[0] * l[0] + shear[0] * l[1] + shear[1] * l[2], g[1] * l[1] + shear[2] * l[2], g[2] * l[2]);
-    Vec3 u = (p.v[j] - p.v[i]) - affine;
-    if constexpr (Law::rotates) {
-      const double dist = l.norm(), overlap = p.radius[i] + p.radius[j] - dist;
-      const Vec3 n = l / dist;
-      u -= ((p.radius[i] - 0.5 * overlap) * p.omega[i] + (p.radius[j] - 0.5 * overlap) * p.omega[j]).cross(n);
-    }
-    lost -= f.dot(u);
-  }
-  return 0.5 * dt * lost;
-}
-
 template <class Law, class DampingPolicy>
 struct KernelImpl final : Simulation::Kernel {
   Law law;
@@ -100,7 +68,7 @@ struct KernelImpl final : Simulation::Kernel {
   }
   double dashpot_second_half(const Simulation& s) const override {
     if constexpr (Law::damped) {
-      return dem::dashpot_second_half<Law>(s.particles_, s.list_.pairs(), *s.pair_forces_, s.rates_, s.dt_);
+      return dem::dashpot_second_half<Law>(simd, s.particles_, s.list_.pairs(), *s.pair_forces_, s.rates_, s.dt_);
     } else {
       return 0.0;
     }

@@ -18,6 +18,10 @@
 # codes (each repetition: the packing again, 200 warm-up steps, then STEPS timed); the steps shrink
 # with the size so that the whole benchmark stays near a quarter of an hour. SIZE_PLAN="" skips it.
 #
+# The contact laws' price: `dem-bench laws` runs Test 1's first 2 cycles on the shipped 1,000-sphere
+# loose sample with each law (linear, contact dashpots, Hertz-Mindlin, rolling resistance), one
+# thread, LAWS_REPS repetitions (default 5) interleaved, per CPU second per step.
+#
 # Every program writes JSON with nlohmann-json (dem-bench; lammps_bench.sh through `bench-report lammps-json`);
 # build/bin/bench-report reads them all and writes bench.json and bench.md.
 set -euo pipefail
@@ -52,6 +56,9 @@ echo "== our engine (dem-bench) =="
 
 echo "== our engine: the sheared cell's price (dem-bench shear) =="
 "$build/bin/dem-bench" shear "$work" "$steps" "$reps" "$SKIN"
+
+echo "== our engine: the contact laws' price (dem-bench laws) =="
+"$build/bin/dem-bench" laws "$work" "${LAWS_REPS:-5}"
 
 echo "== LAMMPS, same packings =="
 cases="mu05:0.5 mu0:0 mu0:0.5"   # packing:friction, the engine's order

@@ -9,7 +9,7 @@
 //   bench-report lammps-json LOG_DIR OUT.json ...   (lammps_bench.sh's JSON from its LAMMPS logs:
 //                validation/bench_report_lammps.cpp)
 //
-// BENCH_DIR holds, from dem-bench: bench.json, shear.json and size_<N>_tiled.json for each of
+// BENCH_DIR holds, from dem-bench: bench.json, shear.json, laws.json and size_<N>_tiled.json for each of
 // --sizes; from reports/bench/lammps_bench.sh: lammps_<packing>_<friction>.json for each case
 // PACKING:FRICTION of --cases, and lammps_size_<N>.json. A file or a run that is missing is an
 // error naming it (exit 1); bad arguments exit 2.
@@ -220,6 +220,33 @@ std::string sheared_cell(const Options& o, const json& shear, const std::string&
   return md;
 }
 
+// The contact laws' price (dem-bench laws).
+std::string contact_laws(const json& laws, const std::string& file) {
+  validation::MarkdownTable table({"law", "steps", "CPU µs per step (median)", "min – max", "over linear (median)", "min – max"});
+  if (!laws.contains("runs") || !laws.at("runs").is_array() || laws.at("runs").empty())
+    throw std::runtime_error(file + ": no runs");
+  for (const json& r : laws.at("runs")) {
+    if (!r.contains("law") || !r.at("law").is_string()) throw std::runtime_error(file + ": a run without its 'law'");
+    table.row({r.at("law").get<std::string>(), format("%.0f", number(r, "steps", file)),
+               format("%.2f", 1e6 * number(r, "cpu_s_per_step_median", file)),
+               format("%.2f – %.2f", 1e6 * number(r, "min", file), 1e6 * number(r, "max", file)),
+               format("%.3f", number(r, "over_linear_median", file)),
+               format("%.3f – %.3f", number(r, "over_linear_min", file), number(r, "over_linear_max", file))});
+  }
+  std::string keys;
+  for (const json& r : laws.at("runs"))
+    if (r.contains("set") && r.at("set").is_string() && !r.at("set").get<std::string>().empty())
+      keys += "- " + r.at("law").get<std::string>() + ": `" + r.at("set").get<std::string>() + "`\n";
+  std::string md = "\n### The contact laws\n\n" + table.text();
+  md += "\n`dem-bench laws`: the same test on the same sample with each law, whole runs (`run_scene`: the test's\n"
+        "stage, its rows and result file) on one thread, the laws interleaved repetition by repetition, per CPU\n"
+        "second of the run per step; \"over linear\": each repetition's cost per step over linear's in the same\n"
+        "repetition. The test: " + laws.value("scene", std::string("?")) + " with the path " +
+        laws.value("path", std::string("?")) + ", " + format("%.0f", number(laws, "repetitions", file)) +
+        " repetitions. Each law's keys over the scene's:\n\n" + keys;
+  return md;
+}
+
 void write(const std::string& file, const std::string& text) {
   std::ofstream out(file);
   out << text;
@@ -237,8 +264,9 @@ int report(const Options& o) {
   for (const std::string& w : words(o.sizes)) sizes.push_back(std::stoll(w));
 
   const std::string engine_file = o.bench_dir + "/bench.json", shear_file = o.bench_dir + "/shear.json";
-  const json engine = read_json(engine_file), shear = read_json(shear_file);
-  json all = {{"engine", engine}, {"sheared_cell", shear}, {"lammps", json::array()}};
+  const std::string laws_file = o.bench_dir + "/laws.json";
+  const json engine = read_json(engine_file), shear = read_json(shear_file), laws = read_json(laws_file);
+  json all = {{"engine", engine}, {"sheared_cell", shear}, {"contact_laws", laws}, {"lammps", json::array()}};
   for (const Case& c : cases) all["lammps"].push_back(read_json(o.bench_dir + "/lammps_" + c.packing + "_" + c.friction + ".json"));
   std::vector<json> size_engine, size_lammps;
   for (long long n : sizes) {
@@ -250,6 +278,7 @@ int report(const Options& o) {
   std::string md = side_by_side(o, cases, engine, engine_file);
   if (!sizes.empty()) md += cost_against_size(o, sizes, size_engine, size_lammps);
   md += sheared_cell(o, shear, shear_file);
+  md += contact_laws(laws, laws_file);
   write(o.out_dir + "/bench.json", all.dump(2) + "\n");
   write(o.out_dir + "/bench.md", md);
   return 0;
