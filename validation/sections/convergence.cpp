@@ -342,7 +342,7 @@ std::string precision_table(const std::vector<DensityBudget>& all, const nlohman
     }
     const bool ok = known && widest <= tol;
     ++rows, within += ok;
-    t.row({row.at("name").get<std::string>() + (rb.proxy ? " (cycles 1–2)" : ""), number(tol), known ? number(widest) : "—", of,
+    t.row({row.at("name").get<std::string>() + (rb.proxy ? ", read on cycles 1–2 of Test 1" : ""), number(tol), known ? number(widest) : "—", of,
            ok ? "yes" : "no", needs.empty() ? "—" : needs});
   }
   if (rows == 0) return "";
@@ -398,7 +398,7 @@ int write_section(const ConvergenceSummary& s, const std::string& out, const std
        << " are the scatter between samples (sd, and sd/√" << paper_samples << ").\n\n";
     validation::MarkdownTable t({"quantity", "paper's settings", "Δt of the test", "Δt of the preparation", "rate", "size", "one sample",
                                  "mean of 5", "converged"});
-    validation::MarkdownTable pairs({"quantity", "Δt of the test", "Δt of the preparation", "rate"});
+    validation::MarkdownTable pairs({"quantity", "Δt of the test", "Δt of the preparation", "rate", "size: χ²/dof about the line"});
     std::map<std::string, std::vector<std::string>> hows;  // "factor: how" -> quantities
     std::vector<std::string> unhelped;                      // "quantity (factor)" where the pairs decorrelated
     for (const Budget& b : d.budgets) {
@@ -413,7 +413,7 @@ int write_section(const ConvergenceSummary& s, const std::string& out, const std
         r.push_back(std::isfinite(f->correlation) ? fixed2(f->correlation) : "—");
         if (std::isfinite(f->correlation) && f->correlation < decorrelated_below) unhelped.push_back(heading_of(b.quantity) + " (" + factor + ")");
       }
-      pairs.row({heading_of(b.quantity), r[0], r[1], r[2]});
+      pairs.row({heading_of(b.quantity), r[0], r[1], r[2], std::isfinite(b.size.lack_of_fit) ? fixed2(b.size.lack_of_fit) : "—"});
       hows["Δt of the test: " + b.time_step.how].push_back(heading_of(b.quantity));
       hows["Δt of the preparation: " + b.preparation_step.how].push_back(heading_of(b.quantity));
       hows["rate: " + b.rate.how].push_back(heading_of(b.quantity));
@@ -430,9 +430,10 @@ int write_section(const ConvergenceSummary& s, const std::string& out, const std
       for (std::size_t k = 0; k < qs.size(); ++k) md << (k ? ", " : "") << qs[k];
       md << "\n";
     }
-    md << "\nHow well the pairs held: the correlation over the samples of the paper's setting's values with the other "
+    md << "\nHow well the pairs held, and the size's line: the correlation over the samples of the paper's setting's values with the other "
           "setting's (Δt of the test: the finest step on the same prepared samples; of the preparation: the same seeds prepared at "
-          "the paper's and the finest step; rate: the slowest rate on the same prepared samples). Near 1 the pairs cancel the "
+          "the paper's and the finest step; rate: the slowest rate on the same prepared samples), and how far the sizes' means "
+          "stray from their line in 1/N (χ²/dof; above 1 the size's interval is widened by its root). Near 1 the pairs cancel the "
           "samples' scatter; below " << fixed2(decorrelated_below) << " pairing did not help";
     if (unhelped.empty()) md << " (no quantity here).\n\n";
     else {

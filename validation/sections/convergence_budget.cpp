@@ -152,9 +152,9 @@ FactorError size_error(const std::map<long, PerSeed>& by_size, long n_paper) {
       const double w = z.n / (z.x * static_cast<double>(n_paper)), r = z.mean - intercept - slope * z.x;
       chi2 += w * r * r / s2;
     }
-    const double reduced = chi2 / (k - 2);
-    if (reduced > 1) se *= std::sqrt(reduced);
-    how += ", means about the line χ²/dof " + fixed(reduced, 2) + (reduced > 1 ? " (interval widened by its root)" : "");
+    f.lack_of_fit = chi2 / (k - 2);
+    if (f.lack_of_fit > 1) se *= std::sqrt(f.lack_of_fit);
+    how += ", the interval widened by √(χ²/dof) of the means about the line where that exceeds 1";
   } else {
     how += " (two: the 1/N form assumed)";
   }

@@ -33,6 +33,8 @@ struct FactorError {
   bool across_sizes = false;  // the size factor: every sample its own packing, nothing paired
   double sd = std::numeric_limits<double>::quiet_NaN();
   double correlation = std::numeric_limits<double>::quiet_NaN();
+  // Size: chi^2/dof of the sizes' means about the line (three sizes or more; NaN: not tested).
+  double lack_of_fit = std::numeric_limits<double>::quiet_NaN();
 };
 
 // Pearson's correlation of the values two settings gave on the same samples (seeds in both);
