@@ -3,8 +3,11 @@ BUILD    ?= build
 JOBS     ?= $(shell nproc 2>/dev/null || echo 2)
 # python3-h5py and python3-pandas: the README's Python lines and the clients' tests (tests/clients/),
 # with Debian's interpreter, /usr/bin/python3 (a python3 earlier on PATH, e.g. pyenv's, lacks them);
+# pybind11-dev, python3-dev, python3-numpy, python3-yaml: the Python module cyclic_triax (python/);
+# python3-pytest, jupyter-nbconvert, python3-ipykernel: its tests and its notebook (examples/python/);
 # cmark-gfm: reports/index.html from reports/index.md.
-PACKAGES := g++ cmake make libeigen3-dev libhdf5-dev libyaml-cpp-dev catch2 gnuplot-nox hdf5-tools libboost-math-dev libboost-dev libcli11-dev nlohmann-json3-dev python3-h5py python3-pandas cmark-gfm
+PACKAGES := g++ cmake make libeigen3-dev libhdf5-dev libyaml-cpp-dev catch2 gnuplot-nox hdf5-tools libboost-math-dev libboost-dev libcli11-dev nlohmann-json3-dev python3-h5py python3-pandas \
+            pybind11-dev python3-dev python3-numpy python3-yaml python3-pytest jupyter-nbconvert python3-ipykernel cmark-gfm
 SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 RESULTS  ?= results/study/paper
@@ -54,7 +57,7 @@ build: deps
 
 # Only what the studies and the report use (not the tests or the benchmark: from nothing, 1 min 11 s
 # instead of 2 min 38 s on this machine).
-TOOLS := dem pipeline validate compare-runs ensemble-cycles figure-data report calibrate
+TOOLS := dem pipeline validate compare-runs ensemble-cycles figure-data report calibrate python_module
 tools: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
 	cmake --build $(BUILD) -j $(JOBS) --target $(TOOLS)

@@ -5,8 +5,8 @@
 //   dem columns [--legs]                   the columns of a result's /timeseries (/legs), as engine/README.md lists them
 //   dem table | state | summary RESULT.h5  read a result
 //   dem render RESULT.h5 --out FRAME.png   draw its last frame with ParaView (reports/render/render.sh)
+//   dem plot RESULT.h5 X Y [MORE.h5 ...]   one column against another, results overlaid (gnuplot; cli/plot.cpp)
 #include <fcntl.h>
-#include <omp.h>
 #include <sys/file.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -30,13 +30,13 @@
 #include "config/yaml_section.hpp"
 #include "analysis/legs.hpp"
 #include "analysis/time_series.hpp"
+#include "cli/plot.hpp"
 #include "io/hdf5.hpp"
 #include "io/result_writer.hpp"  // describe_failure
 #include "io/state_io.hpp"
 #include "io/xdmf.hpp"
-#include "io/file_lock.hpp"
 #include "run/output_path.hpp"
-#include "run/run_scene.hpp"
+#include "run/run_request.hpp"
 #include "source_hash.hpp"
 #include "version.hpp"
 
@@ -187,58 +187,20 @@ struct RunArgs {
 };
 
 int run(const RunArgs& args) {
-  const std::string& scene_file = args.scene_file;
-  const std::string& out = args.out;
-  const bool quiet = args.quiet;
-  const std::string& input_hash = args.input_hash;
-  const int threads = args.threads;
-  const bool force = args.force;
-  const dem::Resume resume = args.resume ? dem::Resume::Always : args.no_resume ? dem::Resume::Never : dem::Resume::IfValid;
-  std::vector<std::pair<std::string, std::string>> overrides;
+  dem::RunRequest request;
+  request.scene_file = args.scene_file;
+  request.out = args.out;
+  request.input_hash = args.input_hash;
+  request.threads = args.threads;
+  request.force = args.force;
+  request.resume = args.resume ? dem::Resume::Always : args.no_resume ? dem::Resume::Never : dem::Resume::IfValid;
   for (const std::string& kv : args.sets) {
     const auto eq = kv.find('=');
     if (eq == std::string::npos || eq == 0) { std::fprintf(stderr, "dem run: --set needs KEY=VALUE, got '%s'\n", kv.c_str()); return 2; }
-    overrides.emplace_back(kv.substr(0, eq), kv.substr(eq + 1));
+    request.overrides.emplace_back(kv.substr(0, eq), kv.substr(eq + 1));
   }
-  // Where the result goes (run/output_path.hpp): its name and folder first, then what the scene
-  // reads, then, under the lock, what is there now.
-  const auto refused = [&](const std::exception& e) {
-    std::fprintf(stderr, "error: %s; nothing was run\n", e.what());
-    return 2;
-  };
+  ProgressLine line(isatty(STDERR_FILENO) != 0, args.progress_interval_s);
   try {
-    dem::check_output_name(out);
-  } catch (const dem::OutputPathError& e) {
-    return refused(e);
-  }
-  dem::SceneConfig scene;
-  try {
-    scene = dem::load_scene(scene_file, overrides);
-    dem::check_output_not_input(out, scene);
-  } catch (const dem::OutputPathError& e) {
-    return refused(e);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "error: %s\n", e.what());
-    return 2;
-  }
-  // One writer per result: a second `dem run` to the same --out refuses instead of writing into
-  // the same partial file and checkpoint. The lock goes with the process, however it ends; names
-  // another result's files use (.partial, ...) are refused above, so it covers the whole family.
-  // The lock file is removed however the run ends (refused, failed or complete): io/file_lock.hpp.
-  const dem::FileLock lock(out + ".lock");
-  if (!lock.held()) {
-    std::fprintf(stderr, "error: --out %s: %s; nothing was run\n", out.c_str(),
-                 (lock.error().empty() ? "another dem run is writing this result (it holds " + out + ".lock)" : lock.error()).c_str());
-    return 2;
-  }
-  try {
-    dem::check_output_replaceable(out, scene, input_hash, force);
-  } catch (const dem::OutputPathError& e) {
-    return refused(e);
-  }
-  omp_set_num_threads(threads);
-  try {
-    ProgressLine line(isatty(STDERR_FILENO) != 0, args.progress_interval_s);
     LongStageWarning long_stage;
     dem::RunObserver observer;
     observer.stop = &stop_signal;
@@ -248,32 +210,31 @@ int run(const RunArgs& args) {
       std::fprintf(stderr, "warning: %s\n", w.c_str());
     };
     observer.progress = [&](const dem::RunProgress& p) {
-      if (!quiet) line.draw(p);
+      if (!args.quiet) line.draw(p);
       if (const std::string w = long_stage.check(p); !w.empty()) observer.warning(w);
     };
     observer.note = [&](const std::string& n) {
       line.new_line();
       std::fprintf(stderr, "%s\n", n.c_str());
     };
-    dem::RunSummary s;
-    try {
-      s = dem::run_scene(scene, out, observer, input_hash, resume);
-    } catch (...) {
-      line.new_line();
-      throw;
-    }
+    const dem::RunSummary s = dem::run_request(request, observer);
     line.clear();
-    std::fprintf(stderr, "%s: %lld steps in %.1f s (%.3g steps/s", scene.name.c_str(), static_cast<long long>(s.steps),
+    std::fprintf(stderr, "%s: %lld steps in %.1f s (%.3g steps/s", s.scene.c_str(), static_cast<long long>(s.steps),
                  s.wall_time_s, static_cast<double>(s.steps) / s.wall_time_s);
-    if (threads > 1) std::fputs(threads_line(threads, s).c_str(), stderr);
-    std::fprintf(stderr, ") -> %s\n", out.c_str());
+    if (args.threads > 1) std::fputs(threads_line(args.threads, s).c_str(), stderr);
+    std::fprintf(stderr, ") -> %s\n", args.out.c_str());
     return 0;
-  } catch (const dem::ConfigError& e) {
+  } catch (const dem::OutputPathError& e) {  // nothing was written
+    std::fprintf(stderr, "error: %s; nothing was run\n", e.what());
+    return 2;
+  } catch (const dem::ConfigError& e) {  // bad input: nothing was written
+    line.new_line();
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "error: %s: %s\n", scene_file.c_str(), dem::describe_failure(e).c_str());
-    if (std::filesystem::exists(out + ".partial")) std::fputs(partial_kept_line(out + ".partial").c_str(), stderr);
+    line.new_line();
+    std::fprintf(stderr, "error: %s: %s\n", args.scene_file.c_str(), dem::describe_failure(e).c_str());
+    if (std::filesystem::exists(args.out + ".partial")) std::fputs(partial_kept_line(args.out + ".partial").c_str(), stderr);
     return 1;
   }
 }
@@ -533,6 +494,19 @@ int main(int argc, char** argv) {
       "installs Debian's paraview, python3-paraview and xvfb if they are missing (apt-get, with sudo when not root). "
       "Exit status: 0 drawn, 1 the render failed, 2 bad input.");
 
+  dem::PlotArgs pa;
+  std::vector<std::string> plot_positional;
+  CLI::App* plot_cmd = app.add_subcommand("plot", "draw one column of results against another with gnuplot, to a PNG or the terminal");
+  plot_cmd->add_option("args", plot_positional, "RESULT.h5 X Y [MORE_RESULTS.h5 ...]: the first result, the columns of the x "
+                       "and y axes (dem columns lists them), more results overlaid")->required()->expected(3, -1);
+  plot_cmd->add_option("--out", pa.out, "the picture (PNG); without it the plot is drawn on the terminal");
+  plot_cmd->add_option("--term", pa.term, "png or dumb (text on the terminal); default png with --out, else dumb")
+      ->check(CLI::IsMember({"png", "dumb"}));
+  plot_cmd->add_option("--title", pa.title, "the title (default: 'Y against X')");
+  plot_cmd->add_flag("--legs", pa.legs, "columns of the per-leg table /legs instead of /timeseries");
+  plot_cmd->footer("A partial result (RESULT.h5.partial) is drawn as far as it goes, its key saying so. Needs gnuplot "
+                   "(Debian's gnuplot-nox). Exit status: 0 drawn, 1 gnuplot failed, 2 bad input.");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -557,6 +531,12 @@ int main(int argc, char** argv) {
   if (*state_cmd) return state(state_file);
   if (*summary_cmd) return summary(summary_files);
   if (*render_cmd) return render(rda);
+  if (*plot_cmd) {
+    pa.results = {plot_positional[0]};
+    pa.results.insert(pa.results.end(), plot_positional.begin() + 3, plot_positional.end());
+    pa.x = plot_positional[1], pa.y = plot_positional[2];
+    return dem::plot(pa);
+  }
   std::fputs(app.help().c_str(), stderr);  // no sub-command: what there is
   return 2;
 }

@@ -509,8 +509,9 @@ SceneConfig load_scene(const std::string& file, const std::vector<std::pair<std:
   return parse_scene(Section::load_file(file, overrides), file);
 }
 
-SceneConfig scene_from_text(const std::string& text, const std::string& file) {
-  return parse_scene(Section::from_text(text, file), file);
+SceneConfig scene_from_text(const std::string& text, const std::string& file,
+                            const std::vector<std::pair<std::string, std::string>>& overrides) {
+  return parse_scene(Section::from_text(text, file, overrides), file);
 }
 
 std::string scene_key_reference() {

@@ -133,7 +133,8 @@ inline constexpr std::int64_t max_scene_steps = 1'000'000'000'000;
 // `overrides`: (key path, YAML value) pairs applied before validation (`dem run --set`).
 SceneConfig load_scene(const std::string& file, const std::vector<std::pair<std::string, std::string>>& overrides = {});
 // The same from YAML text; `file` names it in error messages and resolves relative paths.
-SceneConfig scene_from_text(const std::string& text, const std::string& file);
+SceneConfig scene_from_text(const std::string& text, const std::string& file,
+                            const std::vector<std::pair<std::string, std::string>>& overrides = {});
 
 // The key reference (`dem keys`): every key with unit, allowed values, default and doc.
 std::string scene_key_reference();

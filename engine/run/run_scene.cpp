@@ -687,7 +687,7 @@ RunSummary run_stages(Simulation& sim, const SceneConfig& scene, const Checkpoin
   std::error_code gone;  // the result supersedes the checkpoint (a stale one would only be resumed to the same end)
   if (std::filesystem::remove(checkpoint_path(out_path), gone); gone && observer.warning)
     observer.warning(checkpoint_path(out_path) + ": not removed: " + gone.message());
-  RunSummary summary{sim.step_count(), wall};
+  RunSummary summary{scene.name, sim.step_count(), wall};
   summary.threads = usable;
   summary.steps_on_one_thread = threads.steps_on_one();
   summary.thread_trials = threads.trials();

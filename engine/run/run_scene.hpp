@@ -114,6 +114,7 @@ void run_stage(Simulation& sim, const SceneConfig& scene, int index, const Stage
 std::string energy_error_cause(const Simulation& sim);
 
 struct RunSummary {
+  std::string scene;  // its name
   std::int64_t steps = 0;
   double wall_time_s = 0;
   // Threads (run/thread_choice.hpp): the count the run could use (those asked, at most one per

@@ -27,8 +27,10 @@ skip @@ make test @@ runs this test
 instead @@ build/bin/dem run scenes/prepare_dense.yaml --out RESULT.h5 --threads 2 @@ build/bin/dem run scenes/prepare_dense.yaml --out RESULT.h5 --threads 1 --set 'particles.lattice.n=[4, 4, 4]' @@ 8,000 spheres take minutes: the same scene with 64
 run @@ build/bin/dem table RESULT.h5 time p void_ratio coordination_number
 run @@ build/bin/dem summary RESULT.h5
+run @@ build/bin/dem plot RESULT.h5 time p --out p.png
 run @@ build/bin/dem keys; build/bin/dem columns
 run @@ build/bin/dem run --help
+run @@ PYTHONPATH=build/python /usr/bin/python3 -c "import cyclic_triax as ct; r = ct.run('scenes/tests/test1.yaml', set={'stages[0].path': '[TC1, TC2, TC3]'}); print(r.table(['time', 'q_over_p']).tail()); ct.plot(r, 'time', 'q_over_p', out='q_over_p.png')"
 run @@ build/bin/pipeline new my_study.yaml --from paper
 run @@ build/bin/pipeline my_study.yaml --plan
 skip @@ build/bin/pipeline my_study.yaml --profile quick -j 2 @@ 54 runs of 1,000 spheres, minutes of CPU beyond this test's budget; its plan ran above
