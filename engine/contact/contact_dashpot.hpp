@@ -48,12 +48,17 @@ struct Dashpot : Elastic {
   // The pair loop computes the closing speed d(overlap)/dt and the reduced mass m* for this part.
   static constexpr bool needs_normal_velocity = true;
 
-  // c_n d(overlap)/dt [N] (repulsive while the contact closes). Lanes out of contact are dropped by the loop.
+  // c_n = 2 zeta sqrt(m* k_n) [kg/s]; damping_force is c_n d(overlap)/dt [N] (repulsive while the
+  // contact closes). Lanes out of contact are dropped by the loop.
+  template <class O>
+  [[gnu::always_inline]] inline typename O::Real normal_coefficient(typename O::Real overlap, typename O::Real reduced_radius,
+                                                                    typename O::Real reduced_mass) const {
+    return O::splat(2 * damping_ratio) * O::sqrt(reduced_mass * this->template stiffness<O>(overlap, reduced_radius));
+  }
   template <class O>
   [[gnu::always_inline]] inline typename O::Real damping_force(typename O::Real overlap, typename O::Real reduced_radius,
                                                                typename O::Real closing_speed, typename O::Real reduced_mass) const {
-    return (O::splat(2 * damping_ratio) * O::sqrt(reduced_mass * this->template stiffness<O>(overlap, reduced_radius))) *
-           closing_speed;
+    return normal_coefficient<O>(overlap, reduced_radius, reduced_mass) * closing_speed;
   }
   // The tangential dashpot's coefficient c_t = 2 zeta sqrt(m* k_t) [kg/s], k_t the tangential law's stiffness.
   template <class O>

@@ -11,9 +11,11 @@
 //               damping_stiffness() (0: viscous damping cannot be scaled), needs_reduced_radius,
 //               friction_normal_force<O>(f_n) (the normal force the Coulomb and rolling caps take),
 //               needs_normal_velocity: if true, also damping_force<O>(overlap, R*, d overlap/dt, m*)
-//               (added to f_n) and tangential_coefficient<O>(k_t, m*) (a tangential dashpot while
-//               the contact sticks; see contact/contact_dashpot.hpp)
-//   tangential  has_tangential, history_name / history_unit, needs_reduced_radius,
+//               (added to f_n), its normal_coefficient<O>(overlap, R*, m*), and
+//               tangential_coefficient<O>(k_t, m*) (a tangential dashpot while the contact sticks;
+//               see contact/contact_dashpot.hpp); optionally constant_stiffness = true
+//   tangential  has_tangential, history_name / history_unit, needs_reduced_radius, optionally
+//               constant_stiffness = true (stiffness<O> for a tangential dashpot),
 //               update<O>(HistoryStep&, f_n, overlap, R*, touch), energy<O>(f_t, overlap, R*),
 //               opening_loss<O>(|history|^2), force_of<O>(history, overlap, R*)
 //   rolling     has_rolling, update<O>(HistoryStep&, f_n, touch), energy<O>(f_r), opening_loss<O>
@@ -43,6 +45,16 @@ struct NoFriction {
   static constexpr bool needs_reduced_radius = false;
 };
 
+// Whether a part's stiffness<O> is a constant (it says so with constant_stiffness = true).
+template <class Part>
+constexpr bool constant_stiffness() {
+  if constexpr (requires { Part::constant_stiffness; }) {
+    return Part::constant_stiffness;
+  } else {
+    return false;
+  }
+}
+
 template <class Normal, class Tangential = NoFriction, class Rolling = NoRolling>
 struct ContactLaw {
   Normal normal{};
@@ -56,6 +68,10 @@ struct ContactLaw {
   static constexpr bool has_rolling = Rolling::has_rolling;
   static constexpr bool rotates = has_tangential || has_rolling;  // torques, spins
   static constexpr bool damped = Normal::needs_normal_velocity;   // contact dashpots
+  // Contact dashpots whose coefficients c_n and c_t depend on the two masses only (constant
+  // stiffnesses): computed once per pair list instead of every step (dynamics/kernel.hpp).
+  static constexpr bool dashpot_per_pair =
+      damped && constant_stiffness<Normal>() && (!has_tangential || constant_stiffness<Tangential>());
   static constexpr bool needs_reduced_radius =
       Normal::needs_reduced_radius || Tangential::needs_reduced_radius || has_rolling;
 };

@@ -35,7 +35,8 @@ struct LinearNormal {
   [[gnu::always_inline]] inline typename O::Real friction_normal_force(typename O::Real fn) const {
     return fn;
   }
-  // d f_n / d overlap, for the servo [N/m].
+  // d f_n / d overlap, for the servo [N/m]; a constant (a dashpot's coefficient is then one per pair).
+  static constexpr bool constant_stiffness = true;
   template <class O>
   [[gnu::always_inline]] inline typename O::Real stiffness(typename O::Real /*overlap*/, typename O::Real /*reduced_radius*/) const {
     return O::splat(kn);
@@ -73,7 +74,8 @@ struct LinearCoulomb {
     return {"", ""};
   }
 
-  // d f_t / d u_s [N/m] (for a tangential dashpot).
+  // d f_t / d u_s [N/m] (for a tangential dashpot); a constant.
+  static constexpr bool constant_stiffness = true;
   template <class O>
   [[gnu::always_inline]] inline typename O::Real stiffness(typename O::Real /*overlap*/, typename O::Real /*reduced_radius*/) const {
     return O::splat(ks);

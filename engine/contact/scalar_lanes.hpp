@@ -36,6 +36,7 @@ inline void store(Vec3* p, const V3& v) { *p = Vec3(v.x, v.y, v.z); }
 inline V3 gather(const Vec3* base, const std::uint32_t* index) { return load(base + *index); }
 inline V gather(const double* base, const std::uint32_t* index) { return base[*index]; }
 inline void store_lanes(double* out, V a) { *out = a; }
+inline V load_lanes(const double* in) { return *in; }
 inline V3 lanes_of(const Vec3& v) { return {v[0], v[1], v[2]}; }
 inline Vec3 vec3_of(const V3& v) { return {v.x, v.y, v.z}; }
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <type_traits>
 #include <vector>
 
@@ -12,6 +13,7 @@
 #include "cell/periodic_cell.hpp"
 #include "contact/contact_history.hpp"
 #include "contact/contact_law.hpp"
+#include "contact/scalar_lanes.hpp"
 #include "core/particles.hpp"
 #include "dynamics/simulation.hpp"
 #include "neighbour/verlet_list.hpp"
@@ -112,6 +114,11 @@ struct PairForces {
   // and the branch vector [m] of this evaluation, for the second half of their dissipation
   // (dashpot_second_half, below).
   std::vector<Vec3> dashpot_force, dashpot_branch;
+  // Laws whose dashpot coefficients depend on the masses only (Law::dashpot_per_pair): per pair,
+  // c_n = 2 zeta sqrt(m* k_n) [kg/s] and c_t / dt [kg/s^2] (frictional laws), and the pair list
+  // they were computed for (VerletList::changes; dashpot_coefficients below).
+  std::vector<double> dashpot_c_n, dashpot_c_t_over_dt;
+  std::uint64_t dashpot_list = ~std::uint64_t{0};
   Sum4* scattered_sums(std::size_t particles) {
     net_force.resize(particles, Sum4{});
     return net_force.data();
@@ -154,6 +161,8 @@ struct PairLoop {
   struct DashpotOut {
     Vec3* __restrict force;
     Vec3* __restrict branch;
+    const double* __restrict c_n;          // the per-pair coefficients (Law::dashpot_per_pair), else null
+    const double* __restrict c_t_over_dt;
   };
   struct NoDashpot {};
   [[no_unique_address]] std::conditional_t<Law::damped, DashpotOut, NoDashpot> dashpot_out;
@@ -189,10 +198,33 @@ struct PairLoop {
     if constexpr (Law::damped) {
       out.dashpot_force.resize(pairs.size());
       out.dashpot_branch.resize(pairs.size());
-      dashpot_out = {out.dashpot_force.data(), out.dashpot_branch.data()};
+      dashpot_out = {out.dashpot_force.data(), out.dashpot_branch.data(), out.dashpot_c_n.data(), out.dashpot_c_t_over_dt.data()};
     }
   }
 };
+
+// Laws with Law::dashpot_per_pair: each pair's dashpot coefficients c_n = 2 zeta sqrt(m* k_n)
+// and c_t / dt = 2 zeta sqrt(m* k_t) / dt, computed with the pair loop's operations (so the same
+// bits as computing them there every step), into `out` for the pair list numbered `list`. Two mass
+// lookups, two square roots and two divisions per pair that the pair loop no longer does.
+template <class Law>
+void dashpot_coefficients(const Law& law, const Particles& p, const PairList& pairs, double dt, std::uint64_t list,
+                          PairForces& out) {
+  using Ops = scalar_lanes::Ops;
+  const std::size_t n = pairs.size();
+  out.dashpot_c_n.resize(n);
+  if constexpr (Law::has_tangential) out.dashpot_c_t_over_dt.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const double mi = p.mass[pairs.first[k]], mj = p.mass[pairs.second[k]];
+    const double reduced_mass = (mi * mj) / (mi + mj);
+    out.dashpot_c_n[k] = law.normal.template normal_coefficient<Ops>(0.0, 0.0, reduced_mass);
+    if constexpr (Law::has_tangential) {
+      const double kt = law.tangential.template stiffness<Ops>(0.0, 0.0);
+      out.dashpot_c_t_over_dt[k] = law.normal.template tangential_coefficient<Ops>(kt, reduced_mass) / dt;
+    }
+  }
+  out.dashpot_list = list;
+}
 
 // Adds the chunk sums in chunk order, divides the stress and stiffness by the volume and
 // symmetrises the stress.

@@ -131,6 +131,7 @@ inline Mask greater_equal(V a, V b) { return _mm256_cmp_pd(a, b, _CMP_GE_OQ); }
 inline Mask less(V a, V b) { return _mm256_cmp_pd(a, b, _CMP_LT_OQ); }
 inline V sqrt_of(V a) { return _mm256_sqrt_pd(a); }
 inline void store_lanes(double* out, V a) { _mm256_storeu_pd(out, a); }
+inline V load_lanes(const double* in) { return _mm256_loadu_pd(in); }
 
 // Four consecutive Vec3 (12 doubles, x0 y0 z0 x1 | y1 z1 x2 y2 | z2 x3 y3 z3) to and from lanes.
 inline V3 load(const Vec3* p) {
@@ -399,6 +400,7 @@ inline Mask greater(V a, V b) { return _mm512_cmp_pd_mask(a, b, _CMP_GT_OQ); }
 inline Mask greater_equal(V a, V b) { return _mm512_cmp_pd_mask(a, b, _CMP_GE_OQ); }
 inline V sqrt_of(V a) { return _mm512_sqrt_pd(a); }
 inline void store_lanes(double* out, V a) { _mm512_storeu_pd(out, a); }
+inline V load_lanes(const double* in) { return _mm512_loadu_pd(in); }
 
 inline __m256d low(V a) { return _mm512_castpd512_pd256(a); }
 inline __m256d high(V a) { return _mm512_extractf64x4_pd(a, 1); }

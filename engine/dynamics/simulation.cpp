@@ -75,6 +75,10 @@ struct KernelImpl final : Simulation::Kernel {
   }
   template <bool Sheared>
   MotionSums step_as(Simulation& s) {
+    if constexpr (Law::dashpot_per_pair) {
+      if (s.pair_forces_->dashpot_list != s.list_.changes())
+        dashpot_coefficients(law, s.particles_, s.list_.pairs(), s.dt_, s.list_.changes(), *s.pair_forces_);
+    }
     return forces_and_motion<Law, DampingPolicy, Sheared>(simd, law, damping, s.particles_, s.cell_, s.list_.pairs(),
                                                           s.history_, s.list_.index(), s.rates_, s.dt_, *s.pair_forces_,
                                                           s.sums_, s.force_);

@@ -138,6 +138,7 @@ double largest_radius(const Particles& p) {
 
 void VerletList::restore_exact(Saved saved, const Particles& p) {
   pairs_ = std::move(saved.pairs);
+  ++changes_;
   s_at_build_ = std::move(saved.s_at_build);
   cell_at_build_.set_lengths(saved.lengths_at_build);
   cell_at_build_.set_tilts(saved.tilts_at_build);
@@ -182,6 +183,7 @@ void VerletList::build(const Particles& p, const PeriodicCell& cell, ContactHist
   if (history) carried = history->carried(from_previous);
   // Commit: nothing below throws.
   pairs_ = std::move(fresh);
+  ++changes_;
   index_ = std::move(index);
   from_previous_ = std::move(from_previous);
   s_at_build_ = std::move(s_at_build);

@@ -55,7 +55,9 @@ class VerletList {
 
   double skin() const { return skin_; }
   const PairList& pairs() const { return pairs_; }
-  PairList& pairs() { return pairs_; }
+  // How many times the pairs were replaced (build, restore, restore_exact): what a per-pair value
+  // computed from the pair list alone is kept against (the contact dashpots' coefficients).
+  std::uint64_t changes() const { return changes_; }
   const PairIndex& index() const { return index_; }
   std::size_t builds() const { return builds_; }
 
@@ -70,6 +72,7 @@ class VerletList {
   // Replaces the pairs, e.g. with the contacts of a saved state; the next build() tells where they went.
   void restore(PairList pairs) {
     pairs_ = std::move(pairs);
+    ++changes_;
     built_ = false;
   }
   // Asks for a rebuild at the next step (after the cell was re-mapped: the same pairs, but every
@@ -113,6 +116,7 @@ class VerletList {
   PeriodicCell cell_at_build_;
   double max_radius_ = 0;
   std::size_t builds_ = 0;
+  std::uint64_t changes_ = 0;
   bool built_ = false;
   // The displacement bound of `rebuild_due`: d_max at the last exact measurement plus the motion
   // since, and the shortest cell sides since then. Infinite until the first measurement.
