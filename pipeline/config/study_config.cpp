@@ -256,9 +256,9 @@ std::string describe(const Variant& v) {
 }
 
 std::string variant_yaml(const Variant& v) {
-  const auto overrides = [](const Overrides& o) {
+  const auto overrides = [&](const Overrides& o) {
     YAML::Node n(YAML::NodeType::Map);
-    for (const auto& [key, value] : o) n[key] = YAML::Load(value);
+    for (const auto& [key, value] : o) n[key] = dem::parse_yaml(value, v.name + ": " + key);
     return n;
   };
   YAML::Node n(YAML::NodeType::Map);

@@ -61,7 +61,7 @@ std::string outcome_file(const std::string& result) { return result + ".outcome"
 
 std::optional<Stop> read_stop(const std::string& result) {
   try {
-    const YAML::Node n = YAML::LoadFile(outcome_file(result));
+    const YAML::Node n = dem::load_yaml(outcome_file(result));
     Stop s;
     s.input_hash = n["input_hash"].as<std::string>();
     s.exit_code = n["exit_code"].as<int>();

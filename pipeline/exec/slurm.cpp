@@ -21,6 +21,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "config/yaml_section.hpp"
 #include "exec/tracker.hpp"
 
 namespace pipeline::slurm {
@@ -97,7 +98,7 @@ std::string exit_file(const std::string& result) { return result + ".job.exit"; 
 
 std::optional<JobRecord> read_record(const std::string& result) {
   try {
-    const YAML::Node n = YAML::LoadFile(record_file(result));
+    const YAML::Node n = dem::load_yaml(record_file(result));
     return JobRecord{n["job_id"].as<std::string>(), n["input_hash"].as<std::string>()};
   } catch (const std::exception&) {
     return std::nullopt;  // missing or unreadable: no job to adopt

@@ -30,14 +30,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-YAML::Node load_yaml(const std::string& file) {
-  try {
-    return YAML::LoadFile(file);
-  } catch (const YAML::Exception& e) {
-    throw dem::ConfigError(file + ": not valid YAML: " + e.what());
-  }
-}
-
 // Caps every repeat block of every stress-path stage at `max_repeat` repetitions.
 void cap_repeats(YAML::Node scene, int max_repeat) {
   if (max_repeat <= 0 || !scene["stages"] || !scene["stages"].IsSequence()) return;
@@ -285,7 +277,7 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
       prep.density = d.name;
       prep.may_fail = v.may_fail;
       paths(prep);
-      YAML::Node scene = load_yaml(study.preparation);
+      YAML::Node scene = dem::load_yaml(study.preparation);
       const std::string n = std::to_string(profile.lattice);
       // A preparation from particles.csv or particles.state starts from its file's spheres: the
       // profile's lattice does not apply, and there is no sampler for a seed to change.
@@ -357,7 +349,7 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
         run.variants = {v.name};
         run.may_fail = v.may_fail;
         paths(run);
-        YAML::Node ts = load_yaml(t.scene);
+        YAML::Node ts = dem::load_yaml(t.scene);
         in_context(study, test_where, [&] {
           dem::apply_override(ts, t.scene, "name", run.name);
           dem::apply_override(ts, t.scene, "particles", "{state: " + fs::absolute(from.result).string() + "}");
@@ -413,7 +405,7 @@ std::vector<PlannedRun> join_studies(const std::vector<StudyPlan>& plans) {
                                  ": give each study once, each with its own output folder");
       if (!r.may_fail) {
         const int index = static_cast<int>(runs.size());
-        const auto [first, is_new] = computed.emplace(unnamed(YAML::Load(r.scene_text)), index);
+        const auto [first, is_new] = computed.emplace(unnamed(dem::parse_yaml(r.scene_text, r.scene_file)), index);
         if (!is_new) r.copy_of = r.depends_on = first->second, r.cost = 0;
       }
       runs.push_back(std::move(r));
