@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -25,10 +26,17 @@ std::string folder_of(const std::string& file) {
 
 }  // namespace
 
-void write_file_atomically(const std::string& file, const std::string& text) {
-  const std::string tmp = file + ".tmp";
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW, 0644);
-  if (fd < 0) fail(tmp, "cannot be created", errno);
+std::string write_temp_beside(const std::string& file, const std::string& text) {
+  // A name no other writer uses: this process's id and a count, and O_EXCL for a file of that
+  // name that a process of the same id left behind (then the next count).
+  static std::atomic<unsigned> count{0};
+  std::string tmp;
+  int fd = -1;
+  for (int tries = 0; fd < 0; ++tries) {
+    tmp = file + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(count++);
+    fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0644);
+    if (fd < 0 && (errno != EEXIST || tries >= 100)) fail(tmp, "cannot be created", errno);
+  }
   std::size_t done = 0;
   while (done < text.size()) {
     const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
@@ -52,6 +60,11 @@ void write_file_atomically(const std::string& file, const std::string& text) {
     ::unlink(tmp.c_str());
     fail(tmp, "cannot be closed", err);
   }
+  return tmp;
+}
+
+void write_file_atomically(const std::string& file, const std::string& text) {
+  const std::string tmp = write_temp_beside(file, text);
   if (std::rename(tmp.c_str(), file.c_str()) != 0) {
     const int err = errno;
     ::unlink(tmp.c_str());

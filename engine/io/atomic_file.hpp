@@ -1,15 +1,22 @@
 #pragma once
-// Files the tools write are complete or absent: written to <file>.tmp, flushed to disk, renamed,
-// and the folder flushed so that the new name survives a crash. Used by the engine (results,
-// checkpoints, XDMF views) and by the validation tools (validation.json, tables, reports).
+// Files the tools write are complete or absent: written to a new file beside them, flushed to
+// disk, renamed, and the folder flushed so that the new name survives a crash. Used by the engine
+// (XDMF views), the pipeline (study copies, manifests, records) and the validation tools
+// (validation.json, tables, reports).
 #include <string>
 
 namespace dem {
 
-// Writes `text` to `file` through <file>.tmp, fsync of the file and of its folder, then a rename;
-// throws std::runtime_error naming the file and the reason if any step fails (the old file, if
-// any, is then left as it was, and <file>.tmp is removed).
+// Writes `text` to `file` through a new file beside it (write_temp_beside), then a rename and an
+// fsync of the folder; throws std::runtime_error naming the file and the reason if any step fails
+// (the old file, if any, is then left as it was, and the new one is removed).
 void write_file_atomically(const std::string& file, const std::string& text);
+
+// Writes `text` to a new file beside `file`, named <file>.tmp.<pid>.<n> and created exclusively
+// (an existing file of that name, e.g. the user's own <file>.tmp, is never opened, truncated or
+// followed as a link), flushed to disk; returns its name. The caller renames it over `file`
+// (rename_durably) or removes it. Throws std::runtime_error as write_file_atomically does.
+std::string write_temp_beside(const std::string& file, const std::string& text);
 
 // fsync of a file that was written and closed (by HDF5, say); throws std::runtime_error naming
 // the file and the reason (e.g. "No space left on device").

@@ -21,6 +21,7 @@
 #include "control/stress_path.hpp"
 #include "dynamics/simulation.hpp"
 #include "generate/grading.hpp"
+#include "io/atomic_file.hpp"
 #include "io/particle_csv.hpp"
 #include "io/state_io.hpp"
 
@@ -449,9 +450,7 @@ void write_manifest(const std::vector<PlannedRun>& runs, const Study& study, con
            << (r.depends_on >= 0 ? runs[static_cast<std::size_t>(r.depends_on)].name : std::string("-")) << '\t'
            << (r.may_fail ? 1 : 0) << '\t' << (settings.count(v) ? settings[v] : "as written") << '\t'
              << (r.seed ? std::to_string(*r.seed) : std::string("-")) << '\t' << r.hash << '\n';
-  const fs::path file = fs::path(out_dir) / "runs.tsv", tmp = fs::path(out_dir) / "runs.tsv.tmp";
-  std::ofstream(tmp) << text.str();
-  fs::rename(tmp, file);  // atomic: a reader never sees half a manifest
+  dem::write_file_atomically((fs::path(out_dir) / "runs.tsv").string(), text.str());  // a reader never sees half a manifest
 }
 
 }  // namespace pipeline
