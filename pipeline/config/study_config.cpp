@@ -188,6 +188,18 @@ std::string pipeline_owned_option(const std::string& arg) {
   return "";
 }
 
+// Why an override of `key` by `who` may not be given in an ensemble ("" if it may): it sets the
+// seed of the diameter sampler, or replaces the mapping that holds it (particles, particles.lattice),
+// whose seed the pipeline sets per sample.
+std::string sets_ensemble_seed(const std::string& key, const std::string& who) {
+  if (key.rfind("particles.lattice.seed", 0) == 0)
+    return "the study's seeds choose the samples; " + who + " cannot set the seed of an ensemble";
+  if (key == "particles" || key == "particles.lattice")
+    return "replaces " + key + ", and with it the seed the study's seeds set for each sample; set the keys inside one by one (e.g. " +
+           (key == "particles" ? std::string("particles.grading.basis") : std::string("particles.lattice.spacing")) + ")";
+  return "";
+}
+
 SlurmOptions read_slurm(dem::Section& root) {
   SlurmOptions o;
   dem::Section s = root.optional_child("slurm", "options of the SLURM executor (pipeline --executor slurm)");
@@ -353,6 +365,14 @@ Study load_study(const std::string& file) {
     st.profiles.push_back(pr);
   }
   profiles.finish();
+  // An ensemble: each sample's seed is set by the pipeline, and nothing else may set it (every
+  // sample would be the same one, judged by validate as independent samples that agree).
+  const bool ensemble = !seeds.empty() || std::any_of(st.profiles.begin(), st.profiles.end(),
+                                                     [](const Profile& p) { return !p.seeds.empty(); });
+  if (ensemble)
+    for (const auto& kv : st.preparation_set)
+      if (const std::string why = sets_ensemble_seed(kv.first, "preparation_set"); !why.empty())
+        root.fail("preparation_set." + kv.first, why);
   const bool may_fail = root.boolean("may_fail", false, "default of the variants' may_fail");
   if (has_variants) {
     std::set<std::string> variant_names;
@@ -382,13 +402,11 @@ Study load_study(const std::string& file) {
       for (const auto& o : var.set)
         if (o.first.rfind("particles", 0) == 0 && !st.tests.empty())
           v.fail("set." + o.first, "would change where the tests' particles come from; put it under prepare:");
-      const bool ensemble = !seeds.empty() || std::any_of(st.profiles.begin(), st.profiles.end(),
-                                                         [](const Profile& p) { return !p.seeds.empty(); });
-      for (const Overrides* o : {&var.set, &var.prepare})
-        for (const auto& kv : *o)
-          if (ensemble && kv.first.rfind("particles.lattice.seed", 0) == 0)
-            v.fail(std::string(o == &var.set ? "set." : "prepare.") + kv.first,
-                   "the study's seeds choose the samples; a variant cannot set the seed of an ensemble");
+      if (ensemble)
+        for (const Overrides* o : {&var.set, &var.prepare})
+          for (const auto& kv : *o)
+            if (const std::string why = sets_ensemble_seed(kv.first, "a variant"); !why.empty())
+              v.fail(std::string(o == &var.set ? "set." : "prepare.") + kv.first, why);
       if (v.has("time_step_fraction")) {
         var.time_step_fraction = v.number("time_step_fraction", "", {0, 10, true}, std::nullopt,
                                           "numerics.time_step as a fraction of the sample's critical step 2 sqrt(m_min/kn)");
