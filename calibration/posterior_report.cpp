@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <yaml-cpp/yaml.h>
 
+#include "config/yaml_section.hpp"
 #include "io/atomic_file.hpp"
 #include "io/hdf5.hpp"
 #include "row_verdicts.hpp"
@@ -143,7 +144,7 @@ std::string curve_data(const CurveRow& c, const std::vector<validation::Sample>&
 
 std::map<std::string, double> parameters_of_result(const Calibration& c, const std::string& result) {
   dem::h5::Handle f = dem::h5::open_file_read(result);
-  const YAML::Node scene = YAML::Load(dem::h5::read_text(f, "scene_yaml"));
+  const YAML::Node scene = dem::parse_yaml(dem::h5::read_text(f, "scene_yaml"), result);
   std::map<std::string, double> values;
   const auto at = [&](const std::string& key) {
     YAML::Node n = YAML::Clone(scene);
@@ -158,7 +159,7 @@ std::map<std::string, double> parameters_of_result(const Calibration& c, const s
     if (!p.readings.empty()) {  // the reading whose every key the scene holds; its value (Parameter::value)
       for (std::size_t k = 0; k < p.readings.size() && !values.count(p.name); ++k)
         if (std::all_of(p.readings[k].begin(), p.readings[k].end(), [&](const std::pair<std::string, std::string>& kv) {
-              return at(kv.first).as<std::string>() == YAML::Load(kv.second).as<std::string>();
+              return at(kv.first).as<std::string>() == dem::parse_yaml(kv.second, c.file).as<std::string>();
             }))
           values[p.name] = p.value((static_cast<double>(k) + 0.5) / static_cast<double>(p.readings.size()));
       if (!values.count(p.name)) throw std::runtime_error(result + ": its scene holds none of the readings of " + p.name);

@@ -345,12 +345,12 @@ std::string emit_resolved(const SceneConfig& c) {
       out << YAML::Key << "type" << YAML::Value << "stress_path" << YAML::Key << "mean_stress" << YAML::Value
           << s.mean_stress_Pa << YAML::Key << "stress_ratio" << YAML::Value << s.stress_ratio << YAML::Key << "rate"
           << YAML::Value << s.stress_rate_Pa_per_s << YAML::Key << "max_strain_rate" << YAML::Value
-          << s.max_strain_rate_per_s << YAML::Key << "path" << YAML::Value << YAML::Load(s.path_text);
+          << s.max_strain_rate_per_s << YAML::Key << "path" << YAML::Value << parse_yaml(s.path_text, c.file);
       if (s.zero_shear_stress) out << YAML::Key << "zero_shear_stress" << YAML::Value << true;
     } else if (s.type == StageConfig::Type::Control) {
       out << YAML::Key << "type" << YAML::Value << "control" << YAML::Key << "duration" << YAML::Value << s.duration_s
           << YAML::Key << "max_strain_rate" << YAML::Value << s.max_strain_rate_per_s;
-      for (const auto& kv : YAML::Load(s.control_text)) out << YAML::Key << kv.first << YAML::Value << kv.second;
+      for (const auto& kv : parse_yaml(s.control_text, c.file)) out << YAML::Key << kv.first << YAML::Value << kv.second;
     } else {
       out << YAML::Key << "type" << YAML::Value << "stress" << YAML::Key << "target" << YAML::Value << YAML::Flow
           << std::vector<double>{s.target_Pa[0], s.target_Pa[1], s.target_Pa[2]} << YAML::Key << "rate" << YAML::Value

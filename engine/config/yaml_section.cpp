@@ -10,11 +10,14 @@
 #include <limits>
 #include <set>
 #include <yaml-cpp/depthguard.h>
+#include <yaml-cpp/eventhandler.h>
+#include <yaml-cpp/parser.h>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <regex>
 #include <sstream>
+#include <unordered_map>
 
 namespace dem {
 
@@ -171,18 +174,16 @@ Section::Section(YAML::Node node, std::string file, std::string path)
 }
 
 Section Section::load_file(const std::string& file, const Overrides& overrides) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (!fs::exists(file, ec)) throw ConfigError(file + ": no such file");
-  if (fs::is_directory(file, ec)) throw ConfigError(file + ": is a directory, expected a YAML file");
-  std::ifstream in(file);
-  std::stringstream text;
-  if (!in || !(text << in.rdbuf())) {
-    if (fs::file_size(file, ec) == 0 && !ec) throw ConfigError(file + ": the file is empty");
-    throw ConfigError(file + ": cannot be read");
-  }
-  return from_text(text.str(), file, overrides);
+  return from_tree(load_yaml(file), file, overrides);
 }
+
+namespace {
+// The YAML value of an override, read as every YAML text is (parse_yaml): an error names
+// "FILE: --set KEY" and the line in the value.
+YAML::Node override_value(const std::string& file, const std::string& path, const std::string& value) {
+  return parse_yaml(value, file + ": --set " + path);
+}
+}  // namespace
 
 // Sets `path` (a.b[2].c) in `root` to the YAML value `value`, creating missing mapping keys.
 YAML::Node apply_override(YAML::Node root, const std::string& file, const std::string& path, const std::string& value) {
@@ -203,12 +204,7 @@ YAML::Node apply_override(YAML::Node root, const std::string& file, const std::s
       throw ConfigError(file + ": --set " + path + ": '" + done + "' is inside a non-mapping");
     const bool last = i + 1 == segments.size();
     if (last && !m[2].matched) {
-      YAML::Node v;
-      try {
-        v = YAML::Load(value);
-      } catch (const YAML::Exception& e) {
-        throw ConfigError(file + ": --set " + path + ": value '" + value + "' is not valid YAML: " + e.what());
-      }
+      const YAML::Node v = override_value(file, path, value);
       node[m[1].str()] = v;
       return v;
     }
@@ -219,7 +215,7 @@ YAML::Node apply_override(YAML::Node root, const std::string& file, const std::s
         throw ConfigError(file + ": --set " + path + ": '" + done + "' has no item [" + m[2].str() + "]");
       done.append(1, '[').append(m[2].str()).append(1, ']');
       if (last) {
-        next[index] = YAML::Load(value);
+        next[index] = override_value(file, path, value);
         return next[index];
       }
       next.reset(next[index]);
@@ -248,36 +244,125 @@ void check_yaml_text(const std::string& text, const std::string& file) {
   throw ConfigError(file + ": line " + std::to_string(line_of(text, at)) + ": " + what);
 }
 
-// The nesting depth of a YAML tree: mappings and sequences within each other.
-std::size_t depth_of(const YAML::Node& n, std::size_t limit) {
-  if (limit == 0 || !(n.IsMap() || n.IsSequence())) return 0;
-  std::size_t deepest = 0;
-  if (n.IsMap())
-    for (const auto& kv : n) deepest = std::max(deepest, depth_of(kv.second, limit - 1));
-  else
-    for (const auto& item : n) deepest = std::max(deepest, depth_of(item, limit - 1));
-  return 1 + deepest;
-}
+// The tree a reader would walk, measured from the parser's events before yaml-cpp builds it: its
+// nodes and nesting with every alias expanded (an anchored node's size and height are known at
+// its end; an alias adds them where it stands). Throws ConfigError naming the line where the tree
+// passes max_yaml_nodes or max_yaml_depth, or where an alias names a node still open around it
+// (yaml-cpp would build a cycle, and any walk of it would never end).
+class TreeMeasure : public YAML::EventHandler {
+ public:
+  explicit TreeMeasure(const std::string& file) : file_(file) {}
+  std::size_t documents = 0;
+
+  void OnDocumentStart(const YAML::Mark&) override {
+    ++documents;
+    nodes_ = 0;
+    anchors_.clear();
+  }
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark& mark, YAML::anchor_t anchor) override { leaf(mark, anchor); }
+  void OnScalar(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor, const std::string&) override { leaf(mark, anchor); }
+  void OnAlias(const YAML::Mark& mark, YAML::anchor_t anchor) override {
+    const auto it = anchors_.find(anchor);
+    if (it == anchors_.end())
+      throw ConfigError(file_ + ": line " + std::to_string(mark.line + 1) +
+                        ": an alias inside the node its anchor names: the tree would contain itself without end");
+    add(mark, it->second.nodes, it->second.height);
+  }
+  void OnSequenceStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor, YAML::EmitterStyle::value) override {
+    open(mark, anchor);
+  }
+  void OnSequenceEnd() override { close(); }
+  void OnMapStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor, YAML::EmitterStyle::value) override {
+    open(mark, anchor);
+  }
+  void OnMapEnd() override { close(); }
+
+ private:
+  struct Size {
+    std::uint64_t nodes;  // in the node's tree, itself included
+    std::size_t height;   // mappings and sequences nested in it, itself included (0: a scalar)
+  };
+  struct Open {
+    YAML::anchor_t anchor;
+    std::uint64_t nodes_before;  // nodes_ when it opened
+    std::size_t height;          // the highest of its children so far
+  };
+
+  // A node of `size` nodes and `height` levels at the current place of the tree.
+  void add(const YAML::Mark& mark, std::uint64_t size, std::size_t height) {
+    nodes_ += size;  // size <= max_yaml_nodes and nodes_ <= max_yaml_nodes before: no overflow
+    if (nodes_ > max_yaml_nodes)
+      throw ConfigError(file_ + ": line " + std::to_string(mark.line + 1) + ": more than " + std::to_string(max_yaml_nodes) +
+                        " YAML nodes once its aliases (*name) are expanded, as a reader walks them (an alias bomb?)");
+    if (open_.size() + height > max_yaml_depth)
+      throw ConfigError(file_ + ": nested more than " + std::to_string(max_yaml_depth) + " levels deep (line " +
+                        std::to_string(mark.line + 1) + "; a scene or study nests a few)");
+    if (!open_.empty()) open_.back().height = std::max(open_.back().height, height);
+  }
+  void leaf(const YAML::Mark& mark, YAML::anchor_t anchor) {
+    add(mark, 1, 0);
+    if (anchor != YAML::NullAnchor) anchors_[anchor] = Size{1, 0};
+  }
+  void open(const YAML::Mark& mark, YAML::anchor_t anchor) {
+    add(mark, 1, 1);
+    open_.push_back(Open{anchor, nodes_ - 1, 0});
+  }
+  void close() {
+    const Open o = open_.back();
+    open_.pop_back();
+    const Size size{nodes_ - o.nodes_before, 1 + o.height};
+    if (!open_.empty()) open_.back().height = std::max(open_.back().height, size.height);
+    if (o.anchor != YAML::NullAnchor) anchors_[o.anchor] = size;
+  }
+
+  const std::string& file_;
+  std::uint64_t nodes_ = 0;
+  std::vector<Open> open_;
+  std::unordered_map<YAML::anchor_t, Size> anchors_;  // the anchored nodes that have ended
+};
 
 }  // namespace
 
-Section Section::from_text(const std::string& text, const std::string& file, const Overrides& overrides) {
+YAML::Node parse_yaml(const std::string& text, const std::string& file) {
   check_yaml_text(text, file);
-  YAML::Node root;
   try {
-    const std::vector<YAML::Node> documents = YAML::LoadAll(text);
-    if (documents.size() > 1)
-      throw ConfigError(file + ": holds " + std::to_string(documents.size()) +
+    TreeMeasure measure(file);
+    std::istringstream in(text);
+    YAML::Parser parser(in);
+    while (parser.HandleNextDocument(measure)) {
+    }
+    if (measure.documents > 1)
+      throw ConfigError(file + ": holds " + std::to_string(measure.documents) +
                         " YAML documents (separated by '---'); a scene or study is one: remove the others");
-    if (!documents.empty()) root = documents.front();
+    return YAML::Load(text);
   } catch (const YAML::DeepRecursion& e) {
     throw ConfigError(file + ": line " + std::to_string(e.mark.line + 1) + ": nested too deeply for YAML to read (a scene or study " +
                       "nests a few levels: a stray run of '[' or '{'?)");
   } catch (const YAML::Exception& e) {
     throw ConfigError(file + ": not valid YAML: " + e.what());
   }
-  if (root && depth_of(root, max_yaml_depth + 1) > max_yaml_depth)
-    throw ConfigError(file + ": nested more than " + std::to_string(max_yaml_depth) + " levels deep (a scene or study nests a few)");
+}
+
+YAML::Node load_yaml(const std::string& file) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::exists(file, ec)) throw ConfigError(file + ": no such file");
+  if (fs::is_directory(file, ec)) throw ConfigError(file + ": is a directory, expected a YAML file");
+  std::ifstream in(file);
+  std::stringstream text;
+  if (!in || !(text << in.rdbuf())) {
+    if (fs::file_size(file, ec) == 0 && !ec) throw ConfigError(file + ": the file is empty");
+    throw ConfigError(file + ": cannot be read");
+  }
+  return parse_yaml(text.str(), file);
+}
+
+Section Section::from_text(const std::string& text, const std::string& file, const Overrides& overrides) {
+  return from_tree(parse_yaml(text, file), file, overrides);
+}
+
+Section Section::from_tree(YAML::Node root, const std::string& file, const Overrides& overrides) {
   if (!root || root.IsNull()) throw ConfigError(file + ": the file is empty");
   if (!root.IsMap()) throw ConfigError(file + ": the file must be a mapping of keys, got " + scalar_text(root));
   auto set = std::make_shared<std::vector<YAML::Node>>();

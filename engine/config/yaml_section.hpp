@@ -40,9 +40,22 @@ bool parse_decimal(const std::string& text, double& x, std::string& why);
 bool parse_decimal_integer(const std::string& text, long long& x, std::string& why);
 
 // What a scene or study file may be (checked before YAML reads it, config/yaml_section.cpp): at
-// most this many bytes, mappings and sequences nested at most this deep.
+// most this many bytes, mappings and sequences nested at most this deep, and at most this many
+// nodes (scalars, mappings, sequences) in its tree as a reader walks it, every alias expanded.
+// yaml-cpp shares an aliased node instead of copying it, so a 1 KB file of nine anchors, each a
+// list of ten aliases of the one before, reads at once and holds 10^9 nodes when walked.
 inline constexpr std::size_t max_yaml_bytes = 16u << 20;  // 16 MiB
 inline constexpr std::size_t max_yaml_depth = 32;
+inline constexpr std::uint64_t max_yaml_nodes = 1'000'000;
+
+// The one way the project turns YAML into a tree: scenes, studies, calibration and reference files,
+// --set values, the scene a result records, the pipeline's own records. The text is checked before
+// yaml-cpp builds a tree (size, control characters, one document, the nesting and the node count
+// above with every alias expanded, an alias inside the node it names); ConfigError names `file`
+// and the line. An empty text gives a null node.
+YAML::Node parse_yaml(const std::string& text, const std::string& file);
+// The same from a file, read whole (throws ConfigError if it is missing, a folder or unreadable).
+YAML::Node load_yaml(const std::string& file);
 
 struct Range {
   double min, max;
@@ -103,6 +116,7 @@ class Section {
                const std::string& doc) const;
   std::string where(const YAML::Node& n) const;
   Section sub(YAML::Node node, std::string path) const;  // a child section, sharing overrides_
+  static Section from_tree(YAML::Node root, const std::string& file, const Overrides& overrides);
   bool from_override(const YAML::Node& n) const;
 
   YAML::Node node_;

@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -50,17 +51,16 @@ std::string non_regular_kind(const std::string& path) {
   }
 }
 
-void write_file_atomically(const std::string& file, const std::string& text) {
-  const std::string tmp = file + ".tmp";
-  refuse_non_regular(file, file);
-  refuse_non_regular(tmp, file);
-  // O_NONBLOCK: a FIFO put at <file>.tmp since the check fails to open instead of blocking.
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK, 0644);
-  if (fd < 0) fail(tmp, "cannot be created", errno);
-  struct stat st{};
-  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {  // (a device put there since the check: not ours to remove)
-    ::close(fd);
-    throw std::runtime_error(tmp + ": is not a regular file: refused (writing " + file + ")");
+std::string write_temp_beside(const std::string& file, const std::string& text) {
+  // A name no other writer uses: this process's id and a count, and O_EXCL for a file of that
+  // name that a process of the same id left behind (then the next count).
+  static std::atomic<unsigned> count{0};
+  std::string tmp;
+  int fd = -1;
+  for (int tries = 0; fd < 0; ++tries) {
+    tmp = file + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(count++);
+    fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0644);
+    if (fd < 0 && (errno != EEXIST || tries >= 100)) fail(tmp, "cannot be created", errno);
   }
   std::size_t done = 0;
   while (done < text.size()) {
@@ -85,6 +85,12 @@ void write_file_atomically(const std::string& file, const std::string& text) {
     ::unlink(tmp.c_str());
     fail(tmp, "cannot be closed", err);
   }
+  return tmp;
+}
+
+void write_file_atomically(const std::string& file, const std::string& text) {
+  refuse_non_regular(file, file);  // the temporary file is new (O_EXCL): only the target can be something else
+  const std::string tmp = write_temp_beside(file, text);
   if (std::rename(tmp.c_str(), file.c_str()) != 0) {
     const int err = errno;
     ::unlink(tmp.c_str());

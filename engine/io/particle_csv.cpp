@@ -1,5 +1,9 @@
 #include "io/particle_csv.hpp"
 
+#include <fcntl.h>
+#include <poll.h>
+#include <unistd.h>
+
 #include "config/yaml_section.hpp"
 
 #include <algorithm>
@@ -7,7 +11,6 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -110,20 +113,35 @@ void check_overlaps(const Particles& p, const std::vector<int>& lines, const Per
 }
 }  // namespace
 
-std::string read_whole_file(const std::string& file, std::size_t max_bytes) {
+std::string read_whole_file(const std::string& file, std::size_t max_bytes, const volatile std::sig_atomic_t* stop) {
   std::error_code ec;
   if (std::filesystem::is_directory(file, ec)) throw std::runtime_error(file + ": is a directory, expected a CSV file");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw std::runtime_error(file + ": cannot be read");
+  // O_NONBLOCK: open() of a FIFO returns at once instead of waiting (with the run's signal
+  // handlers installed with SA_RESTART, a wait in open() or read() was restarted after every
+  // signal, so nothing but SIGKILL ended it). poll() waits instead, in steps, and a FIFO opened
+  // this way reports no hang-up before a writer has come: it waits for the first writer.
+  const int fd = ::open(file.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) throw std::runtime_error(file + ": cannot be read");
+  struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }
+  } closer{fd};
   std::string bytes;
   std::vector<char> chunk(1 << 16);
-  while (in) {
-    in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
-    bytes.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
+  for (;;) {
+    if (stop && *stop) throw ReadStopped(file);
+    pollfd ready{fd, POLLIN, 0};
+    const int n_ready = ::poll(&ready, 1, read_wait_step_ms);  // a regular file is ready at once
+    if (n_ready < 0 && errno != EINTR) throw std::runtime_error(file + ": cannot be read");
+    if (n_ready <= 0) continue;
+    const ssize_t n = ::read(fd, chunk.data(), chunk.size());
+    if (n < 0 && (errno == EAGAIN || errno == EINTR)) continue;
+    if (n < 0) throw std::runtime_error(file + ": cannot be read");
+    if (n == 0) break;
+    bytes.append(chunk.data(), static_cast<std::size_t>(n));
     if (bytes.size() > max_bytes)
       throw std::runtime_error(file + ": larger than " + std::to_string(max_bytes >> 20) + " MiB, the most a particle file may hold");
   }
-  if (in.bad()) throw std::runtime_error(file + ": cannot be read");
   return bytes;
 }
 

@@ -1,6 +1,8 @@
 #pragma once
 // Particles from a CSV file: a header line `x,y,z,radius` (metres), then one sphere per line.
+#include <csignal>
 #include <cstddef>
+#include <stdexcept>
 #include <string>
 
 #include "cell/periodic_cell.hpp"
@@ -30,7 +32,15 @@ void parse_particle_csv(const std::string& text, const std::string& file, const 
 
 // The whole content of `file`, opened once (also a FIFO); throws std::runtime_error naming the
 // file when it is a directory, cannot be read, or holds more than `max_bytes` (read no further:
-// /dev/zero is refused after max_bytes).
-std::string read_whole_file(const std::string& file, std::size_t max_bytes = csv_max_bytes);
+// /dev/zero is refused after max_bytes). It never blocks in open() or read(): a FIFO is opened
+// without waiting for its writer and then waited for in steps of read_wait_step_ms, so that when
+// `stop` is given and becomes non-zero (a signal asked the run to stop, run/run_scene.hpp) it
+// throws ReadStopped within one step, however long the writer takes (or if it never comes).
+std::string read_whole_file(const std::string& file, std::size_t max_bytes = csv_max_bytes,
+                            const volatile std::sig_atomic_t* stop = nullptr);
+inline constexpr int read_wait_step_ms = 100;
+struct ReadStopped : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
 }  // namespace dem

@@ -51,8 +51,7 @@ std::vector<FamilyFile> result_family(const std::string& out) {
           {"its checkpoint being written", checkpoint_path(out) + ".tmp"},
           {"its lock", out + ".lock"},
           {"the pipeline's record of its stop", out + ".outcome"},
-          {"its XDMF view", xdmf},
-          {"its XDMF view being written", xdmf + ".tmp"}};
+          {"its XDMF view", xdmf}};
 }
 
 void check_output_name(const std::string& out) {

@@ -7,7 +7,7 @@
 //   OUT.checkpoint(.tmp)   the newest checkpoint (and the one being written)
 //   OUT.lock               held (flock) by the one run that writes the family
 //   OUT.outcome            the pipeline's record of a run that stopped
-//   R.xdmf(.tmp)           the XDMF view of a complete result (R = OUT without .h5)
+//   R.xdmf                 the XDMF view of a complete result (R = OUT without .h5)
 //
 // Refused before anything is written, each with a message naming --out (or the scene key) and
 // what is allowed; `dem` exits 2:

@@ -33,9 +33,17 @@ const char* source_key(const ParticleSource& src) {
          : src.kind == ParticleSource::Kind::Csv   ? "particles.csv"
                                                     : "particles.state";
 }
+
+// The interruption of a run by the signal `signo` (StageHooks::stop), named.
+[[noreturn]] void interrupted(int signo, const std::string& during = "") {
+  const char* name = signo == SIGTERM ? "SIGTERM" : signo == SIGINT ? "SIGINT" : signo == SIGHUP ? "SIGHUP" : nullptr;
+  throw RunInterrupted(std::string("interrupted by ") + (name ? name : "signal " + std::to_string(signo)) +
+                       (during.empty() ? " (a checkpoint, if one was written, lets the run resume)" : " " + during));
+}
+
 }  // namespace
 
-std::string read_particle_source(const SceneConfig& scene) {
+std::string read_particle_source(const SceneConfig& scene, const volatile std::sig_atomic_t* stop) {
   const ParticleSource& src = scene.particles;
   if (src.kind == ParticleSource::Kind::Lattice) return "";
   try {
@@ -54,7 +62,9 @@ std::string read_particle_source(const SceneConfig& scene) {
         return "";
       }
     }
-    return read_whole_file(src.path);
+    return read_whole_file(src.path, csv_max_bytes, stop);
+  } catch (const ReadStopped&) {
+    interrupted(*stop, "while waiting for the bytes of " + std::string(source_key(src)) + " " + src.path + " (a FIFO whose writer has not come?)");
   } catch (const std::bad_alloc&) {
     throw;
   } catch (const std::exception& e) {
@@ -173,13 +183,6 @@ StageLoop(Cursor, Step, Where, Progress, Done) -> StageLoop<Cursor, Step, Where,
 // for one, progress at the loop's first step and every progress_every steps after, then the
 // stage's end of the step. `i` is the stage's iteration, which its callables advance. The stage
 // runs at least one step (the step counts of a scene are checked when it is read).
-// The interruption of a run by the signal `signo` (StageHooks::stop), named.
-[[noreturn]] void interrupted(int signo) {
-  const char* name = signo == SIGTERM ? "SIGTERM" : signo == SIGINT ? "SIGINT" : signo == SIGHUP ? "SIGHUP" : nullptr;
-  throw RunInterrupted(std::string("interrupted by ") + (name ? name : "signal " + std::to_string(signo)) +
-                       " (a checkpoint, if one was written, lets the run resume)");
-}
-
 template <class Loop>
 void run_steps(Simulation& sim, const SceneConfig& scene, const StageHooks& hooks, const std::int64_t& i, Loop loop) {
   for (std::int64_t k = 0;; ++k) {
@@ -706,7 +709,7 @@ RunSummary run_scene(const SceneConfig& scene, const std::string& out_path, cons
     int n = omp_get_max_threads();
     ~ThreadsAsAsked() { omp_set_num_threads(n); }
   } threads_as_asked;
-  const std::string source_bytes = read_particle_source(scene);  // the particle file, read once
+  const std::string source_bytes = read_particle_source(scene, observer.stop);  // the particle file, read once
   Simulation sim = build_simulation(scene, source_bytes);       // all input checks happen before the output file exists
   const std::string identity = run_identity(scene, input_hash, source_bytes);
   std::optional<Checkpoint> from = checkpoint_to_resume(scene, out_path, identity, resume, observer);

@@ -16,8 +16,9 @@ namespace dem {
 // read once: a run parses and hashes these same bytes, so a FIFO as the CSV file works and a file
 // changed between the two cannot give a run the identity of other particles. Throws ConfigError
 // naming the scene key (a directory, an unreadable file, a state file that is not a regular file:
-// HDF5 seeks in it).
-std::string read_particle_source(const SceneConfig& scene);
+// HDF5 seeks in it). A FIFO is waited for without blocking (io/particle_csv.hpp): when `stop` is
+// given and becomes non-zero meanwhile, it throws RunInterrupted naming the signal and the file.
+std::string read_particle_source(const SceneConfig& scene, const volatile std::sig_atomic_t* stop = nullptr);
 
 // Builds the simulation of a scene. Refuses (ConfigError) a time step above
 // max_time_step_fraction x the critical step, giving both numbers. The first form reads the

@@ -81,14 +81,29 @@ bool is_key_path(const std::string& key) {
   return std::regex_match(key, path_re);
 }
 
+namespace {
+
+// Why an override of `key` by `who` may not be given in an ensemble ("" if it may): it sets the
+// seed of the diameter sampler, or replaces the mapping that holds it (particles, particles.lattice),
+// whose seed the pipeline sets per sample.
+std::string sets_ensemble_seed(const std::string& key, const std::string& who) {
+  if (key.rfind("particles.lattice.seed", 0) == 0)
+    return "the study's seeds choose the samples; " + who + " cannot set the seed of an ensemble";
+  if (key == "particles" || key == "particles.lattice")
+    return "replaces " + key + ", and with it the seed the study's seeds set for each sample; set the keys inside one by one (e.g. " +
+           (key == "particles" ? std::string("particles.grading.basis") : std::string("particles.lattice.spacing")) + ")";
+  return "";
+}
+
+}  // namespace
+
 std::string override_key_refusal(const std::string& key, const std::string& scope, bool ensemble, bool has_tests) {
   if (!is_key_path(key)) return "is not a scene key path (names of letters, digits and _, each with an optional [index], joined by '.')";
   const bool particles = key.rfind("particles", 0) == 0;
   // The pipeline owns these: run names, and which sample a test starts from.
   if (key == "name" || (scope == "test" && particles)) return "is set by the pipeline; allowed: any other scene key (dem keys lists them)";
   if (scope == "set" && particles && has_tests) return "would change where the tests' particles come from; put it under prepare:";
-  if (scope != "test" && ensemble && key.rfind("particles.lattice.seed", 0) == 0)
-    return "the study's seeds choose the samples; a variant cannot set the seed of an ensemble";
+  if (scope != "test" && ensemble) return sets_ensemble_seed(key, "a variant");
   return "";
 }
 
@@ -271,9 +286,9 @@ std::string describe(const Variant& v) {
 }
 
 std::string variant_yaml(const Variant& v) {
-  const auto overrides = [](const Overrides& o) {
+  const auto overrides = [&](const Overrides& o) {
     YAML::Node n(YAML::NodeType::Map);
-    for (const auto& [key, value] : o) n[key] = YAML::Load(value);
+    for (const auto& [key, value] : o) n[key] = dem::parse_yaml(value, v.name + ": " + key);
     return n;
   };
   YAML::Node n(YAML::NodeType::Map);
@@ -382,6 +397,14 @@ Study load_study(const std::string& file) {
     st.profiles.push_back(pr);
   }
   profiles.finish();
+  // An ensemble: each sample's seed is set by the pipeline, and nothing else may set it (every
+  // sample would be the same one, judged by validate as independent samples that agree).
+  const bool ensemble = !seeds.empty() || std::any_of(st.profiles.begin(), st.profiles.end(),
+                                                     [](const Profile& p) { return !p.seeds.empty(); });
+  if (ensemble)
+    for (const auto& kv : st.preparation_set)
+      if (const std::string why = sets_ensemble_seed(kv.first, "preparation_set"); !why.empty())
+        root.fail("preparation_set." + kv.first, why);
   const bool may_fail = root.boolean("may_fail", false, "default of the variants' may_fail");
   if (has_variants) {
     std::set<std::string> variant_names;
@@ -408,8 +431,6 @@ Study load_study(const std::string& file) {
                     "the tests shear with the density's preparation friction instead of their scenes' material.friction");
       if (var.shear_with_preparation_friction && st.tests.empty())
         v.fail("shear_with_preparation_friction", "needs tests to shear (this study has none)");
-      const bool ensemble = !seeds.empty() || std::any_of(st.profiles.begin(), st.profiles.end(),
-                                                         [](const Profile& p) { return !p.seeds.empty(); });
       for (const Overrides* o : {&var.set, &var.prepare}) {
         const std::string scope = o == &var.set ? "set" : "prepare";
         for (const auto& kv : *o)

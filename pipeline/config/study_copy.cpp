@@ -8,6 +8,7 @@
 
 #include "config/study_config.hpp"
 #include "config/yaml_section.hpp"
+#include "io/atomic_file.hpp"
 
 namespace pipeline {
 
@@ -88,18 +89,19 @@ void write_study_copy(const std::string& from_file, const std::string& to_file, 
   if (fs::exists(to, ec) && fs::equivalent(to, fs::path(from_file), ec))
     throw dem::ConfigError(to_file + ": is the study it would copy (" + from_file + ")");
   const std::string copy = study_copy_text(read_text(from_file), from_file, to_file);
-  const fs::path tmp = to.string() + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!(out << copy) || !(out.flush())) throw dem::ConfigError(tmp.string() + ": cannot write");
+  std::string tmp;  // beside the copy, so that its paths resolve as the copy's will
+  try {
+    tmp = dem::write_temp_beside(to_file, copy);
+  } catch (const std::runtime_error& e) {
+    throw dem::ConfigError(e.what());
   }
   try {
-    (void)load_study(tmp.string());  // every path of the copy resolves, every key is checked
+    (void)load_study(tmp);  // every path of the copy resolves, every key is checked
+    dem::rename_durably(tmp, to_file);
   } catch (...) {
     fs::remove(tmp, ec);
     throw;
   }
-  fs::rename(tmp, to);
 }
 
 std::string find_study(const std::string& from, const std::vector<std::string>& folders) {

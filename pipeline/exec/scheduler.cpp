@@ -21,6 +21,7 @@
 
 #include "config/yaml_section.hpp"
 #include "exec/tracker.hpp"
+#include "io/atomic_file.hpp"
 #include "io/hdf5.hpp"
 
 namespace pipeline {
@@ -61,7 +62,7 @@ std::string outcome_file(const std::string& result) { return result + ".outcome"
 
 std::optional<Stop> read_stop(const std::string& result) {
   try {
-    const YAML::Node n = YAML::LoadFile(outcome_file(result));
+    const YAML::Node n = dem::load_yaml(outcome_file(result));
     Stop s;
     s.input_hash = n["input_hash"].as<std::string>();
     s.exit_code = n["exit_code"].as<int>();
@@ -78,13 +79,7 @@ void write_stop(const std::string& result, const Stop& stop) {
     << YAML::Value << stop.exit_code << YAML::Key << "outcome" << YAML::Value
     << (stop.exit_code == 2 ? "refused" : "stopped") << YAML::Key << "message" << YAML::Value
     << YAML::DoubleQuoted << stop.message << YAML::EndMap;
-  const std::string tmp = outcome_file(result) + ".tmp";
-  {
-    std::ofstream out(tmp);
-    out << e.c_str() << "\n";
-    if (!out) throw std::runtime_error(tmp + ": cannot be written");
-  }
-  std::filesystem::rename(tmp, outcome_file(result));  // atomic: never half an outcome
+  dem::write_file_atomically(outcome_file(result), std::string(e.c_str()) + "\n");  // never half an outcome
 }
 
 std::optional<Stop> recorded_stop(const std::string& result, const std::string& hash) {

@@ -21,7 +21,9 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "config/yaml_section.hpp"
 #include "exec/tracker.hpp"
+#include "io/atomic_file.hpp"
 
 namespace pipeline::slurm {
 
@@ -58,9 +60,10 @@ std::string job_script(const PlannedRun& r, const std::string& dem, int threads)
     if (!command.empty()) command += ' ';
     command += shell_quoted(a);
   }
-  const std::string exit = shell_quoted(exit_file(r.result)), tmp = shell_quoted(exit_file(r.result) + ".tmp");
+  const std::string exit = shell_quoted(exit_file(r.result)), tmp = shell_quoted(exit_file(r.result) + ".tmp.") + "$$";
   // The exit code goes to a file because sacct, which would tell it, needs an accounting database
-  // that small clusters may not run. A requeued job starts by removing its first life's file.
+  // that small clusters may not run. A requeued job starts by removing its first life's file. The
+  // file is written beside it under the shell's process id ($$), a name no other file has.
   return "#!/bin/sh\n"
          "# " + r.name + ": a run of the cyclic-triax pipeline (input hash " + r.hash + ")\n"
          "rm -f " + exit + "\n" +
@@ -97,7 +100,7 @@ std::string exit_file(const std::string& result) { return result + ".job.exit"; 
 
 std::optional<JobRecord> read_record(const std::string& result) {
   try {
-    const YAML::Node n = YAML::LoadFile(record_file(result));
+    const YAML::Node n = dem::load_yaml(record_file(result));
     return JobRecord{n["job_id"].as<std::string>(), n["input_hash"].as<std::string>()};
   } catch (const std::exception&) {
     return std::nullopt;  // missing or unreadable: no job to adopt
@@ -108,13 +111,9 @@ void write_record(const std::string& result, const JobRecord& record) {
   char when[32];
   const std::time_t now = std::time(nullptr);
   std::strftime(when, sizeof when, "%Y-%m-%dT%H:%M:%S", std::localtime(&now));
-  const std::string tmp = record_file(result) + ".tmp";
-  {
-    std::ofstream out(tmp);
-    out << "job_id: \"" << record.job_id << "\"\ninput_hash: \"" << record.input_hash << "\"\nsubmitted: " << when << "\n";
-    if (!out) throw std::runtime_error(tmp + ": cannot be written");
-  }
-  fs::rename(tmp, record_file(result));  // atomic: a later pipeline never reads half a record
+  // Atomic: a later pipeline never reads half a record.
+  dem::write_file_atomically(record_file(result), "job_id: \"" + record.job_id + "\"\ninput_hash: \"" + record.input_hash +
+                                                      "\"\nsubmitted: " + when + "\n");
 }
 
 std::optional<int> recorded_exit(const std::string& result, const std::string& job_id) {

@@ -6,6 +6,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "config/yaml_section.hpp"
 #include "io/file_lock.hpp"
 #include "io/hdf5.hpp"
 #include "io/xdmf.hpp"
@@ -52,8 +53,8 @@ void mark_killed(const PlannedRun& r, const std::string& how) {
 std::string copied_scene(const std::string& resolved_source, const std::string& copy_scene_text) {
   std::string name;
   try {
-    name = YAML::Load(copy_scene_text)["name"].as<std::string>("");
-  } catch (const YAML::Exception&) {
+    name = dem::parse_yaml(copy_scene_text, "the copy's scene")["name"].as<std::string>("");
+  } catch (const std::exception&) {
   }
   if (name.empty() || resolved_source.rfind("name: ", 0) != 0) return copy_scene_text;
   const std::size_t end = resolved_source.find('\n');

@@ -21,6 +21,7 @@
 #include "control/stress_path.hpp"
 #include "dynamics/simulation.hpp"
 #include "generate/grading.hpp"
+#include "io/atomic_file.hpp"
 #include "io/particle_csv.hpp"
 #include "io/state_io.hpp"
 
@@ -29,14 +30,6 @@ namespace pipeline {
 namespace fs = std::filesystem;
 
 namespace {
-
-YAML::Node load_yaml(const std::string& file) {
-  try {
-    return YAML::LoadFile(file);
-  } catch (const YAML::Exception& e) {
-    throw dem::ConfigError(file + ": not valid YAML: " + e.what());
-  }
-}
 
 // Caps every repeat block of every stress-path stage at `max_repeat` repetitions.
 void cap_repeats(YAML::Node scene, int max_repeat) {
@@ -300,7 +293,7 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
       prep.density = d.name;
       prep.may_fail = v.may_fail;
       paths(prep);
-      YAML::Node scene = load_yaml(study.preparation);
+      YAML::Node scene = dem::load_yaml(study.preparation);
       const std::string n = std::to_string(profile.lattice);
       // A preparation from particles.csv or particles.state starts from its file's spheres: the
       // profile's lattice does not apply, and there is no sampler for a seed to change.
@@ -372,7 +365,7 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
         run.variants = {v.name};
         run.may_fail = v.may_fail;
         paths(run);
-        YAML::Node ts = load_yaml(t.scene);
+        YAML::Node ts = dem::load_yaml(t.scene);
         in_context(test_where, [&] {
           dem::apply_override(ts, t.scene, "name", run.name);
           dem::apply_override(ts, t.scene, "particles", "{state: " + fs::absolute(from.result).string() + "}");
@@ -428,7 +421,7 @@ std::vector<PlannedRun> join_studies(const std::vector<StudyPlan>& plans) {
                                  ": give each study once, each with its own output folder");
       if (!r.may_fail) {
         const int index = static_cast<int>(runs.size());
-        const auto [first, is_new] = computed.emplace(unnamed(YAML::Load(r.scene_text)), index);
+        const auto [first, is_new] = computed.emplace(unnamed(dem::parse_yaml(r.scene_text, r.scene_file)), index);
         if (!is_new) r.copy_of = r.depends_on = first->second, r.cost = 0;
       }
       runs.push_back(std::move(r));
@@ -472,9 +465,7 @@ void write_manifest(const std::vector<PlannedRun>& runs, const Study& study, con
            << (r.depends_on >= 0 ? runs[static_cast<std::size_t>(r.depends_on)].name : std::string("-")) << '\t'
            << (r.may_fail ? 1 : 0) << '\t' << (settings.count(v) ? settings[v] : "as written") << '\t'
              << (r.seed ? std::to_string(*r.seed) : std::string("-")) << '\t' << r.hash << '\n';
-  const fs::path file = fs::path(out_dir) / "runs.tsv", tmp = fs::path(out_dir) / "runs.tsv.tmp";
-  std::ofstream(tmp) << text.str();
-  fs::rename(tmp, file);  // atomic: a reader never sees half a manifest
+  dem::write_file_atomically((fs::path(out_dir) / "runs.tsv").string(), text.str());  // a reader never sees half a manifest
 }
 
 }  // namespace pipeline

@@ -8,6 +8,8 @@
 #  * SIGTERM and SIGINT in the middle of a run: dem ends by that signal (exit 128 + its number, as
 #    without a handler), the .partial's status says "failed: interrupted by SIGTERM" (SIGINT), and
 #    the .lock is gone;
+#  * SIGTERM and SIGINT while the run waits for a particle CSV that is a FIFO without a writer: the
+#    same, the .lock gone and no .partial;
 #  * a run of 1e12 steps says, after 10 s, how many days it needs;
 #  * a .partial read while its run goes on is said to be being written, not corrupt.
 # A control first shows that the limit kills a program that does not handle SIGXFSZ (exit 153), so
@@ -81,6 +83,35 @@ for sig in TERM INT; do
   st=$(status_of "$out.partial")
   check "SIG$sig: .partial status '$st'" test "${st#failed: interrupted by SIG$sig}" != "$st"
   check "SIG$sig: stderr: $(cat "$work/$sig.err")" grep -q "^error: .*interrupted by SIG$sig" "$work/$sig.err"
+done
+# A particle CSV that is a FIFO no writer ever opens: dem waits for its bytes without blocking in
+# open() (where, restarted after each signal by the handlers' SA_RESTART, only SIGKILL ended it and
+# the .lock stayed), so SIGTERM and SIGINT end the run by that signal, saying what it waited for,
+# with no .lock and no .partial left. A run still there 5 s after the signal is killed and fails.
+mkfifo "$work/no_writer.csv"
+printf '%s\n' "name: fifo" "particles: {csv: no_writer.csv, cell: [0.02, 0.02, 0.02]}" \
+  "material: {kn: 1.0e6, ks: 1.0e6, friction: 0.5}" "numerics: {time_step: 1.0e-6}" \
+  "stages: [{name: squeeze, type: strain_rate, strain_rate: [1.0, 1.0, 1.0], duration: 5.0e-4}]" > "$work/fifo.yaml"
+for sig in TERM INT; do
+  out=$work/fifo_$sig.h5
+  "${at_default[@]}" "$dem" run "$work/fifo.yaml" --out "$out" --quiet 2> "$work/fifo_$sig.err" &
+  pid=$!
+  for _ in $(seq 200); do [ -e "$out.lock" ] && break; sleep 0.05; done  # taken before the CSV is opened
+  sleep 1
+  kill -"$sig" "$pid"
+  for _ in $(seq 50); do kill -0 "$pid" 2> /dev/null || break; sleep 0.1; done
+  hung=0
+  if kill -0 "$pid" 2> /dev/null; then hung=1; kill -KILL "$pid"; fi
+  wait "$pid"
+  rc=$?
+  want=$(( 128 + $(kill -l "$sig") ))
+  echo "FIFO without a writer, SIG$sig: exit $rc; $(head -1 "$work/fifo_$sig.err")"
+  check "FIFO, SIG$sig: still running 5 s after the signal (killed)" test "$hung" = 0
+  check "FIFO, SIG$sig: exit $want expected, got $rc" test "$rc" = "$want"
+  check "FIFO, SIG$sig: .lock left" test ! -e "$out.lock"
+  check "FIFO, SIG$sig: .partial left" test ! -e "$out.partial"
+  check "FIFO, SIG$sig: stderr: $(cat "$work/fifo_$sig.err")" \
+    grep -q "^error: .*interrupted by SIG$sig while waiting for the bytes of particles.csv $work/no_writer.csv" "$work/fifo_$sig.err"
 done
 # A run of 1e12 steps (a 1e6 s stage at dt = 1e-6 s, the most a run may take) is accepted, but says
 # how long it will take:

@@ -209,7 +209,7 @@ TEST_CASE("slurm: a run's sbatch command line and job script", "[pipeline][slurm
     CHECK(script.rfind("#!/bin/sh\n", 0) == 0);
     CHECK(script.find("'/opt/dem/bin/dem' 'run' '/shared/it'\\''s here/loose_test1.yaml' '--out' '/shared/out/loose_test1.h5' "
                       "'--input-hash' 'abc123' '--threads' '4' '--force'\n") != std::string::npos);
-    CHECK(script.find("echo \"$SLURM_JOB_ID $rc\" > '/shared/out/loose_test1.h5.job.exit.tmp'") != std::string::npos);
+    CHECK(script.find("echo \"$SLURM_JOB_ID $rc\" > '/shared/out/loose_test1.h5.job.exit.tmp.'$$") != std::string::npos);
     CHECK(script.find("exit $rc") != std::string::npos);
   }
 }

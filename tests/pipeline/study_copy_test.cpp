@@ -12,6 +12,7 @@
 #include "config/study_copy.hpp"
 #include "config/yaml_section.hpp"
 #include "engine/io/io_test_support.hpp"
+#include "io/atomic_file.hpp"
 #include "plan/run_plan.hpp"
 
 namespace fs = std::filesystem;
@@ -66,6 +67,37 @@ TEST_CASE("pipeline new: the copy's paths resolve from its own folder, its name 
     pipeline::write_study_copy(to, again, false);
     CHECK(pipeline::load_study(again).preparation == original.preparation);
   }
+}
+
+TEST_CASE("pipeline new and every atomic write leave the user's FILE.tmp alone", "[pipeline][new][integrity]") {
+  // Found by a hostile sweep: `pipeline new keep.yaml` wrote its copy to keep.yaml.tmp, a fixed
+  // name, and so truncated and then renamed away a file of the user's by that name. The class swept:
+  // the study copy, a refused copy (its check fails and the new file is removed), and the shared
+  // atomic writer every tool uses (io/atomic_file.hpp). Each must leave keep.yaml.tmp byte for
+  // byte, and no file of its own beside it.
+  const std::string dir = dem::test::scratch_dir("study_copy_tmp");
+  const std::string keep = dir + "/keep.yaml", mine = "the user's own notes\n";
+  const auto leftovers = [&] {
+    int n = 0;
+    for (const auto& e : fs::directory_iterator(dir))
+      if (e.path().filename().string().rfind("keep.yaml.tmp.", 0) == 0) ++n;
+    return n;
+  };
+  dem::test::write_text(keep + ".tmp", mine);
+  pipeline::write_study_copy(paper, keep, false);
+  CHECK(pipeline::load_study(keep).name == "keep");
+  CHECK(dem::test::read_bytes(keep + ".tmp") == mine);
+  CHECK(leftovers() == 0);
+  // A copy whose check fails (a study without a preparation scene), with --force over keep.yaml.
+  dem::test::write_text(dir + "/broken.yaml", "name: broken\ndensities: [{name: d, friction: 0.5}]\n");
+  CHECK_THROWS(pipeline::write_study_copy(dir + "/broken.yaml", keep, true));
+  CHECK(pipeline::load_study(keep).name == "keep");  // the earlier copy stays
+  CHECK(dem::test::read_bytes(keep + ".tmp") == mine);
+  CHECK(leftovers() == 0);
+  dem::write_file_atomically(keep, "name: written\n");
+  CHECK(dem::test::read_bytes(keep) == "name: written\n");
+  CHECK(dem::test::read_bytes(keep + ".tmp") == mine);
+  CHECK(leftovers() == 0);
 }
 
 TEST_CASE("pipeline new: the rewritten paths, line by line", "[pipeline][new]") {

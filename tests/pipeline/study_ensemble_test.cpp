@@ -90,6 +90,21 @@ TEST_CASE("seeds: bad input names the key", "[pipeline][ensemble]") {
   CHECK_THAT(message(two_densities + "seeds: many\n" + profiles), Catch::Contains("seeds"));
   CHECK_THAT(message(two_densities + "seeds: 2\n" + profiles + "variants: [{name: a, prepare: {particles.lattice.seed: 4}}]\n"),
              Catch::Contains("prepare.particles.lattice.seed") && Catch::Contains("seeds choose the samples"));
+  // Found by a hostile sweep: the same key in preparation_set made seed 2 a copy of seed 1, and
+  // validate judged "2 samples" with sd 0. Every way of setting the seed is swept: the key itself,
+  // and the mappings around it, which replace it (the pipeline sets the seed before the overrides).
+  CHECK_THAT(message(two_densities + "seeds: 2\n" + profiles + "preparation_set: {particles.lattice.seed: 4}\n"),
+             Catch::Contains("study.yaml: preparation_set.particles.lattice.seed: the study's seeds choose the samples; "
+                             "preparation_set cannot set the seed of an ensemble"));
+  CHECK_THAT(message(two_densities + profiles + "preparation_set: {particles.lattice: {n: [2, 2, 2], spacing: 5.0e-3}}\n"
+                     "variants: [{name: a}]\n" "seeds: 2\n"),
+             Catch::Contains("preparation_set.particles.lattice: replaces particles.lattice, and with it the seed"));
+  CHECK_THAT(message(two_densities + "seeds: [3, 4]\n" + profiles + "variants: [{name: a, prepare: {particles: {csv: p.csv, cell: [1, 1, 1]}}}]\n"),
+             Catch::Contains("prepare.particles: replaces particles, and with it the seed"));
+  // A profile's seeds make an ensemble too; without seeds the template's one sample may take any seed.
+  CHECK_THAT(message(two_densities + "profiles: {paper: {lattice: 2, seeds: 2}}\npreparation_set: {particles.lattice.seed: 4}\n"),
+             Catch::Contains("preparation_set.particles.lattice.seed"));
+  CHECK(message(two_densities + profiles + "preparation_set: {particles.lattice.seed: 4}\n") == "accepted");
   CHECK_THAT(message(two_densities + profiles + "variants: [{name: a, per_test: {test9: {numerics.time_step: 1.0e-6}}}]\n"),
              Catch::Contains("per_test.test9") && Catch::Contains("test1, test2"));
   CHECK_THAT(message(two_densities + profiles + "variants: [{name: a, per_density: {medium: {material.friction: 0.2}}}]\n"),

@@ -1,5 +1,9 @@
 #include "judge/verdicts.hpp"
 
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <optional>
 #include <sstream>
 
 #include "study/format.hpp"
@@ -60,6 +64,37 @@ TurnsInconsistent side_effects_of(const std::vector<Judged>& judged) {
 }
 
 }  // namespace
+
+std::vector<std::vector<std::string>> identical_samples(const std::vector<Judged>& judged) {
+  std::vector<const Judged*> rows;
+  for (const Judged& j : judged)
+    if (j.row.rule != "every") rows.push_back(&j);
+  if (rows.empty()) return {};
+  // The values of sample k in every row, as bits (a NaN equals itself; 0.0 and -0.0 differ).
+  const auto bits = [](const Measured& m) { return m.value ? std::optional<std::uint64_t>(std::bit_cast<std::uint64_t>(*m.value)) : std::nullopt; };
+  const std::vector<RowResult::PerSample>& first = rows.front()->result.samples;
+  const auto same = [&](std::size_t a, std::size_t b) {
+    bool fraction = false;
+    for (const Judged* j : rows) {
+      const auto& s = j->result.samples;
+      if (a >= s.size() || b >= s.size() || s[a].sample != first[a].sample || s[b].sample != first[b].sample ||
+          bits(s[a].measured) != bits(s[b].measured))
+        return false;
+      if (s[a].measured.value && *s[a].measured.value != std::floor(*s[a].measured.value)) fraction = true;
+    }
+    return fraction;
+  };
+  std::vector<std::vector<std::string>> groups;
+  std::vector<bool> grouped(first.size(), false);
+  for (std::size_t a = 0; a < first.size(); ++a) {
+    if (grouped[a]) continue;
+    std::vector<std::string> group{first[a].sample};
+    for (std::size_t b = a + 1; b < first.size(); ++b)
+      if (!grouped[b] && same(a, b)) group.push_back(first[b].sample), grouped[b] = true;
+    if (group.size() > 1) groups.push_back(group);
+  }
+  return groups;
+}
 
 const char* mark(Verdict v) {
   return v == Verdict::Consistent ? "✅ consistent" : v == Verdict::Inconsistent ? "❌ inconsistent" : "— not judged";

@@ -32,6 +32,13 @@ struct VerdictCounts {
 };
 VerdictCounts count_verdicts(const std::vector<Judged>& judged);
 
+// The groups of samples whose values are the same to the last bit in every row (each group two or
+// more samples, in the rows' sample order): one sample counted as several, which the interval and
+// majority rules would take for independent samples that agree (a seed set by hand in an ensemble,
+// a copied folder). Rows of the rule "every" (no scatter meant) are left out, and so are samples
+// that agree only on whole numbers (a count, an ordering): a group needs a value with a fraction.
+std::vector<std::vector<std::string>> identical_samples(const std::vector<Judged>& judged);
+
 // The reference's statement as a region: "0.73 ± 0.02", "≥ 0.05", "≤ 0".
 std::string statement(const Row& r);
 

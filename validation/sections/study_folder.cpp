@@ -7,6 +7,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "config/yaml_section.hpp"
 #include "io/hdf5.hpp"
 
 namespace fs = std::filesystem;
@@ -43,7 +44,7 @@ double wall_time(const std::string& result) {
 
 void read_stop(const std::string& result, validation::CaseRun& run) {
   try {
-    const YAML::Node n = YAML::LoadFile(result + ".outcome");
+    const YAML::Node n = dem::load_yaml(result + ".outcome");
     run.exit_code = n["exit_code"].as<int>();
     run.message = n["message"].as<std::string>();
   } catch (const std::exception&) {

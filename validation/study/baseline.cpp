@@ -9,6 +9,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "config/yaml_section.hpp"
 #include "io/hdf5.hpp"
 
 namespace validation {
@@ -100,9 +101,9 @@ std::uint64_t fnv1a64(const std::string& s) {
 std::string baseline_of(const std::string& scene_yaml, const std::string& where) {
   YAML::Node root;
   try {
-    root = YAML::Load(scene_yaml);
-  } catch (const YAML::Exception& e) {
-    throw std::runtime_error(where + ": not YAML (" + e.what() + ")");
+    root = dem::parse_yaml(scene_yaml, where);
+  } catch (const dem::ConfigError& e) {
+    throw std::runtime_error(e.what());
   }
   std::vector<std::string> path;
   std::string text;

@@ -9,7 +9,8 @@
 // ensemble (DIR/seed<N>/, one folder per sample) or one sample. Each row names the runs it reads by
 // the study's names (variant, density, test; row_runs.hpp), and only those runs are read.
 // Exit status: 0 only when everything asked for was done and judged: every result the rows need
-// read (of every sample runs.tsv lists), every row judged, no must-pass row inconsistent; 1
+// read (of every sample runs.tsv lists), every row judged, no must-pass row inconsistent, no two
+// samples identical in every row (judge/verdicts.hpp: identical_samples); 1
 // otherwise (the tables are still written, and stderr says why); 2 for bad arguments, a reference
 // file that cannot be read or has a bad row (an unknown key or quantity, a selector naming what the
 // study does not have), a results folder that does not exist or has no runs.tsv, or an --out that
@@ -218,7 +219,8 @@ validation::Stamp stamp_of(const Options& o, bool from_results) {
 nlohmann::ordered_json validation_json(const Options& o, const std::string& label, const std::vector<Judged>& judged,
                                        const validation::VerdictCounts& count, const std::vector<std::string>& samples,
                                        const std::vector<std::string>& missing, const std::vector<std::string>& missing_samples,
-                                       bool from_results, const validation::Stamp& stamp) {
+                                       const std::vector<std::vector<std::string>>& identical, bool from_results,
+                                       const validation::Stamp& stamp) {
   nlohmann::ordered_json json;
   json["profile"] = o.profile;
   json["references"] = o.references;
@@ -238,6 +240,7 @@ nlohmann::ordered_json validation_json(const Options& o, const std::string& labe
       {"both", "interval and majority: not judged with fewer than 2 samples with a value"}};
   json["samples"] = samples;
   json["missing_samples"] = missing_samples;
+  json["identical_samples"] = identical;  // groups of samples that are one sample (identical_samples)
   json["missing_results"] = nlohmann::json::array();
   for (const std::string& m : missing)  // lexical: a link loop cannot throw; a record's are relative already
     json["missing_results"].push_back(from_results ? fs::path(m).lexically_relative(o.results).string() : m);
@@ -249,7 +252,7 @@ nlohmann::ordered_json validation_json(const Options& o, const std::string& labe
   json["total"] = judged.size();
   json["must_pass_inconsistent"] = count.must_pass_failed;
   // Everything asked for done and judged (the exit status 0).
-  json["complete"] = missing.empty() && missing_samples.empty() && count.of(Verdict::NotJudged) == 0;
+  json["complete"] = missing.empty() && missing_samples.empty() && identical.empty() && count.of(Verdict::NotJudged) == 0;
   return json;
 }
 
@@ -333,8 +336,9 @@ int tool_main(int argc, char** argv) {
     samples = record->samples;
   }
 
-  const nlohmann::ordered_json json = validation_json(o, refs.label, judged, count, samples, missing, missing_samples, results.has_value(),
-                                                     stamp_of(o, results.has_value()));
+  const std::vector<std::vector<std::string>> identical = validation::identical_samples(judged);
+  const nlohmann::ordered_json json = validation_json(o, refs.label, judged, count, samples, missing, missing_samples, identical,
+                                                     results.has_value(), stamp_of(o, results.has_value()));
   validation::VerdictsContext context;
   context.label = refs.label;
   context.provenance = record ? "Judged again by `validate --from-json` from the per-sample values recorded in `" + o.from_json +
@@ -399,6 +403,14 @@ int tool_main(int argc, char** argv) {
       for (const std::string& c : copies) std::fprintf(stderr, "error: %s\n", c.c_str());
       status = 1;
     }
+  }
+  for (const std::vector<std::string>& group : identical) {
+    std::string names;
+    for (std::size_t k = 0; k < group.size(); ++k) names += (k == 0 ? "" : k + 1 == group.size() ? " and " : ", ") + group[k];
+    std::fprintf(stderr, "error: samples %s give the same values to the last digit in every row: one sample counted %zu times, "
+                 "not independent samples (their seeds set by hand, e.g. particles.lattice.seed in preparation_set, or a copied "
+                 "folder?); the verdicts take them as independent\n", names.c_str(), group.size());
+    status = 1;
   }
   if (count.must_pass_failed > 0) {
     std::fprintf(stderr, "error: %d must-pass row(s) inconsistent with the %s\n", count.must_pass_failed, refs.label.c_str());

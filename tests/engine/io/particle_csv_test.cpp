@@ -3,11 +3,17 @@
 // line, as the header promises.
 #include <catch2/catch.hpp>
 
+#include <sys/stat.h>
+
+#include <chrono>
 #include <cmath>
+#include <csignal>
 #include <filesystem>
+#include <fstream>
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "config/scene_config.hpp"
@@ -152,6 +158,40 @@ TEST_CASE("a particle file larger than the cap is refused without reading furthe
   // /dev/zero never ends: the reader stops at the cap (here 1 MiB; csv_max_bytes for a run).
   CHECK_THROWS_WITH(read_whole_file("/dev/zero", 1u << 20), "/dev/zero: larger than 1 MiB, the most a particle file may hold");
   CHECK(csv_max_bytes == 256u << 20);
+}
+
+TEST_CASE("a FIFO without a writer is waited for without blocking: a stop ends the wait, a writer ends it with its bytes", "[io][csv][fifo]") {
+  // Found by a hostile sweep: open() of a FIFO waits for a writer, and with the run's signal
+  // handlers (SA_RESTART) it was restarted after SIGTERM, so the run never ended. The reader opens
+  // without waiting and polls in steps of read_wait_step_ms, reading `stop` between them.
+  const std::string dir = test::scratch_dir("csv_fifo_wait");
+  const std::string fifo = dir + "/p.csv";
+  REQUIRE(mkfifo(fifo.c_str(), 0644) == 0);
+  volatile std::sig_atomic_t stop = 0;
+  SECTION("no writer: the stop, set 0.3 s in, ends the wait within a step") {
+    std::thread signal([&] {
+      std::this_thread::sleep_for(std::chrono::milliseconds(300));
+      stop = SIGTERM;
+    });
+    const auto start = std::chrono::steady_clock::now();
+    CHECK_THROWS_AS(read_whole_file(fifo, csv_max_bytes, &stop), ReadStopped);
+    const double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    signal.join();
+    // 0.3 s, plus one step, plus scheduling on a busy machine; a blocking open never returned.
+    CHECK(took >= 0.3);
+    CHECK(took < 0.3 + read_wait_step_ms / 1000.0 + 1.0);
+  }
+  SECTION("a writer that comes after 0.3 s: its bytes, whole") {
+    std::string text = "x,y,z,radius\n";
+    for (int i = 0; i < 20000; ++i) text += "0.001,0.002,0.003,0.0015\n";  // 500 KB: several pipe buffers
+    std::thread writer([&] {
+      std::this_thread::sleep_for(std::chrono::milliseconds(300));
+      std::ofstream(fifo, std::ios::binary) << text;
+    });
+    const std::string bytes = read_whole_file(fifo, csv_max_bytes, &stop);
+    writer.join();
+    CHECK(bytes == text);
+  }
 }
 
 TEST_CASE("a CSV line with a trailing comma (5 fields) is refused", "[io][csv]") {

@@ -7,6 +7,8 @@
 // every cell of the compact verdict table is at most 80 characters, and each cause links to its entry.
 #include <catch2/catch.hpp>
 
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -183,4 +185,40 @@ TEST_CASE("validate --from-json on the committed validation: every compact cell 
       CHECK_THAT(causes, Catch::Contains("\n### Cause " + n + "\n"));
     }
   CHECK(linked == j.at("inconsistent").get<int>() + j.at("not_judged").get<int>());
+}
+
+TEST_CASE("validate names samples that are one sample: the same values to the last digit in every row, exit 1", "[validate][cli][samples]") {
+  // Found by a hostile sweep: seed 2 a copy of seed 1 (a seed set in preparation_set) was judged
+  // as "2 samples" with sd 0. Judged again from a record of three samples whose first two agree to
+  // the last digit in both rows: validate names them, exits 1, and the record says so; one ulp apart
+  // in one row, they are independent samples and the same record passes.
+  const fs::path dir = dem::test::scratch_dir("validate_identical_samples");
+  std::ofstream(dir / "refs.yaml") << "source: lab\nrows:\n"
+      "  - {name: e0, quantity: void_ratio_after_preparation, density: dense, reference: 0.62, check: within, tolerance: 0.1, source: s, reason: r}\n"
+      "  - {name: z, quantity: coordination_after_preparation, density: dense, reference: 5.0, check: within, tolerance: 2, source: s, reason: r}\n";
+  const auto record = [&](const std::string& second_e0) {
+    std::ofstream(dir / "record.json")
+        << R"({"profile": "paper", "samples": ["seed1", "seed2", "seed3"], "missing_samples": [], "missing_results": [], "rows": [)"
+        << R"({"name": "e0", "density": "dense", "per_sample": [{"sample": "seed1", "value": 0.6123456789}, )"
+        << R"({"sample": "seed2", "value": )" << second_e0 << R"(}, {"sample": "seed3", "value": 0.6301}]}, )"
+        << R"({"name": "z", "density": "dense", "per_sample": [{"sample": "seed1", "value": 4.75}, {"sample": "seed2", "value": 4.75}, )"
+        << R"({"sample": "seed3", "value": 4.9}]}]})";
+    return validate("--from-json '" + (dir / "record.json").string() + "' --references '" + (dir / "refs.yaml").string() + "' --out '" +
+                    (dir / "out").string() + "'");
+  };
+  const auto same = record("0.6123456789");
+  INFO(same.out);
+  CHECK(same.exit_code == 1);
+  CHECK(same.out.find("error: samples seed1 and seed2 give the same values to the last digit in every row: one sample counted 2 times") !=
+        std::string::npos);
+  const nlohmann::json j = nlohmann::json::parse(text_of(dir / "out" / "validation.json"));
+  CHECK(j.at("identical_samples") == nlohmann::json::array({nlohmann::json::array({"seed1", "seed2"})}));
+  CHECK(j.at("complete") == false);
+  char next[32];  // the next double above 0.6123456789, to 17 digits (read back exactly)
+  std::snprintf(next, sizeof next, "%.17g", std::nextafter(0.6123456789, 1.0));
+  const auto apart = record(next);
+  INFO(apart.out);
+  CHECK(apart.exit_code == 0);
+  CHECK(apart.out.find("one sample counted") == std::string::npos);
+  CHECK(nlohmann::json::parse(text_of(dir / "out" / "validation.json")).at("identical_samples").empty());
 }
