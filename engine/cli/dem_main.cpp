@@ -32,6 +32,7 @@
 #include "analysis/time_series.hpp"
 #include "cli/plot.hpp"
 #include "io/hdf5.hpp"
+#include "io/result_file.hpp"
 #include "io/result_writer.hpp"  // describe_failure
 #include "io/state_io.hpp"
 #include "io/xdmf.hpp"
@@ -261,15 +262,16 @@ struct TableArgs {
 int table(const TableArgs& args) {
   try {
     dem::h5::Handle f = dem::h5::open_file_read(args.file);
-    dem::h5::Handle g = dem::h5::open_group(f, args.legs ? "legs" : "timeseries");
+    const char* group = args.legs ? "legs" : "timeseries";
+    dem::h5::open_group(f, group);  // a file without the table: HDF5's error, naming it
+    const dem::Table table = dem::read_table(f, group, args.file);  // every column as long as the others, checksums checked
     std::vector<std::string> names = args.columns;
     if (names.empty())
       for (const auto& c : args.legs ? dem::leg_columns() : dem::series_columns()) names.push_back(c.name);
     std::vector<std::vector<double>> cols;
-    std::size_t width = 0;
     for (const auto& n : names) {
-      if (!dem::h5::exists(g, n)) { std::fprintf(stderr, "dem table: %s has no column '%s'\n", args.file.c_str(), n.c_str()); return 2; }
-      cols.push_back(dem::h5::read<double>(g, n, width));
+      if (!table.count(n)) { std::fprintf(stderr, "dem table: %s has no column '%s'\n", args.file.c_str(), n.c_str()); return 2; }
+      cols.push_back(table.at(n));
     }
     const char* sep = args.csv ? "," : "\t";
     std::printf("%s", args.csv ? "" : "# ");
@@ -319,17 +321,17 @@ int summary(const std::vector<std::string>& files) {
   for (const std::string& file : files) {
     try {
       dem::h5::Handle f = dem::h5::open_file_read(file);
-      if (dem::h5::get_string_attribute(f, "status") != "complete") throw std::runtime_error("not a complete result");
-      dem::h5::Handle g = dem::h5::open_group(f, "timeseries");
+      if (const std::string why = dem::result_problem(f); !why.empty()) throw std::runtime_error("not a complete result: " + why);
+      const dem::Table table = dem::read_table(f, "timeseries", file);
       std::printf("%s\t%.6g", file.c_str(), dem::h5::get_double_attribute(f, "wall_time_s"));
       for (const auto& c : dem::series_columns()) {  // columns a result's schema lacks print as nan
-        std::size_t width = 0;
-        const auto v = dem::h5::exists(g, c.name) ? dem::h5::read<double>(g, c.name, width) : std::vector<double>{};
-        std::printf("\t%.10g", v.empty() ? std::nan("") : v.back());
+        const auto it = table.find(c.name);
+        std::printf("\t%.10g", it == table.end() || it->second.empty() ? std::nan("") : it->second.back());
       }
       std::printf("\n");
     } catch (const std::exception& e) {
-      std::fprintf(stderr, "dem summary: %s: %s\n", file.c_str(), e.what());
+      const std::string what = e.what();  // the table reader's errors name the file already
+      std::fprintf(stderr, "dem summary: %s\n", (what.rfind(file, 0) == 0 ? what : file + ": " + what).c_str());
       status = 1;
     }
   }

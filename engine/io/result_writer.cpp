@@ -8,6 +8,7 @@
 #include "analysis/legs.hpp"
 #include "analysis/time_series.hpp"
 #include "io/atomic_file.hpp"
+#include "io/result_file.hpp"
 #include "io/state_io.hpp"
 #include "io/xdmf.hpp"
 #include "version.hpp"
@@ -134,6 +135,7 @@ void ResultWriter::close() {
 
 std::string ResultWriter::complete(double wall_time_s) {
   write_pending();
+  for (const char* table : {"timeseries", "legs"}) write_table_checksums(file_, table);  // once, after the last row
   h5::set_attribute(file_, "wall_time_s", wall_time_s);
   h5::set_attribute(file_, "status", std::string("complete"));
   const bool has_frames = frames_ && frames_->frames() > 0;

@@ -1,5 +1,7 @@
 #include "io/state_io.hpp"
 
+#include "io/result_file.hpp"
+
 #include <cmath>
 #include <utility>
 
@@ -130,10 +132,8 @@ SavedState read_state_unchecked(hid_t g, const std::string& file);
 SavedState read_state(const std::string& file) {
   return h5::naming_file(file, [&] {
     h5::Handle f = h5::open_file_read(file);
-    if (!h5::has_attribute(f, "status") || h5::get_string_attribute(f, "status") != "complete")
-      throw h5::Error(file + ": not a complete result (status '" +
-                      (h5::has_attribute(f, "status") ? h5::get_string_attribute(f, "status") : std::string("missing")) +
-                      "'); only a finished run's state can be loaded");
+    if (const std::string why = result_problem(f); !why.empty())
+      throw h5::Error(file + ": not a complete result (" + why + "); only a finished run's state can be loaded");
     return read_state_unchecked(h5::open_group(f, "state"), file);
   });
 }

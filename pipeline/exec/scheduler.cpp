@@ -23,6 +23,7 @@
 #include "exec/tracker.hpp"
 #include "io/atomic_file.hpp"
 #include "io/hdf5.hpp"
+#include "io/result_file.hpp"
 
 namespace pipeline {
 
@@ -32,8 +33,7 @@ std::string reuse_problem(const std::string& result, const std::string& hash) {
   if (!std::filesystem::is_regular_file(result, ec)) return "not a regular file";
   try {
     dem::h5::Handle f = dem::h5::open_file_read(result);
-    const std::string status = dem::h5::has_attribute(f, "status") ? dem::h5::get_string_attribute(f, "status") : "";
-    if (status != "complete") return "not marked complete (status '" + status + "')";
+    if (const std::string why = dem::result_problem(f); !why.empty()) return "not a complete result (" + why + ")";
     if (!dem::h5::has_attribute(f, "input_hash") || dem::h5::get_string_attribute(f, "input_hash") != hash)
       return "written for other inputs";
     return "";

@@ -53,7 +53,7 @@ struct ResultCost {
   std::optional<double> wall_s;
 };
 std::optional<ResultCost> result_cost(const std::string& result);
-// Why `result` cannot be reused for `hash`: "" if it can, else "not run yet", "not marked complete
+// Why `result` cannot be reused for `hash`: "" if it can, else "not run yet", "not a complete result
 // (status '...')", "written for other inputs" or "unreadable, truncated or corrupt (...)".
 std::string reuse_problem(const std::string& result, const std::string& hash);
 

@@ -182,6 +182,7 @@ void write_result(const fs::path& file, const std::string& hash, std::int64_t st
                   std::optional<double> wall_s) {
   dem::h5::Handle f = dem::h5::create_file(file.string());
   dem::h5::set_attribute(f, "status", std::string("complete"));
+  dem::h5::set_attribute(f, "schema_version", std::int64_t{4});
   dem::h5::set_attribute(f, "input_hash", hash);
   if (wall_s) dem::h5::set_attribute(f, "wall_time_s", *wall_s);
   {
@@ -211,7 +212,9 @@ TEST_CASE("pipeline: the ETA learns from finished runs what their family takes a
                                             planned(dir, "shear", "shear", 3e4), planned(dir, "unknown_wall", "other", 5e4),
                                             planned(dir, "unknown_wall_b", "other", 5e4)};
   write_result(runs[0].result, runs[0].hash, 1000, 10, 20.0);
-  write_result(runs[3].result, runs[3].hash, 100, 10, std::nullopt);  // no wall time: scales its family, not the rate
+  // A wall time of 0 (none measured): scales its family, not the rate. A complete result always has
+  // the attribute (io/result_file.hpp: one without it is a .partial marked complete by hand).
+  write_result(runs[3].result, runs[3].hash, 100, 10, 0.0);
   pipeline::Tracker tracker(runs);
   REQUIRE(tracker.state(0) == pipeline::RunState::Done);
   REQUIRE(tracker.state(3) == pipeline::RunState::Done);

@@ -4,6 +4,7 @@
 
 #include "study/format.hpp"
 #include "study/json_file.hpp"
+#include "study/settings.hpp"
 
 namespace fs = std::filesystem;
 
@@ -79,6 +80,22 @@ std::string stamp_difference(const Stamp& section, const Stamp& paper, bool base
   const bool baseline = baselines && !section.baseline.empty() && !paper.baseline.empty() && section.baseline != paper.baseline;
   const bool engine = !paper.engine_source.empty() && (section.engine_source != paper.engine_source || section.other_engine_results > 0);
   return baseline && engine ? "baseline and engine" : baseline ? "baseline" : engine ? "engine" : "";
+}
+
+std::string judged_difference(const Stamp& results, const Stamp& judged) {
+  if (!judged.recorded()) return "";
+  std::vector<std::string> differs;
+  const std::string d = stamp_difference(results, judged);
+  const auto field = [&](const std::string& what, const std::string& here, const std::string& there) {
+    differs.push_back(what + " (" + (here.empty() ? not_recorded : here) + " here, " + (there.empty() ? not_recorded : there) + " judged)");
+  };
+  if (d.find("baseline") != std::string::npos) field("baseline", results.baseline, judged.baseline);
+  if (d.find("engine") != std::string::npos) field("engine source", results.engine_source, judged.engine_source);
+  if (results.spheres > 0 && judged.spheres > 0 && results.spheres != judged.spheres)
+    field("spheres", std::to_string(results.spheres), std::to_string(judged.spheres));
+  if (results.samples > 0 && judged.samples > 0 && results.samples != judged.samples)
+    field("samples", std::to_string(results.samples), std::to_string(judged.samples));
+  return joined(differs, ", ");
 }
 
 std::vector<std::pair<OtherStudySection, std::string>> sections_from_elsewhere(const fs::path& report,

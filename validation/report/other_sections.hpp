@@ -48,6 +48,12 @@ std::string stamp_sentence(const Stamp& s);
 // such a section was only said to be so in its line, "Stamp not recorded").
 std::string stamp_difference(const Stamp& section, const Stamp& paper, bool baselines = true);
 
+// What differs between the stamp of the results a report reads (`results`) and that of the
+// validation.json whose verdicts it shows (`judged`): stamp_difference's baseline and engine, and
+// the spheres and the samples (another profile or another study on the same baseline), each said
+// with both values; "" when they agree or `judged` is not stamped (made before stamps).
+std::string judged_difference(const Stamp& results, const Stamp& judged);
+
 // The sections, of those whose table key is filled in `values`, whose stamp differs from `paper`
 // (stamp_difference), each with what differs: what stamp_sections refuses or heads ⚠.
 std::vector<std::pair<OtherStudySection, std::string>> sections_from_elsewhere(const std::filesystem::path& report,

@@ -7,35 +7,20 @@
 #include <stdexcept>
 
 #include "io/hdf5.hpp"
+#include "io/result_file.hpp"
 
 namespace validation {
 
 namespace {
 
-bool complete(const dem::h5::Handle& f) {
-  return dem::h5::has_attribute(f, "status") && dem::h5::get_string_attribute(f, "status") == "complete";
-}
-
-Columns read_group(hid_t file, const std::string& group) {
-  Columns out;
-  if (!dem::h5::exists(file, group)) return out;
-  dem::h5::Handle g = dem::h5::open_group(file, group);
-  H5G_info_t info{};
-  H5Gget_info(g, &info);
-  for (hsize_t i = 0; i < info.nlinks; ++i) {
-    char name[256] = {0};
-    H5Lget_name_by_idx(g, ".", H5_INDEX_NAME, H5_ITER_INC, i, name, sizeof name, H5P_DEFAULT);
-    std::size_t cols = 0;
-    out[name] = dem::h5::read<double>(g, name, cols);
-  }
-  return out;
-}
+// Whether `f` is a complete result (io/result_file.hpp: the engine's one check).
+bool complete(const dem::h5::Handle& f) { return dem::result_problem(f).empty(); }
 
 }  // namespace
 
 Columns read_columns(const std::string& file, const std::string& group) {
   dem::h5::Handle f = dem::h5::open_file_read(file);
-  return read_group(f, group);
+  return dem::read_table(f, group, file);
 }
 
 bool is_complete(const std::string& file) {
@@ -56,8 +41,8 @@ std::string test_label(const TestResult& t) { return t.name.empty() ? std::to_st
 
 void load_preparation(const std::string& file, DensityResults& r) {
   dem::h5::Handle f = dem::h5::open_file_read(file);
-  if (!complete(f)) throw std::runtime_error("not complete");
-  for (const auto& [name, values] : read_group(f, "timeseries"))
+  dem::check_complete_result(f, file);
+  for (const auto& [name, values] : dem::read_table(f, "timeseries", file))
     if (!values.empty()) r.sample[name] = values.back();
   // The number of spheres, from the particle frames (frames x particles x 3).
   if (dem::h5::exists(f, "particles/all/position/value")) {
@@ -69,10 +54,10 @@ void load_preparation(const std::string& file, DensityResults& r) {
 
 TestResult load_test(const std::string& file, const std::string& name) {
   dem::h5::Handle f = dem::h5::open_file_read(file);
-  if (!complete(f)) throw std::runtime_error("not complete");
+  dem::check_complete_result(f, file);
   const std::string label = test_label(name);
   const int number = label != name ? std::atoi(label.c_str()) : 0;
-  return {number, read_group(f, "timeseries"), read_group(f, "legs"), name};
+  return {number, dem::read_table(f, "timeseries", file), dem::read_table(f, "legs", file), name};
 }
 
 DensityResults load_density(const std::string& preparation, const std::map<int, std::string>& tests,
@@ -159,8 +144,11 @@ bool report_unreadable(const std::string& tool, const std::vector<std::string>& 
     std::string why;
     try {
       const dem::h5::Handle f = dem::h5::open_file_read(file);
-      const std::string status = dem::h5::has_attribute(f, "status") ? dem::h5::get_string_attribute(f, "status") : "";
-      why = status == "complete" ? "its columns cannot be read" : "status '" + status + "'";
+      why = dem::result_problem(f);
+      if (why.empty()) {  // complete: its tables are what cannot be read
+        why = "its columns cannot be read";
+        for (const char* table : {"timeseries", "legs"}) dem::read_table(f, table, file);
+      }
     } catch (const std::exception& e) {
       why = e.what();
     }

@@ -16,7 +16,8 @@
 // line says the engine, baseline, size and date of its numbers; a section whose baseline or
 // engine source differs from the paper study's (REPORT_DIR/validation.json's stamp) is refused
 // (exit 1, naming it) unless --allow-other-baseline, which heads it "⚠ from another baseline" (or
-// engine); so is a study_values.json from another baseline or engine. Exit status: 0; 1 if the report cannot be written, a
+// engine); so is a study_values.json from another baseline or engine, and a validation.json that
+// judged other results than --results (another engine, baseline, size or samples). Exit status: 0; 1 if the report cannot be written, a
 // template names an unknown key or a result file is there but cannot be read; 2 for bad arguments
 // or a --results that is not a folder (one that does not exist is accepted when REPORT_DIR has a
 // study_values.json).
@@ -142,6 +143,20 @@ int tool_main(int argc, char** argv) {
     std::vector<std::string> elsewhere;
     for (const auto& [section, differs] : validation::sections_from_elsewhere(report, v, paper_stamp))
       elsewhere.push_back("\"" + validation::section_name(section.heading) + "\" (another " + differs + ")");
+    // The verdicts shown are validation.json's: it must have judged these results (the same
+    // engine, baseline, spheres and samples), or the report would present another study's verdicts
+    // as this one's.
+    if (fresh) {
+      if (const std::string differs = validation::judged_difference(from_results->stamp, paper_stamp); !differs.empty()) {
+        if (!allow_other_baseline) {
+          std::fprintf(stderr, "report: %s judged other results than --results %s: its %s differ; run validate on these results "
+                               "first, or keep it with --allow-other-baseline\n",
+                       (report / "validation.json").c_str(), validation::shown_path(results).c_str(), differs.c_str());
+          return 1;
+        }
+        elsewhere.push_back("the verdicts of `" + (report / "validation.json").string() + "` (another " + differs + ")");
+      }
+    }
     // The values read back must come from the results validation.json judged: another baseline is
     // refused as a section would be.
     if (read_back) {

@@ -43,6 +43,7 @@
 #include "study/format.hpp"
 #include "study/manifest.hpp"
 #include "study/markdown_table.hpp"
+#include "study/results.hpp"
 #include "study/json_file.hpp"
 #include "study/stamp.hpp"
 #include "judge/row_runs.hpp"
@@ -382,6 +383,7 @@ int tool_main(int argc, char** argv) {
   }
   if (!missing.empty()) {
     std::fprintf(stderr, "error: %zu result file(s) missing or not complete (of the runs the rows read), e.g. %s\n", missing.size(), missing.front().c_str());
+    if (results) validation::report_unreadable("validate", missing);  // those that are there: why each is not a result
     status = 1;
   }
   // A quasi-static row is not judged by design (its warning says why); any other row not judged

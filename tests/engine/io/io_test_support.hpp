@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "io/hdf5.hpp"
+#include "version.hpp"
 
 namespace dem::test {
 
@@ -70,6 +71,14 @@ inline std::vector<std::string> h5_members(hid_t group) {
     names.push_back(name);
   }
   return names;
+}
+
+// Marks an open file a complete result as a run does (io/result_file.hpp: status "complete", its
+// wall_time_s, this build's schema_version): what a fixture that writes a result by hand needs.
+inline void mark_complete(hid_t f, double wall_time_s = 1.0) {
+  h5::set_attribute(f, "status", std::string("complete"));
+  h5::set_attribute(f, "wall_time_s", wall_time_s);
+  h5::set_attribute(f, "schema_version", static_cast<std::int64_t>(schema_version));
 }
 
 // The file's top-level `status` attribute ("" if the file cannot be read or has none).

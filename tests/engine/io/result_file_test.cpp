@@ -18,6 +18,7 @@
 #include "config/yaml_section.hpp"
 #include "engine/io/io_test_support.hpp"
 #include "io/hdf5.hpp"
+#include "io/result_file.hpp"
 #include "io/result_writer.hpp"
 #include "io/state_io.hpp"
 #include "run/run_scene.hpp"
@@ -332,4 +333,101 @@ TEST_CASE("h5::unit_of reads the unit of a dataset of this version and of an old
   CHECK(h5::unit_of(f, "new") == "Pa");
   CHECK(h5::unit_of(f, "old") == "m");
   CHECK(h5::unit_of(f, "none").empty());
+}
+
+namespace {
+
+// A complete result of the tiny scene in `dir`: r.h5.
+std::string complete_result(const std::string& dir) {
+  const std::string out = dir + "/r.h5";
+  // A row every 100 of the 500 steps: 6 rows or so.
+  run_scene(scene_from_text(test::tiny_scene(squeeze_stage, "{kn: 1.0e6, ks: 1.0e6, friction: 0.5}", "output: {interval: 100}\n"),
+                            dir + "/s.yaml"),
+            out);
+  return out;
+}
+
+// Opens `file` for writing and runs `edit` on it (a forger's or a flipped bit's change).
+template <class Edit>
+void edit_file(const std::string& file, Edit edit) {
+  h5::Handle f = h5::open_file_write(file);
+  edit(f);
+}
+
+std::string problem_of(const std::string& file) { return result_problem(h5::open_file_read(file)); }
+
+}  // namespace
+
+TEST_CASE("a complete result is one check: status, wall time and a known schema; every reader asks it", "[io][result][complete]") {
+  // Found by a hostile sweep: a killed run's .partial renamed to the result with its status set to
+  // "complete" was read by validate, ensemble-cycles and report (dem summary and figure-data
+  // refused it for its missing wall_time_s), and a schema_version of 99 or none was read as 4.
+  const std::string dir = test::scratch_dir("result_complete_check");
+  const std::string out = complete_result(dir);
+  CHECK(problem_of(out).empty());
+  SECTION("a failed run's .partial, its status set to complete by hand") {
+    const std::string partial = dir + "/bad.h5.partial";
+    CHECK_THROWS(run_scene(scene_from_text(test::tiny_scene(hopeless_stage), dir + "/bad.yaml"), dir + "/bad.h5"));
+    REQUIRE(fs::exists(partial));
+    CHECK(problem_of(partial).rfind("status 'failed: ", 0) == 0);
+    edit_file(partial, [](hid_t f) { h5::set_attribute(f, "status", std::string("complete")); });
+    fs::rename(partial, dir + "/forged.h5");
+    CHECK(problem_of(dir + "/forged.h5") ==
+          "status 'complete' but no wall_time_s, which a run writes as it completes: a killed run's .partial marked complete by hand?");
+    CHECK_THROWS_WITH(read_state(dir + "/forged.h5"), Catch::Matchers::Contains("not a complete result (status 'complete' but no wall_time_s"));
+  }
+  SECTION("a schema this build does not read, or none") {
+    edit_file(out, [](hid_t f) { h5::set_attribute(f, "schema_version", std::int64_t{99}); });
+    CHECK(problem_of(out) == "schema_version 99: this dem reads 1 to " + std::to_string(schema_version) + " (a result of a newer dem?)");
+    edit_file(out, [](hid_t f) { H5Adelete(f, "schema_version"); });
+    CHECK(problem_of(out) == "no schema_version: not a result of dem");
+    edit_file(out, [](hid_t f) { h5::set_attribute(f, "schema_version", std::int64_t{schema_version}); });
+    CHECK(problem_of(out).empty());
+  }
+}
+
+TEST_CASE("a result's tables are read whole or refused: a short column, a changed value", "[io][result][table]") {
+  // Found by a hostile sweep: a time-series column shorter than `time` was read with zeros for the
+  // missing rows (dem table printed 0, validate judged εv 0.0 where it was 0.603), and a flipped
+  // bit in a column was read silently. read_table, which every reader uses, refuses both.
+  const std::string dir = test::scratch_dir("result_table_check");
+  const std::string out = complete_result(dir);
+  const Table whole = read_table(h5::open_file_read(out), "timeseries", out);
+  const std::size_t rows = whole.at("time").size();
+  REQUIRE(rows >= 3);
+  for (const auto& [name, values] : whole) CHECK(values.size() == rows);
+  SECTION("every column has its checksum, and the unchanged file passes it") {
+    h5::Handle f = h5::open_file_read(out);
+    h5::Handle g = h5::open_group(f, "timeseries");
+    for (const auto& [name, values] : whole) CHECK(h5::has_attribute(h5::Handle(H5Dopen2(g, name.c_str(), H5P_DEFAULT)), "checksum"));
+    CHECK_NOTHROW(read_table(f, "legs", out));
+  }
+  SECTION("a column one row short") {
+    edit_file(out, [&](hid_t f) {
+      h5::Handle ds(H5Dopen2(f, "timeseries/p", H5P_DEFAULT));
+      const hsize_t shorter = rows - 1;
+      REQUIRE(H5Dset_extent(ds, &shorter) >= 0);
+    });
+    CHECK_THROWS_WITH(read_table(h5::open_file_read(out), "timeseries", out),
+                      out + ": /timeseries/p has " + std::to_string(rows - 1) + " rows and /timeseries/time " + std::to_string(rows) +
+                          ": a damaged result (every column of a table has one value per row)");
+    // The tools say so: dem table (it printed 0 for the missing row) and dem summary.
+    const std::string dem = std::string(DEM_BINARY_DIR) + "/bin/dem";
+    for (const std::string command : {"table '" + out + "' time p", "summary '" + out + "'"}) {
+      const auto r = test::run_command("'" + dem + "' " + command + " 2>&1 >/dev/null");
+      INFO(command << ": " << r.out);
+      CHECK(r.exit_code != 0);
+      CHECK_THAT(r.out, Catch::Matchers::Contains("/timeseries/p has " + std::to_string(rows - 1) + " rows"));
+    }
+  }
+  SECTION("one value changed by its last bit") {
+    edit_file(out, [&](hid_t f) {
+      h5::Handle ds(H5Dopen2(f, "timeseries/p", H5P_DEFAULT));
+      std::vector<double> p = whole.at("p");
+      p[1] = std::nextafter(p[1], 1e300);
+      REQUIRE(H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, p.data()) >= 0);
+    });
+    CHECK_THROWS_WITH(read_table(h5::open_file_read(out), "timeseries", out),
+                      out + ": /timeseries/p: its values do not match its checksum (changed since the run wrote them: a damaged or edited file)");
+  }
 }

@@ -15,6 +15,7 @@
 #include "analysis/legs.hpp"
 #include "control/stress_path.hpp"
 #include "figures/figures.hpp"
+#include "engine/io/io_test_support.hpp"
 #include "io/hdf5.hpp"
 
 namespace fs = std::filesystem;
@@ -218,7 +219,7 @@ TEST_CASE("figure-data on a synthetic result: known columns, and every figure sc
   series["strong_fabric_ratio"] = {0, 0.3, 0.1};
   {
     dem::h5::Handle f = dem::h5::create_file((dir / "results" / "loose_test1.h5").string());
-    dem::h5::set_attribute(f, "status", std::string("complete"));
+    dem::test::mark_complete(f);
     dem::h5::Handle ts = dem::h5::create_group(f, "timeseries");
     for (const auto& [name, v] : series) dem::h5::write<double>(ts, name, v, 1, "1");
     dem::h5::Handle lg = dem::h5::create_group(f, "legs");

@@ -108,3 +108,60 @@ TEST_CASE("report: values read back from other results than validation.json judg
   CHECK(bad.exit_code == 1);
   CHECK_THAT(bad.out, Catch::Contains("study_values.json: value \"a\" is not text"));
 }
+
+TEST_CASE("report: a validation.json that judged other results than --results is refused", "[report][stamp][cli]") {
+  // Found by a hostile sweep: report took the validation.json of another study beside its
+  // --results and showed its verdicts as this study's. The results here: the shipped 1,000-sphere
+  // samples as the dense preparations of three samples; validate stamps its validation.json with
+  // their engine, baseline, spheres and samples. That record is accepted; the same record with
+  // another sample count or sphere count (another profile) or another baseline is refused, naming
+  // both values, unless --allow-other-baseline keeps it (said in the header).
+  const fs::path dir = dem::test::scratch_dir("report_judged_cli");
+  const fs::path results = dir / "results", out = dir / "reports";
+  fs::create_directories(results);
+  std::ofstream runs(results / "runs.tsv");
+  runs << "# variant\tdensity\ttest\trun\tresult\tstarts_from\tmay_fail\tsettings\tseed\n";
+  const char* packings[] = {"dense_1k.h5", "medium_1k.h5", "loose_1k.h5"};
+  for (int seed = 1; seed <= 3; ++seed) {
+    const fs::path s = results / ("seed" + std::to_string(seed));
+    fs::create_directories(s);
+    fs::copy_file(source + "/scenes/samples/" + packings[seed - 1], s / "dense_prepare.h5");
+    runs << "-\tdense\t-\tseed" << seed << "/dense_prepare\t/x/seed" << seed << "/dense_prepare.h5\t-\t0\tas written\t" << seed << "\n";
+  }
+  runs.close();
+  fs::copy(source + "/reports", out, fs::copy_options::recursive);
+  std::ofstream(dir / "refs.yaml") << "source: lab\nrows:\n  - {name: e0, quantity: void_ratio_after_preparation, density: dense, "
+                                      "reference: 0.6, check: within, tolerance: 0.2, source: s, reason: r}\n";
+  const auto validated = dem::test::run_command("'" + bin + "validate' --results '" + results.string() + "' --references '" +
+                                                (dir / "refs.yaml").string() + "' --out '" + (dir / "judged").string() + "' 2>&1");
+  INFO(validated.out);
+  const nlohmann::ordered_json judged = nlohmann::ordered_json::parse(dem::test::read_bytes((dir / "judged" / "validation.json").string()));
+  const nlohmann::ordered_json stamp = judged.at("stamp");
+  REQUIRE(stamp.at("samples") == 3);
+  REQUIRE(stamp.at("spheres") == 1000);
+  const std::string report = "cd '" + source + "' && '" + bin + "report' --results '" + results.string() +
+                             "' --references reference_data/paper.yaml --out '" + out.string() + "' --sample seed1";
+  const std::string refusal = "judged other results than --results";
+  set_key(out / "validation.json", "stamp", stamp);
+  const auto same = dem::test::run_command(report + " 2>&1");
+  INFO(same.out);
+  CHECK(same.out.find(refusal) == std::string::npos);
+  struct Other {
+    std::string key;
+    nlohmann::ordered_json value;
+    std::string said;
+  };
+  for (const Other& o : {Other{"samples", 5, "samples (3 here, 5 judged)"}, Other{"spheres", 8000, "spheres (1000 here, 8000 judged)"},
+                         Other{"baseline", "2222222222222222", "2222222222222222 judged)"}}) {
+    INFO(o.key);
+    nlohmann::ordered_json other = stamp;
+    other[o.key] = o.value;
+    set_key(out / "validation.json", "stamp", other);
+    const std::string before = dem::test::read_bytes((out / "index.md").string());
+    const auto refused = dem::test::run_command(report + " 2>&1");
+    INFO(refused.out);
+    CHECK(refused.exit_code == 1);
+    CHECK_THAT(refused.out, Catch::Contains(refusal) && Catch::Contains(o.said) && Catch::Contains("--allow-other-baseline"));
+    CHECK(dem::test::read_bytes((out / "index.md").string()) == before);  // not written
+  }
+}

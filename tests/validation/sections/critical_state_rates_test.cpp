@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/io/io_test_support.hpp"
 #include "io/hdf5.hpp"
 
 namespace fs = std::filesystem;
@@ -47,7 +48,7 @@ void write_shear(const fs::path& file, double mu, double rate, double eta, bool 
   replace_once(scene, "friction: 0.5}", f.str());
   replace_once(scene, "{strain_rate: 1.0}", r.str());
   dem::h5::Handle h = dem::h5::create_file(file.string());
-  dem::h5::set_attribute(h, "status", std::string("complete"));
+  dem::test::mark_complete(h);
   dem::h5::write_text(h, "scene_yaml", scene);
   const double axial = extension ? p0 * (1 - 2 * eta / 3) : p0 * (1 + 2 * eta / 3);
   const double lateral = extension ? p0 * (1 + eta / 3) : p0 * (1 - eta / 3);

@@ -26,7 +26,7 @@ const std::string bin = std::string(DEM_BINARY_DIR) + "/bin/compare-runs";
 void write_preparation(const fs::path& file, double e0, int particles) {
   fs::create_directories(file.parent_path());
   dem::h5::Handle f = dem::h5::create_file(file.string());
-  dem::h5::set_attribute(f, "status", std::string("complete"));
+  dem::test::mark_complete(f);
   {
     dem::h5::Handle g = dem::h5::create_group(f, "timeseries");
     dem::h5::write<double>(g, "void_ratio", {0.9, e0}, 1, "1");
@@ -48,7 +48,7 @@ void write_preparation(const fs::path& file, double e0, int particles) {
 void write_test(const fs::path& file, double ev_percent) {
   fs::create_directories(file.parent_path());
   dem::h5::Handle f = dem::h5::create_file(file.string());
-  dem::h5::set_attribute(f, "status", std::string("complete"));
+  dem::test::mark_complete(f);
   dem::h5::Handle g = dem::h5::create_group(f, "timeseries");
   dem::h5::write<double>(g, "cycle", {1}, 1, "1");
   dem::h5::write<double>(g, "cycle_end", {1}, 1, "1");

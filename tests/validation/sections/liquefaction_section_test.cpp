@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "engine/io/io_test_support.hpp"
 #include "io/hdf5.hpp"
 
 namespace fs = std::filesystem;
@@ -38,7 +39,7 @@ void write_test(const fs::path& file, double csr, double cycles, bool liquefied)
   REQUIRE(scene.find(amplitude) != std::string::npos);
   scene.replace(scene.find(amplitude), amplitude.size(), "amplitude: " + std::to_string(2 * csr * 1e5));
   dem::h5::Handle f = dem::h5::create_file(file.string());
-  dem::h5::set_attribute(f, "status", std::string("complete"));
+  dem::test::mark_complete(f);
   dem::h5::write_text(f, "scene_yaml", scene);
   const double t0 = 0.1, t1 = t0 + cycles * period_s, ru1 = liquefied ? 0.95 : 0.4;
   dem::h5::set_attribute(f, "stage_end_cyclic", liquefied ? "until.pore_pressure_ratio met at time " + std::to_string(t1) + " s"
@@ -55,7 +56,7 @@ void write_test(const fs::path& file, double csr, double cycles, bool liquefied)
 void write_collapsing_hold(const fs::path& file, double collapse_cycles) {
   fs::create_directories(file.parent_path());
   dem::h5::Handle f = dem::h5::create_file(file.string());
-  dem::h5::set_attribute(f, "status", std::string("complete"));
+  dem::test::mark_complete(f);
   dem::h5::write_text(f, "scene_yaml", read_file(std::string(DEM_SOURCE_DIR) + "/scenes/tests/undrained_hold.yaml"));
   const double t0 = 0.1, t1 = t0 + collapse_cycles * period_s;
   dem::h5::set_attribute(f, "stage_end_hold", "until.pore_pressure_ratio met at time " + std::to_string(t1) + " s");

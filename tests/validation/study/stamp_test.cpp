@@ -23,11 +23,11 @@ std::string scene(double time_step, int seed) {
          "}\nmaterial: {density: 2650, law: linear, kn: 1000000, friction: 0}\nnumerics: {time_step: " + std::to_string(time_step) + "}\n";
 }
 
-// A complete result: status, software_version, scene_yaml and one frame of `spheres` positions.
+// A complete result (mark_complete), software_version, scene_yaml and one frame of `spheres` positions.
 void write_result(const fs::path& file, const std::string& engine, const std::string& scene_yaml, int spheres) {
   fs::create_directories(file.parent_path());
   dem::h5::Handle f = dem::h5::create_file(file.string());
-  dem::h5::set_attribute(f, "status", std::string("complete"));
+  dem::test::mark_complete(f);
   dem::h5::set_attribute(f, "software_version", engine);
   dem::h5::write_text(f, "scene_yaml", scene_yaml);
   {

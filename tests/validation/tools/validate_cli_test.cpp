@@ -315,3 +315,32 @@ TEST_CASE("validate: a NaN in a result and a copied sample are named, exit 1", "
                                     " (dense_prepare): a non-finite number in its results"));
   CHECK_THAT(r.out, !Catch::Contains("seed3 have the same"));
 }
+
+TEST_CASE("validate: a result marked complete by hand, without the wall time a run writes, is not read", "[validate][cli][complete]") {
+  // Found by a hostile sweep: a killed run's .partial renamed to the result with its status set to
+  // "complete" was judged. Two samples, the shipped dense sample as each one's preparation; seed2's
+  // lacks wall_time_s (what a .partial lacks): it is listed as not complete, exit 1.
+  const fs::path results = fs::path(dem::test::scratch_dir("validate_cli_forged")) / "results";
+  std::ofstream runs((fs::create_directories(results), results / "runs.tsv"));
+  runs << "# variant\tdensity\ttest\trun\tresult\tstarts_from\tmay_fail\tsettings\tseed\n";
+  for (int seed = 1; seed <= 2; ++seed) {
+    const fs::path s = results / ("seed" + std::to_string(seed));
+    fs::create_directories(s);
+    fs::copy_file(std::string(DEM_SOURCE_DIR) + "/scenes/samples/dense_1k.h5", s / "dense_prepare.h5");
+    runs << "-\tdense\t-\tseed" << seed << "/dense_prepare\t/x/seed" << seed << "/dense_prepare.h5\t-\t0\tas written\t" << seed << "\n";
+  }
+  runs.close();
+  {
+    dem::h5::Handle f = dem::h5::open_file_write((results / "seed2" / "dense_prepare.h5").string());
+    REQUIRE(H5Adelete(f, "wall_time_s") >= 0);
+  }
+  std::ofstream(results.parent_path() / "refs.yaml") << "source: lab\nrows:\n  - {name: e0, quantity: void_ratio_after_preparation, "
+                                                        "density: dense, reference: 0.6, check: within, tolerance: 0.2, source: s, reason: r}\n";
+  const auto r = validate("--results '" + results.string() + "' --references '" + (results.parent_path() / "refs.yaml").string() +
+                          "' --out '" + (results.parent_path() / "out").string() + "'");
+  INFO(r.out);
+  CHECK(r.exit_code == 1);
+  CHECK_THAT(r.out, Catch::Contains("no wall_time_s"));
+  const nlohmann::json j = nlohmann::json::parse(dem::test::read_bytes((results.parent_path() / "out" / "validation.json").string()));
+  CHECK(j.at("missing_results") == nlohmann::json::array({"seed2/dense_prepare.h5"}));
+}
