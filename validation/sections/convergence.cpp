@@ -19,6 +19,7 @@
 
 #include "io/atomic_file.hpp"
 #include "sections/convergence_budget.hpp"
+#include "sections/convergence_rows.hpp"
 #include "sections/convergence_summary.hpp"
 #include "sections/modes.hpp"
 #include "sections/variants.hpp"
@@ -33,6 +34,8 @@ using validation::ConvergenceRun;
 using validation::ConvergenceSummary;
 using validation::Estimate;
 using validation::PerSeed;
+using validation::budget_number;
+using validation::factors_of;
 
 namespace compare_runs {
 namespace {
@@ -60,12 +63,6 @@ const std::vector<std::pair<std::string, std::string>>& headline() {
 
 bool same(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b)); }
 
-std::string number(double x) {
-  if (!std::isfinite(x)) return "—";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", x);
-  return buf;
-}
 
 // "+1.23 ± 0.40 %" of `scale`; the half-width left out when there is none.
 std::string signed_percent(const Estimate& e, double scale) {
@@ -139,9 +136,7 @@ std::map<std::string, Setting> settings_of(const Runs& runs) {
 }
 
 // What one density's analysis found, for the table and the figure.
-struct DensityBudget {
-  std::string density;
-  std::vector<Budget> budgets;
+struct DensityBudget : validation::DensityBudgets {
   std::map<std::string, Setting> settings;
   std::string dt_half, dt_quarter;            // the time step of the test only, on the reference's samples ("" none)
   std::string both_half, both_quarter;        // the time step of the preparation and the test
@@ -155,7 +150,9 @@ bool of_preparation(const std::string& quantity) { return quantity == "e0" || qu
 validation::FactorError not_run(const std::string& why) { return {{nan, nan}, why, false}; }
 
 DensityBudget analyse(const std::string& density, const Runs& runs, const std::string& reference) {
-  DensityBudget d{density, {}, settings_of(runs), "", "", "", "", {}, {}};
+  DensityBudget d;
+  d.density = density;
+  d.settings = settings_of(runs);
   const Setting& ref = d.settings.at(reference);
   for (const auto& [variant, s] : d.settings) {
     if (s.samples == 0 || variant == reference) continue;
@@ -237,123 +234,6 @@ std::string settings_text(const Setting& s) {
   return buf;
 }
 
-// The factors of a budget in the table's order, with their names.
-std::vector<std::pair<std::string, const validation::FactorError*>> factors_of(const Budget& b) {
-  return {{"Δt of the test", &b.time_step}, {"Δt of the preparation", &b.preparation_step}, {"rate", &b.rate}, {"size", &b.size}};
-}
-
-// A row of the paper study's validation.json and the budget of its quantity at its density, if
-// this study measured it: the factor from the budget's units to the row's, and whether cycles 1–2
-// of Test 1 stand for the row's cycles.
-struct RowBudget {
-  const Budget* budget = nullptr;
-  double scale = 1;
-  bool proxy = false;
-};
-
-RowBudget budget_of_row(const nlohmann::json& row, const std::vector<DensityBudget>& all) {
-  // A row's quantity -> the budget's quantity and the factor to the row's units (εv: a fraction in
-  // the summary, % in the rows).
-  static const std::map<std::string, std::pair<std::string, double>> maps = {
-      {"qp_strong_fabric_slope", {"qp_slope", 1}}, {"void_ratio_after_preparation", {"e0", 1}},
-      {"coordination_after_preparation", {"coordination", 1}}, {"ev_growth", {"ev_growth_1_2", 100}},
-      {"ev_growth_magnitude", {"ev_growth_1_2", 100}}, {"cn_change", {"cn_change_1_2", 1}},
-      {"cn_change_magnitude", {"cn_change_1_2", 1}}};
-  const std::string quantity = row.at("quantity").get<std::string>(), density = row.value("density", "");
-  RowBudget r;
-  if (!maps.count(quantity)) return r;
-  for (const DensityBudget& d : all)
-    if (d.density == density)
-      for (const Budget& x : d.budgets)
-        if (x.quantity == maps.at(quantity).first) r.budget = &x, r.scale = maps.at(quantity).second;
-  r.proxy = maps.at(quantity).first.find("_1_2") != std::string::npos;
-  return r;
-}
-
-// The paragraph on the paper study's inconsistent rows: is each miss larger than the budget?
-std::string verdict_reading(const std::vector<DensityBudget>& all, const nlohmann::json& j, const std::string& validation_json) {
-  std::ostringstream md;
-  validation::MarkdownTable t({"inconsistent row", "miss (ours to paper)", "budget of the settings (far end)", "reading"});
-  int n = 0;
-  for (const auto& row : j.at("rows")) {
-    if (row.value("verdict", "") != "inconsistent") continue;
-    ++n;
-    const std::string name = row.at("name").get<std::string>(), quantity = row.at("quantity").get<std::string>();
-    const std::string density = row.value("density", "");
-    const double mean = row.at("mean").get<double>();
-    const validation::Region region =
-        validation::paper_region(row.at("check").get<std::string>(), row.at("reference").get<double>(), row.value("tolerance", 0.0));
-    const double miss = region.contains(mean) ? 0 : std::min(std::abs(mean - region.low), std::abs(mean - region.high));
-    const RowBudget rb = budget_of_row(row, all);
-    if (!rb.budget) {
-      const bool ran = std::any_of(all.begin(), all.end(), [&](const DensityBudget& d) { return d.density == density; });
-      t.row({name, number(miss), "—", !ran ? "not covered: this study did not run the " + density + " density"
-                                      : "not covered: the study has no such quantity (one test, two cycles)"});
-      continue;
-    }
-    double point = 0, far = 0;  // the errors' sum as estimated, and with each at the far end of its interval
-    for (const auto& [factor, f] : factors_of(*rb.budget))
-      if (std::isfinite(f->error.value)) {
-        point += std::abs(f->error.value);
-        far += std::abs(f->error.value) + (std::isfinite(f->error.half_width) ? f->error.half_width : 0);
-      }
-    point *= rb.scale, far *= rb.scale;
-    std::string reading = miss > far     ? "larger than the budget: not the settings' error"
-                          : miss <= point ? "within the budget: no evidence against the reproduction"
-                                          : "beyond the estimated errors, within their intervals: these samples cannot tell";
-    if (rb.proxy) reading += " (cycles 1–2 of Test 1 stand for the row's 1–5)";
-    t.row({name, number(miss), number(point) + " (≤ " + number(far) + ")", reading});
-  }
-  if (n == 0) return "";
-  md << "\nThe paper study's inconsistent rows (`" << validation::shown_path(validation_json) << "`) against the budget: the miss is the distance "
-        "from our ensemble's mean to the paper's region; the budget the sum of the paper's settings' errors in the test's and the "
-        "preparation's time step, the rate and the size as estimated (and with each at the far end of its interval), in the row's units.\n\n"
-     << t.text();
-  return md.str();
-}
-
-// Is each factor's error known well enough to judge the rows it serves? Every row of the paper
-// study whose quantity the budget measures: its scale (the tolerance, or for a one-sided row the
-// threshold's distance from zero), the widest half-width of the four factors in the row's units,
-// and for each factor wider than the scale the samples that would bring it within.
-std::string precision_table(const std::vector<DensityBudget>& all, const nlohmann::json& j) {
-  validation::MarkdownTable t({"row", "scale", "widest 95 % half-width", "of", "within", "samples it would need"});
-  int rows = 0, within = 0;
-  for (const auto& row : j.at("rows")) {
-    const RowBudget rb = budget_of_row(row, all);
-    if (!rb.budget) continue;
-    const double tol = row.value("tolerance", 0.0) > 0 ? row.value("tolerance", 0.0) : std::abs(row.at("reference").get<double>());
-    if (!(tol > 0)) continue;
-    double widest = 0;
-    std::string of, needs;
-    bool known = true;
-    for (const auto& [factor, f] : factors_of(*rb.budget)) {
-      if (!std::isfinite(f->error.value)) continue;
-      const double hw = f->error.half_width * rb.scale;
-      if (!std::isfinite(hw)) known = false;
-      else if (hw > widest) widest = hw, of = factor;
-      if (!(hw <= tol)) {
-        const long n = validation::samples_needed(*f, tol / rb.scale);
-        needs += (needs.empty() ? "" : "; ") + factor + ": " +
-                 (n < 0 ? std::string("cannot say") : std::to_string(n) + (f->across_sizes ? " samples over the sizes (today " +
-                                                                             std::to_string(f->samples) + ")" : " per setting (today " +
-                                                                             std::to_string(f->samples) + ")"));
-      }
-    }
-    const bool ok = known && widest <= tol;
-    ++rows, within += ok;
-    t.row({row.at("name").get<std::string>() + (rb.proxy ? ", read on cycles 1–2 of Test 1" : ""), number(tol), known ? number(widest) : "—", of,
-           ok ? "yes" : "no", needs.empty() ? "—" : needs});
-  }
-  if (rows == 0) return "";
-  std::ostringstream md;
-  md << "\nIs each factor's error known to within the rows it serves? For each row of the paper study that the budget measures: "
-        "the row's tolerance (for a one-sided row, its threshold's distance from zero), the widest 95 % half-width of the four "
-        "factors in the row's units, and the samples a wider factor would need. " << within << " of " << rows << " rows within.\n\n"
-     << t.text();
-  return md.str();
-}
-
 int write_section(const ConvergenceSummary& s, const std::string& out, const std::string& reference, const std::string& validation_json) {
   std::vector<std::string> densities;
   std::map<std::string, Runs> by_density;
@@ -403,10 +283,10 @@ int write_section(const ConvergenceSummary& s, const std::string& out, const std
     std::vector<std::string> unhelped;                      // "quantity (factor)" where the pairs decorrelated
     for (const Budget& b : d.budgets) {
       const double c = b.converged.value;
-      t.row({heading_of(b.quantity), number(b.paper.value) + " ± " + number(b.paper.half_width), signed_percent(b.time_step.error, c),
+      t.row({heading_of(b.quantity), budget_number(b.paper.value) + " ± " + budget_number(b.paper.half_width), signed_percent(b.time_step.error, c),
              signed_percent(b.preparation_step.error, c), signed_percent(b.rate.error, c), signed_percent(b.size.error, c),
              unsigned_percent({b.sd_one, nan}, c), unsigned_percent({b.sd_mean, nan}, c),
-             number(c) + " ± " + number(b.converged.half_width)});
+             budget_number(c) + " ± " + budget_number(b.converged.half_width)});
       std::vector<std::string> r;
       for (const auto& [factor, f] : factors_of(b)) {
         if (f == &b.size) continue;
@@ -501,7 +381,8 @@ int write_section(const ConvergenceSummary& s, const std::string& out, const std
   }
   if (!validation_json.empty()) {
     const nlohmann::json j = validation::read_json_file(validation_json);
-    md << precision_table(all, j) << verdict_reading(all, j, validation_json);
+    const std::vector<validation::DensityBudgets> budgets(all.begin(), all.end());
+    md << validation::precision_table(budgets, j) << validation::verdict_reading(budgets, j, validation_json);
   }
   try {
     dem::write_file_atomically((fs::path(out) / "errors.dat").string(), errors_dat);

@@ -257,7 +257,13 @@ TEST_CASE("compare-runs convergence: the test's step paired on the same samples,
   // The paper study's row on the slope: inconsistent (1.42 against 1 +- 0.25), tolerance 0.25.
   std::ofstream(dir / "validation.json") << R"({"rows": [{"name": "slope, dense", "quantity": "qp_strong_fabric_slope", )"
                                          << R"("density": "dense", "check": "within", "reference": 1.0, "tolerance": 0.25, )"
-                                         << R"("verdict": "inconsistent", "mean": 1.42}]})";
+                                         << R"("verdict": "inconsistent", "mean": 1.42}, )"
+                                         // Two planted misses: 0.002, reached even by the near end of the budget (0.002 +
+                                         // 0.003 - 0.002484 = 0.002516); 0.004, between the near end and the far end.
+                                         << R"({"name": "near", "quantity": "qp_strong_fabric_slope", "density": "dense", "check": "within", )"
+                                         << R"("reference": 1.0, "tolerance": 0.25, "verdict": "inconsistent", "mean": 1.252}, )"
+                                         << R"({"name": "between", "quantity": "qp_strong_fabric_slope", "density": "dense", "check": "within", )"
+                                         << R"("reference": 1.0, "tolerance": 0.25, "verdict": "inconsistent", "mean": 1.254}]})";
   const std::string cmd = bin + " convergence --summary " + (dir / "summary.json").string() + " " + dir.string() + " --validation " +
                           (dir / "validation.json").string() + " > " + (dir / "log").string() + " 2>&1";
   const int rc = std::system(cmd.c_str());
@@ -274,5 +280,7 @@ TEST_CASE("compare-runs convergence: the test's step paired on the same samples,
   // 1.42 - 1.25 = 0.17, beyond the budget's far end 0.002 + 0.003 + 0.002484.
   CHECK_THAT(table, Catch::Contains("| slope, dense | 0.25 | 0.002484 | Δt of the preparation | yes | — |"));
   CHECK_THAT(table, Catch::Contains("| slope, dense | 0.17 | 0.005 (≤ 0.007484) | larger than the budget"));
+  CHECK_THAT(table, Catch::Contains("| near | 0.002 | 0.005 (≤ 0.007484) | within the budget even at the near end"));
+  CHECK_THAT(table, Catch::Contains("| between | 0.004 | 0.005 (≤ 0.007484) | within the intervals of the settings' errors"));
   fs::remove_all(dir);
 }
