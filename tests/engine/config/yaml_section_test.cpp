@@ -113,7 +113,7 @@ TEST_CASE("YAML: every reader of the project goes through parse_yaml or load_yam
   CHECK(found.empty());
 }
 
-TEST_CASE("YAML: an alias bomb as a scene, study, calibration or reference file is refused by every tool", "[config][yaml][cli]") {
+TEST_CASE("YAML: an alias bomb as a scene, study, calibration or reference file is refused by every tool", "[yaml][cli]") {
   const std::string bin = std::string(DEM_BINARY_DIR) + "/bin/";
   const std::string dir = dem::test::scratch_dir("yaml_bomb");
   const std::string bomb = alias_bomb();
