@@ -17,12 +17,7 @@ namespace {
 
 const std::string bin = std::string(DEM_BINARY_DIR) + "/bin/";
 
-std::string read(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+std::string read(const fs::path& p) { return dem::test::read_bytes(p.string()); }
 
 // A folder with a one-density, one-test study of 64 spheres (`seeds` samples), a calibration of
 // the test's friction (`extra`: more calibration keys) and the reference file `refs`.
