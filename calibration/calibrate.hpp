@@ -26,6 +26,12 @@ struct RunOptions {
   int jobs = 1, threads = 1;
   std::string executor = "local";  // or slurm
   bool plan_only = false;
+  // Take a ledger's scores of sets whose scenes are those this plan runs even when another engine
+  // scored them (the runs' hashes match when planned with the engine the ledger's stamp names): the
+  // size's stamp and the report then name that engine and how many sets it scored.
+  bool ledger_engine = false;
+  // Run nothing: every set must come from a ledger (a replay of a committed calibration).
+  bool ledger_only = false;
   // Called after each iteration but the last with the outcome so far (stop_reason says it goes
   // on): the report is then written every iteration, and a calibration a session's end stops
   // leaves its posterior so far.
@@ -43,32 +49,61 @@ struct IterationSummary {
   double moved = 0;         // the largest change of a unit mean or sd since the iteration before
 };
 
+// The sets' runs at one size (a profile of the study): at the first every set, at a larger one the
+// sets chosen to run there (discrepancy.hpp; their `iteration` is the one that chose them).
+struct SizeOutcome {
+  std::string profile, results;  // results: the folder of the runs
+  std::vector<std::int64_t> seeds;
+  int budget = 0;                // a larger size's sets at most
+  std::vector<ParameterSet> sets;
+  int runs = 0;                  // runs planned over all iterations (reused ones included)
+  double core_seconds = 0;       // recorded by their results (wall time x threads)
+  int ledger_sets = 0;           // sets whose score came from the ledger (ledger.hpp), not from runs here
+  // Of those, the sets another engine scored (RunOptions::ledger_engine), and that engine.
+  int other_engine_sets = 0;
+  std::string other_engine;
+  validation::Stamp stamp;       // of the runs (engine, baseline, spheres, samples, date)
+  std::map<std::string, std::vector<validation::Sample>> samples;  // of each set (for the figures)
+  // A larger size's discrepancy from the size before (discrepancy.hpp): the sets it was fitted to
+  // (0 while there are too few), whether it has slopes, and per reference row its value and
+  // prediction sd at the posterior's mean, point by point (a scalar row: one).
+  int discrepancy_pairs = 0;
+  bool discrepancy_linear = false;
+  struct Change {
+    std::string row;
+    std::vector<double> shift, shift_sd;
+  };
+  std::vector<Change> changes;
+};
+
 struct Outcome {
   Calibration calibration;
   References references;
-  std::string profile, engine, results;  // results: the folder of the runs
-  std::vector<std::int64_t> seeds;
-  std::vector<ParameterSet> sets;
-  std::vector<double> weights;  // the sets' own: likelihood exp(-chi2/2) over the proposals' mixture
+  std::string engine;
+  std::vector<SizeOutcome> sizes;  // [0]: where every set runs; then each larger size
+  std::vector<double> weights;  // of sizes[0]'s sets: likelihood exp(-chi2/2) over the proposals' mixture
   // The posterior's points: on the response surface (posterior_from "response surface"), else the
-  // sets with their weights (posterior_from empty).
+  // sets with their weights (posterior_from empty). With larger sizes, at the largest once each
+  // has its discrepancy (SizeOutcome::discrepancy_pairs).
   std::vector<Eigen::VectorXd> posterior_u;
   std::vector<double> posterior_w;
   std::string posterior_from;
+  // With larger sizes: the posterior of the first size's surface alone (what the larger sizes changed).
+  std::vector<Marginal> first_size_only;
   int surface_sets = 0;
   double surface_noise = 0;  // the surface's residual sd over the reference mean's sd, on average
   Eigen::VectorXd region_centre, region_sd;
   std::vector<IterationSummary> iterations;
   bool converged = false;
   std::string stop_reason;
-  int runs = 0;               // runs planned over all iterations (reused ones included)
-  double core_seconds = 0;    // recorded by their results (wall time x threads)
-  int ledger_sets = 0;        // sets whose score came from the ledger (ledger.hpp), not from runs here
   // The sets that could not be scored (a run the engine refused or stopped, a point no run
   // reached), each "name: why": they weigh nothing, so the posterior covers only the rest of the prior.
   std::vector<std::string> unscored;
-  validation::Stamp stamp;    // of the runs (engine, baseline, spheres, samples, date)
-  std::map<std::string, std::vector<validation::Sample>> samples;  // of each set (for the figures)
+
+  const SizeOutcome& first() const { return sizes.front(); }
+  SizeOutcome& first() { return sizes.front(); }
+  const SizeOutcome& largest() const { return sizes.back(); }
+  double core_seconds() const;
 };
 
 // Runs the calibration (or, with plan_only, prints what its first iteration would run and what

@@ -1,6 +1,7 @@
 // calibrate: infers scene parameters from references (curves of a lab test, or a reference file's
 // rows) by running parameter sets of a study through the pipeline (calibration/README.md).
 //   calibrate CALIBRATION.yaml [--profile P] [-j N] [--threads T] [--executor local|slurm] [--plan] [--truth FILE]
+//             [--ledger-engine] [--ledger-only]
 //   calibrate lab-curve --x COLUMN --y COLUMN --at X1,X2,... --out FILE.csv RESULT.h5...
 //   calibrate truth CALIBRATION.yaml RESULT.h5 --out FILE.json
 //   calibrate variant CALIBRATION.yaml [--set NAME]
@@ -53,7 +54,8 @@ int lab_curve(int argc, char** argv) {
   std::vector<double> at;
   std::vector<std::string> results;
   CLI::App app{"calibrate lab-curve: a reference curve made by the engine (a demonstration's synthetic lab data): y at "
-               "each x on each result's last stage, their mean and sd over the results (the specimens)"};
+               "each x on each result's last stage, their mean and sd over the results (the specimens), and with 3 or more "
+               "each specimen's y (specimen_1, ...)"};
   app.add_option("--x", x, "the time-series column along the curve (e.g. strain_3)")->required();
   app.add_option("--y", y, "the time-series column (e.g. q_over_p)")->required();
   app.add_option("--at", at, "the x values of the points")->required()->delimiter(',');
@@ -76,10 +78,16 @@ int lab_curve(int argc, char** argv) {
   s << "# made by the engine (calibrate lab-curve): " << y << " against " << x << ", mean and sd over " << results.size()
     << " specimen(s):";
   for (const std::string& r : results) s << " " << fs::path(r).parent_path().filename().string() << "/" << fs::path(r).filename().string();
-  s << "\n" << x << "," << y << ",sd\n";
+  // With 3 specimens or more, each one's y too: the calibration takes their correlation from point to point.
+  const bool each = results.size() >= 3;
+  s << "\n" << x << "," << y << ",sd";
+  for (std::size_t i = 0; each && i < results.size(); ++i) s << ",specimen_" << i + 1;
+  s << "\n";
   for (std::size_t j = 0; j < at.size(); ++j) {
     const validation::Spread sp = validation::spread(ys[j]);
-    s << validation::format_number(at[j]) << "," << validation::format_number(sp.mean) << "," << validation::format_number(sp.sd) << "\n";
+    s << validation::format_number(at[j]) << "," << validation::format_number(sp.mean) << "," << validation::format_number(sp.sd);
+    for (std::size_t i = 0; each && i < ys[j].size(); ++i) s << "," << validation::format_number(ys[j][i]);
+    s << "\n";
   }
   write_whole(out, s.str());
   std::printf("%s: %zu points over %zu specimen(s)\n", out.c_str(), at.size(), results.size());
@@ -170,6 +178,10 @@ int calibrate(int argc, char** argv) {
   app.add_flag("--plan", o.plan_only, "print what the first iteration runs and what max_iterations would cost; run nothing");
   app.add_option("--truth", truth_file, "a demonstration's true parameters (calibrate truth), set beside the posterior once it is final");
   app.add_option("--dem", o.dem, "the engine (default: dem beside this program)");
+  app.add_flag("--ledger-engine", o.ledger_engine,
+               "take the ledgers' scores of sets whose scenes are unchanged even if another engine scored them (the report names "
+               "that engine and how many sets it scored)");
+  app.add_flag("--ledger-only", o.ledger_only, "run nothing: every set from the ledgers (a replay); a set they lack is an error");
   app.footer("calibrate lab-curve --help and calibrate truth --help: the demonstration's synthetic references; calibrate variant --help: "
              "a finished calibration's set as a study variant.");
   if (const int rc = parse(app, argc, argv); rc >= 0) return rc;

@@ -37,6 +37,33 @@ void read_readings(dem::Section& s, Parameter& p) {
   p.prior = Parameter::Prior::Values;
 }
 
+// `sizes: [{profile: small}, {profile: paper, sets: 8, per_iteration: 3}]`: the study's profiles the
+// sets run at, the smallest (every set) first.
+void read_sizes(dem::Section& root, Calibration& c) {
+  std::set<std::string> profiles;
+  for (dem::Section s : root.list("sizes", "the study's profiles the sets run at, smallest first (every set runs at the first)")) {
+    Size size;
+    size.profile = s.text("profile", std::nullopt, "the study's profile (its lattice and seeds) of this size");
+    if (!profiles.insert(size.profile).second) s.fail("profile", "'" + size.profile + "' names two sizes");
+    if (c.sizes.empty()) {
+      if (s.has("sets") || s.has("per_iteration"))
+        s.fail(s.has("sets") ? "sets" : "per_iteration", "is given for the first size, where every set runs");
+    } else {
+      size.sets = static_cast<int>(s.integer("sets", 3, 4096, std::nullopt, "the sets run at this size in all (at least 3: a discrepancy's fit)"));
+      const int spread = (size.sets + c.min_iterations - 1) / c.min_iterations;
+      size.per_iteration = static_cast<int>(s.integer("per_iteration", 1, 4096, spread,
+                                                      "the sets chosen to run at this size per iteration (default: sets / min_iterations)"));
+    }
+    s.finish();
+    c.sizes.push_back(size);
+  }
+  if (c.sizes.size() < 2) root.fail("sizes", "lists " + std::to_string(c.sizes.size()) + " size(s): give at least 2 (else leave it out and pass --profile)");
+  for (std::size_t k = 1; k < c.sizes.size(); ++k)
+    if (c.sizes[k].sets > c.sizes[k - 1].sets && k > 1)
+      root.fail("sizes", "runs more sets at " + c.sizes[k].profile + " (" + std::to_string(c.sizes[k].sets) + ") than at the size before it, " +
+                             c.sizes[k - 1].profile + " (" + std::to_string(c.sizes[k - 1].sets) + "), which its sets are chosen from");
+}
+
 }  // namespace
 
 Calibration read_calibration(const std::string& file) {
@@ -120,6 +147,7 @@ Calibration read_calibration(const std::string& file) {
     c.parameters.push_back(std::move(p));
   }
   if (c.parameters.empty()) root.fail("parameters", "is empty: name at least one scene key to infer");
+  if (root.has("sizes")) read_sizes(root, c);
   root.finish();
   return c;
 }

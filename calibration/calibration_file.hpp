@@ -8,6 +8,15 @@
 
 namespace calibration {
 
+// A size the sets run at: a profile of the study (its lattice and seeds). Every set runs at the
+// first; a larger one runs `sets` of the sets the size before it scored, `per_iteration` at most
+// each iteration, chosen where they inform the posterior most (discrepancy.hpp).
+struct Size {
+  std::string profile;
+  int sets = 0;           // a larger size's sets at most (0: the first size, every set)
+  int per_iteration = 0;  // a larger size's sets chosen per iteration at most
+};
+
 struct Calibration {
   std::string file;
   std::string name;
@@ -25,6 +34,8 @@ struct Calibration {
   // quantiles are those of a handful of points. Default: one batch.
   double min_effective_sets = 16;
   double prior_share = 0.2;  // of each proposal after the first (posterior.hpp)
+  // `sizes:`, smallest first; empty: one size, the profile calibrate is given (or the study's default).
+  std::vector<Size> sizes;
 };
 
 // Reads and checks the file; errors name the file, the key and the allowed values.

@@ -12,6 +12,7 @@
 #include "config/yaml_section.hpp"
 #include "io/atomic_file.hpp"
 #include "io/hdf5.hpp"
+#include "discrepancy.hpp"
 #include "row_verdicts.hpp"
 #include "study/format.hpp"
 #include "study/markdown_table.hpp"
@@ -38,10 +39,10 @@ std::string prior_text(const Parameter& p) {
          validation::significant(p.low, 3) + ", " + validation::significant(p.high, 3) + "]";
 }
 
-std::size_t best_set(const Outcome& o) {
+std::size_t best_set(const std::vector<ParameterSet>& sets) {
   std::size_t best = 0;
-  for (std::size_t i = 1; i < o.sets.size(); ++i)
-    if (o.sets[i].log_likelihood > o.sets[best].log_likelihood) best = i;
+  for (std::size_t i = 1; i < sets.size(); ++i)
+    if (sets[i].log_likelihood > sets[best].log_likelihood) best = i;
   return best;
 }
 
@@ -140,6 +141,372 @@ std::string curve_data(const CurveRow& c, const std::vector<validation::Sample>&
   return s.str();
 }
 
+// What is common to a report's parts: the outcome, the final marginals, the best sets, the rows' verdicts.
+struct Report {
+  const Outcome& o;
+  const std::map<std::string, double>& truth;
+  const IterationSummary& last;
+  std::size_t best;                 // of the first size's sets
+  RowVerdicts verdicts;             // of the first size's sets
+  std::optional<std::size_t> best_largest;  // with larger sizes: of the largest size's scored sets
+  RowVerdicts largest_verdicts;
+  Eigen::MatrixXd correlation;
+};
+
+// The stamp of every size's runs made one (a field on which they differ lists each value).
+validation::Stamp stamp_of(const Outcome& o) {
+  if (o.sizes.size() == 1) return o.first().stamp;
+  std::vector<validation::Stamp> stamps;
+  for (const SizeOutcome& s : o.sizes) stamps.push_back(s.stamp);
+  return validation::combined(stamps);
+}
+
+json sizes_json(const Report& r) {
+  json out = json::array();
+  for (std::size_t k = 0; k < r.o.sizes.size(); ++k) {
+    const SizeOutcome& s = r.o.sizes[k];
+    json x{{"profile", s.profile}, {"seeds", s.seeds}, {"sets", s.sets.size()}, {"runs", s.runs}, {"core_seconds", s.core_seconds},
+           {"sets_from_ledger", s.ledger_sets}, {"stamp", validation::stamp_json(s.stamp)}};
+    if (s.other_engine_sets > 0) x["sets_scored_by_another_engine"] = {{"sets", s.other_engine_sets}, {"engine", s.other_engine}};
+    if (k > 0) {
+      x["sets_at_most"] = s.budget;
+      x["discrepancy"] = {{"pairs", s.discrepancy_pairs}, {"form", s.discrepancy_linear ? "linear" : "constant"}};
+      for (const SizeOutcome::Change& c : s.changes) x["discrepancy"]["at_posterior_mean"][c.row] = {{"shift", c.shift}, {"sd", c.shift_sd}};
+    }
+    out.push_back(x);
+  }
+  return out;
+}
+
+json parameters_json(const Report& r) {
+  const Calibration& c = r.o.calibration;
+  json out = json::array();
+  for (std::size_t k = 0; k < c.parameters.size(); ++k) {
+    const Parameter& p = c.parameters[k];
+    const Marginal& m = r.last.marginals[k];
+    json x{{"name", p.name}, {"keys", p.keys}, {"applies_to", p.applies_to}, {"prior", prior_text(p)},
+           {"mean", m.mean}, {"sd", m.sd}, {"median", m.median}, {"lower_95", m.lower_95}, {"upper_95", m.upper_95},
+           {"narrowing", m.narrowing}, {"identified", m.identified},
+           {"best", p.value(r.o.first().sets[r.best].u(static_cast<Eigen::Index>(k)))}};
+    if (!p.densities.empty()) x["densities"] = p.densities;
+    if (const auto t = r.truth.find(p.name); t != r.truth.end())
+      x["truth"] = t->second, x["truth_inside_95"] = t->second >= m.lower_95 && t->second <= m.upper_95;
+    if (!r.o.first_size_only.empty()) {
+      const Marginal& f = r.o.first_size_only[k];
+      x["first_size_only"] = {{"mean", f.mean}, {"sd", f.sd}, {"lower_95", f.lower_95}, {"upper_95", f.upper_95}};
+      if (const auto t = r.truth.find(p.name); t != r.truth.end())
+        x["first_size_only"]["truth_inside_95"] = t->second >= f.lower_95 && t->second <= f.upper_95;
+    }
+    out.push_back(x);
+  }
+  return out;
+}
+
+json sets_json(const Calibration& c, const std::vector<ParameterSet>& sets, const std::vector<double>* weights, const RowVerdicts& verdicts) {
+  json out = json::array();
+  for (std::size_t i = 0; i < sets.size(); ++i) {
+    const ParameterSet& s = sets[i];
+    json x{{"name", s.name}, {"iteration", s.iteration}, {"scored", s.misfit.valued}};
+    if (weights) x["weight"] = (*weights)[i];
+    if (s.misfit.valued) x["chi2"] = s.misfit.chi2;
+    if (const auto n = std::find_if(verdicts.sets.begin(), verdicts.sets.end(), [&](const SetCount& k) { return k.set == i; });
+        n != verdicts.sets.end())
+      x["consistent_rows"] = n->consistent, x["judged_rows"] = n->judged;
+    if (!s.misfit.left_out.empty()) x["samples_left_out"] = s.misfit.left_out;
+    for (std::size_t k = 0; k < c.parameters.size(); ++k) x["values"][c.parameters[k].name] = c.parameters[k].value(s.u(static_cast<Eigen::Index>(k)));
+    for (const RowMisfit& m : s.misfit.rows) {
+      json row{{"name", m.name}, {"points", m.points}};
+      if (m.valued) row["chi2"] = m.chi2; else row["note"] = m.note;
+      if (m.consistent) row["consistent"] = *m.consistent;
+      x["rows"].push_back(row);
+    }
+    out.push_back(x);
+  }
+  return out;
+}
+
+json posterior_json(const Report& r) {
+  const Outcome& o = r.o;
+  const Calibration& c = o.calibration;
+  const fs::path dir = c.report;
+  json j;
+  j["schema"] = 1;
+  j["name"] = c.name;
+  j["method"] = "adaptive multiple importance sampling: Sobol draws from defensive-mixture proposals, every set weighted "
+                "against the mixture of all proposals; likelihood exp(-chi2/2)";
+  j["study"] = fs::relative(c.study, dir).string();
+  j["references"] = fs::relative(c.references, dir).string();
+  j["source"] = o.references.source;
+  j["profile"] = o.first().profile;
+  j["seeds"] = o.first().seeds;
+  j["engine"] = o.engine;
+  j["converged"] = o.converged;
+  j["stop_reason"] = o.stop_reason;
+  int runs = 0, ledger_sets = 0;
+  for (const SizeOutcome& s : o.sizes) runs += s.runs, ledger_sets += s.ledger_sets;
+  j["runs"] = runs;
+  j["sets_from_ledger"] = ledger_sets;
+  j["unscored_sets"] = o.unscored;  // "name: why" of each set that weighs nothing for want of a score
+  j["core_seconds"] = o.core_seconds();
+  if (o.sizes.size() > 1) j["sizes"] = sizes_json(r);
+  j["posterior_from"] = o.posterior_from.empty() ? "the sets' weights" : o.posterior_from;
+  if (!o.posterior_from.empty())
+    j["response_surface"] = {{"sets", o.surface_sets}, {"points", o.posterior_u.size()},
+                             {"residual_sd_over_reference_sd", o.surface_noise}};
+  j["effective_sample_size"] = r.last.ess;
+  j["sets_effective_sample_size"] = r.last.sets_ess;
+  for (const IterationSummary& it : o.iterations) {
+    json x{{"iteration", it.number}, {"sets", it.sets},       {"scored", it.valued},          {"effective_sample_size", it.ess},
+           {"sets_effective_sample_size", it.sets_ess}, {"moved", it.moved}, {"inside_region", it.contained}};
+    for (std::size_t k = 0; k < c.parameters.size(); ++k)
+      x["mean"][c.parameters[k].name] = it.marginals[k].mean, x["sd"][c.parameters[k].name] = it.marginals[k].sd;
+    j["iterations"].push_back(x);
+  }
+  j["parameters"] = parameters_json(r);
+  for (Eigen::Index a = 0; a < r.correlation.rows(); ++a) {
+    std::vector<double> row;
+    for (Eigen::Index b = 0; b < r.correlation.cols(); ++b) row.push_back(r.correlation(a, b));
+    j["correlations"].push_back(row);
+  }
+  const ParameterSet& best = o.first().sets[r.best];
+  j["best_set"] = {{"name", best.name}, {"chi2", best.misfit.chi2}};
+  if (r.verdicts.rows > 0) j["rows_consistent"] = rows_json(r.verdicts, o.first().sets);
+  j["sets"] = sets_json(c, o.first().sets, &o.weights, r.verdicts);
+  if (o.sizes.size() > 1) {
+    const SizeOutcome& top = o.largest();
+    json x{{"profile", top.profile}, {"sets", sets_json(c, top.sets, nullptr, r.largest_verdicts)}};
+    if (r.best_largest) x["best_set"] = {{"name", top.sets[*r.best_largest].name}, {"chi2", top.sets[*r.best_largest].misfit.chi2}};
+    if (r.largest_verdicts.rows > 0) x["rows_consistent"] = rows_json(r.largest_verdicts, top.sets);
+    j["largest_size"] = x;
+  }
+  // The stamp of the runs (engine, baseline, spheres, samples, date), for the report's section line.
+  j["stamp"] = validation::stamp_json(stamp_of(o));
+  return j;
+}
+
+void write_figure_data(const Report& r) {
+  const Outcome& o = r.o;
+  const Calibration& c = o.calibration;
+  const fs::path dir = c.report;
+  const std::size_t d = c.parameters.size();
+  const std::vector<ParameterSet>& all = o.first().sets;
+  std::ostringstream sets;
+  sets << "# every parameter set: iteration, its values, chi2 (NaN: not scored), its own weight exp(-chi2/2) over the proposals\n# iteration";
+  for (const Parameter& p : c.parameters) sets << " " << p.name;
+  sets << " chi2 weight\n";
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    sets << all[i].iteration;
+    for (std::size_t k = 0; k < d; ++k) sets << " " << g(c.parameters[k].value(all[i].u(static_cast<Eigen::Index>(k))));
+    sets << " " << (all[i].misfit.valued ? g(all[i].misfit.chi2) : "NaN") << " " << g(o.weights[i]) << "\n";
+  }
+  write_file(dir / "sets.dat", sets.str());
+  for (std::size_t k = 0; k < d; ++k)
+    write_file(dir / ("marginal_" + std::to_string(k + 1) + ".dat"), marginal_data(c.parameters[k], k, o, r.last.marginals[k]));
+  write_file(dir / "posterior_points.dat", posterior_points(o));
+  // The curves of the best set: at the largest size when it has one there, else at the first.
+  const bool at_largest = o.sizes.size() > 1 && r.best_largest;
+  const SizeOutcome& shown = at_largest ? o.largest() : o.first();
+  const std::string best_name = at_largest ? shown.sets[*r.best_largest].name : all[r.best].name;
+  const auto best_samples = shown.samples.find(best_name);
+  for (std::size_t k = 0; k < o.references.curves.size(); ++k)
+    write_file(dir / ("curve_" + std::to_string(k + 1) + ".dat"),
+               curve_data(o.references.curves[k], best_samples == shown.samples.end() ? std::vector<validation::Sample>{} : best_samples->second));
+  validation::GnuplotValues v;
+  v.number("parameters", static_cast<double>(d));
+  v.number("curves", static_cast<double>(o.references.curves.size()));
+  v.number("samples", best_samples == shown.samples.end() ? 0.0 : static_cast<double>(best_samples->second.size()));
+  std::vector<std::string> names, xs, ys, titles;
+  for (const Parameter& p : c.parameters) names.push_back(p.name);
+  for (const CurveRow& row : o.references.curves) xs.push_back(row.x), ys.push_back(row.y), titles.push_back(row.name);
+  v.texts("parameter", names);
+  v.texts("curve_x", xs);
+  v.texts("curve_y", ys);
+  v.texts("curve_title", titles);
+  // The plane the scatter panel shows: of the continuous parameters, the two most correlated in
+  // the posterior (none with fewer than two).
+  int pair_a = 0, pair_b = 0;
+  double strongest = -1;
+  for (std::size_t a = 0; a < d; ++a)
+    for (std::size_t b = a + 1; b < d; ++b)
+      if (!c.parameters[a].discrete() && !c.parameters[b].discrete() &&
+          std::abs(r.correlation(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b))) > strongest)
+        strongest = std::abs(r.correlation(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b))), pair_a = static_cast<int>(a) + 1,
+        pair_b = static_cast<int>(b) + 1;
+  v.number("pair_a", pair_a);
+  v.number("pair_b", pair_b);
+  for (std::size_t k = 0; k < d; ++k) {
+    const auto t = r.truth.find(c.parameters[k].name);
+    v.number("truth_" + std::to_string(k + 1), t == r.truth.end() ? NAN : t->second);
+    v.number("discrete_" + std::to_string(k + 1), c.parameters[k].discrete() ? 1 : 0);
+    v.number("log_" + std::to_string(k + 1), c.parameters[k].prior == Parameter::Prior::LogUniform ? 1 : 0);
+    v.number("values_" + std::to_string(k + 1), static_cast<double>(c.parameters[k].values.size()));
+    // The range the scatter panel shows: the posterior's mean -+ 6 sd on the unit interval.
+    const Marginal& m = r.last.marginals[k];
+    v.number("low_" + std::to_string(k + 1), c.parameters[k].value(std::max(0.0, m.unit_mean - 6 * m.unit_sd)));
+    v.number("high_" + std::to_string(k + 1), c.parameters[k].value(std::min(1.0, m.unit_mean + 6 * m.unit_sd)));
+  }
+  write_file(dir / "values.gp", v.text_file("calibration " + c.name + ": what calibration.gp draws"));
+}
+
+std::string interval_text(const Marginal& m) {
+  return validation::significant(m.mean, 3) + " ± " + validation::significant(m.sd, 2) + " [" + validation::significant(m.lower_95, 3) +
+         ", " + validation::significant(m.upper_95, 3) + "]";
+}
+
+// With larger sizes: each size's runs and cost, what the largest changed in each parameter, and
+// the discrepancy of each reference row at the posterior's mean.
+std::string sizes_markdown(const Report& r) {
+  const Outcome& o = r.o;
+  const Calibration& c = o.calibration;
+  std::ostringstream md;
+  validation::MarkdownTable sizes({"size (profile)", "spheres", "samples a set", "sets", "runs", "core-min", "engine", "sets from the ledger"});
+  for (const SizeOutcome& s : o.sizes)
+    sizes.row({s.profile, s.stamp.spheres > 0 ? std::to_string(s.stamp.spheres) : "not recorded", std::to_string(s.seeds.size()),
+               std::to_string(s.sets.size()), std::to_string(s.runs), validation::significant(s.core_seconds / 60, 3),
+               s.stamp.engine_source.empty() ? "not recorded" : s.stamp.engine_source,
+               std::to_string(s.ledger_sets) + (s.other_engine_sets > 0 ? " (" + std::to_string(s.other_engine_sets) + " scored by engine " +
+                                                                               s.other_engine + ")" : "")});
+  md << sizes.text() << "\n";
+  std::size_t first_sets = o.first().sets.size(), all_sets = 0;
+  for (const SizeOutcome& s : o.sizes) all_sets += s.sets.size();
+  md << validation::fixed(100.0 * static_cast<double>(first_sets) / static_cast<double>(all_sets), 0) << " % of the "
+     << all_sets << " sets run were run at " << o.first().profile << ".\n\n";
+  if (o.first_size_only.empty()) return md.str();
+  std::vector<std::string> head{"parameter", "at " + o.first().profile + " alone: mean ± sd [95 %]", "at " + o.largest().profile + ": mean ± sd [95 %]"};
+  if (!r.truth.empty()) head.push_back("truth");
+  validation::MarkdownTable changed(head);
+  for (std::size_t k = 0; k < c.parameters.size(); ++k) {
+    std::vector<std::string> cells{c.parameters[k].name, interval_text(o.first_size_only[k]), interval_text(r.last.marginals[k])};
+    if (const auto t = r.truth.find(c.parameters[k].name); t != r.truth.end()) cells.push_back(validation::significant(t->second, 3));
+    else if (!r.truth.empty()) cells.push_back("");
+    changed.row(cells);
+  }
+  md << "What the larger size changed:\n\n" << changed.text() << "\n";
+  for (std::size_t k = 1; k < o.sizes.size(); ++k) {
+    const SizeOutcome& s = o.sizes[k];
+    if (s.discrepancy_pairs == 0) {
+      md << "No discrepancy from " << o.sizes[k - 1].profile << " to " << s.profile << " yet: " << s.sets.size() << " set(s) scored at both, "
+         << "at least " << min_discrepancy_pairs << " are needed.\n\n";
+      continue;
+    }
+    md << "The discrepancy from " << o.sizes[k - 1].profile << " to " << s.profile << " (" << (s.discrepancy_linear ? "linear" : "a constant")
+       << " in the parameters, fitted to " << s.discrepancy_pairs << " sets run at both), at the posterior's mean:\n\n";
+    validation::MarkdownTable t({"reference", "largest |shift| over its points ± its sd", "at point"});
+    for (const SizeOutcome::Change& ch : s.changes) {
+      std::size_t at = 0;
+      for (std::size_t j = 1; j < ch.shift.size(); ++j)
+        if (std::abs(ch.shift[j]) > std::abs(ch.shift[at])) at = j;
+      t.row({ch.row, validation::significant(ch.shift[at], 3) + " ± " + validation::significant(ch.shift_sd[at], 2), std::to_string(at + 1)});
+    }
+    md << t.text() << "\n";
+  }
+  return md.str();
+}
+
+std::string parameters_markdown(const Report& r) {
+  const Outcome& o = r.o;
+  const Calibration& c = o.calibration;
+  std::vector<std::string> head{"parameter", "prior", "posterior mean ± sd", "95 % interval", "prior sd / posterior sd", "identified"};
+  if (!r.truth.empty()) head.insert(head.begin() + 2, "truth");
+  validation::MarkdownTable t(head);
+  for (std::size_t k = 0; k < c.parameters.size(); ++k) {
+    const Parameter& p = c.parameters[k];
+    const Marginal& m = r.last.marginals[k];
+    // A parameter of values: the posterior's share of each value (its mean of indices means nothing).
+    std::vector<std::string> cells{p.name, prior_text(p),
+                                   p.discrete() ? value_shares(p, k, o)
+                                                : validation::significant(m.mean, 3) + " ± " + validation::significant(m.sd, 2),
+                                   p.discrete() ? "—" : "[" + validation::significant(m.lower_95, 3) + ", " + validation::significant(m.upper_95, 3) + "]",
+                                   validation::significant(m.narrowing, 2),
+                                   m.identified ? "yes" : "no: the references barely narrow its prior"};
+    if (!r.truth.empty()) {
+      const auto tr = r.truth.find(p.name);
+      cells.insert(cells.begin() + 2, tr == r.truth.end() ? "" :
+                   validation::significant(tr->second, 3) + (tr->second >= m.lower_95 && tr->second <= m.upper_95 ? " (inside)" : " (OUTSIDE)"));
+    }
+    t.row(cells);
+  }
+  std::string text = t.text() + "\n";
+  if (c.parameters.size() > 1) {
+    std::vector<std::string> ch{"correlation"};
+    for (const Parameter& p : c.parameters) ch.push_back(p.name);
+    validation::MarkdownTable ct(ch);
+    for (std::size_t a = 0; a < c.parameters.size(); ++a) {
+      std::vector<std::string> cells{c.parameters[a].name};
+      for (std::size_t b = 0; b < c.parameters.size(); ++b)
+        cells.push_back(validation::fixed(r.correlation(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)), 2));
+      ct.row(cells);
+    }
+    text += ct.text() + "\n";
+  }
+  return text;
+}
+
+std::string best_set_markdown(const Calibration& c, const ParameterSet& best, const std::string& where) {
+  std::ostringstream md;
+  md << "Best set" << where << " " << best.name << " (χ² " << validation::significant(best.misfit.chi2, 3) << "):";
+  for (std::size_t k = 0; k < c.parameters.size(); ++k)
+    md << " " << c.parameters[k].name << " = "
+       << (c.parameters[k].discrete() ? c.parameters[k].value_text(best.u(static_cast<Eigen::Index>(k)))
+                                      : validation::significant(c.parameters[k].value(best.u(static_cast<Eigen::Index>(k))), 4))
+       << (k + 1 < c.parameters.size() ? "," : ".");
+  md << "\n";
+  validation::MarkdownTable rows({"reference", "points", "χ² at the best set", "χ² per point"});
+  for (const RowMisfit& m : best.misfit.rows)
+    rows.row({m.name, std::to_string(m.points), validation::significant(m.chi2, 3),
+              m.points > 0 ? validation::significant(m.chi2 / m.points, 2) : ""});
+  md << "\n" << rows.text();
+  return md.str();
+}
+
+std::string section_markdown(const Report& r) {
+  const Outcome& o = r.o;
+  const Calibration& c = o.calibration;
+  const std::vector<ParameterSet>& sets = o.first().sets;
+  int runs = 0, ledger_sets = 0;
+  for (const SizeOutcome& s : o.sizes) runs += s.runs, ledger_sets += s.ledger_sets;
+  std::ostringstream md;
+  md << "Calibration `" << c.name << "` of the study `" << fs::path(c.study).filename().string() << "` (";
+  if (o.sizes.size() == 1) md << "profile " << o.first().profile << ", " << o.first().seeds.size() << " sample(s) per set";
+  else
+    for (std::size_t k = 0; k < o.sizes.size(); ++k)
+      md << (k ? "; " : "sizes: ") << o.sizes[k].profile << ", " << o.sizes[k].seeds.size() << " sample(s) per set";
+  md << ") against " << o.references.source << ". Engine " << o.engine << ".\n\n";
+  md << sets.size() << " parameter sets in " << o.iterations.size() << (o.iterations.size() == 1 ? " iteration of " : " iterations of ")
+     << c.batch << " (" << runs << " runs, " << validation::significant(o.core_seconds() / 60, 3) << " core-min recorded); effective sample size "
+     << validation::significant(r.last.ess, 3) << "; " << (o.converged ? "converged: " : "not converged: ") << o.stop_reason << ".\n\n";
+  if (ledger_sets > 0)
+    md << ledger_sets << " of the sets were scored in earlier calls whose runs' results are not kept here: their scores come "
+       << "from the ledgers (`scored_sets*.json`), which record each set's run hashes and misfit.\n\n";
+  const auto short_of = std::count_if(sets.begin(), sets.end(), [](const ParameterSet& s) { return !s.misfit.left_out.empty(); });
+  if (short_of > 0)
+    md << short_of << " of the sets " << (short_of == 1 ? "was" : "were")
+       << " scored without a sample some run of which did not finish (`posterior.json`: `samples_left_out`).\n\n";
+  if (!o.posterior_from.empty()) {
+    md << "The posterior is sampled on a response surface (a quadratic in the parameters per curve point and per scalar row) fitted "
+          "to the "
+       << o.surface_sets << " sets nearest it, at " << o.posterior_u.size() << " points: the sets' own misfits carry the noise of "
+       << "their samples";
+    if (o.surface_noise > 0)
+      md << " (their scatter about the surface is " << validation::significant(o.surface_noise, 2) << " times the reference mean's sd, on average)";
+    md << ", which would let the luckiest set carry the posterior.\n\n";
+  }
+  if (o.sizes.size() > 1) md << sizes_markdown(r);
+  md << parameters_markdown(r);
+  validation::MarkdownTable it({"iteration", "sets", "scored (all so far)", "effective points of the posterior", "largest move"});
+  for (const IterationSummary& s : o.iterations)
+    it.row({std::to_string(s.number), std::to_string(s.sets), std::to_string(s.valued), validation::significant(s.ess, 3),
+            s.number == 1 ? "" : validation::fixed(s.moved, 3)});
+  md << it.text() << "\n";
+  md << best_set_markdown(c, sets[r.best], o.sizes.size() > 1 ? " at " + o.first().profile : "");
+  if (r.verdicts.rows > 0) md << "\n" << rows_markdown(r.verdicts, sets);
+  if (r.best_largest) {
+    md << "\n" << best_set_markdown(c, o.largest().sets[*r.best_largest], " at " + o.largest().profile);
+    if (r.largest_verdicts.rows > 0) md << "\n" << rows_markdown(r.largest_verdicts, o.largest().sets);
+  }
+  return md.str();
+}
+
 }  // namespace
 
 std::map<std::string, double> parameters_of_result(const Calibration& c, const std::string& result) {
@@ -180,209 +547,18 @@ void write_report(const Outcome& o, const std::map<std::string, double>& truth) 
   const Calibration& c = o.calibration;
   const fs::path dir = c.report;
   fs::create_directories(dir);
-  const std::size_t d = c.parameters.size();
-  const IterationSummary& last = o.iterations.back();
-  const std::size_t best = best_set(o);
-
-  json j;
-  j["schema"] = 1;
-  j["name"] = c.name;
-  j["method"] = "adaptive multiple importance sampling: Sobol draws from defensive-mixture proposals, every set weighted "
-                "against the mixture of all proposals; likelihood exp(-chi2/2)";
-  j["study"] = fs::relative(c.study, dir).string();
-  j["references"] = fs::relative(c.references, dir).string();
-  j["source"] = o.references.source;
-  j["profile"] = o.profile;
-  j["seeds"] = o.seeds;
-  j["engine"] = o.engine;
-  j["converged"] = o.converged;
-  j["stop_reason"] = o.stop_reason;
-  j["runs"] = o.runs;
-  j["sets_from_ledger"] = o.ledger_sets;
-  j["unscored_sets"] = o.unscored;  // "name: why" of each set that weighs nothing for want of a score
-  j["core_seconds"] = o.core_seconds;
-  j["posterior_from"] = o.posterior_from.empty() ? "the sets' weights" : o.posterior_from;
-  if (!o.posterior_from.empty())
-    j["response_surface"] = {{"sets", o.surface_sets}, {"points", o.posterior_u.size()},
-                             {"residual_sd_over_reference_sd", o.surface_noise}};
-  j["effective_sample_size"] = last.ess;
-  j["sets_effective_sample_size"] = last.sets_ess;
-  for (const IterationSummary& it : o.iterations) {
-    json x{{"iteration", it.number}, {"sets", it.sets},       {"scored", it.valued},          {"effective_sample_size", it.ess},
-           {"sets_effective_sample_size", it.sets_ess}, {"moved", it.moved}, {"inside_region", it.contained}};
-    for (std::size_t k = 0; k < d; ++k) x["mean"][c.parameters[k].name] = it.marginals[k].mean, x["sd"][c.parameters[k].name] = it.marginals[k].sd;
-    j["iterations"].push_back(x);
+  Report r{o, truth, o.iterations.back(), best_set(o.first().sets), {}, std::nullopt, {}, correlations(o.posterior_u, o.posterior_w)};
+  r.verdicts = tally_rows(o.first().sets, r.best);
+  if (o.sizes.size() > 1 && std::any_of(o.largest().sets.begin(), o.largest().sets.end(), [](const ParameterSet& s) { return s.misfit.valued; })) {
+    std::vector<ParameterSet> top = o.largest().sets;
+    for (ParameterSet& s : top) s.log_likelihood = s.misfit.valued && !std::isnan(s.misfit.chi2) ? -0.5 * s.misfit.chi2 : -INFINITY;
+    r.best_largest = best_set(top);
+    r.largest_verdicts = tally_rows(o.largest().sets, *r.best_largest);
   }
-  for (std::size_t k = 0; k < d; ++k) {
-    const Parameter& p = c.parameters[k];
-    const Marginal& m = last.marginals[k];
-    json x{{"name", p.name}, {"keys", p.keys}, {"applies_to", p.applies_to}, {"prior", prior_text(p)},
-           {"mean", m.mean}, {"sd", m.sd}, {"median", m.median}, {"lower_95", m.lower_95}, {"upper_95", m.upper_95},
-           {"narrowing", m.narrowing}, {"identified", m.identified}, {"best", p.value(o.sets[best].u(static_cast<Eigen::Index>(k)))}};
-    if (!p.densities.empty()) x["densities"] = p.densities;
-    if (const auto t = truth.find(p.name); t != truth.end())
-      x["truth"] = t->second, x["truth_inside_95"] = t->second >= m.lower_95 && t->second <= m.upper_95;
-    j["parameters"].push_back(x);
-  }
-  const Eigen::MatrixXd r = correlations(o.posterior_u, o.posterior_w);
-  for (Eigen::Index a = 0; a < r.rows(); ++a) {
-    std::vector<double> row;
-    for (Eigen::Index b = 0; b < r.cols(); ++b) row.push_back(r(a, b));
-    j["correlations"].push_back(row);
-  }
-  j["best_set"] = {{"name", o.sets[best].name}, {"chi2", o.sets[best].misfit.chi2}};
-  const RowVerdicts verdicts = tally_rows(o.sets, best);
-  if (verdicts.rows > 0) j["rows_consistent"] = rows_json(verdicts, o.sets);
-  for (std::size_t i = 0; i < o.sets.size(); ++i) {
-    const ParameterSet& s = o.sets[i];
-    json x{{"name", s.name}, {"iteration", s.iteration}, {"weight", o.weights[i]}, {"scored", s.misfit.valued}};
-    if (s.misfit.valued) x["chi2"] = s.misfit.chi2;
-    if (const auto c = std::find_if(verdicts.sets.begin(), verdicts.sets.end(), [&](const SetCount& k) { return k.set == i; });
-        c != verdicts.sets.end())
-      x["consistent_rows"] = c->consistent, x["judged_rows"] = c->judged;
-    if (!s.misfit.left_out.empty()) x["samples_left_out"] = s.misfit.left_out;
-    for (std::size_t k = 0; k < d; ++k) x["values"][c.parameters[k].name] = c.parameters[k].value(s.u(static_cast<Eigen::Index>(k)));
-    for (const RowMisfit& m : s.misfit.rows) {
-      json row{{"name", m.name}, {"points", m.points}};
-      if (m.valued) row["chi2"] = m.chi2; else row["note"] = m.note;
-      if (m.consistent) row["consistent"] = *m.consistent;
-      x["rows"].push_back(row);
-    }
-    j["sets"].push_back(x);
-  }
-  // The stamp of the runs (engine, baseline, spheres, samples, date), for the report's section line.
-  j["stamp"] = validation::stamp_json(o.stamp);
-  validation::write_stamp_file(dir.string(), o.stamp);
-  write_file(dir / "posterior.json", j.dump(1) + "\n");
-
-  // Figure data.
-  std::ostringstream sets;
-  sets << "# every parameter set: iteration, its values, chi2 (NaN: not scored), its own weight exp(-chi2/2) over the proposals\n# iteration";
-  for (const Parameter& p : c.parameters) sets << " " << p.name;
-  sets << " chi2 weight\n";
-  for (std::size_t i = 0; i < o.sets.size(); ++i) {
-    sets << o.sets[i].iteration;
-    for (std::size_t k = 0; k < d; ++k) sets << " " << g(c.parameters[k].value(o.sets[i].u(static_cast<Eigen::Index>(k))));
-    sets << " " << (o.sets[i].misfit.valued ? g(o.sets[i].misfit.chi2) : "NaN") << " " << g(o.weights[i]) << "\n";
-  }
-  write_file(dir / "sets.dat", sets.str());
-  for (std::size_t k = 0; k < d; ++k)
-    write_file(dir / ("marginal_" + std::to_string(k + 1) + ".dat"), marginal_data(c.parameters[k], k, o, last.marginals[k]));
-  write_file(dir / "posterior_points.dat", posterior_points(o));
-  const auto best_samples = o.samples.find(o.sets[best].name);
-  for (std::size_t k = 0; k < o.references.curves.size(); ++k)
-    write_file(dir / ("curve_" + std::to_string(k + 1) + ".dat"),
-               curve_data(o.references.curves[k], best_samples == o.samples.end() ? std::vector<validation::Sample>{} : best_samples->second));
-  validation::GnuplotValues v;
-  v.number("parameters", static_cast<double>(d));
-  v.number("curves", static_cast<double>(o.references.curves.size()));
-  v.number("samples", best_samples == o.samples.end() ? 0.0 : static_cast<double>(best_samples->second.size()));
-  std::vector<std::string> names, xs, ys, titles;
-  for (const Parameter& p : c.parameters) names.push_back(p.name);
-  for (const CurveRow& row : o.references.curves) xs.push_back(row.x), ys.push_back(row.y), titles.push_back(row.name);
-  v.texts("parameter", names);
-  v.texts("curve_x", xs);
-  v.texts("curve_y", ys);
-  v.texts("curve_title", titles);
-  // The plane the scatter panel shows: of the continuous parameters, the two most correlated in
-  // the posterior (none with fewer than two).
-  int pair_a = 0, pair_b = 0;
-  double strongest = -1;
-  for (std::size_t a = 0; a < d; ++a)
-    for (std::size_t b = a + 1; b < d; ++b)
-      if (!c.parameters[a].discrete() && !c.parameters[b].discrete() &&
-          std::abs(r(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b))) > strongest)
-        strongest = std::abs(r(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b))), pair_a = static_cast<int>(a) + 1,
-        pair_b = static_cast<int>(b) + 1;
-  v.number("pair_a", pair_a);
-  v.number("pair_b", pair_b);
-  for (std::size_t k = 0; k < d; ++k) {
-    const auto t = truth.find(c.parameters[k].name);
-    v.number("truth_" + std::to_string(k + 1), t == truth.end() ? NAN : t->second);
-    v.number("discrete_" + std::to_string(k + 1), c.parameters[k].discrete() ? 1 : 0);
-    v.number("log_" + std::to_string(k + 1), c.parameters[k].prior == Parameter::Prior::LogUniform ? 1 : 0);
-    v.number("values_" + std::to_string(k + 1), static_cast<double>(c.parameters[k].values.size()));
-    // The range the scatter panel shows: the posterior's mean -+ 6 sd on the unit interval.
-    const Marginal& m = last.marginals[k];
-    v.number("low_" + std::to_string(k + 1), c.parameters[k].value(std::max(0.0, m.unit_mean - 6 * m.unit_sd)));
-    v.number("high_" + std::to_string(k + 1), c.parameters[k].value(std::min(1.0, m.unit_mean + 6 * m.unit_sd)));
-  }
-  write_file(dir / "values.gp", v.text_file("calibration " + c.name + ": what calibration.gp draws"));
-
-  // The tables.
-  std::ostringstream md;
-  md << "Calibration `" << c.name << "` of the study `" << fs::path(c.study).filename().string() << "` (profile " << o.profile
-     << ", " << o.seeds.size() << " sample(s) per set) against " << o.references.source << ". Engine " << o.engine << ".\n\n";
-  md << o.sets.size() << " parameter sets in " << o.iterations.size() << (o.iterations.size() == 1 ? " iteration of " : " iterations of ") << c.batch << " (" << o.runs
-     << " runs, " << validation::significant(o.core_seconds / 60, 3) << " core-min recorded); effective sample size "
-     << validation::significant(last.ess, 3) << "; " << (o.converged ? "converged: " : "not converged: ") << o.stop_reason << ".\n\n";
-  if (o.ledger_sets > 0)
-    md << o.ledger_sets << " of the sets were scored in earlier calls whose runs' results are not kept here: their scores come "
-       << "from the ledger `scored_sets.json`, which records each set's run hashes and misfit.\n\n";
-  const auto short_of = std::count_if(o.sets.begin(), o.sets.end(), [](const ParameterSet& s) { return !s.misfit.left_out.empty(); });
-  if (short_of > 0)
-    md << short_of << " of the sets " << (short_of == 1 ? "was" : "were")
-       << " scored without a sample some run of which did not finish (`posterior.json`: `samples_left_out`).\n\n";
-  if (!o.posterior_from.empty()) {
-    md << "The posterior is sampled on a response surface (a quadratic in the parameters per curve point and per scalar row) fitted "
-          "to the "
-       << o.surface_sets << " sets nearest it, at " << o.posterior_u.size() << " points: the sets' own misfits carry the noise of "
-       << "their samples";
-    if (o.surface_noise > 0)
-      md << " (their scatter about the surface is " << validation::significant(o.surface_noise, 2) << " times the reference mean's sd, on average)";
-    md << ", which would let the luckiest set carry the posterior.\n\n";
-  }
-  std::vector<std::string> head{"parameter", "prior", "posterior mean ± sd", "95 % interval", "prior sd / posterior sd", "identified"};
-  if (!truth.empty()) head.insert(head.begin() + 2, "truth");
-  validation::MarkdownTable t(head);
-  for (std::size_t k = 0; k < d; ++k) {
-    const Parameter& p = c.parameters[k];
-    const Marginal& m = last.marginals[k];
-    // A parameter of values: the posterior's share of each value (its mean of indices means nothing).
-    std::vector<std::string> cells{p.name, prior_text(p),
-                                   p.discrete() ? value_shares(p, k, o)
-                                                : validation::significant(m.mean, 3) + " ± " + validation::significant(m.sd, 2),
-                                   p.discrete() ? "—" : "[" + validation::significant(m.lower_95, 3) + ", " + validation::significant(m.upper_95, 3) + "]",
-                                   validation::significant(m.narrowing, 2),
-                                   m.identified ? "yes" : "no: the references barely narrow its prior"};
-    if (!truth.empty()) {
-      const auto tr = truth.find(p.name);
-      cells.insert(cells.begin() + 2, tr == truth.end() ? "" :
-                   validation::significant(tr->second, 3) + (tr->second >= m.lower_95 && tr->second <= m.upper_95 ? " (inside)" : " (OUTSIDE)"));
-    }
-    t.row(cells);
-  }
-  md << t.text() << "\n";
-  if (d > 1) {
-    std::vector<std::string> ch{"correlation"};
-    for (const Parameter& p : c.parameters) ch.push_back(p.name);
-    validation::MarkdownTable ct(ch);
-    for (std::size_t a = 0; a < d; ++a) {
-      std::vector<std::string> cells{c.parameters[a].name};
-      for (std::size_t b = 0; b < d; ++b) cells.push_back(validation::fixed(r(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)), 2));
-      ct.row(cells);
-    }
-    md << ct.text() << "\n";
-  }
-  validation::MarkdownTable it({"iteration", "sets", "scored (all so far)", "effective points of the posterior", "largest move"});
-  for (const IterationSummary& s : o.iterations)
-    it.row({std::to_string(s.number), std::to_string(s.sets), std::to_string(s.valued), validation::significant(s.ess, 3),
-            s.number == 1 ? "" : validation::fixed(s.moved, 3)});
-  md << it.text() << "\n";
-  md << "Best set " << o.sets[best].name << " (χ² " << validation::significant(o.sets[best].misfit.chi2, 3) << "):";
-  for (std::size_t k = 0; k < d; ++k)
-    md << " " << c.parameters[k].name << " = "
-       << (c.parameters[k].discrete() ? c.parameters[k].value_text(o.sets[best].u(static_cast<Eigen::Index>(k)))
-                                      : validation::significant(c.parameters[k].value(o.sets[best].u(static_cast<Eigen::Index>(k))), 4))
-       << (k + 1 < d ? "," : ".");
-  md << "\n";
-  validation::MarkdownTable rows({"reference", "points", "χ² at the best set", "χ² per point"});
-  for (const RowMisfit& m : o.sets[best].misfit.rows)
-    rows.row({m.name, std::to_string(m.points), validation::significant(m.chi2, 3),
-              m.points > 0 ? validation::significant(m.chi2 / m.points, 2) : ""});
-  md << "\n" << rows.text();
-  if (verdicts.rows > 0) md << "\n" << rows_markdown(verdicts, o.sets);
-  write_file(dir / "section.md", md.str());
+  validation::write_stamp_file(dir.string(), stamp_of(o));
+  write_file(dir / "posterior.json", posterior_json(r).dump(1) + "\n");
+  write_figure_data(r);
+  write_file(dir / "section.md", section_markdown(r));
 }
 
 }  // namespace calibration

@@ -69,23 +69,28 @@ std::vector<CurvePoint> read_curve_csv(const std::string& file) {
   std::vector<CurvePoint> points;
   std::string line;
   int number = 0;
-  std::size_t columns = 0;  // the header's: 2 or 3
+  std::size_t columns = 0;  // the header's: 2, 3, or 3 and the specimens'
   while (std::getline(in, line)) {
     ++number;
     if (line.empty() || line[0] == '#') continue;
     const std::vector<std::string> cells = split_csv(line);
     if (columns == 0) {  // the first line that is not a comment names the columns
       columns = cells.size();
-      if (cells.size() < 2 || cells.size() > 3)
+      const bool specimens = cells.size() > 3;
+      for (std::size_t k = 3; k < cells.size(); ++k)
+        if (cells[k] != "specimen_" + std::to_string(k - 2))
+          throw dem::ConfigError(file + ":" + std::to_string(number) + ": column " + std::to_string(k + 1) + " is named '" +
+                                 cells[k].substr(0, 40) + "'; after x, y and sd come specimen_1, specimen_2, ... (each specimen's y)");
+      if (cells.size() < 2 || (specimens && cells.size() < 6))
         throw dem::ConfigError(file + ":" + std::to_string(number) + ": the header names " + std::to_string(cells.size()) +
-                               " columns; a curve has 2 or 3: x, y and optionally sd");
+                               " columns; a curve has 2 or 3: x, y and optionally sd, then optionally at least 3 specimens' y");
       continue;
     }
     CurvePoint p;
-    double* slots[] = {&p.x, &p.y, &p.sd};
-    for (std::size_t k = 0; k < cells.size() && k < 3; ++k) {
+    std::vector<double> values(cells.size());
+    for (std::size_t k = 0; k < cells.size(); ++k) {
       std::string why;
-      if (!dem::parse_decimal(cells[k], *slots[k], why) || !std::isfinite(*slots[k]))
+      if (!dem::parse_decimal(cells[k], values[k], why) || !std::isfinite(values[k]))
         throw dem::ConfigError(file + ":" + std::to_string(number) + ": column " + std::to_string(k + 1) + " is '" +
                                cells[k].substr(0, 40) + "', not a finite number" + (why.empty() ? "" : " (" + why + ")"));
     }
@@ -93,12 +98,48 @@ std::vector<CurvePoint> read_curve_csv(const std::string& file) {
     if (cells.size() != columns)
       throw dem::ConfigError(file + ":" + std::to_string(number) + ": " + std::to_string(cells.size()) +
                              " columns where the header has " + std::to_string(columns) +
-                             (columns == 3 ? " (x, y, sd): give every point its sd" : " (x, y)"));
+                             (columns >= 3 ? " (x, y, sd, ...): give every point its sd" : " (x, y)"));
+    p.x = values[0], p.y = values[1];
+    if (values.size() > 2) p.sd = values[2];
+    p.specimens.assign(values.begin() + std::min<std::ptrdiff_t>(3, static_cast<std::ptrdiff_t>(values.size())), values.end());
     if (p.sd < 0) throw dem::ConfigError(file + ":" + std::to_string(number) + ": sd is negative");
     points.push_back(p);
   }
   if (points.empty()) throw dem::ConfigError(file + ": no points (a header line, then x, y[, sd] per line)");
   return points;
+}
+
+std::vector<CorrelatedPoints> correlated_points(const std::vector<CurveRow>& curves) {
+  std::vector<CorrelatedPoints> groups;
+  std::vector<std::pair<std::string, std::string>> runs;  // each group's (density, test)
+  std::vector<std::size_t> counts;                        // ... and its specimens
+  for (std::size_t c = 0; c < curves.size(); ++c) {
+    const CurveRow& row = curves[c];
+    const std::size_t n = row.points.front().specimens.size();
+    if (n < 3 || std::any_of(row.points.begin(), row.points.end(), [&](const CurvePoint& p) { return p.specimens.size() != n; })) continue;
+    std::size_t g = 0;
+    while (g < groups.size() && !(runs[g] == std::make_pair(row.density, row.test) && counts[g] == n)) ++g;
+    if (g == groups.size()) groups.emplace_back(), runs.emplace_back(row.density, row.test), counts.push_back(n);
+    for (std::size_t j = 0; j < row.points.size(); ++j) groups[g].points.emplace_back(c, j);
+  }
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    const std::size_t m = groups[g].points.size(), n = counts[g];
+    Eigen::MatrixXd values(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(m));
+    for (std::size_t k = 0; k < m; ++k) {
+      const auto [c, j] = groups[g].points[k];
+      for (std::size_t i = 0; i < n; ++i) values(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k)) = curves[c].points[j].specimens[i];
+    }
+    const Eigen::MatrixXd centred = values.rowwise() - values.colwise().mean();
+    const Eigen::MatrixXd cov = centred.transpose() * centred / static_cast<double>(n - 1);
+    const Eigen::VectorXd sd = cov.diagonal().cwiseSqrt();
+    Eigen::MatrixXd r = Eigen::MatrixXd::Identity(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(m));
+    for (Eigen::Index a = 0; a < r.rows(); ++a)
+      for (Eigen::Index b = 0; b < r.cols(); ++b)
+        if (a != b && sd(a) > 0 && sd(b) > 0) r(a, b) = cov(a, b) / (sd(a) * sd(b));
+    const double shrink = 1.0 / static_cast<double>(n - 1);
+    groups[g].correlation = (1 - shrink) * r + shrink * Eigen::MatrixXd::Identity(r.rows(), r.cols());
+  }
+  return groups;
 }
 
 References read_references(const std::string& file, const std::string& profile) {
@@ -132,6 +173,7 @@ References read_references(const std::string& file, const std::string& profile) 
   }
   root.finish();
   if (r.curves.empty() && r.rows.empty()) root.fail("curves", "is empty and no rows are given: nothing to fit");
+  r.correlated = correlated_points(r.curves);
   return r;
 }
 

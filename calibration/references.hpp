@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Dense>
+
 #include "judge/rows.hpp"
 #include "study/results.hpp"
 
@@ -14,6 +16,18 @@ namespace calibration {
 struct CurvePoint {
   double x = 0, y = 0;
   double sd = 0;  // the specimens' standard deviation of y at x (0: one specimen, or not given)
+  std::vector<double> specimens;  // each specimen's y at x, when the CSV gives them (specimen_1, ...)
+};
+
+// The points of curves read on the same runs (density and test) whose CSVs give each specimen's
+// value: a specimen that is stiffer at one strain is stiffer at the next, and its volume follows,
+// so the deviation of a mean of a few specimens (or samples) from the population's is shared by
+// the points. Their correlation over the specimens, shrunk towards none by 1 / (specimens - 1) (an
+// estimate from a few specimens is noisy, and the shrunk one is positive definite), is that
+// deviation's correlation, for the lab's specimens and for the model's samples alike.
+struct CorrelatedPoints {
+  std::vector<std::pair<std::size_t, std::size_t>> points;  // (curve, point)
+  Eigen::MatrixXd correlation;
 };
 
 struct CurveRow {
@@ -32,7 +46,11 @@ struct References {
   std::vector<CurveRow> curves;
   std::string rows_file;           // a validate reference file, or ""
   std::vector<validation::Row> rows;
+  std::vector<CorrelatedPoints> correlated;  // groups of curve points, each point in one at most
 };
+
+// The groups of points whose specimens are given (at least 3, as many in every point of a group).
+std::vector<CorrelatedPoints> correlated_points(const std::vector<CurveRow>& curves);
 
 // Reads a calibration's reference file (YAML; errors name the file and the key) and its curves.
 References read_references(const std::string& file, const std::string& profile);

@@ -1,5 +1,6 @@
 #include "surrogate.hpp"
 
+#include "discrepancy.hpp"
 #include "study/ensemble.hpp"
 
 #include <algorithm>
@@ -47,20 +48,70 @@ bool ResponseSurface::inside(const Eigen::VectorXd& u) const {
 }
 
 double ResponseSurface::log_likelihood(const References& refs, const Eigen::VectorXd& u) const {
+  return log_likelihood(refs, u, {});
+}
+
+double ResponseSurface::log_likelihood(const References& refs, const Eigen::VectorXd& u, const std::vector<Discrepancy>& larger) const {
   const Eigen::VectorXd x = features(u);
+  std::vector<Eigen::VectorXd> xd;
+  for (const Discrepancy& delta : larger) xd.push_back(delta.features(u));
+  // The model's mean at u, the variance of the fits' prediction, and the samples' own term.
+  struct Prediction {
+    double mean = 0, fit_variance = 0;
+    const Quadratic* samples_of = nullptr;
+  };
+  const auto predict = [&](const Quadratic& q, const auto& discrepancy_of) {
+    Prediction p{q.value(x), q.variance(x), &q};
+    for (std::size_t k = 0; k < larger.size(); ++k) {
+      const Quadratic& dq = discrepancy_of(larger[k]);
+      p.mean += dq.value(xd[k]), p.fit_variance += dq.variance(xd[k]), p.samples_of = &dq;
+    }
+    return p;
+  };
   double ll = 0;
+  const auto at_point = [&](std::size_t c, std::size_t j) {
+    return predict(curves[c][j], [&](const Discrepancy& delta) -> const Quadratic& { return delta.curves[c][j]; });
+  };
+  // Points whose deviations are correlated (References::correlated): jointly Gaussian, their
+  // covariance the independent parts (tolerance, the fits' prediction) on the diagonal plus the
+  // lab mean's and the model mean's common deviations, each sd_j sd_k R_jk.
+  std::vector<std::vector<bool>> joint(refs.curves.size());
+  for (std::size_t c = 0; c < refs.curves.size(); ++c) joint[c].assign(refs.curves[c].points.size(), false);
+  for (const CorrelatedPoints& g : refs.correlated) {
+    const Eigen::Index n = static_cast<Eigen::Index>(g.points.size());
+    Eigen::VectorXd r(n), lab(n), model(n), own(n);
+    for (Eigen::Index k = 0; k < n; ++k) {
+      const auto [c, j] = g.points[static_cast<std::size_t>(k)];
+      const CurveRow& row = refs.curves[c];
+      const CurvePoint& p = row.points[j];
+      const Prediction m = at_point(c, j);
+      r(k) = m.mean - p.y;
+      own(k) = row.tolerance * row.tolerance + m.fit_variance;
+      lab(k) = p.sd / std::sqrt(static_cast<double>(row.specimens));
+      model(k) = std::sqrt(m.samples_of->sample_variance / m.samples_of->samples);
+      joint[c][j] = true;
+    }
+    const Eigen::MatrixXd cov =
+        Eigen::MatrixXd(own.asDiagonal()) + (lab * lab.transpose() + model * model.transpose()).cwiseProduct(g.correlation);
+    const Eigen::LDLT<Eigen::MatrixXd> ldlt(cov);
+    ll += -0.5 * r.dot(ldlt.solve(r)) - 0.5 * ldlt.vectorD().array().log().sum() - 0.5 * static_cast<double>(n) * std::log(2 * M_PI);
+  }
   for (std::size_t c = 0; c < refs.curves.size(); ++c) {
     const CurveRow& row = refs.curves[c];
     for (std::size_t j = 0; j < row.points.size(); ++j) {
+      if (joint[c][j]) continue;
       const CurvePoint& p = row.points[j];
-      const Quadratic& q = curves[c][j];
-      const double var = row.tolerance * row.tolerance + p.sd * p.sd / row.specimens + q.sample_variance / q.samples + q.variance(x);
-      const double r = q.value(x) - p.y;
+      const Prediction m = at_point(c, j);
+      const double var = row.tolerance * row.tolerance + p.sd * p.sd / row.specimens +
+                         m.samples_of->sample_variance / m.samples_of->samples + m.fit_variance;
+      const double r = m.mean - p.y;
       ll += -0.5 * r * r / var - 0.5 * std::log(2 * M_PI * var);
     }
   }
-  for (const RowSurface& row : rows) {
-    const double sd = std::sqrt(row.q.sample_variance + row.q.variance(x)), mean = row.q.value(x);
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    const RowSurface& row = rows[r];
+    const Prediction m = predict(row.q, [&](const Discrepancy& delta) -> const Quadratic& { return delta.rows[r]; });
+    const double sd = std::sqrt(m.samples_of->sample_variance + m.fit_variance), mean = m.mean;
     const auto below = [&](double v) {  // P(value < v)
       if (std::isinf(v)) return v > 0 ? 1.0 : 0.0;
       if (sd == 0) return mean < v ? 1.0 : 0.0;
@@ -146,8 +197,8 @@ namespace {
 
 // n points from N(mean, cov) inside the cube and the surface's region, weighed by likelihood over
 // the Gaussian's density (its normalisation, the same for every point, cancels).
-void draw_weighted(const ResponseSurface& s, const References& refs, const Eigen::VectorXd& mean, const Eigen::MatrixXd& cov,
-                   int n, std::mt19937_64& rng, std::vector<Eigen::VectorXd>& u, std::vector<double>& w) {
+void draw_weighted(const ResponseSurface& s, const std::vector<Discrepancy>& larger, const References& refs, const Eigen::VectorXd& mean,
+                   const Eigen::MatrixXd& cov, int n, std::mt19937_64& rng, std::vector<Eigen::VectorXd>& u, std::vector<double>& w) {
   const Eigen::Index d = mean.size();
   const Eigen::MatrixXd l = Eigen::LLT<Eigen::MatrixXd>(cov).matrixL();
   std::normal_distribution<double> normal;
@@ -159,7 +210,7 @@ void draw_weighted(const ResponseSurface& s, const References& refs, const Eigen
     const Eigen::VectorXd p = mean + l * z;
     if ((p.array() < 0).any() || (p.array() > 1).any() || !s.inside(p)) continue;
     u.push_back(p);
-    log_w.push_back(s.log_likelihood(refs, p) + 0.5 * z.squaredNorm());
+    log_w.push_back(s.log_likelihood(refs, p, larger) + 0.5 * z.squaredNorm());
   }
   w.assign(log_w.size(), 0.0);
   if (log_w.empty()) return;
@@ -173,13 +224,18 @@ void draw_weighted(const ResponseSurface& s, const References& refs, const Eigen
 
 void sample_surface(const ResponseSurface& s, const References& refs, int n, std::vector<Eigen::VectorXd>& u,
                     std::vector<double>& w) {
+  sample_surface(s, {}, refs, n, u, w);
+}
+
+void sample_surface(const ResponseSurface& s, const std::vector<Discrepancy>& larger, const References& refs, int n,
+                    std::vector<Eigen::VectorXd>& u, std::vector<double>& w) {
   std::mt19937_64 rng(20261127);
   // First from the region's Gaussian, then again from a Gaussian fitted to those weights (twice
   // their covariance), which puts the points where the posterior is.
-  draw_weighted(s, refs, s.centre, s.region_inverse.inverse(), n, rng, u, w);
+  draw_weighted(s, larger, refs, s.centre, s.region_inverse.inverse(), n, rng, u, w);
   if (u.empty()) return;
   const Proposal q = fit_proposal(u, w, 0, 2, 1e-4);
-  draw_weighted(s, refs, q.mean, q.covariance, n, rng, u, w);
+  draw_weighted(s, larger, refs, q.mean, q.covariance, n, rng, u, w);
 }
 
 }  // namespace calibration

@@ -18,6 +18,8 @@
 
 namespace calibration {
 
+struct Discrepancy;  // discrepancy.hpp: from this surface's size to a larger one
+
 // y ~ b . x(z), x = (1, z_i, z_i z_j for i <= j), z the unit coordinates standardised to the region.
 struct Quadratic {
   // The variance of one sample's y about the population's mean (its packing's own deviation, which
@@ -62,6 +64,10 @@ struct ResponseSurface {
   // about the surface's mean with variance sample_variance + the prediction variance; an interval
   // row and a trend are then read alike.
   double log_likelihood(const References& refs, const Eigen::VectorXd& u) const;
+  // ... at a larger size: each point's mean the surface's plus every discrepancy's (each from the
+  // size before to the next), its variance the surface's and every discrepancy's prediction
+  // variance, and the samples' own term the largest size's (the last discrepancy's).
+  double log_likelihood(const References& refs, const Eigen::VectorXd& u, const std::vector<Discrepancy>& larger) const;
 };
 
 // The number of quadratic features in d dimensions: 1 + d + d (d + 1) / 2.
@@ -80,5 +86,8 @@ std::optional<ResponseSurface> fit_surface(const References& refs, const std::ve
 // Gaussian's density (the prior is uniform). A fixed pseudo-random seed: deterministic.
 void sample_surface(const ResponseSurface& s, const References& refs, int n, std::vector<Eigen::VectorXd>& u,
                     std::vector<double>& w);
+// ... at the larger size the discrepancies lead to.
+void sample_surface(const ResponseSurface& s, const std::vector<Discrepancy>& larger, const References& refs, int n,
+                    std::vector<Eigen::VectorXd>& u, std::vector<double>& w);
 
 }  // namespace calibration

@@ -90,7 +90,15 @@ TEST_CASE("a curve's chi2 divides by the tolerance, the specimens' and the sampl
 TEST_CASE("bad curve files and calibration files name the file, line and key", "[calibration]") {
   CHECK_THAT(error_of([] { calibration::read_curve_csv(write("a.csv", "x,y\n1,2\n3,abc\n")); }),
              Catch::Contains("a.csv:3") && Catch::Contains("'abc'"));
-  CHECK_THAT(error_of([] { calibration::read_curve_csv(write("b.csv", "x,y,sd,z\n")); }), Catch::Contains("4 columns"));
+  CHECK_THAT(error_of([] { calibration::read_curve_csv(write("b.csv", "x,y,sd,z\n")); }),
+             Catch::Contains("b.csv:1: column 4 is named 'z'") && Catch::Contains("specimen_1"));
+  // Specimens' columns: at least 3 (a correlation from 2 is +-1), each row as many as the header.
+  CHECK_THAT(error_of([] { calibration::read_curve_csv(write("b2.csv", "x,y,sd,specimen_1,specimen_2\n")); }),
+             Catch::Contains("5 columns") && Catch::Contains("at least 3 specimens"));
+  CHECK_THAT(error_of([] { calibration::read_curve_csv(write("b3.csv", "x,y,sd,specimen_1,specimen_2,specimen_3\n1,2,0.1,1.9,2\n")); }),
+             Catch::Contains("b3.csv:2: 5 columns where the header has 6"));
+  const auto with = calibration::read_curve_csv(write("b4.csv", "x,y,sd,specimen_1,specimen_2,specimen_3\n1,2,0.1,1.9,2,2.1\n"));
+  CHECK(with.front().specimens == std::vector<double>{1.9, 2, 2.1});
   CHECK_THAT(error_of([] { calibration::read_curve_csv(write("c.csv", "x,y\n")); }), Catch::Contains("no points"));
   CHECK_THAT(error_of([] { calibration::read_curve_csv(write("d.csv", "x,y,sd\n1,2,-1\n")); }), Catch::Contains("negative"));
   const std::string head = "name: c\nstudy: s.yaml\nreferences: r.yaml\nreport: out\n";

@@ -144,3 +144,49 @@ TEST_CASE("a scalar row on the surface: the probability that one sample lies in 
   CHECK(m.mean == Approx(mean).margin(0.005));
   CHECK(m.sd == Approx(sd).epsilon(0.1));
 }
+
+TEST_CASE("points whose specimens are given are taken jointly, with the specimens' correlation", "[calibration]") {
+  // Two curves on the same runs, 4 specimens each: point values (1, 2, 3, 4), (2, 4, 6, 8) and
+  // (4, 3, 2, 1) correlate +1, +1 and -1 with the first, shrunk by 1 / (4 - 1): +-2/3.
+  calibration::References refs;
+  calibration::CurveRow a{"a", "", "x", "y", "dense", "t", 4, 0, {{0, 2.5, 0.2, {1, 2, 3, 4}}, {1, 5, 0.3, {2, 4, 6, 8}}}};
+  calibration::CurveRow b{"b", "", "x", "z", "dense", "t", 4, 0, {{0, 2.5, 0.1, {4, 3, 2, 1}}}};
+  calibration::CurveRow other{"c", "", "x", "y", "loose", "t", 1, 0, {{0, 1, 0.1, {}}}};
+  refs.curves = {a, b, other};
+  refs.correlated = calibration::correlated_points(refs.curves);
+  REQUIRE(refs.correlated.size() == 1);
+  const calibration::CorrelatedPoints& g = refs.correlated[0];
+  REQUIRE(g.points.size() == 3);
+  CHECK(g.correlation(0, 1) == Approx(2.0 / 3));
+  CHECK(g.correlation(0, 2) == Approx(-2.0 / 3));
+  CHECK(g.correlation(1, 2) == Approx(-2.0 / 3));
+  CHECK(g.correlation(2, 2) == Approx(1));
+  // The likelihood on an exact surface (no prediction variance): the three points jointly normal,
+  // covariance (s s^T) o R with s_j = sd_j / sqrt(4) (the lab's mean) and the model's one sample
+  // (sample_variance = sd_j^2, its sd the reference's): 2 s s^T o R; the fourth point alone.
+  // Computed here by hand with the inverse of the 3 x 3 covariance.
+  std::vector<calibration::ParameterSet> sets;
+  for (int i = 0; i < 21; ++i) {
+    calibration::ParameterSet s;
+    s.u = Eigen::VectorXd::Constant(1, 0.2 + 0.02 * i);
+    const double v = s.u(0);
+    s.misfit.rows = {calibration::RowMisfit{"a", 0, 2, "", true, {2 + v, 4 + 2 * v}, {0, 0}, 1},
+                     calibration::RowMisfit{"b", 0, 1, "", true, {3 - v}, {0}, 1},
+                     calibration::RowMisfit{"c", 0, 1, "", true, {1 + v}, {0}, 1}};
+    sets.push_back(s);
+  }
+  calibration::Proposal region;
+  region.mean = Eigen::VectorXd::Constant(1, 0.4);
+  region.covariance = Eigen::MatrixXd::Constant(1, 1, 0.01);
+  const auto surface = calibration::fit_surface(refs, sets, region);
+  REQUIRE(surface);
+  const double u = 0.45;
+  const Eigen::Vector3d r(2 + u - 2.5, 4 + 2 * u - 5, 3 - u - 2.5);
+  const Eigen::Vector3d s(0.1, 0.15, 0.05);  // sd / sqrt(4)
+  const Eigen::Vector3d m(0.2, 0.3, 0.1);    // the model's one sample: the reference's sd
+  const Eigen::Matrix3d cov = (s * s.transpose() + m * m.transpose()).cwiseProduct(g.correlation);
+  const double joint = -0.5 * r.dot(cov.inverse() * r) - 0.5 * std::log(cov.determinant()) - 1.5 * std::log(2 * M_PI);
+  const double alone_var = 0.1 * 0.1 / 1 + 0.1 * 0.1, alone_r = 1 + u - 1;
+  const double alone = -0.5 * alone_r * alone_r / alone_var - 0.5 * std::log(2 * M_PI * alone_var);
+  CHECK(surface->log_likelihood(refs, Eigen::VectorXd::Constant(1, u)) == Approx(joint + alone).epsilon(1e-6));
+}

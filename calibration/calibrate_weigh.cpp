@@ -1,0 +1,150 @@
+// Weighing the sets: the first size's response surface and posterior; the larger sizes' sets,
+// chosen where they inform the posterior most, and their discrepancies (discrepancy.hpp).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numeric>
+
+#include "discrepancy.hpp"
+#include "loop.hpp"
+#include "config/yaml_section.hpp"
+#include "study/format.hpp"
+#include "study/series.hpp"
+
+namespace calibration {
+
+namespace {
+
+// A posterior with no finite weight is no posterior: every set's likelihood is 0 (its chi^2
+// infinite) or not a number. Reported, the zeros would show a corner of the prior as the
+// posterior, sd 0, "identified": an error instead, naming a set's row whose chi^2 is not finite.
+void require_weight(const Outcome& out) {
+  const auto positive = [](const std::vector<double>& w) {
+    const double total = std::accumulate(w.begin(), w.end(), 0.0);
+    return std::isfinite(total) && total > 0;
+  };
+  if (positive(out.weights) && positive(out.posterior_w)) return;
+  std::string example;
+  for (const ParameterSet& s : out.first().sets)
+    for (const RowMisfit& m : s.misfit.rows)
+      if (example.empty() && m.valued && !std::isfinite(m.chi2))
+        example = " (set " + s.name + ": '" + m.name + "' has chi^2 " + validation::format_number(m.chi2) + ")";
+  throw dem::ConfigError("no parameter set has a finite weight: the chi^2 of every set scored is infinite or not a number" + example +
+                         ", so there is no posterior; check the sd and tolerances of " + out.references.file +
+                         " (a point or row whose sd and tolerance are 0 cannot be missed by any run); nothing was reported");
+}
+
+// Every set of the first size weighted again; the posterior: on a response surface fitted to the
+// sets near it (surrogate.hpp), when enough sets are scored; else the sets' own weights. The
+// surface's region: the Gaussian this iteration drew from (the first: one fitted to the best sets).
+}  // namespace
+
+void weigh(Loop& l, int it) {
+  Outcome& out = l.out;
+  std::vector<Eigen::VectorXd> u;
+  std::vector<double> log_likelihood;
+  for (const ParameterSet& s : out.first().sets) u.push_back(s.u), log_likelihood.push_back(s.log_likelihood);
+  out.weights = importance_weights(u, log_likelihood, l.proposals, l.drawn);
+  const Proposal region = it > 1 ? l.proposals.back()
+                                 : fit_proposal(u, proposal_weights(u, log_likelihood, l.proposals, l.drawn, 2.0 * quadratic_terms(l.dimensions())), 0);
+  out.posterior_from.clear();
+  out.posterior_u = u, out.posterior_w = out.weights;
+  l.surface = fit_surface(out.references, out.first().sets, region);
+  if (l.surface) {
+    std::vector<Eigen::VectorXd> pu;
+    std::vector<double> pw;
+    sample_surface(*l.surface, out.references, 4000, pu, pw);
+    if (!pu.empty()) {
+      out.posterior_u = std::move(pu), out.posterior_w = std::move(pw);
+      out.surface_sets = l.surface->sets;
+      out.surface_noise = l.surface->noise_to_reference;
+      out.posterior_from = "response surface";
+      out.region_centre = l.surface->centre;
+      out.region_sd = l.surface->scale * l.surface->radius;
+    } else {
+      l.surface.reset();
+    }
+  }
+  require_weight(out);
+}
+
+
+namespace {
+
+Eigen::VectorXd mean_of(const std::vector<Eigen::VectorXd>& u, const std::vector<double>& w) {
+  Eigen::VectorXd m = Eigen::VectorXd::Zero(u.front().size());
+  const double total = std::accumulate(w.begin(), w.end(), 0.0);
+  for (std::size_t i = 0; i < u.size(); ++i) m += w[i] / total * u[i];
+  return m;
+}
+
+// Each reference row's discrepancy at u, point by point, with its prediction sd.
+std::vector<SizeOutcome::Change> changes_at(const Outcome& out, const Discrepancy& delta, const Eigen::VectorXd& u) {
+  std::vector<SizeOutcome::Change> changes;
+  const Eigen::VectorXd x = delta.features(u);
+  const auto add = [&](const std::string& row, const std::vector<Quadratic>& qs) {
+    SizeOutcome::Change c{row, {}, {}};
+    for (const Quadratic& q : qs) c.shift.push_back(q.value(x)), c.shift_sd.push_back(std::sqrt(q.variance(x)));
+    changes.push_back(std::move(c));
+  };
+  for (std::size_t c = 0; c < out.references.curves.size(); ++c) add(out.references.curves[c].name, delta.curves[c]);
+  for (std::size_t r = 0; r < out.references.rows.size(); ++r) add(out.references.rows[r].name, {delta.rows[r]});
+  return changes;
+}
+
+}  // namespace
+
+void choose_larger_sets(Loop& l, std::size_t k, int it) {
+  SizeOutcome& so = l.out.sizes[k];
+  const int room = std::min(l.c.sizes[k].per_iteration, so.budget - static_cast<int>(so.sets.size()));
+  if (room <= 0) return;
+  std::vector<const ParameterSet*> candidates;
+  std::vector<Eigen::VectorXd> candidate_u, chosen_u;
+  for (const ParameterSet& s : so.sets) chosen_u.push_back(s.u);
+  for (const ParameterSet& s : l.out.sizes[k - 1].sets)
+    if (s.misfit.valued && std::none_of(so.sets.begin(), so.sets.end(), [&](const ParameterSet& t) { return t.name == s.name; }))
+      candidates.push_back(&s), candidate_u.push_back(s.u);
+  // Near the posterior at the largest size so far, else the first size's.
+  const bool larger = !l.larger_u.empty();
+  const std::vector<std::size_t> picked = choose_for_larger_size(candidate_u, chosen_u, larger ? l.larger_u : l.out.posterior_u,
+                                                                 larger ? l.larger_w : l.out.posterior_w, room);
+  std::string names;
+  for (const std::size_t i : picked) {
+    ParameterSet s;
+    s.name = candidates[i]->name, s.u = candidates[i]->u, s.iteration = it;
+    so.sets.push_back(std::move(s));
+    names += (names.empty() ? "" : ", ") + candidates[i]->name;
+  }
+  std::printf("[calibrate] iteration %d: size %s runs %s (%zu of at most %d there)\n", it, so.profile.c_str(),
+              names.empty() ? "no set" : names.c_str(), so.sets.size(), so.budget);
+  std::fflush(stdout);
+}
+
+void weigh_larger(Loop& l) {
+  Outcome& out = l.out;
+  if (out.sizes.size() < 2) return;
+  out.first_size_only.clear();
+  for (std::size_t j = 0; j < l.c.parameters.size(); ++j)
+    out.first_size_only.push_back(marginal(l.c.parameters[j], j, out.posterior_u, out.posterior_w));
+  std::vector<Discrepancy> deltas;
+  for (std::size_t k = 1; k < out.sizes.size(); ++k) {
+    SizeOutcome& so = out.sizes[k];
+    so.discrepancy_pairs = 0, so.discrepancy_linear = false, so.changes.clear();
+    if (const auto delta = fit_discrepancy(out.references, out.sizes[k - 1].sets, so.sets)) {
+      so.discrepancy_pairs = delta->pairs, so.discrepancy_linear = delta->linear;
+      so.changes = changes_at(out, *delta, mean_of(out.posterior_u, out.posterior_w));
+      deltas.push_back(*delta);
+    }
+  }
+  // Until every size has its discrepancy the posterior stays the first size's (posterior_source says so).
+  if (!l.surface || deltas.size() + 1 < out.sizes.size()) return;
+  std::vector<Eigen::VectorXd> pu;
+  std::vector<double> pw;
+  sample_surface(*l.surface, deltas, out.references, 4000, pu, pw);
+  if (pu.empty()) return;
+  out.posterior_u = pu, out.posterior_w = pw;
+  l.larger_u = std::move(pu), l.larger_w = std::move(pw);
+  require_weight(out);
+}
+
+}  // namespace calibration

@@ -1,0 +1,82 @@
+#pragma once
+// The calibration loop's state and steps, shared by its files (not an interface of the room):
+// calibrate.cpp (the loop and its sizes' runs), calibrate_plan.cpp (what a plan costs),
+// calibrate_weigh.cpp (the posterior; the larger sizes: which sets run there, their discrepancies).
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "calibrate.hpp"
+#include "config/study_config.hpp"
+#include "io/file_lock.hpp"
+#include "ledger.hpp"
+#include "plan/run_plan.hpp"
+#include "surrogate.hpp"
+
+namespace calibration {
+
+// What a size runs with: its profile, its ledger and the sets taken from it, the lock of its results.
+struct SizeState {
+  const pipeline::Profile* profile = nullptr;
+  std::string ledger_file;
+  Ledger ledger;
+  std::map<std::string, ScoredSet> from_ledger;  // the sets scored from the ledger, by name
+  std::unique_ptr<dem::FileLock> lock;
+};
+
+// The loop's state across iterations: the outcome so far, the draws, each size's ledger.
+struct Loop {
+  const Calibration& c;
+  const RunOptions& o;
+  pipeline::Study study;
+  Outcome out;
+  Sampler sampler;
+  std::vector<Proposal> proposals;
+  std::vector<int> drawn;
+  std::vector<Marginal> before;
+  std::vector<SizeState> at;  // parallel to out.sizes
+  std::optional<ResponseSurface> surface;  // the first size's, of the last weighing
+  std::vector<Eigen::VectorXd> larger_u;   // the posterior at the largest size, of the last weighing (empty: none yet)
+  std::vector<double> larger_w;
+  Loop(const Calibration& calibration, const RunOptions& options)
+      : c(calibration), o(options), sampler(static_cast<int>(calibration.parameters.size())) {}
+  int dimensions() const { return static_cast<int>(c.parameters.size()); }
+};
+
+// One size's plan in an iteration: the runs of every set of it still to run, with what is known of each.
+struct IterationPlan {
+  std::vector<ParameterSet> to_run;
+  std::vector<pipeline::PlannedRun> runs;
+  std::map<std::string, std::vector<std::string>> hashes;  // input hashes are of content: the same whichever sets a plan holds
+  std::vector<bool> finished;        // per run: its finished result is here
+  std::set<std::string> unfinished;  // the sets some run of which has none
+  std::set<std::string> in_ledger;   // this iteration's sets the ledger has scored
+};
+
+// Every set planned (copies joined) at a profile into a results folder, as variants of the study.
+std::vector<pipeline::PlannedRun> plan_sets(const Calibration& c, const pipeline::Study& study, const pipeline::Profile& profile,
+                                            const std::vector<ParameterSet>& sets, const std::string& out,
+                                            const std::string& engine);
+// The input hashes of the runs each set needs, sorted, by set name.
+std::map<std::string, std::vector<std::string>> run_hashes_by_set(const std::vector<pipeline::PlannedRun>& runs);
+
+// Prints what size k's plan `p` costs now and over the calibration (at most `sets_at_most` sets
+// there, `per_iteration` of them each iteration), the throughput it assumes and where that comes from.
+void print_plan(const Loop& l, std::size_t k, IterationPlan& p, int sets_at_most, int per_iteration);
+
+// Weighing (calibrate_weigh.cpp). Every set of the first size weighted again; the posterior: on a
+// response surface fitted to the sets near it (surrogate.hpp), when enough sets are scored, else
+// the sets' own weights.
+void weigh(Loop& l, int it);
+// Size k's sets for iteration `it`: chosen among the sets the size before scored, near the
+// posterior so far (discrepancy.hpp), up to its per_iteration and its budget.
+void choose_larger_sets(Loop& l, std::size_t k, int it);
+// The discrepancies from each size to the next and, once each has enough pairs, the posterior at
+// the largest size on the first size's surface plus them (the first size's alone is kept in
+// out.first_size_only).
+void weigh_larger(Loop& l);
+
+}  // namespace calibration
