@@ -10,7 +10,7 @@
 // Every mode takes --draw GNUPLOT_DIR (reports/gnuplot): its section's figures drawn in OUT_DIR
 // once its data are written (sections/draw.hpp declares them). convergence without results
 // (RESULTS_DIR has no runs.tsv) but with OUT_DIR/summary.json re-draws from that summary, and says so.
-// Each mode is a file of compare_runs/ (what it writes: modes.hpp); this one parses the arguments
+// Each mode is a file of sections/ (what it writes: modes.hpp); this one parses the arguments
 // (every sub-command answers --help) and calls it. stability, critical-state and liquefaction also
 // write OUT_DIR/stamp.json, decisions a "stamp" in decisions.json (study/stamp.hpp).
 // Exit status: 0; 1 if a stability case is not acceptable, the reference or baseline is missing,
@@ -181,14 +181,14 @@ int nothing_finished(const std::string& dir) {
 
 // 0 when the study in `dir` has a finished run; else the exit status: 1 (nothing finished), 2 (no
 // manifest). `manifest` receives it.
-int finished(const std::string& dir, compare_runs::Manifest& manifest) {
+int finished(const std::string& dir, sections::Manifest& manifest) {
   try {
-    manifest = compare_runs::read_manifest(dir);
+    manifest = sections::read_manifest(dir);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;
   }
-  return compare_runs::any_outcome(manifest, dir) ? 0 : nothing_finished(dir);
+  return sections::any_outcome(manifest, dir) ? 0 : nothing_finished(dir);
 }
 
 // The mode given, run; a mode's status with its figures drawn when its data are written (0, or 1: a
@@ -196,36 +196,36 @@ int finished(const std::string& dir, compare_runs::Manifest& manifest) {
 int run_mode(const std::string& mode, const Modes& m, const Options& o) {
   const auto drawn = [&](int status, const std::string& out) {
     if (o.draw_dir.empty() || (status != 0 && status != 1)) return status;
-    const int d = compare_runs::draw_section(mode, out, o.draw_dir);
+    const int d = sections::draw_section(mode, out, o.draw_dir);
     return status == 0 ? d : status;
   };
   if (*m.convergence && !o.convergence_summary.empty()) {
     std::filesystem::create_directories(o.convergence.results);
-    return drawn(compare_runs::convergence_from_summary(o.convergence_summary, o.convergence.results, o.reference, o.validation_json),
+    return drawn(sections::convergence_from_summary(o.convergence_summary, o.convergence.results, o.reference, o.validation_json),
                  o.convergence.results);
   }
   if (*m.liquefaction) {
     bool any = false;
-    for (const std::string& dir : o.liquefaction_folders) any = any || compare_runs::any_outcome(compare_runs::read_manifest(dir), dir);
+    for (const std::string& dir : o.liquefaction_folders) any = any || sections::any_outcome(sections::read_manifest(dir), dir);
     if (!any) return nothing_finished(validation::joined(o.liquefaction_folders, ", "));
-    return drawn(stamped(compare_runs::liquefaction(o.liquefaction_out, o.liquefaction_folders), o.liquefaction_out, o.liquefaction_folders),
+    return drawn(stamped(sections::liquefaction(o.liquefaction_out, o.liquefaction_folders), o.liquefaction_out, o.liquefaction_folders),
                  o.liquefaction_out);
   }
   if (*m.decisions && !o.from_json.empty())
-    return drawn(compare_runs::decisions_from_json(o.from_json, o.decisions.results, o.references), o.decisions.results);
+    return drawn(sections::decisions_from_json(o.from_json, o.decisions.results, o.references), o.decisions.results);
   const Folders& f = *m.convergence ? o.convergence : *m.stability ? o.stability : *m.decisions ? o.decisions : o.critical;
-  compare_runs::Manifest manifest;
+  sections::Manifest manifest;
   if (const int rc = finished(f.results, manifest)) return rc;
   std::filesystem::create_directories(f.out);
-  if (*m.convergence) return drawn(compare_runs::convergence(manifest, f.results, f.out, o.reference, o.threads_per_run, o.validation_json), f.out);
-  if (*m.stability) return stamped(compare_runs::stability(manifest, f.results, f.out, o.report_only), f.out, {f.results});
-  if (*m.decisions) return drawn(compare_runs::decisions(manifest, f.results, f.out, o.references, o.baseline, o.ensemble, o.baseline_results), f.out);
+  if (*m.convergence) return drawn(sections::convergence(manifest, f.results, f.out, o.reference, o.threads_per_run, o.validation_json), f.out);
+  if (*m.stability) return stamped(sections::stability(manifest, f.results, f.out, o.report_only), f.out, {f.results});
+  if (*m.decisions) return drawn(sections::decisions(manifest, f.results, f.out, o.references, o.baseline, o.ensemble, o.baseline_results), f.out);
   for (const std::string& dir : {o.critical_ensemble, o.critical_rates}) {
-    compare_runs::Manifest other;
+    sections::Manifest other;
     if (!dir.empty())
       if (const int rc = finished(dir, other)) return rc;
   }
-  return drawn(stamped(compare_runs::critical_state(manifest, f.results, f.out, o.critical_ensemble, o.critical_rates, o.critical_references),
+  return drawn(stamped(sections::critical_state(manifest, f.results, f.out, o.critical_ensemble, o.critical_rates, o.critical_references),
                        f.out, {f.results, o.critical_ensemble, o.critical_rates}),
                f.out);
 }
