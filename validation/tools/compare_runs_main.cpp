@@ -10,6 +10,11 @@
 // Every mode takes --draw GNUPLOT_DIR (reports/gnuplot): its section's figures drawn in OUT_DIR
 // once its data are written (sections/draw.hpp declares them). convergence without results
 // (RESULTS_DIR has no runs.tsv) but with OUT_DIR/summary.json re-draws from that summary, and says so.
+// Every mode takes --without-results keep|redraw: a study that has not run here (RESULTS_DIR has no
+// runs.tsv, or no finished run) is no error; `redraw` re-draws the section from OUT_DIR's committed
+// summary where the mode keeps one (convergence: summary.json, decisions: decisions.json, whose
+// stamps the section keeps), and otherwise, as `keep` always, OUT_DIR is left as it is. Either way
+// the tool says which source it used and exits 0 (without the option: exit 1 or 2, as below).
 // Each mode is a file of sections/ (what it writes: modes.hpp); this one parses the arguments
 // (every sub-command answers --help) and calls it. stability, critical-state and liquefaction also
 // write OUT_DIR/stamp.json, decisions a "stamp" in decisions.json (study/stamp.hpp).
@@ -18,6 +23,7 @@
 // manifest or references file.
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -48,7 +54,8 @@ struct Options {
   std::string critical_ensemble, critical_rates, critical_references;  // critical-state
   std::string liquefaction_out;
   std::vector<std::string> liquefaction_folders;
-  std::string draw_dir;  // every mode
+  std::string draw_dir;         // every mode
+  std::string without_results;  // every mode: "", "keep" or "redraw"
 };
 
 // The sub-commands, to ask which one was given.
@@ -140,9 +147,15 @@ Modes declare_modes(CLI::App& app, Options& o) {
                                       "table.md, csr_nl.dat, ru.dat, values.gp");
   m.liquefaction->add_option("OUT_DIR", o.liquefaction_out, "where the tables and the figures' data go (made if missing)")->required();
   m.liquefaction->add_option("RESULTS_DIR", o.liquefaction_folders, "the studies' results folders")->required();
-  for (CLI::App* mode : {m.convergence, m.stability, m.decisions, m.critical, m.liquefaction})
+  for (CLI::App* mode : {m.convergence, m.stability, m.decisions, m.critical, m.liquefaction}) {
     mode->add_option("--draw", o.draw_dir, "draw the section's figures in OUT_DIR with the gnuplot scripts of this folder (reports/gnuplot)")
         ->check(CLI::ExistingDirectory);
+    mode->add_option("--without-results", o.without_results,
+                     "a study not run here (RESULTS_DIR without runs.tsv or a finished run) is no error: redraw = the section "
+                     "re-drawn from OUT_DIR's committed summary (convergence: summary.json, decisions: decisions.json), else "
+                     "OUT_DIR kept; keep = OUT_DIR kept; says which, exit 0")
+        ->check(CLI::IsMember({"keep", "redraw"}));
+  }
   return m;
 }
 
@@ -189,6 +202,58 @@ int finished(const std::string& dir, sections::Manifest& manifest) {
     return 2;
   }
   return sections::any_outcome(manifest, dir) ? 0 : nothing_finished(dir);
+}
+
+// Whether `dir` holds results to draw from: a runs.tsv with a finished run (one that cannot be
+// read counts as results, so that drawing from it reports why).
+bool has_results(const std::string& dir) {
+  if (!std::filesystem::exists(std::filesystem::path(dir) / "runs.tsv")) return false;
+  try {
+    return sections::any_outcome(sections::read_manifest(dir), dir);
+  } catch (const std::exception&) {
+    return true;
+  }
+}
+
+// --without-results: where the results are not here, the committed summary the mode re-draws from
+// (set into `o`), or 0 once it has said that OUT_DIR is kept; nothing when the mode runs as asked.
+// A critical-state study's --ensemble or --rates, or a liquefaction folder, without results is
+// left out, and said so.
+std::optional<int> without_results(const std::string& mode, const Modes& m, Options& o) {
+  const auto left_out = [&](std::string& dir, const char* what) {
+    if (dir.empty() || has_results(dir)) return;
+    std::fprintf(stderr, "compare-runs %s: no results in %s yet; %s left out\n", mode.c_str(), dir.c_str(), what);
+    dir.clear();
+  };
+  std::string results, out;
+  if (*m.liquefaction) {
+    std::vector<std::string> run;
+    for (std::string dir : o.liquefaction_folders) {
+      left_out(dir, "that study");
+      if (!dir.empty()) run.push_back(dir);
+    }
+    o.liquefaction_folders = run;
+    if (!run.empty()) return std::nullopt;
+    results = "any of its folders", out = o.liquefaction_out;
+  } else {
+    if (*m.critical) left_out(o.critical_ensemble, "its --ensemble"), left_out(o.critical_rates, "its --rates");
+    Folders& f = *m.convergence ? o.convergence : *m.stability ? o.stability : *m.decisions ? o.decisions : o.critical;
+    const bool redrawn_already = (*m.convergence && !o.convergence_summary.empty()) || (*m.decisions && !o.from_json.empty());
+    if (redrawn_already || has_results(f.results)) return std::nullopt;
+    results = f.results, out = f.out;
+    const std::string summary = *m.convergence ? "summary.json" : *m.decisions ? "decisions.json" : "";
+    const std::filesystem::path committed = std::filesystem::path(out) / summary;
+    if (o.without_results == "redraw" && !summary.empty() && std::filesystem::is_regular_file(committed)) {
+      std::fprintf(stderr, "compare-runs %s: no results in %s; the section re-drawn from the committed %s (its stamp kept)\n",
+                   mode.c_str(), results.c_str(), committed.c_str());
+      (*m.convergence ? o.convergence_summary : o.from_json) = committed.string();
+      f.results = out, f.out.clear();  // as `--summary FILE OUT_DIR` / `--from-json FILE OUT_DIR` take them
+      return std::nullopt;
+    }
+  }
+  std::fprintf(stderr, "compare-runs %s: no results in %s yet (its study has not run here); %s left as it is\n", mode.c_str(),
+               results.c_str(), out.c_str());
+  return 0;
 }
 
 // The mode given, run; a mode's status with its figures drawn when its data are written (0, or 1: a
@@ -272,6 +337,8 @@ int tool_main(int argc, char** argv) {
     o.convergence.results = o.convergence.out;
   }
   try {
+    if (!o.without_results.empty())
+      if (const std::optional<int> rc = without_results(argv[1], m, o)) return *rc;
     return run_mode(argv[1], m, o);
   } catch (const std::exception& e) {  // a result that cannot be read, a folder that cannot be made
     std::fprintf(stderr, "error: %s\n", dem::describe_failure(e).c_str());
