@@ -30,17 +30,23 @@ const char* footer =
     "Paths on the command line are relative to the current folder; paths in a study file to that file.\n"
     "pipeline new MY.yaml --from paper: a study of your own, copied from a shipped one (pipeline new --help).";
 
-// `pipeline new OUT.yaml --from STUDY [--force]`: a copy of a shipped study (or of any study file)
-// whose paths resolve from OUT's folder, named after OUT's stem (config/study_copy.hpp).
+// `pipeline new OUT.yaml --from STUDY [--force] [--output DIR] [--variant YAML]...`: a copy of a
+// shipped study (or of any study file) whose paths resolve from OUT's folder, named after OUT's
+// stem, its results in DIR, with the variants given (config/study_copy.hpp).
 int new_study(int argc, char** argv) {
   namespace fs = std::filesystem;
   std::string to, from;
   bool force = false;
+  pipeline::CopyChanges changes;
   CLI::App app{"pipeline new: writes a study of your own, a copy of a shipped study (or of any study file) whose paths "
                "resolve from the new file's folder, named after the new file, with its results in results/NAME beside it"};
   app.add_option("study", to, "the new study file (.yaml)")->required();
   app.add_option("--from", from, "a shipped study's name (paper, decisions, ...) or a study file")->required();
   app.add_flag("--force", force, "replace an existing file");
+  app.add_option("--output", changes.output, "its results folder, a path from the current folder (default: results/NAME beside it)");
+  app.add_option("--variant", changes.variants,
+                 "a variant of its own, one YAML mapping (e.g. the line `calibrate variant` prints); may be given several times")
+      ->allow_extra_args(false);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -51,7 +57,7 @@ int new_study(int argc, char** argv) {
   try {
     const std::string source = pipeline::find_study(
         from, {(bin / "../share/cyclic-triax/pipeline/studies").lexically_normal().string(), PIPELINE_SOURCE_STUDIES});
-    pipeline::write_study_copy(source, to, force);
+    pipeline::write_study_copy(source, to, force, changes);
     std::printf("%s: a copy of %s (name %s); try: pipeline %s --plan\n", to.c_str(), source.c_str(),
                 fs::path(to).stem().string().c_str(), to.c_str());
     return 0;

@@ -42,7 +42,8 @@ std::size_t comment_start(const std::string& line) {
   return line.size();
 }
 
-std::string rewrite_line(const std::string& line, const fs::path& from_dir, const fs::path& to_dir, const std::string& stem) {
+std::string rewrite_line(const std::string& line, const fs::path& from_dir, const fs::path& to_dir, const std::string& stem,
+                         const std::string& output) {
   const std::size_t cut = comment_start(line);
   const std::string code = line.substr(0, cut), comment = line.substr(cut);
   if (std::regex_match(code, name_line)) return "name: " + stem + (comment.empty() ? "" : "   " + comment);
@@ -53,7 +54,7 @@ std::string rewrite_line(const std::string& line, const fs::path& from_dir, cons
     out.append(begin, m[0].first);
     std::string value = m[4].str();
     if (m[2].str() == "output") {
-      value = "results/" + stem;
+      value = output;
     } else if (!fs::path(value).is_absolute()) {
       const fs::path target = fs::absolute(from_dir / value).lexically_normal();
       value = target.lexically_relative(to_dir).generic_string();
@@ -68,19 +69,33 @@ std::string rewrite_line(const std::string& line, const fs::path& from_dir, cons
 
 }  // namespace
 
-std::string study_copy_text(const std::string& text, const std::string& from_file, const std::string& to_file) {
+std::string study_copy_text(const std::string& text, const std::string& from_file, const std::string& to_file,
+                            const CopyChanges& changes) {
   const fs::path from_dir = fs::absolute(fs::path(from_file)).lexically_normal().parent_path();
   const fs::path to_dir = fs::absolute(fs::path(to_file)).lexically_normal().parent_path();
   const std::string stem = fs::path(to_file).stem().string();
+  const std::string output = changes.output.empty() ? "results/" + stem
+                                                     : fs::absolute(changes.output).lexically_normal().lexically_relative(to_dir).generic_string();
   std::ostringstream out;
   out << "# Written by `pipeline new` from " << fs::absolute(fs::path(from_file)).lexically_normal().string()
-      << ": its paths rewritten to resolve from this file's folder, its results in results/" << stem << " beside it.\n";
+      << ": its paths rewritten to resolve from this file's folder, its results in " << output
+      << (changes.output.empty() ? " beside it" : "") << (changes.variants.empty() ? "" : ", its variants given at the end") << ".\n";
   std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) out << rewrite_line(line, from_dir, to_dir, stem) << "\n";
+  for (std::string line; std::getline(in, line);) {
+    if (!changes.variants.empty() && std::regex_search(line, std::regex(R"(^variants\s*:)")))
+      throw dem::ConfigError(from_file + ": has variants of its own; a copy with --variant adds none to them");
+    out << rewrite_line(line, from_dir, to_dir, stem, output) << "\n";
+  }
+  if (!changes.variants.empty()) out << "variants:\n";
+  for (const std::string& v : changes.variants) {
+    if (v.find_first_not_of(" \t") == std::string::npos || v.find('\n') != std::string::npos)
+      throw dem::ConfigError("--variant '" + v + "': one variant on one line, a YAML mapping such as {name: v, set: {material.friction: 0.3}}");
+    out << "  - " << v << "\n";
+  }
   return out.str();
 }
 
-void write_study_copy(const std::string& from_file, const std::string& to_file, bool force) {
+void write_study_copy(const std::string& from_file, const std::string& to_file, bool force, const CopyChanges& changes) {
   const fs::path to(to_file);
   if (to.extension() != ".yaml" && to.extension() != ".yml")
     throw dem::ConfigError(to_file + ": a study file must end in .yaml or .yml");
@@ -88,7 +103,7 @@ void write_study_copy(const std::string& from_file, const std::string& to_file, 
   if (fs::exists(to, ec) && !force) throw dem::ConfigError(to_file + ": exists; choose another name or pass --force");
   if (fs::exists(to, ec) && fs::equivalent(to, fs::path(from_file), ec))
     throw dem::ConfigError(to_file + ": is the study it would copy (" + from_file + ")");
-  const std::string copy = study_copy_text(read_text(from_file), from_file, to_file);
+  const std::string copy = study_copy_text(read_text(from_file), from_file, to_file, changes);
   std::string tmp;  // beside the copy, so that its paths resolve as the copy's will
   try {
     tmp = dem::write_temp_beside(to_file, copy);

@@ -44,20 +44,6 @@ std::string reuse_problem(const std::string& result, const std::string& hash) {
 
 bool up_to_date(const std::string& result, const std::string& hash) { return reuse_problem(result, hash).empty(); }
 
-std::optional<ResultCost> result_cost(const std::string& result) {
-  try {
-    dem::h5::Handle f = dem::h5::open_file_read(result);
-    dem::h5::Handle state = dem::h5::open_group(f, "state");
-    ResultCost c;
-    c.particle_steps = static_cast<double>(dem::h5::get_int_attribute(state, "step")) *
-                       static_cast<double>(dem::h5::shape(state, "radius").at(0));
-    if (dem::h5::has_attribute(f, "wall_time_s")) c.wall_s = dem::h5::get_double_attribute(f, "wall_time_s");
-    return c;
-  } catch (const std::exception&) {
-    return std::nullopt;
-  }
-}
-
 std::string outcome_file(const std::string& result) { return result + ".outcome"; }
 
 std::optional<Stop> read_stop(const std::string& result) {

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "io/file_lock.hpp"
+#include "plan/plan_cost.hpp"  // result_cost (the tracker and calibrate read it through here)
 #include "plan/run_plan.hpp"
 
 namespace pipeline {
@@ -46,13 +47,6 @@ std::unique_ptr<dem::FileLock> lock_folder(const std::string& dir, const std::st
 // True if `result` is a complete result whose `input_hash` attribute equals `hash`.
 bool up_to_date(const std::string& result, const std::string& hash);
 
-// What a complete result cost: particle-steps (the /state step count times the spheres) and, if
-// recorded, the run's wall time (seconds, over all its resumptions). None if it cannot be read.
-struct ResultCost {
-  double particle_steps = 0;
-  std::optional<double> wall_s;
-};
-std::optional<ResultCost> result_cost(const std::string& result);
 // Why `result` cannot be reused for `hash`: "" if it can, else "not run yet", "not a complete result
 // (status '...')", "written for other inputs" or "unreadable, truncated or corrupt (...)".
 std::string reuse_problem(const std::string& result, const std::string& hash);

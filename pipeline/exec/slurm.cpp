@@ -1,301 +1,22 @@
+// The SLURM executor (exec/slurm.hpp): submits a plan's runs as jobs and follows them to the end.
+// Its jobs (script, records, queue, adoption): exec/slurm_jobs.cpp; the commands it runs and the
+// stop signals it answers: exec/cluster_command.*.
 #include "exec/slurm.hpp"
 
-#include <poll.h>
-#include <pwd.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <cerrno>
 #include <chrono>
-#include <cmath>
-#include <csignal>
 #include <cstdio>
-#include <cstring>
-#include <ctime>
 #include <filesystem>
-#include <fstream>
 #include <set>
 #include <sstream>
 #include <thread>
 
-#include <yaml-cpp/yaml.h>
-
-#include "config/yaml_section.hpp"
+#include "exec/cluster_command.hpp"
 #include "exec/tracker.hpp"
-#include "io/atomic_file.hpp"
 
 namespace pipeline::slurm {
 
-namespace fs = std::filesystem;
-
-// ---- what a job is --------------------------------------------------------------------------------
-
-long time_limit_minutes(double cost, const SlurmOptions& o) {
-  double minutes = std::max(o.time_floor, o.time_factor * cost / o.throughput / 60);
-  if (o.time_ceiling > 0) minutes = std::min(minutes, o.time_ceiling);
-  return static_cast<long>(std::ceil(minutes));
-}
-
 namespace {
-
-std::string shell_quoted(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
-
-// sbatch expands %j, %x, ... in --output; a '%' of the path itself is written %%.
-std::string sbatch_path(const std::string& path) {
-  std::string out;
-  for (char c : path) out += c == '%' ? std::string("%%") : std::string(1, c);
-  return out;
-}
-
-}  // namespace
-
-std::string job_script(const PlannedRun& r, const std::string& dem, int threads) {
-  std::string command;
-  for (const std::string& a : dem_command(dem, r, threads)) {
-    if (!command.empty()) command += ' ';
-    command += shell_quoted(a);
-  }
-  const std::string exit = shell_quoted(exit_file(r.result)), tmp = shell_quoted(exit_file(r.result) + ".tmp.") + "$$";
-  // The exit code goes to a file because sacct, which would tell it, needs an accounting database
-  // that small clusters may not run. A requeued job starts by removing its first life's file. The
-  // file is written beside it under the shell's process id ($$), a name no other file has.
-  return "#!/bin/sh\n"
-         "# " + r.name + ": a run of the cyclic-triax pipeline (input hash " + r.hash + ")\n"
-         "rm -f " + exit + "\n" +
-         command + "\n"
-         "rc=$?\n"
-         "echo \"$SLURM_JOB_ID $rc\" > " + tmp + " && mv -f " + tmp + " " + exit + "\n"
-         "exit $rc\n";
-}
-
-std::vector<std::string> sbatch_command(const PlannedRun& r, const SlurmOptions& o, const std::string& after) {
-  std::vector<std::string> args = {"--parsable",
-                                   "--job-name=" + r.name,
-                                   "--output=" + sbatch_path(r.log),  // stderr too: the log as the local executor writes it
-                                   "--open-mode=truncate",
-                                   "--chdir=" + fs::path(r.result).parent_path().string(),
-                                   "--ntasks=1",
-                                   "--cpus-per-task=" + std::to_string(o.cpus_per_run),
-                                   "--time=" + std::to_string(time_limit_minutes(r.cost, o))};
-  if (!o.partition.empty()) args.push_back("--partition=" + o.partition);
-  if (!o.account.empty()) args.push_back("--account=" + o.account);
-  if (!after.empty()) {
-    args.push_back("--dependency=afterok:" + after);
-    // The cluster drops the job itself if its sample fails, even when no pipeline follows it.
-    args.push_back("--kill-on-invalid-dep=yes");
-  }
-  args.insert(args.end(), o.sbatch_args.begin(), o.sbatch_args.end());
-  return args;
-}
-
-// ---- the files beside a result --------------------------------------------------------------------
-
-std::string record_file(const std::string& result) { return result + ".job"; }
-std::string exit_file(const std::string& result) { return result + ".job.exit"; }
-
-std::optional<JobRecord> read_record(const std::string& result) {
-  try {
-    const YAML::Node n = dem::load_yaml(record_file(result));
-    return JobRecord{n["job_id"].as<std::string>(), n["input_hash"].as<std::string>()};
-  } catch (const std::exception&) {
-    return std::nullopt;  // missing or unreadable: no job to adopt
-  }
-}
-
-void write_record(const std::string& result, const JobRecord& record) {
-  char when[32];
-  const std::time_t now = std::time(nullptr);
-  std::strftime(when, sizeof when, "%Y-%m-%dT%H:%M:%S", std::localtime(&now));
-  // Atomic: a later pipeline never reads half a record.
-  dem::write_file_atomically(record_file(result), "job_id: \"" + record.job_id + "\"\ninput_hash: \"" + record.input_hash +
-                                                      "\"\nsubmitted: " + when + "\n");
-}
-
-std::optional<int> recorded_exit(const std::string& result, const std::string& job_id) {
-  std::ifstream in(exit_file(result));
-  std::string id;
-  int code = 0;
-  if (in >> id >> code && id == job_id) return code;
-  return std::nullopt;
-}
-
-namespace {
-void remove_job_files(const std::string& result) {
-  std::error_code ec;
-  fs::remove(record_file(result), ec);
-  fs::remove(exit_file(result), ec);
-}
-}  // namespace
-
-// ---- the queue ------------------------------------------------------------------------------------
-
-Queue parse_queue(const std::string& text) {
-  Queue queue;
-  std::istringstream in(text);
-  std::string line;
-  while (std::getline(in, line)) {
-    const auto first = line.find('|'), last = line.rfind('|');
-    if (first == std::string::npos || first == last) continue;
-    queue[line.substr(0, first)] = {line.substr(first + 1, last - first - 1), line.substr(last + 1)};
-  }
-  return queue;
-}
-
-bool active(const std::string& state) {
-  static const std::set<std::string> ended = {"COMPLETED", "FAILED",        "CANCELLED", "TIMEOUT", "NODE_FAIL",
-                                              "PREEMPTED", "OUT_OF_MEMORY", "BOOT_FAIL", "DEADLINE", "REVOKED"};
-  return !state.empty() && ended.count(state) == 0;
-}
-
-namespace {
-// Queued, not computing: waiting for resources or its dependency, or put back in the queue.
-bool waiting(const std::string& state) { return state != "RUNNING" && state != "COMPLETING"; }
-}  // namespace
-
-Adoption adoption(const PlannedRun& r, const std::optional<JobRecord>& record, const Queue& queue, bool dependency_ok,
-                  std::optional<int> exit_code) {
-  if (!record) return Adoption::Submit;
-  const auto job = queue.find(record->job_id);
-  // The job name guards against a job id that a reset cluster gave to another job.
-  const bool live = job != queue.end() && job->second.name == r.name && active(job->second.state);
-  if (live) return record->input_hash == r.hash && dependency_ok ? Adoption::Adopt : Adoption::Replace;
-  if (record->input_hash == r.hash && r.may_fail && exit_code && (*exit_code == 1 || *exit_code == 2))
-    return Adoption::Ended;
-  return Adoption::Submit;  // ended some other way: computed again, from its checkpoint if it has one
-}
-
-// ---- running the cluster's commands ---------------------------------------------------------------
-
-namespace {
-
-struct CommandResult {
-  int status = -1;  // exit code; -1 if it could not run or was killed
-  std::string out, err;
-};
-
-// Runs argv with `input` on its stdin. In a process group of its own, so that a Ctrl-C at the
-// terminal reaches the pipeline only (which then cancels its jobs) and never kills an sbatch
-// half-way, leaving a job the pipeline does not know of.
-CommandResult run_command(const std::vector<std::string>& argv, const std::string& input = "") {
-  int in[2], out[2], err[2];
-  if (pipe(in) != 0 || pipe(out) != 0 || pipe(err) != 0) throw std::runtime_error("pipe failed");
-  const pid_t pid = fork();
-  if (pid < 0) throw std::runtime_error("fork failed");
-  if (pid == 0) {
-    setpgid(0, 0);
-    dup2(in[0], STDIN_FILENO);
-    dup2(out[1], STDOUT_FILENO);
-    dup2(err[1], STDERR_FILENO);
-    for (int fd : {in[0], in[1], out[0], out[1], err[0], err[1]}) close(fd);
-    std::vector<char*> args;
-    for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-    args.push_back(nullptr);
-    execvp(args[0], args.data());
-    std::fprintf(stderr, "cannot run %s: %s\n", argv[0].c_str(), std::strerror(errno));
-    _exit(127);
-  }
-  close(in[0]);
-  close(out[1]);
-  close(err[1]);
-  // The input is a batch script of a few hundred bytes: it fits the pipe, no need to interleave.
-  for (std::size_t done = 0; done < input.size();) {
-    const ssize_t n = write(in[1], input.data() + done, input.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;  // the command exited without reading it (SIGPIPE is ignored meanwhile)
-    done += static_cast<std::size_t>(n);
-  }
-  close(in[1]);
-  CommandResult result;
-  pollfd fds[2] = {{out[0], POLLIN, 0}, {err[0], POLLIN, 0}};
-  std::string* sinks[2] = {&result.out, &result.err};
-  for (int open_fds = 2; open_fds > 0;) {
-    if (poll(fds, 2, -1) < 0) {
-      if (errno == EINTR) continue;  // a signal for the pipeline: finish reading all the same
-      break;
-    }
-    for (int k = 0; k < 2; ++k) {
-      if (fds[k].fd < 0 || fds[k].revents == 0) continue;
-      char buf[4096];
-      const ssize_t n = read(fds[k].fd, buf, sizeof buf);
-      if (n > 0) {
-        sinks[k]->append(buf, static_cast<std::size_t>(n));
-      } else if (n == 0 || errno != EINTR) {
-        close(fds[k].fd);
-        fds[k].fd = -1;
-        --open_fds;
-      }
-    }
-  }
-  for (const pollfd& f : fds)
-    if (f.fd >= 0) close(f.fd);
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
-  result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
-
-std::string trimmed(std::string s) {
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.pop_back();
-  return s;
-}
-
-bool on_path(const std::string& command) {
-  if (command.find('/') != std::string::npos) return access(command.c_str(), X_OK) == 0;
-  const char* path = std::getenv("PATH");
-  std::istringstream dirs(path ? path : "");
-  std::string dir;
-  while (std::getline(dirs, dir, ':'))
-    if (!dir.empty() && access((fs::path(dir) / command).c_str(), X_OK) == 0) return true;
-  return false;
-}
-
-std::string user_name() {
-  const passwd* pw = getpwuid(geteuid());
-  return pw ? pw->pw_name : std::to_string(geteuid());
-}
-
-// The signal that asked the pipeline to stop (SIGINT, SIGTERM, SIGHUP), or 0.
-volatile std::sig_atomic_t stop_signal = 0;
-void on_stop_signal(int sig) { stop_signal = sig; }
-
-// Installs the stop handlers for the executor's lifetime (without SA_RESTART, so that a sleep
-// ends at once), and ignores SIGPIPE from a command that exits before reading its script.
-class SignalGuard {
- public:
-  SignalGuard() {
-    stop_signal = 0;
-    struct sigaction sa {};
-    sa.sa_handler = on_stop_signal;
-    sigemptyset(&sa.sa_mask);
-    for (std::size_t k = 0; k < 3; ++k) sigaction(signals_[k], &sa, &old_[k]);
-    struct sigaction ignore {};
-    ignore.sa_handler = SIG_IGN;
-    sigaction(SIGPIPE, &ignore, &old_[3]);
-  }
-  ~SignalGuard() {
-    for (std::size_t k = 0; k < 3; ++k) sigaction(signals_[k], &old_[k], nullptr);
-    sigaction(SIGPIPE, &old_[3], nullptr);
-  }
-  SignalGuard(const SignalGuard&) = delete;
-  SignalGuard& operator=(const SignalGuard&) = delete;
-
- private:
-  const int signals_[3] = {SIGINT, SIGTERM, SIGHUP};
-  struct sigaction old_[4];
-};
-
-// Sleeps `seconds`, or less if a stop signal comes.
-void nap(double seconds) {
-  const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-  while (!stop_signal && std::chrono::steady_clock::now() < until)
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
-}
 
 // ---- the executor ---------------------------------------------------------------------------------
 
@@ -315,7 +36,7 @@ class Executor {
     submit_first();
     follow();
     Outcome out = tracker_.outcome();
-    if (stop_signal) {
+    if (stop_signal()) {
       cancel_all();
       out.interrupted = true;
     }
@@ -421,11 +142,11 @@ class Executor {
   // Submits every run that can be: its sample done, or in the queue as a job it can wait for.
   // A copy's tests wait until the pipeline has made the copy.
   void submit_ready(bool throw_on_failure) {
-    for (bool more = true; more && !stop_signal;) {
+    for (bool more = true; more && !stop_signal();) {
       more = false;
       tracker_.settle();
       for (std::size_t i : tracker_.order()) {
-        if (!to_submit(i) || stop_signal) continue;
+        if (!to_submit(i) || stop_signal()) continue;
         const int dep = runs_[i].depends_on;
         std::string after;
         if (dep >= 0 && tracker_.state(static_cast<std::size_t>(dep)) != RunState::Done) {
@@ -476,9 +197,9 @@ class Executor {
     grace_s_ = std::max(30.0, 3 * poll);
     int workers = 1;
     bool squeue_failing = false;
-    while (tracker_.busy() && !stop_signal) {
+    while (tracker_.busy() && !stop_signal()) {
       nap(poll);
-      if (stop_signal) break;
+      if (stop_signal()) break;
       try {
         queue_ = look_at_queue();
         squeue_failing = false;
@@ -618,7 +339,7 @@ class Executor {
       }
     std::printf("[pipeline] stopped by signal %d: cancelling %zu job%s; started again, the pipeline submits them again "
                 "and each run resumes from its checkpoint\n",
-                static_cast<int>(stop_signal), ids.size(), ids.size() == 1 ? "" : "s");
+                static_cast<int>(stop_signal()), ids.size(), ids.size() == 1 ? "" : "s");
     std::fflush(stdout);
     cancel_and_wait(ids);
   }

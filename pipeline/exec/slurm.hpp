@@ -48,6 +48,7 @@ std::string record_file(const std::string& result);  // <result>.job
 std::string exit_file(const std::string& result);    // <result>.job.exit
 std::optional<JobRecord> read_record(const std::string& result);
 void write_record(const std::string& result, const JobRecord& record);  // atomically
+void remove_job_files(const std::string& result);  // both files, once the run is judged
 // The exit code that job `job_id`'s script wrote for `result`, if it wrote one.
 std::optional<int> recorded_exit(const std::string& result, const std::string& job_id);
 
@@ -60,6 +61,8 @@ Queue parse_queue(const std::string& squeue_output);
 // True for a job that is queued, running or finishing (PENDING, RUNNING, COMPLETING, REQUEUED, ...),
 // false for one that ended (COMPLETED, FAILED, CANCELLED, TIMEOUT, ...).
 bool active(const std::string& state);
+// Queued, not computing: waiting for resources or its dependency, or put back in the queue.
+bool waiting(const std::string& state);
 
 // What a starting pipeline does with a run that is not reused, given its job record (if any), the
 // queue, whether its dependency is done or has a job of its own in the queue, and the exit code

@@ -8,9 +8,23 @@
 #include <string>
 #include <limits>
 
-#include "exec/scheduler.hpp"  // result_cost
+#include "io/hdf5.hpp"
 
 namespace pipeline {
+
+std::optional<ResultCost> result_cost(const std::string& result) {
+  try {
+    dem::h5::Handle f = dem::h5::open_file_read(result);
+    dem::h5::Handle state = dem::h5::open_group(f, "state");
+    ResultCost c;
+    c.particle_steps = static_cast<double>(dem::h5::get_int_attribute(state, "step")) *
+                       static_cast<double>(dem::h5::shape(state, "radius").at(0));
+    if (dem::h5::has_attribute(f, "wall_time_s")) c.wall_s = dem::h5::get_double_attribute(f, "wall_time_s");
+    return c;
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
 
 std::optional<double> use_recorded_costs(std::vector<PlannedRun>& runs) {
   struct Family {

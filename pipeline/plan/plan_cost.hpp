@@ -3,6 +3,7 @@
 // critical path (the longest chain of runs, each starting from the one before it) and the wall
 // time on a number of cores, each run on one core at a given throughput.
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "plan/run_plan.hpp"
@@ -14,6 +15,14 @@ namespace pipeline {
 // (reports/bench.md, 8,000 spheres, mu = 0.5, dt = 1 us): 3.53e7 for one run on one thread, 3.49e7
 // each for two runs at once. Output rows and the preparations' gas phase are not in it.
 inline constexpr double default_throughput = 3.5e7;
+
+// What a complete result cost: particle-steps (the /state step count times the spheres) and, if
+// recorded, the run's wall time (seconds, over all its resumptions). None if it cannot be read.
+struct ResultCost {
+  double particle_steps = 0;
+  std::optional<double> wall_s;
+};
+std::optional<ResultCost> result_cost(const std::string& result);
 
 // Costs from finished runs. A run whose result is there (for these or for earlier inputs) is planned
 // at the particle-steps it recorded (cost_basis "recorded"); one without, at the steps per run its

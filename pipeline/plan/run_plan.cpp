@@ -228,6 +228,54 @@ double particles_of(const dem::SceneConfig& scene) {
   return static_cast<double>(p.size());
 }
 
+// An ensemble: every run once per seed, in <out_dir>/seed<N>/, on that seed's own sample.
+struct Sample {
+  std::optional<std::int64_t> seed;
+  std::string folder;  // "" or "seed<N>/"
+};
+
+// The profile's seeds, then those only some variants run (a variant's own seeds replace the
+// profile's); one sample without a seed when there are none.
+std::vector<Sample> ensemble_samples(const Study& study, const Profile& profile, const std::vector<Variant>& variants) {
+  std::vector<Sample> samples;
+  std::vector<std::int64_t> seeds = profile.seeds;
+  for (const Variant& v : variants)
+    for (const std::int64_t s : v.seeds)
+      if (std::find(seeds.begin(), seeds.end(), s) == seeds.end()) seeds.push_back(s);
+  for (const Variant& v : variants)
+    if (!v.seeds.empty() && profile.seeds.empty())
+      throw dem::ConfigError(study.file + ": variants (" + v.name + "): seeds: the profile " + profile.name +
+                             " runs the template's one sample (no seeds), so there are no samples for a variant's own to replace");
+  for (const std::int64_t s : seeds) samples.push_back({s, "seed" + std::to_string(s) + "/"});
+  if (samples.empty()) samples.push_back({});
+  return samples;
+}
+
+// A test's scene as the study runs it: its name, the preparation's result it starts from, then the
+// test's, the variant's and the variant's per-test and per-density overrides, the shearing
+// friction if the variant takes the preparation's, and the profile's caps on repeats and cycles.
+void apply_test_overrides(YAML::Node& ts, const TestCase& t, const Variant& v, const Density& d, const Profile& profile,
+                          const std::string& name, const std::string& start_from) {
+  dem::apply_override(ts, t.scene, "name", name);
+  dem::apply_override(ts, t.scene, "particles", "{state: " + fs::absolute(start_from).string() + "}");
+  for (const auto& [key, value] : t.set) dem::apply_override(ts, t.scene, key, value);
+  for (const auto& [key, value] : v.set) dem::apply_override(ts, t.scene, key, value);
+  for (const auto& [key, value] : v.test) dem::apply_override(ts, t.scene, key, value);
+  for (const auto& [test, overrides] : v.per_test)
+    if (test == t.name)
+      for (const auto& [key, value] : overrides) dem::apply_override(ts, t.scene, key, value);
+  for (const auto& [density, overrides] : v.per_density)
+    if (density == d.name)
+      for (const auto& [key, value] : overrides) dem::apply_override(ts, t.scene, key, value);
+  if (v.shear_with_preparation_friction) {
+    std::ostringstream mu;
+    mu << d.friction;
+    dem::apply_override(ts, t.scene, "material.friction", mu.str());
+  }
+  cap_repeats(ts, profile.max_repeat);
+  cap_cycles(ts, profile.cycles);
+}
+
 }  // namespace
 
 std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, const std::string& out_dir,
@@ -241,23 +289,7 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
   const bool named = !study.variants.empty();
   std::map<std::string, int> preparations;  // resolved preparation (without its name) -> run index
   std::map<int, double> particles;          // preparation run index -> its number of spheres
-  // An ensemble: every run once per seed, in <out_dir>/seed<N>/, on that seed's own sample.
-  struct Sample {
-    std::optional<std::int64_t> seed;
-    std::string folder;  // "" or "seed<N>/"
-  };
-  std::vector<Sample> samples;
-  // The profile's seeds, then those only some variants run (a variant's own seeds replace the profile's).
-  std::vector<std::int64_t> seeds = profile.seeds;
-  for (const Variant& v : variants)
-    for (const std::int64_t s : v.seeds)
-      if (std::find(seeds.begin(), seeds.end(), s) == seeds.end()) seeds.push_back(s);
-  for (const Variant& v : variants)
-    if (!v.seeds.empty() && profile.seeds.empty())
-      throw dem::ConfigError(study.file + ": variants (" + v.name + "): seeds: the profile " + profile.name +
-                             " runs the template's one sample (no seeds), so there are no samples for a variant's own to replace");
-  for (const std::int64_t s : seeds) samples.push_back({s, "seed" + std::to_string(s) + "/"});
-  if (samples.empty()) samples.push_back({});
+  const std::vector<Sample> samples = ensemble_samples(study, profile, variants);
   const auto runs_on = [&](const Variant& v, const Sample& sample) {
     const std::vector<std::int64_t>& own = v.seeds.empty() ? profile.seeds : v.seeds;
     return !sample.seed || std::find(own.begin(), own.end(), *sample.seed) != own.end();
@@ -367,24 +399,7 @@ std::vector<PlannedRun> plan_study(const Study& study, const Profile& profile, c
         paths(run);
         YAML::Node ts = dem::load_yaml(t.scene);
         in_context(test_where, [&] {
-          dem::apply_override(ts, t.scene, "name", run.name);
-          dem::apply_override(ts, t.scene, "particles", "{state: " + fs::absolute(from.result).string() + "}");
-          for (const auto& [key, value] : t.set) dem::apply_override(ts, t.scene, key, value);
-          for (const auto& [key, value] : v.set) dem::apply_override(ts, t.scene, key, value);
-          for (const auto& [key, value] : v.test) dem::apply_override(ts, t.scene, key, value);
-          for (const auto& [test, overrides] : v.per_test)
-            if (test == t.name)
-              for (const auto& [key, value] : overrides) dem::apply_override(ts, t.scene, key, value);
-          for (const auto& [density, overrides] : v.per_density)
-            if (density == d.name)
-              for (const auto& [key, value] : overrides) dem::apply_override(ts, t.scene, key, value);
-          if (v.shear_with_preparation_friction) {
-            std::ostringstream mu;
-            mu << d.friction;
-            dem::apply_override(ts, t.scene, "material.friction", mu.str());
-          }
-          cap_repeats(ts, profile.max_repeat);
-          cap_cycles(ts, profile.cycles);
+          apply_test_overrides(ts, t, v, d, profile, run.name, from.result);
           if (v.time_step_fraction) {  // the test's spheres are the sample's; its kn may differ
             const dem::SceneConfig parsed = dem::scene_from_text(emit(ts, header), run.scene_file);
             const double dt = *v.time_step_fraction * dem::critical_time_step(parsed.material.law, sample, parsed.material.density_kg_per_m3);

@@ -162,3 +162,35 @@ TEST_CASE("profiles: cycles and max_repeat together are refused, naming the key"
   CHECK_THROWS_WITH(pipeline::load_study(copy), Catch::Matchers::Contains("profiles.quick.cycles") &&
                                                 Catch::Matchers::Contains("not both"));
 }
+
+TEST_CASE("pipeline new --output --variant: a study of one variant with its results elsewhere", "[pipeline][new]") {
+  // What make open-choices-check writes: calibration_paper.yaml with a calibration's best set as
+  // its one variant, its results in a folder named from the current folder.
+  const std::string from = std::string(DEM_SOURCE_DIR) + "/pipeline/studies/calibration_paper.yaml";
+  const fs::path dir = dem::test::scratch_dir("study_copy_variant");
+  const std::string to = (dir / "studies" / "best.yaml").string();
+  fs::create_directories(dir / "studies");
+  pipeline::CopyChanges changes;
+  changes.output = (dir / "results" / "best").string();
+  changes.variants = {"{name: best, set: {material.friction: 0.3}}"};
+  pipeline::write_study_copy(from, to, false, changes);
+  const pipeline::Study copy = pipeline::load_study(to);
+  CHECK(copy.name == "best");
+  CHECK(copy.output == (dir / "results" / "best").lexically_normal().string());
+  REQUIRE(copy.variants.size() == 1);
+  CHECK(copy.variants[0].name == "best");
+  CHECK(copy.preparation == pipeline::load_study(from).preparation);
+  const std::string text = dem::test::read_bytes(to);
+  CHECK(text.find("\noutput: ../results/best\n") != std::string::npos);  // written relative to the copy
+  SECTION("a study with variants of its own is refused, naming it") {
+    const std::string stability = std::string(DEM_SOURCE_DIR) + "/pipeline/studies/stability.yaml";
+    CHECK_THROWS_WITH(pipeline::write_study_copy(stability, to, true, changes), Catch::Matchers::Contains("stability.yaml: has variants of its own"));
+    CHECK(pipeline::load_study(to).name == "best");  // the earlier copy stays
+  }
+  SECTION("an empty or multi-line variant is refused, naming --variant") {
+    changes.variants = {" "};
+    CHECK_THROWS_WITH(pipeline::write_study_copy(from, to, true, changes), Catch::Matchers::Contains("--variant"));
+    changes.variants = {"{name: a}\nname: b"};
+    CHECK_THROWS_WITH(pipeline::write_study_copy(from, to, true, changes), Catch::Matchers::Contains("one variant on one line"));
+  }
+}

@@ -133,8 +133,8 @@ Table qp_against_fabric(const Columns& series, const std::string& which, int max
 const std::vector<CycleQuantity>& cycle_quantities() {
   // The sliding fraction has no cycle 0: the first row's sliding flags come from the saved sample
   // (its preparation friction), not from a step with the shearing friction.
-  static const std::vector<CycleQuantity> q = {{"epsv_percent", "volumetric_strain", "%", 100, true},
-                                               {"coordination", "coordination_number", "1", 1, true},
+  static const std::vector<CycleQuantity> q = {{"epsv_percent", col::volumetric_strain, "%", 100, true},
+                                               {"coordination", col::coordination_number, "1", 1, true},
                                                {"sliding_percent", "sliding_fraction", "%", 100, false}};
   return q;
 }
@@ -320,7 +320,7 @@ EnergyCurves energy_curves(const Columns& series) {
     const auto it = series.find(name);
     return it == series.end() ? none : it->second;
   };
-  const auto& t = col("time");
+  const auto& t = col(validation::col::time);
   const auto& w = col("work_by_cell");
   const auto& dd = col("dissipated_by_damping");
   const auto& df = col("dissipated_by_friction");

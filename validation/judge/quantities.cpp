@@ -264,7 +264,7 @@ namespace {
 std::string cyclic_tests(const DensityResults& r) {
   std::string out;
   for (const TestResult& t : r.tests) {
-    const auto c = t.series.find("cycle");
+    const auto c = t.series.find(col::cycle);
     if (c == t.series.end() || c->second.empty()) continue;
     const double cycles = *std::max_element(c->second.begin(), c->second.end());
     if (cycles >= 1) out += (out.empty() ? "" : ", ") + t.name + " (" + number(cycles) + " cycle" + (cycles == 1 ? "" : "s") + ")";

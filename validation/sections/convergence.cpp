@@ -37,7 +37,7 @@ using validation::PerSeed;
 using validation::budget_number;
 using validation::factors_of;
 
-namespace compare_runs {
+namespace sections {
 namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
@@ -234,6 +234,29 @@ std::string settings_text(const Setting& s) {
   return buf;
 }
 
+// The section's first line: what the study is and what it cost. A preparation several settings
+// share ran once: counted once where the runs record its part.
+std::string study_line(const ConvergenceSummary& s, std::size_t densities) {
+  double core_s = 0, shared_s = 0;
+  std::set<std::string> preparations;
+  for (const ConvergenceRun& r : s.runs) {
+    core_s += r.core_s;
+    char key[160];
+    std::snprintf(key, sizeof key, "%s/%d/%ld/%.6g", r.density.c_str(), r.seed, r.spheres, r.preparation_time_step_s);
+    if (std::isfinite(r.preparation_core_s) && !preparations.insert(key).second) shared_s += r.preparation_core_s;
+  }
+  std::ostringstream md;
+  std::set<std::string> variants;
+  for (const ConvergenceRun& r : s.runs) variants.insert(r.variant);
+  md << "Study: " << s.runs.size() << " samples (a preparation and a test each) of " << variants.size() << " settings at "
+     << densities << " densities, engine `" << s.engine
+     << "`, baseline `" << s.baseline << "`, summarised " << s.date << " from `" << s.results << "`; "
+     << std::lround(core_s / 60) << " core-minutes summed over the settings' samples (a preparation several settings share counted with "
+        "each; " << s.threads << " thread per run), " << std::lround((core_s - shared_s) / 60)
+     << " with each shared preparation counted once where its runs record it.\n";
+  return md.str();
+}
+
 int write_section(const ConvergenceSummary& s, const std::string& out, const std::string& reference, const std::string& validation_json) {
   std::vector<std::string> densities;
   std::map<std::string, Runs> by_density;
@@ -250,24 +273,8 @@ int write_section(const ConvergenceSummary& s, const std::string& out, const std
     }
     all.push_back(analyse(d, runs, reference));
   }
-  // A preparation several settings share ran once: counted once where the runs record its part.
-  double core_s = 0, shared_s = 0;
-  std::set<std::string> preparations;
-  for (const ConvergenceRun& r : s.runs) {
-    core_s += r.core_s;
-    char key[160];
-    std::snprintf(key, sizeof key, "%s/%d/%ld/%.6g", r.density.c_str(), r.seed, r.spheres, r.preparation_time_step_s);
-    if (std::isfinite(r.preparation_core_s) && !preparations.insert(key).second) shared_s += r.preparation_core_s;
-  }
   std::ostringstream md;
-  std::set<std::string> variants;
-  for (const ConvergenceRun& r : s.runs) variants.insert(r.variant);
-  md << "Study: " << s.runs.size() << " samples (a preparation and a test each) of " << variants.size() << " settings at "
-     << densities.size() << " densities, engine `" << s.engine
-     << "`, baseline `" << s.baseline << "`, summarised " << s.date << " from `" << s.results << "`; "
-     << std::lround(core_s / 60) << " core-minutes summed over the settings' samples (a preparation several settings share counted with "
-        "each; " << s.threads << " thread per run), " << std::lround((core_s - shared_s) / 60)
-     << " with each shared preparation counted once where its runs record it.\n";
+  md << study_line(s, densities.size());
   std::string errors_dat = "# density\tvariant\tcore_s\tlargest_relative_error\thalf_width\tpareto\tquantity\n", front_dat = errors_dat;
   for (const DensityBudget& d : all) {
     const Runs& runs = by_density.at(d.density);
@@ -418,4 +425,4 @@ int convergence_from_summary(const std::string& file, const std::string& out, co
   return write_section(validation::read_convergence_summary(file), out, reference, validation_json);
 }
 
-}  // namespace compare_runs
+}  // namespace sections

@@ -72,7 +72,7 @@ void set_size(ConvergenceSummary& s) {
 
 }  // namespace
 
-ConvergenceSummary summarise_convergence(const compare_runs::Manifest& manifest, const std::string& results, int threads) {
+ConvergenceSummary summarise_convergence(const sections::Manifest& manifest, const std::string& results, int threads) {
   ConvergenceSummary s;
   s.results = shown_path(results);
   s.date = today();
@@ -93,15 +93,15 @@ ConvergenceSummary summarise_convergence(const compare_runs::Manifest& manifest,
         const std::string file = result_under(results, l);
         if (!is_complete(file)) {
           validation::CaseRun stop;
-          compare_runs::read_stop(file, stop);
+          sections::read_stop(file, stop);
           if (r.status.empty()) r.status = l.run + (stop.exit_code ? ": " + stop.message : " not complete");
           continue;
         }
-        const double w = compare_runs::wall_time(file);
+        const double w = sections::wall_time(file);
         wall += w;
         if (l.test == "-") r.preparation_core_s = w * threads;
         r.engine = string_attribute(file, "software_version");
-        const compare_runs::RunFile run = compare_runs::read_run(file);
+        const sections::RunFile run = sections::read_run(file);
         if (l.test == "-") {
           DensityResults d;
           load_preparation(file, d);

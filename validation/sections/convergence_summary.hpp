@@ -41,7 +41,7 @@ struct ConvergenceSummary {
 };
 
 // From the pipeline's results (manifest.by_variant); threads: what each run used.
-ConvergenceSummary summarise_convergence(const compare_runs::Manifest& manifest, const std::string& results, int threads);
+ConvergenceSummary summarise_convergence(const sections::Manifest& manifest, const std::string& results, int threads);
 
 // `now` with the complete runs of `before` (an earlier summary, e.g. the committed one) that `now`
 // lacks or has incomplete: a study whose settings ran in several sessions (results do not outlive

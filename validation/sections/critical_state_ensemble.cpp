@@ -24,7 +24,7 @@
 
 namespace fs = std::filesystem;
 
-namespace compare_runs {
+namespace sections {
 
 using validation::fixed;
 using validation::number;
@@ -139,4 +139,4 @@ std::string ensemble_section(const std::vector<EnsembleGroup>& groups, const std
   return md.str();
 }
 
-}  // namespace compare_runs
+}  // namespace sections

@@ -15,7 +15,7 @@
 #include "study/line_fit.hpp"
 #include "study/series.hpp"
 
-namespace compare_runs {
+namespace sections {
 
 // One run of the critical-state study, as its name says: compression_mu<μ>, extension_mu<μ>, b<b>
 // (or the rates study's rate<rate>_mu<μ>, a compression).
@@ -80,4 +80,4 @@ validation::Table rates_quasi_static_data(const std::vector<RateSeries>& series)
 
 std::string rates_section(const std::vector<RateSeries>& series, const std::string& folder, const std::vector<validation::Row>& rows);
 
-}  // namespace compare_runs
+}  // namespace sections

@@ -25,7 +25,7 @@
 
 namespace fs = std::filesystem;
 
-namespace compare_runs {
+namespace sections {
 
 using validation::fixed;
 using validation::number;
@@ -246,4 +246,4 @@ std::string rates_section(const std::vector<RateSeries>& series, const std::stri
   return md.str();
 }
 
-}  // namespace compare_runs
+}  // namespace sections

@@ -30,7 +30,7 @@
 
 namespace fs = std::filesystem;
 
-namespace compare_runs {
+namespace sections {
 namespace {
 
 using validation::cell;
@@ -281,4 +281,4 @@ int critical_state(const Manifest& manifest, const std::string& results, const s
   std::printf("critical-state: %zu of %zu runs finished -> %s\n", finished, runs.size(), (fs::path(out) / "table.md").c_str());
   return 0;
 }
-}  // namespace compare_runs
+}  // namespace sections

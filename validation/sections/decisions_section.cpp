@@ -32,7 +32,7 @@
 
 namespace fs = std::filesystem;
 
-namespace compare_runs {
+namespace sections {
 namespace {
 
 using validation::number;
@@ -489,4 +489,4 @@ int decisions_from_json(const std::string& file, const std::string& out, const s
   return 0;
 }
 
-}  // namespace compare_runs
+}  // namespace sections

@@ -8,7 +8,7 @@
 
 namespace fs = std::filesystem;
 
-namespace compare_runs {
+namespace sections {
 
 const std::vector<SectionFigure>& section_figures(const std::string& mode) {
   static const std::map<std::string, std::vector<SectionFigure>> figures = {
@@ -73,4 +73,4 @@ int draw_section(const std::string& mode, const std::string& out, const std::str
   return 0;
 }
 
-}  // namespace compare_runs
+}  // namespace sections

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace compare_runs {
+namespace sections {
 
 struct SectionFigure {
   std::string script;  // reports/gnuplot/<script>.gp
@@ -23,4 +23,4 @@ const std::vector<SectionFigure>& section_figures(const std::string& mode);
 // is not there or a script fails (the message names the script and the folder).
 int draw_section(const std::string& mode, const std::string& out, const std::string& gnuplot_dir);
 
-}  // namespace compare_runs
+}  // namespace sections

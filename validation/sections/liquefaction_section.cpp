@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "sections/modes.hpp"
+#include "study/columns.hpp"
 #include "study/series.hpp"
 #include "study/format.hpp"
 #include "io/atomic_file.hpp"
@@ -23,7 +24,7 @@
 
 namespace fs = std::filesystem;
 
-namespace compare_runs {
+namespace sections {
 namespace {
 
 using validation::fixed;
@@ -137,7 +138,7 @@ std::string collapse_notes(const std::vector<CyclicRun>& runs) {
       }
       ++earlier;
       low = std::min(low, r.control.cycles), high = std::max(high, r.control.cycles);
-      hold_ru = std::max(hold_ru, validation::value_since_start(h.series, h.stage, "pore_pressure_ratio", test_s));
+      hold_ru = std::max(hold_ru, validation::value_since_start(h.series, h.stage, validation::col::pore_pressure_ratio, test_s));
     }
     notes += "\n⚠ " + h.run + " reached r_u ≥ " + number(h.ru_limit) + " with nothing applied after " + fixed(hold_s, 4) + " s (" +
              fixed(h.control.cycles, 2) + " cycles of " + number(h.period_s) + " s): its sample collapses at constant volume on its own, "
@@ -243,7 +244,7 @@ std::string liquefaction_table(const std::vector<CyclicRun>& runs, const std::ve
     const bool agrees = std::abs(csr - r.csr_name) <= agree_within * r.csr_name;
     std::string at_hold = "—";
     if (const CyclicRun* h = hold_of(runs, r.density, r.seed)) {
-      const double ru = validation::value_since_start(h->series, h->stage, "pore_pressure_ratio", r.control.end_time_s - r.control.start_time_s);
+      const double ru = validation::value_since_start(h->series, h->stage, validation::col::pore_pressure_ratio, r.control.end_time_s - r.control.start_time_s);
       at_hold = std::isfinite(ru) ? fixed(ru, 3) : "— (the hold lasted " + fixed(h->control.end_time_s - h->control.start_time_s, 3) + " s)";
     }
     const bool censored = validation::stop_criterion(r.stage_end).empty();
@@ -371,4 +372,4 @@ int liquefaction(const std::string& out, const std::vector<std::string>& folders
   std::printf("liquefaction: %zu of %zu runs finished -> %s\n", finished, runs.size(), (fs::path(out) / "table.md").c_str());
   return 0;
 }
-}  // namespace compare_runs
+}  // namespace sections

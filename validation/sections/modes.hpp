@@ -1,5 +1,5 @@
 #pragma once
-// The modes of compare-runs, one file each (compare_runs/<mode>.cpp); main.cpp parses the
+// The modes of compare-runs, one file each (sections/<mode>.cpp); tools/compare_runs_main.cpp parses the
 // arguments and calls one. Each returns the process's exit status: 0; 1 when the mode's judgement
 // fails (a stability case not acceptable, the reference or baseline missing) or its output cannot
 // be written; 2 on bad input (an unreadable manifest or references file).
@@ -8,7 +8,7 @@
 
 #include "sections/study_folder.hpp"
 
-namespace compare_runs {
+namespace sections {
 
 // The error budget of `reference`'s settings (sections/convergence.cpp): OUT/summary.json (every
 // run's settings, cost and quantities, stamped; threads: per run; an OUT/summary.json already there
@@ -61,4 +61,4 @@ int critical_state(const Manifest& manifest, const std::string& results, const s
 // beside them: OUT/table.md, csr_nl.dat, ru.dat and values.gp.
 int liquefaction(const std::string& out, const std::vector<std::string>& folders);
 
-}  // namespace compare_runs
+}  // namespace sections

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <string>
 
-namespace compare_runs {
+namespace sections {
 
 // "1.23 %", below 0.1 % to two significant digits ("0.0042 %"); "—" for a value that is not there.
 inline std::string percent(double e) {
@@ -14,4 +14,4 @@ inline std::string percent(double e) {
   return buf;
 }
 
-}  // namespace compare_runs
+}  // namespace sections

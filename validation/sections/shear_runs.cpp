@@ -24,7 +24,7 @@
 
 namespace fs = std::filesystem;
 
-namespace compare_runs {
+namespace sections {
 
 using validation::fixed;
 using validation::number;
@@ -138,4 +138,4 @@ std::vector<ShearRun> shear_runs(const Manifest& manifest, const std::string& re
   return runs;
 }
 
-}  // namespace compare_runs
+}  // namespace sections

@@ -12,7 +12,7 @@
 
 namespace fs = std::filesystem;
 
-namespace compare_runs {
+namespace sections {
 
 namespace {
 // The largest value of a time-series column over the run, to 3 significant digits; "—" if the
@@ -69,4 +69,4 @@ int stability(const Manifest& manifest, const std::string& results, const std::s
   return bad > 0 && !report_only ? 1 : 0;
 }
 
-}  // namespace compare_runs
+}  // namespace sections

@@ -12,7 +12,7 @@
 
 namespace fs = std::filesystem;
 
-namespace compare_runs {
+namespace sections {
 
 Manifest read_manifest(const std::string& dir) {
   Manifest m;
@@ -77,4 +77,4 @@ std::string relative_paths(std::string s, const std::string& results) {
   return s;
 }
 
-}  // namespace compare_runs
+}  // namespace sections

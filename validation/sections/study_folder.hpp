@@ -12,9 +12,9 @@
 #include "config/scene_config.hpp"
 #include "study/results.hpp"
 
-namespace compare_runs {
+namespace sections {
 
-// One line of runs.tsv (validation/manifest.hpp).
+// One line of runs.tsv (validation/study/manifest.hpp).
 using validation::ManifestLine;
 
 // The manifest, and its runs grouped by variant in the order of the study.
@@ -55,4 +55,4 @@ RunFile read_run(const std::string& result);
 // ran in (the folder above `results`' `results/`) before its paths.
 std::string relative_paths(std::string s, const std::string& results = "");
 
-}  // namespace compare_runs
+}  // namespace sections

@@ -1,8 +1,10 @@
 #pragma once
-// The names of the result columns the tools read, each written once here. They are the engine's
-// own: tests/validation/study/columns_test.cpp checks every one against the engine's column tables
-// (analysis/time_series.cpp: /timeseries, analysis/legs.cpp: /legs), so a renamed column fails a
-// test instead of reading nothing.
+// The names of the result columns that several tools and sections read, each written once here.
+// They are the engine's own: tests/validation/study/columns_test.cpp checks every one against the
+// engine's column tables (analysis/time_series.cpp: /timeseries, analysis/legs.cpp: /legs), so a
+// renamed column fails a test instead of reading nothing. A column only one function reads (the
+// energy terms of the energy figure, stage and strain_3 of the critical state's summary) is named
+// there, where a rename shows as a missing column in its own test.
 #include <array>
 
 namespace validation::col {

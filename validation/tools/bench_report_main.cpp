@@ -7,7 +7,7 @@
 //                [--sizes "8000 64000 ..."] [--size-plan TEXT] [--cores N] [--cpu TEXT]
 //                [--load-start TEXT] [--load-end TEXT]
 //   bench-report lammps-json LOG_DIR OUT.json ...   (lammps_bench.sh's JSON from its LAMMPS logs:
-//                validation/bench_report_lammps.cpp)
+//                validation/tools/bench_report_lammps.cpp)
 //
 // BENCH_DIR holds, from dem-bench: bench.json, shear.json, laws.json and size_<N>_tiled.json for each of
 // --sizes; from reports/bench/lammps_bench.sh: lammps_<packing>_<friction>.json for each case

@@ -10,7 +10,12 @@
 // Every mode takes --draw GNUPLOT_DIR (reports/gnuplot): its section's figures drawn in OUT_DIR
 // once its data are written (sections/draw.hpp declares them). convergence without results
 // (RESULTS_DIR has no runs.tsv) but with OUT_DIR/summary.json re-draws from that summary, and says so.
-// Each mode is a file of compare_runs/ (what it writes: modes.hpp); this one parses the arguments
+// Every mode takes --without-results keep|redraw: a study that has not run here (RESULTS_DIR has no
+// runs.tsv, or no finished run) is no error; `redraw` re-draws the section from OUT_DIR's committed
+// summary where the mode keeps one (convergence: summary.json, decisions: decisions.json, whose
+// stamps the section keeps), and otherwise, as `keep` always, OUT_DIR is left as it is. Either way
+// the tool says which source it used and exits 0 (without the option: exit 1 or 2, as below).
+// Each mode is a file of sections/ (what it writes: modes.hpp); this one parses the arguments
 // (every sub-command answers --help) and calls it. stability, critical-state and liquefaction also
 // write OUT_DIR/stamp.json, decisions a "stamp" in decisions.json (study/stamp.hpp).
 // Exit status: 0; 1 if a stability case is not acceptable, the reference or baseline is missing,
@@ -18,6 +23,7 @@
 // manifest or references file.
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -48,7 +54,8 @@ struct Options {
   std::string critical_ensemble, critical_rates, critical_references;  // critical-state
   std::string liquefaction_out;
   std::vector<std::string> liquefaction_folders;
-  std::string draw_dir;  // every mode
+  std::string draw_dir;         // every mode
+  std::string without_results;  // every mode: "", "keep" or "redraw"
 };
 
 // The sub-commands, to ask which one was given.
@@ -140,9 +147,15 @@ Modes declare_modes(CLI::App& app, Options& o) {
                                       "table.md, csr_nl.dat, ru.dat, values.gp");
   m.liquefaction->add_option("OUT_DIR", o.liquefaction_out, "where the tables and the figures' data go (made if missing)")->required();
   m.liquefaction->add_option("RESULTS_DIR", o.liquefaction_folders, "the studies' results folders")->required();
-  for (CLI::App* mode : {m.convergence, m.stability, m.decisions, m.critical, m.liquefaction})
+  for (CLI::App* mode : {m.convergence, m.stability, m.decisions, m.critical, m.liquefaction}) {
     mode->add_option("--draw", o.draw_dir, "draw the section's figures in OUT_DIR with the gnuplot scripts of this folder (reports/gnuplot)")
         ->check(CLI::ExistingDirectory);
+    mode->add_option("--without-results", o.without_results,
+                     "a study not run here (RESULTS_DIR without runs.tsv or a finished run) is no error: redraw = the section "
+                     "re-drawn from OUT_DIR's committed summary (convergence: summary.json, decisions: decisions.json), else "
+                     "OUT_DIR kept; keep = OUT_DIR kept; says which, exit 0")
+        ->check(CLI::IsMember({"keep", "redraw"}));
+  }
   return m;
 }
 
@@ -181,14 +194,66 @@ int nothing_finished(const std::string& dir) {
 
 // 0 when the study in `dir` has a finished run; else the exit status: 1 (nothing finished), 2 (no
 // manifest). `manifest` receives it.
-int finished(const std::string& dir, compare_runs::Manifest& manifest) {
+int finished(const std::string& dir, sections::Manifest& manifest) {
   try {
-    manifest = compare_runs::read_manifest(dir);
+    manifest = sections::read_manifest(dir);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;
   }
-  return compare_runs::any_outcome(manifest, dir) ? 0 : nothing_finished(dir);
+  return sections::any_outcome(manifest, dir) ? 0 : nothing_finished(dir);
+}
+
+// Whether `dir` holds results to draw from: a runs.tsv with a finished run (one that cannot be
+// read counts as results, so that drawing from it reports why).
+bool has_results(const std::string& dir) {
+  if (!std::filesystem::exists(std::filesystem::path(dir) / "runs.tsv")) return false;
+  try {
+    return sections::any_outcome(sections::read_manifest(dir), dir);
+  } catch (const std::exception&) {
+    return true;
+  }
+}
+
+// --without-results: where the results are not here, the committed summary the mode re-draws from
+// (set into `o`), or 0 once it has said that OUT_DIR is kept; nothing when the mode runs as asked.
+// A critical-state study's --ensemble or --rates, or a liquefaction folder, without results is
+// left out, and said so.
+std::optional<int> without_results(const std::string& mode, const Modes& m, Options& o) {
+  const auto left_out = [&](std::string& dir, const char* what) {
+    if (dir.empty() || has_results(dir)) return;
+    std::fprintf(stderr, "compare-runs %s: no results in %s yet; %s left out\n", mode.c_str(), dir.c_str(), what);
+    dir.clear();
+  };
+  std::string results, out;
+  if (*m.liquefaction) {
+    std::vector<std::string> run;
+    for (std::string dir : o.liquefaction_folders) {
+      left_out(dir, "that study");
+      if (!dir.empty()) run.push_back(dir);
+    }
+    o.liquefaction_folders = run;
+    if (!run.empty()) return std::nullopt;
+    results = "any of its folders", out = o.liquefaction_out;
+  } else {
+    if (*m.critical) left_out(o.critical_ensemble, "its --ensemble"), left_out(o.critical_rates, "its --rates");
+    Folders& f = *m.convergence ? o.convergence : *m.stability ? o.stability : *m.decisions ? o.decisions : o.critical;
+    const bool redrawn_already = (*m.convergence && !o.convergence_summary.empty()) || (*m.decisions && !o.from_json.empty());
+    if (redrawn_already || has_results(f.results)) return std::nullopt;
+    results = f.results, out = f.out;
+    const std::string summary = *m.convergence ? "summary.json" : *m.decisions ? "decisions.json" : "";
+    const std::filesystem::path committed = std::filesystem::path(out) / summary;
+    if (o.without_results == "redraw" && !summary.empty() && std::filesystem::is_regular_file(committed)) {
+      std::fprintf(stderr, "compare-runs %s: no results in %s; the section re-drawn from the committed %s (its stamp kept)\n",
+                   mode.c_str(), results.c_str(), committed.c_str());
+      (*m.convergence ? o.convergence_summary : o.from_json) = committed.string();
+      f.results = out, f.out.clear();  // as `--summary FILE OUT_DIR` / `--from-json FILE OUT_DIR` take them
+      return std::nullopt;
+    }
+  }
+  std::fprintf(stderr, "compare-runs %s: no results in %s yet (its study has not run here); %s left as it is\n", mode.c_str(),
+               results.c_str(), out.c_str());
+  return 0;
 }
 
 // The mode given, run; a mode's status with its figures drawn when its data are written (0, or 1: a
@@ -196,36 +261,36 @@ int finished(const std::string& dir, compare_runs::Manifest& manifest) {
 int run_mode(const std::string& mode, const Modes& m, const Options& o) {
   const auto drawn = [&](int status, const std::string& out) {
     if (o.draw_dir.empty() || (status != 0 && status != 1)) return status;
-    const int d = compare_runs::draw_section(mode, out, o.draw_dir);
+    const int d = sections::draw_section(mode, out, o.draw_dir);
     return status == 0 ? d : status;
   };
   if (*m.convergence && !o.convergence_summary.empty()) {
     std::filesystem::create_directories(o.convergence.results);
-    return drawn(compare_runs::convergence_from_summary(o.convergence_summary, o.convergence.results, o.reference, o.validation_json),
+    return drawn(sections::convergence_from_summary(o.convergence_summary, o.convergence.results, o.reference, o.validation_json),
                  o.convergence.results);
   }
   if (*m.liquefaction) {
     bool any = false;
-    for (const std::string& dir : o.liquefaction_folders) any = any || compare_runs::any_outcome(compare_runs::read_manifest(dir), dir);
+    for (const std::string& dir : o.liquefaction_folders) any = any || sections::any_outcome(sections::read_manifest(dir), dir);
     if (!any) return nothing_finished(validation::joined(o.liquefaction_folders, ", "));
-    return drawn(stamped(compare_runs::liquefaction(o.liquefaction_out, o.liquefaction_folders), o.liquefaction_out, o.liquefaction_folders),
+    return drawn(stamped(sections::liquefaction(o.liquefaction_out, o.liquefaction_folders), o.liquefaction_out, o.liquefaction_folders),
                  o.liquefaction_out);
   }
   if (*m.decisions && !o.from_json.empty())
-    return drawn(compare_runs::decisions_from_json(o.from_json, o.decisions.results, o.references), o.decisions.results);
+    return drawn(sections::decisions_from_json(o.from_json, o.decisions.results, o.references), o.decisions.results);
   const Folders& f = *m.convergence ? o.convergence : *m.stability ? o.stability : *m.decisions ? o.decisions : o.critical;
-  compare_runs::Manifest manifest;
+  sections::Manifest manifest;
   if (const int rc = finished(f.results, manifest)) return rc;
   std::filesystem::create_directories(f.out);
-  if (*m.convergence) return drawn(compare_runs::convergence(manifest, f.results, f.out, o.reference, o.threads_per_run, o.validation_json), f.out);
-  if (*m.stability) return stamped(compare_runs::stability(manifest, f.results, f.out, o.report_only), f.out, {f.results});
-  if (*m.decisions) return drawn(compare_runs::decisions(manifest, f.results, f.out, o.references, o.baseline, o.ensemble, o.baseline_results), f.out);
+  if (*m.convergence) return drawn(sections::convergence(manifest, f.results, f.out, o.reference, o.threads_per_run, o.validation_json), f.out);
+  if (*m.stability) return stamped(sections::stability(manifest, f.results, f.out, o.report_only), f.out, {f.results});
+  if (*m.decisions) return drawn(sections::decisions(manifest, f.results, f.out, o.references, o.baseline, o.ensemble, o.baseline_results), f.out);
   for (const std::string& dir : {o.critical_ensemble, o.critical_rates}) {
-    compare_runs::Manifest other;
+    sections::Manifest other;
     if (!dir.empty())
       if (const int rc = finished(dir, other)) return rc;
   }
-  return drawn(stamped(compare_runs::critical_state(manifest, f.results, f.out, o.critical_ensemble, o.critical_rates, o.critical_references),
+  return drawn(stamped(sections::critical_state(manifest, f.results, f.out, o.critical_ensemble, o.critical_rates, o.critical_references),
                        f.out, {f.results, o.critical_ensemble, o.critical_rates}),
                f.out);
 }
@@ -272,6 +337,8 @@ int tool_main(int argc, char** argv) {
     o.convergence.results = o.convergence.out;
   }
   try {
+    if (!o.without_results.empty())
+      if (const std::optional<int> rc = without_results(argv[1], m, o)) return *rc;
     return run_mode(argv[1], m, o);
   } catch (const std::exception& e) {  // a result that cannot be read, a folder that cannot be made
     std::fprintf(stderr, "error: %s\n", dem::describe_failure(e).c_str());

@@ -3,7 +3,7 @@
 //   ensemble-cycles RESULTS_DIR OUT_DIR
 // For every density, test and quantity (eps_v in %, coordination number, sliding fraction in %),
 // OUT_DIR/<quantity>_<density>_test<N>.dat has one line per cycle: cycle, mean over the samples,
-// sample standard deviation, number of samples, min, max (validation/figures.hpp,
+// sample standard deviation, number of samples, min, max (validation/figures/figures.hpp,
 // cycle_statistics). Cycle 0 is the first row of the test (the start of shearing); the sliding
 // fraction starts at cycle 1, as the paper's Figure 11.
 // Exit status: 0; 1 if a result file is there but cannot be read as a complete result, no test

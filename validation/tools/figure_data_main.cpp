@@ -1,5 +1,5 @@
 // figure-data: the data behind the report's figures and the numbers its text quotes, from a
-// study's results, its resolved scenes and reference_data/paper.yaml (validation/figures.hpp).
+// study's results, its resolved scenes and reference_data/paper.yaml (validation/figures/figures.hpp).
 //   figure-data figures RESULTS_DIR FIG_DIR [--sample NAME] [--references FILE]
 //       every figure's data files (figNN_*.dat, columns named with units) and values.gp, the
 //       numbers the static scripts in reports/gnuplot/ read (the paper's among them)

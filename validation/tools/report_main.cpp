@@ -1,12 +1,14 @@
 // report: writes the study report (REPORT_DIR/index.md) from a study's results, the validation
 // output, the figures, the other studies' tables, the resolved scenes and reference_data/. The text
 // is reports/templates/index.md with its {{keys}} filled; every number is computed here
-// (validation/report.hpp) or by the tool that wrote the table included (validate, figure-data,
+// (validation/report/report.hpp) or by the tool that wrote the table included (validate, figure-data,
 // compare-runs). The figure notes are reports/templates/figure_notes.tsv, filled from the data the
 // figures plot and the verdicts of the validation rows about them.
 //   report --results DIR --references FILE --out REPORT_DIR [--profile NAME] [--sample NAME]
 //          [--templates DIR] [--baseline FILE] [--decisions DIR] [--stability DIR]
 //          [--source TEXT] [--note TEXT] [--allow-other-baseline]
+// --source defaults to the commit the tools were built from, "(with uncommitted changes)" when the
+// tree differed from it (engine/cmake/version.cmake: the one definition of a modified tree).
 // REPORT_DIR holds what the other tools wrote (validation.md, verdicts.md, figures/, samples.md,
 // decisions/, convergence/, stability/, critical_state/, liquefaction/, bench.md); a part that is
 // missing is said so in its section. --baseline: an earlier baseline's validation.json, compared
@@ -40,8 +42,38 @@
 #include "study/manifest.hpp"
 #include "study/paths.hpp"
 #include "study/settings.hpp"
+#include "version.hpp"
 
 namespace fs = std::filesystem;
+
+namespace {
+
+// What a file from other results (`differs`: what differs, "" when nothing does) does to the
+// report: refused (false, `why` said on stderr), or with --allow-other-baseline kept and named in
+// the header (`elsewhere`).
+bool kept_or_refused(const std::string& differs, bool allow, std::vector<std::string>& elsewhere, const std::string& what,
+                     const std::string& why) {
+  if (differs.empty()) return true;
+  if (!allow) {
+    std::fprintf(stderr, "report: %s, or keep it with --allow-other-baseline\n", why.c_str());
+    return false;
+  }
+  elsewhere.push_back(what + " (another " + differs + ")");
+  return true;
+}
+
+// What the report was made from when --source does not say: the commit the tools were built from,
+// and whether the tree differed from it, as engine/cmake/version.cmake decides (the one definition
+// of a modified tree; dem::software_version is "VERSION+COMMIT" or "VERSION+COMMIT-modified").
+std::string built_from() {
+  const std::string version = dem::software_version, modified = "-modified";
+  std::string commit = version.substr(version.find('+') + 1);
+  const bool changed = commit.size() > modified.size() && commit.compare(commit.size() - modified.size(), modified.size(), modified) == 0;
+  if (changed) commit.resize(commit.size() - modified.size());
+  return "commit " + commit + (changed ? " (with uncommitted changes)" : "");
+}
+
+}  // namespace
 
 
 // The tool; main runs it under guarded_main (a file system error names its path, exit 1).
@@ -61,7 +93,8 @@ int tool_main(int argc, char** argv) {
   option("--baseline", "an earlier baseline's validation.json, compared row by row");
   option("--decisions", "the decisions study's results folder (its settings for the text)");
   option("--stability", "the stability study's results folder (its settings for the text)");
-  option("--source", "what the report was made from (e.g. the commit)");
+  option("--source", "what the report was made from (default: the commit the tools were built from, and whether the tree "
+                     "differed from it outside reports/)");
   option("--note", "a note printed at the top of the report");
   bool allow_other_baseline = false;
   app.add_flag("--allow-other-baseline", allow_other_baseline,
@@ -97,7 +130,8 @@ int tool_main(int argc, char** argv) {
     fs::create_directories(out);
     const fs::path report = out;
     const validation::ReportSources src{results, out, opt["--templates"], opt["--baseline"],
-                                        opt["--decisions"], opt["--stability"], opt["--source"], opt["--note"]};
+                                        opt["--decisions"], opt["--stability"],
+                                        opt["--source"].empty() ? built_from() : opt["--source"], opt["--note"]};
     validation::ReportInputs in;
     in.paper = validation::load_references(opt["--references"], "paper");
     in.rows = validation::load_references(opt["--references"], opt["--profile"]);
@@ -146,30 +180,18 @@ int tool_main(int argc, char** argv) {
     // The verdicts shown are validation.json's: it must have judged these results (the same
     // engine, baseline, spheres and samples), or the report would present another study's verdicts
     // as this one's.
-    if (fresh) {
-      if (const std::string differs = validation::judged_difference(from_results->stamp, paper_stamp); !differs.empty()) {
-        if (!allow_other_baseline) {
-          std::fprintf(stderr, "report: %s judged other results than --results %s: its %s differ; run validate on these results "
-                               "first, or keep it with --allow-other-baseline\n",
-                       (report / "validation.json").c_str(), validation::shown_path(results).c_str(), differs.c_str());
-          return 1;
-        }
-        elsewhere.push_back("the verdicts of `" + (report / "validation.json").string() + "` (another " + differs + ")");
-      }
-    }
+    if (const std::string differs = fresh ? validation::judged_difference(from_results->stamp, paper_stamp) : "";
+        !kept_or_refused(differs, allow_other_baseline, elsewhere, "the verdicts of `" + (report / "validation.json").string() + "`",
+                         (report / "validation.json").string() + " judged other results than --results " + validation::shown_path(results) +
+                             ": its " + differs + " differ; run validate on these results first"))
+      return 1;
     // The values read back must come from the results validation.json judged: another baseline is
     // refused as a section would be.
-    if (read_back) {
-      if (const std::string differs = validation::stamp_difference(from_results->stamp, paper_stamp); !differs.empty()) {
-        if (!allow_other_baseline) {
-          std::fprintf(stderr, "report: %s was written from results on another %s than reports/validation.json's (%s against %s); "
-                               "write the report with the results here, or keep it with --allow-other-baseline\n",
-                       values_file.c_str(), differs.c_str(), from_results->stamp.baseline.c_str(), paper_stamp.baseline.c_str());
-          return 1;
-        }
-        elsewhere.push_back("the values of `" + values_file + "` (another " + differs + ")");
-      }
-    }
+    if (const std::string differs = read_back ? validation::stamp_difference(from_results->stamp, paper_stamp) : "";
+        !kept_or_refused(differs, allow_other_baseline, elsewhere, "the values of `" + values_file + "`",
+                         values_file + " was written from results on another " + differs + " than reports/validation.json's (" +
+                             from_results->stamp.baseline + " against " + paper_stamp.baseline + "); write the report with the results here"))
+      return 1;
     v["stamp.elsewhere"] = allow_other_baseline ? validation::joined(elsewhere, ", ") : "";
     validation::add_setup(v, report, !from_results ? "" : read_back ? "`" + values_file + "`" : "the resolved scenes of the results");
     // The stability study's settings: read once from its results (above, with fresh values), else as

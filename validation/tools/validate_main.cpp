@@ -23,6 +23,10 @@
 // function as from the results (judge_values) and writes the same tables; their first line says so.
 // A FILE that cannot be read, is not JSON or not a validation.json, or lacks a row of the reference
 // file (or has one it does not): exit 2, naming FILE.
+// --without-results keep|redraw: a --results DIR without runs.tsv (its study has not run here) is
+// no error: redraw judges every row again from the committed record --out/validation.json, as
+// --from-json does (its stamp kept, its tables' first line saying so); without a record, and with
+// keep, --out is left as it is. Either way validate says which and, with nothing judged, exits 0.
 // Every row is computed per sample; its verdict compares the reference's value, widened by the
 // row's tolerance, with the 95 % prediction interval of a single sample of the ensemble (rows.hpp).
 #include <cmath>
@@ -65,6 +69,7 @@ struct Options {
   std::string results, from_json, references, out, profile = "paper";
   bool profile_given = false;
   std::vector<std::string> decisions;  // decisions.json files, in the order given
+  std::string without_results;         // "", "keep" or "redraw"
 };
 
 // The options, or nothing when they are wrong or --help was asked (`code`: the exit status, 0 for
@@ -88,6 +93,11 @@ std::optional<Options> parse_options(int argc, char** argv, int& code) {
                  "a decisions study's decisions.json (compare-runs decisions); may be given several times, each row's cause "
                  "is what the files of the largest size that judged it found")
       ->allow_extra_args(false);
+  app.add_option("--without-results", o.without_results,
+                 "a --results folder without runs.tsv (its study has not run here) is no error: redraw = judged again from the "
+                 "committed --out/validation.json, else --out kept; keep = --out kept; says which (exit 0 when nothing is judged)")
+      ->check(CLI::IsMember({"keep", "redraw"}))
+      ->needs(results);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -104,6 +114,19 @@ std::optional<Options> parse_options(int argc, char** argv, int& code) {
   if (o.profile.empty()) {
     std::fprintf(stderr, "validate: --profile: must not be empty\n");
     code = 2;
+    return std::nullopt;
+  }
+  if (!o.without_results.empty() && !fs::exists(fs::path(o.results) / "runs.tsv")) {
+    const fs::path record = fs::path(o.out) / "validation.json";
+    if (o.without_results == "redraw" && fs::is_regular_file(record)) {
+      std::fprintf(stderr, "validate: no results in %s; every row judged again from the committed %s (its stamp kept)\n",
+                   o.results.c_str(), record.c_str());
+      o.from_json = record.string(), o.results.clear();
+      return o;
+    }
+    std::fprintf(stderr, "validate: no results in %s yet (its study has not run here); %s left as it is\n", o.results.c_str(),
+                 o.out.c_str());
+    code = 0;
     return std::nullopt;
   }
   return o;
@@ -257,6 +280,29 @@ nlohmann::ordered_json validation_json(const Options& o, const std::string& labe
   return json;
 }
 
+// A quasi-static row is not judged by design (its warning says why); any other row not judged
+// lacked samples with a value, and fails: false, said on stderr.
+bool all_rows_judged(const std::vector<Judged>& judged) {
+  int lacking = 0;
+  std::string names;
+  for (const Judged& j : judged)
+    if (j.result.verdict == Verdict::NotJudged && !j.row.quasi_static) names += (names.empty() ? "" : "; ") + j.row.name, ++lacking;
+  if (lacking > 0) std::fprintf(stderr, "error: %d row(s) not judged (fewer than 2 samples with a value): %s\n", lacking, names.c_str());
+  return lacking == 0;
+}
+
+// False, said on stderr, when groups of samples give the same values in every row.
+bool samples_distinct(const std::vector<std::vector<std::string>>& identical) {
+  for (const std::vector<std::string>& group : identical) {
+    std::string names;
+    for (std::size_t k = 0; k < group.size(); ++k) names += (k == 0 ? "" : k + 1 == group.size() ? " and " : ", ") + group[k];
+    std::fprintf(stderr, "error: samples %s give the same values to the last digit in every row: one sample counted %zu times, "
+                 "not independent samples (their seeds set by hand, e.g. particles.lattice.seed in preparation_set, or a copied "
+                 "folder?); the verdicts take them as independent\n", names.c_str(), group.size());
+  }
+  return identical.empty();
+}
+
 }  // namespace
 
 // The tool; main runs it under guarded_main (a file system error names its path, exit 1).
@@ -386,16 +432,7 @@ int tool_main(int argc, char** argv) {
     if (results) validation::report_unreadable("validate", missing);  // those that are there: why each is not a result
     status = 1;
   }
-  // A quasi-static row is not judged by design (its warning says why); any other row not judged
-  // lacked samples with a value, and fails.
-  int lacking = 0;
-  std::string names;
-  for (const Judged& j : judged)
-    if (j.result.verdict == Verdict::NotJudged && !j.row.quasi_static) names += (names.empty() ? "" : "; ") + j.row.name, ++lacking;
-  if (lacking > 0) {
-    std::fprintf(stderr, "error: %d row(s) not judged (fewer than 2 samples with a value): %s\n", lacking, names.c_str());
-    status = 1;
-  }
+  if (!all_rows_judged(judged)) status = 1;
   if (results) {  // what only the results show
     if (const std::vector<std::string> bad = non_finite_values(judged, o.results); !bad.empty()) {
       for (const std::string& b : bad) std::fprintf(stderr, "error: %s\n", b.c_str());
@@ -406,14 +443,7 @@ int tool_main(int argc, char** argv) {
       status = 1;
     }
   }
-  for (const std::vector<std::string>& group : identical) {
-    std::string names;
-    for (std::size_t k = 0; k < group.size(); ++k) names += (k == 0 ? "" : k + 1 == group.size() ? " and " : ", ") + group[k];
-    std::fprintf(stderr, "error: samples %s give the same values to the last digit in every row: one sample counted %zu times, "
-                 "not independent samples (their seeds set by hand, e.g. particles.lattice.seed in preparation_set, or a copied "
-                 "folder?); the verdicts take them as independent\n", names.c_str(), group.size());
-    status = 1;
-  }
+  if (!samples_distinct(identical)) status = 1;
   if (count.must_pass_failed > 0) {
     std::fprintf(stderr, "error: %d must-pass row(s) inconsistent with the %s\n", count.must_pass_failed, refs.label.c_str());
     status = 1;
