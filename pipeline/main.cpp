@@ -90,38 +90,29 @@ std::string duration_text(double s) {
 }
 
 // `--plan`: each run with what it will do and its estimated particle-steps, then what the runs
-// still to do cost: the critical path and the wall time on 1, 2, 16 and 64 cores.
-// `throughput_from`: where the throughput is from (--throughput, the recorded runs or make bench).
-void print_plan(const std::vector<pipeline::PlannedRun>& runs, double throughput, const std::string& throughput_from) {
-  std::vector<bool> todo(runs.size());
+// still to do cost: the critical path and the wall time on 1, 2, 16 and 64 cores (summarize_plan).
+void print_plan(const std::vector<pipeline::PlannedRun>& runs, const pipeline::PlanThroughput& throughput) {
+  const pipeline::PlanSummary plan = pipeline::summarize_plan(runs, throughput);
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const pipeline::PlannedRun& r = runs[i];
-    const char* what = pipeline::up_to_date(r.result, r.hash)                       ? "reuse"
-                       : r.may_fail && pipeline::recorded_stop(r.result, r.hash) ? "stopped"
-                       : r.copy_of >= 0                                             ? "copy"
-                                                                                   : "run";
-    todo[i] = std::string(what) == "run";
-    std::printf("%-24s %-9s %.3g particle-steps (%s)  %s\n", r.name.c_str(), what, r.cost, r.cost_basis.c_str(),
-                r.scene_file.c_str());
+    std::printf("%-24s %-9s %.3g particle-steps (%s)  %s\n", r.name.c_str(), plan.action[i].c_str(), r.cost,
+                r.cost_basis.c_str(), r.scene_file.c_str());
   }
-  const std::vector<double> cost = pipeline::run_costs(runs, todo);
-  double total = 0;
-  for (double c : cost) total += c;
-  std::printf("\nto run: %.3g particle-steps in %d of %zu runs (reused results and copies cost nothing)\n", total,
-              static_cast<int>(std::count(todo.begin(), todo.end(), true)), runs.size());
-  const pipeline::CriticalPath cp = pipeline::critical_path(runs, cost);
+  std::printf("\nto run: %.3g particle-steps in %d of %zu runs (reused results and copies cost nothing)\n", plan.particle_steps,
+              plan.to_run, runs.size());
+  const double per_s = throughput.particle_steps_per_s;
   std::string chain;
-  for (int k : cp.runs) chain += (chain.empty() ? "" : " -> ") + runs[static_cast<std::size_t>(k)].name;
+  for (int k : plan.critical.runs) chain += (chain.empty() ? "" : " -> ") + runs[static_cast<std::size_t>(k)].name;
   std::printf("critical path (the longest chain of runs, each starting from the one before): %.3g particle-steps, "
-              "%s: %s\n", cp.cost, duration_text(cp.cost / throughput).c_str(), chain.empty() ? "nothing to run" : chain.c_str());
-  std::printf("estimated wall time, one run per core at %.3g particle-steps/s:", throughput);
-  for (int cores : {1, 2, 16, 64})
-    std::printf(" %d core%s %s;", cores, cores > 1 ? "s" : "",
-                duration_text(pipeline::estimated_wall_time_s(runs, cost, cores, throughput)).c_str());
+              "%s: %s\n", plan.critical.cost, duration_text(plan.critical.cost / per_s).c_str(),
+              chain.empty() ? "nothing to run" : chain.c_str());
+  std::printf("estimated wall time, one run per core at %.3g particle-steps/s:", per_s);
+  for (const auto& [cores, seconds] : plan.wall_time_s)
+    std::printf(" %d core%s %s;", cores, cores > 1 ? "s" : "", duration_text(seconds).c_str());
   std::printf("\n(throughput: %s; particle-steps: recorded, a finished run's own; as RUN, those of a finished run of "
               "the same scene (another sample); model, a stress stage from its hold criteria (pipeline/plan/run_plan.cpp), "
               "a liquefaction at its stage's duration)\n",
-              throughput_from.c_str());
+              throughput.from.c_str());
 }
 
 }  // namespace
@@ -220,18 +211,9 @@ int tool_main(int argc, char** argv) {
                     profiles[i].c_str(), version.c_str(), outs[i].c_str());
     }
     if (plan_only) {
-      if (throughput_opt->count() > 0)
-        print_plan(runs, throughput, "--throughput");
-      else if (recorded_throughput)
-        print_plan(runs, *recorded_throughput, "the finished runs' recorded particle-steps over their wall time");
-      else if (const auto machine = pipeline::recorded_throughput_under(fs::path(studies.front().output).parent_path().string(), version))
-        print_plan(runs, machine->particle_steps_per_s,
-                   "none of these runs has finished yet: what " + std::to_string(machine->runs) + " finished runs of this engine in " +
-                       std::to_string(machine->studies) + " results folders beside them recorded, particle-steps over wall time");
-      else
-        print_plan(runs, throughput,
-                   "the engine's, measured by make bench on this project's 2-core machine (reports/bench.md: 8,000 "
-                   "spheres, one run per core); set yours with --throughput");
+      print_plan(runs, pipeline::plan_throughput(throughput_opt->count() > 0 ? std::optional<double>(throughput) : std::nullopt,
+                                                 recorded_throughput,
+                                                 fs::path(studies.front().output).parent_path().string(), version));
       return 0;
     }
     pipeline::Outcome o;

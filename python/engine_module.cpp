@@ -18,26 +18,37 @@
 #include "config/scene_config.hpp"
 #include "config/yaml_section.hpp"  // ConfigError
 #include "io/failure.hpp"
+#include "io/h5md.hpp"
 #include "io/hdf5.hpp"
 #include "io/state_io.hpp"
 #include "run/output_path.hpp"
 #include "run/run_request.hpp"
 #include "source_hash.hpp"
 #include "version.hpp"
+#include "module.hpp"
 
 namespace py = pybind11;
 
-namespace {
+namespace ct_python {
 
 // The module's exceptions, made in PYBIND11_MODULE (subclasses of Python's own, cyclic_triax/__init__.py documents them).
-PyObject* config_error = nullptr;       // bad input: nothing was written
-PyObject* output_path_error = nullptr;  // where the result may not go: nothing was run
-PyObject* run_error = nullptr;          // the run failed: its .partial says why
+PyObject* config_error = nullptr;
+PyObject* output_path_error = nullptr;
+PyObject* run_error = nullptr;
 
-[[noreturn]] void raise(PyObject* type, const std::string& message) {
+void raise(PyObject* type, const std::string& message) {
   PyErr_SetString(type, message.c_str());
   throw py::error_already_set();
 }
+
+}  // namespace ct_python
+
+namespace {
+
+using ct_python::config_error;
+using ct_python::output_path_error;
+using ct_python::raise;
+using ct_python::run_error;
 
 // The status of a kept partial result, as `dem run` names it after a failure.
 std::string partial_status(const std::string& partial) {
@@ -209,6 +220,33 @@ py::dict read_final_state(const std::string& file) {
   return d;
 }
 
+template <class T>
+py::array_t<T> rows_array(const std::vector<T>& v, py::ssize_t cols) {
+  py::array_t<T> a({static_cast<py::ssize_t>(v.size()) / cols, cols});
+  std::copy(v.begin(), v.end(), a.mutable_data());
+  return a;
+}
+
+// Frame `index` of a result's particle frames (io/h5md.hpp read_frame): positions [m],
+// velocities (the fluctuating part) [m/s], angular velocities [rad/s], radii [m], masses [kg],
+// the cell's edges [m], and the contacts if the run wrote them (output.frames.contacts).
+py::dict read_frame(const std::string& file, std::size_t index) {
+  const dem::Frame f = dem::read_frame(file, index);
+  py::dict d;
+  d["step"] = f.step, d["time"] = f.time_s;
+  d["position"] = rows_array(f.position, 3), d["velocity"] = rows_array(f.velocity, 3);
+  d["angular_velocity"] = rows_array(f.angular_velocity, 3);
+  d["radius"] = rows_array(f.radius, 1).attr("ravel")(), d["mass"] = rows_array(f.mass, 1).attr("ravel")();
+  d["cell"] = py::make_tuple(f.edges[0], f.edges[1], f.edges[2]);
+  if (f.has_contacts) {
+    d["pairs"] = rows_array(f.pairs, 2);
+    d["normal_force"] = rows_array(f.normal_force, 1).attr("ravel")();
+    d["tangential_force"] = rows_array(f.tangential_force, 1).attr("ravel")();
+    d["branch"] = rows_array(f.branch, 3);
+  }
+  return d;
+}
+
 // `dem plot`'s drawing (cli/plot.cpp) of given series: (key, x, y) each.
 void draw_plot(const std::vector<std::tuple<std::string, std::vector<double>, std::vector<double>>>& series,
                const std::string& xlabel, const std::string& ylabel, const std::string& title, const std::string& out,
@@ -244,4 +282,17 @@ PYBIND11_MODULE(_engine, m) {
         py::arg("term"));
   m.def("axis_label", &dem::axis_label, py::arg("column"), py::arg("legs") = false);
   m.def("read_final_state", &read_final_state, py::arg("file"));
+  m.def("frame_count", &dem::frame_count, py::arg("file"));
+  m.def("read_frame", &read_frame, py::arg("file"), py::arg("index"));
+  m.attr("build_dem") = DEM_BUILD_BINARY;
+  // Bad input met by the tools' libraries (a study, a reference file, a calibration): ConfigError.
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const dem::ConfigError& e) {
+      PyErr_SetString(config_error, e.what());
+    }
+  });
+  ct_python::bind_study(m);
+  ct_python::bind_calibration(m);
 }

@@ -161,4 +161,47 @@ void H5mdWriter::append_frame(const Simulation& sim, bool contacts) {
   last_step_ = sim.step_count();
 }
 
+std::size_t frame_count(const std::string& file) {
+  return h5::naming_file(file, [&]() -> std::size_t {
+    h5::Handle f = h5::open_file_read(file);
+    if (!h5::exists(f, "particles/all/position/step")) return 0;
+    return static_cast<std::size_t>(h5::shape(f, "particles/all/position/step").at(0));
+  });
+}
+
+Frame read_frame(const std::string& file, std::size_t index) {
+  return h5::naming_file(file, [&] {
+    const std::size_t frames = frame_count(file);
+    if (index >= frames)
+      throw h5::Error(frames == 0 ? "no frames (a scene writes them with output.frames: {interval: STEPS})"
+                                  : "frame " + std::to_string(index) + " asked for; it has frames 0 to " + std::to_string(frames - 1));
+    h5::Handle f = h5::open_file_read(file);
+    h5::Handle all = h5::open_group(f, "particles/all");
+    Frame fr;
+    fr.step = h5::read_rows<std::int64_t>(all, "position/step", index, 1).at(0);
+    fr.time_s = h5::read_rows<double>(all, "position/time", index, 1).at(0);
+    fr.position = h5::read_rows<double>(all, "position/value", index, 1);
+    fr.velocity = h5::read_rows<double>(all, "velocity/value", index, 1);
+    fr.angular_velocity = h5::read_rows<double>(all, "angular_velocity/value", index, 1);
+    const std::vector<double> edges = h5::read_rows<double>(all, "box/edges/value", index, 1);
+    for (int k = 0; k < 3; ++k) fr.edges[k] = edges.at(static_cast<std::size_t>(k));
+    std::size_t cols = 0;
+    fr.radius = h5::read<double>(all, "radius", cols);
+    fr.mass = h5::read<double>(all, "mass", cols);
+    if (h5::exists(f, "frames/contacts/count")) {
+      fr.has_contacts = true;
+      const std::vector<std::int64_t> count = h5::read<std::int64_t>(f, "frames/contacts/count", cols);
+      hsize_t first = 0;
+      for (std::size_t k = 0; k < index; ++k) first += static_cast<hsize_t>(count.at(k));
+      const hsize_t m = static_cast<hsize_t>(count.at(index));
+      h5::Handle contacts = h5::open_group(f, "frames/contacts");
+      fr.pairs = h5::read_rows<std::int64_t>(contacts, "pairs", first, m);
+      fr.normal_force = h5::read_rows<double>(contacts, "normal_force", first, m);
+      fr.tangential_force = h5::read_rows<double>(contacts, "tangential_force", first, m);
+      fr.branch = h5::read_rows<double>(contacts, "branch", first, m);
+    }
+    return fr;
+  });
+}
+
 }  // namespace dem

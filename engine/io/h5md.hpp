@@ -21,6 +21,8 @@
 //     particle's centre to the nearest image of the second's), ends [M x 2 x 3] (m, the two
 //     centres, the second unwrapped: what ParaView draws as a line)
 #include <cstdint>
+#include <string>
+#include <vector>
 
 #include "dynamics/simulation.hpp"
 #include "io/hdf5.hpp"
@@ -51,5 +53,23 @@ class H5mdWriter {
   std::int64_t last_step_ = -1;
   hid_t file_ = -1;
 };
+
+// One frame of a result's /particles/all (and /frames/contacts if it has them), as written above.
+struct Frame {
+  std::int64_t step = 0;
+  double time_s = 0;
+  std::vector<double> position, velocity, angular_velocity;  // N x 3, row-major [m, m/s, rad/s]
+  std::vector<double> radius, mass;                          // N [m, kg]
+  double edges[3] = {0, 0, 0};                               // the cell's edges [m]
+  bool has_contacts = false;                                 // written with output.frames.contacts
+  std::vector<std::int64_t> pairs;                           // M x 2 particle indices
+  std::vector<double> normal_force, tangential_force;        // M [N]
+  std::vector<double> branch;                                // M x 3 [m]
+};
+// The number of frames in `file` (0 if it has none).
+std::size_t frame_count(const std::string& file);
+// Frame `index` (from 0) of `file`, read row by row (not the whole series); throws h5::Error
+// naming the file and the range of frames it has when there is no such frame.
+Frame read_frame(const std::string& file, std::size_t index);
 
 }  // namespace dem

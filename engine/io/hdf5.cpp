@@ -539,4 +539,26 @@ std::vector<hsize_t> shape(hid_t parent, const std::string& name) {
   return dims;
 }
 
+template <class T>
+std::vector<T> read_rows(hid_t parent, const std::string& name, hsize_t first, hsize_t rows) {
+  std::vector<hsize_t> dims = shape(parent, name);
+  if (dims.empty() || first + rows > dims[0])
+    throw Error("HDF5: dataset '" + name + "' has " + std::to_string(dims.empty() ? 0 : dims[0]) + " rows, not rows " +
+                std::to_string(first) + " to " + std::to_string(first + rows));
+  Handle ds(checked(H5Dopen2(parent, name.c_str(), H5P_DEFAULT), "opening dataset " + name));
+  Handle space(H5Dget_space(ds));
+  std::vector<hsize_t> start(dims.size(), 0);
+  start[0] = first, dims[0] = rows;
+  hsize_t values = 1;
+  for (hsize_t d : dims) values *= d;
+  std::vector<T> out(static_cast<std::size_t>(values));
+  if (out.empty()) return out;
+  check(H5Sselect_hyperslab(space, H5S_SELECT_SET, start.data(), nullptr, dims.data(), nullptr), "selecting rows of " + name);
+  Handle memory(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr));
+  check(H5Dread(ds, native_type<T>(), memory, space, H5P_DEFAULT, out.data()), "reading " + name);
+  return out;
+}
+template std::vector<double> read_rows(hid_t, const std::string&, hsize_t, hsize_t);
+template std::vector<std::int64_t> read_rows(hid_t, const std::string&, hsize_t, hsize_t);
+
 }  // namespace dem::h5

@@ -140,6 +140,10 @@ class FrameSeries {
 
 // The extent of a dataset, outermost dimension first.
 std::vector<hsize_t> shape(hid_t parent, const std::string& name);
+// Rows [first, first + rows) along the first dimension of a dataset of any rank, every value of
+// each row (row-major); throws h5::Error naming the dataset if they are not all there.
+template <class T>
+std::vector<T> read_rows(hid_t parent, const std::string& name, hsize_t first, hsize_t rows);
 
 // Runs `read` and makes every h5::Error it throws start with `file` (readers of whole files).
 template <class F>

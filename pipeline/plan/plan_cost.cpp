@@ -160,4 +160,38 @@ double estimated_wall_time_s(const std::vector<PlannedRun>& runs, const std::vec
   return last;
 }
 
+PlanThroughput plan_throughput(std::optional<double> given, std::optional<double> recorded, const std::string& results_root,
+                               const std::string& engine_version) {
+  if (given) return {*given, "--throughput"};
+  if (recorded) return {*recorded, "the finished runs' recorded particle-steps over their wall time"};
+  if (const auto machine = recorded_throughput_under(results_root, engine_version))
+    return {machine->particle_steps_per_s,
+            "none of these runs has finished yet: what " + std::to_string(machine->runs) + " finished runs of this engine in " +
+                std::to_string(machine->studies) + " results folders beside them recorded, particle-steps over wall time"};
+  return {default_throughput,
+          "the engine's, measured by make bench on this project's 2-core machine (reports/bench.md: 8,000 "
+          "spheres, one run per core); set yours with --throughput"};
+}
+
+PlanSummary summarize_plan(const std::vector<PlannedRun>& runs, const PlanThroughput& throughput) {
+  PlanSummary s;
+  s.throughput = throughput;
+  std::vector<bool> todo(runs.size());
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const PlannedRun& r = runs[i];
+    s.action.push_back(up_to_date(r.result, r.hash)                        ? "reuse"
+                       : r.may_fail && recorded_stop(r.result, r.hash)     ? "stopped"
+                       : r.copy_of >= 0                                    ? "copy"
+                                                                           : "run");
+    todo[i] = s.action.back() == "run";
+    s.to_run += todo[i] ? 1 : 0;
+  }
+  s.cost = run_costs(runs, todo);
+  for (double c : s.cost) s.particle_steps += c;
+  s.critical = critical_path(runs, s.cost);
+  for (int cores : {1, 2, 16, 64})
+    s.wall_time_s.emplace_back(cores, estimated_wall_time_s(runs, s.cost, cores, throughput.particle_steps_per_s));
+  return s;
+}
+
 }  // namespace pipeline

@@ -4,6 +4,7 @@
 // time on a number of cores, each run on one core at a given throughput.
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "plan/run_plan.hpp"
@@ -57,5 +58,28 @@ CriticalPath critical_path(const std::vector<PlannedRun>& runs, const std::vecto
 // scheduler orders them), a run ready once the run it starts from is done.
 double estimated_wall_time_s(const std::vector<PlannedRun>& runs, const std::vector<double>& cost, int cores,
                              double throughput);
+
+// The throughput a plan's estimates assume, and where it is from: `given` (--throughput), else
+// what the plan's finished runs recorded (use_recorded_costs), else what this engine's finished
+// runs under `results_root` recorded (recorded_throughput_under), else default_throughput.
+struct PlanThroughput {
+  double particle_steps_per_s = default_throughput;
+  std::string from;  // a sentence for the plan's last line
+};
+PlanThroughput plan_throughput(std::optional<double> given, std::optional<double> recorded, const std::string& results_root,
+                               const std::string& engine_version);
+
+// What `pipeline --plan` prints, as data: each run's action (reuse, stopped, copy, run), the
+// particle-steps still to run, the critical path and the wall time on 1, 2, 16 and 64 cores.
+struct PlanSummary {
+  std::vector<std::string> action;  // per run: "reuse", "stopped", "copy" or "run"
+  std::vector<double> cost;         // per run: the particle-steps it still costs (run_costs)
+  int to_run = 0;                   // runs whose action is "run"
+  double particle_steps = 0;        // the sum of cost
+  CriticalPath critical;
+  PlanThroughput throughput;
+  std::vector<std::pair<int, double>> wall_time_s;  // (cores, estimated_wall_time_s)
+};
+PlanSummary summarize_plan(const std::vector<PlannedRun>& runs, const PlanThroughput& throughput);
 
 }  // namespace pipeline

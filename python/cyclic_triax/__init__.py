@@ -7,7 +7,8 @@
 `run` makes a run exactly as `dem run` does (the same library function, bit for bit the same
 result file); `Result` reads a result (or a `.partial` one, and says so); `columns` is the
 engine's table of time-series columns with units, as `dem columns` prints it; `plot` draws
-columns of runs against each other with `dem plot`'s own code (gnuplot).
+columns of runs against each other with `dem plot`'s own code (gnuplot); `Study` plans, runs and
+validates a study with the pipeline's and validate's library calls; `calibrate` runs a calibration.
 """
 import os
 
@@ -21,7 +22,9 @@ from ._engine import ConfigError, OutputPathError, RunError, engine_source_hash,
 from .result import PartialResultWarning, Result, columns  # noqa: E402
 from .run import RunWarning, run  # noqa: E402
 from .plot import Plot, plot  # noqa: E402
+from .study import Plan, Study, Validation, dem_binary  # noqa: E402
+from .calibrate import Calibration, calibrate  # noqa: E402
 
 __version__ = software_version
-__all__ = ["run", "Result", "columns", "plot", "Plot", "ConfigError", "OutputPathError", "RunError", "RunWarning",
+__all__ = ["run", "Result", "columns", "plot", "Plot", "Study", "Plan", "Validation", "calibrate", "Calibration", "dem_binary", "ConfigError", "OutputPathError", "RunError", "RunWarning",
            "PartialResultWarning", "software_version", "schema_version", "engine_source_hash"]

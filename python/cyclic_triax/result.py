@@ -27,6 +27,9 @@ class Result:
     table(columns=None, legs=False)   the time series (or the legs' rows) as a pandas DataFrame
     series(columns=None, legs=False)  the same as {column: NumPy array}
     final_state()  the particles at the end of a complete run (positions, radii, ...)
+    frames         the number of particle frames the run wrote (output.frames)
+    frame(i)       frame i's arrays (positions, velocities, radii, masses, the cell; the contacts
+                   if the run wrote them); particles(i), contacts(i): the same as DataFrames
     """
 
     def __init__(self, path):
@@ -101,3 +104,53 @@ class Result:
         """The particles at the end of a complete run: {position (N x 3, m), velocity (m/s),
         angular_velocity (rad/s), radius (m), mass (kg), cell (lengths, m), step}."""
         return _engine.read_final_state(self.path)
+
+    @property
+    def frames(self):
+        """The number of particle frames in the file (0 without output.frames)."""
+        return _engine.frame_count(self.path)
+
+    def frame(self, index=-1):
+        """Frame `index` (negative: from the last) as NumPy arrays, read with the engine's reader
+        of its H5MD frames (docs/results.md): {step, time (s), position (N x 3, m), velocity (N x 3,
+        m/s, the fluctuating part), angular_velocity (N x 3, rad/s), radius (m), mass (kg), cell
+        (edges, m)} and, if the run wrote contacts (output.frames.contacts), pairs (M x 2 particle
+        indices), normal_force and tangential_force (N), branch (M x 3, m)."""
+        count = self.frames
+        if not -count <= index < count:
+            raise IndexError(f"{self.path}: frame {index} asked for; it has {count} frame(s)"
+                             + ("" if count else " (a scene writes them with output.frames: {interval: STEPS})"))
+        return _engine.read_frame(self.path, index % count)
+
+    def particles(self, frame=-1):
+        """A frame's particles as a pandas DataFrame, one row each: x, y, z (m), vx, vy, vz (m/s),
+        wx, wy, wz (rad/s), radius (m), mass (kg); attrs: units, step, time, cell."""
+        import pandas
+        f = self.frame(frame)
+        columns = {}
+        for key, names in (("position", "xyz"), ("velocity", ("vx", "vy", "vz")), ("angular_velocity", ("wx", "wy", "wz"))):
+            for k, name in enumerate(names):
+                columns[name] = f[key][:, k]
+        columns["radius"], columns["mass"] = f["radius"], f["mass"]
+        frame_ = pandas.DataFrame(columns)
+        frame_.attrs.update(step=f["step"], time=f["time"], cell=f["cell"],
+                            units={"x": "m", "y": "m", "z": "m", "vx": "m/s", "vy": "m/s", "vz": "m/s", "wx": "rad/s",
+                                   "wy": "rad/s", "wz": "rad/s", "radius": "m", "mass": "kg"})
+        return frame_
+
+    def contacts(self, frame=-1):
+        """A frame's contacts as a pandas DataFrame, one row each: i, j (particle indices),
+        normal_force, tangential_force (N), branch_x, branch_y, branch_z (m, from i's centre to the
+        nearest image of j's); attrs: units, step, time. Needs a run with output.frames.contacts."""
+        import pandas
+        f = self.frame(frame)
+        if "pairs" not in f:
+            raise KeyError(f"{self.path}: its frames have no contacts (a scene writes them with "
+                           "output.frames: {interval: STEPS, contacts: true})")
+        frame_ = pandas.DataFrame({"i": f["pairs"][:, 0], "j": f["pairs"][:, 1], "normal_force": f["normal_force"],
+                                   "tangential_force": f["tangential_force"], "branch_x": f["branch"][:, 0],
+                                   "branch_y": f["branch"][:, 1], "branch_z": f["branch"][:, 2]})
+        frame_.attrs.update(step=f["step"], time=f["time"],
+                            units={"i": "", "j": "", "normal_force": "N", "tangential_force": "N", "branch_x": "m",
+                                   "branch_y": "m", "branch_z": "m"})
+        return frame_

@@ -60,14 +60,17 @@ grep -q "^seed1/loose_prepare " plan.log || { echo "FAIL: the plan lists no seed
 [ $? = 2 ] && grep -q "none.h5 is not a result file" render.log ||
   { echo "FAIL: installed dem render:"; cat render.log; fail=1; }
 # The Python module, when the build made it: from the installed package alone (PYTHONPATH names only
-# the prefix), Test 1 from the installed scenes, shortened, to a complete result in this folder.
+# the prefix), Test 1 from the installed scenes, shortened, to a complete result in this folder; its
+# studies and calibrations run the installed dem.
 package=$(ls -d "$prefix"/lib/python3*/dist-packages/cyclic_triax 2> /dev/null | head -1)
 if [ -f "$build/CMakeCache.txt" ] && grep -q '^DEM_PYTHON:BOOL=ON' "$build/CMakeCache.txt"; then
   if [ -z "$package" ]; then echo "FAIL: no cyclic_triax under $prefix/lib/python3*/dist-packages"; fail=1
   else
     (cd "$share" && PYTHONPATH=$(dirname "$package") /usr/bin/python3 -c "import sys, cyclic_triax as ct
 r = ct.run('scenes/tests/test1.yaml', set={'stages[0].path': '[TC1]'}, out=sys.argv[1])
-assert r.complete and ct.__file__.startswith(sys.argv[2]), (r, ct.__file__)" "$work/elsewhere/python.h5" "$package") > python.log 2>&1 ||
+assert r.complete and ct.__file__.startswith(sys.argv[2]), (r, ct.__file__)
+assert ct.dem_binary() == sys.argv[3], ('Study and calibrate would run', ct.dem_binary())" "$work/elsewhere/python.h5" "$package" \
+      "$(cd "$prefix/bin" && pwd -P)/dem") > python.log 2>&1 ||
       { echo "FAIL: the installed Python module:"; cat python.log; fail=1; }
   fi
 fi

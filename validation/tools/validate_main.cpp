@@ -44,6 +44,7 @@
 
 #include "io/atomic_file.hpp"
 #include "judge/decisions_file.hpp"
+#include "judge/judge_study.hpp"
 #include "study/format.hpp"
 #include "study/manifest.hpp"
 #include "study/markdown_table.hpp"
@@ -193,25 +194,6 @@ std::vector<std::string> copied_samples(const std::vector<Judged>& judged, const
   return out;
 }
 
-
-// The rows judged from the study's results (`o.results`): what `results` read, and the runs each row
-// reads (a row naming what the study lacks throws, naming it).
-std::vector<Judged> judge_results(const Options& o, const std::vector<validation::Row>& rows,
-                                  std::optional<validation::StudyResults>& results) {
-  const std::vector<validation::ManifestLine> manifest = validation::read_manifest(o.results);
-  const std::string study = (fs::path(o.results) / "runs.tsv").string();
-  std::vector<Judged> judged;
-  for (const validation::Row& r : rows) judged.push_back({r, validation::resolve_runs(r, manifest, study), {}});
-  std::vector<validation::RowRuns> needed;
-  for (const Judged& j : judged) needed.push_back(j.runs);
-  results.emplace(o.results, manifest, needed);
-  for (Judged& j : judged) {
-    std::vector<std::pair<std::string, const validation::DensityResults*>> of_samples;
-    for (const std::string& s : results->samples()) of_samples.emplace_back(s, results->of(j.runs, s));
-    j.result = validation::evaluate(j.row, of_samples);
-  }
-  return judged;
-}
 
 // The rows judged again from the values `record` holds (judge_recorded throws, naming the file).
 std::vector<Judged> judge_record(const Options& o, const validation::RecordedValidation& record, const std::vector<validation::Row>& rows) {
@@ -364,7 +346,7 @@ int tool_main(int argc, char** argv) {
   std::optional<validation::StudyResults> results;
   std::vector<Judged> judged;
   try {
-    judged = record ? judge_record(o, *record, refs.rows) : judge_results(o, refs.rows, results);
+    judged = record ? judge_record(o, *record, refs.rows) : validation::judge_study(o.results, refs.rows, results);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s%s\n", record ? "--from-json " : "", e.what());
     return 2;
