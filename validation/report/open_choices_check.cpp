@@ -11,6 +11,7 @@
 #include "study/format.hpp"
 #include "study/json_file.hpp"
 #include "study/markdown_table.hpp"
+#include "study/posterior_summary.hpp"
 #include "study/settings.hpp"
 #include "study/stamp.hpp"
 
@@ -49,8 +50,8 @@ std::string open_choices_check_text(const fs::path& report) {
   std::error_code ec;
   if (!fs::exists(check_file, ec) || !fs::exists(posterior_file, ec)) return "";
   const nlohmann::json check = read_json_file(check_file.string());
-  const nlohmann::json posterior = read_json_file(posterior_file.string());
-  const std::string best = posterior.at("best_set").at("name").get<std::string>();
+  const PosteriorSummary posterior = read_posterior_summary(posterior_file.string());
+  const std::string& best = posterior.best_set;
 
   // The set the check judged: its record names it (validate records a study's variants).
   std::set<std::string> judged_sets;
@@ -62,17 +63,14 @@ std::string open_choices_check_text(const fs::path& report) {
            ", not the calibration's best set `" + best + "`, so it is not set beside the calibration here: `make open-choices-check` runs the best set.\n";
 
   const Stamp check_stamp = stamp_from_json(check.at("stamp"));
-  const Stamp calibration_stamp = stamp_from_json(posterior.at("stamp"));
+  const Stamp& calibration_stamp = posterior.stamp;
   const Stamp paper_stamp = read_paper_stamp(report);
   std::map<std::string, Verdict> at_calibration;
-  for (const auto& r : posterior.at("rows_consistent").at("per_row"))
-    at_calibration[r.at("name").get<std::string>()] = !r.contains("consistent_at_best_set")            ? Verdict::NotJudged
-                                                      : r.at("consistent_at_best_set").get<bool>() ? Verdict::Consistent
-                                                                                                   : Verdict::Inconsistent;
+  for (const PosteriorSummary::Row& r : posterior.rows)
+    at_calibration[r.name] = !r.consistent_at_best_set ? Verdict::NotJudged : *r.consistent_at_best_set ? Verdict::Consistent : Verdict::Inconsistent;
   std::map<std::string, Verdict> at_paper;
   if (fs::exists(report / "validation.json", ec)) at_paper = verdicts_of(read_json_file((report / "validation.json").string()));
 
-  const auto& counts = posterior.at("rows_consistent").at("best_set");
   std::string out = "`make open-choices-check` ran the calibration's best set, `" + best +
                     "`, as the paper study is run, and `validate` judged it against the same rows (every row with its values: `" +
                     check_dir + "/verdicts.md`). " + stamp_sentence(check_stamp) + ".";
@@ -80,9 +78,11 @@ std::string open_choices_check_text(const fs::path& report) {
     out += " ⚠ Another engine than the calibration's (`" + calibration_stamp.engine_source + "`).";
   out += "\n\nAt " + size_of(check_stamp) + " per density, **" + std::to_string(check.at("consistent").get<int>()) + " of " +
          std::to_string(check.at("total").get<int>()) + "** rows are consistent (" + std::to_string(check.at("inconsistent").get<int>()) +
-         " inconsistent, " + std::to_string(check.at("not_judged").get<int>()) + " not judged); at the calibration's " +
-         size_of(calibration_stamp) + ", the same set made " + std::to_string(counts.at("consistent").get<int>()) + " of " +
-         std::to_string(counts.at("judged").get<int>()) + " consistent.";
+         " inconsistent, " + std::to_string(check.at("not_judged").get<int>()) + " not judged); " +
+         (posterior.best_consistent && posterior.best_judged
+              ? "at the calibration's " + size_of(calibration_stamp) + ", the same set made " + std::to_string(*posterior.best_consistent) +
+                    " of " + std::to_string(*posterior.best_judged) + " consistent."
+              : "its count at the calibration's " + size_of(calibration_stamp) + " is not recorded in the calibration's posterior.json.");
   if (!check.at("complete").get<bool>())
     out += " **Incomplete:** " + std::to_string(check.at("missing_results").size()) +
            " result file(s) missing; the rows are judged on what is there.";
