@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "judge/verdicts.hpp"
+#include "judge/weak_verdicts.hpp"
 #include "report/other_sections.hpp"
 #include "study/format.hpp"
 #include "study/json_file.hpp"
@@ -27,6 +28,14 @@ const char* const check_dir = "calibration/paper_open_choices/best";
 std::map<std::string, Verdict> verdicts_of(const nlohmann::json& validation) {
   std::map<std::string, Verdict> out;
   for (const auto& r : validation.at("rows")) out[r.at("name").get<std::string>()] = verdict_from_string(r.at("verdict").get<std::string>());
+  return out;
+}
+
+// The rows of a validation.json whose verdict carries a warning (weak_verdicts.hpp).
+std::set<std::string> weak_rows(const nlohmann::json& validation) {
+  std::set<std::string> out;
+  for (const auto& r : validation.at("rows"))
+    if (r.contains("warnings") && !r.at("warnings").empty()) out.insert(r.at("name").get<std::string>());
   return out;
 }
 
@@ -69,7 +78,12 @@ std::string open_choices_check_text(const fs::path& report) {
   for (const PosteriorSummary::Row& r : posterior.rows)
     at_calibration[r.name] = !r.consistent_at_best_set ? Verdict::NotJudged : *r.consistent_at_best_set ? Verdict::Consistent : Verdict::Inconsistent;
   std::map<std::string, Verdict> at_paper;
-  if (fs::exists(report / "validation.json", ec)) at_paper = verdicts_of(read_json_file((report / "validation.json").string()));
+  std::set<std::string> weak_at_paper;
+  if (fs::exists(report / "validation.json", ec)) {
+    const nlohmann::json paper_record = read_json_file((report / "validation.json").string());
+    at_paper = verdicts_of(paper_record), weak_at_paper = weak_rows(paper_record);
+  }
+  const std::set<std::string> weak_checked = weak_rows(check);
 
   std::string out = "`make open-choices-check` ran the calibration's best set, `" + best +
                     "`, as the paper study is run, and `validate` judged it against the same rows (every row with its values: `" +
@@ -94,19 +108,23 @@ std::string open_choices_check_text(const fs::path& report) {
   headings.push_back("best set, calibration (" + size_of(calibration_stamp) + ")");
   headings.push_back("best set, check (" + size_of(check_stamp) + ")");
   MarkdownTable table(headings);
+  bool any_weak = false;
   for (const auto& r : check.at("rows")) {
     const std::string name = r.at("name").get<std::string>();
     const Verdict checked = verdict_from_string(r.at("verdict").get<std::string>());
     const Verdict calibrated = verdict_in(at_calibration, name), paper = verdict_in(at_paper, name);
     if (checked == Verdict::Consistent && calibrated == Verdict::Consistent && (at_paper.empty() || paper == Verdict::Consistent)) continue;
     std::vector<std::string> cells = {cell(name)};
-    if (!at_paper.empty()) cells.push_back(mark(paper));
-    cells.push_back(mark(calibrated));
-    cells.push_back(mark(checked));
+    // ⚠ on a weak verdict, as everywhere (the calibration's posterior.json records no warnings).
+    if (!at_paper.empty()) cells.push_back(verdict_words(paper, weak_at_paper.count(name) > 0));
+    cells.push_back(verdict_words(calibrated));
+    cells.push_back(verdict_words(checked, weak_checked.count(name) > 0));
+    any_weak = any_weak || weak_at_paper.count(name) || weak_checked.count(name);
     table.row(cells);
   }
   if (table.rows() == 0) return out + "Every row is consistent in each.\n";
-  return out + "The rows not consistent in each (the others are):\n\n" + table.text();
+  return out + "The rows not consistent in each (the others are):\n\n" + table.text() +
+         (any_weak ? "\n" + weak_legend() + " (each row's warning: its study's `verdicts.md`).\n" : std::string());
 }
 
 }  // namespace validation
