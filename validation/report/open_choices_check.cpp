@@ -1,5 +1,6 @@
 #include "report/open_choices_check.hpp"
 
+#include <algorithm>
 #include <map>
 #include <set>
 #include <vector>
@@ -31,11 +32,12 @@ std::map<std::string, Verdict> verdicts_of(const nlohmann::json& validation) {
   return out;
 }
 
-// The rows of a validation.json whose verdict carries a warning (weak_verdicts.hpp).
-std::set<std::string> weak_rows(const nlohmann::json& validation) {
-  std::set<std::string> out;
+// The rows of a validation.json whose verdict carries a warning, each with its kinds (weak_verdicts.hpp).
+std::map<std::string, std::vector<Weakness>> weak_rows(const nlohmann::json& validation) {
+  std::map<std::string, std::vector<Weakness>> out;
   for (const auto& r : validation.at("rows"))
-    if (r.contains("warnings") && !r.at("warnings").empty()) out.insert(r.at("name").get<std::string>());
+    if (r.contains("warnings"))
+      for (const auto& w : r.at("warnings")) out[r.at("name").get<std::string>()].push_back(weakness_of(w.get<std::string>()));
   return out;
 }
 
@@ -78,12 +80,12 @@ std::string open_choices_check_text(const fs::path& report) {
   for (const PosteriorSummary::Row& r : posterior.rows)
     at_calibration[r.name] = !r.consistent_at_best_set ? Verdict::NotJudged : *r.consistent_at_best_set ? Verdict::Consistent : Verdict::Inconsistent;
   std::map<std::string, Verdict> at_paper;
-  std::set<std::string> weak_at_paper;
+  std::map<std::string, std::vector<Weakness>> weak_at_paper;
   if (fs::exists(report / "validation.json", ec)) {
     const nlohmann::json paper_record = read_json_file((report / "validation.json").string());
     at_paper = verdicts_of(paper_record), weak_at_paper = weak_rows(paper_record);
   }
-  const std::set<std::string> weak_checked = weak_rows(check);
+  const std::map<std::string, std::vector<Weakness>> weak_checked = weak_rows(check);
 
   std::string out = "`make open-choices-check` ran the calibration's best set, `" + best +
                     "`, as the paper study is run, and `validate` judged it against the same rows (every row with its values: `" +
@@ -108,7 +110,7 @@ std::string open_choices_check_text(const fs::path& report) {
   headings.push_back("best set, calibration (" + size_of(calibration_stamp) + ")");
   headings.push_back("best set, check (" + size_of(check_stamp) + ")");
   MarkdownTable table(headings);
-  bool any_weak = false;
+  std::vector<Weakness> kinds;  // of the ⚠ the table shows
   for (const auto& r : check.at("rows")) {
     const std::string name = r.at("name").get<std::string>();
     const Verdict checked = verdict_from_string(r.at("verdict").get<std::string>());
@@ -119,12 +121,17 @@ std::string open_choices_check_text(const fs::path& report) {
     if (!at_paper.empty()) cells.push_back(verdict_words(paper, weak_at_paper.count(name) > 0));
     cells.push_back(verdict_words(calibrated));
     cells.push_back(verdict_words(checked, weak_checked.count(name) > 0));
-    any_weak = any_weak || weak_at_paper.count(name) || weak_checked.count(name);
+    using Weak = const std::map<std::string, std::vector<Weakness>>;
+    for (Weak* weak : {static_cast<Weak*>(&weak_at_paper), &weak_checked})
+      if (const auto it = weak->find(name); it != weak->end())
+        for (Weakness k : it->second)
+          if (std::find(kinds.begin(), kinds.end(), k) == kinds.end()) kinds.push_back(k);
     table.row(cells);
   }
+  std::sort(kinds.begin(), kinds.end());
   if (table.rows() == 0) return out + "Every row is consistent in each.\n";
   return out + "The rows not consistent in each (the others are):\n\n" + table.text() +
-         (any_weak ? "\n" + weak_legend() + " (each row's warning: its study's `verdicts.md`).\n" : std::string());
+         (kinds.empty() ? std::string() : "\n" + weak_legend(kinds) + " (each row's warning: its study's `verdicts.md`).\n");
 }
 
 }  // namespace validation
