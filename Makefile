@@ -201,7 +201,8 @@ decisions: tools
 # Each section another study feeds (compare-runs, docs/make-targets.md): from the study's results;
 # without them, decisions and convergence re-drawn from their committed summaries, the others kept.
 decisions-report: tools
-	$(SECTION) decisions $(DECISIONS) reports/decisions --references reference_data/paper.yaml --ensemble $(RESULTS) $(DRAW) --without-results redraw
+	$(SECTION) decisions $(DECISIONS) reports/decisions --references reference_data/paper.yaml --ensemble $(RESULTS) $(DRAW) \
+	  --without-results redraw --ensemble-json reports/validation.json
 readings-report: tools
 	@for r in $(READINGS); do $(SECTION) decisions results/readings_$$r/paper reports/readings/$$r --references reference_data/paper.yaml \
 	  --baseline-results $(RESULTS) --ensemble $(RESULTS) $(DRAW) --without-results keep || exit 1; done

@@ -51,9 +51,12 @@ py::object calibrate(const std::string& file, const std::string& profile, int jo
     posterior.append(d);
   }
   py::dict d;
-  d["name"] = c.name, d["report"] = c.report, d["results"] = outcome->results, d["profile"] = outcome->profile;
+  // The first size's (every set's) folder, profile and sets; the runs of every size.
+  int runs = 0;
+  for (const calibration::SizeOutcome& s : outcome->sizes) runs += s.runs;
+  d["name"] = c.name, d["report"] = c.report, d["results"] = outcome->first().results, d["profile"] = outcome->first().profile;
   d["converged"] = outcome->converged, d["stop_reason"] = outcome->stop_reason;
-  d["iterations"] = outcome->iterations.size(), d["sets"] = outcome->sets.size(), d["runs"] = outcome->runs;
+  d["iterations"] = outcome->iterations.size(), d["sets"] = outcome->first().sets.size(), d["runs"] = runs;
   d["unscored"] = outcome->unscored, d["posterior"] = posterior;
   return d;
 }

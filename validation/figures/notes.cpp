@@ -5,6 +5,7 @@
 
 #include "figures/figures.hpp"
 #include "study/format.hpp"
+#include "study/manifest.hpp"
 
 namespace validation {
 
@@ -23,6 +24,28 @@ std::string range_text(double lo, double hi) {
 
 std::string verdict_phrase(Verdict v) {
   return v == Verdict::Consistent ? "as in the paper" : v == Verdict::Inconsistent ? "unlike the paper" : "not judged";
+}
+
+std::string verdict_phrase(const RowResult& r) { return verdict_phrase(r.verdict) + (r.warnings.empty() ? "" : " ⚠"); }
+
+const std::vector<NoteVerdict>& note_verdicts() {
+  static const std::vector<NoteVerdict> list = [] {
+    std::vector<NoteVerdict> l;
+    for (const std::string& d : paper_densities()) {
+      l.push_back({"fig00.verdict_e0_" + d, "void_ratio_after_preparation", d});
+      l.push_back({"fig00.verdict_cn_" + d, "coordination_after_preparation", d});
+      l.push_back({"fig02.verdict_" + d, "cell_side_cm_after_preparation", d});
+      l.push_back({"fig07.verdict_" + d, d == "dense" ? "ev_growth_magnitude" : "ev_growth", d});
+      l.push_back({"fig10.verdict_" + d, d == "dense" ? "cn_change_magnitude" : "cn_change", d});
+      l.push_back({"fig11.verdict_" + d, d == "loose" ? "sliding_change" : "sliding_change_magnitude", d});
+      l.push_back({"fig13.verdict_" + d, "qp_strong_fabric_slope", d});
+    }
+    l.push_back({"fig06.verdict_loose", "ev_after_cycle", "loose"});
+    l.push_back({"fig09.verdict_loose", "strain_increment_alignment_gain", "loose"});
+    l.push_back({"fig09.verdict_dense", "strain_increment_alignment_gain_magnitude", "dense"});
+    return l;
+  }();
+  return list;
 }
 
 const std::vector<double>* cycle_row(const Table& t, int c) {
@@ -44,7 +67,7 @@ const RowResult* NoteContext::row_result(const std::string& quantity, const std:
 
 std::string NoteContext::phrase(const std::string& quantity, const std::string& density) {
   const RowResult* r = row_result(quantity, density);
-  return r ? verdict_phrase(r->verdict) : std::string("not judged at this size: no row in this profile");
+  return r ? verdict_phrase(*r) : std::string("not judged at this size: no row in this profile");
 }
 
 const RowResult* NoteContext::values_of(const std::string& quantity, const std::string& density) {

@@ -29,6 +29,17 @@ std::string range_text(double lo, double hi);
 std::string range_fixed(double lo, double hi, int decimals);
 // "as in the paper", "unlike the paper", or "not judged" (the row's verdict; no row: "not judged").
 std::string verdict_phrase(Verdict v);
+// The same of a judged row, with " ⚠" after it when its verdict is weak (it carries a warning:
+// judge/weak_verdicts.hpp), as the verdict table marks it.
+std::string verdict_phrase(const RowResult& r);
+
+// Every verdict a figure note quotes, declared once: its key and the row it is the verdict of. The
+// figures' notes fill them from the rows judged on the results (NoteContext::phrase); the report
+// fills them again from validation.json, so that a note says what the verdict table says.
+struct NoteVerdict {
+  std::string key, quantity, density;
+};
+const std::vector<NoteVerdict>& note_verdicts();
 
 // The smallest and largest of the values added.
 struct MinMax {

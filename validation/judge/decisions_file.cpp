@@ -33,32 +33,114 @@ std::vector<std::string> explaining_readings(const std::string& explanation) {
 
 }  // namespace
 
+std::optional<double> DecisionsFile::Finding::mean_shift(const std::string& name) const {
+  const Reading* r = reading(name);
+  if (!r || !r->mean || !baseline_mean) return std::nullopt;
+  return *r->mean - *baseline_mean;
+}
+
+const DecisionsFile::Reading* DecisionsFile::Finding::reading(const std::string& name) const {
+  for (const auto& [n, r] : readings)
+    if (n == name) return &r;
+  return nullptr;
+}
+
+DecisionsFile::Finding finding_from_json(const nlohmann::json& row) {
+  DecisionsFile::Finding finding;
+  finding.group = row.contains("group") && row.at("group").is_string() ? row.at("group").get<std::string>() : "rows";
+  finding.baseline_mean = number_at(row, "baseline_mean");
+  finding.baseline_sd = number_at(row, "baseline_sd");
+  if (row.contains("baseline_verdict") && row.at("baseline_verdict").is_string())
+    finding.baseline_verdict = verdict_from_string(row.at("baseline_verdict").get<std::string>());
+  if (row.contains("readings"))
+    for (const auto& [name, effect] : row.at("readings").items()) {
+      DecisionsFile::Reading r;
+      r.mean = number_at(effect, "mean");
+      r.shift_sd = number_at(effect, "shift_sd");
+      if (effect.contains("verdict") && effect.at("verdict").is_string()) r.verdict = verdict_from_string(effect.at("verdict").get<std::string>());
+      if (effect.contains("missing_runs")) r.missing_runs = effect.at("missing_runs").get<std::vector<std::string>>();
+      finding.readings.emplace_back(name, std::move(r));
+    }
+  finding.explanation = row.at("explanation").get<std::string>();
+  finding.judged = row.contains("judged") ? row.at("judged").get<bool>() : finding.explanation.rfind("not judged", 0) != 0;
+  finding.explained_by = row.contains("made_consistent_by") ? row.at("made_consistent_by").get<std::vector<std::string>>()
+                                                            : explaining_readings(finding.explanation);
+  return finding;
+}
+
 DecisionsFile read_decisions_file(const std::string& file, const std::vector<Row>& rows) {
   std::ifstream in(file);
   if (!in) throw std::runtime_error("cannot be read");
-  const nlohmann::json j = nlohmann::json::parse(in);
+  // ordered: the readings in the file's order, as the study ran them
+  const nlohmann::ordered_json oj = nlohmann::ordered_json::parse(in);
+  const nlohmann::json j = oj;  // the same, for lookups
+  if (!j.is_object() || !j.contains("rows") || !j.at("rows").is_array()) throw std::runtime_error("has no list of rows");
   DecisionsFile f;
   f.path = file;
+  f.schema = j.contains("schema") && j.at("schema").is_number() ? j.at("schema").get<int>() : 1;
+  if (j.contains("baseline") && j.at("baseline").is_string()) f.baseline = j.at("baseline").get<std::string>();
+  if (j.contains("baseline_results") && j.at("baseline_results").is_string()) f.baseline_results = j.at("baseline_results").get<std::string>();
   if (const auto p = number_at(j, "particles")) f.particles = std::lround(*p);
   if (const auto n = number_at(j, "samples")) f.samples = static_cast<std::size_t>(std::lround(*n));
-  const bool restate = !j.contains("schema");  // written before the floor and the phrase
+  if (j.contains("stamp")) f.stamp = stamp_from_json(j.at("stamp"));
+  if (const auto n = number_at(j, "missing_results")) f.missing_results = static_cast<std::size_t>(std::lround(*n));
+  if (oj.contains("settings") && oj.at("settings").is_object())
+    for (const auto& [reading, text] : oj.at("settings").items())
+      if (text.is_string()) f.settings.emplace_back(reading, text.get<std::string>());
   std::map<std::string, double> resolution;
   for (const Row& r : rows) resolution[r.name] = r.resolution;
-  for (const nlohmann::json& row : j.at("rows")) {
+  for (const nlohmann::ordered_json& row : oj.at("rows")) {
     const std::string name = row.at("name").get<std::string>();
-    DecisionsFile::Finding finding;
-    finding.explanation = row.at("explanation").get<std::string>();
-    finding.judged = row.contains("judged") ? row.at("judged").get<bool>() : finding.explanation.rfind("not judged", 0) != 0;
-    finding.explained_by = row.contains("made_consistent_by") ? row.at("made_consistent_by").get<std::vector<std::string>>()
-                                                              : explaining_readings(finding.explanation);
-    if (const auto base = number_at(row, "baseline_mean"); base && row.contains("readings"))
+    DecisionsFile::Finding finding = finding_from_json(nlohmann::json(row));
+    // The readings in the file's order (nlohmann::json sorts its keys).
+    if (row.contains("readings")) {
+      std::vector<std::pair<std::string, DecisionsFile::Reading>> ordered;
       for (const auto& [reading, effect] : row.at("readings").items())
-        if (const auto mean = number_at(effect, "mean")) finding.mean_shift[reading] = *mean - *base;
-    finding.baseline_sd = number_at(row, "baseline_sd").value_or(0.0);
-    if (restate) finding.explanation = restate_shifts(finding.explanation, row, resolution.count(name) ? resolution.at(name) : 0.0);
+        if (const DecisionsFile::Reading* r = finding.reading(reading)) ordered.emplace_back(reading, *r);
+      finding.readings = std::move(ordered);
+    }
+    if (f.schema < 2) finding.explanation = restate_shifts(finding.explanation, finding, resolution.count(name) ? resolution.at(name) : 0.0);
+    if (!f.rows.count(name)) f.order.push_back(name);
     f.rows[name] = std::move(finding);
   }
   return f;
+}
+
+nlohmann::ordered_json decisions_file_json(const DecisionsFile& f) {
+  using json = nlohmann::ordered_json;
+  const auto value = [](const std::optional<double>& x) { return x && std::isfinite(*x) ? json(*x) : json(nullptr); };
+  json rows = json::array();
+  for (const std::string& name : f.order) {
+    const DecisionsFile::Finding& d = f.rows.at(name);
+    json readings = json::object();
+    for (const auto& [reading, r] : d.readings) {
+      readings[reading] = {{"mean", value(r.mean)}, {"shift_sd", value(r.shift_sd)}, {"verdict", to_string(r.verdict)}};
+      if (!r.missing_runs.empty()) readings[reading]["missing_runs"] = r.missing_runs;
+    }
+    rows.push_back({{"name", name},
+                    {"group", d.group},
+                    {"baseline_mean", value(d.baseline_mean)},
+                    {"baseline_sd", value(d.baseline_sd)},
+                    {"baseline_verdict", to_string(d.baseline_verdict)},
+                    {"readings", readings},
+                    {"judged", d.judged},
+                    {"made_consistent_by", d.explained_by},
+                    {"explanation", d.explanation}});
+  }
+  json out = {{"schema", 2}, {"baseline", f.baseline}};
+  if (!f.baseline_results.empty()) out["baseline_results"] = f.baseline_results;
+  out["particles"] = f.particles ? json(*f.particles) : json(nullptr);
+  out["samples"] = f.samples.value_or(0);
+  out["stamp"] = stamp_json(f.stamp);  // the engine and baseline its numbers come from (the report says them)
+  out["shift_unit"] = "max(baseline sd, the row's resolution)";
+  if (!f.settings.empty()) {
+    json settings = json::object();
+    for (const auto& [reading, text] : f.settings) settings[reading] = text;
+    out["settings"] = settings;
+  }
+  out["rows"] = rows;
+  out["missing_results"] = f.missing_results;
+  return out;
 }
 
 std::string size_label(const DecisionsFile& f) {
@@ -98,9 +180,9 @@ std::optional<std::string> turned_inconsistent(const DecisionsFile& file, const 
                                                const RowResult& full) {
   const auto finding = file.rows.find(row.name);
   if (full.verdict != Verdict::Consistent || finding == file.rows.end() || !finding->second.judged) return std::nullopt;
-  const auto by = finding->second.mean_shift.find(reading);
-  if (by == finding->second.mean_shift.end() || shifted(row, full, by->second).verdict != Verdict::Inconsistent) return std::nullopt;
-  return row.name + " (" + shift_phrase(shift_in_sd(by->second, finding->second.baseline_sd, row.resolution)) + ")";
+  const std::optional<double> by = finding->second.mean_shift(reading);
+  if (!by || shifted(row, full, *by).verdict != Verdict::Inconsistent) return std::nullopt;
+  return row.name + " (" + shift_phrase(shift_in_sd(*by, finding->second.baseline_sd.value_or(0.0), row.resolution)) + ")";
 }
 
 std::string cause_text(const std::vector<DecisionsFile>& files, const std::string& row, const TurnsInconsistent& side_effects) {
@@ -170,7 +252,7 @@ std::string cause_line(const std::vector<DecisionsFile>& files, const std::strin
   return line;
 }
 
-std::string restate_shifts(const std::string& explanation, const nlohmann::json& row, double resolution) {
+std::string restate_shifts(const std::string& explanation, const DecisionsFile::Finding& finding, double resolution) {
   // "<reading> (<anything but parentheses><number>[ (beyond ±10)] sd": the forms explain() wrote.
   static const std::regex shift(R"(([A-Za-z0-9_.+-]+) \(([^()]*?)([-+]?[0-9]+(?:\.[0-9]+)?(?:e[-+]?[0-9]+)?)(?: \(beyond ±10\))? sd)");
   std::string out;
@@ -178,15 +260,9 @@ std::string restate_shifts(const std::string& explanation, const nlohmann::json&
   for (std::smatch m; std::regex_search(from, explanation.cend(), m, shift); from = m[0].second) {
     const std::string reading = m[1].str();
     double z = std::stod(m[3].str());
-    const nlohmann::json* readings = row.contains("readings") ? &row.at("readings") : nullptr;
-    if (readings && readings->contains(reading)) {
-      const auto mean = number_at(readings->at(reading), "mean");
-      const auto base = number_at(row, "baseline_mean");
-      const double sd = number_at(row, "baseline_sd").value_or(0.0);
-      if (mean && base) {
-        const double again = shift_in_sd(*mean - *base, sd, resolution);
-        if (std::isfinite(again)) z = again;
-      }
+    if (const std::optional<double> by = finding.mean_shift(reading)) {
+      const double again = shift_in_sd(*by, finding.baseline_sd.value_or(0.0), resolution);
+      if (std::isfinite(again)) z = again;
     }
     out.append(from, m[0].first);
     out += reading + " (" + m[2].str() + shift_phrase(z);

@@ -14,32 +14,64 @@
 #include <nlohmann/json.hpp>
 
 #include "judge/rows.hpp"
+#include "study/stamp.hpp"
 
 namespace validation {
 
+// decisions.json, declared once: compare-runs decisions writes it (write_decisions_file), and
+// validate --decisions, compare-runs decisions --from-json and the report read it
+// (read_decisions_file). A value the file does not record is absent (std::nullopt), never a
+// placeholder.
 struct DecisionsFile {
-  std::string path;
+  std::string path;                    // where it was read from ("" for one being written)
+  int schema = 2;                      // 1: written before shifts were counted in max(sd, resolution) (no `schema` key)
+  std::string baseline = "baseline";   // the baseline reading's name
+  std::string baseline_results;        // the study whose samples are the baseline ("": this study's own)
   std::optional<long> particles;       // spheres per sample, when the file records it
   std::optional<std::size_t> samples;  // the baseline's samples, when the file records them
+  Stamp stamp;                         // the engine and baseline its numbers come from
+  std::size_t missing_results = 0;     // result files missing or not complete
+  // Each reading's settings as runs.tsv gives them, the baseline first ("as written"); empty in a
+  // file written before they were recorded.
+  std::vector<std::pair<std::string, std::string>> settings;
+  // What a reading did to a row, on this study's own samples.
+  struct Reading {
+    std::optional<double> mean;             // the reading's ensemble mean (none: no value)
+    std::optional<double> shift_sd;         // as written: (mean - baseline mean) / max(baseline sd, resolution)
+    Verdict verdict = Verdict::NotJudged;
+    std::vector<std::string> missing_runs;  // runs the row reads that a sample of the reading lacks ("seed3 prepare")
+  };
   struct Finding {
+    std::string group;
+    std::optional<double> baseline_mean, baseline_sd;  // the baseline's ensemble (sd: two samples or more)
+    Verdict baseline_verdict = Verdict::NotJudged;     // on this study's own samples
+    std::vector<std::pair<std::string, Reading>> readings;  // every reading but the baseline, in the study's order
     std::string explanation;
     bool judged = false;  // the study judged the row (a file without `judged`: its explanation does not start "not judged")
     // The readings under which the row is consistent (`made_consistent_by`; a file without it: the
     // names explain() lists after "consistent under ").
     std::vector<std::string> explained_by;
-    // Each reading's shift of the row's mean from the baseline's, in the row's units (its `mean`
-    // less `baseline_mean`), and the baseline's sd: what validate applies to the full-size ensemble.
-    std::map<std::string, double> mean_shift;
-    double baseline_sd = 0;
+    // A reading's shift of the row's mean from the baseline's, in the row's units (its `mean` less
+    // `baseline_mean`): what validate applies to the full-size ensemble. None without both means.
+    std::optional<double> mean_shift(const std::string& reading) const;
+    const Reading* reading(const std::string& name) const;
   };
+  std::vector<std::string> order;       // the rows' names, in the file's order
   std::map<std::string, Finding> rows;  // by row name
 };
 
 // FILE's findings. A file written before shifts were counted in max(sd, resolution) and phrased by
 // shift_phrase() (no `schema`: the committed 1,000-sphere file) has its explanations' shifts
-// restated (restate_shifts) with each row's resolution from `rows`. Throws on a file that cannot
-// be read or parsed.
+// restated (restate_shifts) with each row's resolution from `rows`. Throws std::runtime_error
+// naming what is wrong (a key missing or of the wrong type) on a file that cannot be read or parsed.
 DecisionsFile read_decisions_file(const std::string& file, const std::vector<Row>& rows);
+
+// One row of decisions.json's `rows` (its explanation as written: read_decisions_file restates a
+// schema-1 file's). Throws std::runtime_error naming a key missing or of the wrong type.
+DecisionsFile::Finding finding_from_json(const nlohmann::json& row);
+
+// `f` as decisions.json holds it (schema 2; the values as given: the writer rounds them).
+nlohmann::ordered_json decisions_file_json(const DecisionsFile& f);
 
 // "8,000 spheres, 3 samples" from the file's own fields, or "size not recorded" without `particles`.
 std::string size_label(const DecisionsFile& f);
@@ -81,9 +113,9 @@ std::string cause_text(const std::vector<DecisionsFile>& files, const std::strin
 std::string cause_line(const std::vector<DecisionsFile>& files, const std::string& row, const TurnsInconsistent& side_effects = {},
                        std::size_t limit = 58);
 
-// `explanation` with each shift "<reading> (... X sd" re-stated from the row's own numbers in
-// decisions.json, (mean - baseline_mean) / max(baseline_sd, resolution), in shift_phrase()'s
-// words ("beyond +10 sd (+57)"); a reading whose numbers are not there keeps its value, rephrased.
-std::string restate_shifts(const std::string& explanation, const nlohmann::json& row, double resolution);
+// `explanation` with each shift "<reading> (... X sd" re-stated from the finding's own numbers,
+// (mean - baseline_mean) / max(baseline_sd, resolution), in shift_phrase()'s words ("beyond +10 sd
+// (+57)"); a reading whose numbers are not there keeps its value, rephrased.
+std::string restate_shifts(const std::string& explanation, const DecisionsFile::Finding& finding, double resolution);
 
 }  // namespace validation

@@ -1,4 +1,5 @@
 #include "judge/rows.hpp"
+#include "judge/weak_verdicts.hpp"
 
 #include <algorithm>
 #include <map>
@@ -92,13 +93,6 @@ std::string naming_row(std::string message, const dem::Section& s, const std::st
   return message;
 }
 
-std::string three_digits(double x) {
-  std::ostringstream s;
-  s.precision(3);
-  s << x;
-  return s.str();
-}
-
 // judge_values' warnings: each distinct misfit of the samples' values, a consistent verdict with no
 // sample in the paper's region, and an interval too wide for the tolerance (rule interval, check
 // within, a tolerance above 0).
@@ -110,15 +104,9 @@ std::vector<std::string> warnings_of(const Row& row, const RowResult& r) {
   // Consistent only because the interval of one sample is wide: no sample's own value lies in the
   // paper's region (e.g. a coordination number of 6.08-6.14 in every sample against 5.94 +/- 0.15).
   if (row.rule == "interval" && r.verdict == Verdict::Consistent && r.valued > 0 && r.holds == 0)
-    out.push_back("consistent by width only: none of the " + std::to_string(r.valued) +
+    out.push_back(std::string(width_only_words) + ": none of the " + std::to_string(r.valued) +
                   " samples lies in the paper's region; the interval of one sample reaches it");
-  if (row.rule == "interval" && row.check == "within" && row.tolerance > 0 && r.spread.low && r.spread.high) {
-    const double width = *r.spread.high - *r.spread.low;
-    if (width > too_few_width * row.tolerance)
-      out.push_back("samples too few to judge: the interval of one sample (" + three_digits(width) + " wide, " +
-                    std::to_string(r.valued) + " samples) is " + three_digits(width / row.tolerance) +
-                    " times the tolerance " + number(row.tolerance) + " (more than " + number(too_few_width) + ")");
-  }
+  if (const auto w = too_few_warning(row, r.spread)) out.push_back(*w);
   return out;
 }
 
@@ -184,13 +172,16 @@ RowResult judge_values(const Row& row, std::vector<RowResult::PerSample> samples
     out.verdict = judge(out.spread, out.paper);
   if (row.quasi_static) out.verdict = Verdict::NotJudged;
   out.warnings = warnings_of(row, out);
-  if (row.quasi_static) {
+  if (row.quasi_static)
     out.warnings.insert(out.warnings.begin(),
-                        "not judged: the reference holds in the quasi-static limit (I -> 0) and these runs are sheared at a "
-                        "finite rate; the critical-state section compares it at I -> 0");
-  }
+                        std::string(quasi_static_words) + " (I -> 0) and these runs are sheared at a finite rate; " +
+                            (taken_to_quasi_static_limit(row.quantity)
+                                 ? "the critical-state section compares it with its rate series taken to I -> 0"
+                                 : "no section takes " + row.quantity + " to I -> 0"));
   return out;
 }
+
+bool taken_to_quasi_static_limit(const std::string& quantity) { return quantity == "critical_state_friction_angle"; }
 
 RowResult shifted(const Row& row, const RowResult& r, double by) {
   std::vector<RowResult::PerSample> samples = r.samples;

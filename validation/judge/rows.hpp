@@ -74,6 +74,12 @@ struct RowResult {
 // (2 samples: t(0.975, 1) = 12.7 makes it the mean ± 15.6 sd).
 constexpr double too_few_width = 4;
 
+// The quantities the critical-state section takes to the quasi-static limit I -> 0 (its rate
+// series, compare-runs critical-state --rates: the friction angle at the critical state). A
+// quasi-static row of one of them is set beside that limit there; the warning of a quasi-static
+// row names the section only for these.
+bool taken_to_quasi_static_limit(const std::string& quantity);
+
 // The spread, the samples that hold and the verdict of a row's per-sample values.
 RowResult judge_values(const Row& row, std::vector<RowResult::PerSample> samples);
 

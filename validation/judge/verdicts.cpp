@@ -1,5 +1,7 @@
 #include "judge/verdicts.hpp"
+#include "judge/weak_verdicts.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -175,11 +177,15 @@ std::string verdicts_text(const std::vector<Judged>& judged, const VerdictsConte
   MarkdownTable compact(headings);
   MarkdownTable warned({"row", "verdict", "warning"});
   const TurnsInconsistent side_effects = side_effects_of(judged);
+  std::size_t readings = 0;  // rows whose bound is this project's reading
   for (std::size_t i = 0; i < judged.size(); ++i) {
     const Judged& j = judged[i];
     for (const std::string& w : j.result.warnings) warned.row({j.row.name, mark(j.result.verdict), w});
-    std::vector<std::string> cells = {short_row_name(j.row.name), statement(j.row), mean_sd(j.result), holds_in(j.result),
-                                      std::string(mark(j.result.verdict)) + (j.result.warnings.empty() ? "" : " ⚠")};
+    // † on a bound this project reads into the reference's words (a trend or an ordering: it gives no number).
+    const bool reading = j.row.rule != "interval";
+    readings += reading;
+    std::vector<std::string> cells = {short_row_name(j.row.name), statement(j.row) + (reading ? " †" : ""), mean_sd(j.result),
+                                      holds_in(j.result), verdict_words(j.result.verdict, !j.result.warnings.empty())};
     if (c.with_causes) {
       if (j.result.verdict == Verdict::Consistent) {
         cells.push_back("—");
@@ -206,9 +212,18 @@ std::string verdicts_text(const std::vector<Judged>& judged, const VerdictsConte
         << (c.missing_samples ? ", and " + std::to_string(c.missing_samples) + " sample(s) that `runs.tsv` lists have no folder" : std::string())
         << "; the rows are judged on what is there.\n";
   out << "\n" << compact.text();
-  if (warned.rows())
-    out << "\n⚠: a verdict that cannot mean much (a quantity that does not fit the runs it read, or an interval of one sample "
-           "wider than " << number(too_few_width) << " times the row's tolerance):\n\n" << warned.text();
+  if (readings)
+    out << "\n†: a bound this project reads into the " << c.label << "'s words (\"grows\", \"independent of cycles\": a trend or an "
+        << "ordering, for which the " << c.label << " gives no number); every other value is the " << c.label
+        << "'s, ± the tolerance this project reads into it (each row's reason: its source and why that tolerance).\n";
+  if (warned.rows()) {
+    std::vector<Weakness> kinds;  // the kinds the table shows, each once, in the order of the enum
+    for (const Judged& j : judged)
+      for (Weakness k : weaknesses(j.result))
+        if (std::find(kinds.begin(), kinds.end(), k) == kinds.end()) kinds.push_back(k);
+    std::sort(kinds.begin(), kinds.end());
+    out << "\n" << weak_legend(kinds) << ":\n\n" << warned.text();
+  }
   return out.str();
 }
 

@@ -25,8 +25,26 @@ const std::vector<OtherStudySection>& other_study_sections() {
       {"Appendix: Against published DEM values", "file.literature", "literature/validation.json", "stamp", ""},
       {"Appendix: Thornton's face-centred cubic array", "file.literature_fcc", "literature/fcc/validation.json", "stamp",
        "pipeline/studies/fcc_thornton.yaml"},
+      // The parts of the critical-state section other studies feed (compare-runs critical-state
+      // --ensemble, --rates): each study's own stamp, beside the section's in its stamp.json.
+      {"The critical state on ", "file.critical_state", "critical_state/stamp.json", "ensemble", "", 3},
+      {"Rate convergence: ", "file.critical_state", "critical_state/stamp.json", "rates", "", 3},
+      // The earlier baseline (report --baseline; the Makefile's BASELINE): its validation.json's stamp.
+      // Its cell was kept orthorhombic: a baseline of its own by design.
+      {"Appendix: This baseline against the earlier one (orthorhombic cell)", "baseline.table", "baselines/orthorhombic_validation.json",
+       "stamp", "reports/baselines/orthorhombic_validation.json"},
+      // make bench's packings are its own (dem-bench): bench.json's stamp.
+      {"Appendix: Performance", "file.bench", "bench.json", "stamp", "engine/bench (dem-bench's packings)"},
   };
   return list;
+}
+
+std::string section_shown(const OtherStudySection& section) {
+  const auto name = [](const std::string& heading) { return heading.rfind("Appendix: ", 0) == 0 ? heading.substr(10) : heading; };
+  if (section.level == 2) return name(section.heading);
+  for (const OtherStudySection& s : other_study_sections())
+    if (s.level == 2 && s.table_key == section.table_key) return name(s.heading) + " (its " + section.stamp_key + " part)";
+  return name(section.heading);
 }
 
 namespace {
@@ -115,10 +133,14 @@ StampedReport stamp_sections(const std::string& text, const fs::path& report, co
                              const Stamp& paper, bool allow_other) {
   StampedReport out{text, {}, {}};
   for (const OtherStudySection& section : other_study_sections()) {
-    const std::string heading = "## " + section.heading;
-    const std::size_t at = out.text.find("\n" + heading + "\n");
-    if (at == std::string::npos)
-      throw std::runtime_error("the report has no heading '" + heading + "' (validation/report/other_sections.cpp lists it: the list and the template disagree)");
+    const std::string marks = std::string(static_cast<std::size_t>(section.level), '#') + " ";
+    // A level-2 heading whole; a part's (level 3) by its start, to the end of its line.
+    const std::size_t at = out.text.find("\n" + marks + section.heading + (section.level == 2 ? "\n" : ""));
+    if (at == std::string::npos && section.level == 2)
+      throw std::runtime_error("the report has no heading '" + marks + section.heading +
+                               "' (validation/report/other_sections.cpp lists it: the list and the template disagree)");
+    if (at == std::string::npos) continue;  // a part its section does not have (its study not run)
+    const std::string heading = out.text.substr(at + 1, out.text.find('\n', at + 1) - at - 1);
     const auto key = values.find(section.table_key);
     if (key == values.end() || key->second.empty()) continue;  // not run yet: the section says so, and has no numbers
     const Stamp stamp = read_section_stamp(report, section);
@@ -132,17 +154,18 @@ StampedReport stamp_sections(const std::string& text, const fs::path& report, co
     std::string new_heading = heading;
     if (!differs.empty()) {
       if (!allow_other) {
-        out.refused.push_back("section '" + section.heading + "' (" + section.stamp_file + ") is from another " + differs +
+        out.refused.push_back("section '" + heading.substr(marks.size()) + "' (" + section.stamp_file + ") is from another " + differs +
                               " than the paper study (this section's numbers were " + stamp_text(stamp) + "; the paper study's " +
                               stamp_text(paper) + "); `report --allow-other-baseline` keeps it, headed ⚠");
         continue;
       }
       const std::string mark = other_mark(differs);
-      const std::string name = section.heading.rfind("Appendix: ", 0) == 0 ? section.heading.substr(10) : section.heading;
-      new_heading = std::string("## ") + (name == section.heading ? "" : "Appendix: ") + mark + name;
+      const std::string whole = heading.substr(marks.size());  // the heading as the text has it
+      const std::string name = whole.rfind("Appendix: ", 0) == 0 ? whole.substr(10) : whole;
+      new_heading = marks + (name == whole ? "" : "Appendix: ") + mark + name;
       line = "*⚠ " + stamp_sentence(stamp) + "; the paper study's numbers were " + stamp_text(paper) + " (kept by `report --allow-other-baseline`)." +
              own + "*";
-      out.other.push_back(section.heading);
+      out.other.push_back(heading.substr(marks.size()));
     }
     // The heading, a blank line, then the stamp line (one already there replaced).
     const std::size_t body = at + 1 + heading.size() + 1;

@@ -15,17 +15,24 @@
 namespace validation {
 
 struct OtherStudySection {
-  std::string heading;     // the template's level-2 heading, without "## "
+  // The section's heading without its "## ": a level-2 heading of the template, whole; or (level 3)
+  // the start of a heading inside another section's table (a part another study feeds: "The
+  // critical state on " is followed by its number of samples).
+  std::string heading;
   std::string table_key;   // the template key of its table: empty (the study has not run) -> no stamp line
   std::string stamp_file;  // relative to the report's folder
   std::string stamp_key;   // the key of stamp_file that holds the stamp; "": its top level
   // Its study prepares from its own scene by design (the stability matrix: 216 spheres compressed
   // fast), so its baseline is said but never compared with the paper study's; its engine is.
   std::string own_scene;   // "": the paper study's preparation; else that scene
+  int level = 2;           // 3: a part of another section, its heading matched by its start
 };
 
 // The list, in the report's order.
 const std::vector<OtherStudySection>& other_study_sections();
+// A section's name as the report's header lists it: its heading's (section_name), or for a part
+// (level 3), its section's with the part's stamp key ("Critical state: ... (its ensemble part)").
+std::string section_shown(const OtherStudySection& section);
 
 // A section's stamp as its file records it; nothing recorded when the file, or its key, is not there.
 Stamp read_section_stamp(const std::filesystem::path& report, const OtherStudySection& section);

@@ -76,6 +76,12 @@ std::string fill(const std::string& t, const Values& values) {
       if (on) out += fill(t.substr(b + 2, (else_at == std::string::npos ? end_at : else_at) - (b + 2)), values);
       else if (else_at != std::string::npos) out += fill(t.substr(else_end, end_at - else_end), values);
       i = end_end;
+    } else if (const std::size_t or_at = tag.find(" or \""); or_at != std::string::npos) {
+      // {{key or "text"}}: a value that may be absent (a setting no scene gives), said so by `text`.
+      if (tag.back() != '"') throw std::runtime_error("template: {{" + tag + "}}: the text after 'or' must be quoted");
+      const auto it = values.find(tag.substr(0, or_at));
+      out += it == values.end() || it->second.empty() ? tag.substr(or_at + 5, tag.size() - or_at - 6) : it->second;
+      i = b + 2;
     } else {
       const auto it = values.find(tag);
       if (it == values.end()) throw std::runtime_error("template: no value for {{" + tag + "}}");

@@ -20,9 +20,11 @@
 
 namespace validation {
 
-// `tmpl` with {{key}} replaced by values.at(key) and {{#if key}}A{{else}}B{{/if}} by A when the key
-// is there and not empty, else B ({{else}} optional; blocks nest). An unknown {{key}} throws
-// std::runtime_error naming it (a typo in a template is an error, not an empty gap).
+// `tmpl` with {{key}} replaced by values.at(key), {{key or "text"}} by the value or, when the key is
+// absent or empty (a value that may be missing: a setting no scene gives), by text, and
+// {{#if key}}A{{else}}B{{/if}} by A when the key is there and not empty, else B ({{else}} optional;
+// blocks nest). An unknown {{key}} throws std::runtime_error naming it (a typo in a template is an
+// error, not an empty gap).
 std::string fill(const std::string& tmpl, const Values& values);
 
 // A section's name: its heading without the "#"s, without an "Appendix: " prefix ("## Appendix:

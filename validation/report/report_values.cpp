@@ -15,12 +15,15 @@
 
 #include "io/hdf5.hpp"
 #include "judge/decisions_file.hpp"
+#include "judge/validation_file.hpp"
+#include "report/baseline_check.hpp"
 #include "report/open_choices_check.hpp"
 #include "report/other_sections.hpp"
 #include "sections/variants.hpp"
 #include "source_hash.hpp"
 #include "study/format.hpp"
 #include "study/json_file.hpp"
+#include "study/manifest.hpp"
 #include "study/markdown_table.hpp"
 #include "study/paths.hpp"
 #include "study/settings.hpp"
@@ -33,20 +36,10 @@ namespace validation {
 
 namespace {
 
-// A number from a settings value scaled: "100000" / 1e3 -> "100".
-std::string scaled(const std::map<std::string, std::string>& kv, const std::string& key, double factor) {
-  const auto it = kv.find(key);
-  if (it == kv.end()) return "?";
-  try {
-    return number(std::stod(it->second) / factor);
-  } catch (const std::exception&) {
-    return "?";
-  }
-}
-
-std::string value_or(const std::map<std::string, std::string>& kv, const std::string& key, const std::string& otherwise) {
-  const auto it = kv.find(key);
-  return it == kv.end() ? otherwise : it->second;
+// A setting scaled to the unit the text quotes (100000 Pa / 1e3 -> "100" kPa), put under `key`;
+// no key at all when the setting is absent: the template says so where it quotes it.
+void put_scaled(Values& v, const std::string& key, const std::optional<double>& value, double factor) {
+  if (value) v[key] = number(*value / factor);
 }
 
 // A section's table.md with its figures' paths made relative to the report; a figure that was not
@@ -66,54 +59,29 @@ std::string section_table(const fs::path& report, const std::string& dir) {
   return out;
 }
 
-// The number of samples (seeds) a study's runs.tsv lists for one variant.
+// The number of samples (seeds) a study's runs.tsv lists for one variant (0 without a manifest).
 std::size_t seeds_in(const std::string& dir, const std::string& variant) {
-  std::ifstream runs(fs::path(dir) / "runs.tsv");
   std::set<std::string> seeds;
-  for (std::string line; std::getline(runs, line);) {
-    if (line.empty() || line[0] == '#') continue;
-    std::vector<std::string> f;
-    std::stringstream ss(line);
-    for (std::string x; std::getline(ss, x, '\t');) f.push_back(x);
-    if (f.size() >= 9 && f[0] == variant && f[2] == "-") seeds.insert(f[8]);
+  try {
+    for (const ManifestLine& l : read_manifest(dir))
+      if (l.variant == variant && l.test == "-") seeds.insert(l.seed);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "report: %s\n", e.what());
   }
   return seeds.size();
 }
 
-// The size a decisions table was measured at: its decisions.json's own record, "" if it has none.
-std::string recorded_size(const fs::path& json, const std::vector<Row>& paper) {
+// A study's decisions.json, read once; none when it is not there (the error of one that cannot be
+// read is said, and the section goes without its check).
+std::optional<DecisionsFile> decisions_record(const fs::path& json, const std::vector<Row>& paper) {
   std::error_code ec;
+  if (!fs::exists(json, ec)) return std::nullopt;
   try {
-    if (fs::exists(json, ec)) {
-      const DecisionsFile f = read_decisions_file(json.string(), paper);
-      if (f.particles) return size_label(f);
-    }
+    return read_decisions_file(json.string(), paper);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "report: %s: %s\n", json.c_str(), e.what());
+    return std::nullopt;
   }
-  return "";
-}
-
-// The size check of a readings study's table.md ("### Size check..." to the next "### " or the
-// end), taken out of `table`: {heading line, text before its table, its table's lines}.
-struct SizeCheck {
-  std::string heading, intro;
-  std::vector<std::string> header, rows;
-};
-SizeCheck take_size_check(std::string& table) {
-  SizeCheck c;
-  const std::size_t at = table.find("### Size check");
-  if (at == std::string::npos || (at > 0 && table[at - 1] != '\n')) return c;
-  std::size_t end = table.find("\n### ", at);
-  end = end == std::string::npos ? table.size() : end + 1;
-  std::istringstream in(table.substr(at, end - at));
-  table.erase(at, end - at);
-  std::getline(in, c.heading);
-  for (std::string line; std::getline(in, line);) {
-    if (line.rfind("|", 0) == 0) (c.header.size() < 2 ? c.header : c.rows).push_back(line);
-    else if (c.header.empty()) c.intro += line + "\n";
-  }
-  return c;
 }
 
 // The readings measured again at the paper's size (make readings-report): reports/readings/<name>/,
@@ -121,32 +89,26 @@ SizeCheck take_size_check(std::string& table) {
 // study's baseline against the paper study's ensemble, rows the studies share alike) once, after
 // them: every row once, with the studies whose baseline has it (a row two baselines give
 // differently: a line for each).
-std::string readings_text(const fs::path& report, const std::vector<Row>& paper) {
+std::string readings_text(const fs::path& report, const std::vector<Row>& paper, const PaperEnsemble& ensemble) {
   std::error_code ec;
   std::vector<std::string> names;
   for (const auto& e : fs::directory_iterator(report / "readings", ec))
     if (fs::exists(e.path() / "table.md", ec)) names.push_back(e.path().filename().string());
   std::sort(names.begin(), names.end());
-  std::string readings, check_heading, check_intro;
-  std::vector<std::string> check_header;
-  std::vector<std::pair<std::string, std::vector<std::string>>> check_rows;  // a table line, its studies
+  std::string readings;
+  std::vector<DecisionsFile> records;
   const Stamp paper_stamp = read_paper_stamp(report);
   for (const std::string& name : names) {
-    const std::string size = recorded_size(report / "readings" / name / "decisions.json", paper);
+    const std::optional<DecisionsFile> record = decisions_record(report / "readings" / name / "decisions.json", paper);
+    const std::string size = record && record->particles ? size_label(*record) : "";
+    if (record) records.push_back(*record);
     // A study named by its densities (readings_medium_dense) is "of the medium and dense
     // samples", another by its name.
     const bool by_density = std::regex_match(name, std::regex("(loose|medium|dense)(_(loose|medium|dense))*"));
     const std::string title = by_density ? "Readings of the " + std::regex_replace(name, std::regex("_"), " and ") + " sample" +
                                                (name.find('_') != std::string::npos ? "s" : "")
                                          : "Readings: " + std::regex_replace(name, std::regex("_"), " ");
-    std::string table = section_table(report, "readings/" + name);
-    const SizeCheck c = take_size_check(table);
-    if (!c.heading.empty() && check_heading.empty()) check_heading = c.heading, check_intro = c.intro, check_header = c.header;
-    for (const std::string& line : c.rows) {
-      auto it = std::find_if(check_rows.begin(), check_rows.end(), [&](const auto& r) { return r.first == line; });
-      if (it == check_rows.end()) check_rows.push_back({line, {name}});
-      else it->second.push_back(name);
-    }
+    const std::string table = section_table(report, "readings/" + name);
     // Its stamp, as a section's (other_sections.hpp); one from another baseline than the paper
     // study's is marked, since the readings are measured against the paper study's samples.
     const Stamp stamp = read_section_stamp(report, {"", "", "readings/" + name + "/decisions.json", "stamp", ""});
@@ -156,18 +118,11 @@ std::string readings_text(const fs::path& report, const std::vector<Row>& paper)
     readings += "### " + title + " (" + (size.empty() ? "size not recorded" : size) + ")\n\n*" + line + ".*\n\n" +
                 std::regex_replace(table, std::regex("(^|\n)### "), "$1#### ") + "\n";
   }
-  if (check_rows.empty() || check_header.size() < 2) return readings;
-  // The rows in the reference file's order.
-  const auto place = [&](const std::string& line) {
-    for (std::size_t i = 0; i < paper.size(); ++i)
-      if (line.rfind("| " + cell(paper[i].name) + " |", 0) == 0) return i;
-    return paper.size();
-  };
-  std::stable_sort(check_rows.begin(), check_rows.end(), [&](const auto& a, const auto& b) { return place(a.first) < place(b.first); });
-  readings += check_heading + "\n" + check_intro + "Each row once, with the readings studies whose baseline has it.\n\n" +
-              check_header[0] + " studies |\n" + check_header[1] + "---|\n";
-  for (const auto& [line, studies] : check_rows) readings += line + " " + joined(studies, ", ") + " |\n";
-  return readings + "\n";
+  // Their checks against the paper study's ensemble in one table (each row once).
+  std::vector<const DecisionsFile*> files;
+  for (const DecisionsFile& f : records) files.push_back(&f);
+  const std::string check = baseline_check_section(files, ensemble);
+  return check.empty() ? readings : readings + check + "\n";
 }
 
 // key = value lines of a gnuplot values.gp (figure-data's record of the study's settings); a key
@@ -249,24 +204,20 @@ std::vector<std::pair<std::string, Columns>> add_runs(Values& v, const std::vect
 }
 
 void add_settings(Values& v, const std::string& results, bool have_results) {
-  const auto settings = have_results ? run_settings(results) : std::map<std::string, std::string>{};
-  for (const auto& [k, val] : settings) v["setting." + k] = val;
-  v["setting.mean_stress_kPa"] = scaled(settings, "mean_stress_Pa", 1e3);
-  v["setting.stress_rate_MPa_per_s"] = scaled(settings, "stress_rate_Pa_per_s", 1e6);
-  v["setting.time_step_prepare_us"] = scaled(settings, "time_step_prepare_s", 1e-6);
-  v["setting.time_step_test_us"] = scaled(settings, "time_step_test_s", 1e-6);
-  v["setting.particles_text"] = thousands(value_or(settings, "particles", ""));
-  {
+  const RunSettings settings = have_results ? run_settings(results) : RunSettings{};
+  for (const auto& [k, val] : setting_texts(settings)) v["setting." + k] = val;
+  put_scaled(v, "setting.mean_stress_kPa", settings.mean_stress_Pa, 1e3);
+  put_scaled(v, "setting.stress_rate_MPa_per_s", settings.stress_rate_Pa_per_s, 1e6);
+  put_scaled(v, "setting.time_step_prepare_us", settings.time_step_prepare_s, 1e-6);
+  put_scaled(v, "setting.time_step_test_us", settings.time_step_test_s, 1e-6);
+  if (settings.particles) v["setting.particles_text"] = thousands(*settings.particles);
+  if (settings.tests.count(3)) {
+    // The first legs of Test 3's path (where the paper leaves their order open).
     static const std::regex visits(R"((TC1, A, [A-Z0-9]+, A, [A-Z0-9]+))");
     std::smatch m;
-    const std::string path = value_or(settings, "test3_path", "");
-    v["setting.test3_visits"] = std::regex_search(path, m, visits) ? m[1].str() : "?";
+    if (std::regex_search(settings.tests.at(3).path, m, visits)) v["setting.test3_visits"] = m[1].str();
   }
-  for (const char* k : {"grading_basis", "damping_form", "damping_translational", "hold_unbalanced_force_ratio", "hold_stress_tolerance",
-                        "max_strain_rate_per_s", "friction_shear_loose", "friction_shear_medium", "friction_shear_dense", "stress_ratio",
-                        "lattice", "target_pressure_kPa", "friction_prepare", "friction_shear", "max_energy_error"})
-    if (!v.count(std::string("setting.") + k)) v[std::string("setting.") + k] = "?";
-  v["max_energy_error_percent"] = scaled(settings, "max_energy_error", 0.01);
+  put_scaled(v, "max_energy_error_percent", settings.max_energy_error, 0.01);
 }
 
 void add_tables(Values& v, const fs::path& report, const std::vector<Row>& paper, const std::string& decisions_results) {
@@ -296,15 +247,39 @@ void add_tables(Values& v, const fs::path& report, const std::vector<Row>& paper
   v["convergence_plot"] = fs::exists(report / "convergence" / "error_vs_time.png") ? "yes" : "";
   // The size the decisions table was measured at: its decisions.json's own record, else (the
   // decisions study) what its results say; never assumed.
-  v["decisions.size"] = recorded_size(report / "decisions" / "decisions.json", paper);
+  PaperEnsemble ensemble;  // the checks of the studies' baselines need it; without it they are left out, said on stderr
+  try {
+    ensemble = read_paper_ensemble(report, paper);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "report: %s; the checks of the decisions studies' baselines are left out\n", e.what());
+  }
+  const std::optional<DecisionsFile> decisions = decisions_record(report / "decisions" / "decisions.json", paper);
+  v["decisions.size"] = decisions && decisions->particles ? size_label(*decisions) : "";
+  v["decisions.check"] = decisions ? baseline_check_section({&*decisions}, ensemble) : "";
   if (v["decisions.size"].empty() && !decisions_results.empty()) {
     const std::size_t n = seeds_in(decisions_results, "baseline");
-    const auto ds = run_settings(decisions_results, "baseline_");
-    if (n > 0 && ds.count("particles"))
-      v["decisions.size"] = thousands(ds.at("particles")) + " spheres, " + std::to_string(n) + " sample" + (n == 1 ? "" : "s");
+    const RunSettings ds = run_settings(decisions_results, "baseline_");
+    if (n > 0 && ds.particles)
+      v["decisions.size"] = thousands(*ds.particles) + " spheres, " + std::to_string(n) + " sample" + (n == 1 ? "" : "s");
   }
   if (v["decisions.size"].empty()) v["decisions.size"] = "size not recorded";
-  v["file.readings"] = readings_text(report, paper);
+  v["file.readings"] = readings_text(report, paper, ensemble);
+}
+
+void add_note_verdicts(Values& v, const PaperEnsemble& judged) {
+  const auto find = [&](const std::string& quantity, const std::string& density) -> const RejudgedRow* {
+    for (const RejudgedRow& r : judged.rows)
+      if (r.row.quantity == quantity && r.density == density) return &r;
+    return nullptr;
+  };
+  for (const NoteVerdict& n : note_verdicts())
+    if (const RejudgedRow* r = find(n.quantity, n.density)) v[n.key] = verdict_phrase(r->result);
+  // What the dense coordination row counts (Fig. 10's "no change"): the change from the end of one
+  // cycle to the end of another, not the cycle before it.
+  if (const RejudgedRow* r = find("cn_change_magnitude", "dense"); r && r->result.valued > 1)
+    v["fig10.counted_dense"] = "from the end of cycle " + std::to_string(r->row.from_cycle) + " to the end of cycle " +
+                               std::to_string(r->row.to_cycle) + " (|Δ| = " + mean_pm_sd(r->result.spread.mean, r->result.spread.sd) +
+                               " over the samples)";
 }
 
 void add_setup(Values& v, const fs::path& report, const std::string& settings_from) {
@@ -315,10 +290,10 @@ void add_setup(Values& v, const fs::path& report, const std::string& settings_fr
   const auto setting = [&](const std::string& key, const std::string& gp_key) -> std::string {
     if (have_results) {
       const auto it = v.find("setting." + key);
-      return it == v.end() || it->second == "?" ? "" : it->second;
+      return it == v.end() ? "" : it->second;
     }
     const auto it = gp.find(gp_key);
-    return it == gp.end() || it->second == "?" ? "" : it->second;
+    return it == gp.end() ? "" : it->second;
   };
   nlohmann::json record;
   try {
@@ -360,17 +335,14 @@ void add_setup(Values& v, const fs::path& report, const std::string& settings_fr
 }
 
 void add_study_settings(Values& v, const std::string& stability_results) {
-  // A setting the study's resolved scenes do not give is no key at all (no "?" placeholder): the
-  // template quotes these only when the study's results are here, and an unguarded use fails.
-  const auto put = [&](const std::string& key, const std::string& value) {
-    if (!value.empty() && value != "?") v[key] = value;
-  };
-  const auto ss = stability_results.empty() ? std::map<std::string, std::string>{} : run_settings(stability_results, "", "base");
+  // A setting the study's resolved scenes do not give is no key at all: the template quotes these
+  // only when the study's results are here, and an unguarded use fails.
+  const RunSettings ss = stability_results.empty() ? RunSettings{} : run_settings(stability_results, "", "base");
   v["have_stability"] = ss.empty() ? "" : "yes";
-  put("stability.particles", ss.count("particles") ? thousands(ss.at("particles")) : "");
-  put("stability.target_pressure_kPa", value_or(ss, "target_pressure_kPa", ""));
-  put("stability.max_energy_error_percent", scaled(ss, "max_energy_error", 0.01));
-  put("stability.max_time_step_fraction", value_or(ss, "max_time_step_fraction", ""));
+  if (ss.particles) v["stability.particles"] = thousands(*ss.particles);
+  if (ss.target_pressure_kPa) v["stability.target_pressure_kPa"] = number(*ss.target_pressure_kPa);
+  put_scaled(v, "stability.max_energy_error_percent", ss.max_energy_error, 0.01);
+  if (ss.max_time_step_fraction) v["stability.max_time_step_fraction"] = number(*ss.max_time_step_fraction);
   v["stability.closure_onset_percent"] = number(100 * closure_onset_fraction);
   v["stability.closure_limit_percent"] = number(100 * closure_limit);
   v["validation.prediction_percent"] = number(100 * prediction_level);

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "report/baseline_check.hpp"
 #include "report/report.hpp"
 
 namespace validation {
@@ -30,12 +31,18 @@ void add_provenance(Values& v, const ReportSources& src, bool have_results, std:
 std::vector<std::pair<std::string, Columns>> add_runs(Values& v, const std::vector<Sample>& samples,
                                                       const std::vector<std::string>& densities);
 
-// setting.* from the resolved scenes of the study in `results` ("?" where a scene does not say).
+// setting.* from the resolved scenes of the study in `results` (run_settings); a setting no scene
+// gives is no key at all (the template says "not recorded" there: {{key or "..."}}).
 void add_settings(Values& v, const std::string& results, bool have_results);
 
 // file.*: the tables other tools wrote under `report`; decisions.size and file.readings (the
 // readings studies' tables, each headed with its recorded size).
 void add_tables(Values& v, const std::filesystem::path& report, const std::vector<Row>& paper, const std::string& decisions_results);
+
+// The verdicts the figure notes quote (note_verdicts, figures/notes.hpp), from `judged` (the rows
+// of validation.json judged again: read_paper_ensemble), so that a note says what the verdict
+// table says, ⚠ on a weak one; and fig10.counted_dense (what the dense coordination row counts).
+void add_note_verdicts(Values& v, const PaperEnsemble& judged);
 
 // setup.table (the study in one small table: its samples, spheres, preparation, tests and the rows
 // judged, from reports/validation.json and the setting.* keys of `v`, said to come from

@@ -61,7 +61,7 @@ std::string against_reference(const RateSeries& s, const std::vector<validation:
   const double half_width = s.fit->n > 2 ? validation::t_quantile(1 - (1 - validation::prediction_level) / 2, s.fit->n - 2) * s.phi_se_deg : NAN;
   const std::string each = fewest == most ? std::to_string(fewest) : std::to_string(fewest) + "–" + std::to_string(most);
   for (const validation::Row& row : rows) {
-    if (row.quantity != "critical_state_friction_angle") continue;
+    if (!validation::taken_to_quasi_static_limit(row.quantity)) continue;  // the angle: what the series takes to I -> 0
     const auto read = std::find_if(s.points.begin(), s.points.end(),
                                    [&](const RatePoint& p) { return usable(p) && p.run->run == row.density + "_" + row.test; });
     if (read == s.points.end()) continue;

@@ -22,6 +22,8 @@
 #include "sections/modes.hpp"
 #include "judge/decisions.hpp"
 #include "judge/decisions_file.hpp"
+#include "judge/validation_file.hpp"
+#include "judge/weak_verdicts.hpp"
 #include "study/series.hpp"
 #include "study/format.hpp"
 #include "io/atomic_file.hpp"
@@ -39,8 +41,6 @@ using validation::number;
 using validation::RowDecision;
 using validation::RowResult;
 using validation::Verdict;
-
-const char* verdict_mark(Verdict v) { return v == Verdict::Consistent ? "✅" : v == Verdict::Inconsistent ? "❌" : "—"; }
 
 // "mean ± sd" of a row's result (one sample: the mean alone; none: "—").
 std::string mean_sd(const RowResult& r) {
@@ -141,11 +141,13 @@ std::string group_section(const std::string& g, const std::vector<RowDecision>& 
   validation::MarkdownTable table(headings);
   for (auto it = of_group.rbegin(); it != of_group.rend(); ++it) {
     const RowDecision& d = **it;
-    std::vector<std::string> cells = {d.row.name, mean_sd(d.baseline) + " " + verdict_mark(d.full ? d.full->verdict : d.baseline.verdict)};
+    // The marks of the full-size ensemble's verdicts when it is given, ⚠ on a weak one (weak_verdicts.hpp).
+    std::vector<std::string> cells = {d.row.name, mean_sd(d.baseline) + " " + validation::verdict_mark(d.full ? *d.full : d.baseline)};
     for (const auto& e : d.readings)
       cells.push_back(!e.missing.empty() ? std::string(lacks_runs) + " —"
                                          : (finite_shift(e) ? validation::shift_text(*e.shift_sd) : "—") + " " +
-                                               verdict_mark(d.full ? (e.full ? e.full->verdict : Verdict::NotJudged) : e.result.verdict));
+                                               (d.full ? e.full ? validation::verdict_mark(*e.full) : validation::verdict_mark(Verdict::NotJudged)
+                                                       : validation::verdict_mark(e.result)));
     cells.push_back(d.explanation);
     table.row(cells);
   }
@@ -182,69 +184,49 @@ std::string group_sections(const std::vector<std::string>& groups, const std::ve
   return md;
 }
 
-// The size check: the baseline of this study against the paper study's ensemble (its own sample
-// size), row by row, in units of max(the paper ensemble's standard deviation, the row's resolution).
-std::string size_check(const std::vector<RowDecision>& decided, std::size_t samples) {
-  validation::MarkdownTable table({"row", "paper study: mean ± sd", "this study's baseline: mean ± sd", "difference / max(sd, resolution)", "verdicts"});
-  for (const RowDecision& d : decided) {
-    const RowResult& big = *d.full;
-    std::string diff = "—";
-    if (big.valued > 1 && std::max(big.spread.sd, d.row.resolution) > 0 && d.baseline.valued > 0)
-      diff = validation::shift_text(validation::shift_in_sd(d.baseline.spread.mean - big.spread.mean, big.spread.sd, d.row.resolution));
-    table.row({d.row.name, mean_sd(big), mean_sd(d.baseline), diff,
-               std::string(verdict_mark(big.verdict)) + " / " + verdict_mark(d.baseline.verdict)});
-  }
-  return "\n### Size check: this study's baseline against the paper study's ensemble\n\n"
-         "The same rows on the paper study's samples (" + std::to_string(samples) + " per density, its size) and on this study's "
-         "baseline; the difference of the means in units of the paper ensemble's standard deviation, or of the row's resolution "
-         "where that is larger (a scatter below it says nothing), and both verdicts. "
-         "A reading's shift is trusted at this study's size where the two agree.\n\n" + table.text();
-}
-
-// A value of decisions.json: six significant digits, as this file has always had (the values of a
-// few samples; more digits would be noise), or null.
-nlohmann::ordered_json six_digits(double x) {
-  const double v = std::strtod(number(x).c_str(), nullptr);
-  return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
-}
-
 // What the study was measured at, for the readers of decisions.json (validate --decisions).
 struct Size {
   long particles = 0;      // spheres per sample (0: unknown)
   std::size_t samples = 0;  // the baseline's samples
 };
 
-nlohmann::ordered_json decisions_json(const std::string& baseline, const std::string& baseline_results, const Size& size,
-                                      const std::vector<RowDecision>& decided, std::size_t missing, const validation::Stamp& stamp) {
-  using json = nlohmann::ordered_json;
-  json rows = json::array();
+// decisions.json's record of the study (judge/decisions_file.hpp declares the file).
+validation::DecisionsFile decisions_record(const std::string& baseline, const std::string& baseline_results, const Size& size,
+                                           const std::vector<RowDecision>& decided, std::size_t missing, const validation::Stamp& stamp,
+                                           std::vector<std::pair<std::string, std::string>> settings) {
+  const auto rounded = [](double x) -> std::optional<double> {
+    const double v = std::strtod(number(x).c_str(), nullptr);  // six significant digits (the values of a few samples)
+    return std::isfinite(v) ? std::optional<double>(v) : std::nullopt;
+  };
+  validation::DecisionsFile f;
+  f.baseline = baseline;
+  f.baseline_results = baseline_results;
+  if (size.particles > 0) f.particles = size.particles;
+  f.samples = size.samples;
+  f.stamp = stamp;
+  f.missing_results = missing;
+  f.settings = std::move(settings);
   for (const RowDecision& d : decided) {
-    json readings = json::object();
+    validation::DecisionsFile::Finding row;
+    row.group = d.row.group;
+    if (d.baseline.valued) row.baseline_mean = rounded(d.baseline.spread.mean);
+    if (d.baseline.valued > 1) row.baseline_sd = rounded(d.baseline.spread.sd);
+    row.baseline_verdict = d.baseline.verdict;
     for (const auto& e : d.readings) {
-      readings[e.reading] = {{"mean", e.result.valued ? six_digits(e.result.spread.mean) : json(nullptr)},
-                             {"shift_sd", finite_shift(e) ? six_digits(*e.shift_sd) : json(nullptr)},
-                             {"verdict", validation::to_string(e.result.verdict)}};
-      if (!e.missing.empty()) readings[e.reading]["missing_runs"] = e.missing;
+      validation::DecisionsFile::Reading r;
+      if (e.result.valued) r.mean = rounded(e.result.spread.mean);
+      if (finite_shift(e)) r.shift_sd = rounded(*e.shift_sd);
+      r.verdict = e.result.verdict;
+      r.missing_runs = e.missing;
+      row.readings.emplace_back(e.reading, std::move(r));
     }
-    rows.push_back({{"name", d.row.name},
-                    {"group", d.row.group},
-                    {"baseline_mean", d.baseline.valued ? six_digits(d.baseline.spread.mean) : json(nullptr)},
-                    {"baseline_sd", d.baseline.valued > 1 ? six_digits(d.baseline.spread.sd) : json(nullptr)},
-                    {"baseline_verdict", validation::to_string(d.baseline.verdict)},
-                    {"readings", readings},
-                    {"judged", d.judged},
-                    {"made_consistent_by", d.made_consistent_by},
-                    {"explanation", d.explanation}});
+    row.judged = d.judged;
+    row.explained_by = d.made_consistent_by;
+    row.explanation = d.explanation;
+    f.order.push_back(d.row.name);
+    f.rows[d.row.name] = std::move(row);
   }
-  json out = {{"schema", 2}, {"baseline", baseline}};
-  if (!baseline_results.empty()) out["baseline_results"] = baseline_results;
-  out["particles"] = size.particles > 0 ? json(size.particles) : json(nullptr);
-  out["samples"] = size.samples;
-  out["stamp"] = validation::stamp_json(stamp);  // the engine and baseline its numbers come from (the report says them)
-  out["shift_unit"] = "max(baseline sd, the row's resolution)";
-  out["rows"] = rows;
-  out["missing_results"] = missing;
-  return out;
+  return f;
 }
 
 }  // namespace
@@ -328,7 +310,8 @@ int decisions(const Manifest& manifest, const std::string& results, const std::s
     if (std::find(groups.begin(), groups.end(), r.group) == groups.end()) groups.push_back(r.group);
 
   validation::MarkdownTable reading_table({"reading", "settings"});
-  for (const std::string& r : order) reading_table.row({r, settings[r]});
+  std::vector<std::pair<std::string, std::string>> reading_settings;  // recorded in decisions.json
+  for (const std::string& r : order) reading_table.row({r, settings[r]}), reading_settings.emplace_back(r, settings[r]);
   const std::string measured = (size.particles > 0 ? validation::thousands(size.particles) + " spheres" : std::string("spheres not recorded")) +
                                ", " + std::to_string(size.samples) + " sample" + (size.samples == 1 ? "" : "s");
   std::string md = "Measured at " + measured + " per reading. Readings (each one change from the baseline" +
@@ -340,13 +323,13 @@ int decisions(const Manifest& manifest, const std::string& results, const std::s
     md += "\nOnly the rows of the densities this study runs (" + validation::joined(densities, ", ") + "): " + std::to_string(rows.size()) +
           " of " + std::to_string(all_rows) + ".\n";
   md += group_sections(groups, decided, others, out);
-  if (!ensemble.empty()) md += size_check(decided, full_samples.size());
   try {
     dem::write_file_atomically((fs::path(out) / "table.md").string(), md);
     dem::write_file_atomically(
         (fs::path(out) / "decisions.json").string(),
-        decisions_json(baseline, baseline_results.empty() ? "" : relative_paths(baseline_results, baseline_results), size, decided, missing.size(),
-                       validation::stamp_of_results(results, baseline, baseline_results))
+        validation::decisions_file_json(decisions_record(baseline, baseline_results.empty() ? "" : relative_paths(baseline_results, baseline_results),
+                                                         size, decided, missing.size(), validation::stamp_of_results(results, baseline, baseline_results),
+                                                         reading_settings))
                 .dump(2) +
             "\n");
   } catch (const std::exception& e) {
@@ -361,15 +344,6 @@ int decisions(const Manifest& manifest, const std::string& results, const std::s
 }
 
 namespace {
-
-// A number of decisions.json, or none (null, absent).
-std::optional<double> json_number(const nlohmann::ordered_json& j, const char* key) {
-  return j.contains(key) && j.at(key).is_number() ? std::optional<double>(j.at(key).get<double>()) : std::nullopt;
-}
-
-Verdict verdict_of(const nlohmann::ordered_json& j, const char* key) {
-  return validation::verdict_from_string(j.contains(key) && j.at(key).is_string() ? j.at(key).get<std::string>() : "");
-}
 
 // A result as decisions.json records it: its mean and sd. `samples`: how many samples it had, when
 // the file says (mean_sd() prints a mean ± sd for more than one; a recorded sd means at least two).
@@ -386,11 +360,10 @@ RowResult recorded_result(std::optional<double> mean, std::optional<double> sd, 
 
 }  // namespace
 
-int decisions_from_json(const std::string& file, const std::string& out, const std::string& references) {
-  using json = nlohmann::ordered_json;  // ordered: the readings in the file's order, as the study ran them
+int decisions_from_json(const std::string& file, const std::string& out, const std::string& references, const std::string& ensemble_json) {
   std::vector<validation::Row> rows;
   validation::DecisionsFile findings;
-  json j;
+  std::map<std::string, RowResult> full;  // the paper study's full-size ensemble, from its validation.json
   try {
     rows = validation::load_references(references, "paper");
   } catch (const std::exception& e) {
@@ -398,66 +371,71 @@ int decisions_from_json(const std::string& file, const std::string& out, const s
     return 2;
   }
   try {
-    std::ifstream in(file);
-    if (!in) throw std::runtime_error("cannot be read");
-    j = json::parse(in);
-    if (!j.contains("rows") || !j.at("rows").is_array()) throw std::runtime_error("has no list of rows");
-    // The explanations and whether each row was judged, read as validate reads them (a file of
-    // schema 1 has its explanations' shifts restated there).
+    // Read as validate reads it (a file of schema 1 has its explanations' shifts restated there).
     findings = validation::read_decisions_file(file, rows);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: --from-json %s: %s\n", file.c_str(), e.what());
     return 2;
   }
+  if (!ensemble_json.empty()) {
+    try {
+      const validation::RecordedValidation record = validation::read_validation_file(ensemble_json);
+      std::vector<validation::Row> of_record;  // the rows the record has (a readings study's densities)
+      for (const validation::Row& r : rows)
+        for (const auto& rr : record.rows)
+          if (rr.name == r.name) of_record.push_back(r);
+      for (const validation::RejudgedRow& r : validation::judge_recorded(record, of_record, ensemble_json, references)) full[r.row.name] = r.result;
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "error: --ensemble-json %s: %s\n", ensemble_json.c_str(), e.what());
+      return 2;
+    }
+  }
   std::map<std::string, const validation::Row*> row_of;
   for (const validation::Row& r : rows) row_of[r.name] = &r;
-  const std::string baseline = j.contains("baseline") && j.at("baseline").is_string() ? j.at("baseline").get<std::string>() : "baseline";
   const std::size_t samples = findings.samples.value_or(0);
 
   // The readings in the file's order (every row's, first seen first) and the groups likewise.
   std::vector<std::string> others, groups;
-  for (const json& row : j.at("rows")) {
-    if (row.contains("readings"))
-      for (const auto& [reading, value] : row.at("readings").items())
-        if (std::find(others.begin(), others.end(), reading) == others.end()) others.push_back(reading);
-    const std::string g = row.value("group", std::string("rows"));
-    if (std::find(groups.begin(), groups.end(), g) == groups.end()) groups.push_back(g);
+  for (const std::string& name : findings.order) {
+    const validation::DecisionsFile::Finding& row = findings.rows.at(name);
+    for (const auto& [reading, value] : row.readings)
+      if (std::find(others.begin(), others.end(), reading) == others.end()) others.push_back(reading);
+    if (std::find(groups.begin(), groups.end(), row.group) == groups.end()) groups.push_back(row.group);
   }
 
   std::vector<RowDecision> decided;
   std::vector<std::string> unknown;  // rows the references do not have: shifts in baseline sd alone
   std::size_t clipped = 0;
-  for (const json& row : j.at("rows")) {
+  for (const std::string& name : findings.order) {
+    const validation::DecisionsFile::Finding& row = findings.rows.at(name);
     RowDecision d;
-    d.row.name = row.at("name").get<std::string>();
-    d.row.group = row.value("group", std::string("rows"));
-    if (row_of.count(d.row.name)) d.row.resolution = row_of.at(d.row.name)->resolution;
-    else unknown.push_back(d.row.name);
-    const std::optional<double> base = json_number(row, "baseline_mean");
-    const std::optional<double> base_sd = json_number(row, "baseline_sd");
-    d.baseline = recorded_result(base, base_sd, verdict_of(row, "baseline_verdict"), samples);
+    d.row.name = name;
+    d.row.group = row.group;
+    if (row_of.count(name)) d.row = *row_of.at(name), d.row.group = row.group;
+    else unknown.push_back(name);
+    d.baseline = recorded_result(row.baseline_mean, row.baseline_sd, row.baseline_verdict, samples);
+    if (full.count(name)) d.full = full.at(name);
     for (const std::string& reading : others) {
       validation::ReadingEffect e;
       e.reading = reading;
-      if (row.contains("readings") && row.at("readings").contains(reading)) {
-        const json& r = row.at("readings").at(reading);
-        const std::optional<double> mean = json_number(r, "mean");
-        e.result = recorded_result(mean, std::nullopt, verdict_of(r, "verdict"), samples);
-        if (r.contains("missing_runs")) e.missing = r.at("missing_runs").get<std::vector<std::string>>();
+      if (const validation::DecisionsFile::Reading* r = row.reading(reading)) {
+        e.result = recorded_result(r->mean, std::nullopt, r->verdict, samples);
+        e.missing = r->missing_runs;
         // The shift restated from the recorded means, whatever shift_sd the file holds (a file of
         // schema 1 counted it in baseline sd alone: +116979 where the sd is far below the resolution).
-        if (mean && base && e.missing.empty()) {
-          const double z = validation::shift_in_sd(*mean - *base, base_sd.value_or(0.0), d.row.resolution);
+        if (const std::optional<double> by = row.mean_shift(reading); by && e.missing.empty()) {
+          const double z = validation::shift_in_sd(*by, row.baseline_sd.value_or(0.0), d.row.resolution);
           if (std::isfinite(z)) e.shift_sd = z;
           if (std::isfinite(z) && std::abs(z) > validation::shift_clip) ++clipped;
+          // The full-size ensemble's verdict under the reading: its shift of the mean applied to
+          // each of the paper study's samples, as the study drawn from its results does (decide()).
+          if (d.full) e.full = validation::shifted(d.row, *d.full, *by);
         }
       }
       d.readings.push_back(std::move(e));
     }
-    if (const auto it = findings.rows.find(d.row.name); it != findings.rows.end()) {
-      d.judged = it->second.judged;
-      d.explanation = it->second.explanation;
-    }
+    d.judged = row.judged;
+    d.explanation = row.explanation;
     decided.push_back(std::move(d));
   }
 
@@ -468,11 +446,34 @@ int decisions_from_json(const std::string& file, const std::string& out, const s
   std::string md = "Re-drawn from `" + file + "` alone, without the study's results (not on the machine that drew it); " + size +
                    ". Each shift is restated from the means the file records, "
                    "(reading mean − baseline mean) / max(baseline sd, the row's resolution in `" + references +
-                   "`), and so are the shifts the explanations quote. What needs the results and is not re-drawn: the readings' settings; "
-                   "the verdicts of the paper study's full-size ensemble (each mark below is the verdict on this study's own samples, as "
-                   "the file records it; an explanation judged on the full-size ensemble may disagree with it); and the size check of this study's baseline against the paper study's ensemble.\n\n"
-                   "Readings (each one change from the baseline, `" + baseline + "`): " + validation::joined(others, ", ") + ".\n\n" +
-                   cell_legend(false);
+                   "`), and so are the shifts the explanations quote." +
+                   (full.empty() ? " What needs the results is not re-drawn: the verdicts of the paper study's full-size ensemble (each mark "
+                                   "below is the verdict on this study's own samples, as the file records it; an explanation judged on the "
+                                   "full-size ensemble may disagree with it)."
+                                 : " The marks are the verdicts of the paper study's full-size ensemble (`" + ensemble_json +
+                                       "`) with each reading's shift of the mean applied, as drawn from the results.") +
+                   "\n\n";
+  if (findings.settings.empty()) {
+    md += "Readings (each one change from the baseline, `" + findings.baseline + "`): " + validation::joined(others, ", ") +
+          "; their settings are not recorded in the file.\n\n";
+  } else {
+    validation::MarkdownTable reading_table({"reading", "settings"});
+    for (const auto& [reading, text] : findings.settings) reading_table.row({reading, text});
+    md += "Readings (each one change from the baseline" +
+          (findings.baseline_results.empty() ? std::string(")")
+                                             : "; the baseline is the samples of the same seeds in `" + findings.baseline_results +
+                                                   "`, the same scenes and engine)") +
+          ":\n\n" + reading_table.text() + "\n";
+  }
+  md += cell_legend(!full.empty());
+  // A study of some densities judges their rows only (decisions()).
+  std::vector<std::string> densities;
+  for (const std::string& name : findings.order)
+    if (row_of.count(name) && std::find(densities.begin(), densities.end(), row_of.at(name)->density) == densities.end())
+      densities.push_back(row_of.at(name)->density);
+  if (findings.order.size() < rows.size() && unknown.empty())
+    md += "\nOnly the rows of the densities this study runs (" + validation::joined(densities, ", ") + "): " +
+          std::to_string(findings.order.size()) + " of " + std::to_string(rows.size()) + ".\n";
   if (!unknown.empty())
     md += "\nRows not in `" + references + "` (their shifts in baseline sd alone, no resolution known): " + validation::joined(unknown, "; ") + ".\n";
   try {

@@ -37,12 +37,16 @@ int decisions(const Manifest& manifest, const std::string& results, const std::s
 // The decisions study's section re-drawn from its decisions.json alone (FILE; its results not at
 // hand): OUT/table.md, tornado_<group>.dat and tornado_values.gp in decisions()'s formats. Each
 // shift is restated from the recorded means as (mean - baseline mean) / max(baseline sd, the row's
-// resolution in `references`); the marks are the verdicts the file records; the explanations are
-// validate's reading of them (read_decisions_file: a schema-1 file's shifts restated). The first
-// paragraph says where the table comes from, its size (size_label) and what it cannot re-draw
-// (the readings' settings, the full-size ensemble's verdicts, the size check). Exit 2 on a file
-// or references that cannot be read, 1 on an output that cannot be written.
-int decisions_from_json(const std::string& file, const std::string& out, const std::string& references);
+// resolution in `references`); the explanations are validate's reading of them
+// (read_decisions_file: a schema-1 file's shifts restated). With `ensemble_json` (the paper study's
+// validation.json), the marks are the verdicts of its full-size ensemble, each reading's shift of
+// the mean applied to its samples, as decisions() draws them from the results; without it, the
+// verdicts the file records (of the study's own samples), and the first paragraph says so. The
+// first paragraph says where the table comes from, its size (size_label) and what it cannot
+// re-draw (the readings' settings). Exit 2 on a file or references that cannot be read, 1 on an
+// output that cannot be written.
+int decisions_from_json(const std::string& file, const std::string& out, const std::string& references,
+                        const std::string& ensemble_json = "");
 
 // Peak and critical state of each constant-p shear and the peaks in the pi-plane: OUT/table.md,
 // critical_state.dat, pi_plane.dat and values.gp. `ensemble` (optional): an ensemble study's

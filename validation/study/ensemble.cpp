@@ -28,7 +28,15 @@ Spread spread(const std::vector<double>& values, double level) {
   if (s.n < 2) return s;
   double ss = 0;
   for (double v : values) ss += (v - s.mean) * (v - s.mean);
-  s.sd = std::sqrt(ss / (s.n - 1));
+  return summary_spread(s.mean, std::sqrt(ss / (s.n - 1)), s.n, level);
+}
+
+Spread summary_spread(double mean, double sd, int n, double level) {
+  Spread s;
+  s.n = n;
+  s.mean = mean;
+  if (n < 2) return s;
+  s.sd = sd;
   const double half = t_quantile(0.5 + level / 2, s.n - 1) * s.sd * std::sqrt(1.0 + 1.0 / s.n);
   s.low = s.mean - half;
   s.high = s.mean + half;

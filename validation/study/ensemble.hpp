@@ -33,6 +33,8 @@ double t_quantile(double p, int dof);
 // The coverage of the prediction interval the verdicts use (rule interval).
 inline constexpr double prediction_level = 0.95;
 Spread spread(const std::vector<double>& values, double level = prediction_level);
+// The same from a summary a file records (mean, sd, n) instead of the values.
+Spread summary_spread(double mean, double sd, int n, double level = prediction_level);
 
 enum class Verdict { Consistent, Inconsistent, NotJudged };
 const char* to_string(Verdict v);

@@ -137,9 +137,9 @@ inline std::string shift_phrase(double z) {
   return "beyond " + sign + significant(shift_clip, 2) + " sd (" + sign + significant(std::abs(z), 2) + ")";
 }
 
-// Digits grouped by thousands: "8000" -> "8,000"; "" -> "?"; text that is not digits as it is.
+// Digits grouped by thousands: "8000" -> "8,000"; text that is not digits (or none) as it is.
 inline std::string thousands(const std::string& digits) {
-  if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos) return digits.empty() ? "?" : digits;
+  if (digits.find_first_not_of("0123456789") != std::string::npos) return digits;
   std::string out;
   for (std::size_t i = 0; i < digits.size(); ++i) {
     if (i && (digits.size() - i) % 3 == 0) out += ',';

@@ -6,12 +6,18 @@
 //   | base | ran |
 // Every heading and cell goes through cell() (format.hpp): a '|' in it is escaped and a newline
 // becomes a space, so text taken from results, settings or messages cannot end a cell or a row.
-// Cells are written as given: numbers keep the digits their formatter chose ("0.10", "—").
+// Cells are written as given: numbers keep the digits their formatter chose ("0.10", "—"). A cell
+// longer than cell_limit code points (a sentence, a message, a list of settings) is written cut at a
+// word with "… (note N)" and in full in a numbered note under the table, so that every table line
+// stays readable and nothing is lost.
 #include <cstddef>
 #include <string>
 #include <vector>
 
 namespace validation {
+
+// The longest cell a table line holds, in code points (as written, escapes included).
+inline constexpr std::size_t cell_limit = 200;
 
 class MarkdownTable {
  public:
@@ -29,7 +35,8 @@ class MarkdownTable {
   std::size_t columns() const { return headings_.size(); }
   std::size_t rows() const { return rows_.size(); }
 
-  // The table, every line ending in '\n'; an empty cell is "|  |".
+  // The table, every line ending in '\n'; an empty cell is "|  |". Cells over cell_limit: cut,
+  // each in full in a note after the table ("\nNote N (<column>, <row's first cell>): <text>\n").
   std::string text() const;
 
  private:

@@ -1,6 +1,8 @@
 #include "study/settings.hpp"
 
+#include <algorithm>
 #include <filesystem>
+#include <type_traits>
 #include <sstream>
 
 #include "control/stress_path.hpp"
@@ -67,74 +69,111 @@ std::string one_line(const std::string& yaml) {
   return "[" + joined(items, ", ") + "]";
 }
 
-std::map<std::string, std::string> run_settings(const std::string& results, const std::string& prefix, const std::string& run) {
+RunSettings run_settings(const std::string& results, const std::string& prefix, const std::string& run) {
   const auto dirs = validation::sample_dirs(results);
   const std::string dir = dirs.front().second;
-  std::map<std::string, std::string> kv;
-  std::map<std::string, std::vector<std::string>> per_density;
+  RunSettings s;
   bool any = false;
   // One named run (--run NAME: DIR/NAME.h5) is read as the preparation of a study of one density.
   for (const std::string& d : run.empty() ? paper_densities() : std::vector<std::string>{"run"}) {
     const auto prep = scene_of((fs::path(dir) / (run.empty() ? prefix + d + "_prepare.h5" : run + ".h5")).string());
     if (prep) {
-      kv["max_energy_error"] = num(prep->max_energy_error);
-      kv["max_time_step_fraction"] = num(prep->max_time_step_fraction);
+      s.max_energy_error = prep->max_energy_error;
+      s.max_time_step_fraction = prep->max_time_step_fraction;
       any = true;
-      per_density["friction_prepare"].push_back(num(dem::friction_coefficient(prep->material.law)));
-      kv["time_step_prepare_s"] = num(prep->time_step_s);
-      kv["grading_basis"] = prep->particles.grading_basis == dem::GradingCurve::Basis::Mass ? "mass" : "count";
-      kv["damping_form"] = prep->damping.form == dem::Damping::Form::Viscous ? "viscous" : "local";
-      kv["damping_translational"] = num(prep->damping.translational);
-      kv["damping_rotational"] = num(prep->damping.rotational);
+      s.friction_prepare.emplace_back(d, dem::friction_coefficient(prep->material.law));
+      s.time_step_prepare_s = prep->time_step_s;
+      s.grading_basis = prep->particles.grading_basis == dem::GradingCurve::Basis::Mass ? "mass" : "count";
+      s.damping_form = prep->damping.form == dem::Damping::Form::Viscous ? "viscous" : "local";
+      s.damping_translational = prep->damping.translational;
+      s.damping_rotational = prep->damping.rotational;
       std::visit(
           [&](const auto& law) {  // the linear law's stiffnesses (other laws name their own constants)
             using Law = std::decay_t<decltype(law)>;
             if constexpr (std::is_base_of_v<dem::LinearNormal, typename Law::NormalLaw>) {  // with or without dashpots
-              kv["kn_N_per_m"] = num(law.normal.kn);
-              if constexpr (Law::has_tangential) kv["ks_N_per_m"] = num(law.tangential.ks);
+              s.kn_N_per_m = law.normal.kn;
+              if constexpr (Law::has_tangential) s.ks_N_per_m = law.tangential.ks;
             }
           },
           prep->material.law);
       if (prep->particles.kind == dem::ParticleSource::Kind::Lattice) {
         const dem::LatticeLayout& l = prep->particles.lattice;
-        kv["lattice"] = std::to_string(l.n[0]) + "×" + std::to_string(l.n[1]) + "×" + std::to_string(l.n[2]);
-        kv["particles"] = std::to_string(static_cast<long long>(l.n[0]) * l.n[1] * l.n[2]);
-        kv["lattice_spacing_mm"] = num(1e3 * l.spacing_m);
+        s.lattice = std::to_string(l.n[0]) + "×" + std::to_string(l.n[1]) + "×" + std::to_string(l.n[2]);
+        s.particles = static_cast<long>(l.n[0]) * l.n[1] * l.n[2];
+        s.lattice_spacing_mm = 1e3 * l.spacing_m;
       }
       if (const dem::StageConfig* st = stage_of_type(*prep, dem::StageConfig::Type::Stress)) {
-        kv["target_pressure_kPa"] = num(st->target_Pa.mean() / 1e3);
-        kv["compression_rate_Pa_per_s"] = num(st->stress_rate_Pa_per_s);
-        kv["max_strain_rate_per_s"] = num(st->max_strain_rate_per_s);
-        kv["hold_stress_tolerance"] = num(st->hold.stress_tolerance);
-        kv["hold_unbalanced_force_ratio"] = num(st->hold.unbalanced_force_ratio);
+        s.target_pressure_kPa = st->target_Pa.mean() / 1e3;
+        s.compression_rate_Pa_per_s = st->stress_rate_Pa_per_s;
+        s.max_strain_rate_per_s = st->max_strain_rate_per_s;
+        s.hold_stress_tolerance = st->hold.stress_tolerance;
+        s.hold_unbalanced_force_ratio = st->hold.unbalanced_force_ratio;
       }
     }
     for (int t = 1; t <= 5; ++t) {
       const auto test = scene_of((fs::path(dir) / (prefix + d + "_test" + std::to_string(t) + ".h5")).string());
       if (!test) continue;
       any = true;
-      if (t == 1 || !kv.count("friction_shear_" + d)) kv["friction_shear_" + d] = num(dem::friction_coefficient(test->material.law));
-      kv["time_step_test_s"] = num(test->time_step_s);
+      if (std::none_of(s.friction_shear.begin(), s.friction_shear.end(), [&](const auto& f) { return f.first == d; }))
+        s.friction_shear.emplace_back(d, dem::friction_coefficient(test->material.law));
+      s.time_step_test_s = test->time_step_s;
       if (const dem::StageConfig* st = stage_of_type(*test, dem::StageConfig::Type::StressPath)) {
-        kv["mean_stress_Pa"] = num(st->mean_stress_Pa);
-        kv["stress_ratio"] = num(st->stress_ratio);
-        kv["stress_rate_Pa_per_s"] = num(st->stress_rate_Pa_per_s);
-        kv["test" + std::to_string(t) + "_path"] = one_line(st->path_text);
+        s.mean_stress_Pa = st->mean_stress_Pa;
+        s.stress_ratio = st->stress_ratio;
+        s.stress_rate_Pa_per_s = st->stress_rate_Pa_per_s;
         int cycles = 0;
         for (const dem::PathLeg& leg : dem::expand_path(st->path, dem::named_state("A", st->mean_stress_Pa, st->stress_ratio),
                                                         st->stress_rate_Pa_per_s))
           cycles += leg.ends_cycle;
-        kv["test" + std::to_string(t) + "_cycles"] = std::to_string(cycles);
+        s.tests[t] = {one_line(st->path_text), cycles};
       }
     }
   }
-  if (!any) return {};
-  for (const auto& [k, v] : per_density) kv[k] = joined(v, " / ");
-  for (const std::string& d : paper_densities())
-    if (kv.count("friction_shear_" + d)) per_density["friction_shear"].push_back(kv["friction_shear_" + d]);
-  if (per_density.count("friction_shear")) kv["friction_shear"] = joined(per_density["friction_shear"], " / ");
-  return kv;
+  return any ? s : RunSettings{};
 }
 
+std::map<std::string, std::string> setting_texts(const RunSettings& s) {
+  std::map<std::string, std::string> kv;
+  const auto put = [&](const char* key, const auto& value) {
+    if (!value) return;
+    if constexpr (std::is_same_v<std::decay_t<decltype(*value)>, std::string>) kv[key] = *value;
+    else if constexpr (std::is_same_v<std::decay_t<decltype(*value)>, long>) kv[key] = std::to_string(*value);
+    else kv[key] = num(*value);
+  };
+  put("grading_basis", s.grading_basis);
+  put("damping_form", s.damping_form);
+  put("damping_translational", s.damping_translational);
+  put("damping_rotational", s.damping_rotational);
+  put("kn_N_per_m", s.kn_N_per_m);
+  put("ks_N_per_m", s.ks_N_per_m);
+  put("lattice", s.lattice);
+  put("particles", s.particles);
+  put("lattice_spacing_mm", s.lattice_spacing_mm);
+  put("target_pressure_kPa", s.target_pressure_kPa);
+  put("compression_rate_Pa_per_s", s.compression_rate_Pa_per_s);
+  put("max_strain_rate_per_s", s.max_strain_rate_per_s);
+  put("hold_stress_tolerance", s.hold_stress_tolerance);
+  put("hold_unbalanced_force_ratio", s.hold_unbalanced_force_ratio);
+  put("max_energy_error", s.max_energy_error);
+  put("max_time_step_fraction", s.max_time_step_fraction);
+  put("time_step_prepare_s", s.time_step_prepare_s);
+  put("time_step_test_s", s.time_step_test_s);
+  put("mean_stress_Pa", s.mean_stress_Pa);
+  put("stress_ratio", s.stress_ratio);
+  put("stress_rate_Pa_per_s", s.stress_rate_Pa_per_s);
+  const auto list = [](const std::vector<std::pair<std::string, double>>& by_density) {
+    std::vector<std::string> v;
+    for (const auto& [d, x] : by_density) v.push_back(num(x));
+    return joined(v, " / ");
+  };
+  if (!s.friction_prepare.empty()) kv["friction_prepare"] = list(s.friction_prepare);
+  if (!s.friction_shear.empty()) kv["friction_shear"] = list(s.friction_shear);
+  for (const auto& [d, mu] : s.friction_shear) kv["friction_shear_" + d] = num(mu);
+  for (const auto& [t, path] : s.tests) {
+    kv["test" + std::to_string(t) + "_path"] = path.path;
+    kv["test" + std::to_string(t) + "_cycles"] = std::to_string(path.cycles);
+  }
+  return kv;
+}
 
 }  // namespace validation

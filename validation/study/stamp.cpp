@@ -142,8 +142,10 @@ Stamp stamp_from_json(const nlohmann::json& j) {
   return s;
 }
 
-void write_stamp_file(const std::string& out_dir, const Stamp& s) {
-  dem::write_file_atomically((fs::path(out_dir) / "stamp.json").string(), stamp_json(s).dump(1) + "\n");
+void write_stamp_file(const std::string& out_dir, const Stamp& s, const std::vector<std::pair<std::string, Stamp>>& parts) {
+  nlohmann::ordered_json j = stamp_json(s);
+  for (const auto& [name, stamp] : parts) j[name] = stamp_json(stamp);
+  dem::write_file_atomically((fs::path(out_dir) / "stamp.json").string(), j.dump(1) + "\n");
 }
 
 }  // namespace validation

@@ -4,6 +4,7 @@
 // report can say it under the section's heading and refuse to splice a section from another
 // baseline in silence.
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -51,7 +52,8 @@ nlohmann::ordered_json stamp_json(const Stamp& s);
 // that is not an object: nothing recorded.
 Stamp stamp_from_json(const nlohmann::json& j);
 
-// OUT/stamp.json.
-void write_stamp_file(const std::string& out_dir, const Stamp& s);
+// OUT/stamp.json: `s`, and each part another study fed (the critical-state section's "ensemble"
+// and "rates") under its name, with its own stamp.
+void write_stamp_file(const std::string& out_dir, const Stamp& s, const std::vector<std::pair<std::string, Stamp>>& parts = {});
 
 }  // namespace validation

@@ -4,7 +4,7 @@
 //   compare-runs stability RESULTS_DIR OUT_DIR [--report-only]
 //   compare-runs decisions RESULTS_DIR OUT_DIR [--reference NAME] [--references FILE] [--ensemble PAPER_RESULTS]
 //                          [--baseline-results DIR]
-//   compare-runs decisions --from-json DECISIONS_JSON OUT_DIR [--references FILE]
+//   compare-runs decisions --from-json DECISIONS_JSON OUT_DIR [--references FILE] [--ensemble-json VALIDATION_JSON]
 //   compare-runs critical-state RESULTS_DIR OUT_DIR [--ensemble DIR] [--rates DIR]
 //   compare-runs liquefaction OUT_DIR RESULTS_DIR...
 // Every mode takes --draw GNUPLOT_DIR (reports/gnuplot): its section's figures drawn in OUT_DIR
@@ -47,7 +47,7 @@ struct Folders {
 struct Options {
   Folders convergence, stability, decisions, critical;
   std::string reference = "reference", baseline = "baseline", references = "reference_data/paper.yaml";
-  std::string ensemble, baseline_results, from_json;                    // decisions
+  std::string ensemble, baseline_results, from_json, ensemble_json;     // decisions
   std::string convergence_summary, validation_json;                     // convergence
   int threads_per_run = 1;
   bool report_only = false;                                             // stability
@@ -107,13 +107,18 @@ CLI::App* decisions_mode(CLI::App& app, Options& o) {
       cmd->add_option("--baseline-results", o.baseline_results,
                       "for a study of readings only (no baseline of its own): the study whose samples of the same seeds are the "
                       "baseline (e.g. results/study/paper)");
-  cmd->add_option("--from-json", o.from_json,
+  CLI::Option* from_json = cmd->add_option("--from-json", o.from_json,
                   "re-draw table.md, tornado_<group>.dat and tornado_values.gp from this decisions.json alone, without the study's "
                   "results (compare-runs decisions --from-json FILE OUT_DIR): shifts restated against the rows' resolutions")
       ->check(CLI::ExistingFile)
       ->excludes(reference)
       ->excludes(ensemble)
       ->excludes(baseline_results);
+  cmd->add_option("--ensemble-json", o.ensemble_json,
+                  "with --from-json (or --without-results redraw, when it re-draws): the paper study's validation.json "
+                  "(reports/validation.json); the marks are then the verdicts of its full-size ensemble with each reading's shift of "
+                  "the mean applied, as drawn from the results")
+      ->check(CLI::ExistingFile);
   return cmd;
 }
 
@@ -170,18 +175,27 @@ std::string folders_error(const Folders& f, const std::string& alone, const std:
 // OUT/stamp.json from the studies a section was made from (their engine, baseline, size, date:
 // study/stamp.hpp), once its tables are written (`status` 0 or 1); the report says it under the
 // section's heading.
-int stamped(int status, const std::string& out, const std::vector<std::string>& studies) {
+int stamped(int status, const std::string& out, const std::vector<std::string>& studies,
+            const std::vector<std::pair<std::string, std::string>>& parts = {}) {
   if (status != 0 && status != 1) return status;
-  std::vector<validation::Stamp> stamps;
-  for (const std::string& dir : studies) {
-    if (dir.empty()) continue;
+  const auto stamp_of = [](const std::string& dir) -> std::optional<validation::Stamp> {
     try {
-      stamps.push_back(validation::stamp_of_results(dir));
+      return validation::stamp_of_results(dir);
     } catch (const std::exception& e) {  // a study not run: its section says so, and it has no stamp
       std::fprintf(stderr, "compare-runs: no stamp from %s: %s\n", dir.c_str(), e.what());
+      return std::nullopt;
     }
-  }
-  validation::write_stamp_file(out, validation::combined(stamps));
+  };
+  std::vector<validation::Stamp> stamps;
+  for (const std::string& dir : studies)
+    if (!dir.empty())
+      if (const auto s = stamp_of(dir)) stamps.push_back(*s);
+  // Each part another study feeds, with its own stamp (the report says it under the part's heading).
+  std::vector<std::pair<std::string, validation::Stamp>> part_stamps;
+  for (const auto& [name, dir] : parts)
+    if (!dir.empty())
+      if (const auto s = stamp_of(dir)) part_stamps.emplace_back(name, *s);
+  validation::write_stamp_file(out, validation::combined(stamps), part_stamps);
   return status;
 }
 
@@ -277,7 +291,7 @@ int run_mode(const std::string& mode, const Modes& m, const Options& o) {
                  o.liquefaction_out);
   }
   if (*m.decisions && !o.from_json.empty())
-    return drawn(sections::decisions_from_json(o.from_json, o.decisions.results, o.references), o.decisions.results);
+    return drawn(sections::decisions_from_json(o.from_json, o.decisions.results, o.references, o.ensemble_json), o.decisions.results);
   const Folders& f = *m.convergence ? o.convergence : *m.stability ? o.stability : *m.decisions ? o.decisions : o.critical;
   sections::Manifest manifest;
   if (const int rc = finished(f.results, manifest)) return rc;
@@ -291,7 +305,8 @@ int run_mode(const std::string& mode, const Modes& m, const Options& o) {
       if (const int rc = finished(dir, other)) return rc;
   }
   return drawn(stamped(sections::critical_state(manifest, f.results, f.out, o.critical_ensemble, o.critical_rates, o.critical_references),
-                       f.out, {f.results, o.critical_ensemble, o.critical_rates}),
+                       f.out, {f.results, o.critical_ensemble, o.critical_rates},
+                       {{"ensemble", o.critical_ensemble}, {"rates", o.critical_rates}}),
                f.out);
 }
 
@@ -335,6 +350,11 @@ int tool_main(int argc, char** argv) {
     std::fprintf(stderr, "compare-runs: no results in %s; the convergence section re-drawn from %s\n", o.convergence.results.c_str(),
                  o.convergence_summary.c_str());
     o.convergence.results = o.convergence.out;
+  }
+  if (!o.ensemble_json.empty() && o.from_json.empty() && o.without_results != "redraw") {
+    std::fprintf(stderr, "compare-runs: --ensemble-json marks a table re-drawn from decisions.json: give it with --from-json or "
+                         "--without-results redraw\n");
+    return 2;
   }
   try {
     if (!o.without_results.empty())

@@ -107,7 +107,7 @@ int figures(const std::string& results, const std::string& out, std::string samp
 // ---------------------------------------------------------------------------------------------
 int settings(const std::string& results, const std::string& prefix, const std::string& run) {
   if (!results_folder_ok("RESULTS_DIR", results)) return 2;
-  const std::map<std::string, std::string> kv = validation::run_settings(results, prefix, run);
+  const std::map<std::string, std::string> kv = validation::setting_texts(validation::run_settings(results, prefix, run));
   if (kv.empty()) {
     std::fprintf(stderr, "figure-data settings: no result with a scene in %s (%s<density>_prepare.h5 ...)\n",
                  validation::sample_dirs(results).front().second.c_str(), prefix.c_str());
@@ -167,18 +167,10 @@ int samples_table(const std::vector<std::string>& folders, const std::string& re
     }
   };
   for (const std::string& results : folders) {
-    std::ifstream runs(fs::path(results) / "runs.tsv");
-    if (runs) {  // the pipeline's list: variant, density, test, run, result, starts_from, may_fail, settings, seed
-      std::string line;
-      while (std::getline(runs, line)) {
-        if (line.empty() || line[0] == '#') continue;
-        std::vector<std::string> f;
-        std::stringstream ss(line);
-        for (std::string x; std::getline(ss, x, '\t');) f.push_back(x);
-        if (f.size() < 5 || f[2] != "-") continue;
-        const std::string seed = f.size() > 8 && f[8] != "-" && !f[8].empty() ? "seed" + f[8] : "";
-        add(f[0] == "-" ? "" : f[0], f[1], seed, (fs::path(results) / (f[3] + ".h5")).string());
-      }
+    std::error_code ec;
+    if (fs::exists(fs::path(results) / "runs.tsv", ec)) {  // the pipeline's list (study/manifest.hpp): its preparations
+      for (const validation::ManifestLine& l : validation::read_manifest(results))
+        if (l.test == "-") add(l.variant == "-" ? "" : l.variant, l.density, validation::sample_of(l), validation::result_under(results, l));
     } else {
       for (const auto& [name, dir] : validation::sample_dirs(results))
         for (const std::string& d : validation::paper_densities()) add("", d, name, (fs::path(dir) / (d + "_prepare.h5")).string());

@@ -176,7 +176,7 @@ int tool_main(int argc, char** argv) {
     // The sections kept from another baseline (with --allow-other-baseline), named in the header.
     std::vector<std::string> elsewhere;
     for (const auto& [section, differs] : validation::sections_from_elsewhere(report, v, paper_stamp))
-      elsewhere.push_back("\"" + validation::section_name(section.heading) + "\" (another " + differs + ")");
+      elsewhere.push_back("\"" + validation::section_shown(section) + "\" (another " + differs + ")");
     // The verdicts shown are validation.json's: it must have judged these results (the same
     // engine, baseline, spheres and samples), or the report would present another study's verdicts
     // as this one's.
@@ -197,6 +197,12 @@ int tool_main(int argc, char** argv) {
     // The stability study's settings: read once from its results (above, with fresh values), else as
     // the values file kept them, else none.
     if ((stability_here && !fresh) || !v.count("have_stability")) validation::add_study_settings(v, stability_here ? opt["--stability"] : "");
+    // The notes' verdicts as validation.json's rows give them (the verdict table's), weak ones marked.
+    try {
+      validation::add_note_verdicts(v, validation::read_paper_ensemble(report, in.rows));
+    } catch (const std::exception& e) {  // the notes keep the verdicts computed with the results
+      std::fprintf(stderr, "report: %s; the figure notes' verdicts are not taken from it\n", e.what());
+    }
     const std::string notes = validation::read_text(fs::path(opt["--templates"]) / "figure_notes.tsv");
     if (notes.empty()) throw std::runtime_error(opt["--templates"] + "/figure_notes.tsv is missing or empty");
     validation::add_figures(v, report, notes);

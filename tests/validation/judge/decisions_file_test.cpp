@@ -32,6 +32,13 @@ validation::Row row_named(const std::string& name, double resolution) {
   return r;
 }
 
+// restate_shifts on a row of decisions.json as the file holds it.
+std::string restate_shifts_json(const std::string& explanation, const nlohmann::json& row, double resolution) {
+  nlohmann::json with = row;
+  with["explanation"] = explanation;
+  return validation::restate_shifts(explanation, validation::finding_from_json(with), resolution);
+}
+
 }  // namespace
 
 TEST_CASE("shift phrases: two significant digits, beyond ±10 said with the value", "[decisions][format]") {
@@ -97,21 +104,21 @@ TEST_CASE("an explanation written before the floor: its shifts restated from its
   const nlohmann::json medium = {{"baseline_mean", 0.000447401},
                                  {"baseline_sd", 0.0002257},
                                  {"readings", {{"shear_prep_friction", {{"mean", 0.286338}, {"shift_sd", 1266.68}}}}}};
-  CHECK(validation::restate_shifts("consistent under shear_prep_friction (1266.68 sd, t = 2.76), its shift of the mean applied",
+  CHECK(restate_shifts_json("consistent under shear_prep_friction (1266.68 sd, t = 2.76), its shift of the mean applied",
                                    medium, 0.005) ==
         "consistent under shear_prep_friction (beyond +10 sd (+57), t = 2.76), its shift of the mean applied");
   // The dense slope: sd 0.118947 above the resolution 0.01, so the sd is the unit:
   // (0.954353 - 1.39596) / 0.118947 = -3.713.
   const nlohmann::json slope = {{"baseline_mean", 1.39596}, {"baseline_sd", 0.118947}, {"readings", {{"shear_prep_friction", {{"mean", 0.954353}}}}}};
-  CHECK(validation::restate_shifts("consistent under shear_prep_friction (-3.71 sd, t = 5.94)", slope, 0.01) ==
+  CHECK(restate_shifts_json("consistent under shear_prep_friction (-3.71 sd, t = 5.94)", slope, 0.01) ==
         "consistent under shear_prep_friction (-3.7 sd, t = 5.94)");
   // "mean shifted X sd" inside a reading's parentheses, and a reading the row does not list (its value kept,
   // rephrased): Test 3's lead, (0.14732 + 0.0336248) / 0.181819 = 0.995.
   const nlohmann::json lead = {{"baseline_mean", -0.0336248}, {"baseline_sd", 0.181819}, {"readings", {{"test3_directions", {{"mean", 0.14732}}}}}};
-  CHECK(validation::restate_shifts("most: test3_directions (5 of 5, mean shifted 1.00 sd); would be under other (0.34 sd, t = 0.57)", lead,
+  CHECK(restate_shifts_json("most: test3_directions (5 of 5, mean shifted 1.00 sd); would be under other (0.34 sd, t = 0.57)", lead,
                                    0.005) == "most: test3_directions (5 of 5, mean shifted +1.0 sd); would be under other (+0.34 sd, t = 0.57)");
   // Nothing to restate: as it is.
-  CHECK(validation::restate_shifts("consistent on the full-size ensemble (within the scatter of one sample)", lead, 0.005) ==
+  CHECK(restate_shifts_json("consistent on the full-size ensemble (within the scatter of one sample)", lead, 0.005) ==
         "consistent on the full-size ensemble (within the scatter of one sample)");
 }
 
@@ -149,7 +156,7 @@ TEST_CASE("validate --decisions: two studies of the same size both said, the one
   const std::vector<DecisionsFile> files = {validation::read_decisions_file(grading, rows), validation::read_decisions_file(dashpot, rows)};
   CHECK(validation::study_label(files[1]) == "dashpot");
   CHECK(files[1].rows.at("A").explained_by == std::vector<std::string>{"contact_dashpots"});
-  CHECK(files[1].rows.at("B").mean_shift.at("contact_dashpots") == Approx(0.25));
+  CHECK(*files[1].rows.at("B").mean_shift("contact_dashpots") == Approx(0.25));
 
   const std::vector<const DecisionsFile*> picked = validation::findings_for(files, "A");
   REQUIRE(picked.size() == 2);

@@ -202,6 +202,19 @@ TEST_CASE("a quasi-static reference is not judged on runs at a finite rate", "[r
     // interval, 2 x 4.303 x 1 x sqrt(4/3) = 9.94 wide, is 19.9 times the tolerance).
     for (const std::string& w : r.warnings) CHECK(w.find("by width only") == std::string::npos);
   }
+  // The warning points to the critical-state section only for a quantity that section takes to
+  // I -> 0 (its rate series fits the friction angle, critical_state_rates.cpp); a quasi-static
+  // void ratio, which no section extrapolates, is said to have none (the report once pointed to
+  // "the critical-state void ratio at I -> 0", computed nowhere).
+  std::vector<validation::RowResult::PerSample> samples;
+  for (double v : {10.6, 10.7, 10.8}) samples.push_back({"s", {v, "", ""}});
+  row.quantity = "critical_state_friction_angle";
+  CHECK(validation::judge_values(row, samples).warnings[0].find("the critical-state section compares it with its rate series taken to I -> 0") !=
+        std::string::npos);
+  row.quantity = "critical_state_void_ratio";
+  const std::string none = validation::judge_values(row, samples).warnings[0];
+  CHECK(none.find("critical-state section") == std::string::npos);
+  CHECK(none.find("no section takes critical_state_void_ratio to I -> 0") != std::string::npos);
   // literature.yaml declares its two critical-state rows so.
   const validation::References literature =
       validation::read_references(std::string(DEM_SOURCE_DIR) + "/reference_data/literature.yaml", "paper");

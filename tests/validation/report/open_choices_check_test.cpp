@@ -66,6 +66,14 @@ TEST_CASE("open choices' check: counts from the records, only the rows not consi
   CHECK(text.find("| C | ❌ inconsistent | ✅ consistent | ✅ consistent |") != std::string::npos);
   CHECK(text.find("Incomplete") == std::string::npos);
   CHECK(text.find("Another engine") == std::string::npos);
+  CHECK(text.find("⚠") == std::string::npos);  // no weak verdict: no mark, no legend
+  // A weak verdict of the paper study (B consistent by width only) is marked as everywhere, with the legend.
+  json weak = validation_record("consistent", "inconsistent", 8000, 5, nullptr);
+  weak["rows"][1]["warnings"] = json::array({"consistent by width only: none of the 5 samples lies in the paper's region"});
+  write_json(report / "validation.json", weak);
+  const std::string marked = validation::open_choices_check_text(report);
+  CHECK(marked.find("| B | ✅ consistent ⚠ | ✅ consistent | ❌ inconsistent |") != std::string::npos);
+  CHECK(marked.find("⚠ marks a verdict that cannot mean much") != std::string::npos);
 }
 
 TEST_CASE("open choices' check: a check of another set than the calibration's best is not set beside it", "[report][open_choices]") {

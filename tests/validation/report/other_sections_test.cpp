@@ -49,13 +49,53 @@ TEST_CASE("report stamps: every section another study makes is listed once, unde
     tmpl.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
   }
   std::map<std::string, int> keys;
+  std::size_t parts = 0;
   for (const auto& s : validation::other_study_sections()) {
-    REQUIRE(tmpl.find("\n## " + s.heading + "\n") != std::string::npos);
     REQUIRE(tmpl.find("{{" + s.table_key + "}}") != std::string::npos);
+    if (s.level == 3) {  // a part of a section's table: its section is listed too
+      ++parts;
+      continue;
+    }
+    REQUIRE(tmpl.find("\n## " + s.heading + "\n") != std::string::npos);
     REQUIRE(++keys[s.table_key] == 1);
   }
-  REQUIRE(keys.size() == 9);  // decisions, convergence, stability, critical state, liquefaction, literature, the two
-                              // calibrations (the demonstration, the open choices), FCC array
+  REQUIRE(keys.size() == 11);  // decisions, convergence, stability, critical state, liquefaction, literature, the two
+                               // calibrations (the demonstration, the open choices), FCC array, the earlier baseline, performance
+  REQUIRE(parts == 2);         // the critical state's ensemble and rate series
+}
+
+TEST_CASE("report stamps: a part another study feeds has its own stamp, or is refused", "[report][stamp]") {
+  // The critical-state section fed by the ensemble and rates studies: each part's heading (in the
+  // section's table) gets its study's stamp from the section's stamp.json; a part without one is
+  // not stamped, refused, or with --allow-other-baseline headed "⚠ not stamped".
+  const fs::path dir = dem::test::scratch_dir("report_stamp_parts");
+  const Stamp paper_with_source{"0.1.0+aaaa", "1111111111111111", 8000, 5, "2026-11-27", "src1"};
+  const Stamp main{"0.1.0+aaaa", "1111111111111111", 8000, 1, "2026-11-28", "src1"};
+  const Stamp ensemble{"0.1.0+aaaa", "1111111111111111", 8000, 3, "2026-11-29", "src1"};
+  nlohmann::ordered_json j = validation::stamp_json(main);
+  j["ensemble"] = validation::stamp_json(ensemble);
+  write_json(dir / "critical_state" / "stamp.json", j);
+  for (const char* f : {"decisions/decisions.json", "literature/validation.json", "literature/fcc/validation.json", "bench.json",
+                        "baselines/orthorhombic_validation.json"})
+    write_json(dir / f, {{"stamp", validation::stamp_json(main)}});
+  for (const char* f : {"stability/stamp.json", "liquefaction/stamp.json", "convergence/summary.json", "calibration/synthetic_triaxial/stamp.json",
+                        "calibration/paper_open_choices/stamp.json"})
+    write_json(dir / f, validation::stamp_json(main));
+  std::string text = report_text();
+  const std::string body = "body of Appendix: Critical state: friction, void ratio and coordination against μ\n";
+  text.insert(text.find(body) + body.size(), "\n### The critical state on 3 samples\n\nensemble table\n\n"
+                                             "### Rate convergence: the critical state at I → 0\n\nrates table\n");
+  const auto out = validation::stamp_sections(text, dir, all_run(), paper_with_source, false);
+  INFO(out.text);
+  // The ensemble's own stamp (3 samples, its date), not the section's.
+  CHECK(out.text.find("### The critical state on 3 samples\n\n*Made by engine `0.1.0+aaaa` (source `src1`) on baseline `1111111111111111` "
+                      "(8,000 spheres, 3 samples, 2026-11-29).*\n\nensemble table") != std::string::npos);
+  // The rates part has no stamp: refused, naming it.
+  REQUIRE(out.refused.size() == 1);
+  CHECK(out.refused[0].find("Rate convergence: the critical state at I → 0") != std::string::npos);
+  const auto kept = validation::stamp_sections(text, dir, all_run(), paper_with_source, true);
+  CHECK(kept.refused.empty());
+  CHECK(kept.text.find("\n### ⚠ not stamped: Rate convergence: the critical state at I → 0\n\n*⚠ Stamp not recorded") != std::string::npos);
 }
 
 TEST_CASE("report stamps: a stamp on the paper study's baseline is said under its heading", "[report][stamp]") {

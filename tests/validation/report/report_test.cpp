@@ -3,6 +3,8 @@
 // shifts are counted against max(sd, resolution), and the energy curves share their first row.
 #include <catch2/catch.hpp>
 
+#include <cstdlib>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -191,6 +193,18 @@ TEST_CASE("report: digits from the scatter", "[report][format]") {
   CHECK(significant_upper_bound(0.00012, 2) == "0.00013");    // on a digit: strictly above it
   CHECK(significant_upper_bound(0.0996, 2) == "0.10");
   CHECK(significant_upper_bound(0, 2) == "0");
+  // The class, not the instance: of every value whose two-digit rounding falls below it (as
+  // 0.0001237 does), and of every other, the bound printed is strictly above the unrounded value,
+  // so "stays below" it is true; and it is the next two-digit number, not a looser one.
+  int rounded_below = 0;
+  for (double x = 1.01e-5; x < 2e3; x *= 1.0137) {
+    const double bound = std::strtod(significant_upper_bound(x, 2).c_str(), nullptr);
+    rounded_below += std::strtod(significant(x, 2).c_str(), nullptr) < x;
+    INFO(x);
+    CHECK(bound > x);
+    CHECK(bound <= x * 1.11 + 1e-300);  // within one step of the second digit (10 % at its least, 1.0 -> 1.1)
+  }
+  CHECK(rounded_below > 100);  // the sweep meets the planted case many times
   CHECK(range_text(0.2614, 0.8743) == "0.26–0.87");
   CHECK(range_text(0.00012, 0.00016) == "0.00012–0.00016");
 }
@@ -240,6 +254,11 @@ TEST_CASE("report: templates fill keys and conditionals, and refuse unknown keys
   CHECK(fill("{{#if x}}{{#if y}}xy{{else}}x{{/if}}{{/if}}.", {{"x", "1"}}) == "x.");
   CHECK_THROWS_WITH(fill("{{missing}}", {}), Catch::Contains("{{missing}}"));
   CHECK_THROWS(fill("{{#if x}}no end", {}));
+  // A value that may be absent: its text when it is, the value when it is there.
+  CHECK(fill("Δt = {{t or \"not recorded\"}} µs", {}) == "Δt = not recorded µs");
+  CHECK(fill("Δt = {{t or \"not recorded\"}} µs", {{"t", ""}}) == "Δt = not recorded µs");
+  CHECK(fill("Δt = {{t or \"not recorded\"}} µs", {{"t", "1"}}) == "Δt = 1 µs");
+  CHECK_THROWS_WITH(fill("{{t or not recorded}}", {}), Catch::Contains("{{t or not recorded}}"));
   // Every key of the real templates is known to the tool: filled from a fixture, no note falls back.
   const Values v = figure_values(inputs(Fixture{}));
   for (const char* png : {"fig02_samples.png", "fig03_stress_paths.png", "fig04_q_p.png", "fig06_epsv.png", "fig07_epsv_cycles.png",

@@ -5,6 +5,8 @@
 // paragraph that says where the table comes from and what it cannot show.
 #include <catch2/catch.hpp>
 
+#include <nlohmann/json.hpp>
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -102,10 +104,11 @@ rows:
   // The first paragraph: where it comes from, the size, what it cannot re-draw.
   CHECK(md.rfind("Re-drawn from `" + (dir / "decisions.json").string() + "` alone, without the study's results", 0) == 0);
   CHECK(md.find("(not on the machine that drew it); size not recorded. Each shift") != std::string::npos);
-  CHECK(md.find("the readings' settings") != std::string::npos);
-  CHECK(md.find("size check") != std::string::npos);
-  CHECK(md.find("### Size check") == std::string::npos);  // not drawn
-  CHECK(md.find("Readings (each one change from the baseline, `baseline`): r1, r2.") != std::string::npos);
+  CHECK(md.find("the verdicts of the paper study's full-size ensemble (each mark below is the verdict on this study's own samples") !=
+        std::string::npos);
+  CHECK(md.find("Size check") == std::string::npos);  // the report draws the check, from decisions.json and validation.json
+  CHECK(md.find("Readings (each one change from the baseline, `baseline`): r1, r2; their settings are not recorded in the file.") !=
+        std::string::npos);
   // Groups in the file's order, each with its chart.
   CHECK(md.find("### samples") < md.find("### volumetric strain"));
   CHECK(md.find("![tornado chart: volumetric strain](tornado_volumetric_strain.png)") != std::string::npos);
@@ -125,6 +128,44 @@ rows:
   r = dem::test::run_command(common + "'" + (dir / "sized").string() + "' 2>&1");
   REQUIRE(r.exit_code == 0);
   CHECK(read_all(dir / "sized" / "table.md").find("measured at 1,000 spheres, 3 samples per reading") != std::string::npos);
+
+  // With the paper study's validation.json, the marks are its full-size ensemble's verdicts, each
+  // reading's shift of the mean applied to its samples (as drawn from the results), not the file's.
+  // e0 (paper 0.71 ± 0.02: [0.69, 0.73]): samples 0.700, 0.702, 0.704, mean 0.702, sd 0.002,
+  // interval 0.702 ± t(0.975, 2) 4.303 · 0.002 · √(4/3) = ± 0.0099: consistent; r1 shifts it by
+  // +0.02951 to [0.7216, 0.7414], which reaches 0.73: consistent (the file's mark, on its own 3
+  // samples, is ❌); r2 by -0.01049 to [0.6816, 0.7014]: consistent. εv (paper 1.1 ± 0.5: [0.6,
+  // 1.6]): samples 0.58, 0.60, 0.62 (two in the region: no "by width only" ⚠), interval 0.60 ±
+  // 0.0994 = [0.5006, 0.6994]: consistent; r1 shifts it by +0.27999 to [0.7800, 0.9793]:
+  // consistent (the file's ❌).
+  std::ofstream(dir / "validation.json") << R"js({"profile": "paper", "samples": ["seed1", "seed2", "seed3"], "missing_samples": [],
+    "missing_results": [], "rows": [
+    {"name": "e0, loose", "density": "loose", "per_sample": [{"sample": "seed1", "value": 0.700}, {"sample": "seed2", "value": 0.702},
+                                                             {"sample": "seed3", "value": 0.704}]},
+    {"name": "ev, loose", "density": "loose", "per_sample": [{"sample": "seed1", "value": 0.58}, {"sample": "seed2", "value": 0.60},
+                                                             {"sample": "seed3", "value": 0.62}]}]})js";
+  std::ofstream(dir / "decisions.json") << decisions_json(false);
+  r = dem::test::run_command(common + "'" + (dir / "full").string() + "' --ensemble-json '" + (dir / "validation.json").string() + "' 2>&1");
+  INFO(r.out);
+  REQUIRE(r.exit_code == 0);
+  const std::string full = read_all(dir / "full" / "table.md");
+  INFO(full);
+  CHECK(full.find("| e0, loose | 0.700 ± 0.021 ✅ | +1.39 ✅ | -0.49 ✅ |") != std::string::npos);
+  CHECK(full.find("| ev, loose | 0.0000100 ± 0.0000024 ✅ | +56 (beyond ±10) ✅ | +0.00 ✅ |") != std::string::npos);
+  CHECK(full.find("each mark below is the verdict on this study's own samples") == std::string::npos);
+  CHECK(full.find("of the paper study's full-size ensemble with that shift of the mean applied") != std::string::npos);
+  // A file that records the readings' settings: the same table as drawn from the results.
+  nlohmann::json with_settings = nlohmann::json::parse(decisions_json(true));
+  with_settings["settings"] = {{"baseline", "as written"}, {"r1", "damping.form = local"}};
+  std::ofstream(dir / "decisions.json") << with_settings.dump();
+  r = dem::test::run_command(common + "'" + (dir / "set").string() + "' 2>&1");
+  REQUIRE(r.exit_code == 0);
+  CHECK(read_all(dir / "set" / "table.md").find("| reading | settings |\n|---|---|\n| baseline | as written |\n| r1 | damping.form = local |\n") !=
+        std::string::npos);
+  // --ensemble-json without --from-json: exit 2.
+  CHECK(dem::test::run_command("'" + bin + "' decisions '" + dir.string() + "' '" + (dir / "y").string() + "' --ensemble-json '" +
+                               (dir / "validation.json").string() + "' 2>&1")
+            .exit_code == 2);
 
   // Bad arguments: a results folder beside --from-json, or an option of the results mode: exit 2.
   CHECK(dem::test::run_command(common + "'" + dir.string() + "' '" + (dir / "x").string() + "' 2>&1").exit_code == 2);

@@ -12,6 +12,8 @@
 #include <hdf5.h>
 #include <nlohmann/json.hpp>
 
+#include "judge/decisions_file.hpp"
+
 #include "engine/io/io_test_support.hpp"
 #include "io/hdf5.hpp"
 #include "study/baseline.hpp"
@@ -152,6 +154,18 @@ rows:
   CHECK(ev.at("judged") == false);
   CHECK(ev.at("explanation") == "not judged: no reading has every run this row reads (r lacks seed3 test2)");
   CHECK(j.at("missing_results") == 1);
+  // decisions.json is declared once (judge/decisions_file.hpp): what the reader makes of the file,
+  // written again by the writer, is the file; the readings' settings are in it, the baseline first.
+  {
+    std::ifstream again(dir / "out" / "decisions.json");
+    const nlohmann::json written = nlohmann::json::parse(again);
+    const validation::DecisionsFile back = validation::read_decisions_file((dir / "out" / "decisions.json").string(), {});
+    CHECK(nlohmann::json(validation::decisions_file_json(back)) == written);
+    REQUIRE(back.settings.size() == 2);
+    CHECK(back.settings[0].first == "baseline");
+    CHECK(back.settings[0].second.rfind("as written (", 0) == 0);
+    CHECK(back.settings[1].first == "r");
+  }
   std::ifstream table(dir / "out" / "table.md");
   const std::string md((std::istreambuf_iterator<char>(table)), std::istreambuf_iterator<char>());
   CHECK(md.find("Measured at 8 spheres, 3 samples") != std::string::npos);
