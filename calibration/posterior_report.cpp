@@ -1,4 +1,5 @@
 #include "posterior_report.hpp"
+#include "posterior_parts.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -29,7 +30,7 @@ void write_file(const fs::path& path, const std::string& text) { dem::write_file
 
 std::string g(double x) { return validation::format_number(x); }
 
-std::string prior_text(const Parameter& p) {
+std::string prior_text_of(const Parameter& p) {
   if (p.prior == Parameter::Prior::Values) {
     std::string s = "one of";
     for (const std::string& v : p.values) s += " " + v;
@@ -93,7 +94,7 @@ std::string marginal_data(const Parameter& p, std::size_t j, const Outcome& o, c
 }
 
 // "viscous 0.71, local 0.29": the posterior's weight on each value of a parameter of values.
-std::string value_shares(const Parameter& p, std::size_t j, const Outcome& o) {
+std::string value_shares_of(const Parameter& p, std::size_t j, const Outcome& o) {
   const std::vector<double> mass = value_masses(p, j, o);
   std::string text;
   for (std::size_t b = 0; b < mass.size(); ++b) text += (b ? ", " : "") + p.values[b] + " " + validation::fixed(mass[b], 2);
@@ -141,18 +142,6 @@ std::string curve_data(const CurveRow& c, const std::vector<validation::Sample>&
   return s.str();
 }
 
-// What is common to a report's parts: the outcome, the final marginals, the best sets, the rows' verdicts.
-struct Report {
-  const Outcome& o;
-  const std::map<std::string, double>& truth;
-  const IterationSummary& last;
-  std::size_t best;                 // of the first size's sets
-  RowVerdicts verdicts;             // of the first size's sets
-  std::optional<std::size_t> best_largest;  // with larger sizes: of the largest size's scored sets
-  RowVerdicts largest_verdicts;
-  Eigen::MatrixXd correlation;
-};
-
 // The stamp of every size's runs made one (a field on which they differ lists each value).
 validation::Stamp stamp_of(const Outcome& o) {
   if (o.sizes.size() == 1) return o.first().stamp;
@@ -184,7 +173,7 @@ json parameters_json(const Report& r) {
   for (std::size_t k = 0; k < c.parameters.size(); ++k) {
     const Parameter& p = c.parameters[k];
     const Marginal& m = r.last.marginals[k];
-    json x{{"name", p.name}, {"keys", p.keys}, {"applies_to", p.applies_to}, {"prior", prior_text(p)},
+    json x{{"name", p.name}, {"keys", p.keys}, {"applies_to", p.applies_to}, {"prior", prior_text_of(p)},
            {"mean", m.mean}, {"sd", m.sd}, {"median", m.median}, {"lower_95", m.lower_95}, {"upper_95", m.upper_95},
            {"narrowing", m.narrowing}, {"identified", m.identified},
            {"best", p.value(r.o.first().sets[r.best].u(static_cast<Eigen::Index>(k)))}};
@@ -348,166 +337,10 @@ void write_figure_data(const Report& r) {
   write_file(dir / "values.gp", v.text_file("calibration " + c.name + ": what calibration.gp draws"));
 }
 
-std::string interval_text(const Marginal& m) {
-  return validation::significant(m.mean, 3) + " ± " + validation::significant(m.sd, 2) + " [" + validation::significant(m.lower_95, 3) +
-         ", " + validation::significant(m.upper_95, 3) + "]";
-}
-
-// With larger sizes: each size's runs and cost, what the largest changed in each parameter, and
-// the discrepancy of each reference row at the posterior's mean.
-std::string sizes_markdown(const Report& r) {
-  const Outcome& o = r.o;
-  const Calibration& c = o.calibration;
-  std::ostringstream md;
-  validation::MarkdownTable sizes({"size (profile)", "spheres", "samples a set", "sets", "runs", "core-min", "engine", "sets from the ledger"});
-  for (const SizeOutcome& s : o.sizes)
-    sizes.row({s.profile, s.stamp.spheres > 0 ? std::to_string(s.stamp.spheres) : "not recorded", std::to_string(s.seeds.size()),
-               std::to_string(s.sets.size()), std::to_string(s.runs), validation::significant(s.core_seconds / 60, 3),
-               s.stamp.engine_source.empty() ? "not recorded" : s.stamp.engine_source,
-               std::to_string(s.ledger_sets) + (s.other_engine_sets > 0 ? " (" + std::to_string(s.other_engine_sets) + " scored by engine " +
-                                                                               s.other_engine + ")" : "")});
-  md << sizes.text() << "\n";
-  std::size_t first_sets = o.first().sets.size(), all_sets = 0;
-  for (const SizeOutcome& s : o.sizes) all_sets += s.sets.size();
-  md << validation::fixed(100.0 * static_cast<double>(first_sets) / static_cast<double>(all_sets), 0) << " % of the "
-     << all_sets << " sets run were run at " << o.first().profile << ".\n\n";
-  if (o.first_size_only.empty()) return md.str();
-  std::vector<std::string> head{"parameter", "at " + o.first().profile + " alone: mean ± sd [95 %]", "at " + o.largest().profile + ": mean ± sd [95 %]"};
-  if (!r.truth.empty()) head.push_back("truth");
-  validation::MarkdownTable changed(head);
-  for (std::size_t k = 0; k < c.parameters.size(); ++k) {
-    std::vector<std::string> cells{c.parameters[k].name, interval_text(o.first_size_only[k]), interval_text(r.last.marginals[k])};
-    if (const auto t = r.truth.find(c.parameters[k].name); t != r.truth.end()) cells.push_back(validation::significant(t->second, 3));
-    else if (!r.truth.empty()) cells.push_back("");
-    changed.row(cells);
-  }
-  md << "What the larger size changed:\n\n" << changed.text() << "\n";
-  for (std::size_t k = 1; k < o.sizes.size(); ++k) {
-    const SizeOutcome& s = o.sizes[k];
-    if (s.discrepancy_pairs == 0) {
-      md << "No discrepancy from " << o.sizes[k - 1].profile << " to " << s.profile << " yet: " << s.sets.size() << " set(s) scored at both, "
-         << "at least " << min_discrepancy_pairs << " are needed.\n\n";
-      continue;
-    }
-    md << "The discrepancy from " << o.sizes[k - 1].profile << " to " << s.profile << " (" << (s.discrepancy_linear ? "linear" : "a constant")
-       << " in the parameters, fitted to " << s.discrepancy_pairs << " sets run at both), at the posterior's mean:\n\n";
-    validation::MarkdownTable t({"reference", "largest |shift| over its points ± its sd", "at point"});
-    for (const SizeOutcome::Change& ch : s.changes) {
-      std::size_t at = 0;
-      for (std::size_t j = 1; j < ch.shift.size(); ++j)
-        if (std::abs(ch.shift[j]) > std::abs(ch.shift[at])) at = j;
-      t.row({ch.row, validation::significant(ch.shift[at], 3) + " ± " + validation::significant(ch.shift_sd[at], 2), std::to_string(at + 1)});
-    }
-    md << t.text() << "\n";
-  }
-  return md.str();
-}
-
-std::string parameters_markdown(const Report& r) {
-  const Outcome& o = r.o;
-  const Calibration& c = o.calibration;
-  std::vector<std::string> head{"parameter", "prior", "posterior mean ± sd", "95 % interval", "prior sd / posterior sd", "identified"};
-  if (!r.truth.empty()) head.insert(head.begin() + 2, "truth");
-  validation::MarkdownTable t(head);
-  for (std::size_t k = 0; k < c.parameters.size(); ++k) {
-    const Parameter& p = c.parameters[k];
-    const Marginal& m = r.last.marginals[k];
-    // A parameter of values: the posterior's share of each value (its mean of indices means nothing).
-    std::vector<std::string> cells{p.name, prior_text(p),
-                                   p.discrete() ? value_shares(p, k, o)
-                                                : validation::significant(m.mean, 3) + " ± " + validation::significant(m.sd, 2),
-                                   p.discrete() ? "—" : "[" + validation::significant(m.lower_95, 3) + ", " + validation::significant(m.upper_95, 3) + "]",
-                                   validation::significant(m.narrowing, 2),
-                                   m.identified ? "yes" : "no: the references barely narrow its prior"};
-    if (!r.truth.empty()) {
-      const auto tr = r.truth.find(p.name);
-      cells.insert(cells.begin() + 2, tr == r.truth.end() ? "" :
-                   validation::significant(tr->second, 3) + (tr->second >= m.lower_95 && tr->second <= m.upper_95 ? " (inside)" : " (OUTSIDE)"));
-    }
-    t.row(cells);
-  }
-  std::string text = t.text() + "\n";
-  if (c.parameters.size() > 1) {
-    std::vector<std::string> ch{"correlation"};
-    for (const Parameter& p : c.parameters) ch.push_back(p.name);
-    validation::MarkdownTable ct(ch);
-    for (std::size_t a = 0; a < c.parameters.size(); ++a) {
-      std::vector<std::string> cells{c.parameters[a].name};
-      for (std::size_t b = 0; b < c.parameters.size(); ++b)
-        cells.push_back(validation::fixed(r.correlation(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)), 2));
-      ct.row(cells);
-    }
-    text += ct.text() + "\n";
-  }
-  return text;
-}
-
-std::string best_set_markdown(const Calibration& c, const ParameterSet& best, const std::string& where) {
-  std::ostringstream md;
-  md << "Best set" << where << " " << best.name << " (χ² " << validation::significant(best.misfit.chi2, 3) << "):";
-  for (std::size_t k = 0; k < c.parameters.size(); ++k)
-    md << " " << c.parameters[k].name << " = "
-       << (c.parameters[k].discrete() ? c.parameters[k].value_text(best.u(static_cast<Eigen::Index>(k)))
-                                      : validation::significant(c.parameters[k].value(best.u(static_cast<Eigen::Index>(k))), 4))
-       << (k + 1 < c.parameters.size() ? "," : ".");
-  md << "\n";
-  validation::MarkdownTable rows({"reference", "points", "χ² at the best set", "χ² per point"});
-  for (const RowMisfit& m : best.misfit.rows)
-    rows.row({m.name, std::to_string(m.points), validation::significant(m.chi2, 3),
-              m.points > 0 ? validation::significant(m.chi2 / m.points, 2) : ""});
-  md << "\n" << rows.text();
-  return md.str();
-}
-
-std::string section_markdown(const Report& r) {
-  const Outcome& o = r.o;
-  const Calibration& c = o.calibration;
-  const std::vector<ParameterSet>& sets = o.first().sets;
-  int runs = 0, ledger_sets = 0;
-  for (const SizeOutcome& s : o.sizes) runs += s.runs, ledger_sets += s.ledger_sets;
-  std::ostringstream md;
-  md << "Calibration `" << c.name << "` of the study `" << fs::path(c.study).filename().string() << "` (";
-  if (o.sizes.size() == 1) md << "profile " << o.first().profile << ", " << o.first().seeds.size() << " sample(s) per set";
-  else
-    for (std::size_t k = 0; k < o.sizes.size(); ++k)
-      md << (k ? "; " : "sizes: ") << o.sizes[k].profile << ", " << o.sizes[k].seeds.size() << " sample(s) per set";
-  md << ") against " << o.references.source << ". Engine " << o.engine << ".\n\n";
-  md << sets.size() << " parameter sets in " << o.iterations.size() << (o.iterations.size() == 1 ? " iteration of " : " iterations of ")
-     << c.batch << " (" << runs << " runs, " << validation::significant(o.core_seconds() / 60, 3) << " core-min recorded); effective sample size "
-     << validation::significant(r.last.ess, 3) << "; " << (o.converged ? "converged: " : "not converged: ") << o.stop_reason << ".\n\n";
-  if (ledger_sets > 0)
-    md << ledger_sets << " of the sets were scored in earlier calls whose runs' results are not kept here: their scores come "
-       << "from the ledgers (`scored_sets*.json`), which record each set's run hashes and misfit.\n\n";
-  const auto short_of = std::count_if(sets.begin(), sets.end(), [](const ParameterSet& s) { return !s.misfit.left_out.empty(); });
-  if (short_of > 0)
-    md << short_of << " of the sets " << (short_of == 1 ? "was" : "were")
-       << " scored without a sample some run of which did not finish (`posterior.json`: `samples_left_out`).\n\n";
-  if (!o.posterior_from.empty()) {
-    md << "The posterior is sampled on a response surface (a quadratic in the parameters per curve point and per scalar row) fitted "
-          "to the "
-       << o.surface_sets << " sets nearest it, at " << o.posterior_u.size() << " points: the sets' own misfits carry the noise of "
-       << "their samples";
-    if (o.surface_noise > 0)
-      md << " (their scatter about the surface is " << validation::significant(o.surface_noise, 2) << " times the reference mean's sd, on average)";
-    md << ", which would let the luckiest set carry the posterior.\n\n";
-  }
-  if (o.sizes.size() > 1) md << sizes_markdown(r);
-  md << parameters_markdown(r);
-  validation::MarkdownTable it({"iteration", "sets", "scored (all so far)", "effective points of the posterior", "largest move"});
-  for (const IterationSummary& s : o.iterations)
-    it.row({std::to_string(s.number), std::to_string(s.sets), std::to_string(s.valued), validation::significant(s.ess, 3),
-            s.number == 1 ? "" : validation::fixed(s.moved, 3)});
-  md << it.text() << "\n";
-  md << best_set_markdown(c, sets[r.best], o.sizes.size() > 1 ? " at " + o.first().profile : "");
-  if (r.verdicts.rows > 0) md << "\n" << rows_markdown(r.verdicts, sets);
-  if (r.best_largest) {
-    md << "\n" << best_set_markdown(c, o.largest().sets[*r.best_largest], " at " + o.largest().profile);
-    if (r.largest_verdicts.rows > 0) md << "\n" << rows_markdown(r.largest_verdicts, o.largest().sets);
-  }
-  return md.str();
-}
-
 }  // namespace
+
+std::string prior_text(const Parameter& p) { return prior_text_of(p); }
+std::string value_shares(const Parameter& p, std::size_t j, const Outcome& o) { return value_shares_of(p, j, o); }
 
 std::map<std::string, double> parameters_of_result(const Calibration& c, const std::string& result) {
   dem::h5::Handle f = dem::h5::open_file_read(result);

@@ -13,6 +13,7 @@
 
 #include "io/file_lock.hpp"
 #include "plan/plan_cost.hpp"  // result_cost (the tracker and calibrate read it through here)
+#include "plan/reuse.hpp"  // up_to_date, recorded_stop (the executors and calibrate read them through here)
 #include "plan/run_plan.hpp"
 
 namespace pipeline {
@@ -43,25 +44,6 @@ std::unique_ptr<dem::FileLock> lock_results_folder(const std::string& out_dir);
 // report folder with it: two calibrations there would each write the ledger and the posterior).
 std::unique_ptr<dem::FileLock> lock_folder(const std::string& dir, const std::string& name, const std::string& tool,
                                            const std::string& why);
-
-// True if `result` is a complete result whose `input_hash` attribute equals `hash`.
-bool up_to_date(const std::string& result, const std::string& hash);
-
-// Why `result` cannot be reused for `hash`: "" if it can, else "not run yet", "not a complete result
-// (status '...')", "written for other inputs" or "unreadable, truncated or corrupt (...)".
-std::string reuse_problem(const std::string& result, const std::string& hash);
-
-// A may_fail run's recorded stop: <result>.outcome, written atomically when it stopped.
-struct Stop {
-  std::string input_hash;
-  int exit_code = 0;     // 2: refused before any step; 1: stopped during the run
-  std::string message;   // the engine's message (status attribute of the .partial, or the log's error line)
-};
-std::string outcome_file(const std::string& result);
-std::optional<Stop> read_stop(const std::string& result);
-void write_stop(const std::string& result, const Stop& stop);
-// The recorded stop of `result` if it has the input hash `hash`.
-std::optional<Stop> recorded_stop(const std::string& result, const std::string& hash);
 
 // `threads`: threads inside each run (dem run --threads).
 Outcome execute(const std::vector<PlannedRun>& runs, const std::string& dem_binary, int jobs, int threads = 1);

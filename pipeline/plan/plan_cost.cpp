@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "io/hdf5.hpp"
+#include "plan/reuse.hpp"
 
 namespace pipeline {
 
