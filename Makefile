@@ -44,7 +44,7 @@ REPORT_ALL = $(REPORT) --baseline $(BASELINE) --decisions $(DECISIONS) --stabili
 # A calibration report's figures, drawn in its folder ($(1)).
 CALIBRATION_FIGURES = cd $(1) && GNUPLOT_LIB=$(CURDIR)/reports/gnuplot gnuplot $(CURDIR)/reports/gnuplot/calibration.gp
 
-.PHONY: all deps build tools examples example-samples install test kill-test slurm-test sanitize clang-test fuzz bench quick study convergence report decisions decisions-report convergence-report stability-report critical-state-report liquefaction-report readings-report report-sections literature literature-report critical-state liquefaction samples samples-study cyclic-tests render calibration-demo calibration-example open-choices open-choices-check clean
+.PHONY: all deps build tools examples example-samples install test kill-test slurm-test sanitize clang-test fuzz bench quick study convergence report decisions decisions-report convergence-report stability-report critical-state-report liquefaction-report readings-report report-sections literature literature-report critical-state liquefaction samples samples-study cyclic-tests render calibration-demo calibration-two-sizes calibration-example open-choices open-choices-check clean
 
 # Everything: install, build the tools, run the full study, validate it, draw the figures and write
 # reports/index.md; fails at the end if a must-pass validation row is inconsistent with the paper.
@@ -72,19 +72,25 @@ example-samples: tools
 	@for d in loose medium dense; do OMP_NUM_THREADS=1 $(BUILD)/bin/dem run scenes/prepare_$$d.yaml --set 'particles.lattice.n=[10, 10, 10]' \
 	  --out scenes/samples/$${d}_1k.h5 --threads 1 --no-resume --force --quiet && rm -f scenes/samples/$${d}_1k.xdmf || exit 1; done
 
-# Calibrations (docs/calibration.md): the demonstration with a known answer; the paper's open choices, then
-# their best set at 8,000 spheres (calibration_paper.yaml with it as its one variant); the example.
-CAL_RESULTS := results/calibration/paper
+# Calibrations (docs/calibration.md). A demonstration with a known answer: calibration_truth.yaml's
+# profile $(2) makes the lab curves of calibration $(1). calibration-two-sizes: lab at 8,000 spheres,
+# sets at 1,000 and 8,000, and the same fitted at 1,000 alone.
 CAL_POINTS := 0.0002,0.0005,0.001,0.002,0.005,0.01,0.02,0.04,0.07
-CAL_REPORT := reports/calibration/synthetic_triaxial
+define CALIBRATION_DEMO
+	$(PIPELINE) pipeline/studies/calibration_truth.yaml --profile $(2) -j $(JOBS)
+	for y in q_over_p volumetric_strain; do $(BUILD)/bin/calibrate lab-curve --x strain_3 --y $$y --at $(CAL_POINTS) --out \
+	  reference_data/calibration/$(1)_$$y.csv $(foreach s,11 12 13 14 15,results/calibration/$(2)/seed$(s)/truth_dense_triaxial.h5) || exit 1; done
+	$(BUILD)/bin/calibrate truth pipeline/calibrations/$(1).yaml results/calibration/$(2)/seed11/truth_dense_triaxial.h5 --out reports/calibration/$(1)/truth.json
+	$(BUILD)/bin/calibrate pipeline/calibrations/$(1).yaml -j $(JOBS) --truth reports/calibration/$(1)/truth.json
+	$(call CALIBRATION_FIGURES,reports/calibration/$(1))
+endef
 calibration-demo: tools
-	$(PIPELINE) pipeline/studies/calibration_truth.yaml -j $(JOBS)
-	for y in q_over_p volumetric_strain; do $(BUILD)/bin/calibrate lab-curve --x strain_3 --y $$y --at $(CAL_POINTS) \
-	  --out reference_data/calibration/synthetic_triaxial_$$y.csv $(foreach s,11 12 13 14 15,$(CAL_RESULTS)/seed$(s)/truth_dense_triaxial.h5) || exit 1; done
-	$(BUILD)/bin/calibrate truth pipeline/calibrations/synthetic_triaxial.yaml $(CAL_RESULTS)/seed11/truth_dense_triaxial.h5 --out $(CAL_REPORT)/truth.json
-	$(BUILD)/bin/calibrate pipeline/calibrations/synthetic_triaxial.yaml -j $(JOBS) --truth $(CAL_REPORT)/truth.json
-	$(call CALIBRATION_FIGURES,$(CAL_REPORT))
-
+	$(call CALIBRATION_DEMO,synthetic_triaxial,paper)
+calibration-two-sizes: tools
+	$(call CALIBRATION_DEMO,synthetic_two_sizes,large)
+	$(BUILD)/bin/calibrate truth pipeline/calibrations/synthetic_one_size.yaml results/calibration/large/seed11/truth_dense_triaxial.h5 --out reports/calibration/synthetic_one_size/truth.json
+	$(BUILD)/bin/calibrate pipeline/calibrations/synthetic_one_size.yaml -j $(JOBS) --truth reports/calibration/synthetic_one_size/truth.json
+	$(call CALIBRATION_FIGURES,reports/calibration/synthetic_one_size)
 OPEN := pipeline/calibrations/paper_open_choices.yaml
 OPEN_REPORT := reports/calibration/paper_open_choices
 open-choices: tools
@@ -102,7 +108,6 @@ calibration-example: tools
 PREFIX ?= /usr/local
 install: tools
 	cmake --install $(BUILD) --prefix $(PREFIX)
-
 # Unit tests, then a smoke run of the pipeline (quick profile) and of the stability matrix.
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
@@ -117,7 +122,6 @@ kill-test: build
 	tests/kill/study_kill_test.sh $(BUILD)/bin 5 $(BUILD)/kill-test/study-long
 slurm-test: build
 	tests/slurm/slurm_test.sh $(BUILD)/bin $(BUILD)/slurm-test
-
 # The input readers' tests with ASan and UBSan, at -O1 -g1 (496 s on CI's VM; -O2 -g: 1,019 s).
 SANITIZE_TAGS := config csv state input io result checkpoint
 SANITIZE_FILTER := $(shell printf '[%s],' $(SANITIZE_TAGS) | sed 's/,$$//')
@@ -126,14 +130,12 @@ sanitize: deps
 	  -DDEM_SANITIZE=ON -DDEM_SANITIZE_TAGS="$(SANITIZE_TAGS)" >/dev/null
 	cmake --build $(BUILD)-sanitize -j $(JOBS) --target dem_input_tests
 	ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 OMP_NUM_THREADS=1 $(BUILD)-sanitize/bin/dem_input_tests "$(SANITIZE_FILTER)"
-
 # The unit tests of what clang compiles its own way (dem_kernel_tests; [threads]: make test's).
 clang-test: deps
 	@$(call INSTALL,clang libomp-dev)
 	cmake -S . -B $(BUILD)-clang -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Release >/dev/null
 	cmake --build $(BUILD)-clang -j $(JOBS) --target dem_kernel_tests
 	OMP_NUM_THREADS=1 $(BUILD)-clang/bin/dem_kernel_tests "~[threads]"
-
 # libFuzzer on the scene YAML, study YAML and particle CSV readers, FUZZ_SECONDS each.
 FUZZ_SECONDS ?= 60
 fuzz: deps
@@ -141,7 +143,6 @@ fuzz: deps
 	cmake -S . -B $(BUILD)-fuzz -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDEM_FUZZ=ON >/dev/null
 	cmake --build $(BUILD)-fuzz -j $(JOBS) --target fuzz_scene fuzz_study fuzz_csv
 	tests/fuzz/run_fuzz.sh $(BUILD)-fuzz $(FUZZ_SECONDS)
-
 # The engine's speed against LAMMPS and against size (a quarter of an hour): reports/bench.{json,md}.
 bench: build
 	@$(call INSTALL,lammps)
@@ -162,7 +163,6 @@ quick: build
 	-$(TABLES) $(QUICK) --references reference_data/paper.yaml --per-sample > $(BUILD)/quick-report/samples.md
 	$(REPORT) --results $(QUICK) --out $(BUILD)/quick-report --profile quick
 	reports/render_html.sh $(BUILD)/quick-report/index.md $(BUILD)/quick-report/index.html
-
 # Validation table, figures, every section another study feeds, then reports/index.md and its web
 # page (a section whose study has not run here keeps its committed tables, and says so).
 report: tools stability-report
@@ -174,7 +174,6 @@ report: tools stability-report
 	-$(MAKE) --no-print-directory -k convergence-report critical-state-report liquefaction-report literature-report
 	$(REPORT_ALL) --results $(RESULTS) --out reports
 	reports/render_html.sh reports/index.md reports/index.html
-
 # The report without the paper study's results: its verdicts judged again from the committed
 # reports/validation.json, its values read back from reports/study_values.json.
 report-sections: tools
