@@ -17,6 +17,7 @@
 #include "row_verdicts.hpp"
 #include "study/format.hpp"
 #include "study/markdown_table.hpp"
+#include "study/posterior_summary.hpp"
 #include "study/series.hpp"
 #include "study/stamp.hpp"
 
@@ -258,8 +259,9 @@ json posterior_json(const Report& r) {
     j["correlations"].push_back(row);
   }
   const ParameterSet& best = o.first().sets[r.best];
-  j["best_set"] = {{"name", best.name}, {"chi2", best.misfit.chi2}};
-  if (r.verdicts.rows > 0) j["rows_consistent"] = rows_json(r.verdicts, o.first().sets);
+  namespace keys = validation::posterior_keys;  // what the report reads, declared once
+  j[keys::best_set] = {{keys::name, best.name}, {"chi2", best.misfit.chi2}};
+  if (r.verdicts.rows > 0) j[keys::rows_consistent] = rows_json(r.verdicts, o.first().sets);
   j["sets"] = sets_json(c, o.first().sets, &o.weights, r.verdicts);
   if (o.sizes.size() > 1) {
     const SizeOutcome& top = o.largest();
@@ -269,7 +271,7 @@ json posterior_json(const Report& r) {
     j["largest_size"] = x;
   }
   // The stamp of the runs (engine, baseline, spheres, samples, date), for the report's section line.
-  j["stamp"] = validation::stamp_json(stamp_of(o));
+  j[keys::stamp] = validation::stamp_json(stamp_of(o));
   return j;
 }
 

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "study/markdown_table.hpp"
+#include "study/posterior_summary.hpp"
 
 namespace calibration {
 
@@ -68,14 +69,16 @@ nlohmann::json rows_json(const RowVerdicts& v, const std::vector<ParameterSet>& 
   j["rows"] = v.rows;
   j["scored_sets"] = v.sets.size();
   j["sets_with_every_row_consistent"] = v.all_consistent;
-  if (v.best) j["best_set"] = {{"name", sets[v.best->set].name}, {"consistent", v.best->consistent}, {"judged", v.best->judged}};
+  namespace keys = validation::posterior_keys;  // what the report reads, declared once
+  if (v.best)
+    j[keys::best_set] = {{keys::name, sets[v.best->set].name}, {keys::consistent, v.best->consistent}, {keys::judged, v.best->judged}};
   if (v.most) j["most"] = {{"name", sets[v.most->set].name}, {"consistent", v.most->consistent}, {"judged", v.most->judged}};
   for (const RowTally& t : v.per_row) {
-    nlohmann::json r{{"name", t.name}, {"consistent_sets", t.consistent_sets}, {"judged_sets", t.judged_sets}};
+    nlohmann::json r{{keys::name, t.name}, {"consistent_sets", t.consistent_sets}, {"judged_sets", t.judged_sets}};
     if (t.most_with >= 0) r["most_rows_consistent_with_it"] = t.most_with;
-    if (t.at_best) r["consistent_at_best_set"] = *t.at_best;
+    if (t.at_best) r[keys::consistent_at_best_set] = *t.at_best;
     if (!t.never_with.empty()) r["never_consistent_with"] = t.never_with;
-    j["per_row"].push_back(r);
+    j[keys::per_row].push_back(r);
   }
   return j;
 }
