@@ -7,7 +7,6 @@
 #include <filesystem>
 #include <fstream>
 #include <set>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -18,13 +17,6 @@ namespace fs = std::filesystem;
 namespace {
 
 const std::string bin = std::string(DEM_BINARY_DIR) + "/bin/";
-
-std::string read(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // A tiny study with two profiles (64 and 125 spheres, one sample each), a typed curve, and a
 // calibration of one parameter across the two sizes.
@@ -67,7 +59,7 @@ TEST_CASE("calibrate across two sizes: the chosen sets run at the large size, a 
   const auto first = dem::test::run_command(cmd + " --dem ./other_dem 2>&1");
   INFO(first.out);
   REQUIRE(first.exit_code == 0);
-  const nlohmann::json p = nlohmann::json::parse(read(dir / "report" / "posterior.json"));
+  const nlohmann::json p = nlohmann::json::parse(dem::test::read_bytes((dir / "report" / "posterior.json").string()));
   REQUIRE(p["sizes"].size() == 2);
   CHECK(p["sizes"][0]["sets"] == 16);
   CHECK(p["sizes"][1]["sets"] == 4);  // 2 per iteration, 4 at most
@@ -85,7 +77,7 @@ TEST_CASE("calibrate across two sizes: the chosen sets run at the large size, a 
   for (const auto& s : p["largest_size"]["sets"]) CHECK(small.count(s["name"].get<std::string>()) == 1);
   CHECK(fs::exists(dir / "report" / "scored_sets.json"));
   CHECK(fs::exists(dir / "report" / "scored_sets.large.json"));
-  const std::string section = read(dir / "report" / "section.md");
+  const std::string section = dem::test::read_bytes((dir / "report" / "section.md").string());
   CHECK_THAT(section, Catch::Contains("What the larger size changed") && Catch::Contains("80 % of the 20 sets run were run at small"));
 
   // Without the runs' results, with this engine: the ledgers were scored by another engine, so
@@ -100,11 +92,11 @@ TEST_CASE("calibrate across two sizes: the chosen sets run at the large size, a 
   REQUIRE(replay.exit_code == 0);
   CHECK(replay.out.find("] started ") == std::string::npos);
   CHECK_FALSE(fs::exists(dir / "results" / "calibration_tiny" / "small" / "runs.tsv"));
-  nlohmann::json again = nlohmann::json::parse(read(dir / "report" / "posterior.json"));
+  nlohmann::json again = nlohmann::json::parse(dem::test::read_bytes((dir / "report" / "posterior.json").string()));
   CHECK(again["sizes"][0]["sets_scored_by_another_engine"]["sets"] == 16);
   CHECK(again["sizes"][0]["sets_scored_by_another_engine"]["engine"] == "feedfacefeedface schema 4");
   CHECK(again["sizes"][1]["sets_scored_by_another_engine"]["sets"] == 4);
-  CHECK_THAT(read(dir / "report" / "section.md"), Catch::Contains("scored by engine feedfacefeedface schema 4"));
+  CHECK_THAT(dem::test::read_bytes((dir / "report" / "section.md").string()), Catch::Contains("scored by engine feedfacefeedface schema 4"));
   CHECK(again["parameters"] == p["parameters"]);
   CHECK(again["sets"] == p["sets"]);
   CHECK(again["largest_size"] == p["largest_size"]);

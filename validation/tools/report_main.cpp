@@ -77,6 +77,29 @@ std::string built_from() {
 
 
 // The tool; main runs it under guarded_main (a file system error names its path, exit 1).
+namespace {
+
+// Nothing to report on is an error: --results must be a folder; one that does not exist only
+// when the report's folder keeps what an earlier report took from the results (study_values.json).
+// --out must be a folder or not exist yet. False (the error printed) when they are not.
+bool folders_usable(const std::string& results, const std::string& out) {
+  std::error_code ec;
+  if (const std::string bad = validation::folder_problem(results);
+      !bad.empty() && !(bad == "does not exist" && fs::exists(fs::path(out) / validation::study_values_file, ec))) {
+    std::fprintf(stderr, "report: --results '%s' %s (a study's results folder: seed<N>/ folders or one sample's results%s)\n",
+                 results.c_str(), bad.c_str(),
+                 bad == "does not exist" ? "; without it, REPORT_DIR/study_values.json, which a report written with the results leaves" : "");
+    return false;
+  }
+  if (fs::exists(out, ec) && !fs::is_directory(out, ec)) {
+    std::fprintf(stderr, "report: --out '%s' is not a folder\n", out.c_str());
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
 int tool_main(int argc, char** argv) {
   std::map<std::string, std::string> opt = {{"--profile", "paper"}, {"--templates", "reports/templates"}};
   CLI::App app{"report: writes the study report REPORT_DIR/index.md from a study's results, the validation output, the figures, "
@@ -113,19 +136,7 @@ int tool_main(int argc, char** argv) {
     }
   const std::string results = opt["--results"], out = opt["--out"];
   std::error_code ec;
-  // Nothing to report on is an error: --results must be a folder; one that does not exist only
-  // when the report's folder keeps what an earlier report took from the results (study_values.json).
-  if (const std::string bad = validation::folder_problem(results);
-      !bad.empty() && !(bad == "does not exist" && fs::exists(fs::path(out) / validation::study_values_file, ec))) {
-    std::fprintf(stderr, "report: --results '%s' %s (a study's results folder: seed<N>/ folders or one sample's results%s)\n",
-                 results.c_str(), bad.c_str(),
-                 bad == "does not exist" ? "; without it, REPORT_DIR/study_values.json, which a report written with the results leaves" : "");
-    return 2;
-  }
-  if (fs::exists(out, ec) && !fs::is_directory(out, ec)) {
-    std::fprintf(stderr, "report: --out '%s' is not a folder\n", out.c_str());
-    return 2;
-  }
+  if (!folders_usable(results, out)) return 2;
   try {
     fs::create_directories(out);
     const fs::path report = out;
