@@ -288,6 +288,7 @@ void score_iteration(Loop& l, std::size_t k, int it, const IterationPlan& p) {
 // Size k's ledger: every set scored so far (with its share of the runs and their cost), and the
 // entries of sets not drawn yet (a later iteration may draw them again).
 void keep_scores(Loop& l, std::size_t k, const IterationPlan& p) {
+  if (l.o.ledger_only) return;  // a replay writes no ledger
   SizeState& size = l.at[k];
   const SizeOutcome& so = l.out.sizes[k];
   const std::map<std::string, RunShare> shares = run_shares(p.runs, l.o.threads);
@@ -307,7 +308,6 @@ void keep_scores(Loop& l, std::size_t k, const IterationPlan& p) {
   }
   for (const ScoredSet& e : size.ledger.sets)
     if (std::none_of(so.sets.begin(), so.sets.end(), [&](const ParameterSet& s) { return s.name == e.name; })) next.sets.push_back(e);
-  if (l.o.ledger_only) return;  // a replay writes no ledger
   if (const std::string kept = write_ledger(size.ledger_file, next, l.out.references); !kept.empty())
     std::printf("[calibrate] the ledger %s held sets scored against other references or not among this calibration's: "
                 "kept as %s, a new one written\n", size.ledger_file.c_str(), kept.c_str());

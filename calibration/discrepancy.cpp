@@ -17,21 +17,6 @@ Eigen::VectorXd Discrepancy::features(const Eigen::VectorXd& u) const {
   return x;
 }
 
-namespace {
-
-// The samples' variance of a point at the large size: their own (3 or more a set, averaged over
-// the sets), else the reference's sd squared (one specimen's scatter stands for one sample's).
-void large_sample_variance(Quadratic& q, const std::vector<const RowMisfit*>& large, std::size_t point, double reference_sd) {
-  q.samples = std::max(1, large.front()->samples);
-  q.sample_variance = reference_sd * reference_sd;
-  if (q.samples < 3) return;
-  double v = 0;
-  for (const RowMisfit* m : large) v += m->model_sd[point] * m->model_sd[point] / static_cast<double>(large.size());
-  q.sample_variance = v;
-}
-
-}  // namespace
-
 std::optional<Discrepancy> fit_discrepancy(const References& refs, const std::vector<ParameterSet>& small,
                                            const std::vector<ParameterSet>& large) {
   std::map<std::string, const ParameterSet*> small_by_name;
@@ -54,33 +39,32 @@ std::optional<Discrepancy> fit_discrepancy(const References& refs, const std::ve
     if (!(delta.scale(k) > 0)) delta.scale(k) = 1;  // every pair at one value of it: its slope is not fitted (minimum norm)
   std::vector<Eigen::VectorXd> x;
   for (const auto& p : pairs) x.push_back(delta.features(p.second->u));
-  const auto fit_row = [&](std::size_t row, std::size_t point, double reference_sd) {
+  // Each point's difference fitted; its samples' variance, the large size's: a curve point's, their
+  // own over the sets with 3 samples or more, else the reference's sd squared (one specimen's
+  // scatter stands for one sample's, as on a surface); a scalar row's, their own with 2 or more
+  // (its likelihood is about one sample), else its resolution (or tolerance) squared.
+  const auto fit_point = [&](std::size_t row, std::size_t point, int own_from, double otherwise) {
     std::vector<double> y;
-    std::vector<const RowMisfit*> large_rows;
+    double own = 0;
     for (const auto& p : pairs) {
-      y.push_back(p.second->misfit.rows[row].model.at(point) - p.first->misfit.rows[row].model.at(point));
-      large_rows.push_back(&p.second->misfit.rows[row]);
+      const RowMisfit& large = p.second->misfit.rows[row];
+      y.push_back(large.model.at(point) - p.first->misfit.rows[row].model.at(point));
+      own += large.model_sd.at(point) * large.model_sd.at(point) / static_cast<double>(pairs.size());
     }
     Quadratic q = fit_quadratic(x, y);
-    large_sample_variance(q, large_rows, point, reference_sd);
+    q.samples = std::max(1, pairs.front().second->misfit.rows[row].samples);
+    q.sample_variance = q.samples >= own_from ? own : otherwise;
     return q;
   };
   for (std::size_t c = 0; c < refs.curves.size(); ++c) {
     std::vector<Quadratic> per_point;
-    for (std::size_t j = 0; j < refs.curves[c].points.size(); ++j) per_point.push_back(fit_row(c, j, refs.curves[c].points[j].sd));
+    for (std::size_t j = 0; j < refs.curves[c].points.size(); ++j)
+      per_point.push_back(fit_point(c, j, 3, std::pow(refs.curves[c].points[j].sd, 2)));
     delta.curves.push_back(std::move(per_point));
   }
   for (std::size_t r = 0; r < refs.rows.size(); ++r) {
     const validation::Row& row = refs.rows[r];
-    Quadratic q = fit_row(refs.curves.size() + r, 0, 0);
-    // A scalar row's likelihood is about one sample: its variance, not its mean's (surrogate.hpp).
-    if (q.samples < 2) q.sample_variance = std::pow(row.resolution > 0 ? row.resolution : row.tolerance, 2);
-    else {
-      double v = 0;
-      for (const auto& p : pairs) v += std::pow(p.second->misfit.rows[refs.curves.size() + r].model_sd.at(0), 2) / static_cast<double>(pairs.size());
-      q.sample_variance = v;
-    }
-    delta.rows.push_back(std::move(q));
+    delta.rows.push_back(fit_point(refs.curves.size() + r, 0, 2, std::pow(row.resolution > 0 ? row.resolution : row.tolerance, 2)));
   }
   return delta;
 }
