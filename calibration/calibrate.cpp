@@ -208,9 +208,31 @@ IterationPlan plan_iteration(Loop& l, std::size_t k, int it) {
     size.from_ledger.emplace(s.name, *e);
     p.in_ledger.insert(s.name);
     if (other_engine) ++so.other_engine_sets, so.other_engine = size.ledger.stamp.engine_source;
+    if (!e->verified_by.empty()) ++so.verified_sets, so.verified_by = e->verified_by;
   }
   return p;
 }
+
+}  // namespace
+
+void execute_sets(Loop& l, std::size_t k, const std::vector<ParameterSet>& sets, const std::vector<pipeline::PlannedRun>& runs) {
+  SizeState& size = l.at[k];
+  const SizeOutcome& so = l.out.sizes[k];
+  if (!size.lock) size.lock = pipeline::lock_results_folder(so.results);
+  pipeline::write_scenes(runs);
+  pipeline::Study study = l.study;
+  study.variants.clear();
+  for (const ParameterSet& s : sets) study.variants.push_back(variant_of(l.c, s));
+  pipeline::write_manifest(runs, study, so.results, l.out.engine);
+  pipeline::Outcome ran;
+  if (l.o.executor == "slurm")
+    ran = pipeline::slurm::execute(runs, std::vector<pipeline::SlurmOptions>(runs.size(), l.study.slurm), l.o.dem);
+  else
+    ran = pipeline::execute(runs, l.o.dem, l.o.jobs, l.o.threads);
+  if (ran.interrupted) throw dem::ConfigError("interrupted: start the calibration again to go on (finished runs are reused)");
+}
+
+namespace {
 
 // Runs what the iteration needs at size k but the ledger's sets (the plan is made again without them).
 void run_iteration(Loop& l, std::size_t k, int it, IterationPlan& p) {
@@ -235,18 +257,7 @@ void run_iteration(Loop& l, std::size_t k, int it, IterationPlan& p) {
                              std::to_string(missing.size()) + " of iteration " + std::to_string(it) + " lack one) and nothing may run");
     return;
   }
-  if (!size.lock) size.lock = pipeline::lock_results_folder(so.results);
-  pipeline::write_scenes(p.runs);
-  pipeline::Study study = l.study;
-  study.variants.clear();
-  for (const ParameterSet& s : p.to_run) study.variants.push_back(variant_of(l.c, s));
-  pipeline::write_manifest(p.runs, study, so.results, l.out.engine);
-  pipeline::Outcome ran;
-  if (l.o.executor == "slurm")
-    ran = pipeline::slurm::execute(p.runs, std::vector<pipeline::SlurmOptions>(p.runs.size(), l.study.slurm), l.o.dem);
-  else
-    ran = pipeline::execute(p.runs, l.o.dem, l.o.jobs, l.o.threads);
-  if (ran.interrupted) throw dem::ConfigError("interrupted: start the calibration again to go on (finished runs are reused)");
+  execute_sets(l, k, p.to_run, p.runs);
 }
 
 // Scores size k's sets of this iteration not in the ledger on their samples; every set of it gets
@@ -304,7 +315,7 @@ void keep_scores(Loop& l, std::size_t k, const IterationPlan& p) {
     const RunShare share = found == shares.end() ? RunShare{} : found->second;
     const auto h = p.hashes.find(s.name);
     next.sets.push_back({s.name, s.u, h == p.hashes.end() ? std::vector<std::string>{} : h->second, s.misfit, share.runs,
-                         share.cost.core_seconds, share.cost.particle_steps});
+                         share.cost.core_seconds, share.cost.particle_steps, ""});
   }
   for (const ScoredSet& e : size.ledger.sets)
     if (std::none_of(so.sets.begin(), so.sets.end(), [&](const ParameterSet& s) { return s.name == e.name; })) next.sets.push_back(e);
@@ -425,6 +436,7 @@ double Outcome::core_seconds() const {
 std::optional<Outcome> run_calibration(const Calibration& c, const RunOptions& o) {
   Loop l(c, o);
   start(l);
+  for (std::size_t k = 0; k < l.at.size(); ++k) verify_ledger(l, k);
   Outcome& out = l.out;
   for (int it = 1; it <= c.max_iterations; ++it) {
     draw_batch(l, it);

@@ -1,7 +1,7 @@
 // calibrate: infers scene parameters from references (curves of a lab test, or a reference file's
 // rows) by running parameter sets of a study through the pipeline (calibration/README.md).
 //   calibrate CALIBRATION.yaml [--profile P] [-j N] [--threads T] [--executor local|slurm] [--plan] [--truth FILE]
-//             [--ledger-engine] [--ledger-only]
+//             [--ledger-engine] [--ledger-verify K] [--ledger-only]
 //   calibrate lab-curve --x COLUMN --y COLUMN --at X1,X2,... --out FILE.csv RESULT.h5...
 //   calibrate truth CALIBRATION.yaml RESULT.h5 --out FILE.json
 //   calibrate variant CALIBRATION.yaml [--set NAME]
@@ -181,6 +181,11 @@ int calibrate(int argc, char** argv) {
   app.add_flag("--ledger-engine", o.ledger_engine,
                "take the ledgers' scores of sets whose scenes are unchanged even if another engine scored them (the report names "
                "that engine and how many sets it scored)");
+  app.add_option("--ledger-verify", o.ledger_verify,
+                 "take the ledgers' sets whose runs hash otherwise here (their scenes' text or engine changed) once this many of "
+                 "them, spread over each ledger, run again here score bit for bit as the ledger has them (the report says which "
+                 "and how many were taken); a difference stops the calibration")
+      ->check(CLI::Range(1, 1000));
   app.add_flag("--ledger-only", o.ledger_only, "run nothing: every set from the ledgers (a replay); a set they lack is an error");
   app.footer("calibrate lab-curve --help and calibrate truth --help: the demonstration's synthetic references; calibrate variant --help: "
              "a finished calibration's set as a study variant.");

@@ -77,6 +77,12 @@ const ScoredSet* Ledger::find(const std::string& name, const Eigen::VectorXd& u,
   return nullptr;
 }
 
+ScoredSet* Ledger::find_set(const std::string& name, const Eigen::VectorXd& u) {
+  for (ScoredSet& s : sets)
+    if (s.name == name && s.u.size() == u.size() && (s.u - u).cwiseAbs().maxCoeff() <= 1e-9) return &s;
+  return nullptr;
+}
+
 std::optional<double> Ledger::throughput() const {
   double particle_steps = 0, core_seconds = 0;
   for (const ScoredSet& s : sets)
@@ -129,6 +135,7 @@ ScoredSet entry_of(const json& s) {
   e.runs = s.at("runs").get<double>();
   e.core_seconds = s.at("core_seconds").get<double>();
   e.particle_steps = s.value("particle_steps", 0.0);
+  e.verified_by = s.value("verified_by", std::string());
   return e;
 }
 
@@ -190,7 +197,7 @@ std::string write_ledger(const std::string& file, const Ledger& ledger, const Re
          {"references_key", ledger.references_key},
          {"stamp", validation::stamp_json(ledger.stamp)},
          {"sets", json::array()}};
-  for (const ScoredSet& s : ledger.sets)
+  for (const ScoredSet& s : ledger.sets) {
     j["sets"].push_back({{"name", s.name},
                          {"u", std::vector<double>(s.u.data(), s.u.data() + s.u.size())},
                          {"run_hashes", s.run_hashes},
@@ -198,6 +205,8 @@ std::string write_ledger(const std::string& file, const Ledger& ledger, const Re
                          {"core_seconds", s.core_seconds},
                          {"particle_steps", s.particle_steps},
                          {"misfit", misfit_json(s.misfit)}});
+    if (!s.verified_by.empty()) j["sets"].back()["verified_by"] = s.verified_by;
+  }
   dem::write_file_atomically(file, j.dump(1) + "\n");
   return kept;
 }

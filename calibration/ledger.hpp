@@ -23,6 +23,9 @@ struct ScoredSet {
   double runs = 0;          // its share of the runs it needs (a run k sets need counts 1/k for each)
   double core_seconds = 0;  // its share of their recorded cost
   double particle_steps = 0;  // its share of their recorded particle-steps (0 in entries written without)
+  // Empty for a set scored on runs of these hashes; else how its score came to stand for them:
+  // scored on runs that hashed otherwise, taken after a verification (RunOptions::ledger_verify).
+  std::string verified_by;
 };
 
 struct Ledger {
@@ -33,6 +36,8 @@ struct Ledger {
 
   // The entry of the set, or null when there is none with these unit values and run hashes.
   const ScoredSet* find(const std::string& name, const Eigen::VectorXd& u, const std::vector<std::string>& run_hashes) const;
+  // The entry of the set whatever its runs' hashes (null when there is none with these unit values).
+  ScoredSet* find_set(const std::string& name, const Eigen::VectorXd& u);
   // The particle-steps per core-second its entries' runs recorded, on the machine that ran them
   // (null when no entry recorded both).
   std::optional<double> throughput() const;

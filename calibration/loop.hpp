@@ -63,6 +63,14 @@ std::vector<pipeline::PlannedRun> plan_sets(const Calibration& c, const pipeline
 // The input hashes of the runs each set needs, sorted, by set name.
 std::map<std::string, std::vector<std::string>> run_hashes_by_set(const std::vector<pipeline::PlannedRun>& runs);
 
+// Runs `runs` (the plan of `sets` at size k) in its results folder, locked; throws when interrupted.
+void execute_sets(Loop& l, std::size_t k, const std::vector<ParameterSet>& sets, const std::vector<pipeline::PlannedRun>& runs);
+
+// With RunOptions::ledger_verify: size k's ledger entries whose runs hash otherwise here are taken
+// (rehashed, their verified_by said) once the verification sets, run here first, score bit for bit
+// as the ledger has them; throws, naming the set and the row, when one does not (ledger_verify.cpp).
+void verify_ledger(Loop& l, std::size_t k);
+
 // Prints what size k's plan `p` costs now and over the calibration (at most `sets_at_most` sets
 // there, `per_iteration` of them each iteration), the throughput it assumes and where that comes from.
 void print_plan(const Loop& l, std::size_t k, IterationPlan& p, int sets_at_most, int per_iteration);

@@ -151,13 +151,19 @@ validation::Stamp stamp_of(const Outcome& o) {
   return validation::combined(stamps);
 }
 
+// Where a size's sets from the ledger came from, when not from runs of these hashes.
+void add_ledger_provenance(json& x, const SizeOutcome& s) {
+  if (s.other_engine_sets > 0) x["sets_scored_by_another_engine"] = {{"sets", s.other_engine_sets}, {"engine", s.other_engine}};
+  if (s.verified_sets > 0) x["sets_taken_after_verification"] = {{"sets", s.verified_sets}, {"verified_by", s.verified_by}};
+}
+
 json sizes_json(const Report& r) {
   json out = json::array();
   for (std::size_t k = 0; k < r.o.sizes.size(); ++k) {
     const SizeOutcome& s = r.o.sizes[k];
     json x{{"profile", s.profile}, {"seeds", s.seeds}, {"sets", s.sets.size()}, {"runs", s.runs}, {"core_seconds", s.core_seconds},
            {"sets_from_ledger", s.ledger_sets}, {"stamp", validation::stamp_json(s.stamp)}};
-    if (s.other_engine_sets > 0) x["sets_scored_by_another_engine"] = {{"sets", s.other_engine_sets}, {"engine", s.other_engine}};
+    add_ledger_provenance(x, s);
     if (k > 0) {
       x["sets_at_most"] = s.budget;
       x["discrepancy"] = {{"pairs", s.discrepancy_pairs}, {"form", s.discrepancy_linear ? "linear" : "constant"}};
@@ -239,6 +245,7 @@ json posterior_json(const Report& r) {
   j["unscored_sets"] = o.unscored;  // "name: why" of each set that weighs nothing for want of a score
   j["core_seconds"] = o.core_seconds();
   if (o.sizes.size() > 1) j["sizes"] = sizes_json(r);
+  else add_ledger_provenance(j, o.first());
   j["posterior_from"] = o.posterior_from.empty() ? "the sets' weights" : o.posterior_from;
   if (!o.posterior_from.empty())
     j["response_surface"] = {{"sets", o.surface_sets}, {"points", o.posterior_u.size()},

@@ -146,6 +146,9 @@ std::string section_markdown(const Report& r) {
   if (ledger_sets > 0)
     md << ledger_sets << " of the sets were scored in earlier calls whose runs' results are not kept here: their scores come "
        << "from the ledgers (`scored_sets*.json`), which record each set's run hashes and misfit.\n\n";
+  for (const SizeOutcome& s : o.sizes)
+    if (s.verified_sets > 0)
+      md << s.verified_sets << " of them" << (o.sizes.size() > 1 ? " (at " + s.profile + ")" : "") << " were " << s.verified_by << ".\n\n";
   const auto short_of = std::count_if(sets.begin(), sets.end(), [](const ParameterSet& s) { return !s.misfit.left_out.empty(); });
   if (short_of > 0)
     md << short_of << " of the sets " << (short_of == 1 ? "was" : "were")
