@@ -211,4 +211,31 @@ std::string write_ledger(const std::string& file, const Ledger& ledger, const Re
   return kept;
 }
 
+int rekey_ledger(const std::string& file, const References& then, const References& now) {
+  const json j = validation::read_json_file(file);
+  const int version = j.value("schema", 0);
+  if (version != 1)
+    throw dem::ConfigError(file + ": schema " + std::to_string(version) + ": only a ledger of schema 1 (keyed on the reference files' bytes) is rekeyed");
+  const std::string bytes = references_bytes_hash(then);
+  if (j.value("references_hash", "") != bytes)
+    throw dem::ConfigError(file + ": scored against references whose files hash " + j.value("references_hash", "(none)") + ", not " + then.file +
+                           " (" + bytes + "): give the reference files it was scored against (e.g. from version control)");
+  if (references_key(then) != references_key(now))
+    throw dem::ConfigError(then.file + " and " + now.file + " do not parse the same (a reference, tolerance, rule or point differs): the ledger's scores "
+                           "are not of the references now, and it cannot be rekeyed");
+  Ledger l;
+  l.references_key = references_key(now);
+  try {
+    l.stamp = validation::stamp_from_json(j.at("stamp"));
+    for (const json& s : j.at("sets")) l.sets.push_back(entry_of(s));
+  } catch (const json::exception& e) {
+    throw dem::ConfigError(file + ": not a ledger of scored sets (" + e.what() + ")");
+  }
+  for (const ScoredSet& e : l.sets)
+    if (const std::string why = recheck(now, e.misfit); !why.empty())
+      throw dem::ConfigError(file + ": set " + e.name + ": its score does not follow from its values (" + why + ")");
+  write_ledger(file, l, now);
+  return static_cast<int>(l.sets.size());
+}
+
 }  // namespace calibration

@@ -60,4 +60,11 @@ Ledger read_ledger(const std::string& file, const References& refs);
 // nothing was moved).
 std::string write_ledger(const std::string& file, const Ledger& ledger, const References& refs);
 
+// Rekeys the ledger in `file`, of schema 1 (keyed on its reference files' bytes), to the references
+// as parsed: `then` must be the references it was scored against (their files' bytes hash as the
+// ledger says) and parse as `now` does (the same references_key). A comment or a reformatted number
+// in a reference file then no longer discards its scores. Throws, naming what does not hold; the
+// ledger before is kept aside (write_ledger). Returns the number of sets.
+int rekey_ledger(const std::string& file, const References& then, const References& now);
+
 }  // namespace calibration

@@ -1,7 +1,9 @@
-// calibrate --ledger-verify end to end on 64-sphere samples: a ledger whose runs hash otherwise
+// calibrate --ledger-verify and calibrate rekey end to end on 64-sphere samples: a ledger whose runs hash otherwise
 // (as after a change of the scenes' text) is taken once its verification sets, run again, score
 // bit for bit as it has them, and is written back so that the next call finds it by hash; a ledger
-// scored on other physics (another preparation friction) is refused, naming the set, and kept.
+// scored on other physics (another preparation friction) is refused, naming the set, and kept. A
+// ledger keyed on its reference files' bytes (schema 1) is rekeyed when the files it was scored
+// against parse as today's, and refused when they are not those files or parse otherwise.
 #include <catch2/catch.hpp>
 
 #include <filesystem>
@@ -10,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/content_hash.hpp"
 #include "engine/io/io_test_support.hpp"
 
 namespace fs = std::filesystem;
@@ -103,5 +106,67 @@ TEST_CASE("calibrate --ledger-verify takes a ledger whose runs hash otherwise on
     const auto refused = dem::test::run_command(cmd + " --ledger-verify 1 --ledger-only 2>&1");
     CHECK(refused.exit_code == 2);
     CHECK_THAT(refused.out, Catch::Contains("--ledger-verify runs sets, --ledger-only runs none"));
+  }
+}
+
+TEST_CASE("calibrate rekey: a ledger keyed on its reference files' bytes is taken again after a comment, not after a change",
+          "[calibration][cli]") {
+  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "ledger_rekey";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  write_inputs(dir, "0.0");
+  const std::string cmd = "cd '" + dir.string() + "' && '" + bin + "calibrate' ";
+  const auto first = dem::test::run_command(cmd + "cal.yaml -j 2 --threads 1 2>&1");
+  INFO(first.out);
+  REQUIRE(first.exit_code == 0);
+  const nlohmann::json p = nlohmann::json::parse(dem::test::read_bytes((dir / "report" / "posterior.json").string()));
+  // The references it was scored against, kept in then/; today's gain a comment; a third copy
+  // differs in one point's sd.
+  fs::create_directories(dir / "then");
+  fs::create_directories(dir / "other");
+  for (const char* f : {"refs.yaml", "curve.csv"}) fs::copy_file(dir / f, dir / "then" / f), fs::copy_file(dir / f, dir / "other" / f);
+  std::ofstream(dir / "other" / "curve.csv") << "strain_3,q_over_p,sd\n0.002,0.8,0.2\n0.008,0.9,0.1\n";
+  const std::string refs = dem::test::read_bytes((dir / "refs.yaml").string());
+  std::ofstream(dir / "refs.yaml") << "# a comment\n" << refs;
+  // The ledger as one written before keys: schema 1, the hash of the files' bytes.
+  const auto bytes_hash = [&](const char* folder) {
+    return dem::content_hash(dem::test::read_bytes((dir / folder / "refs.yaml").string()) + dem::test::read_bytes((dir / folder / "curve.csv").string()));
+  };
+  const fs::path ledger_file = dir / "report" / "scored_sets.json";
+  nlohmann::json ledger = nlohmann::json::parse(dem::test::read_bytes(ledger_file.string()));
+  ledger["schema"] = 1;
+  ledger.erase("references_key");
+  const auto write_schema_1 = [&](const char* folder) {
+    ledger["references_hash"] = bytes_hash(folder);
+    std::ofstream(ledger_file) << ledger.dump(1);
+  };
+  write_schema_1("then");
+  fs::remove_all(dir / "results");
+  const auto unkeyed = dem::test::run_command(cmd + "cal.yaml --ledger-only 2>&1");
+  CHECK(unkeyed.exit_code == 2);  // the comment changed the bytes: no set is taken
+
+  SECTION("the files it was scored against, parsing as today's: rekeyed, and a replay runs nothing") {
+    const auto rekeyed = dem::test::run_command(cmd + "rekey cal.yaml --references-then then/refs.yaml 2>&1");
+    INFO(rekeyed.out);
+    REQUIRE(rekeyed.exit_code == 0);
+    CHECK_THAT(rekeyed.out, Catch::Contains("8 sets rekeyed"));
+    const auto replay = dem::test::run_command(cmd + "cal.yaml --ledger-only 2>&1");
+    INFO(replay.out);
+    REQUIRE(replay.exit_code == 0);
+    CHECK(started_runs(replay.out) == 0);
+    CHECK(nlohmann::json::parse(dem::test::read_bytes((dir / "report" / "posterior.json").string()))["sets"] == p["sets"]);
+  }
+  SECTION("files that are not those it was scored against: refused") {
+    const auto refused = dem::test::run_command(cmd + "rekey cal.yaml --references-then refs.yaml 2>&1");
+    CHECK(refused.exit_code == 2);
+    CHECK_THAT(refused.out, Catch::Contains("give the reference files it was scored against"));
+  }
+  SECTION("the files it was scored against, parsing otherwise (one sd): refused, the ledger kept") {
+    write_schema_1("other");
+    const std::string before = dem::test::read_bytes(ledger_file.string());
+    const auto refused = dem::test::run_command(cmd + "rekey cal.yaml --references-then other/refs.yaml 2>&1");
+    CHECK(refused.exit_code == 2);
+    CHECK_THAT(refused.out, Catch::Contains("do not parse the same"));
+    CHECK(dem::test::read_bytes(ledger_file.string()) == before);
   }
 }
