@@ -58,6 +58,13 @@ struct IterationSummary {
 // sets chosen to run there (discrepancy.hpp; their `iteration` is the one that chose them).
 struct SizeOutcome {
   std::string profile, results;  // results: the folder of the runs
+  std::vector<std::string> densities;  // a part of the largest size: the densities it runs (else empty: all)
+  // "check" or, for a part of a size, "check (dense)": how a size is named in messages and tables.
+  std::string label() const {
+    std::string names;
+    for (const std::string& d : densities) names += (names.empty() ? "" : ", ") + d;
+    return names.empty() ? profile : profile + " (" + names + ")";
+  }
   std::vector<std::int64_t> seeds;
   int budget = 0;                // a larger size's sets at most
   std::vector<ParameterSet> sets;
@@ -112,6 +119,8 @@ struct Outcome {
   const SizeOutcome& first() const { return sizes.front(); }
   SizeOutcome& first() { return sizes.front(); }
   const SizeOutcome& largest() const { return sizes.back(); }
+  // Whether the sizes after the first are parts of one size, each running some densities.
+  bool in_parts() const { return sizes.size() > 1 && !sizes.back().densities.empty(); }
   double core_seconds() const;
 };
 

@@ -52,7 +52,7 @@ void verify_ledger(Loop& l, std::size_t k) {
   if (l.o.ledger_verify <= 0 || size.ledger.sets.empty()) return;
   std::vector<ParameterSet> entries;
   for (const ScoredSet& e : size.ledger.sets) entries.push_back({e.name, 0, e.u, 0, {}, ""});
-  const auto hashes = run_hashes_by_set(plan_sets(l.c, l.study, *size.profile, entries, so.results, l.out.engine));
+  const auto hashes = run_hashes_by_set(plan_sets(l.c, size.study, *size.profile, entries, so.results, l.out.engine));
   std::vector<ScoredSet*> unfound;
   for (ScoredSet& e : size.ledger.sets)
     if (const auto h = hashes.find(e.name); h != hashes.end() && h->second != e.run_hashes) unfound.push_back(&e);
@@ -69,7 +69,7 @@ void verify_ledger(Loop& l, std::size_t k) {
     picks.push_back({e.name, 0, e.u, 0, {}, ""});
     names.push_back(e.name);
   }
-  const std::vector<pipeline::PlannedRun> runs = plan_sets(l.c, l.study, *size.profile, picks, so.results, l.out.engine);
+  const std::vector<pipeline::PlannedRun> runs = plan_sets(l.c, size.study, *size.profile, picks, so.results, l.out.engine);
   std::printf("[calibrate] --ledger-verify: %zu of the %zu sets of %s hash otherwise here (scored by engine %s); %zu of them run "
               "again first (%s): %zu runs\n",
               n, size.ledger.sets.size(), size.ledger_file.c_str(), size.ledger.stamp.engine_source.c_str(), count, joined(names).c_str(),
@@ -81,7 +81,7 @@ void verify_ledger(Loop& l, std::size_t k) {
     const auto samples = samples_of_sets(runs);
     for (const ParameterSet& p : picks) {
       const auto found = samples.find(p.name);
-      const SetMisfit here = score_complete(l.out.references, found == samples.end() ? std::vector<validation::Sample>{} : found->second);
+      const SetMisfit here = score_complete(size.refs, found == samples.end() ? std::vector<validation::Sample>{} : found->second);
       const ScoredSet& e = *size.ledger.find_set(p.name, p.u);
       if (const std::string why = first_difference(e.misfit, here); !why.empty())
         throw dem::ConfigError("--ledger-verify: set " + p.name + " of " + size.ledger_file + ", run again here, does not score as the ledger has it (" +
