@@ -92,7 +92,7 @@ calibration-two-sizes: tools
 OPEN := pipeline/calibrations/paper_open_choices.yaml
 OPEN_REPORT := reports/calibration/paper_open_choices
 open-choices: tools
-	$(BUILD)/bin/calibrate $(OPEN) --profile small -j $(JOBS)
+	$(BUILD)/bin/calibrate $(OPEN) -j $(JOBS)
 	$(call CALIBRATION_FIGURES,$(OPEN_REPORT))
 open-choices-check: tools
 	$(PIPELINE) new pipeline/studies/calibration_paper_best.yaml --from pipeline/studies/calibration_paper.yaml --force \
