@@ -142,7 +142,7 @@ std::string section_markdown(const Report& r) {
   md << ") against " << o.references.source << ". Engine " << o.engine << ".\n\n";
   md << sets.size() << " parameter sets in " << o.iterations.size() << (o.iterations.size() == 1 ? " iteration of " : " iterations of ")
      << c.batch << " (" << runs << " runs, " << validation::significant(o.core_seconds() / 60, 3) << " core-min recorded); effective sample size "
-     << validation::significant(r.last.ess, 3) << "; " << (o.converged ? "converged: " : "not converged: ") << o.stop_reason << ".\n\n";
+     << validation::significant(r.last.ess, 3) << ".\n\n" << (o.converged ? "Converged: " : "Not converged: ") << o.stop_reason << ".\n\n";
   if (ledger_sets > 0)
     md << ledger_sets << " of the sets were scored in earlier calls whose runs' results are not kept here: their scores come "
        << "from the ledgers (`scored_sets*.json`), which record each set's run hashes and misfit.\n\n";
