@@ -5,6 +5,7 @@
 
 #include "figures/figure_entry.hpp"
 #include "judge/quantities.hpp"
+#include "figures/figure_bounds.hpp"
 #include "study/format.hpp"
 #include "study/manifest.hpp"
 
@@ -37,7 +38,7 @@ void cycle_figure_values(NoteContext& c, Values& v, const std::string& d, int la
     if (s1 && sc) sliding.add((*sc)[1] - (*s1)[1]);
   }
   if (growth.any()) v["fig07.growth_" + d] = range_text(growth.lo, growth.hi);
-  if (dense_abs.any()) v["fig07.max_abs_" + d] = significant_upper_bound(dense_abs.hi, 2);  // "stays below" it
+  if (dense_abs.any()) v["fig07.max_abs_" + d] = fig07_max_abs_text(dense_abs.hi);  // "stays below" it
   v["fig07.verdict_" + d] = d == "dense" ? c.phrase("ev_growth_magnitude", d) : c.phrase("ev_growth", d);
   if (cn0.any()) v["fig10.start_" + d] = range_fixed(cn0.lo, cn0.hi, 2);
   if (cn1.any()) v["fig10.cycle1_" + d] = range_fixed(cn1.lo, cn1.hi, 2);

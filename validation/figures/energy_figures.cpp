@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "figures/figure_entry.hpp"
+#include "figures/figure_bounds.hpp"
 #include "study/format.hpp"
 #include "study/manifest.hpp"
 
@@ -45,7 +46,7 @@ void energy_figures_notes(NoteContext& c, Values& v) {
       const EnergyCurves e = energy_curves(t->series);
       old_first_row = old_first_row || e.baseline_row > 0;
       v["energy.work_" + d] = energy_text(e.work_total_J());
-      v["energy.closure_" + d] = percent_small(100 * e.closure_relative_to_work());
+      v["energy.closure_" + d] = energy_closure_text(e.closure_relative_to_work());  // "at most" it
       if (const auto at = e.parting_time_s(energy_parting_fraction)) v["energy.parts_at_" + d] = significant(*at, 3);
     } catch (const std::out_of_range&) {
       // a result without the energy columns: no keys, the note says the data is missing

@@ -12,6 +12,7 @@
 #include "figures/figure_entry.hpp"
 #include "judge/quantities.hpp"
 #include "study/columns.hpp"
+#include "figures/figure_bounds.hpp"
 #include "study/format.hpp"
 #include "study/manifest.hpp"
 #include "study/settings.hpp"
@@ -117,7 +118,7 @@ void fig03_fig04_values(NoteContext& c, Values& v) {
         }
     }
     if (worst >= 0) v["fig03.worst_" + d] = significant(worst, 2), v["fig03.worst_test_" + d] = std::to_string(worst_test);
-    if (p.any()) v["fig04.p_" + d] = range_fixed(p.lo, p.hi, 2);
+    if (p.any()) v["fig04.p_" + d] = fig04_p_text(p);  // "stays within" it
   }
   if (q_target.any()) v["fig04.q_target"] = fixed_unsigned_zero(q_target.hi, 1);
   if (p_target_n) v["fig04.p_target"] = fixed_unsigned_zero(p_target_sum / p_target_n, 1);

@@ -152,6 +152,8 @@ References read_references(const std::string& file, const std::string& profile) 
 
 std::vector<Row> load_references(const std::string& file, const std::string& profile) { return read_references(file, profile).rows; }
 
+bool bound_is_reading(const Row& row) { return row.rule == "majority"; }
+
 RowResult judge_values(const Row& row, std::vector<RowResult::PerSample> samples) {
   RowResult out;
   out.paper = paper_region(row.check, row.reference, row.tolerance);

@@ -80,6 +80,12 @@ constexpr double too_few_width = 4;
 // row names the section only for these.
 bool taken_to_quasi_static_limit(const std::string& quantity);
 
+// Whether the row's bound is this project's reading of the reference's words (a trend or an
+// ordering, rule majority: "grows", "independent of cycles", for which the reference gives no
+// number), not a value the reference states (rule interval, or every: a lattice's formula value
+// ± the row's tolerance). The verdict tables mark such a bound †.
+bool bound_is_reading(const Row& row);
+
 // The spread, the samples that hold and the verdict of a row's per-sample values.
 RowResult judge_values(const Row& row, std::vector<RowResult::PerSample> samples);
 

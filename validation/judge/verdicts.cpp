@@ -181,8 +181,7 @@ std::string verdicts_text(const std::vector<Judged>& judged, const VerdictsConte
   for (std::size_t i = 0; i < judged.size(); ++i) {
     const Judged& j = judged[i];
     for (const std::string& w : j.result.warnings) warned.row({j.row.name, mark(j.result.verdict), w});
-    // † on a bound this project reads into the reference's words (a trend or an ordering: it gives no number).
-    const bool reading = j.row.rule != "interval";
+    const bool reading = bound_is_reading(j.row);  // †
     readings += reading;
     std::vector<std::string> cells = {short_row_name(j.row.name), statement(j.row) + (reading ? " †" : ""), mean_sd(j.result),
                                       holds_in(j.result), verdict_words(j.result.verdict, !j.result.warnings.empty())};

@@ -30,6 +30,22 @@ std::string mean_sd(const std::optional<double>& mean, const std::optional<doubl
   return !mean ? "—" : sd ? mean_pm_sd(*mean, *sd) : number(*mean);
 }
 
+// A baseline that is the paper study's own first `n` samples (a readings study's: same size, its
+// samples another study's), judged again on their recorded values by judge_values, the function
+// that judged the paper study, so that its verdict carries the same warnings (consistent by width
+// only, samples too few). None unless the samples' mean, sd and verdict are the ones the file
+// records (to the six significant digits it writes): then the baseline is not those samples.
+std::optional<RowResult> judged_on_paper_samples(const CheckLine& line, std::size_t n) {
+  const RowResult& paper = line.paper->result;
+  if (n == 0 || n > paper.samples.size() || !line.mean) return std::nullopt;
+  const std::vector<RowResult::PerSample> first(paper.samples.begin(), paper.samples.begin() + static_cast<std::ptrdiff_t>(n));
+  RowResult r = judge_values(line.paper->row, first);
+  const bool same = r.valued > 0 && number(r.spread.mean) == number(*line.mean) &&
+                    (line.sd ? r.valued > 1 && number(r.spread.sd) == number(*line.sd) : r.valued == 1) && r.verdict == line.verdict;
+  if (!same) return std::nullopt;
+  return r;
+}
+
 }  // namespace
 
 PaperEnsemble read_paper_ensemble(const std::filesystem::path& report, const std::vector<Row>& rows) {
@@ -77,6 +93,10 @@ std::string baseline_check_section(const std::vector<const DecisionsFile*>& file
     for (Weakness k : ks)
       if (std::find(kinds.begin(), kinds.end(), k) == kinds.end()) kinds.push_back(k);
   };
+  // A baseline of the paper study's own samples (same size, `baseline_results`): each line judged
+  // on those samples' values where the file's numbers are theirs.
+  const bool own_samples = name == "sample-count check" && !first.baseline_results.empty();
+  std::size_t on_samples = 0;  // lines judged on the paper study's samples
   for (const auto& [line, studies] : lines) {
     const RowResult& big = line.paper->result;
     std::string diff = "—";
@@ -84,14 +104,21 @@ std::string baseline_check_section(const std::vector<const DecisionsFile*>& file
       diff = shift_text(shift_in_sd(*line.mean - big.spread.mean, big.spread.sd, line.paper->row.resolution));
     // The baseline's verdict is weak when its interval of one sample, from the mean, sd and samples
     // the file records, is too wide for the row's tolerance (too_few_warning).
-    const bool weak = line.mean && line.sd &&
-                      too_few_warning(line.paper->row, summary_spread(*line.mean, *line.sd, static_cast<int>(first_samples)));
+    // Judged on its samples' values when they are the paper study's (above): every kind of warning.
+    // Otherwise from the mean, sd and samples the file records: the interval of one sample too wide
+    // for the row's tolerance (too_few_warning); whether a sample lies in the region is not recorded.
+    const std::optional<RowResult> own = own_samples ? judged_on_paper_samples(line, first_samples) : std::nullopt;
+    on_samples += own.has_value();
+    const bool weak = own ? !own->warnings.empty()
+                          : line.mean && line.sd &&
+                                too_few_warning(line.paper->row, summary_spread(*line.mean, *line.sd, static_cast<int>(first_samples)));
     std::vector<std::string> cells = {line.paper->row.name, big.valued > 1 ? mean_pm_sd(big.spread.mean, big.spread.sd) : "—",
                                       mean_sd(line.mean, line.sd), diff, verdict_mark(big) + " / " + verdict_mark(line.verdict, weak)};
     if (by_study) cells.push_back(joined(studies, ", "));
     table.row(cells);
     note(weaknesses(big));
-    if (weak) note({Weakness::TooFewSamples});
+    if (own) note(weaknesses(*own));
+    else if (weak) note({Weakness::TooFewSamples});
   }
   std::sort(kinds.begin(), kinds.end());
   // What the two ensembles are, from the records: their spheres and samples.
@@ -115,6 +142,13 @@ std::string baseline_check_section(const std::vector<const DecisionsFile*>& file
       text += ", with t = " + fixed(t_quantile(0.975, static_cast<int>(n) - 1), 2) + " for " + std::to_string(n) + " samples and " +
               fixed(t_quantile(0.975, static_cast<int>(m) - 1), 2) + " for " + std::to_string(m);
     text += ".";
+    if (on_samples > 0 && !paper.rows.empty() && n <= paper.rows.front().result.samples.size()) {
+      std::vector<std::string> names;
+      for (std::size_t k = 0; k < n; ++k) names.push_back(paper.rows.front().result.samples[k].sample);
+      text += " Its means and sds are those of the paper study's " + joined(names, ", ") + " in " + std::to_string(on_samples) + " of " +
+              std::to_string(lines.size()) + " rows, and there its verdict is judged on their values as the paper study's is, "
+              "warnings included.";
+    }
   }
   text += " The difference of the means is in units of the paper ensemble's standard deviation, or of the row's resolution where "
           "that is larger (a scatter below it says nothing).";

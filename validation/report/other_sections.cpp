@@ -1,8 +1,14 @@
 #include "report/other_sections.hpp"
 
+#include <cmath>
+#include <fstream>
+#include <sstream>
 #include <stdexcept>
 
+#include "judge/validation_file.hpp"
+#include "study/ensemble.hpp"
 #include "study/format.hpp"
+#include "study/series.hpp"
 #include "study/json_file.hpp"
 #include "study/settings.hpp"
 
@@ -27,14 +33,14 @@ const std::vector<OtherStudySection>& other_study_sections() {
        "pipeline/studies/fcc_thornton.yaml"},
       // The parts of the critical-state section other studies feed (compare-runs critical-state
       // --ensemble, --rates): each study's own stamp, beside the section's in its stamp.json.
-      {"The critical state on ", "file.critical_state", "critical_state/stamp.json", "ensemble", "", 3},
+      {"The critical state on ", "file.critical_state", "critical_state/stamp.json", "ensemble", "", 3, ensemble_stamp_from_literature},
       {"Rate convergence: ", "file.critical_state", "critical_state/stamp.json", "rates", "", 3},
       // The earlier baseline (report --baseline; the Makefile's BASELINE): its validation.json's stamp.
       // Its cell was kept orthorhombic: a baseline of its own by design.
       {"Appendix: This baseline against the earlier one (orthorhombic cell)", "baseline.table", "baselines/orthorhombic_validation.json",
        "stamp", "reports/baselines/orthorhombic_validation.json"},
       // make bench's packings are its own (dem-bench): bench.json's stamp.
-      {"Appendix: Performance", "file.bench", "bench.json", "stamp", "engine/bench (dem-bench's packings)"},
+      {"Appendix: Performance", "file.bench", "bench.json", "stamp", "engine/bench (dem-bench's packings)", 2, bench_stamp},
   };
   return list;
 }
@@ -57,6 +63,14 @@ Stamp stamp_in(const fs::path& file, const std::string& key) {
   return j.is_object() && j.contains(key) ? stamp_from_json(j.at(key)) : Stamp{};
 }
 
+std::string read_whole(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error(file.string() + ": cannot be read");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
 // The stamp lines stamp_sections writes, to replace one already there.
 bool is_stamp_line(const std::string& line) {
   return line.rfind("*Made by engine ", 0) == 0 || line.rfind("*Stamp not recorded", 0) == 0 || line.rfind("*⚠ Made by engine ", 0) == 0;
@@ -72,7 +86,50 @@ std::string stamp_sentence(const Stamp& s) {
 }
 
 Stamp read_section_stamp(const fs::path& report, const OtherStudySection& section) {
-  return stamp_in(report / section.stamp_file, section.stamp_key);
+  const Stamp own = stamp_in(report / section.stamp_file, section.stamp_key);
+  return own.recorded() || !section.recorded_elsewhere ? own : section.recorded_elsewhere(report);
+}
+
+Stamp ensemble_stamp_from_literature(const fs::path& report) {
+  const fs::path dat = report / "critical_state" / "ensemble.dat", json = report / "literature" / "validation.json";
+  std::error_code ec;
+  if (!fs::is_regular_file(dat, ec) || !fs::is_regular_file(json, ec)) return {};
+  const Table t = table_from_text(read_whole(dat), dat.string());
+  const RecordedValidation record = read_validation_file(json.string());
+  const auto equal = [](double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b)); };
+  // A recorded row whose samples' mean and sd are (mean, sd) over n samples.
+  const auto recorded = [&](double mean, double sd, double n) {
+    for (const RecordedValidation::RecordedRow& r : record.rows) {
+      std::vector<double> x;
+      for (const RowResult::PerSample& ps : r.samples)
+        if (ps.measured.value) x.push_back(*ps.measured.value);
+      if (x.size() < 2 || static_cast<double>(x.size()) != n) continue;
+      const Spread s = spread(x);
+      if (equal(s.mean, mean) && equal(s.sd, sd)) return true;
+    }
+    return false;
+  };
+  for (std::size_t i = 0; i < t.size(); ++i)
+    if (t.at(i, "mu") == 0 && t.at(i, "loading") == 1 &&
+        recorded(t.at(i, "e_cs"), t.at(i, "e_cs_sd"), t.at(i, "samples")) &&
+        recorded(t.at(i, "phi_cs"), t.at(i, "phi_cs_sd"), t.at(i, "samples")))
+      return stamp_in(json, "stamp");
+  return {};
+}
+
+Stamp bench_stamp(const fs::path& report) {
+  const fs::path file = report / "bench.json";
+  std::error_code ec;
+  if (!fs::exists(file, ec)) return {};
+  const nlohmann::json j = read_json_file(file.string());
+  if (j.is_object() && j.contains("stamp")) return stamp_from_json(j.at("stamp"));
+  Stamp s;
+  if (j.is_object() && j.contains("engine") && j.at("engine").is_object()) {
+    const nlohmann::json& e = j.at("engine");
+    if (e.contains("version") && e.at("version").is_string()) s.engine = e.at("version").get<std::string>();
+    if (e.contains("particles") && e.at("particles").is_number_integer()) s.spheres = e.at("particles").get<long>();
+  }
+  return s;
 }
 
 Stamp read_paper_stamp(const fs::path& report) { return stamp_in(report / "validation.json", "stamp"); }

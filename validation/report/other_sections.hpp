@@ -26,7 +26,20 @@ struct OtherStudySection {
   // fast), so its baseline is said but never compared with the paper study's; its engine is.
   std::string own_scene;   // "": the paper study's preparation; else that scene
   int level = 2;           // 3: a part of another section, its heading matched by its start
+  // Where its stamp is recorded when stamp_file has none (a study run before its section kept
+  // stamps): a reader of the report's folder that gives the stamp only when that record is of the
+  // same data (nothing recorded otherwise); none: stamp_file only.
+  Stamp (*recorded_elsewhere)(const std::filesystem::path& report) = nullptr;
 };
+
+// The critical-state ensemble's stamp from the literature check of the same study
+// (REPORT/literature/validation.json), when its critical-state rows' samples are the ensemble's
+// (REPORT/critical_state/ensemble.dat: the μ = 0 compression's void ratio and friction angle, mean
+// and sd over as many samples, equal to the ten digits the file writes); nothing recorded otherwise.
+Stamp ensemble_stamp_from_literature(const std::filesystem::path& report);
+// make bench's stamp from REPORT/bench.json: its "stamp" when it has one, else what it records of
+// its engine (engine.version, engine.particles; no baseline, samples or date: not recorded).
+Stamp bench_stamp(const std::filesystem::path& report);
 
 // The list, in the report's order.
 const std::vector<OtherStudySection>& other_study_sections();

@@ -16,6 +16,7 @@
 #include "study/manifest.hpp"
 #include "study/markdown_table.hpp"
 #include "judge/quantities.hpp"
+#include "judge/weak_verdicts.hpp"
 #include "study/columns.hpp"
 
 namespace validation {
@@ -113,16 +114,17 @@ std::string energy_table(const std::vector<std::pair<std::string, const Columns*
   return md.text();
 }
 
-std::string baseline_table(const nlohmann::json& before, const std::vector<Row>& rows, const std::vector<Sample>& samples) {
+std::string baseline_table(const nlohmann::json& before, const std::vector<RejudgedRow>& now_rows) {
   std::map<std::string, const nlohmann::json*> old;
   if (before.contains("rows"))
     for (const auto& r : before.at("rows")) old[r.value("name", "")] = &r;
   MarkdownTable md({"row", "earlier baseline: mean ± sd (verdict)", "now: mean ± sd (verdict)", "shift / max(earlier sd, resolution)"});
-  const auto mark = [](const std::string& verdict) {
-    return verdict == "consistent" ? "✅" : verdict == "inconsistent" ? "❌" : "—";
+  const auto recorded_verdict = [](const std::string& verdict) {
+    return verdict == "consistent" ? Verdict::Consistent : verdict == "inconsistent" ? Verdict::Inconsistent : Verdict::NotJudged;
   };
-  for (const Row& r : rows) {
-    const RowResult now = evaluate(r, samples);
+  for (const RejudgedRow& rr : now_rows) {
+    const Row& r = rr.row;
+    const RowResult& now = rr.result;
     const std::string now_text = now.valued ? (now.valued > 1 ? mean_pm_sd(now.spread.mean, now.spread.sd) : number(now.spread.mean))
                                             : std::string("—");
     std::string before_text = "not in the earlier baseline", shift = "—";
@@ -131,12 +133,18 @@ std::string baseline_table(const nlohmann::json& before, const std::vector<Row>&
       const bool has_mean = o.contains("mean") && o.at("mean").is_number();
       const double sd = o.contains("sd") && o.at("sd").is_number() ? o.at("sd").get<double>() : 0.0;
       before_text = has_mean ? (sd > 0 ? mean_pm_sd(o.at("mean").get<double>(), sd) : number(o.at("mean").get<double>())) : "—";
-      before_text += std::string(" ") + mark(o.value("verdict", ""));
+      before_text += " " + verdict_mark(recorded_verdict(o.value("verdict", "")));
       if (has_mean && now.valued) shift = shift_text(shift_in_sd(now.spread.mean - o.at("mean").get<double>(), sd, r.resolution));
     }
-    md.row({r.name, before_text, now_text + " " + mark(to_string(now.verdict)), shift});
+    md.row({r.name, before_text, now_text + " " + verdict_mark(now), shift});
   }
   return md.text();
+}
+
+std::string baseline_table(const nlohmann::json& before, const std::vector<Row>& rows, const std::vector<Sample>& samples) {
+  std::vector<RejudgedRow> now;
+  for (const Row& r : rows) now.push_back({r, r.density, evaluate(r, samples)});
+  return baseline_table(before, now);
 }
 
 std::string state_a_table(const std::vector<Sample>& samples) {

@@ -17,6 +17,7 @@
 #include "judge/quantities.hpp"
 #include "study/results.hpp"
 #include "judge/rows.hpp"
+#include "judge/validation_file.hpp"
 
 namespace validation {
 
@@ -53,7 +54,12 @@ std::string figure_note(const std::string& notes_tsv, const std::string& png, co
 std::string energy_table(const std::vector<std::pair<std::string, const Columns*>>& runs);
 
 // Every row now against an earlier baseline's validation.json: mean ± sd and verdict before and
-// now, and the shift of the mean in units of max(earlier sd, the row's resolution).
+// now (each row's result as judged, e.g. reports/validation.json's rows judged again: its verdict
+// marked ⚠ when weak, verdict_mark, as everywhere a verdict is shown), and the shift of the mean in
+// units of max(earlier sd, the row's resolution). Rendered when the report is written, from these
+// typed values: no table text is kept.
+std::string baseline_table(const nlohmann::json& before, const std::vector<RejudgedRow>& now);
+// The same with each row judged now on `samples` (evaluate).
 std::string baseline_table(const nlohmann::json& before, const std::vector<Row>& rows, const std::vector<Sample>& samples);
 
 // q/p at state A (the start of shearing: the first row of the sample's first test) of every sample.

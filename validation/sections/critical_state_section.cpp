@@ -34,6 +34,9 @@ namespace sections {
 namespace {
 
 using validation::cell;
+using validation::Bound;
+using validation::Digits;
+using validation::bound_text;
 using validation::fixed;
 using validation::number;
 
@@ -156,7 +159,7 @@ std::string critical_state_table(const std::vector<ShearRun>& runs, const ShearR
         "the same φ every table of this section gives for a run. CN mechanical = (2Nc − N1)/(Np − N0 − N1) (Thornton 2000) leaves out the rattlers, which carry no "
         "load and whose share changes with μ; it is the coordination of the network that carries the stress. ⚠: p at the peak or "
         "at the critical state more than 5 % from the constraint's, or b at the critical state more than 0.05 from the target: the "
-        "run is not the test its name says (p at the critical state is at most " << fixed(100 * worst_p, 1)
+        "run is not the test its name says (p at the critical state is at most " << bound_text(100 * worst_p, Bound::at_most, 1, Digits::decimals)
      << " % from the constraint's in this study); its values are shown, but they are not that test's.\n";
   md << ensemble_and_rates;
   md << "\n![peak and critical-state friction angle against μ](phi_mu.png)\n\n![critical-state void ratio and coordination number against μ](e_cn_mu.png)\n";

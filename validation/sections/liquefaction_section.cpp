@@ -27,6 +27,9 @@ namespace fs = std::filesystem;
 namespace sections {
 namespace {
 
+using validation::Bound;
+using validation::Digits;
+using validation::bound_text;
 using validation::fixed;
 using validation::number;
 
@@ -145,7 +148,7 @@ std::string collapse_notes(const std::vector<CyclicRun>& runs) {
              "which bounds the N_L of every test of that sample";
     if (earlier)
       notes += "; " + std::to_string(earlier) + " of its cyclic tests liquefied earlier, after " + fixed(low, 2) + " – " + fixed(high, 2) +
-               " cycles, when the hold's r_u was at most " + fixed(hold_ru, 3) + ": the loading set their N_L";
+               " cycles, when the hold's r_u was at most " + bound_text(hold_ru, Bound::at_most, 3, Digits::decimals) + ": the loading set their N_L";
     if (later)
       notes += "; " + std::to_string(later) + " liquefied no earlier than the hold: their N_L is the sample's collapse, not set by the loading";
     notes += ".\n";

@@ -101,15 +101,42 @@ inline std::string significant(double x, int digits = 2) {
   return s;
 }
 
-// A bound above x >= 0 to `digits` significant digits, rounded up so that "below" it stays true
-// of x itself (0.0001237 -> "0.00013", where significant() gives "0.00012", which x exceeds).
-inline std::string significant_upper_bound(double x, int digits = 2) {
-  if (!std::isfinite(x) || x < 0) return significant(x, digits);
-  if (x == 0) return "0";
-  const double unit = std::pow(10.0, std::floor(std::log10(x)) - digits + 1);
-  double up = std::ceil(x / unit) * unit;
-  if (std::strtod(significant(up, digits).c_str(), nullptr) <= x) up += unit;  // on a digit: "below" needs the next one
-  return significant(up, digits);
+// Which side of the values a bound is on, and whether they may equal it: "at most", "stays below",
+// "at least", "stays above"; "within lo–hi" is at_least lo and at_most hi.
+enum class Bound { at_most, below, at_least, above };
+// How a bound's precision is counted: significant digits of the value, or decimals.
+enum class Digits { significant, decimals };
+
+// A bound of values whose extreme (unrounded) is `x`, worded so that the sentence stays true of `x`
+// itself: rounded outwards at the printed precision (an upper bound up, a lower bound down; a strict
+// one on a printed digit moves one digit on), e.g. "within 98.83–99.98" of 98.83519 … 99.97840 where
+// rounding to nearest gives 98.84, and "stays below 0.00013" of 0.0001237. A nonzero `x` smaller than
+// the last decimal asked for is given two significant digits ("at most 0.00020" of 0.000192, never
+// "at most 0.000" or a loose "0.001"). Every bound the notes and sections word goes through here.
+inline std::string bound_text(double x, Bound side, int digits, Digits kind = Digits::significant) {
+  if (!std::isfinite(x)) return "—";
+  const bool upper = side == Bound::at_most || side == Bound::below;
+  const bool strict = side == Bound::below || side == Bound::above;
+  const int magnitude = x == 0 ? 0 : static_cast<int>(std::floor(std::log10(std::abs(x))));
+  int e = kind == Digits::decimals ? -digits : magnitude - digits + 1;
+  if (kind == Digits::decimals && x != 0 && std::abs(x) < std::pow(10.0, e)) e = magnitude - 1;  // two significant digits
+  const bool by_decimals = kind == Digits::decimals && e == -digits;
+  const double unit = std::pow(10.0, e);
+  const auto text = [&](double b) {
+    if (!by_decimals) return significant(b, magnitude - e + 1);  // a power of ten reached from below prints as one (0.0996 -> 0.10)
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", std::max(0, digits), b == 0 ? 0.0 : b);
+    return std::string(buf);
+  };
+  double b = (upper ? std::ceil(x / unit) : std::floor(x / unit)) * unit;
+  // The printed number, read back, must keep the bound (binary fractions, strictness): else one unit on.
+  for (int k = 0; k < 3; ++k) {
+    const double shown = std::strtod(text(b).c_str(), nullptr);
+    const bool holds = upper ? (strict ? shown > x : shown >= x) : (strict ? shown < x : shown <= x);
+    if (holds) break;
+    b += upper ? unit : -unit;
+  }
+  return text(b);
 }
 
 // The largest shift (in sd units) shown as it is; beyond it the tables and sentences say so and

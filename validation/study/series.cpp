@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <stdexcept>
 
 #include "analysis/fabric.hpp"
@@ -53,6 +54,56 @@ double Table::at(std::size_t row, const std::string& name) const {
   for (std::size_t k = 0; k < columns.size(); ++k)
     if (columns[k] == name || columns[k].rfind(name + " [", 0) == 0) return rows.at(row).at(k);
   throw std::out_of_range("no column '" + name + "'");
+}
+
+Table table_from_text(const std::string& text, const std::string& what) {
+  Table t;
+  std::vector<std::string> comments;
+  std::size_t start = 0, line_number = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string line = text.substr(start, end - start);
+    start = end + 1, ++line_number;
+    if (line.empty()) continue;
+    if (line[0] == '#') {
+      if (t.rows.empty()) comments.push_back(line.substr(line.rfind("# ", 0) == 0 ? 2 : 1));
+      continue;
+    }
+    if (t.columns.empty()) {
+      if (comments.empty()) throw std::runtime_error(what + ": no column names before the first row");
+      std::string header = comments.back();
+      comments.pop_back();
+      if (header.rfind("label\t", 0) == 0) header = header.substr(6);
+      for (std::size_t a = 0; a <= header.size();) {
+        const std::size_t b = std::min(header.find('\t', a), header.size());
+        std::string name = header.substr(a, b - a);
+        name.erase(0, name.find_first_not_of(' '));
+        name.erase(name.find_last_not_of(' ') + 1);
+        t.columns.push_back(name);
+        a = b + 1;
+      }
+      t.comments = comments;
+    }
+    std::vector<double> row;
+    const char* p = line.c_str();
+    if (*p == '"') {  // a label: not kept
+      for (++p; *p && *p != '"'; ++p)
+        if (*p == '\\' && p[1]) ++p;
+      if (*p) ++p;
+    }
+    for (char* next = nullptr;; p = next) {
+      while (*p == '\t' || *p == ' ') ++p;
+      if (!*p) break;
+      row.push_back(std::strtod(p, &next));
+      if (next == p) throw std::runtime_error(what + ": line " + std::to_string(line_number) + " is not numbers: " + line);
+    }
+    if (row.size() != t.columns.size())
+      throw std::runtime_error(what + ": line " + std::to_string(line_number) + " has " + std::to_string(row.size()) + " values for " +
+                               std::to_string(t.columns.size()) + " columns");
+    t.rows.push_back(std::move(row));
+  }
+  return t;
 }
 
 std::size_t row_count(const Columns& series) {

@@ -29,6 +29,12 @@ struct Table {
   double at(std::size_t row, const std::string& column) const;  // by name (without the unit); throws
 };
 
+// A table as text() wrote it, read back (the figure data files, numbers to ten significant digits):
+// its comments, its columns (the last comment line before the first row) and rows; labels and
+// blocks are not kept. Throws std::runtime_error naming `what` on a row that is not numbers or
+// has another count of values than the columns.
+Table table_from_text(const std::string& text, const std::string& what);
+
 // A view of one time-series row: `s.at("q")` reads column q at row i.
 struct SeriesRow {
   const Columns& series;

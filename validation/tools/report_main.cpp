@@ -33,8 +33,11 @@
 #include <CLI/CLI.hpp>
 
 #include "io/atomic_file.hpp"
+#include "figures/figure_bounds.hpp"
 #include "io/failure.hpp"
 #include "report/other_sections.hpp"
+#include "study/json_file.hpp"
+#include "report/baseline_check.hpp"
 #include "report/report.hpp"
 #include "report/report_values.hpp"
 #include "report/study_values.hpp"
@@ -96,6 +99,23 @@ bool folders_usable(const std::string& results, const std::string& out) {
     return false;
   }
   return true;
+}
+
+// The notes' verdicts and the earlier baseline's table (--baseline: `baseline`) as validation.json's
+// rows give them (the verdict table's), weak ones marked; a table kept as text by an older
+// study_values.json is not shown.
+void add_judged_values(validation::Values& v, const fs::path& report, const std::vector<validation::Row>& rows, const std::string& baseline) {
+  v.erase("baseline.table");
+  try {
+    const validation::PaperEnsemble judged = validation::read_paper_ensemble(report, rows);
+    validation::add_note_verdicts(v, judged);
+    if (!baseline.empty() && !judged.rows.empty()) {
+      v["baseline.file"] = baseline;
+      v["baseline.table"] = validation::baseline_table(validation::read_json_file(baseline), judged.rows);
+    }
+  } catch (const std::exception& e) {  // the notes keep the verdicts computed with the results
+    std::fprintf(stderr, "report: %s; the figure notes' verdicts and the earlier baseline's table are not taken from it\n", e.what());
+  }
 }
 
 }  // namespace
@@ -161,6 +181,8 @@ int tool_main(int argc, char** argv) {
                                              validation::values_from_results(in, results, opt["--baseline"], densities)};
       // The stability study's settings, which its section quotes, kept with them when its results are here.
       if (stability_here) validation::add_study_settings(from_results->values, opt["--stability"]);
+      // Rendered below from typed values (validation.json's rows, the earlier baseline's file), not kept as text.
+      from_results->values.erase("baseline.table");
       validation::write_study_values(report, *from_results);
     } else {
       from_results = validation::read_study_values(report);
@@ -179,6 +201,11 @@ int tool_main(int argc, char** argv) {
       v["results"] = from_results->results;
       v["values.file"] = values_file;
       v["values.stamp"] = validation::stamp_text(from_results->stamp);
+      // The bounds the notes state, worded again from the unrounded data of the figures they
+      // describe (a file kept from before they were rounded outwards holds them rounded to nearest).
+      const auto last = v.find("cycles.last");
+      validation::add_figure_bounds(v, report / "figures",
+                                    last == v.end() ? std::nullopt : std::optional<int>(std::stoi(last->second)));
     }
     validation::add_tables(v, report, in.paper, opt["--decisions"]);
     const validation::Stamp paper_stamp = validation::read_paper_stamp(report);
@@ -208,12 +235,7 @@ int tool_main(int argc, char** argv) {
     // The stability study's settings: read once from its results (above, with fresh values), else as
     // the values file kept them, else none.
     if ((stability_here && !fresh) || !v.count("have_stability")) validation::add_study_settings(v, stability_here ? opt["--stability"] : "");
-    // The notes' verdicts as validation.json's rows give them (the verdict table's), weak ones marked.
-    try {
-      validation::add_note_verdicts(v, validation::read_paper_ensemble(report, in.rows));
-    } catch (const std::exception& e) {  // the notes keep the verdicts computed with the results
-      std::fprintf(stderr, "report: %s; the figure notes' verdicts are not taken from it\n", e.what());
-    }
+    add_judged_values(v, report, in.rows, opt["--baseline"]);
     const std::string notes = validation::read_text(fs::path(opt["--templates"]) / "figure_notes.tsv");
     if (notes.empty()) throw std::runtime_error(opt["--templates"] + "/figure_notes.tsv is missing or empty");
     validation::add_figures(v, report, notes);

@@ -52,3 +52,25 @@ TEST_CASE("identical samples: whole numbers and rows without scatter are no evid
   CHECK(validation::identical_samples({row({0.74, 0.74}), row({3.0, 3.0})}) == Groups{{"s1", "s2"}});
   CHECK(validation::identical_samples({}).empty());
 }
+
+TEST_CASE("verdicts: † marks a bound read into the reference's words, not a value it states", "[validate][verdicts]") {
+  // A stated value judged without scatter (Thornton's FCC ratio 2 (1 + μ)/(1 − μ) ± 1 %, rule
+  // every), a stated value with scatter (rule interval), and a trend this project bounds (rule
+  // majority, "grows": the reference gives no number).
+  validation::Judged formula = row({1.9977}, "every"), value = row({0.73, 0.74}), trend = row({0.3, 0.4}, "majority");
+  formula.row.name = "lattice ratio", formula.row.check = "within", formula.row.reference = 2, formula.row.tolerance = 0.02;
+  value.row.name = "void ratio", value.row.check = "within", value.row.reference = 0.73, value.row.tolerance = 0.02;
+  trend.row.name = "grows", trend.row.check = "at_least", trend.row.reference = 0.05;
+  CHECK_FALSE(validation::bound_is_reading(formula.row));
+  CHECK_FALSE(validation::bound_is_reading(value.row));
+  CHECK(validation::bound_is_reading(trend.row));
+  validation::VerdictsContext c;
+  c.label = "literature";
+  c.samples = 1;
+  const std::string only_stated = validation::verdicts_text({formula, value}, c);
+  CHECK(only_stated.find("†") == std::string::npos);  // neither the cells nor the legend
+  const std::string with_trend = validation::verdicts_text({formula, trend}, c);
+  CHECK(with_trend.find("| 2 ± 0.02 |") != std::string::npos);
+  CHECK(with_trend.find("| ≥ 0.05 † |") != std::string::npos);
+  CHECK(with_trend.find("\n†: a bound this project reads") != std::string::npos);
+}

@@ -3,10 +3,12 @@
 // number of samples), the difference in max(sd, resolution), the readings studies' rows once.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
 #include "report/baseline_check.hpp"
+#include "study/format.hpp"
 
 using validation::DecisionsFile;
 using validation::Verdict;
@@ -82,4 +84,49 @@ TEST_CASE("baseline check: another size is a size check; a resolution above the 
   other.order = {"another"};
   other.rows = {{"another", small.rows.at("slope")}};
   CHECK(validation::baseline_check_section({&other}, paper(0)).empty());
+}
+
+TEST_CASE("baseline check: a baseline of the paper study's own samples carries their weak verdict", "[report][decisions][weak]") {
+  // The dense coordination number: 5.94 ± 0.15 against samples 6.1182, 6.1000, 6.1110, 6.1259,
+  // 6.1035, every one above 6.09. The readings study's baseline is the first 3 of them (its file
+  // records their mean and sd to six digits): its interval of one sample, 6.1097 ± t(0.975, 2) ·
+  // 0.00917 · √(4/3) = ± 0.0455, reaches 6.09 while 0 of 3 samples lie in the region: consistent by
+  // width only, the ⚠ the paper study's verdict carries. Planted: a file whose sd is not those
+  // samples' is judged from its record alone (no sample is in it), without the mark.
+  validation::Row r;
+  r.name = "cn dense", r.check = "within", r.reference = 5.94, r.tolerance = 0.15;
+  const std::vector<double> values = {6.1182, 6.1000, 6.1110, 6.1259, 6.1035};
+  std::vector<validation::RowResult::PerSample> samples;
+  for (std::size_t k = 0; k < values.size(); ++k) samples.push_back({"seed" + std::to_string(k + 1), {values[k], "", ""}});
+  validation::PaperEnsemble e;
+  e.rows.push_back({r, "dense", validation::judge_values(r, samples)});
+  e.samples = 5, e.spheres = 8000;
+  REQUIRE(e.rows[0].result.verdict == Verdict::Consistent);
+  REQUIRE_FALSE(e.rows[0].result.warnings.empty());
+  const double mean = (values[0] + values[1] + values[2]) / 3;
+  double ss = 0;
+  for (int k = 0; k < 3; ++k) ss += (values[k] - mean) * (values[k] - mean);
+  const double sd = std::sqrt(ss / 2);
+  const auto file = [&](double recorded_sd) {
+    DecisionsFile f;
+    f.path = "reports/readings/medium_dense/decisions.json";
+    f.particles = 8000, f.samples = 3, f.baseline_results = "results/study/paper";
+    DecisionsFile::Finding row;
+    row.baseline_mean = std::stod(validation::number(mean)), row.baseline_sd = std::stod(validation::number(recorded_sd));
+    row.baseline_verdict = Verdict::Consistent;
+    f.order = {r.name};
+    f.rows[r.name] = row;
+    return f;
+  };
+  const DecisionsFile own = file(sd), other = file(2 * sd);
+  const std::string text = validation::baseline_check_section({&own}, e);
+  INFO(text);
+  // (6.10973 - 6.11172) / 0.01059 = -0.19.
+  CHECK(text.find("| cn dense | 6.112 ± 0.011 | 6.1097 ± 0.0092 | -0.19 | ✅ ⚠ / ✅ ⚠ |") != std::string::npos);
+  CHECK(text.find("Its means and sds are those of the paper study's seed1, seed2, seed3 in 1 of 1 rows") != std::string::npos);
+  CHECK(text.find("consistent by width only") != std::string::npos);  // the legend names the kind shown
+  const std::string planted = validation::baseline_check_section({&other}, e);
+  INFO(planted);
+  CHECK(planted.find("| ✅ ⚠ / ✅ |") != std::string::npos);
+  CHECK(planted.find("Its means and sds are those") == std::string::npos);
 }

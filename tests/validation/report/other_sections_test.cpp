@@ -4,6 +4,8 @@
 // not recorded; a section not run has no line. On fixture report folders.
 #include <catch2/catch.hpp>
 
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -255,4 +257,63 @@ TEST_CASE("report: each reading's table says its stamp, marked when on another b
   CHECK_THAT(text, Catch::Contains("### Readings: dashpot (size not recorded)\n\n*⚠ Made by engine `0.1.0+bbbb` on baseline "
                                    "`2222222222222222` (8,000 spheres, 3 samples, 2026-11-20); another baseline than the paper study's "
                                    "(made by engine `0.1.0+aaaa` on baseline `1111111111111111` (8,000 spheres, 5 samples, 2026-11-28)).*\n"));
+}
+
+TEST_CASE("other sections: a stamp recorded elsewhere is taken only for the same data", "[report][stamp]") {
+  const fs::path report = dem::test::scratch_dir("other_sections_elsewhere");
+  const auto section = [](const std::string& heading_start) {
+    for (const auto& s : validation::other_study_sections())
+      if (s.heading.rfind(heading_start, 0) == 0) return s;
+    FAIL("no section " << heading_start);
+    return validation::OtherStudySection{};
+  };
+  // The critical-state ensemble: stamp.json without an "ensemble" part; the literature check of
+  // the same study stamps it. Its samples' void ratios 0.571, 0.5704, 0.5705 (mean 0.5706333...,
+  // sd 0.000321455) and angles 7.98, 8.18, 8.43 (mean 8.196667, sd 0.225462) are ensemble.dat's.
+  write_json(report / "critical_state" / "stamp.json", {{"engine", "0.1.0+aaa"}, {"baseline", "b1"}, {"spheres", 8000}, {"samples", 1}});
+  const auto literature = [&](double last_angle) {
+    nlohmann::ordered_json j = {{"profile", "paper"}, {"samples", {"seed1", "seed2", "seed3"}}, {"missing_samples", nlohmann::json::array()},
+                                {"missing_results", nlohmann::json::array()},
+                                {"stamp", {{"engine", "0.1.0+aaa"}, {"engine_source", "src"}, {"baseline", "b1"}, {"spheres", 8000},
+                                           {"samples", 3}, {"date", "2026-11-28"}}}};
+    const auto row = [](const std::string& name, const std::vector<double>& x) {
+      nlohmann::ordered_json r = {{"name", name}, {"density", "dense"}, {"per_sample", nlohmann::json::array()}};
+      for (std::size_t k = 0; k < x.size(); ++k) r["per_sample"].push_back({{"sample", "seed" + std::to_string(k + 1)}, {"value", x[k]}});
+      return r;
+    };
+    j["rows"] = {row("void ratio", {0.571, 0.5704, 0.5705}), row("angle", {7.98, 8.18, last_angle})};
+    write_json(report / "literature" / "validation.json", j);
+  };
+  const auto ensemble_dat = [&](double e_mean, double e_sd, double phi_mean, double phi_sd) {
+    char line[512];
+    std::snprintf(line, sizeof line, "\"compression_mu0\"\t0\t1\t3\t%.10g\t%.10g\t0.3\t0.01\t%.10g\t%.10g\t5.8\t0.004\t9.7\t0.2\n", phi_mean, phi_sd,
+                  e_mean, e_sd);
+    dem::test::write_text((report / "critical_state" / "ensemble.dat").string(),
+                          "# ensemble\n# label\t mu [1]\tloading [1]\tsamples [1]\tphi_cs [deg]\tphi_cs_sd [deg]\tq_over_p_cs [1]\t"
+                          "q_over_p_cs_sd [1]\te_cs [1]\te_cs_sd [1]\tcn_cs [1]\tcn_cs_sd [1]\tpeak_phi [deg]\tpeak_phi_sd [deg]\n" +
+                              std::string(line));
+  };
+  const double e_mean = (0.571 + 0.5704 + 0.5705) / 3, phi_mean = (7.98 + 8.18 + 8.43) / 3;
+  const auto sd3 = [](double a, double b, double c) {
+    const double m = (a + b + c) / 3;
+    return std::sqrt(((a - m) * (a - m) + (b - m) * (b - m) + (c - m) * (c - m)) / 2);
+  };
+  ensemble_dat(e_mean, sd3(0.571, 0.5704, 0.5705), phi_mean, sd3(7.98, 8.18, 8.43));
+  literature(8.43);
+  const Stamp same = validation::read_section_stamp(report, section("The critical state on "));
+  CHECK(same.engine == "0.1.0+aaa");
+  CHECK(same.samples == 3);
+  CHECK(same.date == "2026-11-28");
+  // Planted: the literature check of other samples (one angle differs): nothing taken from it.
+  literature(8.44);
+  CHECK_FALSE(validation::read_section_stamp(report, section("The critical state on ")).recorded());
+  // The rates part has no record elsewhere: not recorded, none invented.
+  CHECK_FALSE(validation::read_section_stamp(report, section("Rate convergence: ")).recorded());
+  // make bench's file without a "stamp": the engine and the spheres it records.
+  write_json(report / "bench.json", {{"engine", {{"version", "0.1.0+1cb397751ed6"}, {"particles", 8000}, {"runs", nlohmann::json::array()}}}});
+  const Stamp bench = validation::read_section_stamp(report, section("Appendix: Performance"));
+  CHECK(bench.engine == "0.1.0+1cb397751ed6");
+  CHECK(bench.spheres == 8000);
+  CHECK(bench.baseline.empty());
+  CHECK(validation::stamp_text(bench).find("engine `0.1.0+1cb397751ed6`") != std::string::npos);
 }
