@@ -35,6 +35,7 @@
 #include "io/atomic_file.hpp"
 #include "io/failure.hpp"
 #include "report/other_sections.hpp"
+#include "report/prose_numbers.hpp"
 #include "report/report.hpp"
 #include "report/report_values.hpp"
 #include "report/study_values.hpp"
@@ -96,6 +97,14 @@ bool folders_usable(const std::string& results, const std::string& out) {
     return false;
   }
   return true;
+}
+
+// Each sentence of the report that states one number in two roundings, said (report/prose_numbers.hpp):
+// the report is written, and the sentence's section is what to correct.
+void warn_restated(const std::string& text) {
+  for (const validation::RestatedNumber& r : validation::numbers_restated(text))
+    std::fprintf(stderr, "report: warning: one number in two roundings, %s and %s, in one sentence: \"%s\"\n", r.longer.c_str(),
+                 r.shorter.c_str(), r.sentence.c_str());
 }
 
 }  // namespace
@@ -231,6 +240,7 @@ int tool_main(int argc, char** argv) {
     for (const std::string& h : stamped.other) std::fprintf(stderr, "report: warning: '%s' kept from another baseline or engine (headed ⚠)\n", h.c_str());
     text = stamped.text;
     dem::write_file_atomically((report / "index.md").string(), text);
+    warn_restated(text);
     std::fprintf(stderr, "report written to %s (%zu sample(s) of %s%s)\n", (report / "index.md").c_str(), in.samples.size(),
                  validation::shown_path(results).c_str(), missing.empty() ? "" : (", " + std::to_string(missing.size()) + " result files missing").c_str());
   } catch (const std::exception& e) {
