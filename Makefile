@@ -1,5 +1,4 @@
-# cyclic-triax: the two commands a user needs are `make all` and `make test`. Every target is a few
-# calls of the project's tools; docs/make-targets.md says what each one does.
+# cyclic-triax: `make all` and `make test`; every target a few calls of the tools (docs/make-targets.md).
 BUILD    ?= build
 JOBS     ?= $(shell nproc 2>/dev/null || echo 2)
 # python3-*: the README's Python lines, tests/clients/ and python/ (its tests, its notebook); cmark-gfm: index.html.
@@ -44,10 +43,9 @@ REPORT_ALL = $(REPORT) --baseline $(BASELINE) --decisions $(DECISIONS) --stabili
 # A calibration report's figures, drawn in its folder ($(1)).
 CALIBRATION_FIGURES = cd $(1) && GNUPLOT_LIB=$(CURDIR)/reports/gnuplot gnuplot $(CURDIR)/reports/gnuplot/calibration.gp
 
-.PHONY: all deps build tools examples example-samples install test kill-test slurm-test sanitize clang-test fuzz bench quick study convergence report decisions decisions-report convergence-report stability-report critical-state-report liquefaction-report readings-report report-sections literature literature-report critical-state liquefaction samples samples-study cyclic-tests render calibration-demo calibration-two-sizes calibration-example open-choices open-choices-check clean
+.PHONY: all deps build tools examples example-samples install test kill-test slurm-test sanitize clang-test fuzz bench quick study convergence report decisions decisions-report convergence-report stability-report critical-state-report liquefaction-report readings-report report-sections literature literature-report critical-state liquefaction samples samples-study cyclic-tests render calibration-demo calibration-two-sizes calibration-example open-choices open-choices-check open-choices-paper-size clean
 
-# Everything: install, build the tools, run the full study, validate it, draw the figures and write
-# reports/index.md; fails at the end if a must-pass validation row is inconsistent with the paper.
+# Everything: install, build, run the full study, validate it, draw the figures, write reports/index.md (fails on a must-pass row).
 all: deps tools study report
 	$(VALIDATE) --results $(RESULTS) --out reports
 
@@ -94,13 +92,16 @@ calibration-two-sizes: tools
 OPEN := pipeline/calibrations/paper_open_choices.yaml
 OPEN_REPORT := reports/calibration/paper_open_choices
 open-choices: tools
-	$(BUILD)/bin/calibrate $(OPEN) --profile small -j $(JOBS)
+	$(BUILD)/bin/calibrate $(OPEN) -j $(JOBS)
 	$(call CALIBRATION_FIGURES,$(OPEN_REPORT))
 open-choices-check: tools
 	$(PIPELINE) new pipeline/studies/calibration_paper_best.yaml --from pipeline/studies/calibration_paper.yaml --force \
 	  --output results/calibration_paper_best --variant "$$($(BUILD)/bin/calibrate variant $(OPEN))"
 	$(PIPELINE) pipeline/studies/calibration_paper_best.yaml --profile check -j $(JOBS)
 	$(VALIDATE) --results results/calibration_paper_best/check --out $(OPEN_REPORT)/best
+open-choices-paper-size: tools
+	$(PIPELINE) pipeline/studies/open_choices_paper_size.yaml -j $(JOBS)
+	$(VALIDATE) --results results/open_choices_paper_size/paper --out $(OPEN_REPORT)/paper_size
 calibration-example: tools
 	$(BUILD)/bin/calibrate examples/calibration/calibration.yaml -j $(JOBS)
 	$(call CALIBRATION_FIGURES,results/calibration_example/report)
@@ -174,8 +175,7 @@ report: tools stability-report
 	-$(MAKE) --no-print-directory -k convergence-report critical-state-report liquefaction-report literature-report
 	$(REPORT_ALL) --results $(RESULTS) --out reports
 	reports/render_html.sh reports/index.md reports/index.html
-# The report without the paper study's results: its verdicts judged again from the committed
-# reports/validation.json, its values read back from reports/study_values.json.
+# The report without the paper study's results: verdicts judged again from reports/validation.json, values from study_values.json.
 report-sections: tools
 	-$(MAKE) --no-print-directory -k decisions-report readings-report critical-state-report liquefaction-report literature-report
 	-$(VALIDATE) --results $(RESULTS) --out reports --without-results redraw $(VALIDATION_DECISIONS)

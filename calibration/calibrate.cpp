@@ -94,6 +94,10 @@ void check_inputs(const Calibration& c, const pipeline::Study& study, const Refe
       if (std::none_of(study.densities.begin(), study.densities.end(), [&](const auto& d) { return d.name == density; }))
         throw dem::ConfigError(c.file + ": parameters: " + p.name + ": densities: '" + density + "' is not a density of the study " +
                                c.study);
+  for (const Size& size : c.sizes)
+    for (const std::string& density : size.densities)
+      if (std::none_of(study.densities.begin(), study.densities.end(), [&](const auto& d) { return d.name == density; }))
+        throw dem::ConfigError(c.file + ": sizes: " + size.profile + ": densities: '" + density + "' is not a density of the study " + c.study);
   for (const CurveRow& row : refs.curves) {
     const bool density = std::any_of(study.densities.begin(), study.densities.end(), [&](const auto& d) { return d.name == row.density; });
     const bool test = std::any_of(study.tests.begin(), study.tests.end(), [&](const auto& t) { return t.name == row.test; });
@@ -118,7 +122,7 @@ void start(Loop& l) {
   if (!c.sizes.empty() && !l.o.profile.empty())
     throw dem::ConfigError("--profile " + l.o.profile + " is given, but " + c.file + " names its profiles in sizes: leave --profile out");
   std::vector<Size> sizes = c.sizes;
-  if (sizes.empty()) sizes.push_back({l.o.profile.empty() ? l.study.default_profile().name : l.o.profile, 0, 0});
+  if (sizes.empty()) sizes.push_back({l.o.profile.empty() ? l.study.default_profile().name : l.o.profile, 0, 0, {}});
   for (std::size_t k = 0; k < sizes.size(); ++k) {
     const pipeline::Profile* profile = nullptr;
     try {
@@ -129,13 +133,22 @@ void start(Loop& l) {
     }
     SizeOutcome so;
     so.profile = profile->name;
+    so.densities = sizes[k].densities;
     so.seeds = profile->seeds;
     so.budget = sizes[k].sets;
-    so.results = (fs::path(l.study.output) / ("calibration_" + c.name) / profile->name).lexically_normal().string();
+    // A part of a size has its own results folder and ledger: profile-dense-medium.
+    std::string name = profile->name;
+    for (const std::string& d : so.densities) name += "-" + d;
+    so.results = (fs::path(l.study.output) / ("calibration_" + c.name) / name).lexically_normal().string();
     l.out.sizes.push_back(std::move(so));
     SizeState state;
     state.profile = profile;
-    state.ledger_file = ledger_file(c, k, profile->name);
+    state.ledger_file = ledger_file(c, k, name);
+    state.study = l.study;
+    if (!sizes[k].densities.empty())
+      std::erase_if(state.study.densities, [&](const auto& d) {
+        return std::find(sizes[k].densities.begin(), sizes[k].densities.end(), d.name) == sizes[k].densities.end();
+      });
     l.at.push_back(std::move(state));
   }
   // The references as judged at the largest size: a row's tolerance may be a profile's.
@@ -143,7 +156,13 @@ void start(Loop& l) {
   l.out.engine = pipeline::engine_version(l.o.dem);
   if (l.out.engine.empty()) throw dem::ConfigError("cannot run the engine '" + l.o.dem + " --source-hash'");
   check_inputs(c, l.study, l.out.references);
-  for (SizeState& state : l.at) state.ledger = read_ledger(state.ledger_file, l.out.references);
+  for (std::size_t k = 0; k < l.at.size(); ++k) {
+    SizeState& state = l.at[k];
+    state.refs = l.out.sizes[k].densities.empty() ? l.out.references : only_densities(l.out.references, l.out.sizes[k].densities);
+    if (state.refs.curves.empty() && state.refs.rows.empty())
+      throw dem::ConfigError(c.file + ": sizes: " + l.out.sizes[k].label() + ": the references have no curve or row of its densities");
+    state.ledger = read_ledger(state.ledger_file, state.refs);
+  }
 }
 
 // The iteration's batch, from the prior (the first) or from a proposal fitted after the sets so
@@ -176,7 +195,7 @@ void draw_batch(Loop& l, int it) {
 const ScoredSet* other_engine_entry(const Loop& l, std::size_t k, const ParameterSet& s) {
   const Ledger& ledger = l.at[k].ledger;
   if (!l.o.ledger_engine || ledger.stamp.engine_source.empty() || ledger.stamp.engine_source == l.out.engine) return nullptr;
-  const auto runs = plan_sets(l.c, l.study, *l.at[k].profile, {s}, l.out.sizes[k].results, ledger.stamp.engine_source);
+  const auto runs = plan_sets(l.c, l.at[k].study, *l.at[k].profile, {s}, l.out.sizes[k].results, ledger.stamp.engine_source);
   const auto hashes = run_hashes_by_set(runs);
   const auto h = hashes.find(s.name);
   return h == hashes.end() ? nullptr : ledger.find(s.name, s.u, h->second);
@@ -191,7 +210,7 @@ IterationPlan plan_iteration(Loop& l, std::size_t k, int it) {
   SizeOutcome& so = l.out.sizes[k];
   for (const ParameterSet& s : so.sets)
     if (!size.from_ledger.count(s.name)) p.to_run.push_back(s);
-  p.runs = p.to_run.empty() ? std::vector<pipeline::PlannedRun>{} : plan_sets(l.c, l.study, *size.profile, p.to_run, so.results, l.out.engine);
+  p.runs = p.to_run.empty() ? std::vector<pipeline::PlannedRun>{} : plan_sets(l.c, size.study, *size.profile, p.to_run, so.results, l.out.engine);
   p.hashes = run_hashes_by_set(p.runs);
   p.finished.resize(p.runs.size());
   for (std::size_t i = 0; i < p.runs.size(); ++i) {
@@ -208,9 +227,33 @@ IterationPlan plan_iteration(Loop& l, std::size_t k, int it) {
     size.from_ledger.emplace(s.name, *e);
     p.in_ledger.insert(s.name);
     if (other_engine) ++so.other_engine_sets, so.other_engine = size.ledger.stamp.engine_source;
+    if (!e->verified_by.empty()) ++so.verified_sets, so.verified_by = e->verified_by;
   }
   return p;
 }
+
+}  // namespace
+
+std::size_t base_of(const Outcome& out, std::size_t k) { return out.sizes[k].densities.empty() ? k - 1 : 0; }
+
+void execute_sets(Loop& l, std::size_t k, const std::vector<ParameterSet>& sets, const std::vector<pipeline::PlannedRun>& runs) {
+  SizeState& size = l.at[k];
+  const SizeOutcome& so = l.out.sizes[k];
+  if (!size.lock) size.lock = pipeline::lock_results_folder(so.results);
+  pipeline::write_scenes(runs);
+  pipeline::Study study = size.study;
+  study.variants.clear();
+  for (const ParameterSet& s : sets) study.variants.push_back(variant_of(l.c, s));
+  pipeline::write_manifest(runs, study, so.results, l.out.engine);
+  pipeline::Outcome ran;
+  if (l.o.executor == "slurm")
+    ran = pipeline::slurm::execute(runs, std::vector<pipeline::SlurmOptions>(runs.size(), l.study.slurm), l.o.dem);
+  else
+    ran = pipeline::execute(runs, l.o.dem, l.o.jobs, l.o.threads);
+  if (ran.interrupted) throw dem::ConfigError("interrupted: start the calibration again to go on (finished runs are reused)");
+}
+
+namespace {
 
 // Runs what the iteration needs at size k but the ledger's sets (the plan is made again without them).
 void run_iteration(Loop& l, std::size_t k, int it, IterationPlan& p) {
@@ -219,11 +262,11 @@ void run_iteration(Loop& l, std::size_t k, int it, IterationPlan& p) {
   if (!p.in_ledger.empty()) {
     p.to_run.erase(std::remove_if(p.to_run.begin(), p.to_run.end(), [&](const ParameterSet& s) { return size.from_ledger.count(s.name) > 0; }),
                    p.to_run.end());
-    p.runs = p.to_run.empty() ? std::vector<pipeline::PlannedRun>{} : plan_sets(l.c, l.study, *size.profile, p.to_run, so.results, l.out.engine);
+    p.runs = p.to_run.empty() ? std::vector<pipeline::PlannedRun>{} : plan_sets(l.c, size.study, *size.profile, p.to_run, so.results, l.out.engine);
   }
   const int this_iteration = static_cast<int>(std::count_if(so.sets.begin(), so.sets.end(), [&](const ParameterSet& s) { return s.iteration == it; }));
   std::printf("[calibrate] iteration %d%s: %d sets (%zu scored in the ledger), %zu runs planned (finished ones are reused)\n", it,
-              l.out.sizes.size() > 1 ? (", size " + so.profile).c_str() : "", this_iteration, p.in_ledger.size(), p.runs.size());
+              l.out.sizes.size() > 1 ? (", size " + so.label()).c_str() : "", this_iteration, p.in_ledger.size(), p.runs.size());
   std::fflush(stdout);
   if (p.runs.empty()) return;
   if (l.o.ledger_only) {
@@ -235,18 +278,7 @@ void run_iteration(Loop& l, std::size_t k, int it, IterationPlan& p) {
                              std::to_string(missing.size()) + " of iteration " + std::to_string(it) + " lack one) and nothing may run");
     return;
   }
-  if (!size.lock) size.lock = pipeline::lock_results_folder(so.results);
-  pipeline::write_scenes(p.runs);
-  pipeline::Study study = l.study;
-  study.variants.clear();
-  for (const ParameterSet& s : p.to_run) study.variants.push_back(variant_of(l.c, s));
-  pipeline::write_manifest(p.runs, study, so.results, l.out.engine);
-  pipeline::Outcome ran;
-  if (l.o.executor == "slurm")
-    ran = pipeline::slurm::execute(p.runs, std::vector<pipeline::SlurmOptions>(p.runs.size(), l.study.slurm), l.o.dem);
-  else
-    ran = pipeline::execute(p.runs, l.o.dem, l.o.jobs, l.o.threads);
-  if (ran.interrupted) throw dem::ConfigError("interrupted: start the calibration again to go on (finished runs are reused)");
+  execute_sets(l, k, p.to_run, p.runs);
 }
 
 // Scores size k's sets of this iteration not in the ledger on their samples; every set of it gets
@@ -266,7 +298,7 @@ void score_iteration(Loop& l, std::size_t k, int it, const IterationPlan& p) {
   for (ParameterSet& s : so.sets) {
     if (s.iteration != it || size.from_ledger.count(s.name)) continue;
     if (const auto stop = stops.find(s.name); stop != stops.end()) s.stopped = stop->second;
-    s.misfit = score_complete(l.out.references, so.samples[s.name]);
+    s.misfit = score_complete(size.refs, so.samples[s.name]);
     for (const std::string& left : s.misfit.left_out)
       std::printf("[calibrate] set %s scored without %s\n", s.name.c_str(), left.c_str());
   }
@@ -304,11 +336,11 @@ void keep_scores(Loop& l, std::size_t k, const IterationPlan& p) {
     const RunShare share = found == shares.end() ? RunShare{} : found->second;
     const auto h = p.hashes.find(s.name);
     next.sets.push_back({s.name, s.u, h == p.hashes.end() ? std::vector<std::string>{} : h->second, s.misfit, share.runs,
-                         share.cost.core_seconds, share.cost.particle_steps});
+                         share.cost.core_seconds, share.cost.particle_steps, ""});
   }
   for (const ScoredSet& e : size.ledger.sets)
     if (std::none_of(so.sets.begin(), so.sets.end(), [&](const ParameterSet& s) { return s.name == e.name; })) next.sets.push_back(e);
-  if (const std::string kept = write_ledger(size.ledger_file, next, l.out.references); !kept.empty())
+  if (const std::string kept = write_ledger(size.ledger_file, next, size.refs); !kept.empty())
     std::printf("[calibrate] the ledger %s held sets scored against other references or not among this calibration's: "
                 "kept as %s, a new one written\n", size.ledger_file.c_str(), kept.c_str());
 }
@@ -425,6 +457,7 @@ double Outcome::core_seconds() const {
 std::optional<Outcome> run_calibration(const Calibration& c, const RunOptions& o) {
   Loop l(c, o);
   start(l);
+  for (std::size_t k = 0; k < l.at.size(); ++k) verify_ledger(l, k);
   Outcome& out = l.out;
   for (int it = 1; it <= c.max_iterations; ++it) {
     draw_batch(l, it);

@@ -32,6 +32,11 @@ struct RunOptions {
   bool ledger_engine = false;
   // Run nothing: every set must come from a ledger (a replay of a committed calibration).
   bool ledger_only = false;
+  // Take a ledger's sets whose runs hash otherwise here (the scenes' text or the engine changed
+  // since they were scored) by their names and unit values, once this many of them, spread over
+  // the ledger, run again here give every row's mean and sd bit for bit as the ledger has them
+  // (ledger_verify.cpp); else the calibration stops before it takes any. 0: never.
+  int ledger_verify = 0;
   // Called after each iteration but the last with the outcome so far (stop_reason says it goes
   // on): the report is then written every iteration, and a calibration a session's end stops
   // leaves its posterior so far.
@@ -53,6 +58,13 @@ struct IterationSummary {
 // sets chosen to run there (discrepancy.hpp; their `iteration` is the one that chose them).
 struct SizeOutcome {
   std::string profile, results;  // results: the folder of the runs
+  std::vector<std::string> densities;  // a part of the largest size: the densities it runs (else empty: all)
+  // "check" or, for a part of a size, "check (dense)": how a size is named in messages and tables.
+  std::string label() const {
+    std::string names;
+    for (const std::string& d : densities) names += (names.empty() ? "" : ", ") + d;
+    return names.empty() ? profile : profile + " (" + names + ")";
+  }
   std::vector<std::int64_t> seeds;
   int budget = 0;                // a larger size's sets at most
   std::vector<ParameterSet> sets;
@@ -62,6 +74,10 @@ struct SizeOutcome {
   // Of those, the sets another engine scored (RunOptions::ledger_engine), and that engine.
   int other_engine_sets = 0;
   std::string other_engine;
+  // Of those, the sets taken by their names and unit values after a verification (RunOptions::
+  // ledger_verify), and what verified them (the sets run again, the engines).
+  int verified_sets = 0;
+  std::string verified_by;
   validation::Stamp stamp;       // of the runs (engine, baseline, spheres, samples, date)
   std::map<std::string, std::vector<validation::Sample>> samples;  // of each set (for the figures)
   // A larger size's discrepancy from the size before (discrepancy.hpp): the sets it was fitted to
@@ -103,6 +119,8 @@ struct Outcome {
   const SizeOutcome& first() const { return sizes.front(); }
   SizeOutcome& first() { return sizes.front(); }
   const SizeOutcome& largest() const { return sizes.back(); }
+  // Whether the sizes after the first are parts of one size, each running some densities.
+  bool in_parts() const { return sizes.size() > 1 && !sizes.back().densities.empty(); }
   double core_seconds() const;
 };
 

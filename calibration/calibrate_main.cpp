@@ -1,10 +1,11 @@
 // calibrate: infers scene parameters from references (curves of a lab test, or a reference file's
 // rows) by running parameter sets of a study through the pipeline (calibration/README.md).
 //   calibrate CALIBRATION.yaml [--profile P] [-j N] [--threads T] [--executor local|slurm] [--plan] [--truth FILE]
-//             [--ledger-engine] [--ledger-only]
+//             [--ledger-engine] [--ledger-verify K] [--ledger-only]
 //   calibrate lab-curve --x COLUMN --y COLUMN --at X1,X2,... --out FILE.csv RESULT.h5...
 //   calibrate truth CALIBRATION.yaml RESULT.h5 --out FILE.json
 //   calibrate variant CALIBRATION.yaml [--set NAME]
+//   calibrate rekey CALIBRATION.yaml --references-then OLD.yaml
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -18,6 +19,8 @@
 #include <nlohmann/json.hpp>
 
 #include "calibrate.hpp"
+#include "config/study_config.hpp"
+#include "ledger.hpp"
 #include "config/yaml_section.hpp"
 #include "exec/scheduler.hpp"
 #include "io/atomic_file.hpp"
@@ -161,6 +164,26 @@ int variant(int argc, char** argv) {
   return 0;
 }
 
+// A calibration's ledgers of schema 1 rekeyed to the references as parsed (ledger.hpp: rekey_ledger).
+int rekey(int argc, char** argv) {
+  std::string file, then_file;
+  CLI::App app{"calibrate rekey: a ledger of scored sets written before ledgers were keyed on the references as parsed (schema 1, "
+               "keyed on the files' bytes) rekeyed, once the references it was scored against parse as the calibration's do now"};
+  app.add_option("calibration", file, "the calibration file")->required();
+  app.add_option("--references-then", then_file, "the reference file the ledgers were scored against (e.g. checked out from version control)")
+      ->required();
+  if (const int rc = parse(app, argc, argv); rc >= 0) return rc;
+  const calibration::Calibration c = calibration::read_calibration(file);
+  const std::string profile = c.sizes.empty() ? pipeline::load_study(c.study).default_profile().name : c.sizes.back().profile;
+  const calibration::References then = calibration::read_references(then_file, profile);
+  const calibration::References now = calibration::read_references(c.references, profile);
+  std::vector<std::string> ledgers{(fs::path(c.report) / "scored_sets.json").string()};
+  for (std::size_t k = 1; k < c.sizes.size(); ++k) ledgers.push_back((fs::path(c.report) / ("scored_sets." + c.sizes[k].profile + ".json")).string());
+  for (const std::string& ledger : ledgers)
+    if (fs::exists(ledger)) std::printf("calibrate rekey: %s: %d sets rekeyed\n", ledger.c_str(), calibration::rekey_ledger(ledger, then, now));
+  return 0;
+}
+
 int calibrate(int argc, char** argv) {
   const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   std::string file, truth_file;
@@ -181,6 +204,11 @@ int calibrate(int argc, char** argv) {
   app.add_flag("--ledger-engine", o.ledger_engine,
                "take the ledgers' scores of sets whose scenes are unchanged even if another engine scored them (the report names "
                "that engine and how many sets it scored)");
+  app.add_option("--ledger-verify", o.ledger_verify,
+                 "take the ledgers' sets whose runs hash otherwise here (their scenes' text or engine changed) once this many of "
+                 "them, spread over each ledger, run again here score bit for bit as the ledger has them (the report says which "
+                 "and how many were taken); a difference stops the calibration")
+      ->check(CLI::Range(1, 1000));
   app.add_flag("--ledger-only", o.ledger_only, "run nothing: every set from the ledgers (a replay); a set they lack is an error");
   app.footer("calibrate lab-curve --help and calibrate truth --help: the demonstration's synthetic references; calibrate variant --help: "
              "a finished calibration's set as a study variant.");
@@ -219,6 +247,7 @@ int tool_main(int argc, char** argv) {
     if (argc > 1 && std::string(argv[1]) == "lab-curve") return lab_curve(argc - 1, argv + 1);
     if (argc > 1 && std::string(argv[1]) == "truth") return truth(argc - 1, argv + 1);
     if (argc > 1 && std::string(argv[1]) == "variant") return variant(argc - 1, argv + 1);
+    if (argc > 1 && std::string(argv[1]) == "rekey") return rekey(argc - 1, argv + 1);
     return calibrate(argc, argv);
   } catch (const dem::ConfigError& e) {
     std::fprintf(stderr, "calibrate: %s\n", e.what());

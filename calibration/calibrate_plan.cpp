@@ -89,7 +89,7 @@ void print_plan(const Loop& l, std::size_t k, IterationPlan& p, int sets_at_most
   const double left = std::max(0.0, static_cast<double>(sets_at_most) - static_cast<double>(scored_sets));
   const double total = left > 0 ? shared_needed + own_per_set * left : 0;
   const SizeOutcome& so = l.out.sizes[k];
-  const std::string what = l.out.sizes.size() > 1 ? "size " + so.profile + " (lattice " + std::to_string(size.profile->lattice) + ", " +
+  const std::string what = l.out.sizes.size() > 1 ? "size " + so.label() + " (lattice " + std::to_string(size.profile->lattice) + ", " +
                                                         std::to_string(so.seeds.size()) + " sample(s) a set): "
                                                   : "";
   if (k == 0)

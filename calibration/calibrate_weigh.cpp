@@ -83,6 +83,7 @@ std::vector<SizeOutcome::Change> changes_at(const Outcome& out, const Discrepanc
   std::vector<SizeOutcome::Change> changes;
   const Eigen::VectorXd x = delta.features(u);
   const auto add = [&](const std::string& row, const std::vector<Quadratic>& qs) {
+    if (std::none_of(qs.begin(), qs.end(), covers)) return;  // outside a part of a size
     SizeOutcome::Change c{row, {}, {}};
     for (const Quadratic& q : qs) c.shift.push_back(q.value(x)), c.shift_sd.push_back(std::sqrt(q.variance(x)));
     changes.push_back(std::move(c));
@@ -101,7 +102,7 @@ void choose_larger_sets(Loop& l, std::size_t k, int it) {
   std::vector<const ParameterSet*> candidates;
   std::vector<Eigen::VectorXd> candidate_u, chosen_u;
   for (const ParameterSet& s : so.sets) chosen_u.push_back(s.u);
-  for (const ParameterSet& s : l.out.sizes[k - 1].sets)
+  for (const ParameterSet& s : l.out.sizes[base_of(l.out, k)].sets)
     if (s.misfit.valued && std::none_of(so.sets.begin(), so.sets.end(), [&](const ParameterSet& t) { return t.name == s.name; }))
       candidates.push_back(&s), candidate_u.push_back(s.u);
   // Near the posterior at the largest size so far, else the first size's.
@@ -115,7 +116,7 @@ void choose_larger_sets(Loop& l, std::size_t k, int it) {
     so.sets.push_back(std::move(s));
     names += (names.empty() ? "" : ", ") + candidates[i]->name;
   }
-  std::printf("[calibrate] iteration %d: size %s runs %s (%zu of at most %d there)\n", it, so.profile.c_str(),
+  std::printf("[calibrate] iteration %d: size %s runs %s (%zu of at most %d there)\n", it, so.label().c_str(),
               names.empty() ? "no set" : names.c_str(), so.sets.size(), so.budget);
   std::fflush(stdout);
 }
@@ -130,7 +131,15 @@ void weigh_larger(Loop& l) {
   for (std::size_t k = 1; k < out.sizes.size(); ++k) {
     SizeOutcome& so = out.sizes[k];
     so.discrepancy_pairs = 0, so.discrepancy_linear = false, so.changes.clear();
-    if (const auto delta = fit_discrepancy(out.references, out.sizes[k - 1].sets, so.sets)) {
+    // A part's discrepancy: on its own curves and rows (the base's sets' misfits cut to them),
+    // then extended to every reference, covering nothing outside the part.
+    const References& part = l.at[k].refs;
+    std::vector<ParameterSet> base = out.sizes[base_of(out, k)].sets;
+    if (!so.densities.empty())
+      for (ParameterSet& s : base) s.misfit = projected(s.misfit, out.references, part);
+    std::optional<Discrepancy> delta = fit_discrepancy(part, base, so.sets);
+    if (delta && !so.densities.empty()) delta = extended(*delta, part, out.references);
+    if (delta) {
       so.discrepancy_pairs = delta->pairs, so.discrepancy_linear = delta->linear;
       so.changes = changes_at(out, *delta, mean_of(out.posterior_u, out.posterior_w));
       deltas.push_back(*delta);

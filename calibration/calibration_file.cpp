@@ -40,11 +40,24 @@ void read_readings(dem::Section& s, Parameter& p) {
 // `sizes: [{profile: small}, {profile: paper, sets: 8, per_iteration: 3}]`: the study's profiles the
 // sets run at, the smallest (every set) first.
 void read_sizes(dem::Section& root, Calibration& c) {
-  std::set<std::string> profiles;
+  std::set<std::string> profiles, densities;
   for (dem::Section s : root.list("sizes", "the study's profiles the sets run at, smallest first (every set runs at the first)")) {
     Size size;
     size.profile = s.text("profile", std::nullopt, "the study's profile (its lattice and seeds) of this size");
-    if (!profiles.insert(size.profile).second) s.fail("profile", "'" + size.profile + "' names two sizes");
+    if (s.has("densities")) {
+      if (c.sizes.empty()) s.fail("densities", "is given for the first size, where every set runs every density");
+      const YAML::Node d = s.raw("densities", "a list of density names", "the study's densities this part of the largest size runs (its rows and curves only)");
+      if (!d.IsSequence() || d.size() == 0) s.fail("densities", "is not a non-empty list of density names");
+      for (const YAML::Node& name : d) size.densities.push_back(name.as<std::string>());
+      for (const std::string& d : size.densities)
+        if (!densities.insert(d).second) s.fail("densities", "'" + d + "' is in two parts of the size: each density in one part at most");
+    }
+    const bool part = !size.densities.empty();
+    if (c.sizes.size() > 1 && part != !c.sizes.back().densities.empty())
+      s.fail(part ? "densities" : "profile", "the sizes after the first are either all parts of one size (each with densities:) or none");
+    if (part && c.sizes.size() > 1 && size.profile != c.sizes.back().profile)
+      s.fail("profile", "'" + size.profile + "': the parts of the largest size share its profile ('" + c.sizes.back().profile + "')");
+    if (!(part && c.sizes.size() > 1) && !profiles.insert(size.profile).second) s.fail("profile", "'" + size.profile + "' names two sizes");
     if (c.sizes.empty()) {
       if (s.has("sets") || s.has("per_iteration"))
         s.fail(s.has("sets") ? "sets" : "per_iteration", "is given for the first size, where every set runs");
@@ -59,7 +72,7 @@ void read_sizes(dem::Section& root, Calibration& c) {
   }
   if (c.sizes.size() < 2) root.fail("sizes", "lists " + std::to_string(c.sizes.size()) + " size(s): give at least 2 (else leave it out and pass --profile)");
   for (std::size_t k = 1; k < c.sizes.size(); ++k)
-    if (c.sizes[k].sets > c.sizes[k - 1].sets && k > 1)
+    if (c.sizes[k].sets > c.sizes[k - 1].sets && k > 1 && c.sizes[k].densities.empty())
       root.fail("sizes", "runs more sets at " + c.sizes[k].profile + " (" + std::to_string(c.sizes[k].sets) + ") than at the size before it, " +
                              c.sizes[k - 1].profile + " (" + std::to_string(c.sizes[k - 1].sets) + "), which its sets are chosen from");
 }

@@ -15,6 +15,10 @@ struct Size {
   std::string profile;
   int sets = 0;           // a larger size's sets at most (0: the first size, every set)
   int per_iteration = 0;  // a larger size's sets chosen per iteration at most
+  // A part of the largest size: its sets run these densities' tests only, and its discrepancy from
+  // the first size is fitted to these densities' rows and curves only (empty: every density). The
+  // parts of a size share its profile and split its densities.
+  std::vector<std::string> densities;
 };
 
 struct Calibration {

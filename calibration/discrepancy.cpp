@@ -17,6 +17,25 @@ Eigen::VectorXd Discrepancy::features(const Eigen::VectorXd& u) const {
   return x;
 }
 
+Discrepancy extended(const Discrepancy& delta, const References& part, const References& all) {
+  Discrepancy out = delta;
+  out.curves.clear(), out.rows.clear();
+  Quadratic none;
+  none.samples = 0;
+  none.coefficients = Eigen::VectorXd::Zero(delta.linear ? delta.centre.size() + 1 : 1);
+  none.covariance = Eigen::MatrixXd::Zero(none.coefficients.size(), none.coefficients.size());
+  for (const CurveRow& c : all.curves) {
+    const auto in = std::find_if(part.curves.begin(), part.curves.end(), [&](const CurveRow& p) { return p.name == c.name; });
+    out.curves.push_back(in == part.curves.end() ? std::vector<Quadratic>(c.points.size(), none)
+                                                 : delta.curves[static_cast<std::size_t>(in - part.curves.begin())]);
+  }
+  for (const validation::Row& r : all.rows) {
+    const auto in = std::find_if(part.rows.begin(), part.rows.end(), [&](const validation::Row& p) { return p.name == r.name; });
+    out.rows.push_back(in == part.rows.end() ? none : delta.rows[static_cast<std::size_t>(in - part.rows.begin())]);
+  }
+  return out;
+}
+
 std::optional<Discrepancy> fit_discrepancy(const References& refs, const std::vector<ParameterSet>& small,
                                            const std::vector<ParameterSet>& large) {
   std::map<std::string, const ParameterSet*> small_by_name;

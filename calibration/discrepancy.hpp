@@ -47,6 +47,12 @@ int linear_discrepancy_pairs(int d);
 std::optional<Discrepancy> fit_discrepancy(const References& refs, const std::vector<ParameterSet>& small,
                                            const std::vector<ParameterSet>& large);
 
+// A discrepancy fitted on `part` (a part of a size: some densities' curves and rows) over every
+// curve and row of `all`: those outside the part take none (a Quadratic of no samples, which the
+// likelihood and the report skip).
+Discrepancy extended(const Discrepancy& delta, const References& part, const References& all);
+inline bool covers(const Quadratic& q) { return q.samples > 0; }
+
 // The indices of `n` candidates (unit values) to run at the larger size, chosen one at a time: each
 // the one that most reduces the posterior-weighted prediction variance of a linear discrepancy given
 // the sets already there (`chosen`). Candidates are restricted to those within Mahalanobis distance 2

@@ -77,6 +77,12 @@ const ScoredSet* Ledger::find(const std::string& name, const Eigen::VectorXd& u,
   return nullptr;
 }
 
+ScoredSet* Ledger::find_set(const std::string& name, const Eigen::VectorXd& u) {
+  for (ScoredSet& s : sets)
+    if (s.name == name && s.u.size() == u.size() && (s.u - u).cwiseAbs().maxCoeff() <= 1e-9) return &s;
+  return nullptr;
+}
+
 std::optional<double> Ledger::throughput() const {
   double particle_steps = 0, core_seconds = 0;
   for (const ScoredSet& s : sets)
@@ -129,6 +135,7 @@ ScoredSet entry_of(const json& s) {
   e.runs = s.at("runs").get<double>();
   e.core_seconds = s.at("core_seconds").get<double>();
   e.particle_steps = s.value("particle_steps", 0.0);
+  e.verified_by = s.value("verified_by", std::string());
   return e;
 }
 
@@ -190,7 +197,7 @@ std::string write_ledger(const std::string& file, const Ledger& ledger, const Re
          {"references_key", ledger.references_key},
          {"stamp", validation::stamp_json(ledger.stamp)},
          {"sets", json::array()}};
-  for (const ScoredSet& s : ledger.sets)
+  for (const ScoredSet& s : ledger.sets) {
     j["sets"].push_back({{"name", s.name},
                          {"u", std::vector<double>(s.u.data(), s.u.data() + s.u.size())},
                          {"run_hashes", s.run_hashes},
@@ -198,8 +205,37 @@ std::string write_ledger(const std::string& file, const Ledger& ledger, const Re
                          {"core_seconds", s.core_seconds},
                          {"particle_steps", s.particle_steps},
                          {"misfit", misfit_json(s.misfit)}});
+    if (!s.verified_by.empty()) j["sets"].back()["verified_by"] = s.verified_by;
+  }
   dem::write_file_atomically(file, j.dump(1) + "\n");
   return kept;
+}
+
+int rekey_ledger(const std::string& file, const References& then, const References& now) {
+  const json j = validation::read_json_file(file);
+  const int version = j.value("schema", 0);
+  if (version != 1)
+    throw dem::ConfigError(file + ": schema " + std::to_string(version) + ": only a ledger of schema 1 (keyed on the reference files' bytes) is rekeyed");
+  const std::string bytes = references_bytes_hash(then);
+  if (j.value("references_hash", "") != bytes)
+    throw dem::ConfigError(file + ": scored against references whose files hash " + j.value("references_hash", "(none)") + ", not " + then.file +
+                           " (" + bytes + "): give the reference files it was scored against (e.g. from version control)");
+  if (references_key(then) != references_key(now))
+    throw dem::ConfigError(then.file + " and " + now.file + " do not parse the same (a reference, tolerance, rule or point differs): the ledger's scores "
+                           "are not of the references now, and it cannot be rekeyed");
+  Ledger l;
+  l.references_key = references_key(now);
+  try {
+    l.stamp = validation::stamp_from_json(j.at("stamp"));
+    for (const json& s : j.at("sets")) l.sets.push_back(entry_of(s));
+  } catch (const json::exception& e) {
+    throw dem::ConfigError(file + ": not a ledger of scored sets (" + e.what() + ")");
+  }
+  for (const ScoredSet& e : l.sets)
+    if (const std::string why = recheck(now, e.misfit); !why.empty())
+      throw dem::ConfigError(file + ": set " + e.name + ": its score does not follow from its values (" + why + ")");
+  write_ledger(file, l, now);
+  return static_cast<int>(l.sets.size());
 }
 
 }  // namespace calibration

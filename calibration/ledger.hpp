@@ -23,6 +23,9 @@ struct ScoredSet {
   double runs = 0;          // its share of the runs it needs (a run k sets need counts 1/k for each)
   double core_seconds = 0;  // its share of their recorded cost
   double particle_steps = 0;  // its share of their recorded particle-steps (0 in entries written without)
+  // Empty for a set scored on runs of these hashes; else how its score came to stand for them:
+  // scored on runs that hashed otherwise, taken after a verification (RunOptions::ledger_verify).
+  std::string verified_by;
 };
 
 struct Ledger {
@@ -33,6 +36,8 @@ struct Ledger {
 
   // The entry of the set, or null when there is none with these unit values and run hashes.
   const ScoredSet* find(const std::string& name, const Eigen::VectorXd& u, const std::vector<std::string>& run_hashes) const;
+  // The entry of the set whatever its runs' hashes (null when there is none with these unit values).
+  ScoredSet* find_set(const std::string& name, const Eigen::VectorXd& u);
   // The particle-steps per core-second its entries' runs recorded, on the machine that ran them
   // (null when no entry recorded both).
   std::optional<double> throughput() const;
@@ -54,5 +59,12 @@ Ledger read_ledger(const std::string& file, const References& refs);
 // is first moved aside to scored_sets.kept-<N>.json beside it, whose path is returned ("" when
 // nothing was moved).
 std::string write_ledger(const std::string& file, const Ledger& ledger, const References& refs);
+
+// Rekeys the ledger in `file`, of schema 1 (keyed on its reference files' bytes), to the references
+// as parsed: `then` must be the references it was scored against (their files' bytes hash as the
+// ledger says) and parse as `now` does (the same references_key). A comment or a reformatted number
+// in a reference file then no longer discards its scores. Throws, naming what does not hold; the
+// ledger before is kept aside (write_ledger). Returns the number of sets.
+int rekey_ledger(const std::string& file, const References& then, const References& now);
 
 }  // namespace calibration

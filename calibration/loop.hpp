@@ -21,6 +21,8 @@ namespace calibration {
 // What a size runs with: its profile, its ledger and the sets taken from it, the lock of its results.
 struct SizeState {
   const pipeline::Profile* profile = nullptr;
+  pipeline::Study study;  // the study, with a part's densities only
+  References refs;        // the references, with a part's densities' curves and rows only
   std::string ledger_file;
   Ledger ledger;
   std::map<std::string, ScoredSet> from_ledger;  // the sets scored from the ledger, by name
@@ -62,6 +64,18 @@ std::vector<pipeline::PlannedRun> plan_sets(const Calibration& c, const pipeline
                                             const std::string& engine);
 // The input hashes of the runs each set needs, sorted, by set name.
 std::map<std::string, std::vector<std::string>> run_hashes_by_set(const std::vector<pipeline::PlannedRun>& runs);
+
+// The size whose sets size k's are chosen from and whose discrepancy it measures: the one before
+// it, or the first for a part of a size.
+std::size_t base_of(const Outcome& out, std::size_t k);
+
+// Runs `runs` (the plan of `sets` at size k) in its results folder, locked; throws when interrupted.
+void execute_sets(Loop& l, std::size_t k, const std::vector<ParameterSet>& sets, const std::vector<pipeline::PlannedRun>& runs);
+
+// With RunOptions::ledger_verify: size k's ledger entries whose runs hash otherwise here are taken
+// (rehashed, their verified_by said) once the verification sets, run here first, score bit for bit
+// as the ledger has them; throws, naming the set and the row, when one does not (ledger_verify.cpp).
+void verify_ledger(Loop& l, std::size_t k);
 
 // Prints what size k's plan `p` costs now and over the calibration (at most `sets_at_most` sets
 // there, `per_iteration` of them each iteration), the throughput it assumes and where that comes from.

@@ -22,6 +22,14 @@ struct Report {
   std::optional<std::size_t> best_largest;  // with larger sizes: of the largest size's scored sets
   RowVerdicts largest_verdicts;
   Eigen::MatrixXd correlation;
+  // With the largest size in parts (Outcome::in_parts): each part's best set by its own rows, and
+  // its rows' verdicts (instead of best_largest and largest_verdicts).
+  struct Part {
+    std::size_t size = 0;  // index into Outcome::sizes
+    std::optional<std::size_t> best;
+    RowVerdicts verdicts;
+  };
+  std::vector<Part> parts;
 };
 
 // "uniform [0.1, 0.9]", "one of a b c": a parameter's prior.

@@ -151,13 +151,20 @@ validation::Stamp stamp_of(const Outcome& o) {
   return validation::combined(stamps);
 }
 
+// Where a size's sets from the ledger came from, when not from runs of these hashes.
+void add_ledger_provenance(json& x, const SizeOutcome& s) {
+  if (s.other_engine_sets > 0) x["sets_scored_by_another_engine"] = {{"sets", s.other_engine_sets}, {"engine", s.other_engine}};
+  if (s.verified_sets > 0) x["sets_taken_after_verification"] = {{"sets", s.verified_sets}, {"verified_by", s.verified_by}};
+}
+
 json sizes_json(const Report& r) {
   json out = json::array();
   for (std::size_t k = 0; k < r.o.sizes.size(); ++k) {
     const SizeOutcome& s = r.o.sizes[k];
     json x{{"profile", s.profile}, {"seeds", s.seeds}, {"sets", s.sets.size()}, {"runs", s.runs}, {"core_seconds", s.core_seconds},
            {"sets_from_ledger", s.ledger_sets}, {"stamp", validation::stamp_json(s.stamp)}};
-    if (s.other_engine_sets > 0) x["sets_scored_by_another_engine"] = {{"sets", s.other_engine_sets}, {"engine", s.other_engine}};
+    add_ledger_provenance(x, s);
+    if (!s.densities.empty()) x["densities"] = s.densities;
     if (k > 0) {
       x["sets_at_most"] = s.budget;
       x["discrepancy"] = {{"pairs", s.discrepancy_pairs}, {"form", s.discrepancy_linear ? "linear" : "constant"}};
@@ -239,6 +246,7 @@ json posterior_json(const Report& r) {
   j["unscored_sets"] = o.unscored;  // "name: why" of each set that weighs nothing for want of a score
   j["core_seconds"] = o.core_seconds();
   if (o.sizes.size() > 1) j["sizes"] = sizes_json(r);
+  else add_ledger_provenance(j, o.first());
   j["posterior_from"] = o.posterior_from.empty() ? "the sets' weights" : o.posterior_from;
   if (!o.posterior_from.empty())
     j["response_surface"] = {{"sets", o.surface_sets}, {"points", o.posterior_u.size()},
@@ -263,7 +271,14 @@ json posterior_json(const Report& r) {
   j[keys::best_set] = {{keys::name, best.name}, {"chi2", best.misfit.chi2}};
   if (r.verdicts.rows > 0) j[keys::rows_consistent] = rows_json(r.verdicts, o.first().sets);
   j["sets"] = sets_json(c, o.first().sets, &o.weights, r.verdicts);
-  if (o.sizes.size() > 1) {
+  for (const Report::Part& part : r.parts) {
+    const SizeOutcome& size = o.sizes[part.size];
+    json x{{"profile", size.profile}, {"densities", size.densities}, {"sets", sets_json(c, size.sets, nullptr, part.verdicts)}};
+    if (part.best) x["best_set"] = {{"name", size.sets[*part.best].name}, {"chi2", size.sets[*part.best].misfit.chi2}};
+    if (part.verdicts.rows > 0) x["rows_consistent"] = rows_json(part.verdicts, size.sets);
+    j["largest_size_parts"].push_back(x);
+  }
+  if (o.sizes.size() > 1 && !o.in_parts()) {
     const SizeOutcome& top = o.largest();
     json x{{"profile", top.profile}, {"sets", sets_json(c, top.sets, nullptr, r.largest_verdicts)}};
     if (r.best_largest) x["best_set"] = {{"name", top.sets[*r.best_largest].name}, {"chi2", top.sets[*r.best_largest].misfit.chi2}};
@@ -384,12 +399,21 @@ void write_report(const Outcome& o, const std::map<std::string, double>& truth) 
   fs::create_directories(dir);
   Report r{o, truth, o.iterations.back(), best_set(o.first().sets), {}, std::nullopt, {}, correlations(o.posterior_u, o.posterior_w)};
   r.verdicts = tally_rows(o.first().sets, r.best);
-  if (o.sizes.size() > 1 && std::any_of(o.largest().sets.begin(), o.largest().sets.end(), [](const ParameterSet& s) { return s.misfit.valued; })) {
-    std::vector<ParameterSet> top = o.largest().sets;
+  // The best set among a size's scored sets, by their own misfit, and its rows' verdicts.
+  const auto best_of = [](const SizeOutcome& size, std::optional<std::size_t>& best, RowVerdicts& verdicts) {
+    if (std::none_of(size.sets.begin(), size.sets.end(), [](const ParameterSet& s) { return s.misfit.valued; })) return;
+    std::vector<ParameterSet> top = size.sets;
     for (ParameterSet& s : top) s.log_likelihood = s.misfit.valued && !std::isnan(s.misfit.chi2) ? -0.5 * s.misfit.chi2 : -INFINITY;
-    r.best_largest = best_set(top);
-    r.largest_verdicts = tally_rows(o.largest().sets, *r.best_largest);
-  }
+    best = best_set(top);
+    verdicts = tally_rows(size.sets, *best);
+  };
+  if (o.in_parts())
+    for (std::size_t k = 1; k < o.sizes.size(); ++k) {
+      r.parts.push_back({k, std::nullopt, {}});
+      best_of(o.sizes[k], r.parts.back().best, r.parts.back().verdicts);
+    }
+  else if (o.sizes.size() > 1)
+    best_of(o.largest(), r.best_largest, r.largest_verdicts);
   validation::write_stamp_file(dir.string(), stamp_of(o));
   write_file(dir / "posterior.json", posterior_json(r).dump(1) + "\n");
   write_figure_data(r);

@@ -27,7 +27,7 @@ std::string sizes_markdown(const Report& r) {
   std::ostringstream md;
   validation::MarkdownTable sizes({"size (profile)", "spheres", "samples a set", "sets", "runs", "core-min", "engine", "sets from the ledger"});
   for (const SizeOutcome& s : o.sizes)
-    sizes.row({s.profile, s.stamp.spheres > 0 ? std::to_string(s.stamp.spheres) : "not recorded", std::to_string(s.seeds.size()),
+    sizes.row({s.label(), s.stamp.spheres > 0 ? std::to_string(s.stamp.spheres) : "not recorded", std::to_string(s.seeds.size()),
                std::to_string(s.sets.size()), std::to_string(s.runs), validation::significant(s.core_seconds / 60, 3),
                s.stamp.engine_source.empty() ? "not recorded" : s.stamp.engine_source,
                std::to_string(s.ledger_sets) + (s.other_engine_sets > 0 ? " (" + std::to_string(s.other_engine_sets) + " scored by engine " +
@@ -146,6 +146,9 @@ std::string section_markdown(const Report& r) {
   if (ledger_sets > 0)
     md << ledger_sets << " of the sets were scored in earlier calls whose runs' results are not kept here: their scores come "
        << "from the ledgers (`scored_sets*.json`), which record each set's run hashes and misfit.\n\n";
+  for (const SizeOutcome& s : o.sizes)
+    if (s.verified_sets > 0)
+      md << s.verified_sets << " of them" << (o.sizes.size() > 1 ? " (at " + s.profile + ")" : "") << " were " << s.verified_by << ".\n\n";
   const auto short_of = std::count_if(sets.begin(), sets.end(), [](const ParameterSet& s) { return !s.misfit.left_out.empty(); });
   if (short_of > 0)
     md << short_of << " of the sets " << (short_of == 1 ? "was" : "were")
@@ -168,6 +171,12 @@ std::string section_markdown(const Report& r) {
   md << it.text() << "\n";
   md << best_set_markdown(c, sets[r.best], o.sizes.size() > 1 ? " at " + o.first().profile : "");
   if (r.verdicts.rows > 0) md << "\n" << rows_markdown(r.verdicts, sets);
+  for (const Report::Part& part : r.parts) {
+    const SizeOutcome& size = o.sizes[part.size];
+    if (!part.best) continue;
+    md << "\n" << best_set_markdown(c, size.sets[*part.best], " at " + size.label());
+    if (part.verdicts.rows > 0) md << "\n" << rows_markdown(part.verdicts, size.sets);
+  }
   if (r.best_largest) {
     md << "\n" << best_set_markdown(c, o.largest().sets[*r.best_largest], " at " + o.largest().profile);
     if (r.largest_verdicts.rows > 0) md << "\n" << rows_markdown(r.largest_verdicts, o.largest().sets);

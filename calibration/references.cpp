@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "analysis/time_series.hpp"
@@ -353,6 +354,35 @@ SetMisfit score_complete(const References& refs, const std::vector<validation::S
   SetMisfit m = score(refs, complete);
   m.left_out = std::move(left_out);
   return m;
+}
+
+References only_densities(const References& refs, const std::vector<std::string>& densities) {
+  const auto in = [&](const std::string& d) { return std::find(densities.begin(), densities.end(), d) != densities.end(); };
+  References part = refs;
+  part.curves.clear(), part.rows.clear();
+  for (const CurveRow& c : refs.curves)
+    if (in(c.density)) part.curves.push_back(c);
+  for (const validation::Row& r : refs.rows)
+    if (in(r.density)) part.rows.push_back(r);
+  part.correlated = correlated_points(part.curves);
+  return part;
+}
+
+SetMisfit projected(const SetMisfit& m, const References& from, const References& to) {
+  // A misfit's rows: the curves' in order, then the scalar rows' (score).
+  std::map<std::string, std::size_t> at;
+  for (std::size_t c = 0; c < from.curves.size(); ++c) at["curve\n" + from.curves[c].name] = c;
+  for (std::size_t r = 0; r < from.rows.size(); ++r) at["row\n" + from.rows[r].name] = from.curves.size() + r;
+  SetMisfit out;
+  out.left_out = m.left_out, out.chi2 = 0;
+  const auto take = [&](const std::string& key) {
+    const RowMisfit& row = m.rows.at(at.at(key));
+    out.rows.push_back(row), out.chi2 += row.chi2;
+  };
+  for (const CurveRow& c : to.curves) take("curve\n" + c.name);
+  for (const validation::Row& r : to.rows) take("row\n" + r.name);
+  out.valued = std::all_of(out.rows.begin(), out.rows.end(), [](const RowMisfit& r) { return r.valued; });
+  return out;
 }
 
 }  // namespace calibration

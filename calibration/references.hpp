@@ -54,6 +54,8 @@ std::vector<CorrelatedPoints> correlated_points(const std::vector<CurveRow>& cur
 
 // Reads a calibration's reference file (YAML; errors name the file and the key) and its curves.
 References read_references(const std::string& file, const std::string& profile);
+// The curves and rows of `refs` that read these densities' runs (a part of a size: calibration_file.hpp).
+References only_densities(const References& refs, const std::vector<std::string>& densities);
 std::vector<CurvePoint> read_curve_csv(const std::string& file);
 
 // The misfit of one row on a parameter set's samples.
@@ -84,6 +86,10 @@ struct SetMisfit {
 // study's local-damping loose preparation of one sample stopped on the energy guard at its first
 // contacts (docs/open-questions.md). With fewer complete samples, score() on all of them says
 // which row cannot be computed.
+// A misfit scored against `from` restricted to the curves and rows of `to` (by name; `to` holds
+// a subset of `from`'s).
+SetMisfit projected(const SetMisfit& m, const References& from, const References& to);
+
 SetMisfit score_complete(const References& refs, const std::vector<validation::Sample>& samples, std::size_t min_samples = 2);
 
 // The curve's y on one run: on the run's last stage, where x first reaches each point's x (linear

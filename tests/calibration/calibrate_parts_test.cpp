@@ -1,0 +1,111 @@
+// calibrate with the largest size in parts, end to end on 64- and 125-sphere samples of two
+// densities: each part runs its densities' tests only, is scored on their curves only, and has its
+// own ledger and discrepancy from the first size; and a wrong parts key refused, naming it.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/io/io_test_support.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string bin = std::string(DEM_BINARY_DIR) + "/bin/";
+
+// A study of two densities (64 and 125 spheres, one sample each), a typed curve per density, and a
+// calibration of the tests' friction.
+void write_inputs(const fs::path& dir, const std::string& sizes) {
+  const std::string src = DEM_SOURCE_DIR;
+  std::ofstream(dir / "study.yaml") << "name: tiny\noutput: results\npreparation: " << src << "/scenes/prepare_dense.yaml\n"
+                                    << "densities: [{name: dense, friction: 0.0}, {name: loose, friction: 0.5}]\n"
+                                    << "tests: [{name: triaxial, scene: " << src << "/scenes/tests/triaxial_drained.yaml, "
+                                    << "set: {\"stages[1].until.strain\": 0.01}}]\n"
+                                    << "profiles: {small: {lattice: 4, seeds: 1}, large: {lattice: 5, seeds: 1}}\n";
+  std::ofstream(dir / "curve.csv") << "strain_3,q_over_p,sd\n0.002,0.8,0.1\n0.008,0.9,0.1\n";
+  std::ofstream(dir / "refs.yaml") << "source: typed\ncurves: [{name: dense qp, file: curve.csv, x: strain_3, y: q_over_p, "
+                                   << "density: dense, test: triaxial}, {name: loose qp, file: curve.csv, x: strain_3, "
+                                   << "y: q_over_p, density: loose, test: triaxial}]\n";
+  std::ofstream(dir / "cal.yaml") << "name: tiny\nstudy: study.yaml\nreferences: refs.yaml\nreport: report\n"
+                                  << "parameters: [{name: friction, keys: material.friction, applies_to: test, uniform: [0.1, 0.9]}]\n"
+                                  << "batch: 6\nmin_iterations: 2\nmax_iterations: 2\n" << sizes;
+}
+
+}  // namespace
+
+TEST_CASE("calibrate with the largest size in parts: each part runs and is scored on its densities only", "[calibration][cli]") {
+  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "calibrate_parts";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  write_inputs(dir, "sizes: [{profile: small}, {profile: large, densities: [dense], sets: 3, per_iteration: 2},\n"
+                    "        {profile: large, densities: [loose], sets: 3, per_iteration: 2}]\n");
+  const std::string cmd = "cd '" + dir.string() + "' && '" + bin + "calibrate' cal.yaml -j 2 --threads 1";
+  const auto plan = dem::test::run_command(cmd + " --plan 2>&1");
+  INFO(plan.out);
+  REQUIRE(plan.exit_code == 0);
+  // Per set of a part: its density's test; the preparation (the parameter is the test's) shared.
+  CHECK_THAT(plan.out, Catch::Contains("size large (dense) (lattice 5, 1 sample(s) a set): first iteration: 3 runs"));
+  CHECK_THAT(plan.out, Catch::Contains("size large (loose) (lattice 5, 1 sample(s) a set): first iteration: 3 runs"));
+
+  const auto run = dem::test::run_command(cmd + " 2>&1");
+  INFO(run.out);
+  REQUIRE(run.exit_code == 0);
+  const nlohmann::json p = nlohmann::json::parse(dem::test::read_bytes((dir / "report" / "posterior.json").string()));
+  REQUIRE(p["sizes"].size() == 3);
+  for (int k : {1, 2}) {
+    const std::string density = k == 1 ? "dense" : "loose", other = k == 1 ? "loose" : "dense";
+    INFO(density);
+    CHECK(p["sizes"][k]["densities"] == nlohmann::json::array({density}));
+    CHECK(p["sizes"][k]["sets"] == 3);
+    CHECK(p["sizes"][k]["discrepancy"]["pairs"] == 3);
+    // Its discrepancy covers its density's curve only.
+    CHECK(p["sizes"][k]["discrepancy"]["at_posterior_mean"].contains(density + " qp"));
+    CHECK_FALSE(p["sizes"][k]["discrepancy"]["at_posterior_mean"].contains(other + " qp"));
+    // Its runs: its density's only, in its own folder; its own ledger.
+    const fs::path results = dir / "results" / "calibration_tiny" / ("large-" + density) / "seed1";
+    bool own = false, foreign = false;
+    for (const auto& f : fs::directory_iterator(results)) {
+      const std::string name = f.path().filename().string();
+      own |= name.find("_" + density + "_triaxial.h5") != std::string::npos;
+      foreign |= name.find("_" + other + "_") != std::string::npos;
+    }
+    CHECK(own);
+    CHECK_FALSE(foreign);
+    CHECK(fs::exists(dir / "report" / ("scored_sets.large-" + density + ".json")));
+    // Its best set, judged on its own curve.
+    CHECK(p["largest_size_parts"][k - 1]["densities"] == nlohmann::json::array({density}));
+    CHECK(p["largest_size_parts"][k - 1].contains("best_set"));
+  }
+  CHECK_FALSE(p.contains("largest_size"));
+  // With a discrepancy in every part, the posterior is the large size's.
+  CHECK(p["parameters"][0].contains("first_size_only"));
+  const std::string section = dem::test::read_bytes((dir / "report" / "section.md").string());
+  CHECK_THAT(section, Catch::Contains("| large (dense) |") && Catch::Contains("at large (loose)"));
+}
+
+TEST_CASE("calibrate refuses a wrong parts key, naming it", "[calibration][cli]") {
+  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "calibrate_parts_bad";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const auto refusal = [&](const std::string& sizes) {
+    write_inputs(dir, sizes);
+    return dem::test::run_command("cd '" + dir.string() + "' && '" + bin + "calibrate' cal.yaml --plan 2>&1");
+  };
+  const auto first = refusal("sizes: [{profile: small, densities: [dense]}, {profile: large, sets: 3}]\n");
+  CHECK(first.exit_code == 2);
+  CHECK_THAT(first.out, Catch::Contains("sizes[0].densities") && Catch::Contains("the first size"));
+  const auto twice = refusal("sizes: [{profile: small}, {profile: large, densities: [dense], sets: 3}, "
+                             "{profile: large, densities: [dense, loose], sets: 3}]\n");
+  CHECK_THAT(twice.out, Catch::Contains("sizes[2].densities") && Catch::Contains("'dense' is in two parts"));
+  const auto mixed = refusal("sizes: [{profile: small}, {profile: large, densities: [dense], sets: 3}, {profile: large, sets: 3}]\n");
+  CHECK_THAT(mixed.out, Catch::Contains("sizes[2]") && Catch::Contains("all parts of one size"));
+  const auto profiles = refusal("sizes: [{profile: small}, {profile: large, densities: [dense], sets: 3}, "
+                                "{profile: small, densities: [loose], sets: 3}]\n");
+  CHECK_THAT(profiles.out, Catch::Contains("sizes[2].profile") && Catch::Contains("share its profile"));
+  const auto unknown = refusal("sizes: [{profile: small}, {profile: large, densities: [medium], sets: 3}]\n");
+  CHECK(unknown.exit_code == 2);
+  CHECK_THAT(unknown.out, Catch::Contains("densities: 'medium' is not a density of the study"));
+}

@@ -1,0 +1,75 @@
+// The paper study's misses answered by a set run at the paper's size: every verdict judged again
+// from the recorded per-sample values, the rows consistent now counted in the set, and each miss's
+// answer worded from them ("together" only when no row consistent now is lost). Fixtures: the
+// committed paper study's validation.json, and a set made from it with some samples' values moved.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/io/io_test_support.hpp"
+#include "judge/rows.hpp"
+#include "report/open_choices_paper_size.hpp"
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+const std::string source = DEM_SOURCE_DIR;
+
+json committed_paper_record() { return json::parse(dem::test::read_bytes(source + "/reports/validation.json")); }
+
+// The record with every sample of row `name` given `value`.
+void set_values(json& record, const std::string& name, double value) {
+  for (auto& r : record["rows"])
+    if (r["name"] == name)
+      for (auto& s : r["per_sample"]) s["value"] = value + 0.01 * value * static_cast<double>(&s - &r["per_sample"][0]);
+}
+
+void write_json(const fs::path& file, const json& j) {
+  fs::create_directories(file.parent_path());
+  std::ofstream(file) << j.dump(1) << "\n";
+}
+
+const std::string dense_slope = "slope of q/p against F^s_d/F^s_m, dense";
+
+}  // namespace
+
+TEST_CASE("the misses at the paper's size: verdicts judged again, rows consistent now counted, answers worded from them",
+          "[report][open_choices]") {
+  const std::vector<validation::Row> rows = validation::load_references(source + "/reference_data/paper.yaml", "paper");
+  const fs::path report = dem::test::scratch_dir("open_choices_paper_size");
+  write_json(report / "validation.json", committed_paper_record());
+  REQUIRE(validation::open_choices_paper_size_text(report, rows).empty());  // the set not run: nothing
+
+  json set = committed_paper_record();
+  set["judged_from"]["variants"] = {"readings_together"};
+  set_values(set, dense_slope, 0.9);  // into the paper's 1 ± 0.25
+  SECTION("a miss made consistent, nothing lost: together") {
+    write_json(report / "calibration/paper_open_choices/paper_size/validation.json", set);
+    const std::string text = validation::open_choices_paper_size_text(report, rows);
+    INFO(text);
+    CHECK_THAT(text, Catch::StartsWith("The set `readings_together` of `pipeline/studies/open_choices_paper_size.yaml`"));
+    CHECK_THAT(text, Catch::Contains("**23 of 26** rows are consistent; in the paper study (8,000 spheres, 5 samples), 22. Of the 22 "
+                                     "rows consistent there, 22 are consistent in the set."));
+    CHECK_THAT(text, Catch::Contains("| " + dense_slope + " | 1.421 ± 0.040, holds in 0 of 5 ❌ | ") &&
+                         Catch::Contains("holds in 5 of 5 ✅ | consistent together with every row consistent now |"));
+    // A miss the set leaves: its answer says how many of the set's samples hold it.
+    CHECK_THAT(text, Catch::Contains("| medium: εv grows with cycles (cycles 1..5, %) |") &&
+                         Catch::Contains("| not answered by the set: it holds in 0 of 5 |"));
+    CHECK(text.find("turned inconsistent") == std::string::npos);
+  }
+  SECTION("a miss made consistent while a row consistent now is lost: not together, and the loss named") {
+    set_values(set, "e0, dense", 0.9);
+    write_json(report / "calibration/paper_open_choices/paper_size/validation.json", set);
+    const std::string text = validation::open_choices_paper_size_text(report, rows);
+    INFO(text);
+    CHECK_THAT(text, Catch::Contains("Of the 22 rows consistent there, 21 are consistent in the set; not: e0, dense."));
+    CHECK_THAT(text, Catch::Contains("| consistent, but not together with 1 row consistent now |"));
+    CHECK_THAT(text, Catch::Contains("| e0, dense | ") && Catch::Contains("| turned inconsistent by the set |"));
+  }
+}
