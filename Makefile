@@ -209,7 +209,7 @@ convergence-report: tools
 	$(SECTION) convergence $(CONVERGENCE) reports/convergence --threads 1 $(DRAW) --without-results redraw \
 	  $$([ ! -f reports/validation.json ] || echo --validation reports/validation.json)
 stability-report: tools
-	$(SECTION) stability $(STABILITY) reports/stability --report-only --without-results keep
+	$(SECTION) stability $(STABILITY) reports/stability --report-only --without-results redraw
 critical-state-report: tools
 	$(SECTION) critical-state $(CRITICAL_STATE) reports/critical_state $(DRAW) --ensemble $(CRITICAL_STATE_ENSEMBLE) \
 	  --rates $(CRITICAL_STATE_RATES) --references reference_data/literature.yaml --without-results keep

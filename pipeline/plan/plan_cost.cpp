@@ -10,6 +10,7 @@
 
 #include "io/hdf5.hpp"
 #include "plan/reuse.hpp"
+#include "plan/runs_manifest.hpp"
 
 namespace pipeline {
 
@@ -72,16 +73,16 @@ std::optional<MachineThroughput> recorded_throughput_under(const std::string& ro
        !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
     if (it.depth() >= 3) it.disable_recursion_pending();
     if (it->path().filename() != "runs.tsv" || !it->is_regular_file(ec)) continue;
-    std::ifstream manifest(it->path());
-    std::string line;
-    if (!std::getline(manifest, line) || line != "# engine source " + engine_version) continue;
+    RunsManifest manifest;
+    try {
+      manifest = read_runs_manifest(it->path());
+    } catch (const std::exception&) {
+      continue;  // not a manifest the pipeline wrote: nothing recorded there
+    }
+    if (manifest.engine_source != engine_version) continue;
     int counted = 0;
-    while (std::getline(manifest, line)) {
-      if (line.empty() || line[0] == '#') continue;
-      std::istringstream fields(line);
-      std::vector<std::string> columns;  // variant, density, test, run, result, ... (write_manifest)
-      for (std::string column; std::getline(fields, column, '\t');) columns.push_back(column);
-      const std::optional<ResultCost> cost = columns.size() < 5 ? std::nullopt : result_cost(columns[4]);
+    for (const ManifestEntry& e : manifest.entries) {
+      const std::optional<ResultCost> cost = result_cost(e.result);
       if (!cost || !cost->wall_s || *cost->wall_s <= 0) continue;
       particle_steps += cost->particle_steps, wall_s += *cost->wall_s, ++counted;
     }

@@ -24,6 +24,7 @@
 #include "io/atomic_file.hpp"
 #include "io/particle_csv.hpp"
 #include "io/state_io.hpp"
+#include "plan/runs_manifest.hpp"
 
 namespace pipeline {
 
@@ -465,9 +466,8 @@ void write_manifest(const std::vector<PlannedRun>& runs, const Study& study, con
   fs::create_directories(out_dir);
   std::map<std::string, std::string> settings;
   for (const Variant& v : study.variants) settings[v.name] = describe(v);
-  std::ostringstream text;
-  text << "# engine source " << engine_version << "\n";
-  text << "# variant\tdensity\ttest\trun\tresult\tstarts_from\tmay_fail\tsettings\tseed\tinput_hash\n";
+  RunsManifest manifest;
+  manifest.engine_source = engine_version;
   // Grouped by variant in the study's order (the order of the report's tables).
   std::vector<std::string> order;
   for (const Variant& v : study.variants) order.push_back(v.name);
@@ -475,12 +475,11 @@ void write_manifest(const std::vector<PlannedRun>& runs, const Study& study, con
   for (const std::string& v : order)
     for (const PlannedRun& r : runs)
       if (std::find(r.variants.begin(), r.variants.end(), v) != r.variants.end())
-        text << (v.empty() ? "-" : v) << '\t' << r.density << '\t' << (r.test.empty() ? "-" : r.test) << '\t' << r.name
-           << '\t' << r.result << '\t'
-           << (r.depends_on >= 0 ? runs[static_cast<std::size_t>(r.depends_on)].name : std::string("-")) << '\t'
-           << (r.may_fail ? 1 : 0) << '\t' << (settings.count(v) ? settings[v] : "as written") << '\t'
-             << (r.seed ? std::to_string(*r.seed) : std::string("-")) << '\t' << r.hash << '\n';
-  dem::write_file_atomically((fs::path(out_dir) / "runs.tsv").string(), text.str());  // a reader never sees half a manifest
+        manifest.entries.push_back({v.empty() ? "-" : v, r.density, r.test.empty() ? "-" : r.test, r.name, r.result,
+                                    r.depends_on >= 0 ? runs[static_cast<std::size_t>(r.depends_on)].name : std::string("-"), r.may_fail,
+                                    settings.count(v) ? settings[v] : "as written", r.seed ? std::to_string(*r.seed) : std::string("-"), r.hash});
+  // A reader never sees half a manifest.
+  dem::write_file_atomically((fs::path(out_dir) / "runs.tsv").string(), manifest_text(manifest));
 }
 
 }  // namespace pipeline

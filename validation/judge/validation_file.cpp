@@ -39,6 +39,7 @@ RecordedValidation read_validation_file(const std::string& file) {
     if (!j.is_object()) throw std::runtime_error("is " + std::string(j.type_name()) + ", expected an object (validate's validation.json)");
     RecordedValidation r;
     r.profile = member(j, "profile", t::string, "", "the profile's name").get<std::string>();
+    if (j.contains("references")) r.references = member(j, "references", t::string, "", "the reference file's path").get<std::string>();
     r.samples = strings(j, "samples", "an array of the samples' names");
     r.missing_samples = strings(j, "missing_samples", "an array of names");
     r.missing_results = strings(j, "missing_results", "an array of files");

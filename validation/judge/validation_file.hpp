@@ -2,6 +2,7 @@
 // A validation.json read back (what validate wrote: validation/README.md), for `validate
 // --from-json`: every row's per-sample values, judged again by the rows of a reference file
 // (judge_values, rows.hpp) without the study's results.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,7 @@ namespace validation {
 
 struct RecordedValidation {
   std::string profile;                      // the profile it was judged at
+  std::optional<std::string> references;    // the reference file it judged (none: not recorded)
   std::vector<std::string> samples;         // the ensemble's samples (seed<N>), in order
   std::vector<std::string> missing_samples; // samples runs.tsv listed without a folder
   std::vector<std::string> missing_results; // result files missing or not complete

@@ -20,6 +20,7 @@
 #include "report/open_choices_check.hpp"
 #include "report/open_choices_paper_size.hpp"
 #include "report/other_sections.hpp"
+#include "report/study_values.hpp"
 #include "sections/variants.hpp"
 #include "source_hash.hpp"
 #include "study/format.hpp"
@@ -27,6 +28,7 @@
 #include "study/manifest.hpp"
 #include "study/markdown_table.hpp"
 #include "study/paths.hpp"
+#include "study/section_doc.hpp"
 #include "study/settings.hpp"
 #include "version.hpp"
 #include "study/columns.hpp"
@@ -43,21 +45,40 @@ void put_scaled(Values& v, const std::string& key, const std::optional<double>& 
   if (value) v[key] = number(*value / factor);
 }
 
-// A section's table.md with its figures' paths made relative to the report; a figure that was not
-// drawn is said so.
-std::string section_table(const fs::path& report, const std::string& dir) {
-  std::istringstream in(read_text(report / dir / "table.md"));
-  static const std::regex image(R"(^!\[(.*)\]\(([^/\)]+\.png)\)$)");
-  std::string out;
-  for (std::string line; std::getline(in, line);) {
-    std::smatch m;
-    if (std::regex_match(line, m, image))
-      out += fs::exists(report / dir / m[2].str()) ? "![" + m[1].str() + "](" + dir + "/" + m[2].str() + ")\n"
-                                                   : "*Figure `" + dir + "/" + m[2].str() + "` not drawn.*\n";
-    else
-      out += line + "\n";
+// The section another study made in REPORT/DIR (compare-runs wrote its parts as data:
+// study/section_doc.hpp), none when the folder has none. A folder with only a table.md (written
+// before the parts were kept) or an unreadable section.json is said on stderr and left out: its
+// figures and headings cannot be placed without reading its Markdown back.
+std::optional<SectionDoc> section_doc_in(const fs::path& report, const std::string& dir) {
+  std::error_code ec;
+  try {
+    if (std::optional<SectionDoc> doc = read_section_doc(report / dir)) return doc;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "report: %s; the section is left out\n", e.what());
+    return std::nullopt;
   }
-  return out;
+  if (fs::exists(report / dir / "table.md", ec))
+    std::fprintf(stderr, "report: %s has a table.md but no %s (written before sections were kept as data): left out; write it again with "
+                 "build/bin/compare-runs\n", (report / dir).c_str(), section_doc_file);
+  return std::nullopt;
+}
+
+// That section placed under a heading of `level` in REPORT/index.md: its headings below it, its
+// figures' paths from the report's folder, a figure not drawn said so; "" when there is none.
+std::string section_text(const fs::path& report, const std::string& dir, int level) {
+  const std::optional<SectionDoc> doc = section_doc_in(report, dir);
+  return doc ? render(*doc, {level, dir, report / dir}) : "";
+}
+
+// "Readings of the medium and dense samples" for a study of some of the paper's densities (as its
+// section records them); else "Readings: " and the folder's name, '_' shown as a space.
+std::string readings_title(std::string name, const std::vector<std::string>& densities) {
+  const std::vector<std::string>& paper = paper_densities();
+  const bool some = !densities.empty() && densities.size() < paper.size() &&
+                    std::all_of(densities.begin(), densities.end(), [&](const std::string& d) { return std::find(paper.begin(), paper.end(), d) != paper.end(); });
+  if (some) return "Readings of the " + joined(densities, " and ") + " sample" + (densities.size() > 1 ? "s" : "");
+  std::replace(name.begin(), name.end(), '_', ' ');
+  return "Readings: " + name;
 }
 
 // The number of samples (seeds) a study's runs.tsv lists for one variant (0 without a manifest).
@@ -94,49 +115,32 @@ std::string readings_text(const fs::path& report, const std::vector<Row>& paper,
   std::error_code ec;
   std::vector<std::string> names;
   for (const auto& e : fs::directory_iterator(report / "readings", ec))
-    if (fs::exists(e.path() / "table.md", ec)) names.push_back(e.path().filename().string());
+    if (fs::exists(e.path() / section_doc_file, ec) || fs::exists(e.path() / "table.md", ec)) names.push_back(e.path().filename().string());
   std::sort(names.begin(), names.end());
   std::string readings;
   std::vector<DecisionsFile> records;
   const Stamp paper_stamp = read_paper_stamp(report);
   for (const std::string& name : names) {
+    const std::optional<SectionDoc> doc = section_doc_in(report, "readings/" + name);
+    if (!doc) continue;
     const std::optional<DecisionsFile> record = decisions_record(report / "readings" / name / "decisions.json", paper);
     const std::string size = record && record->particles ? size_label(*record) : "";
     if (record) records.push_back(*record);
-    // A study named by its densities (readings_medium_dense) is "of the medium and dense
-    // samples", another by its name.
-    const bool by_density = std::regex_match(name, std::regex("(loose|medium|dense)(_(loose|medium|dense))*"));
-    const std::string title = by_density ? "Readings of the " + std::regex_replace(name, std::regex("_"), " and ") + " sample" +
-                                               (name.find('_') != std::string::npos ? "s" : "")
-                                         : "Readings: " + std::regex_replace(name, std::regex("_"), " ");
-    const std::string table = section_table(report, "readings/" + name);
     // Its stamp, as a section's (other_sections.hpp); one from another baseline than the paper
     // study's is marked, since the readings are measured against the paper study's samples.
     const Stamp stamp = read_section_stamp(report, {"", "", "readings/" + name + "/decisions.json", "stamp", ""});
     const std::string differs = stamp_difference(stamp, paper_stamp);
     std::string line = stamp_sentence(stamp);
     if (!differs.empty()) line = "⚠ " + line + "; another " + differs + " than the paper study's (" + stamp_text(paper_stamp) + ")";
-    readings += "### " + title + " (" + (size.empty() ? "size not recorded" : size) + ")\n\n*" + line + ".*\n\n" +
-                std::regex_replace(table, std::regex("(^|\n)### "), "$1#### ") + "\n";
+    // Its own headings one level below its title's.
+    readings += "### " + readings_title(name, doc->densities) + " (" + (size.empty() ? "size not recorded" : size) + ")\n\n*" + line + ".*\n\n" +
+                render(*doc, {3, "readings/" + name, report / "readings" / name}) + "\n";
   }
   // Their checks against the paper study's ensemble in one table (each row once).
   std::vector<const DecisionsFile*> files;
   for (const DecisionsFile& f : records) files.push_back(&f);
   const std::string check = baseline_check_section(files, ensemble);
   return check.empty() ? readings : readings + check + "\n";
-}
-
-// key = value lines of a gnuplot values.gp (figure-data's record of the study's settings); a key
-// given twice: its last value, as gnuplot reads it; quotes taken off.
-std::map<std::string, std::string> gnuplot_values(const fs::path& file) {
-  std::map<std::string, std::string> out;
-  std::istringstream in(read_text(file));
-  static const std::regex line_re(R"re(^([A-Za-z_][A-Za-z0-9_]*) = "?([^"]*)"?$)re");
-  for (std::string line; std::getline(in, line);) {
-    std::smatch m;
-    if (std::regex_match(line, m, line_re)) out[m[1].str()] = m[2].str();
-  }
-  return out;
 }
 
 }  // namespace
@@ -212,12 +216,9 @@ void add_settings(Values& v, const std::string& results, bool have_results) {
   put_scaled(v, "setting.time_step_prepare_us", settings.time_step_prepare_s, 1e-6);
   put_scaled(v, "setting.time_step_test_us", settings.time_step_test_s, 1e-6);
   if (settings.particles) v["setting.particles_text"] = thousands(*settings.particles);
-  if (settings.tests.count(3)) {
-    // The first legs of Test 3's path (where the paper leaves their order open).
-    static const std::regex visits(R"((TC1, A, [A-Z0-9]+, A, [A-Z0-9]+))");
-    std::smatch m;
-    if (std::regex_search(settings.tests.at(3).path, m, visits)) v["setting.test3_visits"] = m[1].str();
-  }
+  // The states the first legs of Test 3's path go to (where the paper leaves their order open).
+  if (const auto t3 = settings.tests.find(3); t3 != settings.tests.end() && t3->second.visits.size() >= 5)
+    v["setting.test3_visits"] = joined(std::vector<std::string>(t3->second.visits.begin(), t3->second.visits.begin() + 5), ", ");
   put_scaled(v, "max_energy_error_percent", settings.max_energy_error, 0.01);
 }
 
@@ -229,23 +230,21 @@ void add_tables(Values& v, const fs::path& report, const std::vector<Row>& paper
   include("file.validation", "validation.md");
   include("file.samples", "samples.md");
   include("file.bench", "bench.md");
-  v["file.decisions"] = fs::exists(report / "decisions" / "table.md")
-                            ? std::regex_replace(read_text(report / "decisions" / "table.md"), std::regex(R"(\]\((tornado[^)]*)\))"), "](decisions/$1)")
-                            : "";
+  v["file.decisions"] = section_text(report, "decisions", 2);
   include("file.convergence", fs::path("convergence") / "table.md");
   include("file.stability", fs::path("stability") / "table.md");
   include("file.literature", fs::path("literature") / "validation.md");
   include("file.literature_verdicts", fs::path("literature") / "verdicts.md");
   include("file.literature_fcc", fs::path("literature") / "fcc" / "validation.md");
   include("file.literature_fcc_verdicts", fs::path("literature") / "fcc" / "verdicts.md");
-  v["file.critical_state"] = fs::exists(report / "critical_state" / "table.md") ? section_table(report, "critical_state") : "";
+  v["file.critical_state"] = section_text(report, "critical_state", 2);
   include("file.calibration", fs::path("calibration") / "synthetic_triaxial" / "section.md");
   v["calibration_plot"] = fs::exists(report / "calibration" / "synthetic_triaxial" / "posterior.png") ? "1" : "";
   include("file.calibration_open_choices", fs::path("calibration") / "paper_open_choices" / "section.md");
   v["calibration_open_choices_plot"] = fs::exists(report / "calibration" / "paper_open_choices" / "posterior.png") ? "1" : "";
   v["calibration_open_choices_check"] = open_choices_check_text(report);
   v["calibration_open_choices_paper_size"] = open_choices_paper_size_text(report, paper);
-  v["file.liquefaction"] = fs::exists(report / "liquefaction" / "table.md") ? section_table(report, "liquefaction") : "";
+  v["file.liquefaction"] = section_text(report, "liquefaction", 2);
   v["convergence_plot"] = fs::exists(report / "convergence" / "error_vs_time.png") ? "yes" : "";
   // The size the decisions table was measured at: its decisions.json's own record, else (the
   // decisions study) what its results say; never assumed.
@@ -285,55 +284,44 @@ void add_note_verdicts(Values& v, const PaperEnsemble& judged) {
 }
 
 void add_setup(Values& v, const fs::path& report, const std::string& settings_from) {
-  const bool have_results = !settings_from.empty();
-  // The study's settings: from its results' resolved scenes (add_settings), else from what
-  // figure-data recorded of them in reports/figures/values.gp; a setting neither gives is left out.
-  const std::map<std::string, std::string> gp = gnuplot_values(report / "figures" / "values.gp");
-  const auto setting = [&](const std::string& key, const std::string& gp_key) -> std::string {
-    if (have_results) {
-      const auto it = v.find("setting." + key);
-      return it == v.end() ? "" : it->second;
-    }
-    const auto it = gp.find(gp_key);
-    return it == gp.end() ? "" : it->second;
+  // The study's settings as add_settings put them (from its results' resolved scenes, or as
+  // REPORT/study_values.json kept them); a setting not there is left out.
+  const auto setting = [&](const std::string& key) -> std::string {
+    const auto it = v.find("setting." + key);
+    return it == v.end() ? "" : it->second;
   };
-  nlohmann::json record;
+  std::optional<RecordedValidation> record;
   try {
-    if (fs::exists(report / "validation.json")) record = read_json_file((report / "validation.json").string());
+    if (fs::exists(report / "validation.json")) record = read_validation_file((report / "validation.json").string());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "report: %s\n", e.what());
   }
   MarkdownTable md({"", "the study"});
-  if (record.is_object() && record.contains("samples") && record.contains("rows")) {
+  if (record) {
     std::vector<std::string> densities;
-    for (const auto& r : record.at("rows")) {
-      const std::string d = r.value("density", "");
-      if (!d.empty() && std::find(densities.begin(), densities.end(), d) == densities.end()) densities.push_back(d);
-    }
-    const auto& samples = record.at("samples");
-    std::string names = samples.empty() ? "" : samples.front().get<std::string>();
-    if (samples.size() > 1) names += "–" + samples.back().get<std::string>();
+    for (const auto& r : record->rows)
+      if (!r.density.empty() && std::find(densities.begin(), densities.end(), r.density) == densities.end()) densities.push_back(r.density);
+    const std::vector<std::string>& samples = record->samples;
+    std::string names = samples.empty() ? "" : samples.front();
+    if (samples.size() > 1) names += "–" + samples.back();
     md.row({"samples", std::to_string(samples.size()) + " per density (" + joined(densities, ", ") + ")" + (names.empty() ? "" : ", " + names)});
   }
-  const std::string particles = setting("particles", "particles");
+  const std::string particles = setting("particles");
   if (!particles.empty() && particles != "0") md.row({"spheres per sample", thousands(particles)});
-  std::string frictions = setting("friction_prepare", "");
-  if (frictions.empty() && gp.count("friction_prepare_loose") && gp.count("friction_prepare_medium") && gp.count("friction_prepare_dense"))
-    frictions = gp.at("friction_prepare_loose") + " / " + gp.at("friction_prepare_medium") + " / " + gp.at("friction_prepare_dense");
-  const std::string pressure = setting("target_pressure_kPa", "target_pressure_kPa"), grading = setting("grading_basis", "grading_basis");
+  const std::string frictions = setting("friction_prepare"), pressure = setting("target_pressure_kPa"), grading = setting("grading_basis");
   if (!pressure.empty() && !frictions.empty())
     md.row({"preparation", "isotropic compression to " + pressure + " kPa, friction " + frictions + " (loose / medium / dense)" +
                                (grading.empty() ? "" : ", grading read by " + grading)});
-  const std::string p = setting("mean_stress_kPa", "mean_stress_kPa"), ratio = setting("stress_ratio", "stress_ratio"),
-                    shear = setting("friction_shear", "friction_shear");
+  const std::string p = setting("mean_stress_kPa"), ratio = setting("stress_ratio"), shear = setting("friction_shear");
   if (!p.empty() && !ratio.empty())
     md.row({"tests", "the five cyclic true-triaxial paths at p = " + p + " kPa, R = " + ratio + (shear.empty() ? "" : ", shearing friction " + shear)});
-  if (record.is_object() && record.contains("total"))
-    md.row({"judged", std::to_string(record.value("total", 0)) + " rows of `" + record.value("references", std::string("the reference file")) + "` (profile " +
-                          record.value("profile", std::string("not recorded")) + "), each on every sample"});
+  if (record)
+    md.row({"judged", std::to_string(record->rows.size()) + " rows of `" + record->references.value_or("the reference file") + "` (profile " +
+                          (record->profile.empty() ? std::string("not recorded") : record->profile) + "), each on every sample"});
   v["setup.table"] = md.rows() ? md.text() : "";
-  v["setup.from"] = have_results ? settings_from + " and `reports/validation.json`"
-                                 : "`reports/validation.json` and `reports/figures/values.gp`, which `validate` and `figure-data` wrote from the results";
+  v["setup.from"] = !settings_from.empty() ? settings_from + " and `reports/validation.json`"
+                                           : "`reports/validation.json` alone (the settings are not here: neither the results nor `reports/" +
+                                                 std::string(study_values_file) + "`)";
 }
 
 void add_study_settings(Values& v, const std::string& stability_results) {

@@ -104,10 +104,10 @@ validation::Table ensemble_data(const std::vector<EnsembleGroup>& groups) {
   return t;
 }
 
-std::string ensemble_section(const std::vector<EnsembleGroup>& groups, const std::vector<ShearRun>& main_runs, const std::string& folder,
-                             std::size_t samples, double cs_from, double cs_to) {
+validation::SectionDoc ensemble_section(const std::vector<EnsembleGroup>& groups, const std::vector<ShearRun>& main_runs, const std::string& folder,
+                                        std::size_t samples, double cs_from, double cs_to) {
   std::ostringstream md;
-  md << "\n### The critical state on " << samples << " samples\n\n";
+  md << "\n";
   std::size_t finished = 0, runs = 0, used = 0;
   for (const EnsembleGroup& g : groups) {
     runs += g.runs.size(), used += g.used.size();
@@ -136,7 +136,8 @@ std::string ensemble_section(const std::vector<EnsembleGroup>& groups, const std
   }
   md << t.text();
   md << samples_suffice(groups);
-  return md.str();
+  validation::SectionDoc doc;
+  return doc.text("\n").heading(1, "The critical state on " + std::to_string(samples) + " samples").text(md.str());
 }
 
 }  // namespace sections

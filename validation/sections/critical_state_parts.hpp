@@ -13,6 +13,7 @@
 #include "sections/study_folder.hpp"
 #include "study/ensemble.hpp"
 #include "study/line_fit.hpp"
+#include "study/section_doc.hpp"
 #include "study/series.hpp"
 
 namespace sections {
@@ -67,8 +68,9 @@ std::vector<EnsembleGroup> ensemble_groups(const std::vector<ShearRun>& runs);
 
 validation::Table ensemble_data(const std::vector<EnsembleGroup>& groups);
 
-std::string ensemble_section(const std::vector<EnsembleGroup>& groups, const std::vector<ShearRun>& main_runs, const std::string& folder,
-                             std::size_t samples, double cs_from, double cs_to);
+// The ensemble's part of the section (its heading one level below the section's).
+validation::SectionDoc ensemble_section(const std::vector<EnsembleGroup>& groups, const std::vector<ShearRun>& main_runs, const std::string& folder,
+                                        std::size_t samples, double cs_from, double cs_to);
 
 // Every μ of the rates study's compression runs, with the main study's compression run at that μ.
 std::vector<RateSeries> rate_series(const std::vector<ShearRun>& rates, const std::vector<ShearRun>& main_runs, const std::string& rates_name,
@@ -78,6 +80,7 @@ validation::Table rates_data(const std::vector<RateSeries>& series);
 
 validation::Table rates_quasi_static_data(const std::vector<RateSeries>& series);
 
-std::string rates_section(const std::vector<RateSeries>& series, const std::string& folder, const std::vector<validation::Row>& rows);
+// The rates study's part of the section (its heading one level below the section's), with its figure.
+validation::SectionDoc rates_section(const std::vector<RateSeries>& series, const std::string& folder, const std::vector<validation::Row>& rows);
 
 }  // namespace sections

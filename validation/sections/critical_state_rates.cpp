@@ -182,9 +182,9 @@ validation::Table rates_quasi_static_data(const std::vector<RateSeries>& series)
   return t;
 }
 
-std::string rates_section(const std::vector<RateSeries>& series, const std::string& folder, const std::vector<validation::Row>& rows) {
+validation::SectionDoc rates_section(const std::vector<RateSeries>& series, const std::string& folder, const std::vector<validation::Row>& rows) {
   std::ostringstream md;
-  md << "\n### Rate convergence: the critical state at I → 0\n\n";
+  md << "\n";
   md << "The rates study (`" << folder << "`, `pipeline/studies/critical_state_rates.yaml`) shears the same sample in compression at "
         "slower axial strain rates; with the run of the table above at its own rate, each μ has a series. I = rate · d · √(ρ/p): "
         "the resolved scene's axial strain rate and particle density, d the mean diameter of the run's spheres, p its mean stress at "
@@ -242,8 +242,9 @@ std::string rates_section(const std::vector<RateSeries>& series, const std::stri
     md << against_reference(s, rows);
     md << "\n\n";
   }
-  md << "![critical q/p against the square root of the inertial number, with the fits](rates.png)\n";
-  return md.str();
+  validation::SectionDoc doc;
+  return doc.text("\n").heading(1, "Rate convergence: the critical state at I → 0").text(md.str())
+      .figure("rates.png", "critical q/p against the square root of the inertial number, with the fits");
 }
 
 }  // namespace sections

@@ -125,8 +125,8 @@ std::string signed_fixed(double x) {
   return buf;
 }
 
-std::string critical_state_table(const std::vector<ShearRun>& runs, const ShearRun* through, const std::string& settings,
-                                 const std::string& ensemble_and_rates) {
+validation::SectionDoc critical_state_table(const std::vector<ShearRun>& runs, const ShearRun* through, const std::string& settings,
+                                            const validation::SectionDoc& ensemble_and_rates) {
   validation::MarkdownTable runs_table({"run", "μ", "loading", "peak φ (°)", "at axial strain", "p at peak (kPa)", "b at peak", "critical φ (°)",
                                         "e_cs", "CN_cs (2Nc/Np)", "CN_cs mechanical", "q/p at cs", "p at cs (kPa)", "b at cs", "note"});
   for (const ShearRun& r : runs) {
@@ -161,13 +161,12 @@ std::string critical_state_table(const std::vector<ShearRun>& runs, const ShearR
         "at the critical state more than 5 % from the constraint's, or b at the critical state more than 0.05 from the target: the "
         "run is not the test its name says (p at the critical state is at most " << bound_text(100 * worst_p, Bound::at_most, 1, Digits::decimals)
      << " % from the constraint's in this study); its values are shown, but they are not that test's.\n";
-  md << ensemble_and_rates;
-  md << "\n![peak and critical-state friction angle against μ](phi_mu.png)\n\n![critical-state void ratio and coordination number against μ](e_cn_mu.png)\n";
-  md << "\n### The peaks in the π-plane\n\n";
-  if (!through) {
-    md << "No compression peak at the b series' μ yet (its b = 0 run is not finished): no surfaces drawn.\n";
-    return md.str();
-  }
+  validation::SectionDoc doc;
+  doc.text(md.str()).append(ensemble_and_rates).text("\n").figure("phi_mu.png", "peak and critical-state friction angle against μ");
+  doc.text("\n").figure("e_cn_mu.png", "critical-state void ratio and coordination number against μ");
+  doc.text("\n").heading(1, "The peaks in the π-plane").text("\n");
+  md.str("");
+  if (!through) return doc.text("No compression peak at the b series' μ yet (its b = 0 run is not finished): no surfaces drawn.\n");
   validation::MarkdownTable peaks({"run", "b at peak", "Lode angle (°)", "ρ/p", "measured peak φ (°)", "Mohr–Coulomb φ (Δ)", "Lade–Duncan φ (Δ)",
                                    "Matsuoka–Nakai φ (Δ)", "note"});
   for (const ShearRun* r : pi_plane_runs(runs, through)) {
@@ -190,9 +189,8 @@ std::string critical_state_table(const std::vector<ShearRun>& runs, const ShearR
   md << "The b series and the extension run at μ = " << number(through->mu) << "; the three criteria go through the compression peak ("
      << cell(through->run) << ", φ = " << fixed(through->summary->peak_phi_deg, 2) << "°). Each criterion's φ at the b measured at a "
      << "peak (at the same p), and Δ = measured − predicted:\n\n"
-     << peaks.text();
-  md << "\n![the peaks in the π-plane beside the failure criteria](pi_plane.png)\n";
-  return md.str();
+     << peaks.text() << "\n";
+  return doc.text(md.str()).figure("pi_plane.png", "the peaks in the π-plane beside the failure criteria");
 }
 
 }  // namespace
@@ -222,12 +220,12 @@ int critical_state(const Manifest& manifest, const std::string& results, const s
   std::vector<ShearRun> ensemble_runs, rate_runs;
   std::vector<EnsembleGroup> groups;
   std::vector<RateSeries> series;
-  std::string extra;
+  validation::SectionDoc extra;
   if (!ensemble.empty()) {
     const Manifest m = read_manifest(ensemble);
     ensemble_runs = shear_runs(m, ensemble, cs_to);
     groups = ensemble_groups(ensemble_runs);
-    extra += ensemble_section(groups, runs, relative_paths(ensemble, ensemble), validation::samples_of(m.lines).size(), cs_from, cs_to);
+    extra.append(ensemble_section(groups, runs, relative_paths(ensemble, ensemble), validation::samples_of(m.lines).size(), cs_from, cs_to));
   }
   if (!rates.empty()) {
     rate_runs = shear_runs(read_manifest(rates), rates, cs_to);
@@ -239,7 +237,7 @@ int critical_state(const Manifest& manifest, const std::string& results, const s
         std::fprintf(stderr, "error: %s\n", e.what());
         return 2;
       }
-    extra += rates_section(series, relative_paths(rates, rates), rows);
+    extra.append(rates_section(series, relative_paths(rates, rates), rows));
   }
   validation::GnuplotValues values;
   values.number("has_compression_peak", through ? 1 : 0);
@@ -264,7 +262,7 @@ int critical_state(const Manifest& manifest, const std::string& results, const s
   }
   try {
     fs::create_directories(out);
-    dem::write_file_atomically((fs::path(out) / "table.md").string(), critical_state_table(runs, through, settings, extra));
+    validation::write_section(out, critical_state_table(runs, through, settings, extra));
     dem::write_file_atomically((fs::path(out) / "critical_state.dat").string(), critical_state_data(runs).text());
     dem::write_file_atomically((fs::path(out) / "pi_plane.dat").string(), pi.text());
     dem::write_file_atomically((fs::path(out) / "ensemble.dat").string(), ensemble_data(groups).text());

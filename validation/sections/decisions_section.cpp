@@ -28,6 +28,7 @@
 #include "study/format.hpp"
 #include "io/atomic_file.hpp"
 #include "study/markdown_table.hpp"
+#include "study/section_doc.hpp"
 #include "study/results.hpp"
 #include "study/settings.hpp"
 #include "study/stamp.hpp"
@@ -97,8 +98,8 @@ const char* lacks_runs = "runs missing";
 
 // One group's section of table.md (its tornado chart and table), and its tornado_<group>.dat and
 // the values tornado.gp needs of it.
-std::string group_section(const std::string& g, const std::vector<RowDecision>& decided, const std::vector<std::string>& others,
-                          const std::string& out, validation::GnuplotValues& gp_values) {
+validation::SectionDoc group_section(const std::string& g, const std::vector<RowDecision>& decided, const std::vector<std::string>& others,
+                                    const std::string& out, validation::GnuplotValues& gp_values) {
   const std::string key = "tornado_" + validation::file_safe(g);
   // Tornado data: rows of the group, largest shift first.
   std::vector<const RowDecision*> of_group;
@@ -151,7 +152,8 @@ std::string group_section(const std::string& g, const std::vector<RowDecision>& 
     cells.push_back(d.explanation);
     table.row(cells);
   }
-  return "\n### " + g + "\n\n![tornado chart: " + g + "](" + key + ".png)\n\n" + table.text();
+  validation::SectionDoc doc;
+  return doc.text("\n").heading(1, g).text("\n").figure(key + ".png", "tornado chart: " + g).text("\n" + table.text());
 }
 
 // What a cell of the tables says. `full_size`: the verdicts are those of the paper study's full-size
@@ -167,13 +169,14 @@ std::string cell_legend(bool full_size) {
 
 // Every group's section of table.md (group_section) in the order of `groups`, and
 // OUT/tornado_values.gp, which reports/gnuplot/tornado.gp reads: both modes draw with this.
-std::string group_sections(const std::vector<std::string>& groups, const std::vector<RowDecision>& decided,
-                           const std::vector<std::string>& others, const std::string& out) {
+validation::SectionDoc group_sections(const std::vector<std::string>& groups, const std::vector<RowDecision>& decided,
+                                     const std::vector<std::string>& others, const std::string& out) {
   validation::GnuplotValues gp_values;
   gp_values.texts("tornado_reading", others);
-  std::string md, group_names;
+  validation::SectionDoc md;
+  std::string group_names;
   for (const std::string& g : groups) {
-    md += group_section(g, decided, others, out, gp_values);
+    md.append(group_section(g, decided, others, out, gp_values));
     if (!group_names.empty()) group_names += ' ';
     group_names += validation::file_safe(g);
   }
@@ -322,9 +325,10 @@ int decisions(const Manifest& manifest, const std::string& results, const std::s
   if (rows.size() < all_rows)
     md += "\nOnly the rows of the densities this study runs (" + validation::joined(densities, ", ") + "): " + std::to_string(rows.size()) +
           " of " + std::to_string(all_rows) + ".\n";
-  md += group_sections(groups, decided, others, out);
+  validation::SectionDoc doc;
+  doc.text(md).append(group_sections(groups, decided, others, out)).densities = densities;
   try {
-    dem::write_file_atomically((fs::path(out) / "table.md").string(), md);
+    validation::write_section(out, doc);
     dem::write_file_atomically(
         (fs::path(out) / "decisions.json").string(),
         validation::decisions_file_json(decisions_record(baseline, baseline_results.empty() ? "" : relative_paths(baseline_results, baseline_results),
@@ -478,8 +482,9 @@ int decisions_from_json(const std::string& file, const std::string& out, const s
     md += "\nRows not in `" + references + "` (their shifts in baseline sd alone, no resolution known): " + validation::joined(unknown, "; ") + ".\n";
   try {
     fs::create_directories(out);
-    md += group_sections(groups, decided, others, out);
-    dem::write_file_atomically((fs::path(out) / "table.md").string(), md);
+    validation::SectionDoc doc;
+    doc.text(md).append(group_sections(groups, decided, others, out)).densities = densities;
+    validation::write_section(out, doc);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 1;

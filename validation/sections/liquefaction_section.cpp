@@ -21,6 +21,7 @@
 #include "io/atomic_file.hpp"
 #include "sections/liquefaction.hpp"
 #include "study/markdown_table.hpp"
+#include "study/section_doc.hpp"
 
 namespace fs = std::filesystem;
 
@@ -194,8 +195,8 @@ std::vector<std::string> seeds_of(const std::vector<CyclicRun>& runs, const std:
   return seeds;
 }
 
-std::string liquefaction_table(const std::vector<CyclicRun>& runs, const std::vector<std::string>& folders,
-                               const std::vector<std::string>& densities, const std::vector<CsrGroup>& groups) {
+validation::SectionDoc liquefaction_table(const std::vector<CyclicRun>& runs, const std::vector<std::string>& folders,
+                                          const std::vector<std::string>& densities, const std::vector<CsrGroup>& groups) {
   std::ostringstream md;
   std::size_t finished = 0;
   for (const CyclicRun& r : runs) finished += r.finished;
@@ -268,8 +269,11 @@ std::string liquefaction_table(const std::vector<CyclicRun>& runs, const std::ve
   }
   md << tests.text() << "\nThe holds (nothing applied after the same consolidation; cycles of the density's cyclic period):\n\n" << holds.text();
   md << collapse_notes(runs);
-  md << "\n![CSR against the number of cycles to liquefaction](csr_nl.png)\n\n![r_u against the number of cycles](ru.png)\n";
-  return md.str();
+  md << "\n";
+  validation::SectionDoc doc;
+  doc.text(md.str()).figure("csr_nl.png", "CSR against the number of cycles to liquefaction").text("\n").figure("ru.png", "r_u against the number of cycles");
+  doc.densities = densities;
+  return doc;
 }
 
 validation::Table summary_data(const std::vector<CsrGroup>& groups, const std::vector<std::string>& densities) {
@@ -356,7 +360,7 @@ int liquefaction(const std::string& out, const std::vector<std::string>& folders
                                                       : "no finished test");
   try {
     fs::create_directories(out);
-    dem::write_file_atomically((fs::path(out) / "table.md").string(), liquefaction_table(runs, folders, densities, groups));
+    validation::write_section(out, liquefaction_table(runs, folders, densities, groups));
     dem::write_file_atomically((fs::path(out) / "csr_nl.dat").string(), csr.text());
     dem::write_file_atomically((fs::path(out) / "csr_nl_summary.dat").string(), summary_data(groups, densities).text());
     dem::write_file_atomically((fs::path(out) / "ru.dat").string(), ru.text());

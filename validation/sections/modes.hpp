@@ -20,8 +20,12 @@ int convergence(const Manifest& manifest, const std::string& results, const std:
 int convergence_from_summary(const std::string& file, const std::string& out, const std::string& reference,
                              const std::string& validation_json);
 
-// What became of each case: OUT/table.md. Exit 1 if a case is not acceptable, unless report_only.
+// What became of each case: OUT/summary.json and OUT/table.md. Exit 1 if a case is not acceptable,
+// unless report_only.
 int stability(const Manifest& manifest, const std::string& results, const std::string& out, bool report_only);
+// The table re-drawn from a committed summary.json (FILE), without the results (summary.json is not
+// rewritten): exit 0, 2 on a summary that cannot be read, 1 on a table that cannot be written.
+int stability_from_summary(const std::string& file, const std::string& out);
 
 // Every validation row of `references` on every reading's ensemble against the baseline reading's:
 // OUT/table.md, decisions.json, tornado_<group>.dat and tornado_values.gp. `results`: the folder

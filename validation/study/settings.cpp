@@ -121,11 +121,11 @@ RunSettings run_settings(const std::string& results, const std::string& prefix, 
         s.mean_stress_Pa = st->mean_stress_Pa;
         s.stress_ratio = st->stress_ratio;
         s.stress_rate_Pa_per_s = st->stress_rate_Pa_per_s;
-        int cycles = 0;
+        RunSettings::TestPath path{one_line(st->path_text), 0, {}};
         for (const dem::PathLeg& leg : dem::expand_path(st->path, dem::named_state("A", st->mean_stress_Pa, st->stress_ratio),
                                                         st->stress_rate_Pa_per_s))
-          cycles += leg.ends_cycle;
-        s.tests[t] = {one_line(st->path_text), cycles};
+          path.cycles += leg.ends_cycle, path.visits.push_back(leg.to_label);
+        s.tests[t] = std::move(path);
       }
     }
   }

@@ -42,6 +42,7 @@ struct RunSettings {
   struct TestPath {
     std::string path;  // as the scene writes it, on one line
     int cycles = 0;    // the cycles it makes
+    std::vector<std::string> visits;  // the states its legs go to, in order (the path expanded: "TC1", "A", "TE1", ...)
   };
   std::map<int, TestPath> tests;  // test number -> its path
   bool empty() const { return !grading_basis && friction_shear.empty(); }  // no result had a scene

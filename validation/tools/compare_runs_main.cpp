@@ -51,6 +51,7 @@ struct Options {
   std::string convergence_summary, validation_json;                     // convergence
   int threads_per_run = 1;
   bool report_only = false;                                             // stability
+  std::string stability_summary;                                        // stability, --without-results redraw
   std::string critical_ensemble, critical_rates, critical_references;  // critical-state
   std::string liquefaction_out;
   std::vector<std::string> liquefaction_folders;
@@ -157,7 +158,7 @@ Modes declare_modes(CLI::App& app, Options& o) {
         ->check(CLI::ExistingDirectory);
     mode->add_option("--without-results", o.without_results,
                      "a study not run here (RESULTS_DIR without runs.tsv or a finished run) is no error: redraw = the section "
-                     "re-drawn from OUT_DIR's committed summary (convergence: summary.json, decisions: decisions.json), else "
+                     "re-drawn from OUT_DIR's committed summary (convergence, stability: summary.json; decisions: decisions.json), else "
                      "OUT_DIR kept; keep = OUT_DIR kept; says which, exit 0")
         ->check(CLI::IsMember({"keep", "redraw"}));
   }
@@ -255,12 +256,12 @@ std::optional<int> without_results(const std::string& mode, const Modes& m, Opti
     const bool redrawn_already = (*m.convergence && !o.convergence_summary.empty()) || (*m.decisions && !o.from_json.empty());
     if (redrawn_already || has_results(f.results)) return std::nullopt;
     results = f.results, out = f.out;
-    const std::string summary = *m.convergence ? "summary.json" : *m.decisions ? "decisions.json" : "";
+    const std::string summary = *m.convergence || *m.stability ? "summary.json" : *m.decisions ? "decisions.json" : "";
     const std::filesystem::path committed = std::filesystem::path(out) / summary;
     if (o.without_results == "redraw" && !summary.empty() && std::filesystem::is_regular_file(committed)) {
       std::fprintf(stderr, "compare-runs %s: no results in %s; the section re-drawn from the committed %s (its stamp kept)\n",
                    mode.c_str(), results.c_str(), committed.c_str());
-      (*m.convergence ? o.convergence_summary : o.from_json) = committed.string();
+      (*m.convergence ? o.convergence_summary : *m.stability ? o.stability_summary : o.from_json) = committed.string();
       f.results = out, f.out.clear();  // as `--summary FILE OUT_DIR` / `--from-json FILE OUT_DIR` take them
       return std::nullopt;
     }
@@ -290,6 +291,7 @@ int run_mode(const std::string& mode, const Modes& m, const Options& o) {
     return drawn(stamped(sections::liquefaction(o.liquefaction_out, o.liquefaction_folders), o.liquefaction_out, o.liquefaction_folders),
                  o.liquefaction_out);
   }
+  if (*m.stability && !o.stability_summary.empty()) return sections::stability_from_summary(o.stability_summary, o.stability.results);
   if (*m.decisions && !o.from_json.empty())
     return drawn(sections::decisions_from_json(o.from_json, o.decisions.results, o.references, o.ensemble_json), o.decisions.results);
   const Folders& f = *m.convergence ? o.convergence : *m.stability ? o.stability : *m.decisions ? o.decisions : o.critical;

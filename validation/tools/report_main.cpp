@@ -38,6 +38,7 @@
 #include "report/other_sections.hpp"
 #include "study/json_file.hpp"
 #include "report/baseline_check.hpp"
+#include "report/prose_numbers.hpp"
 #include "report/report.hpp"
 #include "report/report_values.hpp"
 #include "report/study_values.hpp"
@@ -116,6 +117,14 @@ void add_judged_values(validation::Values& v, const fs::path& report, const std:
   } catch (const std::exception& e) {  // the notes keep the verdicts computed with the results
     std::fprintf(stderr, "report: %s; the figure notes' verdicts and the earlier baseline's table are not taken from it\n", e.what());
   }
+}
+
+// Each sentence of the report that states one number in two roundings, said (report/prose_numbers.hpp):
+// the report is written, and the sentence's section is what to correct.
+void warn_restated(const std::string& text) {
+  for (const validation::RestatedNumber& r : validation::numbers_restated(text))
+    std::fprintf(stderr, "report: warning: one number in two roundings, %s and %s, in one sentence: \"%s\"\n", r.longer.c_str(),
+                 r.shorter.c_str(), r.sentence.c_str());
 }
 
 }  // namespace
@@ -253,6 +262,7 @@ int tool_main(int argc, char** argv) {
     for (const std::string& h : stamped.other) std::fprintf(stderr, "report: warning: '%s' kept from another baseline or engine (headed ⚠)\n", h.c_str());
     text = stamped.text;
     dem::write_file_atomically((report / "index.md").string(), text);
+    warn_restated(text);
     std::fprintf(stderr, "report written to %s (%zu sample(s) of %s%s)\n", (report / "index.md").c_str(), in.samples.size(),
                  validation::shown_path(results).c_str(), missing.empty() ? "" : (", " + std::to_string(missing.size()) + " result files missing").c_str());
   } catch (const std::exception& e) {

@@ -15,6 +15,7 @@
 #include "report/other_sections.hpp"
 #include "report/report.hpp"
 #include "report/report_values.hpp"
+#include "study/section_doc.hpp"
 
 namespace fs = std::filesystem;
 using validation::Stamp;
@@ -239,10 +240,19 @@ TEST_CASE("report stamps: a listed heading missing from the report is an error n
 TEST_CASE("report: each reading's table says its stamp, marked when on another baseline", "[report][stamp]") {
   const fs::path dir = dem::test::scratch_dir("readings_stamps");
   write_json(dir / "validation.json", {{"stamp", validation::stamp_json({"0.1.0+aaaa", "1111111111111111", 8000, 5, "2026-11-28"})}});
+  // Each reading's section as compare-runs writes it (study/section_doc.hpp): a group's heading, its
+  // chart and its table; the loose study of one of the paper's densities, the dashpot study of all.
   for (const char* r : {"loose", "dashpot"}) {
     fs::create_directories(dir / "readings" / r);
-    std::ofstream(dir / "readings" / r / "table.md") << "| row | shift |\n|---|---|\n| a | +1 |\n";
+    validation::SectionDoc doc;
+    doc.text("\n").heading(1, "fabric").text("\n").figure("tornado_fabric.png", "tornado chart: fabric").text("\n| row | shift |\n|---|---|\n| a | +1 |\n");
+    doc.densities = std::string(r) == "loose" ? std::vector<std::string>{"loose"} : std::vector<std::string>{"loose", "medium", "dense"};
+    validation::write_section(dir / "readings" / r, doc);
   }
+  std::ofstream(dir / "readings" / "loose" / "tornado_fabric.png") << "png";
+  // A folder with a table.md alone (written before sections were kept as data) is left out.
+  fs::create_directories(dir / "readings" / "old");
+  std::ofstream(dir / "readings" / "old" / "table.md") << "### fabric\n\n![tornado chart: fabric](tornado_fabric.png)\n";
   // Only a stamp in decisions.json (not a whole decisions file: its size is then not recorded).
   write_json(dir / "readings" / "loose" / "decisions.json",
              {{"stamp", validation::stamp_json({"0.1.0+aaaa", "1111111111111111", 8000, 3, "2026-11-28"})}});
@@ -257,6 +267,12 @@ TEST_CASE("report: each reading's table says its stamp, marked when on another b
   CHECK_THAT(text, Catch::Contains("### Readings: dashpot (size not recorded)\n\n*⚠ Made by engine `0.1.0+bbbb` on baseline "
                                    "`2222222222222222` (8,000 spheres, 3 samples, 2026-11-20); another baseline than the paper study's "
                                    "(made by engine `0.1.0+aaaa` on baseline `1111111111111111` (8,000 spheres, 5 samples, 2026-11-28)).*\n"));
+  // Their own headings one level below their titles', their figures' paths from the report's folder
+  // (a figure not drawn said so); the folder without section.json not shown.
+  CHECK_THAT(text, Catch::Contains("#### fabric\n\n![tornado chart: fabric](readings/loose/tornado_fabric.png)\n"));
+  CHECK_THAT(text, Catch::Contains("#### fabric\n\n*Figure `readings/dashpot/tornado_fabric.png` not drawn.*\n"));
+  CHECK(text.find("\n### fabric") == std::string::npos);
+  CHECK(text.find("Readings: old") == std::string::npos);
 }
 
 TEST_CASE("other sections: a stamp recorded elsewhere is taken only for the same data", "[report][stamp]") {
