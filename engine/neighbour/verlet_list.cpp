@@ -29,15 +29,29 @@ namespace {
 Vec3 singular_values(const Mat3& m) { return Eigen::JacobiSVD<Mat3>(m).singularValues(); }  // descending
 }  // namespace
 
-double VerletList::max_displacement(const Particles& p, const PeriodicCell& cell) const {
-  double max_disp2 = 0;  // a maximum: the same whatever the order or the number of threads
+namespace {
+// The two largest of a set of values, a >= b (a maximum: the same whatever the order or the number
+// of threads).
+struct TwoLargest {
+  double a = 0, b = 0;
+  void add(double x) {
+    if (x > a) b = a, a = x;
+    else if (x > b) b = x;
+  }
+  void merge(const TwoLargest& other) { add(other.a), add(other.b); }
+};
+#pragma omp declare reduction(two_largest : TwoLargest : omp_out.merge(omp_in))
+}  // namespace
+
+double VerletList::displacement_closing(const Particles& p, const PeriodicCell& cell) const {
+  TwoLargest disp2;  // squared displacements
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(p.size());
-#pragma omp parallel for schedule(static) reduction(max : max_disp2)
+#pragma omp parallel for schedule(static) reduction(two_largest : disp2)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
     const Vec3 ds = PeriodicCell::min_image(p.s[i] - s_at_build_[i]);
-    max_disp2 = std::max(max_disp2, cell.to_real(ds).squaredNorm());
+    disp2.add(cell.to_real(ds).squaredNorm());
   }
-  return std::sqrt(max_disp2);
+  return std::sqrt(disp2.a) + std::sqrt(disp2.b);
 }
 
 double VerletList::affine_closing(const PeriodicCell& cell) const {
@@ -50,13 +64,14 @@ double VerletList::affine_closing(const PeriodicCell& cell) const {
 
 bool VerletList::needs_rebuild(const Particles& p, const PeriodicCell& cell) const {
   if (!built_ || p.size() != s_at_build_.size()) return true;
-  return beyond_skin(max_displacement(p, cell), affine_closing(cell));
+  return beyond_skin(displacement_closing(p, cell), affine_closing(cell));
 }
 
 bool VerletList::rebuild_due(const Particles& p, const PeriodicCell& cell) {
   if (!built_ || p.size() != s_at_build_.size()) return true;
-  // A particle's displacement relative to the cell, measured with today's sides, is at most the
-  // motion since the last measurement times the largest L / L_min; the 0.1 % margins cover round-off.
+  // A particle's displacement relative to the cell, measured with today's sides, is at most its
+  // displacement at the last measurement plus the motion since, times the largest L / L_min; so is
+  // d_1 + d_2 with d_1 + d_2 then and twice the motion (drift_m_). The 0.1 % margins cover round-off.
   const Vec3& L = cell.lengths();
   lengths_min_ = lengths_min_.cwiseMin(L);
   double stretch = L.cwiseQuotient(lengths_min_).maxCoeff();
@@ -66,12 +81,12 @@ bool VerletList::rebuild_due(const Particles& p, const PeriodicCell& cell) {
     stretch = sv[0] / smallest_singular_value_;
   }
   const double affine = affine_closing(cell);
-  if (2 * 1.001 * stretch * drift_m_ + affine <= 0.999 * skin_) return false;  // false for a NaN bound too
+  if (1.001 * stretch * drift_m_ + affine <= 0.999 * skin_) return false;  // false for a NaN bound too
   ++exact_checks_;
-  const double d_max = max_displacement(p, cell);
-  drift_m_ = d_max, lengths_min_ = L;
+  const double closing = displacement_closing(p, cell);
+  drift_m_ = closing, lengths_min_ = L;
   smallest_singular_value_ = cell.sheared() ? singular_values(cell.matrix())[2] : 0;
-  return beyond_skin(d_max, affine);
+  return beyond_skin(closing, affine);
 }
 
 void VerletList::collect_pairs(const Particles& p, const PeriodicCell& cell, PairList& out) const {

@@ -9,19 +9,23 @@
 // carried over.
 //
 // Rebuild criterion (`needs_rebuild`): a pair outside the list at build time had a surface gap
-// > skin. Its gap can close only through the particles' own displacement (at most 2 d_max, d_max
-// measured relative to the deforming cell) and through the cell's contraction (at most
+// > skin. Its gap can close only through its two particles' own displacements (at most d_1 + d_2,
+// the two largest displacements of any particles, measured relative to the deforming cell: the
+// two of a pair are two different particles) and through the cell's contraction (at most
 // (2 r_max + skin)(1 - lambda_min), lambda_min the smallest L/L_build; for a tilted cell the
-// smallest singular value of H H_build^-1). We rebuild before the sum of the two can exceed the skin.
+// smallest singular value of H H_build^-1). We rebuild before the sum of the two can exceed the
+// skin. (2 d_1 instead of d_1 + d_2 rebuilt up to twice as often where a few rattlers move
+// fastest: docs/performance.md.)
 //
 // That criterion costs a pass over every particle. The step calls `rebuild_due` instead, which
 // first screens with a bound that costs nothing per particle: the fluctuating displacement of any
-// particle since the last exact measurement is at most the sum over steps of dt max_i |v_i| (told
-// by `add_motion`), times the largest stretch L/L_min of a cell side since then (for a tilted
-// cell: the largest singular value of H over the smallest one of any H since). Only when that
-// bound cannot rule a rebuild out does it run the exact criterion, whose measured displacement
-// restarts the bound. The list is therefore rebuilt at exactly the steps where the exact criterion
-// alone would rebuild it.
+// particle since the last exact measurement is at most its displacement then plus the sum over
+// steps of dt max_i |v_i| (told by `add_motion`), times the largest stretch L/L_min of a cell
+// side since then (for a tilted cell: the largest singular value of H over the smallest one of
+// any H since); so d_1 + d_2 is at most that stretch times (d_1 + d_2 then + twice the motion).
+// Only when that bound cannot rule a rebuild out does it run the exact criterion, whose measured
+// displacements restart the bound. The list is therefore rebuilt at exactly the steps where the
+// exact criterion alone would rebuild it.
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -67,7 +71,7 @@ class VerletList {
   // rebuild out (see above); call once per step, before the forces.
   bool rebuild_due(const Particles& p, const PeriodicCell& cell);
   // After a position update: the largest distance any particle moved relative to the cell, dt max |v| [m].
-  void add_motion(double max_step_m) { drift_m_ += max_step_m; }
+  void add_motion(double max_step_m) { drift_m_ += 2 * max_step_m; }
   std::size_t exact_checks() const { return exact_checks_; }  // passes of the exact criterion so far
   // Replaces the pairs, e.g. with the contacts of a saved state; the next build() tells where they went.
   void restore(PairList pairs) {
@@ -103,10 +107,12 @@ class VerletList {
 
  private:
   void collect_pairs(const Particles& p, const PeriodicCell& cell, PairList& out) const;
-  double max_displacement(const Particles& p, const PeriodicCell& cell) const;  // d_max [m]
-  double affine_closing(const PeriodicCell& cell) const;                         // [m]
+  // d_1 + d_2, the sum of the two largest displacements since the build [m]: what the particles'
+  // own motion can close of any pair's gap.
+  double displacement_closing(const Particles& p, const PeriodicCell& cell) const;
+  double affine_closing(const PeriodicCell& cell) const;  // [m]
   // The exact criterion, shared by needs_rebuild and rebuild_due so that both decide alike.
-  bool beyond_skin(double d_max, double affine) const { return 2 * d_max + affine > skin_; }
+  bool beyond_skin(double closing, double affine) const { return closing + affine > skin_; }
 
   double skin_ = 0;
   PairList pairs_;
@@ -118,8 +124,8 @@ class VerletList {
   std::size_t builds_ = 0;
   std::uint64_t changes_ = 0;
   bool built_ = false;
-  // The displacement bound of `rebuild_due`: d_max at the last exact measurement plus the motion
-  // since, and the shortest cell sides since then. Infinite until the first measurement.
+  // The displacement bound of `rebuild_due`: d_1 + d_2 at the last exact measurement plus twice
+  // the motion since, and the shortest cell sides since then. Infinite until the first measurement.
   double drift_m_ = std::numeric_limits<double>::infinity();
   Vec3 lengths_min_ = Vec3::Ones();
   double smallest_singular_value_ = 0;  // of any H since the last measurement (tilted cells)

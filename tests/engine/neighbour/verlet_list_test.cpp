@@ -202,8 +202,8 @@ TEST_CASE("Verlet list: a contact's tangential spring survives rebuilds inside a
   // -ks u = -0.2 N (below mu f_n = 2.5 N). Afterwards the spring's torque spins both spheres and
   // relaxes u slowly (by ~arm^2 ks t^2 / I = 0.6 % over the run), so the later forces are not a
   // constant; instead we compare with a reference run in which the list is never rebuilt.
-  // In the test run sphere 2, far away and never in contact, moves at 1000 m/s (10 um = skin per step) so that the list is
-  // rebuilt at every step; if history survives rebuilds (and forces are summed in (i, j) order)
+  // In the test run sphere 2, far away and never in contact, moves at 2000 m/s (20 um = twice the skin per step; the
+  // criterion takes the two largest displacements, and the others' are tiny) so that the list is rebuilt at every step; if history survives rebuilds (and forces are summed in (i, j) order)
   // both runs are identical bit for bit. A lost spring would drop f_t to ~0 at the first rebuild.
   const double r = 1e-3, overlap = 5e-5, ks = 1e5, dt = 1e-8;
   const PeriodicCell cell(Vec3(0.02, 0.02, 0.02));
@@ -221,7 +221,7 @@ TEST_CASE("Verlet list: a contact's tangential spring survives rebuilds inside a
     sim.restore(0, CellRates{}, saved, history);
     return sim;
   };
-  Simulation moving = run(1000, 1e-5), reference = run(0, 1e-3);
+  Simulation moving = run(2000, 1e-5), reference = run(0, 1e-3);
   for (int n = 0; n < 50; ++n) {
     moving.step(test::fixed_cell(), ServoSettings{});
     reference.step(test::fixed_cell(), ServoSettings{});
