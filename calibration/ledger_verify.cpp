@@ -13,16 +13,11 @@
 #include "loop.hpp"
 #include "sets.hpp"
 #include "study/format.hpp"
+#include "study/settings.hpp"
 
 namespace calibration {
 
 namespace {
-
-std::string joined(const std::vector<std::string>& names) {
-  std::string out;
-  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
-  return out;
-}
 
 // "" when the two scores are the same bit for bit (every row's value, mean and sd at every point),
 // else the first difference.
@@ -72,7 +67,7 @@ void verify_ledger(Loop& l, std::size_t k) {
   const std::vector<pipeline::PlannedRun> runs = plan_sets(l.c, size.study, *size.profile, picks, so.results, l.out.engine);
   std::printf("[calibrate] --ledger-verify: %zu of the %zu sets of %s hash otherwise here (scored by engine %s); %zu of them run "
               "again first (%s): %zu runs\n",
-              n, size.ledger.sets.size(), size.ledger_file.c_str(), size.ledger.stamp.engine_source.c_str(), count, joined(names).c_str(),
+              n, size.ledger.sets.size(), size.ledger_file.c_str(), size.ledger.stamp.engine_source.c_str(), count, validation::joined(names, ", ").c_str(),
               runs.size());
   std::fflush(stdout);
   if (!l.o.plan_only) {
@@ -89,7 +84,7 @@ void verify_ledger(Loop& l, std::size_t k) {
     }
   }
   const std::string by = "scored by engine " + size.ledger.stamp.engine_source + " on " + size.ledger.stamp.date + " on runs that hash otherwise here; " +
-                         std::to_string(count) + " of the ledger's " + std::to_string(n) + " such sets (" + joined(names) + "), run again by engine " +
+                         std::to_string(count) + " of the ledger's " + std::to_string(n) + " such sets (" + validation::joined(names, ", ") + "), run again by engine " +
                          l.out.engine + ", scored bit for bit as it has them";
   for (ScoredSet* e : unfound) e->run_hashes = hashes.at(e->name), e->verified_by = by;
   // The verification sets are scored on their runs here when drawn, not taken.
