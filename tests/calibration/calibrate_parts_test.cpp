@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/io/io_test_support.hpp"
+#include "tiny_calibration.hpp"
 
 namespace fs = std::filesystem;
 
@@ -16,22 +17,9 @@ namespace {
 
 const std::string bin = std::string(DEM_BINARY_DIR) + "/bin/";
 
-// A study of two densities (64 and 125 spheres, one sample each), a typed curve per density, and a
-// calibration of the tests' friction.
+// Two densities, a curve each, the tests' friction calibrated.
 void write_inputs(const fs::path& dir, const std::string& sizes) {
-  const std::string src = DEM_SOURCE_DIR;
-  std::ofstream(dir / "study.yaml") << "name: tiny\noutput: results\npreparation: " << src << "/scenes/prepare_dense.yaml\n"
-                                    << "densities: [{name: dense, friction: 0.0}, {name: loose, friction: 0.5}]\n"
-                                    << "tests: [{name: triaxial, scene: " << src << "/scenes/tests/triaxial_drained.yaml, "
-                                    << "set: {\"stages[1].until.strain\": 0.01}}]\n"
-                                    << "profiles: {small: {lattice: 4, seeds: 1}, large: {lattice: 5, seeds: 1}}\n";
-  std::ofstream(dir / "curve.csv") << "strain_3,q_over_p,sd\n0.002,0.8,0.1\n0.008,0.9,0.1\n";
-  std::ofstream(dir / "refs.yaml") << "source: typed\ncurves: [{name: dense qp, file: curve.csv, x: strain_3, y: q_over_p, "
-                                   << "density: dense, test: triaxial}, {name: loose qp, file: curve.csv, x: strain_3, "
-                                   << "y: q_over_p, density: loose, test: triaxial}]\n";
-  std::ofstream(dir / "cal.yaml") << "name: tiny\nstudy: study.yaml\nreferences: refs.yaml\nreport: report\n"
-                                  << "parameters: [{name: friction, keys: material.friction, applies_to: test, uniform: [0.1, 0.9]}]\n"
-                                  << "batch: 6\nmin_iterations: 2\nmax_iterations: 2\n" << sizes;
+  dem::test::TinyCalibration{{{"dense", 0.0}, {"loose", 0.5}}, "test", 6, sizes}.write(dir);
 }
 
 }  // namespace

@@ -11,29 +11,13 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/io/io_test_support.hpp"
+#include "tiny_calibration.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
 const std::string bin = std::string(DEM_BINARY_DIR) + "/bin/";
-
-// A tiny study with two profiles (64 and 125 spheres, one sample each), a typed curve, and a
-// calibration of one parameter across the two sizes.
-void write_inputs(const fs::path& dir, const std::string& sizes) {
-  const std::string src = DEM_SOURCE_DIR;
-  std::ofstream(dir / "study.yaml") << "name: tiny\noutput: results\npreparation: " << src << "/scenes/prepare_dense.yaml\n"
-                                    << "densities: [{name: dense, friction: 0.0}]\n"
-                                    << "tests: [{name: triaxial, scene: " << src << "/scenes/tests/triaxial_drained.yaml, "
-                                    << "set: {\"stages[1].until.strain\": 0.01}}]\n"
-                                    << "profiles: {small: {lattice: 4, seeds: 1}, large: {lattice: 5, seeds: 1}}\n";
-  std::ofstream(dir / "curve.csv") << "strain_3,q_over_p,sd\n0.002,0.8,0.1\n0.008,0.9,0.1\n";
-  std::ofstream(dir / "refs.yaml") << "source: typed\ncurves: [{name: qp, file: curve.csv, x: strain_3, y: q_over_p, "
-                                   << "density: dense, test: triaxial}]\n";
-  std::ofstream(dir / "cal.yaml") << "name: tiny\nstudy: study.yaml\nreferences: refs.yaml\nreport: report\n"
-                                  << "parameters: [{name: friction, keys: material.friction, uniform: [0.1, 0.9]}]\n"
-                                  << "batch: 8\nmin_iterations: 2\nmax_iterations: 2\n" << sizes;
-}
 
 }  // namespace
 
@@ -42,7 +26,7 @@ TEST_CASE("calibrate across two sizes: the chosen sets run at the large size, a 
   const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "calibrate_sizes";
   fs::remove_all(dir);
   fs::create_directories(dir);
-  write_inputs(dir, "sizes: [{profile: small}, {profile: large, sets: 4, per_iteration: 2}]\n");
+  dem::test::TinyCalibration{{{"dense", 0.0}}, "", 8, "sizes: [{profile: small}, {profile: large, sets: 4, per_iteration: 2}]\n"}.write(dir);
   // An engine that calls itself another (its --source-hash), so that its ledgers are another engine's.
   std::ofstream(dir / "other_dem") << "#!/bin/sh\nif [ \"$1\" = --source-hash ]; then echo 'feedfacefeedface schema 4'; exit 0; fi\n"
                                    << "exec '" << bin << "dem' \"$@\"\n";
@@ -108,7 +92,7 @@ TEST_CASE("calibrate refuses a wrong sizes: key, naming it", "[calibration][cli]
   fs::remove_all(dir);
   fs::create_directories(dir);
   const auto refusal = [&](const std::string& sizes, const std::string& extra = "") {
-    write_inputs(dir, sizes);
+    dem::test::TinyCalibration{{{"dense", 0.0}}, "", 8, sizes}.write(dir);
     return dem::test::run_command("cd '" + dir.string() + "' && '" + bin + "calibrate' cal.yaml --plan" + extra + " 2>&1");
   };
   const auto one = refusal("sizes: [{profile: small}]\n");

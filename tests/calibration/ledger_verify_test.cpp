@@ -14,6 +14,7 @@
 
 #include "core/content_hash.hpp"
 #include "engine/io/io_test_support.hpp"
+#include "tiny_calibration.hpp"
 
 namespace fs = std::filesystem;
 
@@ -21,20 +22,9 @@ namespace {
 
 const std::string bin = std::string(DEM_BINARY_DIR) + "/bin/";
 
-// A tiny study (64 spheres, one sample), a typed curve, a calibration of one parameter.
-void write_inputs(const fs::path& dir, const std::string& preparation_friction) {
-  const std::string src = DEM_SOURCE_DIR;
-  std::ofstream(dir / "study.yaml") << "name: tiny\noutput: results\npreparation: " << src << "/scenes/prepare_dense.yaml\n"
-                                    << "densities: [{name: dense, friction: " << preparation_friction << "}]\n"
-                                    << "tests: [{name: triaxial, scene: " << src << "/scenes/tests/triaxial_drained.yaml, "
-                                    << "set: {\"stages[1].until.strain\": 0.01}}]\n"
-                                    << "profiles: {small: {lattice: 4, seeds: 1}}\n";
-  std::ofstream(dir / "curve.csv") << "strain_3,q_over_p,sd\n0.002,0.8,0.1\n0.008,0.9,0.1\n";
-  std::ofstream(dir / "refs.yaml") << "source: typed\ncurves: [{name: qp, file: curve.csv, x: strain_3, y: q_over_p, "
-                                   << "density: dense, test: triaxial}]\n";
-  std::ofstream(dir / "cal.yaml") << "name: tiny\nstudy: study.yaml\nreferences: refs.yaml\nreport: report\n"
-                                  << "parameters: [{name: friction, keys: material.friction, applies_to: test, uniform: [0.1, 0.9]}]\n"
-                                  << "batch: 4\nmin_iterations: 2\nmax_iterations: 2\n";
+// One density prepared at `friction`, the tests' friction calibrated, 4 sets an iteration.
+void write_inputs(const fs::path& dir, double friction) {
+  dem::test::TinyCalibration{{{"dense", friction}}, "test", 4, ""}.write(dir);
 }
 
 int started_runs(const std::string& out) {
@@ -49,7 +39,7 @@ TEST_CASE("calibrate --ledger-verify takes a ledger whose runs hash otherwise on
   const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "ledger_verify";
   fs::remove_all(dir);
   fs::create_directories(dir);
-  write_inputs(dir, "0.0");
+  write_inputs(dir, 0.0);
   const std::string cmd = "cd '" + dir.string() + "' && '" + bin + "calibrate' cal.yaml -j 2 --threads 1";
   const auto first = dem::test::run_command(cmd + " 2>&1");
   INFO(first.out);
@@ -93,7 +83,7 @@ TEST_CASE("calibrate --ledger-verify takes a ledger whose runs hash otherwise on
   }
 
   SECTION("other physics (the preparation's friction 0.05): refused, naming the set, the ledger kept as it was") {
-    write_inputs(dir, "0.05");
+    write_inputs(dir, 0.05);
     const auto refused = dem::test::run_command(cmd + " --ledger-verify 1 2>&1");
     INFO(refused.out);
     CHECK(refused.exit_code == 2);
@@ -114,7 +104,7 @@ TEST_CASE("calibrate rekey: a ledger keyed on its reference files' bytes is take
   const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "ledger_rekey";
   fs::remove_all(dir);
   fs::create_directories(dir);
-  write_inputs(dir, "0.0");
+  write_inputs(dir, 0.0);
   const std::string cmd = "cd '" + dir.string() + "' && '" + bin + "calibrate' ";
   const auto first = dem::test::run_command(cmd + "cal.yaml -j 2 --threads 1 2>&1");
   INFO(first.out);
