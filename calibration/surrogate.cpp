@@ -64,7 +64,7 @@ double ResponseSurface::log_likelihood(const References& refs, const Eigen::Vect
     Prediction p{q.value(x), q.variance(x), &q};
     for (std::size_t k = 0; k < larger.size(); ++k) {
       const Quadratic& dq = discrepancy_of(larger[k]);
-      if (dq.samples == 0) continue;  // a part of a size that does not cover this point (discrepancy.hpp)
+      if (!covers(dq)) continue;  // a part of a size that does not cover this point
       p.mean += dq.value(xd[k]), p.fit_variance += dq.variance(xd[k]), p.samples_of = &dq;
     }
     return p;

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <stdexcept>
 
 #include "study/format.hpp"
@@ -17,18 +16,6 @@ namespace {
 
 std::optional<double> number_at(const nlohmann::json& j, const char* key) {
   return j.contains(key) && j.at(key).is_number() ? std::optional<double>(j.at(key).get<double>()) : std::nullopt;
-}
-
-// The readings explain() names after "consistent under ": "a (-2.1 sd, t = 2.23), b (...), its
-// shift of the mean applied ..." -> {a, b} (each name followed by its parenthesised shift).
-std::vector<std::string> explaining_readings(const std::string& explanation) {
-  const std::string lead = "consistent under ";
-  if (explanation.rfind(lead, 0) != 0) return {};
-  static const std::regex named(R"((?:^|\), )([A-Za-z0-9_.+-]+) \()");
-  const std::string rest = explanation.substr(lead.size());
-  std::vector<std::string> out;
-  for (auto it = std::sregex_iterator(rest.begin(), rest.end(), named); it != std::sregex_iterator(); ++it) out.push_back((*it)[1].str());
-  return out;
 }
 
 }  // namespace
@@ -62,13 +49,12 @@ DecisionsFile::Finding finding_from_json(const nlohmann::json& row) {
       finding.readings.emplace_back(name, std::move(r));
     }
   finding.explanation = row.at("explanation").get<std::string>();
-  finding.judged = row.contains("judged") ? row.at("judged").get<bool>() : finding.explanation.rfind("not judged", 0) != 0;
-  finding.explained_by = row.contains("made_consistent_by") ? row.at("made_consistent_by").get<std::vector<std::string>>()
-                                                            : explaining_readings(finding.explanation);
+  finding.judged = row.at("judged").get<bool>();
+  finding.explained_by = row.at("made_consistent_by").get<std::vector<std::string>>();
   return finding;
 }
 
-DecisionsFile read_decisions_file(const std::string& file, const std::vector<Row>& rows) {
+DecisionsFile read_decisions_file(const std::string& file) {
   std::ifstream in(file);
   if (!in) throw std::runtime_error("cannot be read");
   // ordered: the readings in the file's order, as the study ran them
@@ -78,6 +64,9 @@ DecisionsFile read_decisions_file(const std::string& file, const std::vector<Row
   DecisionsFile f;
   f.path = file;
   f.schema = j.contains("schema") && j.at("schema").is_number() ? j.at("schema").get<int>() : 1;
+  if (f.schema != 2)
+    throw std::runtime_error("is of schema " + std::to_string(f.schema) + " (no `schema` key: 1); this tool reads schema 2, which records " +
+                             "each row's `judged` and `made_consistent_by` as data: run its decisions study again (compare-runs decisions)");
   if (j.contains("baseline") && j.at("baseline").is_string()) f.baseline = j.at("baseline").get<std::string>();
   if (j.contains("baseline_results") && j.at("baseline_results").is_string()) f.baseline_results = j.at("baseline_results").get<std::string>();
   if (const auto p = number_at(j, "particles")) f.particles = std::lround(*p);
@@ -87,8 +76,6 @@ DecisionsFile read_decisions_file(const std::string& file, const std::vector<Row
   if (oj.contains("settings") && oj.at("settings").is_object())
     for (const auto& [reading, text] : oj.at("settings").items())
       if (text.is_string()) f.settings.emplace_back(reading, text.get<std::string>());
-  std::map<std::string, double> resolution;
-  for (const Row& r : rows) resolution[r.name] = r.resolution;
   for (const nlohmann::ordered_json& row : oj.at("rows")) {
     const std::string name = row.at("name").get<std::string>();
     DecisionsFile::Finding finding = finding_from_json(nlohmann::json(row));
@@ -99,7 +86,6 @@ DecisionsFile read_decisions_file(const std::string& file, const std::vector<Row
         if (const DecisionsFile::Reading* r = finding.reading(reading)) ordered.emplace_back(reading, *r);
       finding.readings = std::move(ordered);
     }
-    if (f.schema < 2) finding.explanation = restate_shifts(finding.explanation, finding, resolution.count(name) ? resolution.at(name) : 0.0);
     if (!f.rows.count(name)) f.order.push_back(name);
     f.rows[name] = std::move(finding);
   }
@@ -250,25 +236,6 @@ std::string cause_line(const std::vector<DecisionsFile>& files, const std::strin
     line = line.substr(0, at) + "…";
   }
   return line;
-}
-
-std::string restate_shifts(const std::string& explanation, const DecisionsFile::Finding& finding, double resolution) {
-  // "<reading> (<anything but parentheses><number>[ (beyond ±10)] sd": the forms explain() wrote.
-  static const std::regex shift(R"(([A-Za-z0-9_.+-]+) \(([^()]*?)([-+]?[0-9]+(?:\.[0-9]+)?(?:e[-+]?[0-9]+)?)(?: \(beyond ±10\))? sd)");
-  std::string out;
-  auto from = explanation.cbegin();
-  for (std::smatch m; std::regex_search(from, explanation.cend(), m, shift); from = m[0].second) {
-    const std::string reading = m[1].str();
-    double z = std::stod(m[3].str());
-    if (const std::optional<double> by = finding.mean_shift(reading)) {
-      const double again = shift_in_sd(*by, finding.baseline_sd.value_or(0.0), resolution);
-      if (std::isfinite(again)) z = again;
-    }
-    out.append(from, m[0].first);
-    out += reading + " (" + m[2].str() + shift_phrase(z);
-  }
-  out.append(from, explanation.cend());
-  return out;
 }
 
 }  // namespace validation

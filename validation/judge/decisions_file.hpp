@@ -24,7 +24,7 @@ namespace validation {
 // placeholder.
 struct DecisionsFile {
   std::string path;                    // where it was read from ("" for one being written)
-  int schema = 2;                      // 1: written before shifts were counted in max(sd, resolution) (no `schema` key)
+  int schema = 2;                      // the only one read (an older file named its readings in prose alone)
   std::string baseline = "baseline";   // the baseline reading's name
   std::string baseline_results;        // the study whose samples are the baseline ("": this study's own)
   std::optional<long> particles;       // spheres per sample, when the file records it
@@ -60,14 +60,11 @@ struct DecisionsFile {
   std::map<std::string, Finding> rows;  // by row name
 };
 
-// FILE's findings. A file written before shifts were counted in max(sd, resolution) and phrased by
-// shift_phrase() (no `schema`: the committed 1,000-sphere file) has its explanations' shifts
-// restated (restate_shifts) with each row's resolution from `rows`. Throws std::runtime_error
-// naming what is wrong (a key missing or of the wrong type) on a file that cannot be read or parsed.
-DecisionsFile read_decisions_file(const std::string& file, const std::vector<Row>& rows);
+// FILE's findings. Throws std::runtime_error naming what is wrong (a key missing or of the wrong
+// type, a schema other than 2) on a file that cannot be read or parsed.
+DecisionsFile read_decisions_file(const std::string& file);
 
-// One row of decisions.json's `rows` (its explanation as written: read_decisions_file restates a
-// schema-1 file's). Throws std::runtime_error naming a key missing or of the wrong type.
+// One row of decisions.json's `rows`. Throws std::runtime_error naming a key missing or of the wrong type.
 DecisionsFile::Finding finding_from_json(const nlohmann::json& row);
 
 // `f` as decisions.json holds it (schema 2; the values as given: the writer rounds them).
@@ -113,9 +110,5 @@ std::string cause_text(const std::vector<DecisionsFile>& files, const std::strin
 std::string cause_line(const std::vector<DecisionsFile>& files, const std::string& row, const TurnsInconsistent& side_effects = {},
                        std::size_t limit = 58);
 
-// `explanation` with each shift "<reading> (... X sd" re-stated from the finding's own numbers,
-// (mean - baseline_mean) / max(baseline_sd, resolution), in shift_phrase()'s words ("beyond +10 sd
-// (+57)"); a reading whose numbers are not there keeps its value, rephrased.
-std::string restate_shifts(const std::string& explanation, const DecisionsFile::Finding& finding, double resolution);
 
 }  // namespace validation

@@ -1,6 +1,8 @@
 #include "judge/validation_file.hpp"
 
+#include <algorithm>
 #include <map>
+#include <set>
 #include <stdexcept>
 
 #include "study/json_file.hpp"
@@ -32,6 +34,21 @@ std::vector<std::string> strings(const nlohmann::json& j, const std::string& key
 
 }  // namespace
 
+std::string keep_densities(std::vector<Row>& rows, const std::vector<std::string>& densities) {
+  if (densities.empty()) return "";
+  std::set<std::string> known;
+  for (const Row& r : rows)
+    if (!r.density.empty()) known.insert(r.density);
+  for (const std::string& d : densities)
+    if (!known.count(d)) {
+      std::string list;
+      for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+      return "no row of the reference file is of density '" + d + "' (its densities: " + list + ")";
+    }
+  std::erase_if(rows, [&](const Row& r) { return !r.density.empty() && std::find(densities.begin(), densities.end(), r.density) == densities.end(); });
+  return "";
+}
+
 RecordedValidation read_validation_file(const std::string& file) {
   const nlohmann::json j = read_json_file(file);  // "<file>: cannot be read", "<file>: not JSON (...)"
   using t = nlohmann::json::value_t;
@@ -43,6 +60,8 @@ RecordedValidation read_validation_file(const std::string& file) {
     r.samples = strings(j, "samples", "an array of the samples' names");
     r.missing_samples = strings(j, "missing_samples", "an array of names");
     r.missing_results = strings(j, "missing_results", "an array of files");
+    if (j.contains("judged_from") && j.at("judged_from").contains("densities"))
+      r.densities = strings(j.at("judged_from"), "densities", "an array of densities");
     const nlohmann::json& rows = member(j, "rows", t::array, "", "an array of the judged rows");
     for (std::size_t i = 0; i < rows.size(); ++i) {
       const std::string at = "rows[" + std::to_string(i) + "]";

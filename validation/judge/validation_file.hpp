@@ -16,12 +16,18 @@ struct RecordedValidation {
   std::vector<std::string> samples;         // the ensemble's samples (seed<N>), in order
   std::vector<std::string> missing_samples; // samples runs.tsv listed without a folder
   std::vector<std::string> missing_results; // result files missing or not complete
+  std::vector<std::string> densities;       // judged_from.densities: only these densities' rows were judged (empty: every row)
   struct RecordedRow {
     std::string name, density;
     std::vector<RowResult::PerSample> samples;  // value (null: none), note, misfit
   };
   std::vector<RecordedRow> rows;
 };
+
+// `rows` without those of a density `densities` does not list (nothing left out when it is empty);
+// a row that names no density reads the study's only one and is kept. An error naming a density
+// no row has, else "" (validate --densities, and a record judged with them).
+std::string keep_densities(std::vector<Row>& rows, const std::vector<std::string>& densities);
 
 // FILE's record. Throws std::runtime_error naming FILE and what is wrong: cannot be read, not
 // JSON, not a validation.json (a key missing or of the wrong type, named by its path: "rows[3].per_sample[1].value").

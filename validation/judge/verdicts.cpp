@@ -189,7 +189,7 @@ std::string verdicts_text(const std::vector<Judged>& judged, const VerdictsConte
       if (j.result.verdict == Verdict::Consistent) {
         cells.push_back("—");
       } else {
-        const std::string link = "](causes.md#" + cause_anchor(i + 1) + ")";
+        const std::string link = "](" + c.causes_document + "#" + cause_anchor(i + 1) + ")";
         const std::size_t room = compact_cell_limit - code_points("[" + link);
         cells.push_back("[" + cause_line(c.findings, j.row.name, side_effects, room) + link);
       }

@@ -60,6 +60,9 @@ struct VerdictsContext {
   std::size_t missing = 0;            // result files missing or not complete
   std::size_t missing_samples = 0;    // samples runs.tsv lists without a folder
   bool with_causes = false;           // --decisions given: the compact table has a cause column
+  // The document the cause cells link to: causes.md beside verdicts.md; "" for the same document
+  // (reports/index.md, which holds the causes in its own appendix).
+  std::string causes_document = "causes.md";
   std::vector<DecisionsFile> findings;
 };
 
@@ -77,9 +80,13 @@ constexpr std::size_t compact_cell_limit = 80;
 
 // verdicts.md: the provenance line, the counts and the rule, the compact table (row, the reference's
 // statement, ours as mean ± sd, the samples inside the reference's region, the verdict and, with
-// causes, the cause in one line linking to causes.md#cause-N), what is missing, and the verdicts
+// causes, the cause in one line linking to <causes_document>#cause-N), what is missing, and the verdicts
 // that cannot mean much.
 std::string verdicts_text(const std::vector<Judged>& judged, const VerdictsContext& c);
+
+// What validate writes besides verdicts.md when it has causes: the same text with causes_document
+// "", which the report includes as it is (no link of another tool's Markdown is rewritten).
+inline constexpr const char* verdicts_in_report_file = "verdicts_in_report.md";
 
 // causes.md: how the causes are chosen, then for each row that is not consistent a "### Cause N"
 // entry with the row, its verdict and interval and the cause in full. "" when there are no causes

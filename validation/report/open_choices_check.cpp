@@ -47,12 +47,6 @@ Verdict verdict_in(const std::map<std::string, Verdict>& verdicts, const std::st
   return it == verdicts.end() ? Verdict::NotJudged : it->second;
 }
 
-// "8,000 spheres, 3 samples" from a stamp; "size not recorded" without one.
-std::string size_of(const Stamp& s) {
-  if (s.spheres <= 0 || s.samples <= 0) return "size not recorded";
-  return thousands(s.spheres) + " spheres, " + std::to_string(s.samples) + " sample" + (s.samples == 1 ? "" : "s");
-}
-
 }  // namespace
 
 std::string open_choices_check_text(const fs::path& report) {

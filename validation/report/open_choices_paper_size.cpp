@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "judge/decisions_file.hpp"
 #include "judge/validation_file.hpp"
 #include "judge/verdicts.hpp"
 #include "judge/weak_verdicts.hpp"
@@ -35,9 +36,58 @@ std::string row_cell(const RowResult& r) {
          verdict_mark(r.verdict, !weaknesses(r).empty());
 }
 
-std::string size_of(const Stamp& s) {
-  if (s.spheres <= 0 || s.samples <= 0) return "size not recorded";
-  return thousands(s.spheres) + " spheres, " + std::to_string(s.samples) + " sample" + (s.samples == 1 ? "" : "s");
+// A row's verdict in the set, its cell, its warnings and how many samples hold it ("it holds in 0
+// of 3"), from the set's own runs or from the study it borrows a density from.
+struct SetVerdict {
+  Verdict verdict = Verdict::NotJudged;
+  std::string cell;
+  std::vector<Weakness> weak;
+  std::string holds;
+};
+
+SetVerdict set_verdict(const RowResult& r) {
+  return {r.verdict, row_cell(r), weaknesses(r), "it holds in " + std::to_string(r.holds) + " of " + std::to_string(r.valued)};
+}
+
+// A density the set does not run because under the set its runs are another study's: the loose
+// sample's shearing friction is its preparation friction, 0.5, in both readings of the shearing
+// friction, so under the set its tests are the dashpot readings study's (contact dashpots in the
+// tests, the same preparation and seeds): its reading's verdicts on its own samples stand for the set's.
+struct Borrowed {
+  const char* density;
+  const char* study;    // the readings study's folder under the report, with its decisions.json
+  const char* reading;  // its reading that equals the set there
+};
+constexpr Borrowed borrowed[] = {{"loose", "readings/dashpot", "contact_dashpots"}};
+
+// Adds to `in_set` the rows of each borrowed density the set did not judge, from the borrowing
+// study's decisions.json; returns the sentence that says so, with that study's stamp ("" when
+// nothing is borrowed).
+std::string add_borrowed(const fs::path& report, const std::vector<RejudgedRow>& paper, std::map<std::string, SetVerdict>& in_set) {
+  std::string out;
+  for (const Borrowed& b : borrowed) {
+    const fs::path file = report / b.study / "decisions.json";
+    std::error_code ec;
+    if (!fs::exists(file, ec)) continue;
+    const DecisionsFile f = read_decisions_file(file.string());
+    int taken = 0;
+    for (const RejudgedRow& p : paper) {
+      if (p.density != b.density || in_set.count(p.row.name) || !f.rows.count(p.row.name)) continue;
+      const DecisionsFile::Reading* r = f.rows.at(p.row.name).reading(b.reading);
+      if (!r || r->verdict == Verdict::NotJudged || !r->mean) continue;
+      in_set.emplace(p.row.name, SetVerdict{r->verdict,
+                                            "mean " + number(*r->mean) + " (`" + b.study + "`) " + verdict_mark(r->verdict, false),
+                                            {},
+                                            "it is " + std::string(to_string(r->verdict)) + " on the " + std::to_string(f.samples.value_or(0)) +
+                                                " samples of `" + b.study + "`"});
+      ++taken;
+    }
+    if (taken == 0) continue;
+    out += " Its " + std::string(b.density) + " rows (" + std::to_string(taken) + ") are those of `" + b.study + "` under `" + b.reading +
+           "`, judged on that study's own samples (the " + b.density + " sample's runs under the set are that reading's: its shearing "
+           "friction is its preparation friction in both readings). " + stamp_sentence(f.stamp) + ".";
+  }
+  return out;
 }
 
 }  // namespace
@@ -47,60 +97,70 @@ std::string open_choices_paper_size_text(const fs::path& report, const std::vect
   std::error_code ec;
   if (!fs::exists(set_file, ec) || !fs::exists(paper_file, ec)) return "";
   const std::vector<RejudgedRow> in_paper = rejudged(paper_file, rows);
-  std::map<std::string, RejudgedRow> in_set;
-  for (RejudgedRow& r : rejudged(set_file, rows)) in_set.emplace(r.row.name, std::move(r));
-  const nlohmann::json set_record = read_json_file(set_file.string());
-  const Stamp set_stamp = stamp_from_json(set_record.at("stamp"));
+  const RecordedValidation set_record = read_validation_file(set_file.string());
+  std::vector<Row> set_rows = rows;  // the rows of the densities the set ran (its record names them)
+  if (const std::string bad = keep_densities(set_rows, set_record.densities); !bad.empty()) throw std::runtime_error(set_file.string() + ": " + bad);
+  std::map<std::string, SetVerdict> in_set;
+  for (RejudgedRow& r : judge_recorded(set_record, set_rows, set_file.string(), "the paper's reference file"))
+    in_set.emplace(r.row.name, set_verdict(r.result));
+  const std::string borrowed_text = add_borrowed(report, in_paper, in_set);
+  const nlohmann::json set_json = read_json_file(set_file.string());
+  const Stamp set_stamp = stamp_from_json(set_json.at("stamp"));
   // The set: the study variant(s) validate judged (its record names them).
   std::vector<std::string> variants;
-  if (set_record.contains("judged_from") && set_record.at("judged_from").contains("variants"))
-    for (const auto& v : set_record.at("judged_from").at("variants")) variants.push_back("`" + v.get<std::string>() + "`");
+  if (set_json.contains("judged_from") && set_json.at("judged_from").contains("variants"))
+    for (const auto& v : set_json.at("judged_from").at("variants")) variants.push_back("`" + v.get<std::string>() + "`");
   const std::string set_name = variants.empty() ? "The baseline" : "The set " + joined(variants, ", ");
   const Stamp paper_stamp = read_paper_stamp(report);
 
-  // The rows consistent in the paper study that the set does not keep so, and those it misses.
-  std::vector<std::string> lost, missed;
+  // The rows consistent in the paper study that the set does not keep so, those it misses, and
+  // those of a density neither the set nor a study it borrows from ran.
+  std::vector<std::string> lost, not_run;
   int kept = 0, consistent_now = 0, consistent_in_set = 0;
   for (const RejudgedRow& p : in_paper) {
-    const std::string& name = p.row.name;
-    const auto s = in_set.find(name);
-    const Verdict there = s == in_set.end() ? Verdict::NotJudged : s->second.result.verdict;
-    consistent_in_set += there == Verdict::Consistent;
-    if (p.result.verdict == Verdict::Consistent) {
-      ++consistent_now;
-      if (there == Verdict::Consistent) ++kept;
-      else lost.push_back(name);
-    } else {
-      missed.push_back(name);
+    const auto s = in_set.find(p.row.name);
+    if (s == in_set.end()) {
+      not_run.push_back(p.row.name);
+      continue;
     }
+    consistent_in_set += s->second.verdict == Verdict::Consistent;
+    if (p.result.verdict != Verdict::Consistent) continue;
+    ++consistent_now;
+    if (s->second.verdict == Verdict::Consistent) ++kept;
+    else lost.push_back(p.row.name);
   }
   std::string out = set_name + " of `pipeline/studies/open_choices_paper_size.yaml` (`make open-choices-paper-size`; "
                     "every row with its values: `" + std::string(set_dir) + "/verdicts.md`). " + stamp_sentence(set_stamp) + ".";
   if (set_stamp.engine_source != paper_stamp.engine_source)
     out += " ⚠ Another engine than the paper study's (`" + paper_stamp.engine_source + "`).";
   if (set_stamp.baseline != paper_stamp.baseline) out += " Its baseline is not the paper study's (`" + paper_stamp.baseline + "`).";
-  out += "\n\nAt " + size_of(set_stamp) + " per density, **" + std::to_string(consistent_in_set) + " of " + std::to_string(in_paper.size()) +
-         "** rows are consistent; in the paper study (" + size_of(paper_stamp) + "), " + std::to_string(consistent_now) + ". Of the " +
-         std::to_string(consistent_now) + " rows consistent there, " + std::to_string(kept) + " are consistent in the set" +
+  if (!set_record.densities.empty()) out += " It runs the " + joined(set_record.densities, " and ") + " samples only.";
+  out += borrowed_text;
+  const std::size_t judged = in_paper.size() - not_run.size();
+  out += "\n\nAt " + size_of(set_stamp) + " per density, **" + std::to_string(consistent_in_set) + " of " + std::to_string(judged) +
+         "** rows are consistent" + (not_run.empty() ? "" : " (" + std::to_string(not_run.size()) + " not run)") +
+         "; in the paper study (" + size_of(paper_stamp) + "), " + std::to_string(consistent_now) + " of the same " +
+         std::to_string(judged) + ". Of those " + std::to_string(consistent_now) + ", " + std::to_string(kept) + " are consistent in the set" +
          (lost.empty() ? "." : "; not: " + joined(lost, "; ") + ".") + "\n\n";
 
   MarkdownTable table({"row inconsistent in the paper study, or in the set", "the paper study", "the set", "answer at the paper's size"});
   std::vector<Weakness> kinds;
   for (const RejudgedRow& p : in_paper) {
-    const std::string& name = p.row.name;
-    const auto s = in_set.find(name);
+    const auto s = in_set.find(p.row.name);
     if (s == in_set.end()) continue;
-    const RowResult &now = p.result, &set = s->second.result;
-    if (now.verdict == Verdict::Consistent && set.verdict == Verdict::Consistent) continue;
-    for (const RowResult* r : {&now, &set})
-      for (Weakness k : weaknesses(*r))
-        if (std::find(kinds.begin(), kinds.end(), k) == kinds.end()) kinds.push_back(k);
+    const RowResult& now = p.result;
+    const Verdict set = s->second.verdict;
+    if (now.verdict == Verdict::Consistent && set == Verdict::Consistent) continue;
+    for (Weakness k : weaknesses(now))
+      if (std::find(kinds.begin(), kinds.end(), k) == kinds.end()) kinds.push_back(k);
+    for (Weakness k : s->second.weak)
+      if (std::find(kinds.begin(), kinds.end(), k) == kinds.end()) kinds.push_back(k);
     std::string answer;
     if (now.verdict == Verdict::Consistent) answer = "turned inconsistent by the set";
-    else if (set.verdict != Verdict::Consistent) answer = "not answered by the set: it holds in " + std::to_string(set.holds) + " of " + std::to_string(set.valued);
+    else if (set != Verdict::Consistent) answer = "not answered by the set: " + s->second.holds;
     else if (lost.empty()) answer = "consistent together with every row consistent now";
     else answer = "consistent, but not together with " + std::to_string(lost.size()) + " row" + (lost.size() == 1 ? "" : "s") + " consistent now";
-    table.row({cell(name), row_cell(now), row_cell(set), answer});
+    table.row({cell(p.row.name), row_cell(now), s->second.cell, answer});
   }
   std::sort(kinds.begin(), kinds.end());
   return out + table.text() + (kinds.empty() ? std::string() : "\n" + weak_legend(kinds) + ".\n");

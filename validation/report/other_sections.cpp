@@ -85,6 +85,11 @@ std::string stamp_sentence(const Stamp& s) {
   return text;
 }
 
+std::string size_of(const Stamp& s) {
+  if (s.spheres <= 0 || s.samples <= 0) return "size not recorded";
+  return thousands(s.spheres) + " spheres, " + std::to_string(s.samples) + " sample" + (s.samples == 1 ? "" : "s");
+}
+
 Stamp read_section_stamp(const fs::path& report, const OtherStudySection& section) {
   const Stamp own = stamp_in(report / section.stamp_file, section.stamp_key);
   return own.recorded() || !section.recorded_elsewhere ? own : section.recorded_elsewhere(report);

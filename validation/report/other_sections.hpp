@@ -57,6 +57,8 @@ Stamp read_paper_stamp(const std::filesystem::path& report);
 std::string stamp_text(const Stamp& s);
 // The same as the first words of a sentence: "Made by engine ..." or "Stamp not recorded: ...".
 std::string stamp_sentence(const Stamp& s);
+// "8,000 spheres, 3 samples" from a stamp; "size not recorded" without one.
+std::string size_of(const Stamp& s);
 
 // What differs between a section's stamp and the paper study's: "baseline", "engine", "baseline and
 // engine" or "". Baselines: "" when one of the two is not recorded (nothing to compare), and not

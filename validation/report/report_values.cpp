@@ -7,7 +7,6 @@
 #include <ctime>
 #include <fstream>
 #include <map>
-#include <regex>
 #include <set>
 #include <sstream>
 
@@ -16,6 +15,7 @@
 #include "io/hdf5.hpp"
 #include "judge/decisions_file.hpp"
 #include "judge/validation_file.hpp"
+#include "judge/verdicts.hpp"
 #include "report/baseline_check.hpp"
 #include "report/open_choices_check.hpp"
 #include "report/open_choices_paper_size.hpp"
@@ -95,11 +95,11 @@ std::size_t seeds_in(const std::string& dir, const std::string& variant) {
 
 // A study's decisions.json, read once; none when it is not there (the error of one that cannot be
 // read is said, and the section goes without its check).
-std::optional<DecisionsFile> decisions_record(const fs::path& json, const std::vector<Row>& paper) {
+std::optional<DecisionsFile> decisions_record(const fs::path& json) {
   std::error_code ec;
   if (!fs::exists(json, ec)) return std::nullopt;
   try {
-    return read_decisions_file(json.string(), paper);
+    return read_decisions_file(json.string());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "report: %s: %s\n", json.c_str(), e.what());
     return std::nullopt;
@@ -111,7 +111,7 @@ std::optional<DecisionsFile> decisions_record(const fs::path& json, const std::v
 // study's baseline against the paper study's ensemble, rows the studies share alike) once, after
 // them: every row once, with the studies whose baseline has it (a row two baselines give
 // differently: a line for each).
-std::string readings_text(const fs::path& report, const std::vector<Row>& paper, const PaperEnsemble& ensemble) {
+std::string readings_text(const fs::path& report, const PaperEnsemble& ensemble) {
   std::error_code ec;
   std::vector<std::string> names;
   for (const auto& e : fs::directory_iterator(report / "readings", ec))
@@ -123,7 +123,7 @@ std::string readings_text(const fs::path& report, const std::vector<Row>& paper,
   for (const std::string& name : names) {
     const std::optional<SectionDoc> doc = section_doc_in(report, "readings/" + name);
     if (!doc) continue;
-    const std::optional<DecisionsFile> record = decisions_record(report / "readings" / name / "decisions.json", paper);
+    const std::optional<DecisionsFile> record = decisions_record(report / "readings" / name / "decisions.json");
     const std::string size = record && record->particles ? size_label(*record) : "";
     if (record) records.push_back(*record);
     // Its stamp, as a section's (other_sections.hpp); one from another baseline than the paper
@@ -224,8 +224,9 @@ void add_settings(Values& v, const std::string& results, bool have_results) {
 
 void add_tables(Values& v, const fs::path& report, const std::vector<Row>& paper, const std::string& decisions_results) {
   const auto include = [&](const std::string& key, const fs::path& file) { v[key] = read_text(report / file); };
-  // The compact table links each cause to causes.md#cause-N; in the report, to its entry in the appendix.
-  v["file.verdicts"] = std::regex_replace(read_text(report / "verdicts.md"), std::regex(R"(\]\(causes\.md#)"), "](#");
+  // The compact table whose cause cells link to their entries in the report's appendix (without
+  // causes, validate writes verdicts.md alone: it has no link).
+  include("file.verdicts", fs::exists(report / verdicts_in_report_file) ? verdicts_in_report_file : "verdicts.md");
   include("file.causes", "causes.md");
   include("file.validation", "validation.md");
   include("file.samples", "samples.md");
@@ -254,7 +255,7 @@ void add_tables(Values& v, const fs::path& report, const std::vector<Row>& paper
   } catch (const std::exception& e) {
     std::fprintf(stderr, "report: %s; the checks of the decisions studies' baselines are left out\n", e.what());
   }
-  const std::optional<DecisionsFile> decisions = decisions_record(report / "decisions" / "decisions.json", paper);
+  const std::optional<DecisionsFile> decisions = decisions_record(report / "decisions" / "decisions.json");
   v["decisions.size"] = decisions && decisions->particles ? size_label(*decisions) : "";
   v["decisions.check"] = decisions ? baseline_check_section({&*decisions}, ensemble) : "";
   if (v["decisions.size"].empty() && !decisions_results.empty()) {
@@ -264,7 +265,7 @@ void add_tables(Values& v, const fs::path& report, const std::vector<Row>& paper
       v["decisions.size"] = thousands(*ds.particles) + " spheres, " + std::to_string(n) + " sample" + (n == 1 ? "" : "s");
   }
   if (v["decisions.size"].empty()) v["decisions.size"] = "size not recorded";
-  v["file.readings"] = readings_text(report, paper, ensemble);
+  v["file.readings"] = readings_text(report, ensemble);
 }
 
 void add_note_verdicts(Values& v, const PaperEnsemble& judged) {
@@ -365,7 +366,7 @@ void add_figures(Values& v, const fs::path& report, const std::string& notes_tsv
   std::error_code ec;
   std::string readme = read_text(report / "figures" / "README.md");
   if (!readme.empty() && readme.rfind("# ", 0) == 0) readme = readme.substr(readme.find('\n') + 1);
-  v["file.figures_readme"] = std::regex_replace(readme, std::regex(R"(\]\((fig[^)]*)\))"), "](figures/$1)");
+  v["file.figures_readme"] = readme;  // a hand-written page without links to the figures' files
   std::vector<std::string> pngs, renders;
   for (const auto& e : fs::directory_iterator(report / "figures", ec)) {
     const std::string name = e.path().filename().string();

@@ -375,8 +375,7 @@ int decisions_from_json(const std::string& file, const std::string& out, const s
     return 2;
   }
   try {
-    // Read as validate reads it (a file of schema 1 has its explanations' shifts restated there).
-    findings = validation::read_decisions_file(file, rows);
+    findings = validation::read_decisions_file(file);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: --from-json %s: %s\n", file.c_str(), e.what());
     return 2;
@@ -425,8 +424,8 @@ int decisions_from_json(const std::string& file, const std::string& out, const s
       if (const validation::DecisionsFile::Reading* r = row.reading(reading)) {
         e.result = recorded_result(r->mean, std::nullopt, r->verdict, samples);
         e.missing = r->missing_runs;
-        // The shift restated from the recorded means, whatever shift_sd the file holds (a file of
-        // schema 1 counted it in baseline sd alone: +116979 where the sd is far below the resolution).
+        // The shift from the recorded means, against the references' resolution of the row as they
+        // stand now (the file's shift_sd used the resolution of its day).
         if (const std::optional<double> by = row.mean_shift(reading); by && e.missing.empty()) {
           const double z = validation::shift_in_sd(*by, row.baseline_sd.value_or(0.0), d.row.resolution);
           if (std::isfinite(z)) e.shift_sd = z;

@@ -41,8 +41,8 @@ int decisions(const Manifest& manifest, const std::string& results, const std::s
 // The decisions study's section re-drawn from its decisions.json alone (FILE; its results not at
 // hand): OUT/table.md, tornado_<group>.dat and tornado_values.gp in decisions()'s formats. Each
 // shift is restated from the recorded means as (mean - baseline mean) / max(baseline sd, the row's
-// resolution in `references`); the explanations are validate's reading of them
-// (read_decisions_file: a schema-1 file's shifts restated). With `ensemble_json` (the paper study's
+// resolution in `references`); the explanations as the file has them (read_decisions_file reads
+// schema 2 only). With `ensemble_json` (the paper study's
 // validation.json), the marks are the verdicts of its full-size ensemble, each reading's shift of
 // the mean applied to its samples, as decisions() draws them from the results; without it, the
 // verdicts the file records (of the study's own samples), and the first paragraph says so. The

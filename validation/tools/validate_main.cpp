@@ -29,6 +29,7 @@
 // keep, --out is left as it is. Either way validate says which and, with nothing judged, exits 0.
 // Every row is computed per sample; its verdict compares the reference's value, widened by the
 // row's tolerance, with the 95 % prediction interval of a single sample of the ensemble (rows.hpp).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -71,6 +72,7 @@ struct Options {
   bool profile_given = false;
   std::vector<std::string> decisions;  // decisions.json files, in the order given
   std::string without_results;         // "", "keep" or "redraw"
+  std::vector<std::string> densities;  // only the rows of these densities (empty: every row)
 };
 
 // The options, or nothing when they are wrong or --help was asked (`code`: the exit status, 0 for
@@ -94,6 +96,9 @@ std::optional<Options> parse_options(int argc, char** argv, int& code) {
                  "a decisions study's decisions.json (compare-runs decisions); may be given several times, each row's cause "
                  "is what the files of the largest size that judged it found")
       ->allow_extra_args(false);
+  app.add_option("--densities", o.densities,
+                 "judge only the rows of these densities, for a study that runs some of the reference file's densities; "
+                 "validation.json records them (judged_from.densities)");
   app.add_option("--without-results", o.without_results,
                  "a --results folder without runs.tsv (its study has not run here) is no error: redraw = judged again from the "
                  "committed --out/validation.json, else --out kept; keep = --out kept; says which (exit 0 when nothing is judged)")
@@ -135,12 +140,12 @@ std::optional<Options> parse_options(int argc, char** argv, int& code) {
 
 // The decisions studies' findings (compare-runs decisions), of the files that are there (a study
 // not run yet has none).
-std::vector<validation::DecisionsFile> read_findings(const std::vector<std::string>& files, const std::vector<validation::Row>& rows) {
+std::vector<validation::DecisionsFile> read_findings(const std::vector<std::string>& files) {
   std::vector<validation::DecisionsFile> out;
   for (const std::string& file : files) {
     if (!fs::exists(file)) continue;
     try {
-      out.push_back(validation::read_decisions_file(file, rows));
+      out.push_back(validation::read_decisions_file(file));
     } catch (const std::exception& e) {
       throw std::runtime_error(file + ": " + e.what());
     }
@@ -231,6 +236,7 @@ nlohmann::ordered_json validation_json(const Options& o, const std::string& labe
   json["profile"] = o.profile;
   json["references"] = o.references;
   json["judged_from"] = !from_results ? nlohmann::ordered_json{{"validation_json", o.from_json}} : nlohmann::ordered_json{{"results", o.results}};
+  if (!o.densities.empty()) json["judged_from"]["densities"] = o.densities;
   // A study of variants: the ones the rows read, so that a record names the set it judged.
   std::set<std::string> variants;
   for (const Judged& j : judged)
@@ -316,8 +322,15 @@ int tool_main(int argc, char** argv) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;
   }
+  if (record && o.densities.empty()) o.densities = record->densities;  // judged again on the densities it was judged on
+  if (const std::string bad = validation::keep_densities(refs.rows, o.densities); !bad.empty()) {
+    std::fprintf(stderr, "error: --densities: %s\n", bad.c_str());
+    return 2;
+  }
+  if (record && !o.densities.empty())  // a record of every density judged again on some of them
+    std::erase_if(record->rows, [&](const auto& r) { return std::find(o.densities.begin(), o.densities.end(), r.density) == o.densities.end(); });
   try {
-    findings = read_findings(o.decisions, refs.rows);
+    findings = read_findings(o.decisions);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: --decisions %s\n", e.what());
     return 2;
@@ -382,6 +395,15 @@ int tool_main(int argc, char** argv) {
   try {
     const fs::path out(o.out);
     dem::write_file_atomically((out / "verdicts.md").string(), validation::verdicts_text(judged, context));
+    // With causes, the same as the report shows it: its cause cells link to the causes in the
+    // report's appendix (without causes there is no link, and the report shows verdicts.md).
+    if (context.with_causes) {
+      validation::VerdictsContext in_report = context;
+      in_report.causes_document = "";
+      dem::write_file_atomically((out / validation::verdicts_in_report_file).string(), validation::verdicts_text(judged, in_report));
+    } else {
+      fs::remove(out / validation::verdicts_in_report_file);
+    }
     // The causes in full, which the compact table links to; none: no stale file from an earlier run.
     if (const std::string causes = validation::causes_text(judged, context); !causes.empty())
       dem::write_file_atomically((out / "causes.md").string(), context.provenance + "\n\n" + causes);

@@ -1,7 +1,6 @@
 // What validate reads back of the decisions studies (decisions_file.hpp): the cause of a row is what
 // the files of the largest size that judged it found, named from the files' own records, with what
-// an explaining reading does to the other rows; a file written before shifts had a floor has its
-// shifts restated from its own numbers.
+// an explaining reading does to the other rows; a file of another schema is refused.
 #include <catch2/catch.hpp>
 
 #include <filesystem>
@@ -32,13 +31,6 @@ validation::Row row_named(const std::string& name, double resolution) {
   return r;
 }
 
-// restate_shifts on a row of decisions.json as the file holds it.
-std::string restate_shifts_json(const std::string& explanation, const nlohmann::json& row, double resolution) {
-  nlohmann::json with = row;
-  with["explanation"] = explanation;
-  return validation::restate_shifts(explanation, validation::finding_from_json(with), resolution);
-}
-
 }  // namespace
 
 TEST_CASE("shift phrases: two significant digits, beyond ±10 said with the value", "[decisions][format]") {
@@ -55,14 +47,16 @@ TEST_CASE("shift phrases: two significant digits, beyond ±10 said with the valu
 TEST_CASE("validate --decisions: a row's cause is the largest size that judged it, that size named", "[decisions][validate]") {
   const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "decisions_file";
   fs::remove_all(dir);
-  // The 1,000-sphere file as committed: no schema, no size, no `judged`.
-  const std::string small = write_json(
-      dir / "small.json",
-      {{"baseline", "baseline"},
-       {"rows",
-        {{{"name", "A"}, {"explanation", "consistent under r (1.50 sd, t = 2.52)"}},
-         {{"name", "B"}, {"explanation", "unexplained: no reading makes it consistent"}},
-         {{"name", "C"}, {"explanation", "not judged: fewer than 2 samples with a value"}}}}});
+  // A file that does not record its size.
+  const auto row = [](const std::string& name, bool judged, const std::vector<std::string>& by, const std::string& explanation) {
+    return nlohmann::json{{"name", name}, {"judged", judged}, {"made_consistent_by", by}, {"explanation", explanation}};
+  };
+  const std::string small = write_json(dir / "small.json", {{"schema", 2},
+                                                            {"baseline", "baseline"},
+                                                            {"rows",
+                                                             {row("A", true, {"r"}, "consistent under r (+1.5 sd, t = 2.52)"),
+                                                              row("B", true, {}, "unexplained: no reading makes it consistent"),
+                                                              row("C", false, {}, "not judged: fewer than 2 samples with a value")}}});
   // A readings file at 8,000 spheres: it judged A, not B (a run missing), and has no C.
   const std::string big = write_json(
       dir / "big.json",
@@ -71,14 +65,13 @@ TEST_CASE("validate --decisions: a row's cause is the largest size that judged i
        {"particles", 8000},
        {"samples", 3},
        {"rows",
-        {{{"name", "A"}, {"judged", true}, {"explanation", "consistent under r (-2.0 sd, t = 4.10)"}},
-         {{"name", "B"}, {"judged", false}, {"explanation", "not judged: no reading has every run this row reads (r lacks seed3 test1)"}}}}});
-  const std::vector<validation::Row> rows = {row_named("A", 0), row_named("B", 0), row_named("C", 0)};
-  const DecisionsFile s = validation::read_decisions_file(small, rows), b = validation::read_decisions_file(big, rows);
+        {row("A", true, {"r"}, "consistent under r (-2.0 sd, t = 4.10)"),
+         row("B", false, {}, "not judged: no reading has every run this row reads (r lacks seed3 test1)")}}});
+  const DecisionsFile s = validation::read_decisions_file(small), b = validation::read_decisions_file(big);
   CHECK(validation::size_label(s) == "size not recorded");
   CHECK(validation::size_label(b) == "8,000 spheres, 3 samples");
   CHECK(s.rows.at("A").judged);
-  CHECK_FALSE(s.rows.at("C").judged);  // an old file: "not judged" at the start of its explanation
+  CHECK_FALSE(s.rows.at("C").judged);
 
   for (const std::vector<DecisionsFile>& files : {std::vector<DecisionsFile>{s, b}, std::vector<DecisionsFile>{b, s}}) {
     // A: both judged it; 8,000 spheres is the larger size, whichever file is given first.
@@ -92,34 +85,26 @@ TEST_CASE("validate --decisions: a row's cause is the largest size that judged i
     CHECK(validation::cause_text(files, "C") == "size not recorded: not judged: fewer than 2 samples with a value");
     CHECK(validation::cause_text(files, "D") == "no decisions study has judged this row");
   }
-  // One file: its finding as before (no size), its shift restated (resolution 0 here: the sd is the unit, the
-  // file has no numbers, so the value is rephrased only).
+  // One file: its finding as written (no size).
   CHECK(validation::cause_text({s}, "A") == "consistent under r (+1.5 sd, t = 2.52)");
   CHECK(validation::cause_text({}, "A") == "the decisions study has not judged this row");
 }
 
-TEST_CASE("an explanation written before the floor: its shifts restated from its own numbers", "[decisions][validate]") {
-  // The committed 1,000-sphere file's "medium: εv grows" row: baseline 0.000447401 ± 0.0002257 %, the
-  // reading 0.286338 %; the row's resolution 0.005 %. (0.286338 - 0.000447401) / 0.005 = 57.18.
-  const nlohmann::json medium = {{"baseline_mean", 0.000447401},
-                                 {"baseline_sd", 0.0002257},
-                                 {"readings", {{"shear_prep_friction", {{"mean", 0.286338}, {"shift_sd", 1266.68}}}}}};
-  CHECK(restate_shifts_json("consistent under shear_prep_friction (1266.68 sd, t = 2.76), its shift of the mean applied",
-                                   medium, 0.005) ==
-        "consistent under shear_prep_friction (beyond +10 sd (+57), t = 2.76), its shift of the mean applied");
-  // The dense slope: sd 0.118947 above the resolution 0.01, so the sd is the unit:
-  // (0.954353 - 1.39596) / 0.118947 = -3.713.
-  const nlohmann::json slope = {{"baseline_mean", 1.39596}, {"baseline_sd", 0.118947}, {"readings", {{"shear_prep_friction", {{"mean", 0.954353}}}}}};
-  CHECK(restate_shifts_json("consistent under shear_prep_friction (-3.71 sd, t = 5.94)", slope, 0.01) ==
-        "consistent under shear_prep_friction (-3.7 sd, t = 5.94)");
-  // "mean shifted X sd" inside a reading's parentheses, and a reading the row does not list (its value kept,
-  // rephrased): Test 3's lead, (0.14732 + 0.0336248) / 0.181819 = 0.995.
-  const nlohmann::json lead = {{"baseline_mean", -0.0336248}, {"baseline_sd", 0.181819}, {"readings", {{"test3_directions", {{"mean", 0.14732}}}}}};
-  CHECK(restate_shifts_json("most: test3_directions (5 of 5, mean shifted 1.00 sd); would be under other (0.34 sd, t = 0.57)", lead,
-                                   0.005) == "most: test3_directions (5 of 5, mean shifted +1.0 sd); would be under other (+0.34 sd, t = 0.57)");
-  // Nothing to restate: as it is.
-  CHECK(restate_shifts_json("consistent on the full-size ensemble (within the scatter of one sample)", lead, 0.005) ==
-        "consistent on the full-size ensemble (within the scatter of one sample)");
+TEST_CASE("a decisions.json of another schema is refused, naming the schema and what to do", "[decisions][validate]") {
+  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "decisions_file_schema";
+  fs::remove_all(dir);
+  // A file without `schema` named its readings in prose alone (schema 1); one of a later schema
+  // may record what this tool would misread.
+  for (const nlohmann::json& schema : {nlohmann::json(), nlohmann::json(1), nlohmann::json(3)}) {
+    nlohmann::json j = {{"baseline", "baseline"}, {"rows", {{{"name", "A"}, {"judged", true}, {"made_consistent_by", {"r"}}, {"explanation", "x"}}}}};
+    if (!schema.is_null()) j["schema"] = schema;
+    const std::string file = write_json(dir / ("s" + schema.dump() + ".json"), j);
+    const std::string expected = "is of schema " + (schema.is_null() ? std::string("1") : schema.dump());
+    CHECK_THROWS_WITH(validation::read_decisions_file(file), Catch::Contains(expected) && Catch::Contains("compare-runs decisions"));
+  }
+  // Schema 2 without the typed fields: the key named.
+  const std::string lacking = write_json(dir / "lacking.json", {{"schema", 2}, {"rows", {{{"name", "A"}, {"explanation", "x"}}}}});
+  CHECK_THROWS_WITH(validation::read_decisions_file(lacking), Catch::Contains("judged"));
 }
 
 TEST_CASE("validate --decisions: two studies of the same size both said, the one that explains first, with its side effects",
@@ -134,11 +119,16 @@ TEST_CASE("validate --decisions: two studies of the same size both said, the one
                       {{"schema", 2}, {"baseline", "baseline"}, {"particles", 8000}, {"samples", 3}, {"rows", rows}});
   };
   const std::string grading = study(
-      "grading", {{{"name", "A"}, {"judged", true}, {"explanation", "no reading does: within scatter; most: grading_by_mass (0 of 5)"}}});
-  // No `made_consistent_by` in A (a file written before it): the reading is read from the explanation.
+      "grading", {{{"name", "A"},
+                   {"judged", true},
+                   {"made_consistent_by", nlohmann::json::array()},
+                   {"explanation", "no reading does: within scatter; most: grading_by_mass (0 of 5)"}}});
   const std::string dashpot = study(
       "dashpot",
-      {{{"name", "A"}, {"judged", true}, {"explanation", "consistent under contact_dashpots (-2.1 sd, t = 2.23), its shift of the mean applied"}},
+      {{{"name", "A"},
+        {"judged", true},
+        {"made_consistent_by", {"contact_dashpots"}},
+        {"explanation", "consistent under contact_dashpots (-2.1 sd, t = 2.23), its shift of the mean applied"}},
        {{"name", "B"},
         {"judged", true},
         {"baseline_mean", 0.25},
@@ -151,9 +141,10 @@ TEST_CASE("validate --decisions: two studies of the same size both said, the one
         {"baseline_mean", 1.0},
         {"baseline_sd", 0.1},
         {"readings", {{"contact_dashpots", {{"mean", 1.0}}}}},
+        {"made_consistent_by", nlohmann::json::array()},
         {"explanation", "consistent on the full-size ensemble"}}});
   const std::vector<validation::Row> rows = {row_named("A", 0), row_named("B", 0.01), row_named("C", 0.01)};
-  const std::vector<DecisionsFile> files = {validation::read_decisions_file(grading, rows), validation::read_decisions_file(dashpot, rows)};
+  const std::vector<DecisionsFile> files = {validation::read_decisions_file(grading), validation::read_decisions_file(dashpot)};
   CHECK(validation::study_label(files[1]) == "dashpot");
   CHECK(files[1].rows.at("A").explained_by == std::vector<std::string>{"contact_dashpots"});
   CHECK(*files[1].rows.at("B").mean_shift("contact_dashpots") == Approx(0.25));
@@ -201,15 +192,3 @@ TEST_CASE("validate --decisions: two studies of the same size both said, the one
   CHECK(validation::cause_text({files[0]}, "A") == "no reading does: within scatter; most: grading_by_mass (0 of 5)");
 }
 
-TEST_CASE("the readings an explanation names after \"consistent under\"", "[decisions][validate]") {
-  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "decisions_file_names";
-  fs::remove_all(dir);
-  const std::string file = write_json(
-      dir / "x" / "decisions.json",
-      {{"rows",
-        {{{"name", "A"}, {"explanation", "consistent under a_1 (beyond -10 sd (-14), t = 24.34), b.2 (+1.5 sd, t = 2.52), its shift of the mean applied"}},
-         {{"name", "B"}, {"explanation", "no reading does: within scatter; would be consistent under c (+1.0 sd, t = 1.41), but"}}}}});
-  const DecisionsFile f = validation::read_decisions_file(file, {row_named("A", 0), row_named("B", 0)});
-  CHECK(f.rows.at("A").explained_by == std::vector<std::string>{"a_1", "b.2"});
-  CHECK(f.rows.at("B").explained_by.empty());  // "would be consistent under" explains nothing
-}

@@ -101,10 +101,13 @@ TEST_CASE("report: the committed report written again from what is committed, it
   CHECK(compact_lines > 2);
   // Every cause the compact table links to has its entry, in the appendix.
   const std::regex link(R"(\]\(#(cause-[0-9]+)\))");
-  for (std::sregex_iterator it(text.begin(), text.end(), link), end; it != end; ++it) {
+  std::size_t links = 0;
+  for (std::sregex_iterator it(text.begin(), text.end(), link), end; it != end; ++it, ++links) {
     const std::string n = (*it)[1].str().substr(6);
     CHECK(text.find("\n### Cause " + n + "\n") > text.find("## Appendix: causes of the verdicts"));
   }
+  CHECK(links > 0);  // the committed verdicts have inconsistent rows, each linked to its cause
+  CHECK(text.find("](causes.md#") == std::string::npos);  // none to a file the report does not hold
   // The set-up from what is committed: validation.json's samples (seed1..5, the three densities of
   // its rows) and figure-data's record of the settings, values.gp (samples.md: 8000 particles a sample).
   CHECK_THAT(text, Catch::Contains("| samples | 5 per density (loose, medium, dense), seed1–seed5 |"));

@@ -1,7 +1,7 @@
 // compare-runs decisions --from-json: the decisions section re-drawn from a decisions.json alone.
 // Every shift is restated from the recorded means against max(baseline sd, the row's resolution)
 // and written by shift_text (beyond ±10: the value and a marker), the mean ± sd to the digits of
-// the scatter, each mark as the file records it, the explanation's shifts restated, and a first
+// the scatter, each mark as the file records it, the explanation as written, and a first
 // paragraph that says where the table comes from and what it cannot show.
 #include <catch2/catch.hpp>
 
@@ -42,21 +42,24 @@ double dat_shift(const std::string& dat, const std::string& reading) {
   return -1e300;
 }
 
-// A decisions.json as the 1,000-sphere study wrote it before schema 2 (no schema, no size, shifts
-// in baseline sd alone): two rows, two readings. `size` adds "particles" and "samples".
+// A decisions.json of a 1,000-sphere study: two rows, two readings, each reading's shift_sd as
+// written against the resolution of its day (here the baseline sd alone, far below today's
+// resolution for εv). `size` adds "particles" and "samples".
 std::string decisions_json(bool size) {
   return std::string(R"js({
-  "baseline": "baseline",)js") +
+  "schema": 2, "baseline": "baseline",)js") +
          (size ? R"js( "particles": 1000, "samples": 3,)js" : "") + R"js(
   "rows": [
     {"name": "e0, loose", "group": "samples", "baseline_mean": 0.70049, "baseline_sd": 0.0213, "baseline_verdict": "consistent",
      "readings": {"r1": {"mean": 0.73, "shift_sd": 1.38545, "verdict": "inconsistent"},
                   "r2": {"mean": 0.69, "shift_sd": -0.492488, "verdict": "consistent"}},
+     "judged": true, "made_consistent_by": [],
      "explanation": "consistent on the full-size ensemble (within the scatter of one sample)"},
     {"name": "ev, loose", "group": "volumetric strain", "baseline_mean": 1e-05, "baseline_sd": 2.4e-06, "baseline_verdict": "consistent",
      "readings": {"r1": {"mean": 0.28, "shift_sd": 116662, "verdict": "inconsistent"},
                   "r2": {"mean": 1.2e-05, "shift_sd": 0.833333, "verdict": "consistent"}},
-     "explanation": "consistent under r1 (116662.50 sd, t = 2.76), its shift of the mean applied to the full-size ensemble"}
+     "judged": true, "made_consistent_by": ["r1"],
+     "explanation": "consistent under r1 (beyond +10 sd (+56), t = 2.76), its shift of the mean applied to the full-size ensemble"}
   ],
   "missing_results": 0
 }

@@ -159,7 +159,7 @@ rows:
   {
     std::ifstream again(dir / "out" / "decisions.json");
     const nlohmann::json written = nlohmann::json::parse(again);
-    const validation::DecisionsFile back = validation::read_decisions_file((dir / "out" / "decisions.json").string(), {});
+    const validation::DecisionsFile back = validation::read_decisions_file((dir / "out" / "decisions.json").string());
     CHECK(nlohmann::json(validation::decisions_file_json(back)) == written);
     REQUIRE(back.settings.size() == 2);
     CHECK(back.settings[0].first == "baseline");

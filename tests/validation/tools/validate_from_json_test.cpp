@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -82,7 +83,7 @@ TEST_CASE("validate --from-json: the tables judged again from validation.json ar
       "  - {name: \"e0 (void ratio)\", quantity: void_ratio_after_preparation, reference: 0.6, check: within, tolerance: 0.1, source: s, reason: r}\n"
       "  - {name: CN, quantity: coordination_after_preparation, rule: majority, reference: 3, check: at_least, source: s, reason: r}\n"
       "  - {name: \"e0 far off\", quantity: void_ratio_after_preparation, reference: 5, check: within, tolerance: 0.1, source: s, reason: r}\n";
-  std::ofstream(dir / "decisions.json") << R"({"rows": [{"name": "e0 far off", "judged": true,
+  std::ofstream(dir / "decisions.json") << R"({"schema": 2, "rows": [{"name": "e0 far off", "judged": true, "made_consistent_by": [],
       "explanation": "unexplained: no reading makes it consistent; the interval of the baseline misses the paper by 4.300"}]})";
   const std::string refs = (dir / "refs.yaml").string(), decisions = (dir / "decisions.json").string();
   const auto from_results = validate("--results '" + results.string() + "' --references '" + refs + "' --out '" + (dir / "a").string() +
@@ -114,6 +115,11 @@ TEST_CASE("validate --from-json: the tables judged again from validation.json ar
   // The cause links to its entry: causes.md#cause-3, "### Cause 3" there.
   CHECK_THAT(text_of(dir / "b" / "verdicts.md"), Catch::Contains("[no reading explains it](causes.md#cause-3)"));
   CHECK_THAT(text_of(dir / "b" / "causes.md"), Catch::Contains("\n### Cause 3\n\n**e0 far off**: ❌ inconsistent"));
+  // As the report includes it: the same text, each cause linked into the same document.
+  std::string in_report = text_of(dir / "b" / "verdicts.md");
+  for (std::size_t at; (at = in_report.find("](causes.md#")) != std::string::npos;) in_report.erase(at + 2, 9);
+  CHECK(text_of(dir / "b" / "verdicts_in_report.md") == in_report);
+  CHECK_THAT(in_report, Catch::Contains("[no reading explains it](#cause-3)"));
   // Judged again from its own output once more: the same again.
   const auto third = validate("--from-json '" + (dir / "b" / "validation.json").string() + "' --references '" + refs + "' --out '" +
                               (dir / "b").string() + "' --decisions '" + decisions + "'");
@@ -185,6 +191,43 @@ TEST_CASE("validate --from-json on the committed validation: every compact cell 
       CHECK_THAT(causes, Catch::Contains("\n### Cause " + n + "\n"));
     }
   CHECK(linked == j.at("inconsistent").get<int>() + j.at("not_judged").get<int>());
+}
+
+TEST_CASE("validate --densities: only those densities' rows judged, recorded, and judged again on them", "[validate][cli][from-json]") {
+  // The committed paper study judged on its medium and dense rows alone: the loose rows (every row
+  // of reference_data/paper.yaml that names density loose) are left out, the others keep their verdicts.
+  const fs::path dir = dem::test::scratch_dir("validate_densities");
+  const std::string refs = source + "/reference_data/paper.yaml";
+  const nlohmann::json all = nlohmann::json::parse(text_of(source + "/reports/validation.json"));
+  std::map<std::string, std::string> verdict_of;
+  std::size_t loose = 0;
+  for (const auto& r : all.at("rows")) {
+    verdict_of[r.at("name").get<std::string>()] = r.at("verdict").get<std::string>();
+    loose += r.at("density") == "loose";
+  }
+  REQUIRE(loose > 0);
+  const auto r = validate("--from-json '" + source + "/reports/validation.json' --references '" + refs + "' --densities medium dense --out '" +
+                          (dir / "a").string() + "'");
+  INFO(r.out);
+  REQUIRE(r.exit_code == 0);
+  const nlohmann::json a = nlohmann::json::parse(text_of(dir / "a" / "validation.json"));
+  CHECK(a.at("rows").size() == all.at("rows").size() - loose);
+  CHECK(a.at("judged_from").at("densities") == nlohmann::json({"medium", "dense"}));
+  for (const auto& row : a.at("rows")) {
+    CHECK(row.at("density") != "loose");
+    CHECK(row.at("verdict") == verdict_of.at(row.at("name").get<std::string>()));
+  }
+  // Its record judged again without the option: on the densities it records.
+  const auto again = validate("--from-json '" + (dir / "a" / "validation.json").string() + "' --references '" + refs + "' --out '" +
+                              (dir / "b").string() + "'");
+  INFO(again.out);
+  CHECK(again.exit_code == 0);
+  CHECK(nlohmann::json::parse(text_of(dir / "b" / "validation.json")).at("rows") == a.at("rows"));
+  // A density no row has: exit 2, named with the densities there are.
+  const auto bad = validate("--from-json '" + source + "/reports/validation.json' --references '" + refs + "' --densities tight --out '" +
+                            (dir / "c").string() + "'");
+  CHECK(bad.exit_code == 2);
+  CHECK_THAT(bad.out, Catch::Contains("--densities: no row of the reference file is of density 'tight' (its densities: dense, loose, medium)"));
 }
 
 TEST_CASE("validate names samples that are one sample: the same values to the last digit in every row, exit 1", "[validate][cli][samples]") {
