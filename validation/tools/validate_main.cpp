@@ -291,28 +291,30 @@ bool samples_distinct(const std::vector<std::vector<std::string>>& identical) {
   return identical.empty();
 }
 
-}  // namespace
-
-// The tool; main runs it under guarded_main (a file system error names its path, exit 1).
-int tool_main(int argc, char** argv) {
-  int code = 2;
-  std::optional<Options> opt = parse_options(argc, argv, code);
-  if (!opt) return code;
-  Options& o = *opt;
+// What validate reads before judging: the record of --from-json (its profile and densities taken
+// when not given), the reference file's rows of the densities judged, the decisions files.
+struct Inputs {
   validation::References refs;
   std::vector<validation::DecisionsFile> findings;
   std::optional<validation::RecordedValidation> record;
+};
+
+// The inputs, or nothing after saying on stderr what is wrong (exit 2).
+std::optional<Inputs> read_inputs(Options& o) {
+  Inputs in;
+  validation::References& refs = in.refs;
+  std::optional<validation::RecordedValidation>& record = in.record;
   if (!o.from_json.empty()) {
     std::error_code ec;
     if (!fs::exists(o.from_json, ec)) {
       std::fprintf(stderr, "error: --from-json '%s' does not exist (an earlier validate's validation.json)\n", o.from_json.c_str());
-      return 2;
+      return std::nullopt;
     }
     try {
       record = validation::read_validation_file(o.from_json);  // errors name the file
     } catch (const std::exception& e) {
       std::fprintf(stderr, "error: --from-json %s\n", e.what());
-      return 2;
+      return std::nullopt;
     }
     if (!o.profile_given) o.profile = record->profile;  // judged again at the profile it was judged at
   }
@@ -320,20 +322,20 @@ int tool_main(int argc, char** argv) {
     refs = validation::read_references(o.references, o.profile);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
-    return 2;
+    return std::nullopt;
   }
   if (record && o.densities.empty()) o.densities = record->densities;  // judged again on the densities it was judged on
   if (const std::string bad = validation::keep_densities(refs.rows, o.densities); !bad.empty()) {
     std::fprintf(stderr, "error: --densities: %s\n", bad.c_str());
-    return 2;
+    return std::nullopt;
   }
   if (record && !o.densities.empty())  // a record of every density judged again on some of them
     std::erase_if(record->rows, [&](const auto& r) { return std::find(o.densities.begin(), o.densities.end(), r.density) == o.densities.end(); });
   try {
-    findings = read_findings(o.decisions);
+    in.findings = read_findings(o.decisions);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: --decisions %s\n", e.what());
-    return 2;
+    return std::nullopt;
   }
   // A file that declares profiles knows them all: another name than those and paper (every row as
   // written) is a typo, which would judge every row as written.
@@ -342,8 +344,24 @@ int tool_main(int argc, char** argv) {
     for (const std::string& p : refs.profiles) known += ", " + p;
     std::fprintf(stderr, "error: --profile '%s': no row of %s has it; its profiles: %s\n", o.profile.c_str(), o.references.c_str(),
                  known.c_str());
-    return 2;
+    return std::nullopt;
   }
+  return in;
+}
+
+}  // namespace
+
+// The tool; main runs it under guarded_main (a file system error names its path, exit 1).
+int tool_main(int argc, char** argv) {
+  int code = 2;
+  std::optional<Options> opt = parse_options(argc, argv, code);
+  if (!opt) return code;
+  Options& o = *opt;
+  std::optional<Inputs> in = read_inputs(o);
+  if (!in) return 2;
+  validation::References& refs = in->refs;
+  std::vector<validation::DecisionsFile>& findings = in->findings;
+  std::optional<validation::RecordedValidation>& record = in->record;
   if (const std::string bad = check_folders(o); !bad.empty()) {
     std::fprintf(stderr, "error: %s\n", bad.c_str());
     return 2;
