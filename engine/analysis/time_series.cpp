@@ -27,7 +27,7 @@ struct RowInputs {
   const Simulation& sim;
   const RowContext& where;
   const PeriodicCell& cell;
-  const EnergyBalance& e;
+  const EnergyBalance e;  // a copy: Simulation::energy() returns one
   const ContactCounts c;
   const Mat3& s;  // the contact stress
   const Mat3 fabric, strong;

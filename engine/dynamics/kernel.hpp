@@ -114,6 +114,13 @@ struct PairForces {
   // and the branch vector [m] of this evaluation, for the second half of their dissipation
   // (dashpot_second_half, below).
   std::vector<Vec3> dashpot_force, dashpot_branch;
+  // Laws that rotate: a_i (n x F_d) and a_j (n x F_d), a the lever arms, n the normal: the
+  // dashpot force's share in the power of the spins, F_d . ((a_i w_i + a_j w_j) x n) =
+  // w_i . a_i (n x F_d) + w_j . a_j (n x F_d), so that the second half needs no geometry again.
+  std::vector<Vec3> dashpot_spin_i, dashpot_spin_j;
+  // Per pair chunk, when the pair loop booked the evaluation before's second half
+  // (PairLoop::DashpotOut::book_previous_half): -sum F_d . u(n-1/2) of its pairs [W].
+  std::vector<double> previous_dashpot_sums;
   // Laws whose dashpot coefficients depend on the masses only (Law::dashpot_per_pair): per pair,
   // c_n = 2 zeta sqrt(m* k_n) [kg/s] and c_t / dt [kg/s^2] (frictional laws), and the pair list
   // they were computed for (VerletList::changes; dashpot_coefficients below).
@@ -161,15 +168,23 @@ struct PairLoop {
   struct DashpotOut {
     Vec3* __restrict force;
     Vec3* __restrict branch;
+    Vec3* __restrict spin_i;  // PairForces::dashpot_spin_i, _j (laws that rotate)
+    Vec3* __restrict spin_j;
     const double* __restrict c_n;          // the per-pair coefficients (Law::dashpot_per_pair), else null
     const double* __restrict c_t_over_dt;
+    // Book the second half of the evaluation before's dashpot work (dashpot_second_half) while
+    // this loop has the velocities of the half step after it: from the force and branch vector
+    // still stored for each pair, before this evaluation's replace them, into
+    // DashpotSums::previous (then PairForces::previous_dashpot_sums). Only while the pair list is
+    // the one they were stored for.
+    bool book_previous_half = false;
   };
   struct NoDashpot {};
   [[no_unique_address]] std::conditional_t<Law::damped, DashpotOut, NoDashpot> dashpot_out;
 
   // Sizes the outputs and points at them.
   PairLoop(const Law& law_, const Particles& p, const PeriodicCell& cell_, const PairList& pairs, ContactHistory& history,
-           const CellRates& rates_, double dt_, PairForces& out)
+           const CellRates& rates_, double dt_, PairForces& out, bool book_previous_half = false)
       : law(law_), cell(cell_), rates(rates_), dt(dt_) {
     // One spare entry, zero: the vectorised update reads each entry as four doubles (the fourth
     // is the next entry's first, and is dropped), so the last pair's read stays inside the array.
@@ -198,9 +213,18 @@ struct PairLoop {
     if constexpr (Law::damped) {
       out.dashpot_force.resize(pairs.size());
       out.dashpot_branch.resize(pairs.size());
-      dashpot_out = {out.dashpot_force.data(), out.dashpot_branch.data(), out.dashpot_c_n.data(), out.dashpot_c_t_over_dt.data()};
+      if constexpr (Law::rotates) out.dashpot_spin_i.resize(pairs.size()), out.dashpot_spin_j.resize(pairs.size());
+      dashpot_out = {out.dashpot_force.data(), out.dashpot_branch.data(), out.dashpot_spin_i.data(), out.dashpot_spin_j.data(),
+                     out.dashpot_c_n.data(), out.dashpot_c_t_over_dt.data(), book_previous_half};
     }
   }
+};
+
+// A pair chunk's sums for a law with contact dashpots: also the second half of the evaluation
+// before's dashpot work, when the loop books it (in its own struct, so that the other laws' sums
+// and their loops' code stay as they were).
+struct DashpotSums : StepSums {
+  double previous = 0;  // -sum F_d . u(n-1/2) of the chunk's pairs [W]
 };
 
 // Laws with Law::dashpot_per_pair: each pair's dashpot coefficients c_n = 2 zeta sqrt(m* k_n)
@@ -402,21 +426,26 @@ MotionSums total_of_chunks(const std::vector<MotionSums>& chunk_sums, bool wrapp
 //
 // Instantiated for every law of AnyContactLaw, both damping forms, orthorhombic and sheared
 // (dynamics/kernel_simd.cpp).
+//
+// Laws with contact dashpots, `book_previous_half`: the loop also books the second half of the
+// evaluation before's dashpot work (PairLoop::DashpotOut), into out.previous_dashpot_sums: added
+// in chunk order, the same bits as dashpot_second_half would have given after that step.
 template <class Law, class DampingPolicy, bool Sheared>
 MotionSums forces_and_motion(int simd_lanes, const Law& law, const DampingPolicy& damping, Particles& p,
                              const PeriodicCell& cell, const PairList& pairs, ContactHistory& history,
                              const PairIndex& index, const CellRates& rates, double dt, PairForces& out,
-                             StepSums& sums, std::vector<Vec3>& force);
+                             StepSums& sums, std::vector<Vec3>& force, bool book_previous_half = false);
 
 // What the second half of the contact dashpots' work reads (dashpot_second_half), as raw pointers.
 struct DashpotWork {
   const Vec3* __restrict force;   // PairForces::dashpot_force
   const Vec3* __restrict branch;  // PairForces::dashpot_branch
+  const Vec3* __restrict spin_i;  // PairForces::dashpot_spin_i, _j (laws that rotate)
+  const Vec3* __restrict spin_j;
   const std::uint32_t* __restrict first;
   const std::uint32_t* __restrict second;
   const Vec3* __restrict v;
   const Vec3* __restrict omega;
-  const double* __restrict radius;
   Vec3 axial, shear;  // the cell's rates of the coming step (CellRates)
 };
 
@@ -429,12 +458,14 @@ struct DashpotWork {
 // dt v(n-1/2).(F_n + F_(n-1))/2, i.e. by dt F_n.(v(n-1/2) + v(n+1/2))/2 summed over the steps.
 // The pair loop books the half with v(n-1/2); this is the half with v(n+1/2), from the forces and
 // branch vectors it stored, `simd_lanes` pairs at a time (the same bits at any width: each pair's
-// term is subtracted from the sum in pair order). Booking dt F_d . u(n-1/2) alone leaves
+// term is subtracted from its chunk's sum in pair order, the chunks' sums added in chunk order, the
+// pair chunks of the step's sweep: so the next step's pair loop can book it instead, with the same
+// bits, while it has the velocities in hand; forces_and_motion). Booking dt F_d . u(n-1/2) alone leaves
 // c dt/4 (u_end^2 - u_start^2) open per contact, an O(dt) closure error; with both halves what is
 // left is the leapfrog's O(dt^2) (energy_balance_test.cpp). Instantiated for the laws with
 // dashpots (dynamics/kernel_simd_dashpot.cpp).
 template <class Law>
-double dashpot_second_half(int simd_lanes, const Particles& p, const PairList& pairs, const PairForces& out,
+double dashpot_second_half(int simd_lanes, const Particles& p, const PairList& pairs, const PairIndex& index, const PairForces& out,
                            const CellRates& rates, double dt);
 
 }  // namespace dem

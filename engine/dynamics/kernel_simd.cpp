@@ -20,6 +20,15 @@
 // x86-64. The file is compiled with -ffp-contract=off (engine/CMakeLists.txt): AVX-512 implies
 // FMA, and a fused multiply-add would round differently from the scalar code.
 
+// The gathers are always inlined in the unit of the laws with contact dashpots, whose pair loop
+// GCC otherwise left calling them (4 % of a dashpot run); in the other units GCC inlines them by
+// itself, and their code stays as it was.
+#if defined(DEM_KERNEL_UNIT) && DEM_KERNEL_UNIT == 1
+#define DEM_GATHER_INLINE [[gnu::always_inline]]
+#else
+#define DEM_GATHER_INLINE
+#endif
+
 namespace dem {
 
 #ifndef DEM_KERNEL_UNIT  // the first unit: what is compiled once
@@ -154,7 +163,7 @@ inline void store(Vec3* p, const V3& v) {
 // Particle values of four pairs, base[index[p]] in lane p. Built from 128-bit and 64-bit loads:
 // on the machine this was tuned on (AMD EPYC), gathers were slower (4,000 steps of shear of
 // the 8,000-sphere mu = 0.5 packing: 2.86 s with gathers, 2.70 s with these loads).
-inline V3 gather(const Vec3* base, const std::uint32_t* index) {
+DEM_GATHER_INLINE inline V3 gather(const Vec3* base, const std::uint32_t* index) {
   const double *a = base[index[0]].data(), *b = base[index[1]].data(), *c = base[index[2]].data(),
                *d = base[index[3]].data();
   const V ac = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(a)), _mm_loadu_pd(c), 1);  // xa ya | xc yc
@@ -163,7 +172,7 @@ inline V3 gather(const Vec3* base, const std::uint32_t* index) {
   return {_mm256_unpacklo_pd(ac, bd), _mm256_unpackhi_pd(ac, bd),
           _mm256_insertf128_pd(_mm256_castpd128_pd256(z_ab), z_cd, 1)};
 }
-inline V gather(const double* base, const std::uint32_t* index) {
+DEM_GATHER_INLINE inline V gather(const double* base, const std::uint32_t* index) {
   return _mm256_setr_pd(base[index[0]], base[index[1]], base[index[2]], base[index[3]]);
 }
 
@@ -412,10 +421,10 @@ inline void store(Vec3* p, const V3& v) {
   avx2::store(p, {low(v.x), low(v.y), low(v.z)});
   avx2::store(p + 4, {high(v.x), high(v.y), high(v.z)});
 }
-inline V3 gather(const Vec3* base, const std::uint32_t* index) {
+DEM_GATHER_INLINE inline V3 gather(const Vec3* base, const std::uint32_t* index) {
   return join(avx2::gather(base, index), avx2::gather(base, index + 4));
 }
-inline V gather(const double* base, const std::uint32_t* index) {
+DEM_GATHER_INLINE inline V gather(const double* base, const std::uint32_t* index) {
   return join(avx2::gather(base, index), avx2::gather(base, index + 4));
 }
 template <bool Subtract>
@@ -493,8 +502,8 @@ template <class Law, class DampingPolicy, bool Sheared>
 MotionSums forces_and_motion(int simd_lanes, const Law& law, const DampingPolicy& damping, Particles& p,
                              const PeriodicCell& cell, const PairList& pairs, ContactHistory& history,
                              const PairIndex& index, const CellRates& rates, double dt, PairForces& out,
-                             StepSums& sums, std::vector<Vec3>& force) {
-  PairLoop<Law, Sheared> gathered_pairs(law, p, cell, pairs, history, rates, dt, out);
+                             StepSums& sums, std::vector<Vec3>& force, bool book_previous_half) {
+  PairLoop<Law, Sheared> gathered_pairs(law, p, cell, pairs, history, rates, dt, out, book_previous_half);
   ParticleLoop<Law::rotates, DampingPolicy, Sheared> gathered_moves(damping, p, cell, index, out, force, dt);
   // On one thread, a law without torques adds into the particles' sums (PairForces), up to
   // `scatter_max_particles`.
@@ -503,14 +512,16 @@ MotionSums forces_and_motion(int simd_lanes, const Law& law, const DampingPolicy
   if constexpr (!Law::rotates) {
     if (p.size() <= scatter_max_particles) scattered_pairs.scattered = scattered_moves.scattered = out.scattered_sums(p.size());
   }
+  if constexpr (Law::damped) out.previous_dashpot_sums.assign(out.chunk_sums.size(), 0.0);
   const auto pair_chunk = [&](std::size_t c, std::size_t begin, std::size_t end, bool serial) {
     const PairLoop<Law, Sheared>& pair_loop = serial ? scattered_pairs : gathered_pairs;
-    StepSums chunk;
+    std::conditional_t<Law::damped, DashpotSums, StepSums> chunk;  // a law with dashpots: also the step before's second half
     std::size_t k = begin;  // pairs before k done by the vector loop
     if (simd_lanes == 8) k = begin + (end - begin) / 8 * 8, avx512::chunk(pair_loop, begin, k, chunk);
     if (simd_lanes == 4) k = begin + (end - begin) / 4 * 4, avx2::chunk(pair_loop, begin, k, chunk);
     one_lane::chunk(pair_loop, k, end, chunk);
     out.chunk_sums[c] = chunk;
+    if constexpr (Law::damped) out.previous_dashpot_sums[c] = chunk.previous;
   };
   const auto move_chunk = [&](std::size_t c, std::size_t begin, std::size_t end, bool serial) {
     const ParticleLoop<Law::rotates, DampingPolicy, Sheared>& particle_loop = serial ? scattered_moves : gathered_moves;
@@ -531,17 +542,24 @@ MotionSums forces_and_motion(int simd_lanes, const Law& law, const DampingPolicy
 }
 
 template <class Law>
-double dashpot_second_half(int simd_lanes, const Particles& p, const PairList& pairs, const PairForces& out,
+double dashpot_second_half(int simd_lanes, const Particles& p, const PairList& pairs, const PairIndex& index, const PairForces& out,
                            const CellRates& rates, double dt) {
-  const DashpotWork w{out.dashpot_force.data(), out.dashpot_branch.data(), pairs.first.data(), pairs.second.data(),
-                      p.v.data(), p.omega.data(), p.radius.data(), rates.axial, rates.shear};
-  const std::size_t n = pairs.size();
-  double lost = 0;
-  std::size_t k = 0;  // pairs before k done by the vector loop
-  if (simd_lanes == 8) k = n / 8 * 8, lost = avx512::dashpot_work<Law>(w, 0, k, lost);
-  if (simd_lanes == 4) k = n / 4 * 4, lost = avx2::dashpot_work<Law>(w, 0, k, lost);
-  lost = one_lane::dashpot_work<Law>(w, k, n, lost);
-  return 0.5 * dt * lost;
+  const DashpotWork w{out.dashpot_force.data(), out.dashpot_branch.data(), out.dashpot_spin_i.data(), out.dashpot_spin_j.data(),
+                      pairs.first.data(), pairs.second.data(), p.v.data(), p.omega.data(), rates.axial, rates.shear};
+  // The pair chunks of sweep_chunks, each summed from zero, then added in chunk order: what the
+  // next step's pair loop books (total_of_chunks).
+  const std::size_t particles = index.first_begin.size() - 1;
+  double total = 0;
+  for (std::ptrdiff_t c = 0; c < chunk_count(particles); ++c) {
+    const std::size_t begin = index.first_begin[std::min(particles, static_cast<std::size_t>(c * chunk_size))],
+                      end = index.first_begin[std::min(particles, static_cast<std::size_t>((c + 1) * chunk_size))];
+    double lost = 0;
+    std::size_t k = begin;  // pairs before k done by the vector loop
+    if (simd_lanes == 8) k = begin + (end - begin) / 8 * 8, lost = avx512::dashpot_work<Law>(w, begin, k, lost);
+    if (simd_lanes == 4) k = begin + (end - begin) / 4 * 4, lost = avx2::dashpot_work<Law>(w, begin, k, lost);
+    total += one_lane::dashpot_work<Law>(w, k, end, lost);
+  }
+  return 0.5 * dt * total;
 }
 
 // forces_and_motion for every law a scene can choose, both damping forms, orthorhombic and

@@ -47,8 +47,9 @@ MotionSums total_of_chunks(const std::vector<MotionSums>& chunk_sums, bool wrapp
 
 struct Simulation::Kernel {
   virtual ~Kernel() = default;
-  // Forces (into sims.sums_ and the pair forces) and the update of one step.
-  virtual MotionSums step(Simulation& sim) = 0;
+  // Forces (into sims.sums_ and the pair forces) and the update of one step; `book_previous_half`:
+  // also the second half of the step before's dashpot work (forces_and_motion).
+  virtual MotionSums step(Simulation& sim, bool book_previous_half) = 0;
   // Laws with contact dashpots: the second half of their dissipation in the step just taken [J]
   // (dashpot_second_half); 0 for the other laws.
   virtual double dashpot_second_half(const Simulation& sim) const = 0;
@@ -60,28 +61,28 @@ struct KernelImpl final : Simulation::Kernel {
   DampingPolicy damping;
   int simd = simd_width();  // the same result at any width; wider is faster
   KernelImpl(Law l, DampingPolicy d) : law(l), damping(std::move(d)) {}
-  MotionSums step(Simulation& s) override {
+  MotionSums step(Simulation& s, bool book_previous_half) override {
     // The sheared loops when the cell is tilted or shearing (with zero tilts they give the
     // orthorhombic loops' bits).
-    if (s.cell_.sheared() || s.rates_.shears()) return step_as<true>(s);
-    return step_as<false>(s);
+    if (s.cell_.sheared() || s.rates_.shears()) return step_as<true>(s, book_previous_half);
+    return step_as<false>(s, book_previous_half);
   }
   double dashpot_second_half(const Simulation& s) const override {
     if constexpr (Law::damped) {
-      return dem::dashpot_second_half<Law>(simd, s.particles_, s.list_.pairs(), *s.pair_forces_, s.rates_, s.dt_);
+      return dem::dashpot_second_half<Law>(simd, s.particles_, s.list_.pairs(), s.list_.index(), *s.pair_forces_, s.rates_, s.dt_);
     } else {
       return 0.0;
     }
   }
   template <bool Sheared>
-  MotionSums step_as(Simulation& s) {
+  MotionSums step_as(Simulation& s, bool book_previous_half) {
     if constexpr (Law::dashpot_per_pair) {
       if (s.pair_forces_->dashpot_list != s.list_.changes())
         dashpot_coefficients(law, s.particles_, s.list_.pairs(), s.dt_, s.list_.changes(), *s.pair_forces_);
     }
     return forces_and_motion<Law, DampingPolicy, Sheared>(simd, law, damping, s.particles_, s.cell_, s.list_.pairs(),
                                                           s.history_, s.list_.index(), s.rates_, s.dt_, *s.pair_forces_,
-                                                          s.sums_, s.force_);
+                                                          s.sums_, s.force_, book_previous_half);
   }
 };
 
@@ -134,6 +135,7 @@ void Simulation::adopt(const ContactHistory& history) {
 }
 
 void Simulation::restore(std::int64_t step, const CellRates& rates, PairList contacts, const ContactHistory& history) {
+  book_pending_dashpot_half();
   step_ = step;
   rates_ = rates;
   list_.restore(std::move(contacts));
@@ -146,7 +148,20 @@ void Simulation::restore_checkpoint(std::int64_t step, const CellRates& rates, V
   rates_ = rates;
   list_.restore_exact(std::move(list), particles_);
   adopt(history);
-  energy_ = energy;
+  energy_ = energy;  // saved by energy(): the work of its last step in it
+  dashpot_half_pending_ = false;
+}
+
+EnergyBalance Simulation::energy() const {
+  EnergyBalance e = energy_;
+  if (dashpot_half_pending_) e.dissipated_damping += kernel_->dashpot_second_half(*this);
+  return e;
+}
+
+void Simulation::book_pending_dashpot_half() {
+  if (!dashpot_half_pending_) return;
+  energy_.dissipated_damping += kernel_->dashpot_second_half(*this);
+  dashpot_half_pending_ = false;
 }
 
 void Simulation::step(const CellTargets& targets, const ServoSettings& servo) {
@@ -174,8 +189,18 @@ void Simulation::remap_cell() {
 }
 
 void Simulation::advance(const std::function<CellRates()>& rates) {
-  if (list_.rebuild_due(particles_, cell_)) list_.build(particles_, cell_, &history_);
-  const MotionSums motion = kernel_->step(*this);
+  if (list_.rebuild_due(particles_, cell_)) {
+    book_pending_dashpot_half();  // on the list its forces were stored for
+    list_.build(particles_, cell_, &history_);
+  }
+  const bool book_previous_half = dashpot_half_pending_;
+  const MotionSums motion = kernel_->step(*this, book_previous_half);
+  if (book_previous_half) {  // the step before's last term, booked by this loop: the order of the sum as before
+    double previous = 0;  // the chunks' sums in chunk order, as dashpot_second_half adds them
+    for (const double chunk : pair_forces_->previous_dashpot_sums) previous += chunk;
+    energy_.dissipated_damping += 0.5 * dt_ * previous;
+    dashpot_half_pending_ = false;
+  }
   if (!sums_.stress_Pa.allFinite()) {
     std::ostringstream msg;
     msg << "non-finite contact stress at step " << step_ << " (time " << time() << " s)";
@@ -201,9 +226,10 @@ void Simulation::advance(const std::function<CellRates()>& rates) {
   energy_.kinetic = motion.kinetic_centred;
   energy_.dissipated_damping += motion.damping_loss;
   // The contact dashpots' share (+0.0 for a law without, which leaves the sum's bits as they were),
-  // and for a law with them the half booked with the new velocities and the new cell rates.
+  // and for a law with them the half with the new velocities and the new cell rates: booked by
+  // the next step's pair loop, or before the list changes, or added by energy().
   energy_.dissipated_damping += sums_.contact_damping_loss_J;
-  if (contact_dashpots_) energy_.dissipated_damping += kernel_->dashpot_second_half(*this);
+  dashpot_half_pending_ = contact_dashpots_;
   if (!energy_.started) energy_.stored_at_start = energy_.stored(), energy_.started = true;
   if (!std::isfinite(kinetic_energy_)) {
     std::ostringstream msg;

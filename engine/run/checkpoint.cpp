@@ -176,7 +176,8 @@ void write_checkpoint(const std::string& partial_path, const std::string& out_pa
       FieldWriter to_state{state};
       const VerletList::Saved list = sim.verlet_list().saved();
       list_fields(to_state, list, sim.history());
-      energy_fields(to_state, sim.energy());
+      const EnergyBalance energy = sim.energy();  // with the dashpots' work of the last step
+      energy_fields(to_state, energy);
       const h5::Handle cursor_group = h5::create_group(g, "cursor");
       FieldWriter to_cursor{cursor_group};
       cursor_fields(to_cursor, cursor);
