@@ -101,7 +101,8 @@ open-choices-check: tools
 	$(VALIDATE) --results results/calibration_paper_best/check --out $(OPEN_REPORT)/best
 open-choices-paper-size: tools
 	$(PIPELINE) pipeline/studies/open_choices_paper_size.yaml -j $(JOBS)
-	$(VALIDATE) --results results/open_choices_paper_size/paper --densities medium dense --out $(OPEN_REPORT)/paper_size
+	$(VALIDATE) --results results/open_choices_paper_size/paper --densities medium dense \
+	  --borrow loose:contact_dashpots:reports/readings/dashpot/decisions.json --out $(OPEN_REPORT)/paper_size
 calibration-example: tools
 	$(BUILD)/bin/calibrate examples/calibration/calibration.yaml -j $(JOBS)
 	$(call CALIBRATION_FIGURES,results/calibration_example/report)

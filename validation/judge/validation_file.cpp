@@ -5,6 +5,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "judge/decisions_file.hpp"
 #include "study/json_file.hpp"
 
 namespace validation {
@@ -45,8 +46,26 @@ std::string keep_densities(std::vector<Row>& rows, const std::vector<std::string
       for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
       return "no row of the reference file is of density '" + d + "' (its densities: " + list + ")";
     }
-  std::erase_if(rows, [&](const Row& r) { return !r.density.empty() && std::find(densities.begin(), densities.end(), r.density) == densities.end(); });
+  erase_other_densities(rows, densities);
   return "";
+}
+
+RecordedValidation::Borrowed borrowed_density(const std::string& argument, const std::vector<std::string>& judged,
+                                              const std::vector<Row>& rows, const std::string& references) {
+  const std::size_t a = argument.find(':'), b = a == std::string::npos ? a : argument.find(':', a + 1);
+  if (b == std::string::npos || a == 0 || b == a + 1 || b + 1 == argument.size())
+    throw std::runtime_error("'" + argument + "': expected DENSITY:READING:FILE (e.g. loose:contact_dashpots:reports/readings/dashpot/decisions.json)");
+  const RecordedValidation::Borrowed borrowed{argument.substr(0, a), argument.substr(a + 1, b - a - 1), argument.substr(b + 1)};
+  if (judged.empty() || std::find(judged.begin(), judged.end(), borrowed.density) != judged.end())
+    throw std::runtime_error("'" + borrowed.density + "' is judged from this study's runs: a borrowed density is one --densities leaves out");
+  const DecisionsFile file = read_decisions_file(borrowed.decisions);  // its errors name the file
+  const bool has = std::any_of(rows.begin(), rows.end(), [&](const Row& r) {
+    return r.density == borrowed.density && file.rows.count(r.name) && file.rows.at(r.name).reading(borrowed.reading);
+  });
+  if (!has)
+    throw std::runtime_error(borrowed.decisions + " has no reading '" + borrowed.reading + "' on a row of density '" + borrowed.density +
+                             "' of " + references);
+  return borrowed;
 }
 
 RecordedValidation read_validation_file(const std::string& file) {
@@ -60,8 +79,21 @@ RecordedValidation read_validation_file(const std::string& file) {
     r.samples = strings(j, "samples", "an array of the samples' names");
     r.missing_samples = strings(j, "missing_samples", "an array of names");
     r.missing_results = strings(j, "missing_results", "an array of files");
-    if (j.contains("judged_from") && j.at("judged_from").contains("densities"))
-      r.densities = strings(j.at("judged_from"), "densities", "an array of densities");
+    if (j.contains("judged_from")) {
+      const nlohmann::json& from = member(j, "judged_from", t::object, "", "what the rows were judged from");
+      if (from.contains("densities")) r.densities = strings(from, "densities", "an array of densities");
+      if (from.contains("variants")) r.variants = strings(from, "variants", "an array of variants");
+      if (from.contains("borrowed")) {
+        const nlohmann::json& b = member(from, "borrowed", t::array, "judged_from", "an array of {density, reading, decisions}");
+        for (std::size_t i = 0; i < b.size(); ++i) {
+          const std::string at = "judged_from.borrowed[" + std::to_string(i) + "]";
+          r.borrowed.push_back({member(b[i], "density", t::string, at, "a density").get<std::string>(),
+                                member(b[i], "reading", t::string, at, "a reading of the decisions file").get<std::string>(),
+                                member(b[i], "decisions", t::string, at, "a decisions.json").get<std::string>()});
+        }
+      }
+    }
+    r.stamp = stamp_from_json(j.contains("stamp") ? j.at("stamp") : nlohmann::json());
     const nlohmann::json& rows = member(j, "rows", t::array, "", "an array of the judged rows");
     for (std::size_t i = 0; i < rows.size(); ++i) {
       const std::string at = "rows[" + std::to_string(i) + "]";

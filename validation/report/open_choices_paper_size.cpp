@@ -4,15 +4,12 @@
 #include <map>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "judge/decisions_file.hpp"
 #include "judge/validation_file.hpp"
 #include "judge/verdicts.hpp"
 #include "judge/weak_verdicts.hpp"
 #include "report/other_sections.hpp"
 #include "study/format.hpp"
-#include "study/json_file.hpp"
 #include "study/markdown_table.hpp"
 #include "study/settings.hpp"
 #include "study/stamp.hpp"
@@ -49,43 +46,33 @@ SetVerdict set_verdict(const RowResult& r) {
   return {r.verdict, row_cell(r), weaknesses(r), "it holds in " + std::to_string(r.holds) + " of " + std::to_string(r.valued)};
 }
 
-// A density the set does not run because under the set its runs are another study's: the loose
-// sample's shearing friction is its preparation friction, 0.5, in both readings of the shearing
-// friction, so under the set its tests are the dashpot readings study's (contact dashpots in the
-// tests, the same preparation and seeds): its reading's verdicts on its own samples stand for the set's.
-struct Borrowed {
-  const char* density;
-  const char* study;    // the readings study's folder under the report, with its decisions.json
-  const char* reading;  // its reading that equals the set there
-};
-constexpr Borrowed borrowed[] = {{"loose", "readings/dashpot", "contact_dashpots"}};
-
-// Adds to `in_set` the rows of each borrowed density the set did not judge, from the borrowing
-// study's decisions.json; returns the sentence that says so, with that study's stamp ("" when
-// nothing is borrowed).
-std::string add_borrowed(const fs::path& report, const std::vector<RejudgedRow>& paper, std::map<std::string, SetVerdict>& in_set) {
+// Adds to `in_set` the rows of each density the set's record borrows (judged_from.borrowed: a
+// density whose runs under the set are another study's reading) that the set did not judge, from
+// that study's decisions.json; returns the sentence that says so, with that study's stamp ("" when
+// nothing is borrowed, or the file is not there: its rows are then not run).
+std::string add_borrowed(const RecordedValidation& set, const std::vector<RejudgedRow>& paper, std::map<std::string, SetVerdict>& in_set) {
   std::string out;
-  for (const Borrowed& b : borrowed) {
-    const fs::path file = report / b.study / "decisions.json";
+  for (const RecordedValidation::Borrowed& b : set.borrowed) {
     std::error_code ec;
-    if (!fs::exists(file, ec)) continue;
-    const DecisionsFile f = read_decisions_file(file.string());
+    if (!fs::exists(b.decisions, ec)) continue;
+    const DecisionsFile f = read_decisions_file(b.decisions);
+    const std::string study = fs::path(b.decisions).parent_path().string();
     int taken = 0;
     for (const RejudgedRow& p : paper) {
       if (p.density != b.density || in_set.count(p.row.name) || !f.rows.count(p.row.name)) continue;
       const DecisionsFile::Reading* r = f.rows.at(p.row.name).reading(b.reading);
       if (!r || r->verdict == Verdict::NotJudged || !r->mean) continue;
       in_set.emplace(p.row.name, SetVerdict{r->verdict,
-                                            "mean " + number(*r->mean) + " (`" + b.study + "`) " + verdict_mark(r->verdict, false),
+                                            "mean " + number(*r->mean) + " (`" + study + "`) " + verdict_mark(r->verdict, false),
                                             {},
                                             "it is " + std::string(to_string(r->verdict)) + " on the " + std::to_string(f.samples.value_or(0)) +
-                                                " samples of `" + b.study + "`"});
+                                                " samples of `" + study + "`"});
       ++taken;
     }
     if (taken == 0) continue;
-    out += " Its " + std::string(b.density) + " rows (" + std::to_string(taken) + ") are those of `" + b.study + "` under `" + b.reading +
-           "`, judged on that study's own samples (the " + b.density + " sample's runs under the set are that reading's: its shearing "
-           "friction is its preparation friction in both readings). " + stamp_sentence(f.stamp) + ".";
+    out += " Its " + b.density + " rows (" + std::to_string(taken) + ") are those of `" + study + "` under `" + b.reading +
+           "`, judged on that study's own samples (the set's record says the " + b.density + " sample's runs under the set are "
+           "that reading's). " + stamp_sentence(f.stamp) + ".";
   }
   return out;
 }
@@ -103,13 +90,11 @@ std::string open_choices_paper_size_text(const fs::path& report, const std::vect
   std::map<std::string, SetVerdict> in_set;
   for (RejudgedRow& r : judge_recorded(set_record, set_rows, set_file.string(), "the paper's reference file"))
     in_set.emplace(r.row.name, set_verdict(r.result));
-  const std::string borrowed_text = add_borrowed(report, in_paper, in_set);
-  const nlohmann::json set_json = read_json_file(set_file.string());
-  const Stamp set_stamp = stamp_from_json(set_json.at("stamp"));
+  const std::string borrowed_text = add_borrowed(set_record, in_paper, in_set);
+  const Stamp& set_stamp = set_record.stamp;
   // The set: the study variant(s) validate judged (its record names them).
   std::vector<std::string> variants;
-  if (set_json.contains("judged_from") && set_json.at("judged_from").contains("variants"))
-    for (const auto& v : set_json.at("judged_from").at("variants")) variants.push_back("`" + v.get<std::string>() + "`");
+  for (const std::string& v : set_record.variants) variants.push_back("`" + v + "`");
   const std::string set_name = variants.empty() ? "The baseline" : "The set " + joined(variants, ", ");
   const Stamp paper_stamp = read_paper_stamp(report);
 

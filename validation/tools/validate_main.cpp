@@ -73,6 +73,11 @@ struct Options {
   std::vector<std::string> decisions;  // decisions.json files, in the order given
   std::string without_results;         // "", "keep" or "redraw"
   std::vector<std::string> densities;  // only the rows of these densities (empty: every row)
+  std::vector<std::string> borrow;     // --borrow DENSITY:READING:FILE, as given
+  // Read from --borrow (or a record's judged_from.borrowed), and a record's variants: carried into
+  // the new record.
+  std::vector<validation::RecordedValidation::Borrowed> borrowed;
+  std::vector<std::string> record_variants;
 };
 
 // The options, or nothing when they are wrong or --help was asked (`code`: the exit status, 0 for
@@ -99,6 +104,11 @@ std::optional<Options> parse_options(int argc, char** argv, int& code) {
   app.add_option("--densities", o.densities,
                  "judge only the rows of these densities, for a study that runs some of the reference file's densities; "
                  "validation.json records them (judged_from.densities)");
+  app.add_option("--borrow", o.borrow,
+                 "DENSITY:READING:FILE: a density the study does not run because its runs would be those of READING in "
+                 "another study, whose decisions.json is FILE; validation.json records it (judged_from.borrowed) and the "
+                 "report takes that density's verdicts from FILE")
+      ->allow_extra_args(false);
   app.add_option("--without-results", o.without_results,
                  "a --results folder without runs.tsv (its study has not run here) is no error: redraw = judged again from the "
                  "committed --out/validation.json, else --out kept; keep = --out kept; says which (exit 0 when nothing is judged)")
@@ -214,11 +224,10 @@ std::vector<Judged> judge_record(const Options& o, const validation::RecordedVal
 // The stamp of the numbers judged: the results' own (stamp_of_results), or the one the record
 // kept (none: every field not recorded, a record made before stamps). A stamp that cannot be read
 // leaves its fields not recorded and says why: the verdicts stand without it.
-validation::Stamp stamp_of(const Options& o, bool from_results) {
+validation::Stamp stamp_of(const Options& o, const std::optional<validation::RecordedValidation>& record) {
+  if (record) return record->stamp;
   try {
-    if (from_results) return validation::stamp_of_results(o.results);
-    const nlohmann::json record = validation::read_json_file(o.from_json);
-    return validation::stamp_from_json(record.contains("stamp") ? record.at("stamp") : nlohmann::json());
+    return validation::stamp_of_results(o.results);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "warning: the stamp (engine, baseline, size, date) not recorded: %s\n", e.what());
     return {};
@@ -237,11 +246,14 @@ nlohmann::ordered_json validation_json(const Options& o, const std::string& labe
   json["references"] = o.references;
   json["judged_from"] = !from_results ? nlohmann::ordered_json{{"validation_json", o.from_json}} : nlohmann::ordered_json{{"results", o.results}};
   if (!o.densities.empty()) json["judged_from"]["densities"] = o.densities;
-  // A study of variants: the ones the rows read, so that a record names the set it judged.
-  std::set<std::string> variants;
+  // A study of variants: the ones the rows read, so that a record names the set it judged (one
+  // judged again: the variants its record names).
+  std::set<std::string> variants(o.record_variants.begin(), o.record_variants.end());
   for (const Judged& j : judged)
     if (from_results && j.runs.variant != "-") variants.insert(j.runs.variant);
   if (!variants.empty()) json["judged_from"]["variants"] = variants;
+  for (const auto& b : o.borrowed)
+    json["judged_from"]["borrowed"].push_back({{"density", b.density}, {"reading", b.reading}, {"decisions", b.decisions}});
   json["stamp"] = validation::stamp_json(stamp);
   json["rules"] = {
       {"interval", "consistent: the " + label + "'s value, widened by the row's tolerance, overlaps the " +
@@ -325,12 +337,18 @@ std::optional<Inputs> read_inputs(Options& o) {
     return std::nullopt;
   }
   if (record && o.densities.empty()) o.densities = record->densities;  // judged again on the densities it was judged on
+  if (record) o.record_variants = record->variants, o.borrowed = o.borrow.empty() ? record->borrowed : o.borrowed;
+  try {  // checked against every row of the reference file, before keep_densities leaves some out
+    for (const std::string& arg : o.borrow) o.borrowed.push_back(validation::borrowed_density(arg, o.densities, refs.rows, o.references));
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: --borrow: %s\n", e.what());
+    return std::nullopt;
+  }
   if (const std::string bad = validation::keep_densities(refs.rows, o.densities); !bad.empty()) {
     std::fprintf(stderr, "error: --densities: %s\n", bad.c_str());
     return std::nullopt;
   }
-  if (record && !o.densities.empty())  // a record of every density judged again on some of them
-    std::erase_if(record->rows, [&](const auto& r) { return std::find(o.densities.begin(), o.densities.end(), r.density) == o.densities.end(); });
+  if (record) validation::erase_other_densities(record->rows, o.densities);  // a record of every density judged again on some of them
   try {
     in.findings = read_findings(o.decisions);
   } catch (const std::exception& e) {
@@ -398,7 +416,7 @@ int tool_main(int argc, char** argv) {
 
   const std::vector<std::vector<std::string>> identical = validation::identical_samples(judged);
   const nlohmann::ordered_json json = validation_json(o, refs.label, judged, count, samples, missing, missing_samples, identical,
-                                                     results.has_value(), stamp_of(o, results.has_value()));
+                                                     results.has_value(), stamp_of(o, record));
   validation::VerdictsContext context;
   context.label = refs.label;
   context.provenance = record ? "Judged again by `validate --from-json` from the per-sample values recorded in `" + o.from_json +

@@ -76,24 +76,32 @@ TEST_CASE("the misses at the paper's size: verdicts judged again, rows consisten
       if (r["density"] != "loose") kept.push_back(r);
     medium_dense["rows"] = kept;
     medium_dense["judged_from"]["densities"] = {"medium", "dense"};
+    const fs::path dashpot = report / "readings" / "dashpot";
+    fs::create_directories(dashpot);
+    fs::copy_file(source + "/reports/readings/dashpot/decisions.json", dashpot / "decisions.json", fs::copy_options::overwrite_existing);
+    // What the set borrows is the record's (validate --borrow), never the report's: without it the
+    // loose rows are not run, though the dashpot study's file is there.
     write_json(report / "calibration/paper_open_choices/paper_size/validation.json", medium_dense);
-    fs::create_directories(report / "readings" / "dashpot");
-    fs::copy_file(source + "/reports/readings/dashpot/decisions.json", report / "readings" / "dashpot" / "decisions.json",
-                  fs::copy_options::overwrite_existing);
+    const std::string unborrowed = validation::open_choices_paper_size_text(report, rows);
+    INFO(unborrowed);
+    CHECK_THAT(unborrowed, Catch::Contains("(11 not run)"));
+    medium_dense["judged_from"]["borrowed"] = {
+        {{"density", "loose"}, {"reading", "contact_dashpots"}, {"decisions", (dashpot / "decisions.json").string()}}};
+    write_json(report / "calibration/paper_open_choices/paper_size/validation.json", medium_dense);
     const std::string text = validation::open_choices_paper_size_text(report, rows);
     INFO(text);
-    CHECK_THAT(text, Catch::Contains("It runs the medium and dense samples only. Its loose rows (11) are those of `readings/dashpot` under "
-                                     "`contact_dashpots`, judged on that study's own samples"));
+    CHECK_THAT(text, Catch::Contains("It runs the medium and dense samples only. Its loose rows (11) are those of `" + dashpot.string() +
+                                     "` under `contact_dashpots`, judged on that study's own samples"));
     CHECK_THAT(text, Catch::Contains("**24 of 26** rows are consistent; in the paper study (8,000 spheres, 5 samples), 22 of the same 26. "
                                      "Of those 22, 21 are consistent in the set; not: loose: sliding fraction decreases (cycles 1..5, %)."));
     CHECK_THAT(text, Catch::Contains("| loose: sliding fraction decreases (cycles 1..5, %) | ") &&
-                         Catch::Contains("(`readings/dashpot`) ❌ | turned inconsistent by the set |"));
+                         Catch::Contains("(`" + dashpot.string() + "`) ❌ | turned inconsistent by the set |"));
     CHECK_THAT(text, Catch::Contains("| loose: coordination number decreases (cycles 1..5) | ") &&
-                         Catch::Contains("(`readings/dashpot`) ✅ | consistent, but not together with 1 row consistent now |"));
+                         Catch::Contains("(`" + dashpot.string() + "`) ✅ | consistent, but not together with 1 row consistent now |"));
     CHECK_THAT(text, Catch::Contains("| medium: εv grows with cycles (cycles 1..5, %) |") &&
                          Catch::Contains("| not answered by the set: it holds in 0 of 5 |"));
     // Without the borrowing study's file, the loose rows are not run: counted apart, never as lost.
-    fs::remove(report / "readings" / "dashpot" / "decisions.json");
+    fs::remove(dashpot / "decisions.json");
     const std::string alone = validation::open_choices_paper_size_text(report, rows);
     INFO(alone);
     CHECK_THAT(alone, Catch::Contains("**14 of 15** rows are consistent (11 not run); in the paper study (8,000 spheres, 5 samples), 13 of the "

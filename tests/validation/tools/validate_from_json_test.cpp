@@ -230,6 +230,40 @@ TEST_CASE("validate --densities: only those densities' rows judged, recorded, an
   CHECK_THAT(bad.out, Catch::Contains("--densities: no row of the reference file is of density 'tight' (its densities: dense, loose, medium)"));
 }
 
+TEST_CASE("validate --borrow: a density left out recorded with the reading that stands for it, kept when judged again",
+          "[validate][cli][from-json]") {
+  // The committed dashpot readings study has the reading contact_dashpots on the loose rows: a
+  // record of the medium and dense rows borrows them; judged again, the record keeps what it
+  // borrowed (and its variants); a wrong form, a density judged here, or a reading the file lacks: exit 2.
+  const fs::path dir = dem::test::scratch_dir("validate_borrow");
+  const std::string refs = source + "/reference_data/paper.yaml", record = source + "/reports/validation.json";
+  const std::string dashpot = source + "/reports/readings/dashpot/decisions.json";
+  const auto run = [&](const std::string& extra, const std::string& out) {
+    return validate("--from-json '" + record + "' --references '" + refs + "' --densities medium dense " + extra + " --out '" +
+                    (dir / out).string() + "'");
+  };
+  const auto a = run("--borrow 'loose:contact_dashpots:" + dashpot + "'", "a");
+  INFO(a.out);
+  REQUIRE(a.exit_code == 0);
+  const nlohmann::json borrowed = nlohmann::json::parse(text_of(dir / "a" / "validation.json")).at("judged_from").at("borrowed");
+  CHECK(borrowed == nlohmann::json::array({{{"density", "loose"}, {"reading", "contact_dashpots"}, {"decisions", dashpot}}}));
+  const auto again = validate("--from-json '" + (dir / "a" / "validation.json").string() + "' --references '" + refs + "' --out '" +
+                              (dir / "b").string() + "'");
+  INFO(again.out);
+  CHECK(again.exit_code == 0);
+  CHECK(nlohmann::json::parse(text_of(dir / "b" / "validation.json")).at("judged_from").at("borrowed") == borrowed);
+
+  const auto form = run("--borrow loose:contact_dashpots", "c");
+  CHECK(form.exit_code == 2);
+  CHECK_THAT(form.out, Catch::Contains("--borrow: 'loose:contact_dashpots': expected DENSITY:READING:FILE"));
+  const auto judged_here = run("--borrow 'medium:contact_dashpots:" + dashpot + "'", "d");
+  CHECK(judged_here.exit_code == 2);
+  CHECK_THAT(judged_here.out, Catch::Contains("'medium' is judged from this study's runs"));
+  const auto no_reading = run("--borrow 'loose:no_such_reading:" + dashpot + "'", "e");
+  CHECK(no_reading.exit_code == 2);
+  CHECK_THAT(no_reading.out, Catch::Contains("has no reading 'no_such_reading' on a row of density 'loose'"));
+}
+
 TEST_CASE("validate names samples that are one sample: the same values to the last digit in every row, exit 1", "[validate][cli][samples]") {
   // Found by a hostile sweep: seed 2 a copy of seed 1 (a seed set in preparation_set) was judged
   // as "2 samples" with sd 0. Judged again from a record of three samples whose first two agree to
