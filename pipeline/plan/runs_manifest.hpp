@@ -1,10 +1,10 @@
 #pragma once
-// A study's manifest, OUT/runs.tsv, declared once for the pipeline: write_manifest (run_plan.cpp)
-// writes it with manifest_text, and what reads it back here (recorded_throughput_under, plan_cost.cpp)
-// reads it with read_runs_manifest. Its first line names the engine source the input hashes are
-// planned for, its second the columns; then one line per run and variant it belongs to.
-// validation/study/manifest.* reads it for validation/ and calibration/ (the pipeline may not include
-// them, nor they the pipeline's plan).
+// A study's manifest, OUT/runs.tsv, declared once: write_manifest (run_plan.cpp) writes it with
+// manifest_text, and every reader reads it with read_runs_manifest: the pipeline's plan_cost.cpp
+// (recorded_throughput_under), and validation/study/manifest.* for validation/ and calibration/ (this
+// file is a library of its own, runs_manifest_lib, the one part of the pipeline they link). Its first
+// line names the engine source the input hashes are planned for, its second the columns; then one
+// line per run and variant it belongs to.
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -33,8 +33,9 @@ struct RunsManifest {
 // The text of runs.tsv.
 std::string manifest_text(const RunsManifest& m);
 
-// FILE read back. Throws std::runtime_error naming the file and line when it cannot be read or a
-// line has fewer than 8 fields; an older manifest without the engine line has engine_source "".
+// FILE read back. Throws std::runtime_error naming the file and line when it cannot be read, a line
+// has fewer than 8 fields, or a variant lists a run twice; an older manifest without the engine line
+// has engine_source "".
 RunsManifest read_runs_manifest(const std::filesystem::path& file);
 
 }  // namespace pipeline

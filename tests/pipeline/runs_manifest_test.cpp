@@ -1,6 +1,5 @@
-// runs.tsv's one declaration in the pipeline (plan/runs_manifest.hpp): what write_manifest writes
-// reads back whole, and validation's reader (study/manifest.hpp, which validation/ and calibration/
-// use) reads the same fields from it.
+// runs.tsv's one declaration (plan/runs_manifest.hpp): what write_manifest writes reads back whole,
+// and validation's study/manifest.hpp, which validation/ and calibration/ use, gives the same lines.
 #include <catch2/catch.hpp>
 
 #include <filesystem>
@@ -13,7 +12,7 @@
 
 namespace fs = std::filesystem;
 
-TEST_CASE("runs.tsv: the pipeline's writer and both readers agree on every field", "[pipeline][manifest]") {
+TEST_CASE("runs.tsv: what the pipeline writes reads back the same, in the pipeline and in validation/", "[pipeline][manifest]") {
   const std::string out = std::string(DEM_BINARY_DIR) + "/test_tmp/runs_manifest";
   fs::remove_all(out);
   const pipeline::Study study = pipeline::load_study(std::string(DEM_SOURCE_DIR) + "/pipeline/studies/paper.yaml");
@@ -52,4 +51,10 @@ TEST_CASE("runs.tsv: a short line is refused with the file and its line", "[pipe
   std::ofstream(dir / "runs.tsv") << "# engine source E\n# columns\n-\tdense\t-\tdense_prepare\tdense_prepare.h5\t-\t0\n";
   CHECK_THROWS_WITH(pipeline::read_runs_manifest(dir / "runs.tsv"), Catch::Contains("runs.tsv: line 3: 7 fields, 8 expected"));
   CHECK_THROWS_WITH(pipeline::read_runs_manifest(dir / "none.tsv"), Catch::Contains("none.tsv: cannot be read"));
+  // A run listed twice for a variant would count its sample twice; under two variants it is shared.
+  const std::string line = "\tdense\t-\tdense_prepare\tdense_prepare.h5\t-\t0\tas written\n";
+  std::ofstream(dir / "runs.tsv") << "# engine source E\n# columns\n" << "fast" << line << "slow" << line << "fast" << line;
+  CHECK_THROWS_WITH(pipeline::read_runs_manifest(dir / "runs.tsv"),
+                    Catch::Contains("runs.tsv: line 5: the run 'dense_prepare' again for variant 'fast' (line 3 lists it)"));
+  CHECK_THROWS_WITH(validation::read_manifest(dir.string()), Catch::Contains("line 5: the run 'dense_prepare' again"));
 }

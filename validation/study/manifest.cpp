@@ -2,9 +2,6 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <map>
-#include <sstream>
 #include <stdexcept>
 
 namespace fs = std::filesystem;
@@ -13,36 +10,15 @@ namespace validation {
 
 std::vector<ManifestLine> read_manifest(const std::string& dir) {
   const fs::path file = fs::path(dir) / "runs.tsv";
-  std::ifstream in(file);
-  if (!in) throw std::runtime_error(file.string() + ": no manifest (run the study with build/bin/pipeline first)");
-  std::vector<ManifestLine> lines;
-  std::map<std::string, int> line_of;  // variant and run -> the line that lists it
-  std::string line;
-  for (int no = 1; std::getline(in, line); ++no) {
-    if (line.empty() || line[0] == '#') continue;
-    std::vector<std::string> f;
-    std::stringstream ss(line);
-    std::string cell;
-    while (std::getline(ss, cell, '\t')) f.push_back(cell);
-    const std::string at = file.string() + ": line " + std::to_string(no);
-    if (f.size() < 8) throw std::runtime_error(at + ": " + std::to_string(f.size()) + " fields, 8 expected");
-    // A run listed twice for one variant would count a sample twice; a preparation several variants
-    // share is listed once under each of them.
-    if (const auto [it, fresh] = line_of.emplace(f[0] + '\t' + f[3], no); !fresh)
-      throw std::runtime_error(at + ": the run '" + f[3] + "' again" + (f[0] == "-" ? "" : " for variant '" + f[0] + "'") +
-                               " (line " + std::to_string(it->second) + " lists it)");
-    lines.push_back({f[0], f[1], f[2], f[3], f[4], f[5], f[7], f[6] == "1", f.size() > 8 && !f[8].empty() ? f[8] : "-",
-                     f.size() > 9 ? f[9] : ""});
-  }
-  return lines;
+  std::error_code ec;
+  if (!fs::is_regular_file(file, ec)) throw std::runtime_error(file.string() + ": no manifest (run the study with build/bin/pipeline first)");
+  return pipeline::read_runs_manifest(file).entries;
 }
 
 std::string manifest_engine_source(const std::string& dir) {
-  std::ifstream in(fs::path(dir) / "runs.tsv");
-  std::string line;
-  const std::string prefix = "# engine source ";
-  if (!std::getline(in, line) || line.rfind(prefix, 0) != 0) return "";
-  return line.substr(prefix.size());
+  const fs::path file = fs::path(dir) / "runs.tsv";
+  std::error_code ec;
+  return fs::is_regular_file(file, ec) ? pipeline::read_runs_manifest(file).engine_source : std::string();
 }
 
 std::string sample_of(const ManifestLine& line) { return line.seed == "-" ? "" : "seed" + line.seed; }

@@ -4,16 +4,14 @@
 #include <string>
 #include <vector>
 
+#include "plan/runs_manifest.hpp"  // the pipeline's declaration of runs.tsv, the one pipeline header used here
+
 namespace validation {
 
-struct ManifestLine {
-  std::string variant, density, test, run, result, starts_from, settings;  // "-": no variant / a preparation
-  bool may_fail = false;
-  std::string seed = "-";  // the sample of an ensemble ("-": a study of one sample)
-  std::string input_hash;  // what its result records when made by the manifest's engine ("": an older manifest)
-};
+using ManifestLine = pipeline::ManifestEntry;
 
-// DIR/runs.tsv; throws std::runtime_error if it is missing or a line has fewer than 8 fields.
+// DIR/runs.tsv's lines; throws std::runtime_error if it is missing, a line has fewer than 8 fields
+// or a variant lists a run twice.
 std::vector<ManifestLine> read_manifest(const std::string& dir);
 
 // The engine DIR/runs.tsv's input hashes are planned for (its first line, "# engine source

@@ -17,7 +17,7 @@ std::vector<ManifestLine> manifest(bool variants = true) {
     for (const std::string& v : variants ? std::vector<std::string>{"a", "b"} : std::vector<std::string>{"-"})
       for (const std::string d : {"loose", "dense"})
         for (const std::string t : {"-", "t1", "t2"})
-          m.push_back({v, d, t, "run", "/elsewhere/seed" + seed + "/" + d + "_" + t + ".h5", "-", "as written", false, seed});
+          m.push_back({v, d, t, "run", "/elsewhere/seed" + seed + "/" + d + "_" + t + ".h5", "-", false, "as written", seed});
   return m;
 }
 

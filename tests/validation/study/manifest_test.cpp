@@ -33,7 +33,7 @@ TEST_CASE("manifest: names, samples and results under the folder given", "[manif
   CHECK(validation::samples_of(m) == std::vector<std::string>{"seed2", "seed10"});  // by seed, not by text
   CHECK(validation::result_under(dir.string(), m[1]) == (dir / "seed10" / "fast_dense_compression.h5").string());
   // A study of one sample: seed "-", results in the folder itself.
-  validation::ManifestLine one{"-", "dense", "-", "dense_prepare", "/ran/there/dense_prepare.h5", "-", "as written"};
+  validation::ManifestLine one{"-", "dense", "-", "dense_prepare", "/ran/there/dense_prepare.h5", "-", false, "as written"};
   CHECK(validation::sample_of(one).empty());
   CHECK(validation::result_under(dir.string(), one) == (dir / "dense_prepare.h5").string());
   CHECK(validation::samples_of({one}) == std::vector<std::string>{""});
