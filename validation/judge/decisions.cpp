@@ -109,23 +109,65 @@ std::vector<RowDecision> decide(const std::vector<Row>& rows, const std::map<std
     }
     d.judged = d.baseline_missing.empty() &&
                std::any_of(d.readings.begin(), d.readings.end(), [](const ReadingEffect& e) { return e.result.valued > 0; });
+    d.outcome = outcome_of(d);
     d.explanation = explain(d);
     out.push_back(std::move(d));
   }
   return out;
 }
 
+const char* to_string(Outcome o) {
+  switch (o) {
+    case Outcome::NotJudged: return "not judged";
+    case Outcome::Consistent: return "consistent";
+    case Outcome::Explained: return "explained";
+    case Outcome::WithinScatter: return "within scatter";
+    case Outcome::Unexplained: return "unexplained";
+  }
+  return "not judged";
+}
+
+Outcome outcome_from_string(const std::string& text) {
+  std::string names;
+  for (Outcome o : {Outcome::NotJudged, Outcome::Consistent, Outcome::Explained, Outcome::WithinScatter, Outcome::Unexplained}) {
+    if (text == to_string(o)) return o;
+    names += std::string(names.empty() ? "" : ", ") + "'" + to_string(o) + "'";
+  }
+  throw std::runtime_error("`outcome` '" + text + "' is none of " + names);
+}
+
 namespace {
+
+// The row as the study judges it: on the full-size ensemble when given, else on the baseline.
+const RowResult& judged_base(const RowDecision& d) { return d.full ? *d.full : d.baseline; }
+
+// The readings not judged for runs they lack ("<reading> lacks <runs>; ..."; "" when none).
+std::string lacking_runs(const RowDecision& d) {
+  std::string lacking;
+  for (const ReadingEffect& e : d.readings)
+    if (!e.missing.empty()) lacking += (lacking.empty() ? "" : "; ") + e.reading + " lacks " + listed(e.missing);
+  return lacking;
+}
+
 // The explanation of a row the study judged (explain() adds the readings that lack runs).
 std::string explain_judged(const RowDecision& d);
+
 }  // namespace
+
+Outcome outcome_of(const RowDecision& d) {
+  if (!d.baseline_missing.empty() || (!d.judged && !lacking_runs(d).empty())) return Outcome::NotJudged;
+  const RowResult& base = judged_base(d);
+  if (base.verdict == Verdict::NotJudged) return Outcome::NotJudged;
+  if (base.verdict == Verdict::Consistent) return Outcome::Consistent;
+  if (!d.made_consistent_by.empty()) return Outcome::Explained;
+  if (d.row.rule == "majority" && judge(base.spread, base.paper) == Verdict::Consistent) return Outcome::WithinScatter;
+  return Outcome::Unexplained;
+}
 
 std::string explain(const RowDecision& d) {
   if (!d.baseline_missing.empty()) return "not judged: the baseline lacks runs this row reads (" + listed(d.baseline_missing) + ")";
   // The readings not judged for runs they lack, said after the rest.
-  std::string lacking;
-  for (const ReadingEffect& e : d.readings)
-    if (!e.missing.empty()) lacking += (lacking.empty() ? "" : "; ") + e.reading + " lacks " + listed(e.missing);
+  const std::string lacking = lacking_runs(d);
   if (!d.judged && !lacking.empty()) return "not judged: no reading has every run this row reads (" + lacking + ")";
   const std::string not_judged = lacking.empty() ? "" : "; not judged under a reading that lacks runs this row reads (" + lacking + ")";
   return explain_judged(d) + not_judged;
@@ -134,11 +176,12 @@ std::string explain(const RowDecision& d) {
 namespace {
 
 std::string explain_judged(const RowDecision& d) {
-  const RowResult& base = d.full ? *d.full : d.baseline;
+  const RowResult& base = judged_base(d);
   const std::string where = d.full ? "the full-size ensemble" : "the baseline";
-  if (base.verdict == Verdict::NotJudged) return "not judged: fewer than 2 samples with a value";
-  if (base.verdict == Verdict::Consistent) return "consistent on " + where + " (within the scatter of one sample)";
-  if (!d.made_consistent_by.empty()) {
+  const Outcome outcome = outcome_of(d);
+  if (outcome == Outcome::NotJudged) return "not judged: fewer than 2 samples with a value";
+  if (outcome == Outcome::Consistent) return "consistent on " + where + " (within the scatter of one sample)";
+  if (outcome == Outcome::Explained) {
     std::string s = "consistent under " + with_shifts(d, d.made_consistent_by);
     if (d.full) s += ", its shift of the mean applied to the full-size ensemble";
     return s;
@@ -156,7 +199,7 @@ std::string explain_judged(const RowDecision& d) {
       if (e.result.valued > 0 && (!best || share(judged(e)) > share(judged(*best)))) best = &e;
     // Within scatter: the trend holds in too few samples, but the interval of one sample reaches
     // the paper's region, so a single sample (the paper's) could show it.
-    const bool scatter = judge(base.spread, base.paper) == Verdict::Consistent;
+    const bool scatter = outcome == Outcome::WithinScatter;
     std::string s = std::string(scatter ? "no reading does: within scatter (the interval of one sample reaches the paper's "
                                           "region, so one sample can show it)"
                                         : "unexplained: no reading makes it hold in more than half of the samples") +

@@ -30,6 +30,16 @@ struct ReadingEffect {
   std::vector<std::string> missing;
 };
 
+// What a decisions study found of a row, as data (its explanation says the same in words):
+// not judged; consistent without any reading; consistent under a reading (`made_consistent_by`);
+// a trend no reading makes hold in most samples, though the interval of one sample reaches the
+// paper's region (within scatter); or no reading makes it consistent (unexplained).
+enum class Outcome { NotJudged, Consistent, Explained, WithinScatter, Unexplained };
+// "not judged", "consistent", "explained", "within scatter", "unexplained": decisions.json's `outcome`.
+const char* to_string(Outcome o);
+// The outcome to_string names. Throws std::runtime_error naming the text and the allowed names otherwise.
+Outcome outcome_from_string(const std::string& text);
+
 struct RowDecision {
   Row row;
   RowResult baseline;
@@ -41,6 +51,7 @@ struct RowDecision {
   // Whether the study judged the row: the baseline has every run it reads and so has at least one
   // reading. A row not judged says why in its explanation.
   bool judged = false;
+  Outcome outcome = Outcome::NotJudged;  // outcome_of(): what the explanation says in words
   std::string explanation;
 };
 
@@ -60,6 +71,12 @@ std::vector<std::string> missing_runs(const Row& row, const ReadingResults& samp
 std::vector<RowDecision> decide(const std::vector<Row>& rows, const std::map<std::string, ReadingResults>& readings,
                                 const std::vector<std::string>& order, const std::string& baseline,
                                 const std::map<std::string, RowResult>& full = {});
+
+// What the study found of the row, from its verdicts (explain() words the same): not judged (the
+// baseline lacks runs the row reads, no reading has them all, or fewer than 2 samples give a
+// value), consistent, explained (`made_consistent_by`), within scatter (a trend whose interval of
+// one sample reaches the paper's region) or unexplained.
+Outcome outcome_of(const RowDecision& d);
 
 // The sentence that explains a row: consistent at the baseline; consistent under some readings;
 // or unexplained, with the reading that moves it most towards the paper and by how much; or not

@@ -51,6 +51,10 @@ DecisionsFile::Finding finding_from_json(const nlohmann::json& row) {
   finding.explanation = row.at("explanation").get<std::string>();
   finding.judged = row.at("judged").get<bool>();
   finding.explained_by = row.at("made_consistent_by").get<std::vector<std::string>>();
+  finding.outcome = outcome_from_string(row.at("outcome").get<std::string>());
+  if ((finding.outcome == Outcome::Explained) != !finding.explained_by.empty())
+    throw std::runtime_error("`outcome` '" + std::string(to_string(finding.outcome)) + "' with " +
+                             std::to_string(finding.explained_by.size()) + " reading(s) in `made_consistent_by`: 'explained' goes with one or more, any other outcome with none");
   return finding;
 }
 
@@ -111,6 +115,7 @@ nlohmann::ordered_json decisions_file_json(const DecisionsFile& f) {
                     {"readings", readings},
                     {"judged", d.judged},
                     {"made_consistent_by", d.explained_by},
+                    {"outcome", to_string(d.outcome)},
                     {"explanation", d.explanation}});
   }
   json out = {{"schema", 2}, {"baseline", f.baseline}};
@@ -204,25 +209,21 @@ std::string cause_line(const std::vector<DecisionsFile>& files, const std::strin
   } else {
     const DecisionsFile& f = *picked.front();
     const DecisionsFile::Finding& finding = f.rows.at(row);
-    const std::string& e = finding.explanation;
-    if (!finding.explained_by.empty()) {
-      const std::string& reading = finding.explained_by.front();
-      line = reading + (finding.explained_by.size() > 1 ? " (+" + std::to_string(finding.explained_by.size() - 1) + ")" : "") +
-             " explains it";
-      if (side_effects) {
-        const std::size_t broken = side_effects(f, reading).size();
-        line += broken == 0 ? ", breaks no other row" : ", breaks " + std::to_string(broken) + " other row" + (broken == 1 ? "" : "s");
+    switch (finding.outcome) {
+      case Outcome::Explained: {
+        const std::string& reading = finding.explained_by.front();
+        line = reading + (finding.explained_by.size() > 1 ? " (+" + std::to_string(finding.explained_by.size() - 1) + ")" : "") +
+               " explains it";
+        if (side_effects) {
+          const std::size_t broken = side_effects(f, reading).size();
+          line += broken == 0 ? ", breaks no other row" : ", breaks " + std::to_string(broken) + " other row" + (broken == 1 ? "" : "s");
+        }
+        break;
       }
-    } else if (e.rfind("no reading does: within scatter", 0) == 0) {
-      line = "within scatter; no reading explains it";
-    } else if (e.rfind("unexplained", 0) == 0) {
-      line = "no reading explains it";
-    } else if (e.rfind("not judged", 0) == 0) {
-      line = "not judged by the decisions study";
-    } else if (e.rfind("consistent on", 0) == 0) {
-      line = "consistent in the decisions study";
-    } else {
-      line = "see the cause in full";
+      case Outcome::WithinScatter: line = "within scatter; no reading explains it"; break;
+      case Outcome::Unexplained: line = "no reading explains it"; break;
+      case Outcome::NotJudged: line = "not judged by the decisions study"; break;
+      case Outcome::Consistent: line = "consistent in the decisions study"; break;
     }
   }
   // Cut at a code point (a byte that does not continue one, 10xxxxxx, starts one).

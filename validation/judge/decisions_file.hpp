@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "judge/decisions.hpp"
 #include "judge/rows.hpp"
 #include "study/stamp.hpp"
 
@@ -47,7 +48,8 @@ struct DecisionsFile {
     Verdict baseline_verdict = Verdict::NotJudged;     // on this study's own samples
     std::vector<std::pair<std::string, Reading>> readings;  // every reading but the baseline, in the study's order
     std::string explanation;
-    bool judged = false;  // the study judged the row (a file without `judged`: its explanation does not start "not judged")
+    Outcome outcome = Outcome::NotJudged;
+    bool judged = false;  // the study judged the row
     // The readings under which the row is consistent (`made_consistent_by`; a file without it: the
     // names explain() lists after "consistent under ").
     std::vector<std::string> explained_by;
@@ -101,12 +103,12 @@ using TurnsInconsistent = std::function<std::vector<std::string>(const Decisions
 // consistent rows inconsistent: ..."). No file, or none with the row: that no study has judged it.
 std::string cause_text(const std::vector<DecisionsFile>& files, const std::string& row, const TurnsInconsistent& side_effects = {});
 
-// The cause in one line (the compact verdict table's cell; causes.md has cause_text()): what the
-// finding cause_text() puts first says, in short: "<reading> explains it, breaks N other rows" (the
-// consistent rows it turns inconsistent, from `side_effects`; "breaks no other row"), "within
-// scatter; no reading explains it", "no reading explains
-// it", "not judged by the decisions study", "consistent in the decisions study", or "no decisions
-// study judged it". At most `limit` code points (cut with "…" beyond).
+// The cause in one line (the compact verdict table's cell; causes.md has cause_text()): the outcome
+// of the finding cause_text() puts first, in short: "<reading> explains it, breaks N other rows"
+// (the consistent rows it turns inconsistent, from `side_effects`; "breaks no other row"), "within
+// scatter; no reading explains it", "no reading explains it", "not judged by the decisions study",
+// "consistent in the decisions study", or "no decisions study judged it". At most `limit` code
+// points (cut with "…" beyond).
 std::string cause_line(const std::vector<DecisionsFile>& files, const std::string& row, const TurnsInconsistent& side_effects = {},
                        std::size_t limit = 58);
 

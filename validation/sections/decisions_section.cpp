@@ -225,6 +225,7 @@ validation::DecisionsFile decisions_record(const std::string& baseline, const st
     }
     row.judged = d.judged;
     row.explained_by = d.made_consistent_by;
+    row.outcome = d.outcome;
     row.explanation = d.explanation;
     f.order.push_back(d.row.name);
     f.rows[d.row.name] = std::move(row);
@@ -438,6 +439,7 @@ int decisions_from_json(const std::string& file, const std::string& out, const s
       d.readings.push_back(std::move(e));
     }
     d.judged = row.judged;
+    d.outcome = row.outcome;
     d.explanation = row.explanation;
     decided.push_back(std::move(d));
   }

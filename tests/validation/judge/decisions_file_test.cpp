@@ -49,7 +49,8 @@ TEST_CASE("validate --decisions: a row's cause is the largest size that judged i
   fs::remove_all(dir);
   // A file that does not record its size.
   const auto row = [](const std::string& name, bool judged, const std::vector<std::string>& by, const std::string& explanation) {
-    return nlohmann::json{{"name", name}, {"judged", judged}, {"made_consistent_by", by}, {"explanation", explanation}};
+    const std::string outcome = !by.empty() ? "explained" : judged ? "unexplained" : "not judged";
+    return nlohmann::json{{"name", name}, {"judged", judged}, {"made_consistent_by", by}, {"outcome", outcome}, {"explanation", explanation}};
   };
   const std::string small = write_json(dir / "small.json", {{"schema", 2},
                                                             {"baseline", "baseline"},
@@ -96,7 +97,7 @@ TEST_CASE("a decisions.json of another schema is refused, naming the schema and 
   // A file without `schema` named its readings in prose alone (schema 1); one of a later schema
   // may record what this tool would misread.
   for (const nlohmann::json& schema : {nlohmann::json(), nlohmann::json(1), nlohmann::json(3)}) {
-    nlohmann::json j = {{"baseline", "baseline"}, {"rows", {{{"name", "A"}, {"judged", true}, {"made_consistent_by", {"r"}}, {"explanation", "x"}}}}};
+    nlohmann::json j = {{"baseline", "baseline"}, {"rows", {{{"name", "A"}, {"judged", true}, {"made_consistent_by", {"r"}}, {"outcome", "explained"}, {"explanation", "x"}}}}};
     if (!schema.is_null()) j["schema"] = schema;
     const std::string file = write_json(dir / ("s" + schema.dump() + ".json"), j);
     const std::string expected = "is of schema " + (schema.is_null() ? std::string("1") : schema.dump());
@@ -122,12 +123,14 @@ TEST_CASE("validate --decisions: two studies of the same size both said, the one
       "grading", {{{"name", "A"},
                    {"judged", true},
                    {"made_consistent_by", nlohmann::json::array()},
+                   {"outcome", "within scatter"},
                    {"explanation", "no reading does: within scatter; most: grading_by_mass (0 of 5)"}}});
   const std::string dashpot = study(
       "dashpot",
       {{{"name", "A"},
         {"judged", true},
         {"made_consistent_by", {"contact_dashpots"}},
+        {"outcome", "explained"},
         {"explanation", "consistent under contact_dashpots (-2.1 sd, t = 2.23), its shift of the mean applied"}},
        {{"name", "B"},
         {"judged", true},
@@ -135,6 +138,7 @@ TEST_CASE("validate --decisions: two studies of the same size both said, the one
         {"baseline_sd", 0.1},
         {"readings", {{"contact_dashpots", {{"mean", 0.5}}}}},
         {"made_consistent_by", nlohmann::json::array()},
+        {"outcome", "consistent"},
         {"explanation", "consistent on the full-size ensemble"}},
        {{"name", "C"},
         {"judged", true},
@@ -142,6 +146,7 @@ TEST_CASE("validate --decisions: two studies of the same size both said, the one
         {"baseline_sd", 0.1},
         {"readings", {{"contact_dashpots", {{"mean", 1.0}}}}},
         {"made_consistent_by", nlohmann::json::array()},
+        {"outcome", "consistent"},
         {"explanation", "consistent on the full-size ensemble"}}});
   const std::vector<validation::Row> rows = {row_named("A", 0), row_named("B", 0.01), row_named("C", 0.01)};
   const std::vector<DecisionsFile> files = {validation::read_decisions_file(grading), validation::read_decisions_file(dashpot)};
@@ -192,3 +197,39 @@ TEST_CASE("validate --decisions: two studies of the same size both said, the one
   CHECK(validation::cause_text({files[0]}, "A") == "no reading does: within scatter; most: grading_by_mass (0 of 5)");
 }
 
+
+TEST_CASE("the cause in one line is worded from the finding's outcome, not from its explanation's words", "[decisions][validate]") {
+  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "decisions_file_outcome";
+  fs::remove_all(dir);
+  // Each explanation says something else than its outcome: the line follows the outcome.
+  const auto row = [](const std::string& name, const std::string& outcome, const std::vector<std::string>& by) {
+    return nlohmann::json{{"name", name}, {"judged", outcome != "not judged"}, {"made_consistent_by", by}, {"outcome", outcome},
+                          {"explanation", "unexplained: words that say otherwise"}};
+  };
+  const std::string file = write_json(dir / "decisions.json", {{"schema", 2},
+                                                               {"rows",
+                                                                {row("A", "explained", {"r1", "r2"}), row("B", "within scatter", {}),
+                                                                 row("C", "not judged", {}), row("D", "consistent", {}),
+                                                                 row("E", "unexplained", {})}}});
+  const std::vector<DecisionsFile> files = {validation::read_decisions_file(file)};
+  CHECK(files[0].rows.at("A").outcome == validation::Outcome::Explained);
+  CHECK(validation::cause_line(files, "A") == "r1 (+1) explains it");
+  const validation::TurnsInconsistent two = [](const DecisionsFile&, const std::string&) { return std::vector<std::string>{"x", "y"}; };
+  CHECK(validation::cause_line(files, "A", two) == "r1 (+1) explains it, breaks 2 other rows");
+  CHECK(validation::cause_line(files, "B") == "within scatter; no reading explains it");
+  CHECK(validation::cause_line(files, "C") == "not judged by the decisions study");
+  CHECK(validation::cause_line(files, "D") == "consistent in the decisions study");
+  CHECK(validation::cause_line(files, "E") == "no reading explains it");
+  CHECK(validation::cause_line(files, "F") == "no decisions study judged it");
+  CHECK(validation::cause_line(files, "B", {}, 10) == "within sc…");  // 9 code points and the ellipsis
+  // Written back, the outcome is kept.
+  CHECK(validation::decisions_file_json(files[0])["rows"][1]["outcome"] == "within scatter");
+
+  // An outcome the file cannot have: an unknown name, or "explained" without a reading (and a reading without it).
+  for (const auto& [bad, expected] : {std::pair{row("A", "explainable", {}), std::string("`outcome` 'explainable' is none of")},
+                                      std::pair{row("A", "explained", {}), std::string("'explained' goes with one or more")},
+                                      std::pair{row("A", "unexplained", {"r1"}), std::string("`outcome` 'unexplained' with 1 reading(s)")}}) {
+    const std::string wrong = write_json(dir / "wrong.json", {{"schema", 2}, {"rows", {bad}}});
+    CHECK_THROWS_WITH(validation::read_decisions_file(wrong), Catch::Contains(expected));
+  }
+}

@@ -5,6 +5,7 @@
 
 #include <map>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "judge/decisions.hpp"
@@ -81,6 +82,7 @@ TEST_CASE("decisions: a shift counts in max(sd, resolution) and beyond ±10 is s
   CHECK(d[0].baseline.verdict == Verdict::Inconsistent);
   CHECK(d[0].made_consistent_by == std::vector<std::string>{"far"});
   CHECK(d[0].judged);
+  CHECK(d[0].outcome == validation::Outcome::Explained);
   INFO(d[0].explanation);
   CHECK(d[0].explanation.rfind("consistent under far (beyond +10 sd (+28), t = ", 0) == 0);
 
@@ -116,6 +118,7 @@ TEST_CASE("decisions: a reading lacking a run a row reads is not judged on that 
   CHECK_FALSE(d[1].readings[0].shift_sd);
   CHECK_FALSE(d[1].judged);
   CHECK(d[1].explanation == "not judged: no reading has every run this row reads (r lacks seed3 test2)");
+  CHECK(d[1].outcome == validation::Outcome::NotJudged);
   // Test 1 alone: judged, +0.3 % / 0.1 % = +3 sd.
   CHECK(d[2].readings[0].missing.empty());
   CHECK(*d[2].readings[0].shift_sd == Approx(3.0));
@@ -135,4 +138,25 @@ TEST_CASE("decisions: a reading lacking a run a row reads is not judged on that 
   CHECK_FALSE(d[0].judged);
   CHECK(d[0].baseline.verdict == Verdict::NotJudged);
   CHECK(d[0].explanation == "not judged: the baseline lacks runs this row reads (seed1 prepare)");
+  CHECK(d[0].outcome == validation::Outcome::NotJudged);
+}
+
+TEST_CASE("decisions: a trend no reading makes hold is within scatter when one sample's interval reaches the paper's region",
+          "[decisions]") {
+  // "e0 at least 0.72" held by most samples. Baseline 0.70, 0.71, 0.72: it holds in 1 of 3, and the
+  // interval of one sample, 0.71 ± t(0.975, 2) 0.01 sqrt(4/3) = ± 0.0497, reaches 0.72. Shifted down
+  // by 0.1 it reaches no further than 0.66: unexplained. The reading "down" (0.01 lower) helps neither.
+  validation::Row row = e0_row(0.72);
+  row.rule = "majority";
+  row.check = "at_least";
+  for (const auto& [base, outcome, words] : {std::tuple{0.70, validation::Outcome::WithinScatter, "no reading does: within scatter"},
+                                             std::tuple{0.60, validation::Outcome::Unexplained, "unexplained: no reading makes it hold"}}) {
+    const auto d = validation::decide({row}, {{"baseline", samples(base, 0.01)}, {"down", samples(base - 0.01, 0.01)}},
+                                      {"baseline", "down"}, "baseline");
+    REQUIRE(d.size() == 1);
+    INFO(d[0].explanation);
+    CHECK(d[0].baseline.verdict == Verdict::Inconsistent);
+    CHECK(d[0].outcome == outcome);
+    CHECK(d[0].explanation.rfind(words, 0) == 0);
+  }
 }

@@ -53,12 +53,12 @@ std::string decisions_json(bool size) {
     {"name": "e0, loose", "group": "samples", "baseline_mean": 0.70049, "baseline_sd": 0.0213, "baseline_verdict": "consistent",
      "readings": {"r1": {"mean": 0.73, "shift_sd": 1.38545, "verdict": "inconsistent"},
                   "r2": {"mean": 0.69, "shift_sd": -0.492488, "verdict": "consistent"}},
-     "judged": true, "made_consistent_by": [],
+     "judged": true, "made_consistent_by": [], "outcome": "consistent",
      "explanation": "consistent on the full-size ensemble (within the scatter of one sample)"},
     {"name": "ev, loose", "group": "volumetric strain", "baseline_mean": 1e-05, "baseline_sd": 2.4e-06, "baseline_verdict": "consistent",
      "readings": {"r1": {"mean": 0.28, "shift_sd": 116662, "verdict": "inconsistent"},
                   "r2": {"mean": 1.2e-05, "shift_sd": 0.833333, "verdict": "consistent"}},
-     "judged": true, "made_consistent_by": ["r1"],
+     "judged": true, "made_consistent_by": ["r1"], "outcome": "explained",
      "explanation": "consistent under r1 (beyond +10 sd (+56), t = 2.76), its shift of the mean applied to the full-size ensemble"}
   ],
   "missing_results": 0

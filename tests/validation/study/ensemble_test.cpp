@@ -157,6 +157,7 @@ TEST_CASE("decisions: shifts in baseline standard deviations and the reading tha
   CHECK(d[0].baseline.verdict == Verdict::Consistent);
   CHECK(d[0].readings[1].result.verdict == Verdict::Inconsistent);
   CHECK(d[0].explanation.rfind("consistent on the baseline", 0) == 0);
+  CHECK(d[0].outcome == validation::Outcome::Consistent);
   // With "denser" as the baseline the row is inconsistent, and the two other readings explain it.
   d = validation::decide({row}, readings, {"denser", "baseline", "looser"}, "denser");
   CHECK(d[0].baseline.verdict == Verdict::Inconsistent);
@@ -168,6 +169,7 @@ TEST_CASE("decisions: shifts in baseline standard deviations and the reading tha
   d = validation::decide({row}, readings, {"denser", "baseline", "looser"}, "denser");
   CHECK(d[0].made_consistent_by.empty());
   CHECK(d[0].explanation.find("unexplained") == 0);
+  CHECK(d[0].outcome == validation::Outcome::Unexplained);
   CHECK(d[0].explanation.find("closest: looser") != std::string::npos);
   CHECK_THROWS(validation::decide({row}, readings, {"x"}, "x"));
 

@@ -83,7 +83,7 @@ TEST_CASE("validate --from-json: the tables judged again from validation.json ar
       "  - {name: \"e0 (void ratio)\", quantity: void_ratio_after_preparation, reference: 0.6, check: within, tolerance: 0.1, source: s, reason: r}\n"
       "  - {name: CN, quantity: coordination_after_preparation, rule: majority, reference: 3, check: at_least, source: s, reason: r}\n"
       "  - {name: \"e0 far off\", quantity: void_ratio_after_preparation, reference: 5, check: within, tolerance: 0.1, source: s, reason: r}\n";
-  std::ofstream(dir / "decisions.json") << R"({"schema": 2, "rows": [{"name": "e0 far off", "judged": true, "made_consistent_by": [],
+  std::ofstream(dir / "decisions.json") << R"({"schema": 2, "rows": [{"name": "e0 far off", "judged": true, "made_consistent_by": [], "outcome": "unexplained",
       "explanation": "unexplained: no reading makes it consistent; the interval of the baseline misses the paper by 4.300"}]})";
   const std::string refs = (dir / "refs.yaml").string(), decisions = (dir / "decisions.json").string();
   const auto from_results = validate("--results '" + results.string() + "' --references '" + refs + "' --out '" + (dir / "a").string() +
