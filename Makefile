@@ -21,8 +21,7 @@ CRITICAL_STATE ?= results/critical_state/paper
 CRITICAL_STATE_ENSEMBLE ?= results/critical_state_ensemble/paper
 CRITICAL_STATE_RATES    ?= results/critical_state_rates/paper
 LIQUEFACTION   ?= results/liquefaction_loose/paper results/liquefaction_medium/paper
-# What `make study` runs besides the paper and stability studies (30.6 min for 10 of its 17 runs on
-# 2 cores, docs/performance.md); the longer liquefaction and critical-state ensembles have their own targets.
+# What `make study` runs besides the paper and stability studies (the ensembles: their own targets).
 CELL_STUDIES   ?= pipeline/studies/critical_state.yaml
 EXECUTOR    ?=                          # local or slurm (pipeline --executor); empty: the study files' executor key, else local
 

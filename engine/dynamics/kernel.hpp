@@ -31,6 +31,16 @@ namespace dem {
 // same with any skin.
 inline constexpr std::ptrdiff_t chunk_size = 512;
 inline std::ptrdiff_t chunk_count(std::size_t n) { return (static_cast<std::ptrdiff_t>(n) + chunk_size - 1) / chunk_size; }
+// The first particle of chunk c of n particles (n for c = chunk_count(n)).
+inline std::size_t chunk_first_particle(std::size_t n, std::ptrdiff_t c) { return std::min(n, static_cast<std::size_t>(c * chunk_size)); }
+// The pairs [begin, end) of pair chunk c: those whose first particle is in particle chunk c.
+struct PairRange {
+  std::size_t begin, end;
+};
+inline PairRange pair_chunk_range(const PairIndex& index, std::ptrdiff_t c) {
+  const std::size_t n = index.first_begin.size() - 1;
+  return {index.first_begin[chunk_first_particle(n, c)], index.first_begin[chunk_first_particle(n, c + 1)]};
+}
 
 // A step over the chunks: pairs(c, begin, end) computes the forces of pair chunk c (pairs
 // [begin, end)), move(c, begin, end) moves the particles [begin, end) of chunk c and returns false
@@ -55,13 +65,12 @@ template <class PairBody, class MoveBody>
 bool sweep_chunks(const PairIndex& index, const PairBody& pairs, const MoveBody& move) {
   const std::size_t n = index.first_begin.size() - 1;
   const std::ptrdiff_t chunks = chunk_count(n);
-  auto first_particle = [n](std::ptrdiff_t c) { return std::min(n, static_cast<std::size_t>(c * chunk_size)); };
-  auto pairs_of = [&](std::ptrdiff_t c, bool serial) {
-    pairs(static_cast<std::size_t>(c), std::size_t{index.first_begin[first_particle(c)]},
-          std::size_t{index.first_begin[first_particle(c + 1)]}, serial);
+  auto pairs_of = [&](std::ptrdiff_t c, bool serial) {  // the pairs of pair_chunk_range(index, c)
+    pairs(static_cast<std::size_t>(c), std::size_t{index.first_begin[chunk_first_particle(n, c)]},
+          std::size_t{index.first_begin[chunk_first_particle(n, c + 1)]}, serial);
   };
   auto move_of = [&](std::ptrdiff_t c, bool serial) {
-    return move(static_cast<std::size_t>(c), first_particle(c), first_particle(c + 1), serial);
+    return move(static_cast<std::size_t>(c), chunk_first_particle(n, c), chunk_first_particle(n, c + 1), serial);
   };
   int every = 1;
   // One thread runs its sweep inside the parallel region too: outside it, the same loop ran 6 %

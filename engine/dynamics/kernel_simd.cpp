@@ -548,11 +548,9 @@ double dashpot_second_half(int simd_lanes, const Particles& p, const PairList& p
                       pairs.first.data(), pairs.second.data(), p.v.data(), p.omega.data(), rates.axial, rates.shear};
   // The pair chunks of sweep_chunks, each summed from zero, then added in chunk order: what the
   // next step's pair loop books (total_of_chunks).
-  const std::size_t particles = index.first_begin.size() - 1;
   double total = 0;
-  for (std::ptrdiff_t c = 0; c < chunk_count(particles); ++c) {
-    const std::size_t begin = index.first_begin[std::min(particles, static_cast<std::size_t>(c * chunk_size))],
-                      end = index.first_begin[std::min(particles, static_cast<std::size_t>((c + 1) * chunk_size))];
+  for (std::ptrdiff_t c = 0; c < chunk_count(index.first_begin.size() - 1); ++c) {
+    const auto [begin, end] = pair_chunk_range(index, c);
     double lost = 0;
     std::size_t k = begin;  // pairs before k done by the vector loop
     if (simd_lanes == 8) k = begin + (end - begin) / 8 * 8, lost = avx512::dashpot_work<Law>(w, begin, k, lost);
