@@ -102,6 +102,23 @@ struct alignas(32) Sum4 {
   double v[4];
 };
 
+// A vector per pair kept as its x, y and z in arrays of their own: the vectorised loops move
+// `lanes` consecutive pairs' components with one load or store each, where an array of Vec3 needs
+// six shuffles more per load or store of four pairs.
+struct PairComponents {
+  std::vector<double> x, y, z;
+  void resize(std::size_t n) { x.resize(n), y.resize(n), z.resize(n); }
+};
+// Where the loops find PairComponents (D: double, or const double to read only).
+template <class D>
+struct ComponentsAt {
+  D* __restrict x;
+  D* __restrict y;
+  D* __restrict z;
+};
+inline ComponentsAt<double> components_at(PairComponents& c) { return {c.x.data(), c.y.data(), c.z.data()}; }
+inline ComponentsAt<const double> components_at(const PairComponents& c) { return {c.x.data(), c.y.data(), c.z.data()}; }
+
 // Forces of one evaluation, and the per-chunk partial sums of both loops. Kept between steps so
 // that a step allocates nothing.
 //
@@ -122,11 +139,11 @@ struct PairForces {
   // Laws with contact dashpots: per pair, the dashpots' force on `second` [N] (0 out of contact)
   // and the branch vector [m] of this evaluation, for the second half of their dissipation
   // (dashpot_second_half, below).
-  std::vector<Vec3> dashpot_force, dashpot_branch;
+  PairComponents dashpot_force, dashpot_branch;
   // Laws that rotate: a_i (n x F_d) and a_j (n x F_d), a the lever arms, n the normal: the
   // dashpot force's share in the power of the spins, F_d . ((a_i w_i + a_j w_j) x n) =
   // w_i . a_i (n x F_d) + w_j . a_j (n x F_d), so that the second half needs no geometry again.
-  std::vector<Vec3> dashpot_spin_i, dashpot_spin_j;
+  PairComponents dashpot_spin_i, dashpot_spin_j;
   // Per pair chunk, when the pair loop booked the evaluation before's second half
   // (PairLoop::DashpotOut::book_previous_half): -sum F_d . u(n-1/2) of its pairs [W].
   std::vector<double> previous_dashpot_sums;
@@ -175,10 +192,10 @@ struct PairLoop {
   // Laws with contact dashpots: where the pair loop leaves each pair's dashpot force and branch
   // vector (PairForces); no member at all for the other laws.
   struct DashpotOut {
-    Vec3* __restrict force;
-    Vec3* __restrict branch;
-    Vec3* __restrict spin_i;  // PairForces::dashpot_spin_i, _j (laws that rotate)
-    Vec3* __restrict spin_j;
+    ComponentsAt<double> force;
+    ComponentsAt<double> branch;
+    ComponentsAt<double> spin_i;  // PairForces::dashpot_spin_i, _j (laws that rotate)
+    ComponentsAt<double> spin_j;
     const double* __restrict c_n;          // the per-pair coefficients (Law::dashpot_per_pair), else null
     const double* __restrict c_t_over_dt;
     // Book the second half of the evaluation before's dashpot work (dashpot_second_half) while
@@ -223,8 +240,8 @@ struct PairLoop {
       out.dashpot_force.resize(pairs.size());
       out.dashpot_branch.resize(pairs.size());
       if constexpr (Law::rotates) out.dashpot_spin_i.resize(pairs.size()), out.dashpot_spin_j.resize(pairs.size());
-      dashpot_out = {out.dashpot_force.data(), out.dashpot_branch.data(), out.dashpot_spin_i.data(), out.dashpot_spin_j.data(),
-                     out.dashpot_c_n.data(), out.dashpot_c_t_over_dt.data(), book_previous_half};
+      dashpot_out = {components_at(out.dashpot_force), components_at(out.dashpot_branch), components_at(out.dashpot_spin_i),
+                     components_at(out.dashpot_spin_j), out.dashpot_c_n.data(), out.dashpot_c_t_over_dt.data(), book_previous_half};
     }
   }
 };
@@ -447,10 +464,10 @@ MotionSums forces_and_motion(int simd_lanes, const Law& law, const DampingPolicy
 
 // What the second half of the contact dashpots' work reads (dashpot_second_half), as raw pointers.
 struct DashpotWork {
-  const Vec3* __restrict force;   // PairForces::dashpot_force
-  const Vec3* __restrict branch;  // PairForces::dashpot_branch
-  const Vec3* __restrict spin_i;  // PairForces::dashpot_spin_i, _j (laws that rotate)
-  const Vec3* __restrict spin_j;
+  ComponentsAt<const double> force;   // PairForces::dashpot_force
+  ComponentsAt<const double> branch;  // PairForces::dashpot_branch
+  ComponentsAt<const double> spin_i;  // PairForces::dashpot_spin_i, _j (laws that rotate)
+  ComponentsAt<const double> spin_j;
   const std::uint32_t* __restrict first;
   const std::uint32_t* __restrict second;
   const Vec3* __restrict v;

@@ -544,7 +544,8 @@ MotionSums forces_and_motion(int simd_lanes, const Law& law, const DampingPolicy
 template <class Law>
 double dashpot_second_half(int simd_lanes, const Particles& p, const PairList& pairs, const PairIndex& index, const PairForces& out,
                            const CellRates& rates, double dt) {
-  const DashpotWork w{out.dashpot_force.data(), out.dashpot_branch.data(), out.dashpot_spin_i.data(), out.dashpot_spin_j.data(),
+  const DashpotWork w{components_at(out.dashpot_force), components_at(out.dashpot_branch), components_at(out.dashpot_spin_i),
+                      components_at(out.dashpot_spin_j),
                       pairs.first.data(), pairs.second.data(), p.v.data(), p.omega.data(), rates.axial, rates.shear};
   // The pair chunks of sweep_chunks, each summed from zero, then added in chunk order: what the
   // next step's pair loop books (total_of_chunks).
