@@ -10,11 +10,44 @@
 #include <cstring>
 #include <filesystem>
 #include <functional>
+#include <fstream>
 #include <numeric>
+#include <optional>
+
+#include <sys/resource.h>
+#include <unistd.h>
 
 namespace dem::h5 {
 
 namespace {
+
+// How close the process is to a limit on its memory (ulimit -v or -d), the only way an allocation
+// fails on Linux short of being killed: the usage and the limit (MiB) of the
+// tightest of the limits that are set; no value when no limit is set or /proc is unreadable.
+struct MemoryHeadroom {
+  double used_mib = 0, limit_mib = 0;
+  double headroom_mib() const { return limit_mib - used_mib; }
+};
+std::optional<MemoryHeadroom> memory_headroom() {
+  std::ifstream statm("/proc/self/statm");
+  unsigned long long size_pages = 0, resident = 0, shared = 0, text = 0, lib = 0, data_pages = 0;
+  if (!(statm >> size_pages >> resident >> shared >> text >> lib >> data_pages)) return std::nullopt;
+  const double page_mib = static_cast<double>(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
+  std::optional<MemoryHeadroom> tightest;
+  const auto consider = [&](int resource, unsigned long long pages) {
+    rlimit limit{};
+    if (getrlimit(resource, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) return;
+    const MemoryHeadroom h{static_cast<double>(pages) * page_mib, static_cast<double>(limit.rlim_cur) / (1024.0 * 1024.0)};
+    if (!tightest || h.headroom_mib() < tightest->headroom_mib()) tightest = h;
+  };
+  consider(RLIMIT_AS, size_pages);
+  consider(RLIMIT_DATA, data_pages);
+  return tightest;
+}
+
+// A failed HDF5 call with no recorded reason, this near a memory limit, ran out of memory: HDF5's own
+// allocations are small (metadata, a 1 MiB chunk cache), and the engine's large ones throw bad_alloc.
+constexpr double out_of_memory_headroom_mib = 16.0;
 
 std::string failed(const std::string& what) {
   const std::string why = last_error();
@@ -69,6 +102,15 @@ std::string last_error() {
   // fails with an empty stack and malloc's ENOMEM is all that is left (a run at 34 MiB did so in
   // H5Acreate2).
   if (found.innermost.empty() && sys_errno == ENOMEM) return "out of memory (HDF5 recorded no reason; errno ENOMEM)";
+  // Or it records only the outer call's failure ("unable to create dataset", a CI run at 34 MiB):
+  // the memory limit's headroom then tells.
+  if (const auto headroom = memory_headroom(); headroom && headroom->headroom_mib() < out_of_memory_headroom_mib) {
+    char usage[160];
+    std::snprintf(usage, sizeof usage, "; %.1f MiB of the process's %.1f MiB memory limit in use", headroom->used_mib,
+                  headroom->limit_mib);
+    return "out of memory (" + (found.innermost.empty() ? std::string("HDF5 recorded no reason") : found.innermost) +
+           usage + ")";
+  }
   return found.innermost;
 }
 

@@ -39,8 +39,8 @@ class Handle {
 
 // Why the last HDF5 call failed, from the library's error stack: the system's message when a read
 // or write failed (e.g. "No space left on device", "File too large"), "out of memory" when an
-// allocation failed (or the stack is empty and errno is ENOMEM), else HDF5's innermost description
-// ("" if the stack is empty).
+// allocation failed (or the stack is empty and errno is ENOMEM, or the process is within 16 MiB of
+// its memory limit), else HDF5's innermost description ("" if the stack is empty).
 std::string last_error();
 
 Handle create_file(const std::string& path);     // truncates
