@@ -122,7 +122,7 @@ void start(Loop& l) {
   if (!c.sizes.empty() && !l.o.profile.empty())
     throw dem::ConfigError("--profile " + l.o.profile + " is given, but " + c.file + " names its profiles in sizes: leave --profile out");
   std::vector<Size> sizes = c.sizes;
-  if (sizes.empty()) sizes.push_back({l.o.profile.empty() ? l.study.default_profile().name : l.o.profile, 0, 0, {}});
+  if (sizes.empty()) sizes.push_back({l.o.profile.empty() ? l.study.default_profile().name : l.o.profile, 0, 0, 0, {}});
   for (std::size_t k = 0; k < sizes.size(); ++k) {
     const pipeline::Profile* profile = nullptr;
     try {
@@ -136,6 +136,7 @@ void start(Loop& l) {
     so.densities = sizes[k].densities;
     so.seeds = profile->seeds;
     so.budget = sizes[k].sets;
+    so.confirm = sizes[k].confirm;
     // A part of a size has its own results folder and ledger: profile-dense-medium.
     std::string name = profile->name;
     for (const std::string& d : so.densities) name += "-" + d;
@@ -161,6 +162,9 @@ void start(Loop& l) {
     state.refs = l.out.sizes[k].densities.empty() ? l.out.references : only_densities(l.out.references, l.out.sizes[k].densities);
     if (state.refs.curves.empty() && state.refs.rows.empty())
       throw dem::ConfigError(c.file + ": sizes: " + l.out.sizes[k].label() + ": the references have no curve or row of its densities");
+    if (l.out.sizes[k].confirm > 0 && state.refs.rows.empty())
+      throw dem::ConfigError(c.file + ": sizes[" + std::to_string(k) + "].confirm: " + l.out.sizes[k].label() +
+                             " has no scalar row of the references to confirm (a confirmed set is judged on rows): give 0 or add rows");
     state.ledger = read_ledger(state.ledger_file, state.refs);
   }
 }
@@ -234,7 +238,7 @@ IterationPlan plan_iteration(Loop& l, std::size_t k, int it) {
 
 }  // namespace
 
-std::size_t base_of(const Outcome& out, std::size_t k) { return out.sizes[k].densities.empty() ? k - 1 : 0; }
+std::size_t base_of(const Outcome& out, std::size_t k) { return out.base_of(k); }
 
 void execute_sets(Loop& l, std::size_t k, const std::vector<ParameterSet>& sets, const std::vector<pipeline::PlannedRun>& runs) {
   SizeState& size = l.at[k];
@@ -350,7 +354,7 @@ bool step_size(Loop& l, std::size_t k, int it) {
   IterationPlan p = plan_iteration(l, k, it);
   if (l.o.plan_only) {
     const Size* size = l.c.sizes.empty() ? nullptr : &l.c.sizes[k];
-    print_plan(l, k, p, k == 0 ? l.c.max_iterations * l.c.batch : size->sets, k == 0 ? l.c.batch : size->per_iteration);
+    print_plan(l, k, p, k == 0 ? l.c.max_iterations * l.c.batch : size->sets + size->confirm, k == 0 ? l.c.batch : size->per_iteration);
     return false;
   }
   run_iteration(l, k, it, p);
@@ -428,7 +432,7 @@ bool settled(Loop& l, int it, const IterationSummary& summary) {
   const Calibration& c = l.c;
   if (it < c.min_iterations || summary.moved > c.tolerance || summary.ess < c.min_effective_sets || !summary.contained) return false;
   for (std::size_t k = 1; k < l.out.sizes.size(); ++k)
-    if (static_cast<int>(l.out.sizes[k].sets.size()) < l.out.sizes[k].budget || l.out.sizes[k].discrepancy_pairs == 0) return false;
+    if (static_cast<int>(l.out.sizes[k].sets.size()) < l.out.sizes[k].sets_at_most() || l.out.sizes[k].discrepancy_pairs == 0) return false;
   l.out.converged = true;
   l.out.stop_reason = "no posterior mean or sd moved by more than " + validation::significant(c.tolerance, 3) + " of its prior range (" +
                       validation::significant(summary.moved, 2) + ") in iteration " + std::to_string(it) +

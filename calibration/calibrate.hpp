@@ -66,7 +66,19 @@ struct SizeOutcome {
     return names.empty() ? profile : profile + " (" + names + ")";
   }
   std::vector<std::int64_t> seeds;
-  int budget = 0;                // a larger size's sets at most
+  int budget = 0;                // a larger size's sets at most, chosen where they inform the posterior most
+  // Then the sets run to confirm the posterior's best prediction at this size (Size::confirm at
+  // most): each set's name and the probability the posterior gave, when it chose it, that one
+  // sample of it agrees with every scalar row of this size (and row by row, in `rows`' order).
+  int confirm = 0;
+  struct Confirmed {
+    std::string set;
+    double probability = 0;
+    std::vector<std::string> rows;
+    std::vector<double> row_probability;
+  };
+  std::vector<Confirmed> confirmed;
+  int sets_at_most() const { return budget + confirm; }
   std::vector<ParameterSet> sets;
   int runs = 0;                  // runs planned over all iterations (reused ones included)
   double core_seconds = 0;       // recorded by their results (wall time x threads)
@@ -121,6 +133,9 @@ struct Outcome {
   const SizeOutcome& largest() const { return sizes.back(); }
   // Whether the sizes after the first are parts of one size, each running some densities.
   bool in_parts() const { return sizes.size() > 1 && !sizes.back().densities.empty(); }
+  // The size whose sets size k's are chosen from and whose discrepancy it measures: the one before
+  // it, or the first for a part of a size.
+  std::size_t base_of(std::size_t k) const { return sizes[k].densities.empty() ? k - 1 : 0; }
   double core_seconds() const;
 };
 

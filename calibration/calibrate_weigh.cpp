@@ -95,20 +95,48 @@ std::vector<SizeOutcome::Change> changes_at(const Outcome& out, const Discrepanc
 
 }  // namespace
 
+namespace {
+
+// After its budget, size k's next set to confirm the posterior's best prediction there, once the
+// size has its discrepancy and the first size its surface (discrepancy.hpp, choose_to_confirm).
+std::vector<std::size_t> choose_to_confirm(Loop& l, std::size_t k, const std::vector<const ParameterSet*>& candidates,
+                                           const std::vector<Eigen::VectorXd>& candidate_u) {
+  SizeOutcome& so = l.out.sizes[k];
+  if (static_cast<int>(so.confirmed.size()) >= so.confirm || !l.surface || k >= l.deltas.size() || !l.deltas[k]) return {};
+  std::vector<Discrepancy> larger;
+  for (const std::optional<Discrepancy>& d : l.deltas)
+    if (d) larger.push_back(*d);
+  std::vector<std::size_t> rows;
+  for (std::size_t r = 0; r < l.out.references.rows.size(); ++r)
+    if (covers(l.deltas[k]->rows[r])) rows.push_back(r);
+  const std::optional<Confirmation> c = choose_to_confirm(*l.surface, larger, candidate_u, rows);
+  if (!c) return {};
+  SizeOutcome::Confirmed confirmed{candidates[c->index]->name, c->probability, {}, c->row_probability};
+  for (const std::size_t r : rows) confirmed.rows.push_back(l.out.references.rows[r].name);
+  so.confirmed.push_back(std::move(confirmed));
+  return {c->index};
+}
+
+}  // namespace
+
 void choose_larger_sets(Loop& l, std::size_t k, int it) {
   SizeOutcome& so = l.out.sizes[k];
   const int room = std::min(l.c.sizes[k].per_iteration, so.budget - static_cast<int>(so.sets.size()));
-  if (room <= 0) return;
+  if (room <= 0 && static_cast<int>(so.confirmed.size()) >= so.confirm) return;
   std::vector<const ParameterSet*> candidates;
   std::vector<Eigen::VectorXd> candidate_u, chosen_u;
   for (const ParameterSet& s : so.sets) chosen_u.push_back(s.u);
   for (const ParameterSet& s : l.out.sizes[base_of(l.out, k)].sets)
     if (s.misfit.valued && std::none_of(so.sets.begin(), so.sets.end(), [&](const ParameterSet& t) { return t.name == s.name; }))
       candidates.push_back(&s), candidate_u.push_back(s.u);
-  // Near the posterior at the largest size so far, else the first size's.
+  // Near the posterior at the largest size so far, else the first size's; after the budget, the
+  // sets to confirm.
   const bool larger = !l.larger_u.empty();
-  const std::vector<std::size_t> picked = choose_for_larger_size(candidate_u, chosen_u, larger ? l.larger_u : l.out.posterior_u,
-                                                                 larger ? l.larger_w : l.out.posterior_w, room);
+  const std::vector<std::size_t> picked =
+      room > 0 ? choose_for_larger_size(candidate_u, chosen_u, larger ? l.larger_u : l.out.posterior_u,
+                                        larger ? l.larger_w : l.out.posterior_w, room)
+               : choose_to_confirm(l, k, candidates, candidate_u);
+  if (room <= 0 && picked.empty()) return;
   std::string names;
   for (const std::size_t i : picked) {
     ParameterSet s;
@@ -116,8 +144,13 @@ void choose_larger_sets(Loop& l, std::size_t k, int it) {
     so.sets.push_back(std::move(s));
     names += (names.empty() ? "" : ", ") + candidates[i]->name;
   }
-  std::printf("[calibrate] iteration %d: size %s runs %s (%zu of at most %d there)\n", it, so.label().c_str(),
-              names.empty() ? "no set" : names.c_str(), so.sets.size(), so.budget);
+  if (room <= 0)
+    std::printf("[calibrate] iteration %d: size %s runs %s to confirm the posterior there, which expects it to agree with all %zu "
+                "of its rows with probability %.3g (%zu of at most %d there)\n", it, so.label().c_str(), names.c_str(),
+                so.confirmed.back().rows.size(), so.confirmed.back().probability, so.sets.size(), so.sets_at_most());
+  else
+    std::printf("[calibrate] iteration %d: size %s runs %s (%zu of at most %d there)\n", it, so.label().c_str(),
+                names.empty() ? "no set" : names.c_str(), so.sets.size(), so.sets_at_most());
   std::fflush(stdout);
 }
 
@@ -128,6 +161,7 @@ void weigh_larger(Loop& l) {
   for (std::size_t j = 0; j < l.c.parameters.size(); ++j)
     out.first_size_only.push_back(marginal(l.c.parameters[j], j, out.posterior_u, out.posterior_w));
   std::vector<Discrepancy> deltas;
+  l.deltas.assign(out.sizes.size(), std::nullopt);
   for (std::size_t k = 1; k < out.sizes.size(); ++k) {
     SizeOutcome& so = out.sizes[k];
     so.discrepancy_pairs = 0, so.discrepancy_linear = false, so.changes.clear();
@@ -143,6 +177,7 @@ void weigh_larger(Loop& l) {
       so.discrepancy_pairs = delta->pairs, so.discrepancy_linear = delta->linear;
       so.changes = changes_at(out, *delta, mean_of(out.posterior_u, out.posterior_w));
       deltas.push_back(*delta);
+      l.deltas[k] = delta;
     }
   }
   // Until every size has its discrepancy the posterior stays the first size's (posterior_source says so).

@@ -59,13 +59,16 @@ void read_sizes(dem::Section& root, Calibration& c) {
       s.fail("profile", "'" + size.profile + "': the parts of the largest size share its profile ('" + c.sizes.back().profile + "')");
     if (!(part && c.sizes.size() > 1) && !profiles.insert(size.profile).second) s.fail("profile", "'" + size.profile + "' names two sizes");
     if (c.sizes.empty()) {
-      if (s.has("sets") || s.has("per_iteration"))
-        s.fail(s.has("sets") ? "sets" : "per_iteration", "is given for the first size, where every set runs");
+      for (const char* key : {"sets", "per_iteration", "confirm"})
+        if (s.has(key)) s.fail(key, "is given for the first size, where every set runs");
     } else {
       size.sets = static_cast<int>(s.integer("sets", 3, 4096, std::nullopt, "the sets run at this size in all (at least 3: a discrepancy's fit)"));
       const int spread = (size.sets + c.min_iterations - 1) / c.min_iterations;
       size.per_iteration = static_cast<int>(s.integer("per_iteration", 1, 4096, spread,
                                                       "the sets chosen to run at this size per iteration (default: sets / min_iterations)"));
+      size.confirm = static_cast<int>(s.integer("confirm", 0, 64, 0,
+                                                "the sets run at this size after its `sets`, one an iteration, each the one the posterior "
+                                                "at this size expects most likely to agree with all of its rows"));
     }
     s.finish();
     c.sizes.push_back(size);

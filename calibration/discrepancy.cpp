@@ -150,4 +150,18 @@ std::vector<std::size_t> choose_for_larger_size(const std::vector<Eigen::VectorX
   return picked;
 }
 
+std::optional<Confirmation> choose_to_confirm(const ResponseSurface& surface, const std::vector<Discrepancy>& larger,
+                                              const std::vector<Eigen::VectorXd>& candidates, const std::vector<std::size_t>& rows) {
+  const bool any_inside = std::any_of(candidates.begin(), candidates.end(), [&](const Eigen::VectorXd& u) { return surface.inside(u); });
+  std::optional<Confirmation> best;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    if (any_inside && !surface.inside(candidates[i])) continue;
+    const std::vector<double> all = surface.row_probabilities(candidates[i], larger);
+    Confirmation c{i, 1, {}};
+    for (const std::size_t r : rows) c.row_probability.push_back(all[r]), c.probability *= all[r];
+    if (!best || c.probability > best->probability) best = std::move(c);
+  }
+  return best;
+}
+
 }  // namespace calibration

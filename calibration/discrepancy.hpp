@@ -62,4 +62,16 @@ std::vector<std::size_t> choose_for_larger_size(const std::vector<Eigen::VectorX
                                                 const std::vector<Eigen::VectorXd>& posterior_u,
                                                 const std::vector<double>& posterior_w, int n);
 
+// A set to confirm at the larger size: the candidate the posterior there expects most likely to
+// agree with every row of `rows` (the scalar rows a part of a size covers): the largest product of
+// the rows' probabilities (ResponseSurface::row_probabilities), among the candidates inside the
+// surface's region when any is, else among all (the surface then extrapolates). None without candidates.
+struct Confirmation {
+  std::size_t index = 0;           // into the candidates
+  double probability = 0;          // that one sample agrees with every row (their product)
+  std::vector<double> row_probability;  // per row of `rows`
+};
+std::optional<Confirmation> choose_to_confirm(const ResponseSurface& surface, const std::vector<Discrepancy>& larger,
+                                              const std::vector<Eigen::VectorXd>& candidates, const std::vector<std::size_t>& rows);
+
 }  // namespace calibration

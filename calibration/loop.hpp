@@ -14,6 +14,7 @@
 #include "io/file_lock.hpp"
 #include "ledger.hpp"
 #include "plan/run_plan.hpp"
+#include "discrepancy.hpp"
 #include "surrogate.hpp"
 
 namespace calibration {
@@ -43,6 +44,7 @@ struct Loop {
   std::optional<ResponseSurface> surface;  // the first size's, of the last weighing
   std::vector<Eigen::VectorXd> larger_u;   // the posterior at the largest size, of the last weighing (empty: none yet)
   std::vector<double> larger_w;
+  std::vector<std::optional<Discrepancy>> deltas;  // per size (none at the first), of the last weighing
   Loop(const Calibration& calibration, const RunOptions& options)
       : c(calibration), o(options), sampler(static_cast<int>(calibration.parameters.size())) {}
   int dimensions() const { return static_cast<int>(c.parameters.size()); }

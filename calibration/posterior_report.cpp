@@ -157,6 +157,24 @@ void add_ledger_provenance(json& x, const SizeOutcome& s) {
   if (s.verified_sets > 0) x["sets_taken_after_verification"] = {{"sets", s.verified_sets}, {"verified_by", s.verified_by}};
 }
 
+// The sets a size ran to confirm the posterior's best prediction: what it predicted, what they gave.
+json confirmed_json(const SizeOutcome& s) {
+  json out = json::array();
+  for (const SizeOutcome::Confirmed& c : s.confirmed) {
+    const auto set = std::find_if(s.sets.begin(), s.sets.end(), [&](const ParameterSet& p) { return p.name == c.set; });
+    json rows = json::array();
+    for (std::size_t i = 0; i < c.rows.size(); ++i) {
+      json row{{"name", c.rows[i]}, {"predicted_probability", c.row_probability[i]}};
+      if (set != s.sets.end() && set->misfit.valued)
+        for (const RowMisfit& m : set->misfit.rows)
+          if (m.name == c.rows[i] && m.valued && m.consistent) row["consistent"] = *m.consistent;
+      rows.push_back(row);
+    }
+    out.push_back({{"set", c.set}, {"predicted_probability", c.probability}, {"rows", rows}});
+  }
+  return out;
+}
+
 json sizes_json(const Report& r) {
   json out = json::array();
   for (std::size_t k = 0; k < r.o.sizes.size(); ++k) {
@@ -166,7 +184,8 @@ json sizes_json(const Report& r) {
     add_ledger_provenance(x, s);
     if (!s.densities.empty()) x["densities"] = s.densities;
     if (k > 0) {
-      x["sets_at_most"] = s.budget;
+      x["sets_at_most"] = s.sets_at_most();
+      if (!s.confirmed.empty()) x["confirmed"] = confirmed_json(s);
       x["discrepancy"] = {{"pairs", s.discrepancy_pairs}, {"form", s.discrepancy_linear ? "linear" : "constant"}};
       for (const SizeOutcome::Change& c : s.changes) x["discrepancy"]["at_posterior_mean"][c.row] = {{"shift", c.shift}, {"sd", c.shift_sd}};
     }

@@ -19,6 +19,34 @@ std::string interval_text(const Marginal& m) {
          ", " + validation::significant(m.upper_95, 3) + "]";
 }
 
+// The sets a larger size ran to confirm the posterior's best prediction there: the probability it
+// gave that one sample agrees with every row (its least likely row), and how many rows the set's
+// samples then agreed with.
+std::string confirmed_markdown(const SizeOutcome& s) {
+  std::ostringstream md;
+  for (const SizeOutcome::Confirmed& c : s.confirmed) {
+    const std::size_t least = static_cast<std::size_t>(
+        std::min_element(c.row_probability.begin(), c.row_probability.end()) - c.row_probability.begin());
+    md << "To confirm the posterior at " << s.label() << ": set " << c.set << ", where it expected one sample to agree with all "
+       << c.rows.size() << " of its rows with probability " << validation::significant(c.probability, 2);
+    if (!c.rows.empty())
+      md << " (the least likely: '" << c.rows[least] << "', " << validation::significant(c.row_probability[least], 2) << ")";
+    const auto set = std::find_if(s.sets.begin(), s.sets.end(), [&](const ParameterSet& p) { return p.name == c.set; });
+    if (set == s.sets.end() || !set->misfit.valued) {
+      md << "; not scored yet.\n\n";
+      continue;
+    }
+    int consistent = 0, judged = 0;
+    for (const RowMisfit& m : set->misfit.rows)
+      if (m.valued && m.consistent && std::find(c.rows.begin(), c.rows.end(), m.name) != c.rows.end()) ++judged, consistent += *m.consistent;
+    if (judged == 0)
+      md << "; none of its rows is judged on " << s.seeds.size() << " sample(s) (validate judges a row on 2 or more).\n\n";
+    else
+      md << "; its samples agree with " << consistent << " of the " << judged << " rows they were judged on.\n\n";
+  }
+  return md.str();
+}
+
 // With larger sizes: each size's runs and cost, what the largest changed in each parameter, and
 // the discrepancy of each reference row at the posterior's mean.
 std::string sizes_markdown(const Report& r) {
@@ -51,11 +79,11 @@ std::string sizes_markdown(const Report& r) {
   for (std::size_t k = 1; k < o.sizes.size(); ++k) {
     const SizeOutcome& s = o.sizes[k];
     if (s.discrepancy_pairs == 0) {
-      md << "No discrepancy from " << o.sizes[k - 1].profile << " to " << s.profile << " yet: " << s.sets.size() << " set(s) scored at both, "
+      md << "No discrepancy from " << o.sizes[o.base_of(k)].label() << " to " << s.label() << " yet: " << s.sets.size() << " set(s) scored at both, "
          << "at least " << min_discrepancy_pairs << " are needed.\n\n";
       continue;
     }
-    md << "The discrepancy from " << o.sizes[k - 1].profile << " to " << s.profile << " (" << (s.discrepancy_linear ? "linear" : "a constant")
+    md << "The discrepancy from " << o.sizes[o.base_of(k)].label() << " to " << s.label() << " (" << (s.discrepancy_linear ? "linear" : "a constant")
        << " in the parameters, fitted to " << s.discrepancy_pairs << " sets run at both), at the posterior's mean:\n\n";
     validation::MarkdownTable t({"reference", "largest |shift| over its points ± its sd", "at point"});
     for (const SizeOutcome::Change& ch : s.changes) {
@@ -64,7 +92,7 @@ std::string sizes_markdown(const Report& r) {
         if (std::abs(ch.shift[j]) > std::abs(ch.shift[at])) at = j;
       t.row({ch.row, validation::significant(ch.shift[at], 3) + " ± " + validation::significant(ch.shift_sd[at], 2), std::to_string(at + 1)});
     }
-    md << t.text() << "\n";
+    md << t.text() << "\n" << confirmed_markdown(s);
   }
   return md.str();
 }

@@ -51,27 +51,59 @@ double ResponseSurface::log_likelihood(const References& refs, const Eigen::Vect
   return log_likelihood(refs, u, {});
 }
 
-double ResponseSurface::log_likelihood(const References& refs, const Eigen::VectorXd& u, const std::vector<Discrepancy>& larger) const {
-  const Eigen::VectorXd x = features(u);
+namespace {
+
+// The model's mean at u (a surface's plus every discrepancy's), the variance of the fits'
+// prediction, and the samples' own term (the largest size's).
+struct Prediction {
+  double mean = 0, fit_variance = 0;
+  const Quadratic* samples_of = nullptr;
+};
+
+// The features of u on a surface and on each discrepancy after it.
+struct At {
+  Eigen::VectorXd x;
   std::vector<Eigen::VectorXd> xd;
-  for (const Discrepancy& delta : larger) xd.push_back(delta.features(u));
-  // The model's mean at u, the variance of the fits' prediction, and the samples' own term.
-  struct Prediction {
-    double mean = 0, fit_variance = 0;
-    const Quadratic* samples_of = nullptr;
-  };
-  const auto predict = [&](const Quadratic& q, const auto& discrepancy_of) {
-    Prediction p{q.value(x), q.variance(x), &q};
-    for (std::size_t k = 0; k < larger.size(); ++k) {
-      const Quadratic& dq = discrepancy_of(larger[k]);
-      if (!covers(dq)) continue;  // a part of a size that does not cover this point
-      p.mean += dq.value(xd[k]), p.fit_variance += dq.variance(xd[k]), p.samples_of = &dq;
-    }
-    return p;
-  };
+  At(const ResponseSurface& s, const Eigen::VectorXd& u, const std::vector<Discrepancy>& larger) : x(s.features(u)) {
+    for (const Discrepancy& delta : larger) xd.push_back(delta.features(u));
+  }
+};
+
+template <class DiscrepancyOf>
+Prediction predict(const Quadratic& q, const At& at, const std::vector<Discrepancy>& larger, const DiscrepancyOf& discrepancy_of) {
+  Prediction p{q.value(at.x), q.variance(at.x), &q};
+  for (std::size_t k = 0; k < larger.size(); ++k) {
+    const Quadratic& dq = discrepancy_of(larger[k]);
+    if (!covers(dq)) continue;  // a part of a size that does not cover this point
+    p.mean += dq.value(at.xd[k]), p.fit_variance += dq.variance(at.xd[k]), p.samples_of = &dq;
+  }
+  return p;
+}
+
+}  // namespace
+
+std::vector<double> ResponseSurface::row_probabilities(const Eigen::VectorXd& u, const std::vector<Discrepancy>& larger) const {
+  const At at(*this, u, larger);
+  std::vector<double> p;
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    const RowSurface& row = rows[r];
+    const Prediction m = predict(row.q, at, larger, [&](const Discrepancy& delta) -> const Quadratic& { return delta.rows[r]; });
+    const double sd = std::sqrt(m.samples_of->sample_variance + m.fit_variance), mean = m.mean;
+    const auto below = [&](double v) {  // P(value < v)
+      if (std::isinf(v)) return v > 0 ? 1.0 : 0.0;
+      if (sd == 0) return mean < v ? 1.0 : 0.0;
+      return 0.5 * std::erfc(-(v - mean) / (sd * std::sqrt(2.0)));
+    };
+    p.push_back(below(row.high) - below(row.low));
+  }
+  return p;
+}
+
+double ResponseSurface::log_likelihood(const References& refs, const Eigen::VectorXd& u, const std::vector<Discrepancy>& larger) const {
+  const At at(*this, u, larger);
   double ll = 0;
   const auto at_point = [&](std::size_t c, std::size_t j) {
-    return predict(curves[c][j], [&](const Discrepancy& delta) -> const Quadratic& { return delta.curves[c][j]; });
+    return predict(curves[c][j], at, larger, [&](const Discrepancy& delta) -> const Quadratic& { return delta.curves[c][j]; });
   };
   // Points whose deviations are correlated (References::correlated): jointly Gaussian, their
   // covariance the independent parts (tolerance, the fits' prediction) on the diagonal plus the
@@ -109,17 +141,7 @@ double ResponseSurface::log_likelihood(const References& refs, const Eigen::Vect
       ll += -0.5 * r * r / var - 0.5 * std::log(2 * M_PI * var);
     }
   }
-  for (std::size_t r = 0; r < rows.size(); ++r) {
-    const RowSurface& row = rows[r];
-    const Prediction m = predict(row.q, [&](const Discrepancy& delta) -> const Quadratic& { return delta.rows[r]; });
-    const double sd = std::sqrt(m.samples_of->sample_variance + m.fit_variance), mean = m.mean;
-    const auto below = [&](double v) {  // P(value < v)
-      if (std::isinf(v)) return v > 0 ? 1.0 : 0.0;
-      if (sd == 0) return mean < v ? 1.0 : 0.0;
-      return 0.5 * std::erfc(-(v - mean) / (sd * std::sqrt(2.0)));
-    };
-    ll += std::log(std::max(below(row.high) - below(row.low), 1e-300));
-  }
+  for (const double p : row_probabilities(u, larger)) ll += std::log(std::max(p, 1e-300));
   return ll;
 }
 

@@ -68,6 +68,9 @@ struct ResponseSurface {
   // size before to the next), its variance the surface's and every discrepancy's prediction
   // variance, and the samples' own term the largest size's (the last discrepancy's).
   double log_likelihood(const References& refs, const Eigen::VectorXd& u, const std::vector<Discrepancy>& larger) const;
+  // Per scalar row: the probability that one sample's value at u lies in the row's region (at the
+  // larger size the discrepancies lead to), the rows' terms of log_likelihood.
+  std::vector<double> row_probabilities(const Eigen::VectorXd& u, const std::vector<Discrepancy>& larger) const;
 };
 
 // The number of quadratic features in d dimensions: 1 + d + d (d + 1) / 2.

@@ -97,3 +97,53 @@ TEST_CASE("calibrate refuses a wrong parts key, naming it", "[calibration][cli]"
   CHECK(unknown.exit_code == 2);
   CHECK_THAT(unknown.out, Catch::Contains("densities: 'medium' is not a density of the study"));
 }
+
+TEST_CASE("calibrate confirms a part's best prediction with one more set, and says what it predicted and what the set gave", "[calibration][cli]") {
+  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "calibrate_parts_confirm";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  // A dense e0 row every packing agrees with (e0 lies in [0.3, 1.5]): the confirmed set agrees.
+  // The parameter is the tests', so every set shares its e0 at a size: the surface and the
+  // discrepancy are exact, a sample's sd is the row's resolution (0.01, one sample a set at the
+  // small size; 2 at the large, so that validate judges the row there), and e0
+  // (about 0.6) lies more than 10 of it from either bound: the predicted probability exceeds 0.99.
+  dem::test::TinyCalibration tiny{{{"dense", 0.0}, {"loose", 0.5}}, "test", 6,
+                                  "sizes: [{profile: small}, {profile: large, densities: [dense], sets: 3, per_iteration: 2, confirm: 1},\n"
+                                  "        {profile: large, densities: [loose], sets: 3, per_iteration: 2}]\n",
+                                  "[{name: wide, quantity: void_ratio_after_preparation, density: dense, reference: 0.9, check: within, "
+                                  "tolerance: 0.6, resolution: 0.01, reason: wide, source: typed}]",
+                                  3, 2};
+  tiny.write(dir);
+  const std::string cmd = "cd '" + dir.string() + "' && '" + bin + "calibrate' cal.yaml -j 2 --threads 1";
+  const auto plan = dem::test::run_command(cmd + " --plan 2>&1");
+  INFO(plan.out);
+  REQUIRE(plan.exit_code == 0);
+  CHECK_THAT(plan.out, Catch::Contains("size large (dense) (lattice 5, 2 sample(s) a set): all 3 iterations at most (4 sets still to score)"));
+  const auto run = dem::test::run_command(cmd + " 2>&1");
+  INFO(run.out);
+  REQUIRE(run.exit_code == 0);
+  CHECK_THAT(run.out, Catch::Contains("to confirm the posterior there"));
+  const nlohmann::json p = nlohmann::json::parse(dem::test::read_bytes((dir / "report" / "posterior.json").string()));
+  const nlohmann::json& dense = p["sizes"][1];
+  CHECK(dense["sets"] == 4);
+  CHECK(dense["sets_at_most"] == 4);
+  REQUIRE(dense["confirmed"].size() == 1);
+  const nlohmann::json& c = dense["confirmed"][0];
+  const double predicted = c["predicted_probability"];
+  CHECK(predicted > 0.99);
+  CHECK(predicted <= 1);
+  REQUIRE(c["rows"].size() == 1);
+  CHECK(c["rows"][0]["name"] == "wide");
+  CHECK(c["rows"][0]["consistent"] == true);
+  CHECK_FALSE(p["sizes"][2].contains("confirmed"));
+  const std::string section = dem::test::read_bytes((dir / "report" / "section.md").string());
+  CHECK_THAT(section, Catch::Contains("To confirm the posterior at large (dense): set " + c["set"].get<std::string>()) &&
+                          Catch::Contains("its samples agree with 1 of the 1 rows"));
+  // A part without rows has nothing to confirm: refused, naming the key.
+  dem::test::TinyCalibration curves_only = tiny;
+  curves_only.rows.clear();
+  curves_only.write(dir);
+  const auto refused = dem::test::run_command(cmd + " --plan 2>&1");
+  CHECK(refused.exit_code == 2);
+  CHECK_THAT(refused.out, Catch::Contains("sizes[1].confirm") && Catch::Contains("no scalar row"));
+}

@@ -126,3 +126,53 @@ TEST_CASE("the sets chosen for the larger size spread over the posterior, within
   // Asking for more than there are candidates near the posterior gives the nearest ones too.
   CHECK(calibration::choose_for_larger_size(candidates, {}, pu, pw, 7).size() == 7);
 }
+
+TEST_CASE("the set chosen to confirm is the one the larger size's posterior expects to agree best, with its probability", "[calibration]") {
+  // One parameter; a row read by the paper as 0.8 within 0.1 (region [0.7, 0.9]). At the small size
+  // the samples' mean is 2 u; at the large size 2 u - 0.2, exactly, with a samples' sd of 0.05
+  // (3 samples a set). 21 small sets over [0.2, 0.6]; 3 again at the large size: a constant
+  // discrepancy of -0.2 with no residual. The small size alone would centre the row at u = 0.4;
+  // at the large size it is centred at u = 0.5, where one sample agrees with probability
+  // P(|X - 0.8| < 0.1), X ~ N(0.8, 0.05^2): erf(2 / sqrt 2).
+  calibration::References refs;
+  validation::Row row;
+  row.name = "value";
+  row.check = "within", row.reference = 0.8, row.tolerance = 0.1, row.resolution = 0.001;
+  refs.rows = {row};
+  const auto set = [](const std::string& name, double u, double y) {
+    calibration::ParameterSet s;
+    s.name = name;
+    s.u = Eigen::VectorXd::Constant(1, u);
+    s.misfit.rows = {calibration::RowMisfit{"value", 0, 1, "", true, {y}, {0.05}, 3}};
+    s.misfit.valued = true;
+    return s;
+  };
+  std::vector<calibration::ParameterSet> small, large;
+  std::vector<Eigen::VectorXd> candidates;
+  for (int i = 0; i < 21; ++i) {
+    const double u = 0.2 + 0.02 * i;
+    small.push_back(set("s" + std::to_string(i), u, 2 * u));
+    candidates.push_back(small.back().u);
+  }
+  for (const int i : {5, 10, 20}) large.push_back(set("s" + std::to_string(i), 0.2 + 0.02 * i, 2 * (0.2 + 0.02 * i) - 0.2));
+  const auto delta = calibration::fit_discrepancy(refs, small, large);
+  REQUIRE(delta);
+  CHECK_FALSE(delta->linear);
+  calibration::Proposal region;
+  region.mean = Eigen::VectorXd::Constant(1, 0.4);
+  region.covariance = Eigen::MatrixXd::Constant(1, 1, 0.01);
+  const auto surface = calibration::fit_surface(refs, small, region);
+  REQUIRE(surface);
+  const auto chosen = calibration::choose_to_confirm(*surface, {*delta}, candidates, {0});
+  REQUIRE(chosen);
+  CHECK(candidates[chosen->index](0) == Approx(0.5));
+  CHECK(chosen->probability == Approx(std::erf(2 / std::sqrt(2.0))).epsilon(1e-6));
+  REQUIRE(chosen->row_probability.size() == 1);
+  CHECK(chosen->row_probability[0] == Approx(chosen->probability));
+  // Without the discrepancy, the small size's own best: u = 0.4.
+  const auto small_only = calibration::choose_to_confirm(*surface, {}, candidates, {0});
+  REQUIRE(small_only);
+  CHECK(candidates[small_only->index](0) == Approx(0.4));
+  // No candidates: none.
+  CHECK_FALSE(calibration::choose_to_confirm(*surface, {*delta}, {}, {0}));
+}
