@@ -159,18 +159,19 @@ void add_ledger_provenance(json& x, const SizeOutcome& s) {
 
 // The sets a size ran to confirm the posterior's best prediction: what it predicted, what they gave.
 json confirmed_json(const SizeOutcome& s) {
+  namespace keys = validation::posterior_keys;
   json out = json::array();
   for (const SizeOutcome::Confirmed& c : s.confirmed) {
     const auto set = std::find_if(s.sets.begin(), s.sets.end(), [&](const ParameterSet& p) { return p.name == c.set; });
     json rows = json::array();
     for (std::size_t i = 0; i < c.rows.size(); ++i) {
-      json row{{"name", c.rows[i]}, {"predicted_probability", c.row_probability[i]}};
+      json row{{keys::name, c.rows[i]}, {keys::predicted_probability, c.row_probability[i]}};
       if (set != s.sets.end() && set->misfit.valued)
         for (const RowMisfit& m : set->misfit.rows)
-          if (m.name == c.rows[i] && m.valued && m.consistent) row["consistent"] = *m.consistent;
+          if (m.name == c.rows[i] && m.valued && m.consistent) row[keys::consistent] = *m.consistent;
       rows.push_back(row);
     }
-    out.push_back({{"set", c.set}, {"predicted_probability", c.probability}, {"rows", rows}});
+    out.push_back({{keys::set, c.set}, {keys::predicted_probability, c.probability}, {keys::rows, rows}});
   }
   return out;
 }
@@ -180,12 +181,12 @@ json sizes_json(const Report& r) {
   for (std::size_t k = 0; k < r.o.sizes.size(); ++k) {
     const SizeOutcome& s = r.o.sizes[k];
     json x{{"profile", s.profile}, {"seeds", s.seeds}, {"sets", s.sets.size()}, {"runs", s.runs}, {"core_seconds", s.core_seconds},
-           {"sets_from_ledger", s.ledger_sets}, {"stamp", validation::stamp_json(s.stamp)}};
+           {"sets_from_ledger", s.ledger_sets}, {validation::posterior_keys::stamp, validation::stamp_json(s.stamp)}};
     add_ledger_provenance(x, s);
-    if (!s.densities.empty()) x["densities"] = s.densities;
+    if (!s.densities.empty()) x[validation::posterior_keys::densities] = s.densities;
     if (k > 0) {
       x["sets_at_most"] = s.sets_at_most();
-      if (!s.confirmed.empty()) x["confirmed"] = confirmed_json(s);
+      if (!s.confirmed.empty()) x[validation::posterior_keys::confirmed] = confirmed_json(s);
       x["discrepancy"] = {{"pairs", s.discrepancy_pairs}, {"form", s.discrepancy_linear ? "linear" : "constant"}};
       for (const SizeOutcome::Change& c : s.changes) x["discrepancy"]["at_posterior_mean"][c.row] = {{"shift", c.shift}, {"sd", c.shift_sd}};
     }
@@ -264,7 +265,7 @@ json posterior_json(const Report& r) {
   j["sets_from_ledger"] = ledger_sets;
   j["unscored_sets"] = o.unscored;  // "name: why" of each set that weighs nothing for want of a score
   j["core_seconds"] = o.core_seconds();
-  if (o.sizes.size() > 1) j["sizes"] = sizes_json(r);
+  if (o.sizes.size() > 1) j[validation::posterior_keys::sizes] = sizes_json(r);
   else add_ledger_provenance(j, o.first());
   j["posterior_from"] = o.posterior_from.empty() ? "the sets' weights" : o.posterior_from;
   if (!o.posterior_from.empty())
@@ -292,10 +293,10 @@ json posterior_json(const Report& r) {
   j["sets"] = sets_json(c, o.first().sets, &o.weights, r.verdicts);
   for (const Report::Part& part : r.parts) {
     const SizeOutcome& size = o.sizes[part.size];
-    json x{{"profile", size.profile}, {"densities", size.densities}, {"sets", sets_json(c, size.sets, nullptr, part.verdicts)}};
+    json x{{"profile", size.profile}, {keys::densities, size.densities}, {"sets", sets_json(c, size.sets, nullptr, part.verdicts)}};
     if (part.best) x["best_set"] = {{"name", size.sets[*part.best].name}, {"chi2", size.sets[*part.best].misfit.chi2}};
     if (part.verdicts.rows > 0) x["rows_consistent"] = rows_json(part.verdicts, size.sets);
-    j["largest_size_parts"].push_back(x);
+    j[keys::largest_size_parts].push_back(x);
   }
   if (o.sizes.size() > 1 && !o.in_parts()) {
     const SizeOutcome& top = o.largest();

@@ -40,7 +40,8 @@ RowVerdicts tally_rows(const std::vector<ParameterSet>& sets, std::size_t best) 
       if (!k) continue;
       judged_somewhere = true;
       ++t.judged_sets;
-      if (*k) ++t.consistent_sets, t.most_with = std::max(t.most_with, c.consistent);
+      if (*k && c.consistent > t.most_with) t.most_with = c.consistent, t.most_with_set = c.set;
+      if (*k) ++t.consistent_sets;
       if (c.set == best) t.at_best = *k;
     }
     if (judged_somewhere) v.per_row.push_back(t);
@@ -66,16 +67,16 @@ RowVerdicts tally_rows(const std::vector<ParameterSet>& sets, std::size_t best) 
 
 nlohmann::json rows_json(const RowVerdicts& v, const std::vector<ParameterSet>& sets) {
   nlohmann::json j;
-  j["rows"] = v.rows;
-  j["scored_sets"] = v.sets.size();
-  j["sets_with_every_row_consistent"] = v.all_consistent;
   namespace keys = validation::posterior_keys;  // what the report reads, declared once
+  j["rows"] = v.rows;
+  j[keys::scored_sets] = v.sets.size();
+  j["sets_with_every_row_consistent"] = v.all_consistent;
   if (v.best)
     j[keys::best_set] = {{keys::name, sets[v.best->set].name}, {keys::consistent, v.best->consistent}, {keys::judged, v.best->judged}};
   if (v.most) j["most"] = {{"name", sets[v.most->set].name}, {"consistent", v.most->consistent}, {"judged", v.most->judged}};
   for (const RowTally& t : v.per_row) {
-    nlohmann::json r{{keys::name, t.name}, {"consistent_sets", t.consistent_sets}, {"judged_sets", t.judged_sets}};
-    if (t.most_with >= 0) r["most_rows_consistent_with_it"] = t.most_with;
+    nlohmann::json r{{keys::name, t.name}, {keys::consistent_sets, t.consistent_sets}, {keys::judged_sets, t.judged_sets}};
+    if (t.most_with >= 0) r[keys::most_rows_consistent_with_it] = t.most_with, r[keys::set_with_most_rows] = sets[t.most_with_set].name;
     if (t.at_best) r[keys::consistent_at_best_set] = *t.at_best;
     if (!t.never_with.empty()) r["never_consistent_with"] = t.never_with;
     j[keys::per_row].push_back(r);

@@ -26,6 +26,7 @@ struct RowTally {
   int consistent_sets = 0;  // scored sets in which the row is consistent
   int judged_sets = 0;      // scored sets in which it is judged
   int most_with = -1;       // the most rows consistent in one of those sets (-1: none)
+  std::size_t most_with_set = 0;  // that set (the first of them), an index into the sets
   std::optional<bool> at_best;
   // The rows consistent in some set but in none of those where this one is: what it is traded
   // against (empty when it is consistent in no set).

@@ -19,6 +19,7 @@
 #include "report/baseline_check.hpp"
 #include "report/open_choices_check.hpp"
 #include "report/open_choices_paper_size.hpp"
+#include "report/open_choices_parts.hpp"
 #include "report/other_sections.hpp"
 #include "report/study_values.hpp"
 #include "sections/variants.hpp"
@@ -245,6 +246,7 @@ void add_tables(Values& v, const fs::path& report, const std::vector<Row>& paper
   v["calibration_open_choices_plot"] = fs::exists(report / "calibration" / "paper_open_choices" / "posterior.png") ? "1" : "";
   v["calibration_open_choices_check"] = open_choices_check_text(report);
   v["calibration_open_choices_paper_size"] = open_choices_paper_size_text(report, paper);
+  v["calibration_open_choices_parts"] = open_choices_parts_text(report, paper);
   v["file.liquefaction"] = section_text(report, "liquefaction", 2);
   v["convergence_plot"] = fs::exists(report / "convergence" / "error_vs_time.png") ? "yes" : "";
   // The size the decisions table was measured at: its decisions.json's own record, else (the

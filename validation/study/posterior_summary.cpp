@@ -12,6 +12,65 @@ std::optional<int> int_at(const nlohmann::json& j, const char* key) {
   return j.is_object() && j.contains(key) && j.at(key).is_number_integer() ? std::optional<int>(j.at(key).get<int>()) : std::nullopt;
 }
 
+// j[key] of type T, else the error naming the file and where.
+template <class T>
+T required(const nlohmann::json& j, const char* key, const std::string& where) {
+  if (!j.is_object() || !j.contains(key)) throw std::runtime_error(where + "." + key + ": missing");
+  try {
+    return j.at(key).get<T>();
+  } catch (const nlohmann::json::exception&) {
+    throw std::runtime_error(where + "." + key + ": of the wrong type");
+  }
+}
+
+std::vector<PosteriorSummary::Part::Confirmed> confirmed_of(const nlohmann::json& size, const std::string& where) {
+  namespace k = posterior_keys;
+  std::vector<PosteriorSummary::Part::Confirmed> out;
+  if (!size.contains(k::confirmed)) return out;
+  for (const nlohmann::json& c : size.at(k::confirmed)) {
+    PosteriorSummary::Part::Confirmed x{required<std::string>(c, k::set, where + "." + k::confirmed),
+                                        required<double>(c, k::predicted_probability, where + "." + k::confirmed), {}};
+    for (const nlohmann::json& r : required<nlohmann::json>(c, k::rows, where + "." + k::confirmed)) {
+      PosteriorSummary::Part::Confirmed::Row row{required<std::string>(r, k::name, where + ".confirmed.rows"),
+                                                 required<double>(r, k::predicted_probability, where + ".confirmed.rows"), std::nullopt};
+      if (r.contains(k::consistent) && r.at(k::consistent).is_boolean()) row.consistent = r.at(k::consistent).get<bool>();
+      x.rows.push_back(std::move(row));
+    }
+    out.push_back(std::move(x));
+  }
+  return out;
+}
+
+// The parts of the largest size: each entry of largest_size_parts with its size's stamp and
+// confirmed sets (the size of the same densities).
+std::vector<PosteriorSummary::Part> parts_of(const nlohmann::json& j, const std::string& file) {
+  namespace k = posterior_keys;
+  std::vector<PosteriorSummary::Part> out;
+  if (!j.contains(k::largest_size_parts)) return out;
+  for (const nlohmann::json& x : j.at(k::largest_size_parts)) {
+    const std::string where = file + ": " + k::largest_size_parts;
+    PosteriorSummary::Part part;
+    part.densities = required<std::vector<std::string>>(x, k::densities, where);
+    if (x.contains(k::rows_consistent)) {
+      const nlohmann::json& rc = x.at(k::rows_consistent);
+      part.scored_sets = required<int>(rc, k::scored_sets, where + "." + k::rows_consistent);
+      for (const nlohmann::json& r : required<nlohmann::json>(rc, k::per_row, where + "." + k::rows_consistent)) {
+        PosteriorSummary::Part::Row row{required<std::string>(r, k::name, where + ".per_row"), required<int>(r, k::consistent_sets, where + ".per_row"),
+                                        required<int>(r, k::judged_sets, where + ".per_row"), int_at(r, k::most_rows_consistent_with_it), std::nullopt};
+        if (r.contains(k::set_with_most_rows)) row.set_with_most = r.at(k::set_with_most_rows).get<std::string>();
+        part.rows.push_back(std::move(row));
+      }
+    }
+    for (const nlohmann::json& size : required<nlohmann::json>(j, k::sizes, file))
+      if (size.contains(k::densities) && size.at(k::densities).get<std::vector<std::string>>() == part.densities) {
+        if (size.contains(k::stamp)) part.stamp = stamp_from_json(size.at(k::stamp));
+        part.confirmed = confirmed_of(size, file + ": " + k::sizes);
+      }
+    out.push_back(std::move(part));
+  }
+  return out;
+}
+
 }  // namespace
 
 PosteriorSummary read_posterior_summary(const std::string& file) {
@@ -36,6 +95,7 @@ PosteriorSummary read_posterior_summary(const std::string& file) {
         p.rows.push_back(std::move(row));
       }
   }
+  p.parts = parts_of(j, file);
   return p;
 }
 

@@ -20,6 +20,18 @@ inline constexpr const char* per_row = "per_row";                    // [{name, 
 inline constexpr const char* consistent_at_best_set = "consistent_at_best_set";
 inline constexpr const char* consistent = "consistent";
 inline constexpr const char* judged = "judged";
+inline constexpr const char* sizes = "sizes";                        // [{profile, densities, stamp, confirmed, ...}]
+inline constexpr const char* densities = "densities";
+inline constexpr const char* confirmed = "confirmed";                // [{set, predicted_probability, rows: [...]}]
+inline constexpr const char* set = "set";
+inline constexpr const char* predicted_probability = "predicted_probability";
+inline constexpr const char* rows = "rows";
+inline constexpr const char* largest_size_parts = "largest_size_parts";  // [{densities, rows_consistent}]
+inline constexpr const char* scored_sets = "scored_sets";
+inline constexpr const char* consistent_sets = "consistent_sets";
+inline constexpr const char* judged_sets = "judged_sets";
+inline constexpr const char* most_rows_consistent_with_it = "most_rows_consistent_with_it";
+inline constexpr const char* set_with_most_rows = "set_with_most_rows";
 }  // namespace posterior_keys
 
 struct PosteriorSummary {
@@ -33,6 +45,34 @@ struct PosteriorSummary {
   };
   std::vector<Row> rows;
   std::optional<int> best_consistent, best_judged;  // rows consistent at the best set, of those it judged
+
+  // A calibration whose largest size runs in parts (each some densities): per part, the stamp of
+  // its runs, its rows judged set by set, and the sets it ran to confirm the posterior's best
+  // prediction there. Empty for a calibration not in parts.
+  struct Part {
+    std::vector<std::string> densities;
+    Stamp stamp;
+    int scored_sets = 0;
+    struct Row {
+      std::string name;
+      int consistent_sets = 0, judged_sets = 0;  // the part's scored sets in which it is consistent, judged
+      std::optional<int> most_with;              // the most rows consistent in one of the sets where it is
+      std::optional<std::string> set_with_most;  // that set (none: consistent in no set)
+    };
+    std::vector<Row> rows;
+    struct Confirmed {
+      std::string set;
+      double probability = 0;  // the posterior's, that one sample agrees with every row below
+      struct Row {
+        std::string name;
+        double probability = 0;
+        std::optional<bool> consistent;  // on the set's samples (none: not scored yet, or not judged)
+      };
+      std::vector<Row> rows;
+    };
+    std::vector<Confirmed> confirmed;
+  };
+  std::vector<Part> parts;
 };
 
 // FILE's summary. Throws std::runtime_error naming FILE and the key ("best_set.name: missing") when
