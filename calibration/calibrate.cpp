@@ -369,7 +369,8 @@ std::string why_unscored(const ParameterSet& s) {
   if (s.misfit.rows.empty()) return "no rows";
   for (const RowMisfit& m : s.misfit.rows)
     if (!m.valued) return m.name + ": " + m.note;
-  return "?";
+  if (!s.misfit.left_out.empty()) return "too few samples with every run finished (" + s.misfit.left_out.front() + ")";
+  return "no row says why";
 }
 
 // " (2 not scored: they weigh nothing; i1s002: ...)", or "" when every set is scored.

@@ -370,8 +370,8 @@ Table energy_balance(const Columns& series) {
   const auto& err = column(series, "energy_closure_error");
   Table t;
   t.comments = {"energy balance, every curve from row " + std::to_string(c.baseline_row + 1) +
-                    " of the time series (t = " + (c.time_s.empty() ? std::string("?") : number(c.time_s.front())) +
-                    " s; engine/README.md, Energy balance; validation/figures.hpp, energy_curves)",
+                    " of the time series (" + (c.time_s.empty() ? std::string("no rows") : "t = " + number(c.time_s.front()) + " s") +
+                    "; engine/README.md, Energy balance; validation/figures.hpp, energy_curves)",
                 "gap = work - (dissipated + change of stored); closure_error: the engine's, |E_in - (stored + dissipated)| / E_in"};
   t.columns = {"time [s]", "work_by_cell [J]", "dissipated_by_damping [J]", "dissipated_by_friction [J]", "stored_change [J]",
                "dissipated_plus_stored_change [J]", "gap [J]", "energy_closure_error [1]"};

@@ -52,7 +52,7 @@ Preparations scene_values(const FigureSource& src, FigureFolder& out) {
 // "not run".
 void fig01_fig02_lattice(const FigureSource& src, Preparations& prepare, FigureFolder& out) {
   out.values.number("has_lattice", 0);
-  out.values.text("grading_basis", "?");
+  out.values.text("grading_basis", "none");
   for (const char* v : {"grading_d_min_mm", "grading_d50_mm", "grading_d_max_mm", "lattice_side_mm", "target_pressure_kPa"})
     out.values.number(v, 1);
   out.values.number("particles", 0);

@@ -49,7 +49,7 @@ const char* to_string(Criterion c) {
     case Criterion::LadeDuncan: return "Lade–Duncan";
     case Criterion::MatsuokaNakai: return "Matsuoka–Nakai";
   }
-  return "?";
+  throw std::logic_error("to_string: not a Criterion");
 }
 
 double criterion_value(Criterion c, const dem::Vec3& s) {

@@ -49,7 +49,7 @@ const char* to_string(Verdict v) {
     case Verdict::Inconsistent: return "inconsistent";
     case Verdict::NotJudged: return "not judged";
   }
-  return "?";
+  throw std::logic_error("to_string: not a Verdict");
 }
 
 Verdict verdict_from_string(const std::string& text) {

@@ -57,6 +57,12 @@ double number(const json& j, const std::string& key, const std::string& file) {
   return j.at(key).get<double>();
 }
 
+// A string of a JSON object, or an error naming the file and the key.
+std::string text(const json& j, const std::string& key, const std::string& file) {
+  if (!j.contains(key) || !j.at(key).is_string()) throw std::runtime_error(file + ": no string '" + key + "' in the laws' record");
+  return j.at(key).get<std::string>();
+}
+
 // The run of `list` (an array of runs) whose keys have the given values; an error naming them if none.
 const json& run_where(const json& doc, const std::string& list, const std::vector<std::pair<std::string, json>>& keys,
                       const std::string& file) {
@@ -241,8 +247,7 @@ std::string contact_laws(const json& laws, const std::string& file) {
   md += "\n`dem-bench laws`: the same test on the same sample with each law, whole runs (`run_scene`: the test's\n"
         "stage, its rows and result file) on one thread, the laws interleaved repetition by repetition, per CPU\n"
         "second of the run per step; \"over linear\": each repetition's cost per step over linear's in the same\n"
-        "repetition. The test: " + laws.value("scene", std::string("?")) + " with the path " +
-        laws.value("path", std::string("?")) + ", " + format("%.0f", number(laws, "repetitions", file)) +
+        "repetition. The test: " + text(laws, "scene", file) + " with the path " + text(laws, "path", file) + ", " + format("%.0f", number(laws, "repetitions", file)) +
         " repetitions. Each law's keys over the scene's:\n\n" + keys;
   return md;
 }
