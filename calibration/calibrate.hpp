@@ -79,6 +79,13 @@ struct SizeOutcome {
   };
   std::vector<Confirmed> confirmed;
   int sets_at_most() const { return budget + confirm; }
+  // Once every size has its discrepancy: how far the posterior at this size lets its scalar rows
+  // be reached (discrepancy.hpp, reach): the points of the surface's region tried, and per row
+  // (`reach_rows`) the largest probability that one sample agrees with it; with all of them at once.
+  int reach_points = 0;
+  std::vector<std::string> reach_rows;
+  std::vector<double> reach_most;
+  double reach_all = 0;
   std::vector<ParameterSet> sets;
   int runs = 0;                  // runs planned over all iterations (reused ones included)
   double core_seconds = 0;       // recorded by their results (wall time x threads)

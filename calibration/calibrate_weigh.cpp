@@ -182,6 +182,15 @@ void weigh_larger(Loop& l) {
   }
   // Until every size has its discrepancy the posterior stays the first size's (posterior_source says so).
   if (!l.surface || deltas.size() + 1 < out.sizes.size()) return;
+  for (std::size_t k = 1; k < out.sizes.size(); ++k) {
+    SizeOutcome& so = out.sizes[k];
+    std::vector<std::size_t> rows;
+    so.reach_rows.clear();
+    for (std::size_t r = 0; r < out.references.rows.size(); ++r)
+      if (covers(l.deltas[k]->rows[r])) rows.push_back(r), so.reach_rows.push_back(out.references.rows[r].name);
+    const Reach reached = reach(*l.surface, deltas, rows, 20000);
+    so.reach_points = reached.points, so.reach_most = reached.row_most, so.reach_all = reached.all_most;
+  }
   std::vector<Eigen::VectorXd> pu;
   std::vector<double> pw;
   sample_surface(*l.surface, deltas, out.references, 4000, pu, pw);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <random>
 
 namespace calibration {
 
@@ -162,6 +163,25 @@ std::optional<Confirmation> choose_to_confirm(const ResponseSurface& surface, co
     if (!best || c.probability > best->probability) best = std::move(c);
   }
   return best;
+}
+
+Reach reach(const ResponseSurface& surface, const std::vector<Discrepancy>& larger, const std::vector<std::size_t>& rows, int n) {
+  Reach r;
+  r.row_most.assign(rows.size(), 0.0);
+  std::mt19937_64 rng(20261203);  // deterministic: the report says the same on every run
+  std::uniform_real_distribution<double> unit(0, 1);
+  const Eigen::Index d = surface.centre.size();
+  for (int i = 0; i < n; ++i) {
+    Eigen::VectorXd u(d);
+    for (Eigen::Index j = 0; j < d; ++j) u(j) = unit(rng);
+    if (!surface.inside(u)) continue;
+    ++r.points;
+    const std::vector<double> p = surface.row_probabilities(u, larger);
+    double all = 1;
+    for (std::size_t k = 0; k < rows.size(); ++k) r.row_most[k] = std::max(r.row_most[k], p[rows[k]]), all *= p[rows[k]];
+    r.all_most = std::max(r.all_most, all);
+  }
+  return r;
 }
 
 }  // namespace calibration

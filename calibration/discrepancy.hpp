@@ -71,6 +71,17 @@ struct Confirmation {
   double probability = 0;          // that one sample agrees with every row (their product)
   std::vector<double> row_probability;  // per row of `rows`
 };
+// How far the posterior at the larger size lets each row be reached: over `n` points drawn
+// uniformly in the unit cube and kept inside the surface's region (where it was fitted), the
+// largest probability that one sample agrees with each of `rows`, and with all of them at once.
+// A row whose largest is small is one no set of that region is expected to make consistent.
+struct Reach {
+  int points = 0;                  // inside the region
+  std::vector<double> row_most;    // per row of `rows`
+  double all_most = 0;
+};
+Reach reach(const ResponseSurface& surface, const std::vector<Discrepancy>& larger, const std::vector<std::size_t>& rows, int n);
+
 std::optional<Confirmation> choose_to_confirm(const ResponseSurface& surface, const std::vector<Discrepancy>& larger,
                                               const std::vector<Eigen::VectorXd>& candidates, const std::vector<std::size_t>& rows);
 

@@ -176,6 +176,14 @@ json confirmed_json(const SizeOutcome& s) {
   return out;
 }
 
+// How far the posterior at a size lets each of its rows be reached (SizeOutcome::reach_*).
+json reach_json(const SizeOutcome& s) {
+  namespace keys = validation::posterior_keys;
+  json rows = json::array();
+  for (std::size_t i = 0; i < s.reach_rows.size(); ++i) rows.push_back({{keys::name, s.reach_rows[i]}, {keys::largest_probability, s.reach_most[i]}});
+  return {{keys::points, s.reach_points}, {keys::largest_probability_all_rows, s.reach_all}, {keys::rows, rows}};
+}
+
 json sizes_json(const Report& r) {
   json out = json::array();
   for (std::size_t k = 0; k < r.o.sizes.size(); ++k) {
@@ -187,6 +195,7 @@ json sizes_json(const Report& r) {
     if (k > 0) {
       x["sets_at_most"] = s.sets_at_most();
       if (!s.confirmed.empty()) x[validation::posterior_keys::confirmed] = confirmed_json(s);
+      if (s.reach_points > 0) x[validation::posterior_keys::reach] = reach_json(s);
       x["discrepancy"] = {{"pairs", s.discrepancy_pairs}, {"form", s.discrepancy_linear ? "linear" : "constant"}};
       for (const SizeOutcome::Change& c : s.changes) x["discrepancy"]["at_posterior_mean"][c.row] = {{"shift", c.shift}, {"sd", c.shift_sd}};
     }

@@ -47,6 +47,18 @@ std::string confirmed_markdown(const SizeOutcome& s) {
   return md.str();
 }
 
+// How far the posterior at a larger size lets its rows be reached (SizeOutcome::reach_*): all at
+// once, and the row it reaches least.
+std::string reach_markdown(const SizeOutcome& s) {
+  if (s.reach_points == 0 || s.reach_most.empty()) return "";
+  const std::size_t least =
+      static_cast<std::size_t>(std::min_element(s.reach_most.begin(), s.reach_most.end()) - s.reach_most.begin());
+  return "Over " + std::to_string(s.reach_points) + " points of the region its surface covers, the posterior at " + s.label() +
+         " gives one sample a probability of agreeing with all " + std::to_string(s.reach_rows.size()) + " of its rows of " +
+         validation::significant(s.reach_all, 2) + " at most; the row it reaches least: '" + s.reach_rows[least] + "', " +
+         validation::significant(s.reach_most[least], 2) + " at most (`posterior.json`: `sizes`, `reach`).\n\n";
+}
+
 // With larger sizes: each size's runs and cost, what the largest changed in each parameter, and
 // the discrepancy of each reference row at the posterior's mean.
 std::string sizes_markdown(const Report& r) {
@@ -92,7 +104,7 @@ std::string sizes_markdown(const Report& r) {
         if (std::abs(ch.shift[j]) > std::abs(ch.shift[at])) at = j;
       t.row({ch.row, validation::significant(ch.shift[at], 3) + " ± " + validation::significant(ch.shift_sd[at], 2), std::to_string(at + 1)});
     }
-    md << t.text() << "\n" << confirmed_markdown(s);
+    md << t.text() << "\n" << reach_markdown(s) << confirmed_markdown(s);
   }
   return md.str();
 }
@@ -166,7 +178,7 @@ std::string section_markdown(const Report& r) {
   if (o.sizes.size() == 1) md << "profile " << o.first().profile << ", " << o.first().seeds.size() << " sample(s) per set";
   else
     for (std::size_t k = 0; k < o.sizes.size(); ++k)
-      md << (k ? "; " : "sizes: ") << o.sizes[k].profile << ", " << o.sizes[k].seeds.size() << " sample(s) per set";
+      md << (k ? "; " : "sizes: ") << o.sizes[k].label() << ", " << o.sizes[k].seeds.size() << " sample(s) per set";
   md << ") against " << o.references.source << ". Engine " << o.engine << ".\n\n";
   md << sets.size() << " parameter sets in " << o.iterations.size() << (o.iterations.size() == 1 ? " iteration of " : " iterations of ")
      << c.batch << " (" << runs << " runs, " << validation::significant(o.core_seconds() / 60, 3) << " core-min recorded); effective sample size "

@@ -176,3 +176,42 @@ TEST_CASE("the set chosen to confirm is the one the larger size's posterior expe
   // No candidates: none.
   CHECK_FALSE(calibration::choose_to_confirm(*surface, {*delta}, {}, {0}));
 }
+
+TEST_CASE("how far the larger size's posterior reaches a row: its largest probability over the surface's region", "[calibration]") {
+  // The example above: at the large size the row's mean is 2 u - 0.2 with a samples' sd of 0.05,
+  // its region [0.7, 0.9]; the surface's region is u in [0.1, 0.7] (3 sd of 0.1 about 0.4). The
+  // largest probability, at u = 0.5, is erf(2 / sqrt 2) = 0.9545; 20,000 uniform points, about
+  // 12,000 inside, come within 1e-4 of it (the density at the top is flat to second order). A row
+  // read as 2.0 within 0.1 needs u = 1.1, outside: its largest is at u = 0.7, where the mean 1.2
+  // lies 14 sd below the region: about 0.
+  calibration::References refs;
+  validation::Row row, far;
+  row.name = "value", row.check = "within", row.reference = 0.8, row.tolerance = 0.1, row.resolution = 0.001;
+  far = row, far.name = "far", far.reference = 2.0;
+  refs.rows = {row, far};
+  const auto set = [](const std::string& name, double u, double y) {
+    calibration::ParameterSet s;
+    s.name = name;
+    s.u = Eigen::VectorXd::Constant(1, u);
+    s.misfit.rows = {calibration::RowMisfit{"value", 0, 1, "", true, {y}, {0.05}, 3}, calibration::RowMisfit{"far", 0, 1, "", true, {y}, {0.05}, 3}};
+    return s;
+  };
+  std::vector<calibration::ParameterSet> small, large;
+  for (int i = 0; i < 21; ++i) small.push_back(set("s" + std::to_string(i), 0.2 + 0.02 * i, 2 * (0.2 + 0.02 * i)));
+  for (const int i : {5, 10, 20}) large.push_back(set("s" + std::to_string(i), 0.2 + 0.02 * i, 2 * (0.2 + 0.02 * i) - 0.2));
+  const auto delta = calibration::fit_discrepancy(refs, small, large);
+  REQUIRE(delta);
+  calibration::Proposal region;
+  region.mean = Eigen::VectorXd::Constant(1, 0.4);
+  region.covariance = Eigen::MatrixXd::Constant(1, 1, 0.01);
+  const auto surface = calibration::fit_surface(refs, small, region);
+  REQUIRE(surface);
+  const calibration::Reach r = calibration::reach(*surface, {*delta}, {0, 1}, 20000);
+  CHECK(r.points > 11000);
+  CHECK(r.points < 13000);
+  REQUIRE(r.row_most.size() == 2);
+  CHECK(r.row_most[0] == Approx(std::erf(2 / std::sqrt(2.0))).margin(1e-4));
+  CHECK(r.row_most[0] <= std::erf(2 / std::sqrt(2.0)) + 1e-12);
+  CHECK(r.row_most[1] < 1e-12);
+  CHECK(r.all_most < 1e-12);
+}

@@ -28,14 +28,23 @@ std::pair<const Part*, const Part::Row*> judged_in(const std::vector<Part>& part
   return {nullptr, nullptr};
 }
 
-// "set i3s004, where the posterior expected one sample to agree with all 7 of its density's rows
-// with probability 0.21 (this row: 0.45)".
+// "set i3s004, the posterior's best prediction (all 7 rows: 0.21; this row: 0.45)": the
+// probabilities it gave that one sample agrees.
 std::string confirmed_words(const Part::Confirmed& c, const std::string& row) {
-  std::string out = "set " + c.set + ", where the posterior expected one sample to agree with all " + std::to_string(c.rows.size()) +
-                    " of its density's rows with probability " + significant(c.probability, 2);
+  std::string out = "set " + c.set + ", the posterior's best prediction (all " + std::to_string(c.rows.size()) + " rows: " +
+                    significant(c.probability, 2);
   for (const Part::Confirmed::Row& r : c.rows)
-    if (r.name == row) out += " (this row: " + significant(r.probability, 2) + ")";
-  return out;
+    if (r.name == row) out += "; this row: " + significant(r.probability, 2);
+  return out + ")";
+}
+
+// The largest probability the posterior at the part's size gives one sample of agreeing with the
+// row, anywhere in its surface's region; "—" before the part has it.
+std::string reach_cell(const Part& part, const std::string& row) {
+  if (part.reach)
+    for (const auto& [name, most] : part.reach->rows)
+      if (name == row) return significant(most, 2) + " (" + std::to_string(part.reach->points) + " points)";
+  return "—";
 }
 
 // The answer for a row the paper study misses, from the part's sets.
@@ -46,13 +55,12 @@ std::string answer(const Part& part, const Part::Row& r) {
   if (r.consistent_sets > 0)
     return "consistent in " + std::to_string(r.consistent_sets) + " set(s), never together with all " + all + " rows of its density (at most " +
            std::to_string(r.most_with.value_or(0)) + (r.set_with_most ? ", set " + *r.set_with_most : std::string()) + ")";
-  std::string out = "❌ in none of the " + std::to_string(r.judged_sets) + " sets";
-  if (part.confirmed.empty()) return out + "; no set confirmed the posterior's prediction yet";
+  std::string out = "❌ in none";
+  if (part.confirmed.empty()) out += "; no set confirmed the posterior's prediction yet";
   for (const Part::Confirmed& c : part.confirmed) {
     const auto at = std::find_if(c.rows.begin(), c.rows.end(), [&](const Part::Confirmed::Row& x) { return x.name == r.name; });
     const bool scored = at != c.rows.end() && at->consistent.has_value();
-    out += scored ? ", not even in " + confirmed_words(c, r.name) : "; the set confirming the posterior's prediction, " + confirmed_words(c, r.name) +
-                                                                     ", is not scored yet";
+    out += scored ? ", not even in " + confirmed_words(c, r.name) : "; " + confirmed_words(c, r.name) + ", not scored yet";
   }
   return out;
 }
@@ -87,7 +95,7 @@ std::string open_choices_parts_text(const fs::path& report, const std::vector<Ro
   out += " Scored so far: " + joined(counts, "; ") + ".";
   for (const auto& [s, densities] : stamps) out += stamps.size() == 1 ? " " + s : " (" + joined(densities, ", ") + ") " + s;
   MarkdownTable table({"row the paper study misses", "the paper study", "consistent at the paper's size in (of the sets judging it)",
-                       "answer at the paper's size"});
+                       "answer at the paper's size", "the posterior's largest probability that one sample agrees, in its region"});
   std::vector<Weakness> kinds;
   for (const RejudgedRow& p : in_paper) {
     if (p.result.verdict == Verdict::Consistent) continue;
@@ -97,10 +105,11 @@ std::string open_choices_parts_text(const fs::path& report, const std::vector<Ro
                             " of " + std::to_string(p.result.valued) + " " + verdict_mark(p.result.verdict, !weaknesses(p.result).empty());
     const auto [part, row] = judged_in(posterior.parts, p.row.name);
     if (!part) {
-      table.row({cell(p.row.name), now, "—", "not judged by any part of the calibration at the paper's size"});
+      table.row({cell(p.row.name), now, "—", "not judged by any part of the calibration at the paper's size", "—"});
       continue;
     }
-    table.row({cell(p.row.name), now, std::to_string(row->consistent_sets) + " of " + std::to_string(row->judged_sets), answer(*part, *row)});
+    table.row({cell(p.row.name), now, std::to_string(row->consistent_sets) + " of " + std::to_string(row->judged_sets), answer(*part, *row),
+               reach_cell(*part, p.row.name)});
   }
   std::sort(kinds.begin(), kinds.end());
   if (table.rows() == 0) return out + "\n\nThe paper study misses no row.\n";

@@ -65,6 +65,14 @@ std::vector<PosteriorSummary::Part> parts_of(const nlohmann::json& j, const std:
       if (size.contains(k::densities) && size.at(k::densities).get<std::vector<std::string>>() == part.densities) {
         if (size.contains(k::stamp)) part.stamp = stamp_from_json(size.at(k::stamp));
         part.confirmed = confirmed_of(size, file + ": " + k::sizes);
+        if (size.contains(k::reach)) {
+          const nlohmann::json& x = size.at(k::reach);
+          const std::string at = file + ": " + k::sizes + "." + k::reach;
+          PosteriorSummary::Part::Reach reach{required<int>(x, k::points, at), {}, required<double>(x, k::largest_probability_all_rows, at)};
+          for (const nlohmann::json& r : required<nlohmann::json>(x, k::rows, at))
+            reach.rows.emplace_back(required<std::string>(r, k::name, at + ".rows"), required<double>(r, k::largest_probability, at + ".rows"));
+          part.reach = std::move(reach);
+        }
       }
     out.push_back(std::move(part));
   }

@@ -32,6 +32,10 @@ inline constexpr const char* consistent_sets = "consistent_sets";
 inline constexpr const char* judged_sets = "judged_sets";
 inline constexpr const char* most_rows_consistent_with_it = "most_rows_consistent_with_it";
 inline constexpr const char* set_with_most_rows = "set_with_most_rows";
+inline constexpr const char* reach = "reach";                        // {points, largest_probability_all_rows, rows: [{name, largest_probability}]}
+inline constexpr const char* points = "points";
+inline constexpr const char* largest_probability = "largest_probability";
+inline constexpr const char* largest_probability_all_rows = "largest_probability_all_rows";
 }  // namespace posterior_keys
 
 struct PosteriorSummary {
@@ -71,6 +75,15 @@ struct PosteriorSummary {
       std::vector<Row> rows;
     };
     std::vector<Confirmed> confirmed;
+    // How far the posterior at the part's size lets its rows be reached: over `points` of its
+    // surface's region, each row's largest probability that one sample agrees with it (by name),
+    // and that of all the part's rows at once. None before every part has its discrepancy.
+    struct Reach {
+      int points = 0;
+      std::vector<std::pair<std::string, double>> rows;
+      double all_rows = 0;
+    };
+    std::optional<Reach> reach;
   };
   std::vector<Part> parts;
 };

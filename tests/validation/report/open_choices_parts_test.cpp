@@ -45,6 +45,8 @@ json posterior(int most, std::optional<bool> confirmed_consistent) {
   p["sizes"] = {{{"profile", "small"}},
                 {{"profile", "check"}, {"densities", {"dense"}}, {"stamp", stamp()}},
                 {{"profile", "check"}, {"densities", {"medium"}}, {"stamp", stamp()},
+                 {"reach", {{"points", 9000}, {"largest_probability_all_rows", 0.01},
+                            {"rows", {{{"name", "e0, medium"}, {"largest_probability", 0.99}}, {{"name", medium_growth}, {"largest_probability", 0.04}}}}}},
                  {"confirmed", {{{"set", "i4s002"}, {"predicted_probability", 0.21},
                                  {"rows", {{{"name", "e0, medium"}, {"predicted_probability", 0.7}}, medium_confirmed_row}}}}}}};
   p["largest_size_parts"] = {
@@ -76,22 +78,25 @@ TEST_CASE("the paper study's misses among the calibration's parts: answered from
     REQUIRE(summary.parts.size() == 2);
     CHECK(summary.parts[1].confirmed.size() == 1);
     CHECK(summary.parts[1].stamp.spheres == 8000);
+    REQUIRE(summary.parts[1].reach);
+    CHECK(summary.parts[1].reach->points == 9000);
+    CHECK_FALSE(summary.parts[0].reach);
     const std::string text = validation::open_choices_parts_text(report, rows);
     INFO(text);
     CHECK_THAT(text, Catch::Contains("Scored so far: dense 3 set(s) on 2 rows; medium 4 set(s) on 2 rows."));
     CHECK_THAT(text, Catch::Contains("(8,000 spheres, 3 samples, 2026-12-03)"));
     CHECK_THAT(text, Catch::Contains("| " + dense_slope + " | 1.421 ± 0.040, holds in 0 of 5 ❌ | 1 of 3 | "
-                                     "✅ consistent together with all 2 rows of its density in set i2s004 |"));
+                                     "✅ consistent together with all 2 rows of its density in set i2s004 | — |"));
     CHECK_THAT(text, Catch::Contains("| " + medium_growth + " |") &&
-                         Catch::Contains("| 0 of 4 | ❌ in none of the 4 sets, not even in set i4s002, where the posterior expected one sample "
-                                         "to agree with all 2 of its density's rows with probability 0.21 (this row: 0.30) |"));
+                         Catch::Contains("| 0 of 4 | ❌ in none, not even in set i4s002, the posterior's best prediction (all 2 rows: "
+                                         "0.21; this row: 0.30) | 0.040 (9000 points) |"));
   }
   SECTION("a row consistent only in sets that lose another; a confirmed set not scored yet") {
     write_json(file, posterior(1, std::nullopt));
     const std::string text = validation::open_choices_parts_text(report, rows);
     INFO(text);
     CHECK_THAT(text, Catch::Contains("| 1 of 3 | consistent in 1 set(s), never together with all 2 rows of its density (at most 1, set i2s004) |"));
-    CHECK_THAT(text, Catch::Contains("the set confirming the posterior's prediction, set i4s002") && Catch::Contains("is not scored yet"));
+    CHECK_THAT(text, Catch::Contains("❌ in none; set i4s002, the posterior's best prediction (all 2 rows: 0.21; this row: 0.30), not scored yet"));
     CHECK(text.find("✅ consistent together") == std::string::npos);
   }
   SECTION("a part's row without its name: the file named in the error") {
