@@ -4,6 +4,10 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "discrepancy.hpp"
 #include "surrogate.hpp"
@@ -127,86 +131,75 @@ TEST_CASE("the sets chosen for the larger size spread over the posterior, within
   CHECK(calibration::choose_for_larger_size(candidates, {}, pu, pw, 7).size() == 7);
 }
 
-TEST_CASE("the set chosen to confirm is the one the larger size's posterior expects to agree best, with its probability", "[calibration]") {
-  // One parameter; a row read by the paper as 0.8 within 0.1 (region [0.7, 0.9]). At the small size
-  // the samples' mean is 2 u; at the large size 2 u - 0.2, exactly, with a samples' sd of 0.05
-  // (3 samples a set). 21 small sets over [0.2, 0.6]; 3 again at the large size: a constant
-  // discrepancy of -0.2 with no residual. The small size alone would centre the row at u = 0.4;
-  // at the large size it is centred at u = 0.5, where one sample agrees with probability
-  // P(|X - 0.8| < 0.1), X ~ N(0.8, 0.05^2): erf(2 / sqrt 2).
+// Rows read by the paper as `reference` within 0.1, on one parameter: at the small size each row's
+// samples' mean is 2 u; at the large size 2 u - 0.2, exactly, with a samples' sd of 0.05 (3
+// samples a set). 21 small sets over [0.2, 0.6]; 3 of them again at the large size: a constant
+// discrepancy of -0.2 with no residual. The surface's region: u in [0.1, 0.7] (3 sd of 0.1 about 0.4).
+struct RowsAtTwoSizes {
   calibration::References refs;
-  validation::Row row;
-  row.name = "value";
-  row.check = "within", row.reference = 0.8, row.tolerance = 0.1, row.resolution = 0.001;
-  refs.rows = {row};
-  const auto set = [](const std::string& name, double u, double y) {
-    calibration::ParameterSet s;
-    s.name = name;
-    s.u = Eigen::VectorXd::Constant(1, u);
-    s.misfit.rows = {calibration::RowMisfit{"value", 0, 1, "", true, {y}, {0.05}, 3}};
-    s.misfit.valued = true;
-    return s;
-  };
   std::vector<calibration::ParameterSet> small, large;
-  std::vector<Eigen::VectorXd> candidates;
-  for (int i = 0; i < 21; ++i) {
-    const double u = 0.2 + 0.02 * i;
-    small.push_back(set("s" + std::to_string(i), u, 2 * u));
-    candidates.push_back(small.back().u);
+  std::vector<Eigen::VectorXd> candidates;  // the small sets' u
+  std::optional<calibration::Discrepancy> delta;
+  std::optional<calibration::ResponseSurface> surface;
+
+  explicit RowsAtTwoSizes(const std::vector<std::pair<std::string, double>>& rows) {
+    for (const auto& [name, reference] : rows) {
+      validation::Row row;
+      row.name = name, row.check = "within", row.reference = reference, row.tolerance = 0.1, row.resolution = 0.001;
+      refs.rows.push_back(row);
+    }
+    const auto set = [&](const std::string& name, double u, double y) {
+      calibration::ParameterSet s;
+      s.name = name;
+      s.u = Eigen::VectorXd::Constant(1, u);
+      for (const auto& [row, reference] : rows) s.misfit.rows.push_back(calibration::RowMisfit{row, 0, 1, "", true, {y}, {0.05}, 3});
+      return s;
+    };
+    for (int i = 0; i < 21; ++i) {
+      const double u = 0.2 + 0.02 * i;
+      small.push_back(set("s" + std::to_string(i), u, 2 * u));
+      candidates.push_back(small.back().u);
+    }
+    for (const int i : {5, 10, 20}) large.push_back(set("s" + std::to_string(i), 0.2 + 0.02 * i, 2 * (0.2 + 0.02 * i) - 0.2));
+    delta = calibration::fit_discrepancy(refs, small, large);
+    calibration::Proposal region;
+    region.mean = Eigen::VectorXd::Constant(1, 0.4);
+    region.covariance = Eigen::MatrixXd::Constant(1, 1, 0.01);
+    surface = calibration::fit_surface(refs, small, region);
   }
-  for (const int i : {5, 10, 20}) large.push_back(set("s" + std::to_string(i), 0.2 + 0.02 * i, 2 * (0.2 + 0.02 * i) - 0.2));
-  const auto delta = calibration::fit_discrepancy(refs, small, large);
-  REQUIRE(delta);
-  CHECK_FALSE(delta->linear);
-  calibration::Proposal region;
-  region.mean = Eigen::VectorXd::Constant(1, 0.4);
-  region.covariance = Eigen::MatrixXd::Constant(1, 1, 0.01);
-  const auto surface = calibration::fit_surface(refs, small, region);
-  REQUIRE(surface);
-  const auto chosen = calibration::choose_to_confirm(*surface, {*delta}, candidates, {0});
+};
+
+TEST_CASE("the set chosen to confirm is the one the larger size's posterior expects to agree best, with its probability", "[calibration]") {
+  // One row read as 0.8 within 0.1 (region [0.7, 0.9]). The small size alone would centre it at
+  // u = 0.4; at the large size it is centred at u = 0.5, where one sample agrees with probability
+  // P(|X - 0.8| < 0.1), X ~ N(0.8, 0.05^2): erf(2 / sqrt 2).
+  const RowsAtTwoSizes x({{"value", 0.8}});
+  REQUIRE(x.delta);
+  CHECK_FALSE(x.delta->linear);
+  REQUIRE(x.surface);
+  const auto chosen = calibration::choose_to_confirm(*x.surface, {*x.delta}, x.candidates, {0});
   REQUIRE(chosen);
-  CHECK(candidates[chosen->index](0) == Approx(0.5));
+  CHECK(x.candidates[chosen->index](0) == Approx(0.5));
   CHECK(chosen->probability == Approx(std::erf(2 / std::sqrt(2.0))).epsilon(1e-6));
   REQUIRE(chosen->row_probability.size() == 1);
   CHECK(chosen->row_probability[0] == Approx(chosen->probability));
   // Without the discrepancy, the small size's own best: u = 0.4.
-  const auto small_only = calibration::choose_to_confirm(*surface, {}, candidates, {0});
+  const auto small_only = calibration::choose_to_confirm(*x.surface, {}, x.candidates, {0});
   REQUIRE(small_only);
-  CHECK(candidates[small_only->index](0) == Approx(0.4));
+  CHECK(x.candidates[small_only->index](0) == Approx(0.4));
   // No candidates: none.
-  CHECK_FALSE(calibration::choose_to_confirm(*surface, {*delta}, {}, {0}));
+  CHECK_FALSE(calibration::choose_to_confirm(*x.surface, {*x.delta}, {}, {0}));
 }
 
 TEST_CASE("how far the larger size's posterior reaches a row: its largest probability over the surface's region", "[calibration]") {
-  // The example above: at the large size the row's mean is 2 u - 0.2 with a samples' sd of 0.05,
-  // its region [0.7, 0.9]; the surface's region is u in [0.1, 0.7] (3 sd of 0.1 about 0.4). The
-  // largest probability, at u = 0.5, is erf(2 / sqrt 2) = 0.9545; 20,000 uniform points, about
-  // 12,000 inside, come within 1e-4 of it (the density at the top is flat to second order). A row
-  // read as 2.0 within 0.1 needs u = 1.1, outside: its largest is at u = 0.7, where the mean 1.2
-  // lies 14 sd below the region: about 0.
-  calibration::References refs;
-  validation::Row row, far;
-  row.name = "value", row.check = "within", row.reference = 0.8, row.tolerance = 0.1, row.resolution = 0.001;
-  far = row, far.name = "far", far.reference = 2.0;
-  refs.rows = {row, far};
-  const auto set = [](const std::string& name, double u, double y) {
-    calibration::ParameterSet s;
-    s.name = name;
-    s.u = Eigen::VectorXd::Constant(1, u);
-    s.misfit.rows = {calibration::RowMisfit{"value", 0, 1, "", true, {y}, {0.05}, 3}, calibration::RowMisfit{"far", 0, 1, "", true, {y}, {0.05}, 3}};
-    return s;
-  };
-  std::vector<calibration::ParameterSet> small, large;
-  for (int i = 0; i < 21; ++i) small.push_back(set("s" + std::to_string(i), 0.2 + 0.02 * i, 2 * (0.2 + 0.02 * i)));
-  for (const int i : {5, 10, 20}) large.push_back(set("s" + std::to_string(i), 0.2 + 0.02 * i, 2 * (0.2 + 0.02 * i) - 0.2));
-  const auto delta = calibration::fit_discrepancy(refs, small, large);
-  REQUIRE(delta);
-  calibration::Proposal region;
-  region.mean = Eigen::VectorXd::Constant(1, 0.4);
-  region.covariance = Eigen::MatrixXd::Constant(1, 1, 0.01);
-  const auto surface = calibration::fit_surface(refs, small, region);
-  REQUIRE(surface);
-  const calibration::Reach r = calibration::reach(*surface, {*delta}, {0, 1}, 20000);
+  // The row above, largest at u = 0.5: erf(2 / sqrt 2) = 0.9545; 20,000 uniform points, about
+  // 12,000 inside the region, come within 1e-4 of it (the probability is flat to second order at
+  // its top). A row read as 2.0 within 0.1 needs u = 1.1, outside: its largest is at u = 0.7, where
+  // the mean 1.2 lies 14 sd below its region: about 0.
+  const RowsAtTwoSizes x({{"value", 0.8}, {"far", 2.0}});
+  REQUIRE(x.delta);
+  REQUIRE(x.surface);
+  const calibration::Reach r = calibration::reach(*x.surface, {*x.delta}, {0, 1}, 20000);
   CHECK(r.points > 11000);
   CHECK(r.points < 13000);
   REQUIRE(r.row_most.size() == 2);
