@@ -273,13 +273,13 @@ void run_iteration(Loop& l, std::size_t k, int it, IterationPlan& p) {
               l.out.sizes.size() > 1 ? (", size " + so.label()).c_str() : "", this_iteration, p.in_ledger.size(), p.runs.size());
   std::fflush(stdout);
   if (p.runs.empty()) return;
-  if (l.o.ledger_only) {
+  if (l.o.ledger_only) {  // a set whose runs all finished here is scored on them: nothing runs for it
     std::vector<std::string> missing;
     for (const ParameterSet& s : so.sets)
-      if (s.iteration == it && !size.from_ledger.count(s.name)) missing.push_back(s.name);
+      if (s.iteration == it && !size.from_ledger.count(s.name) && p.unfinished.count(s.name)) missing.push_back(s.name);
     if (!missing.empty())
-      throw dem::ConfigError("--ledger-only: the ledger " + size.ledger_file + " holds no score of set " + missing.front() + " (" +
-                             std::to_string(missing.size()) + " of iteration " + std::to_string(it) + " lack one) and nothing may run");
+      throw dem::ConfigError("--ledger-only: the ledger " + size.ledger_file + " holds no score of set " + missing.front() + " (" + std::to_string(missing.size()) +
+                             " of iteration " + std::to_string(it) + " lack one, and not all of their runs are finished here) and nothing may run");
     return;
   }
   execute_sets(l, k, p.to_run, p.runs);
@@ -384,9 +384,9 @@ std::string posterior_source(const Outcome& out) {
   if (out.posterior_from.empty()) return "the sets' weights";
   std::string text = "a response surface over " + std::to_string(out.surface_sets) + " sets";
   for (std::size_t k = 1; k < out.sizes.size(); ++k)
-    text += out.sizes[k].discrepancy_pairs > 0 ? " plus a discrepancy to " + out.sizes[k].profile + " over " +
+    text += out.sizes[k].discrepancy_pairs > 0 ? " plus a discrepancy to " + out.sizes[k].label() + " over " +
                                                      std::to_string(out.sizes[k].discrepancy_pairs) + " sets"
-                                             : " (" + out.sizes[k].profile + ": too few sets for a discrepancy yet)";
+                                             : " (" + out.sizes[k].label() + ": too few sets for a discrepancy yet)";
   return text;
 }
 

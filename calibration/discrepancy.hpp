@@ -74,7 +74,8 @@ struct Confirmation {
 // How far the posterior at the larger size lets each row be reached: over `n` points drawn
 // uniformly in the unit cube and kept inside the surface's region (where it was fitted), the
 // largest probability that one sample agrees with each of `rows`, and with all of them at once.
-// A row whose largest is small is one no set of that region is expected to make consistent.
+// A row whose largest is small is one no set of that region is expected to make consistent. A
+// maximum over random points, not a bound: a point between them may do better.
 struct Reach {
   int points = 0;                  // inside the region
   std::vector<double> row_most;    // per row of `rows`

@@ -53,10 +53,10 @@ std::string reach_markdown(const SizeOutcome& s) {
   if (s.reach_points == 0 || s.reach_most.empty()) return "";
   const std::size_t least =
       static_cast<std::size_t>(std::min_element(s.reach_most.begin(), s.reach_most.end()) - s.reach_most.begin());
-  return "Over " + std::to_string(s.reach_points) + " points of the region its surface covers, the posterior at " + s.label() +
-         " gives one sample a probability of agreeing with all " + std::to_string(s.reach_rows.size()) + " of its rows of " +
-         validation::significant(s.reach_all, 2) + " at most; the row it reaches least: '" + s.reach_rows[least] + "', " +
-         validation::significant(s.reach_most[least], 2) + " at most (`posterior.json`: `sizes`, `reach`).\n\n";
+  return "At " + std::to_string(s.reach_points) + " random points of the region its surface covers, the largest probability the "
+         "posterior at " + s.label() + " gives one sample of agreeing with all " + std::to_string(s.reach_rows.size()) + " of its rows is " +
+         validation::significant(s.reach_all, 2) + "; the row whose largest is least: '" + s.reach_rows[least] + "', " +
+         validation::significant(s.reach_most[least], 2) + " (`posterior.json`: `sizes`, `reach`).\n\n";
 }
 
 // With larger sizes: each size's runs and cost, what the largest changed in each parameter, and

@@ -64,6 +64,17 @@ TEST_CASE("calibrate across two sizes: the chosen sets run at the large size, a 
   const std::string section = dem::test::read_bytes((dir / "report" / "section.md").string());
   CHECK_THAT(section, Catch::Contains("What the larger size changed") && Catch::Contains("80 % of the 20 sets run were run at small"));
 
+  // Without the small size's ledger but with every run finished: --ledger-only scores the sets on
+  // their runs and runs nothing (the ledger put back after).
+  fs::rename(dir / "report" / "scored_sets.json", dir / "scored_sets.kept");
+  const auto from_runs = dem::test::run_command(cmd + " --dem ./other_dem --ledger-only 2>&1");
+  fs::rename(dir / "scored_sets.kept", dir / "report" / "scored_sets.json");
+  {
+    INFO(from_runs.out);
+    CHECK(from_runs.exit_code == 0);
+    CHECK(from_runs.out.find("] started ") == std::string::npos);
+  }
+
   // Without the runs' results, with this engine: the ledgers were scored by another engine, so
   // --ledger-only alone finds no score and refuses to run; with --ledger-engine it replays every set
   // (the scenes are the same), runs nothing, gives the same posterior, and says which engine scored it.

@@ -94,8 +94,16 @@ std::string open_choices_parts_text(const fs::path& report, const std::vector<Ro
   }
   out += " Scored so far: " + joined(counts, "; ") + ".";
   for (const auto& [s, densities] : stamps) out += stamps.size() == 1 ? " " + s : " (" + joined(densities, ", ") + ") " + s;
-  MarkdownTable table({"row the paper study misses", "the paper study", "consistent at the paper's size in (of the sets judging it)",
-                       "answer at the paper's size", "the posterior's largest probability that one sample agrees, in its region"});
+  // The reach's column once some part has it (the posterior at the paper's size, every part with its discrepancy).
+  const bool reached = std::any_of(posterior.parts.begin(), posterior.parts.end(), [](const Part& p) { return p.reach.has_value(); });
+  std::vector<std::string> head = {"row the paper study misses", "the paper study", "consistent at the paper's size in (of the sets judging it)",
+                                   "answer at the paper's size"};
+  if (reached) head.push_back("the posterior's largest probability that one sample agrees, at random points of its region");
+  MarkdownTable table(head);
+  const auto row_of = [&](std::vector<std::string> cells, const std::string& reach) {
+    if (reached) cells.push_back(reach);
+    table.row(cells);
+  };
   std::vector<Weakness> kinds;
   for (const RejudgedRow& p : in_paper) {
     if (p.result.verdict == Verdict::Consistent) continue;
@@ -105,11 +113,11 @@ std::string open_choices_parts_text(const fs::path& report, const std::vector<Ro
                             " of " + std::to_string(p.result.valued) + " " + verdict_mark(p.result.verdict, !weaknesses(p.result).empty());
     const auto [part, row] = judged_in(posterior.parts, p.row.name);
     if (!part) {
-      table.row({cell(p.row.name), now, "—", "not judged by any part of the calibration at the paper's size", "—"});
+      row_of({cell(p.row.name), now, "—", "not judged by any part of the calibration at the paper's size"}, "—");
       continue;
     }
-    table.row({cell(p.row.name), now, std::to_string(row->consistent_sets) + " of " + std::to_string(row->judged_sets), answer(*part, *row),
-               reach_cell(*part, p.row.name)});
+    row_of({cell(p.row.name), now, std::to_string(row->consistent_sets) + " of " + std::to_string(row->judged_sets), answer(*part, *row)},
+           reach_cell(*part, p.row.name));
   }
   std::sort(kinds.begin(), kinds.end());
   if (table.rows() == 0) return out + "\n\nThe paper study misses no row.\n";

@@ -98,6 +98,16 @@ TEST_CASE("the paper study's misses among the calibration's parts: answered from
     CHECK_THAT(text, Catch::Contains("| 1 of 3 | consistent in 1 set(s), never together with all 2 rows of its density (at most 1, set i2s004) |"));
     CHECK_THAT(text, Catch::Contains("❌ in none; set i4s002, the posterior's best prediction (all 2 rows: 0.21; this row: 0.30), not scored yet"));
     CHECK(text.find("✅ consistent together") == std::string::npos);
+    CHECK_THAT(text, Catch::Contains("largest probability that one sample agrees, at random points of its region"));  // a part has its reach
+  }
+  SECTION("no part with its reach yet: no column for it") {
+    json p = posterior(2, false);
+    p["sizes"][2].erase("reach");
+    write_json(file, p);
+    const std::string text = validation::open_choices_parts_text(report, rows);
+    INFO(text);
+    CHECK(text.find("largest probability") == std::string::npos);
+    CHECK_THAT(text, Catch::Contains("(all 2 rows: 0.21; this row: 0.30) |\n"));
   }
   SECTION("a part's row without its name: the file named in the error") {
     json p = posterior(2, false);
