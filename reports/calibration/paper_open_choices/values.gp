@@ -1,7 +1,7 @@
 # calibration paper_open_choices: what calibration.gp draws
 parameters = 7
 curves = 0
-samples = 3
+samples = 0
 parameter_n = 7
 parameter_1 = "damping_form"
 parameter_2 = "test_damping"
@@ -13,7 +13,7 @@ parameter_7 = "dense_shearing_friction"
 curve_x_n = 0
 curve_y_n = 0
 curve_title_n = 0
-pair_a = 5
+pair_a = 4
 pair_b = 7
 truth_1 = NaN
 discrete_1 = 1
