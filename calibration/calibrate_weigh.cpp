@@ -93,9 +93,13 @@ std::vector<SizeOutcome::Change> changes_at(const Outcome& out, const Discrepanc
   return changes;
 }
 
-}  // namespace
-
-namespace {
+// The scalar rows (indices into the references) a discrepancy covers: those of its part of a size.
+std::vector<std::size_t> rows_covered(const References& refs, const Discrepancy& delta) {
+  std::vector<std::size_t> rows;
+  for (std::size_t r = 0; r < refs.rows.size(); ++r)
+    if (covers(delta.rows[r])) rows.push_back(r);
+  return rows;
+}
 
 // After its budget, size k's next set to confirm the posterior's best prediction there, once the
 // size has its discrepancy and the first size its surface (discrepancy.hpp, choose_to_confirm).
@@ -106,9 +110,7 @@ std::vector<std::size_t> choose_to_confirm(Loop& l, std::size_t k, const std::ve
   std::vector<Discrepancy> larger;
   for (const std::optional<Discrepancy>& d : l.deltas)
     if (d) larger.push_back(*d);
-  std::vector<std::size_t> rows;
-  for (std::size_t r = 0; r < l.out.references.rows.size(); ++r)
-    if (covers(l.deltas[k]->rows[r])) rows.push_back(r);
+  const std::vector<std::size_t> rows = rows_covered(l.out.references, *l.deltas[k]);
   const std::optional<Confirmation> c = choose_to_confirm(*l.surface, larger, candidate_u, rows);
   if (!c) return {};
   SizeOutcome::Confirmed confirmed{candidates[c->index]->name, c->probability, {}, c->row_probability};
@@ -184,10 +186,9 @@ void weigh_larger(Loop& l) {
   if (!l.surface || deltas.size() + 1 < out.sizes.size()) return;
   for (std::size_t k = 1; k < out.sizes.size(); ++k) {
     SizeOutcome& so = out.sizes[k];
-    std::vector<std::size_t> rows;
+    const std::vector<std::size_t> rows = rows_covered(out.references, *l.deltas[k]);
     so.reach_rows.clear();
-    for (std::size_t r = 0; r < out.references.rows.size(); ++r)
-      if (covers(l.deltas[k]->rows[r])) rows.push_back(r), so.reach_rows.push_back(out.references.rows[r].name);
+    for (const std::size_t r : rows) so.reach_rows.push_back(out.references.rows[r].name);
     const Reach reached = reach(*l.surface, deltas, rows, 20000);
     so.reach_points = reached.points, so.reach_most = reached.row_most, so.reach_all = reached.all_most;
   }
