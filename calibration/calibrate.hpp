@@ -3,6 +3,7 @@
 // every finished run, and every set the report folder's ledger of scored sets holds: ledger.hpp),
 // score them against the references, weight every set so far, and stop when the posterior no
 // longer moves (posterior.hpp for the method).
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -78,6 +79,17 @@ struct SizeOutcome {
     std::vector<double> row_probability;
   };
   std::vector<Confirmed> confirmed;
+  // A confirmed set's verdict on each of its rows, on its samples at this size (none: the set not
+  // scored yet, or the row not judged).
+  std::vector<std::optional<bool>> verdicts(const Confirmed& c) const {
+    std::vector<std::optional<bool>> out(c.rows.size());
+    const auto set = std::find_if(sets.begin(), sets.end(), [&](const ParameterSet& p) { return p.name == c.set; });
+    if (set == sets.end() || !set->misfit.valued) return out;
+    for (std::size_t i = 0; i < c.rows.size(); ++i)
+      for (const RowMisfit& m : set->misfit.rows)
+        if (m.name == c.rows[i] && m.valued) out[i] = m.consistent;
+    return out;
+  }
   int sets_at_most() const { return budget + confirm; }
   // Once every size has its discrepancy: how far the posterior at this size lets its scalar rows
   // be reached (discrepancy.hpp, reach): the points of the surface's region tried, and per row

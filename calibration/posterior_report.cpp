@@ -162,13 +162,11 @@ json confirmed_json(const SizeOutcome& s) {
   namespace keys = validation::posterior_keys;
   json out = json::array();
   for (const SizeOutcome::Confirmed& c : s.confirmed) {
-    const auto set = std::find_if(s.sets.begin(), s.sets.end(), [&](const ParameterSet& p) { return p.name == c.set; });
+    const std::vector<std::optional<bool>> verdicts = s.verdicts(c);
     json rows = json::array();
     for (std::size_t i = 0; i < c.rows.size(); ++i) {
       json row{{keys::name, c.rows[i]}, {keys::predicted_probability, c.row_probability[i]}};
-      if (set != s.sets.end() && set->misfit.valued)
-        for (const RowMisfit& m : set->misfit.rows)
-          if (m.name == c.rows[i] && m.valued && m.consistent) row[keys::consistent] = *m.consistent;
+      if (verdicts[i]) row[keys::consistent] = *verdicts[i];
       rows.push_back(row);
     }
     out.push_back({{keys::set, c.set}, {keys::predicted_probability, c.probability}, {keys::rows, rows}});

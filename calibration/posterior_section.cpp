@@ -37,8 +37,8 @@ std::string confirmed_markdown(const SizeOutcome& s) {
       continue;
     }
     int consistent = 0, judged = 0;
-    for (const RowMisfit& m : set->misfit.rows)
-      if (m.valued && m.consistent && std::find(c.rows.begin(), c.rows.end(), m.name) != c.rows.end()) ++judged, consistent += *m.consistent;
+    for (const std::optional<bool>& v : s.verdicts(c))
+      if (v) ++judged, consistent += *v;
     if (judged == 0)
       md << "; none of its rows is judged on " << s.seeds.size() << " sample(s) (validate judges a row on 2 or more).\n\n";
     else

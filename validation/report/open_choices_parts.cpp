@@ -39,7 +39,7 @@ std::string confirmed_words(const Part::Confirmed& c, const std::string& row) {
 }
 
 // The largest probability the posterior at the part's size gives one sample of agreeing with the
-// row, anywhere in its surface's region; "—" before the part has it.
+// row, at random points of its surface's region; "—" before the part has it.
 std::string reach_cell(const Part& part, const std::string& row) {
   if (part.reach)
     for (const auto& [name, most] : part.reach->rows)
