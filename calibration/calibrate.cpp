@@ -64,13 +64,6 @@ std::map<std::string, RunShare> run_shares(const std::vector<pipeline::PlannedRu
   return out;
 }
 
-double largest_move(const std::vector<Marginal>& a, const std::vector<Marginal>& b) {
-  double moved = 0;
-  for (std::size_t j = 0; j < a.size(); ++j)
-    moved = std::max({moved, std::abs(a[j].unit_mean - b[j].unit_mean), std::abs(a[j].unit_sd - b[j].unit_sd)});
-  return moved;
-}
-
 // Each set is a variant of the study: its parameters' keys obey the rules of a variant's (no `name`,
 // no seed of an ensemble, ...), checked as the pipeline checks a study's, naming the parameter.
 void check_parameter_keys(const Calibration& c, const pipeline::Study& study) {
@@ -122,7 +115,7 @@ void start(Loop& l) {
   if (!c.sizes.empty() && !l.o.profile.empty())
     throw dem::ConfigError("--profile " + l.o.profile + " is given, but " + c.file + " names its profiles in sizes: leave --profile out");
   std::vector<Size> sizes = c.sizes;
-  if (sizes.empty()) sizes.push_back({l.o.profile.empty() ? l.study.default_profile().name : l.o.profile, 0, 0, 0, {}});
+  if (sizes.empty()) sizes.push_back({l.o.profile.empty() ? l.study.default_profile().name : l.o.profile, 0, 0, 0, 0, {}});
   for (std::size_t k = 0; k < sizes.size(); ++k) {
     const pipeline::Profile* profile = nullptr;
     try {
@@ -137,6 +130,7 @@ void start(Loop& l) {
     so.seeds = profile->seeds;
     so.budget = sizes[k].sets;
     so.confirm = sizes[k].confirm;
+    so.probe = sizes[k].probe;
     // A part of a size has its own results folder and ledger: profile-dense-medium.
     std::string name = profile->name;
     for (const std::string& d : so.densities) name += "-" + d;
@@ -162,9 +156,14 @@ void start(Loop& l) {
     state.refs = l.out.sizes[k].densities.empty() ? l.out.references : only_densities(l.out.references, l.out.sizes[k].densities);
     if (state.refs.curves.empty() && state.refs.rows.empty())
       throw dem::ConfigError(c.file + ": sizes: " + l.out.sizes[k].label() + ": the references have no curve or row of its densities");
-    if (l.out.sizes[k].confirm > 0 && state.refs.rows.empty())
-      throw dem::ConfigError(c.file + ": sizes[" + std::to_string(k) + "].confirm: " + l.out.sizes[k].label() +
-                             " has no scalar row of the references to confirm (a confirmed set is judged on rows): give 0 or add rows");
+    for (const auto& [key, n] : {std::pair{"confirm", l.out.sizes[k].confirm}, std::pair{"probe", l.out.sizes[k].probe}})
+      if (n > 0 && state.refs.rows.empty())
+        throw dem::ConfigError(c.file + ": sizes[" + std::to_string(k) + "]." + key + ": " + l.out.sizes[k].label() +
+                               " has no scalar row of the references (such a set is chosen and judged on rows): give 0 or add rows");
+    if (l.out.sizes[k].probe > 0 && l.out.base_of(k) != 0)
+      throw dem::ConfigError(c.file + ": sizes[" + std::to_string(k) + "].probe: " + l.out.sizes[k].label() +
+                             " chooses its sets from " + l.out.sizes[l.out.base_of(k)].label() + ", not from the first size, which runs "
+                             "a probe for its pair: give 0, or probe at the second size or at a part of the largest");
     state.ledger = read_ledger(state.ledger_file, state.refs);
   }
 }
@@ -176,7 +175,7 @@ void draw_batch(Loop& l, int it) {
   std::vector<Eigen::VectorXd> all_u;
   std::vector<double> all_ll;
   std::vector<ParameterSet>& sets = l.out.first().sets;
-  for (const ParameterSet& s : sets) all_u.push_back(s.u), all_ll.push_back(s.log_likelihood);
+  for (const ParameterSet& s : sets) all_u.push_back(s.u), all_ll.push_back(s.drawn_log_likelihood());
   const Proposal q = it == 1                         ? Proposal{}
                      : !l.out.posterior_from.empty() ? fit_proposal(l.out.posterior_u, l.out.posterior_w, l.c.prior_share)
                                                      : fit_proposal(all_u, proposal_weights(all_u, all_ll, l.proposals, l.drawn,
@@ -349,106 +348,26 @@ void keep_scores(Loop& l, std::size_t k, const IterationPlan& p) {
                 "kept as %s, a new one written\n", size.ledger_file.c_str(), kept.c_str());
 }
 
+// The probes of every size: new sets the first size runs too.
+int probes(const Calibration& c) {
+  int n = 0;
+  for (const Size& s : c.sizes) n += s.probe;
+  return n;
+}
+
 // One size's part of an iteration: plan, run, score, keep. False when only a plan was asked (it is printed).
 bool step_size(Loop& l, std::size_t k, int it) {
   IterationPlan p = plan_iteration(l, k, it);
   if (l.o.plan_only) {
     const Size* size = l.c.sizes.empty() ? nullptr : &l.c.sizes[k];
-    print_plan(l, k, p, k == 0 ? l.c.max_iterations * l.c.batch : size->sets + size->confirm, k == 0 ? l.c.batch : size->per_iteration);
+    print_plan(l, k, p, k == 0 ? l.c.max_iterations * l.c.batch + probes(l.c) : size->sets + size->confirm + size->probe,
+               k == 0 ? l.c.batch : size->per_iteration);
     return false;
   }
   run_iteration(l, k, it, p);
   score_iteration(l, k, it, p);
   keep_scores(l, k, p);
   return true;
-}
-
-// The first row of the last set that has no value, and why ("no rows" when it has none).
-std::string why_unscored(const ParameterSet& s) {
-  if (!s.stopped.empty()) return "the engine stopped a run of it: " + s.stopped;
-  if (s.misfit.rows.empty()) return "no rows";
-  for (const RowMisfit& m : s.misfit.rows)
-    if (!m.valued) return m.name + ": " + m.note;
-  if (!s.misfit.left_out.empty()) return "too few samples with every run finished (" + s.misfit.left_out.front() + ")";
-  return "no row says why";
-}
-
-// " (2 not scored: they weigh nothing; i1s002: ...)", or "" when every set is scored.
-std::string unscored_text(const Outcome& out) {
-  if (out.unscored.empty()) return "";
-  return " (" + std::to_string(out.unscored.size()) + " not scored: they weigh nothing; " + out.unscored.front() +
-         (out.unscored.size() > 1 ? "; ..." : "") + ")";
-}
-
-std::string posterior_source(const Outcome& out) {
-  if (out.posterior_from.empty()) return "the sets' weights";
-  std::string text = "a response surface over " + std::to_string(out.surface_sets) + " sets";
-  for (std::size_t k = 1; k < out.sizes.size(); ++k)
-    text += out.sizes[k].discrepancy_pairs > 0 ? " plus a discrepancy to " + out.sizes[k].label() + " over " +
-                                                     std::to_string(out.sizes[k].discrepancy_pairs) + " sets"
-                                             : " (" + out.sizes[k].label() + ": too few sets for a discrepancy yet)";
-  return text;
-}
-
-IterationSummary summarize(Loop& l, int it) {
-  const Outcome& out = l.out;
-  const Calibration& c = l.c;
-  const std::vector<ParameterSet>& sets = out.first().sets;
-  IterationSummary summary;
-  summary.number = it;
-  summary.sets = c.batch;
-  summary.valued = static_cast<int>(std::count_if(sets.begin(), sets.end(), [](const auto& s) { return s.misfit.valued; }));
-  if (summary.valued == 0)
-    throw dem::ConfigError("no parameter set of iteration " + std::to_string(it) + " could be scored: " + why_unscored(sets.back()));
-  l.out.unscored.clear();
-  for (const ParameterSet& s : sets)
-    if (!s.misfit.valued) l.out.unscored.push_back(s.name + ": " + why_unscored(s));
-  summary.ess = effective_sample_size(out.posterior_w);
-  summary.sets_ess = effective_sample_size(out.weights);
-  for (std::size_t j = 0; j < c.parameters.size(); ++j)
-    summary.marginals.push_back(marginal(c.parameters[j], j, out.posterior_u, out.posterior_w));
-  // On a surface, the posterior's mean +- 2 sd must lie inside the region it was fitted in.
-  summary.contained = true;
-  if (!out.posterior_from.empty())
-    for (std::size_t j = 0; j < c.parameters.size(); ++j) {
-      const Eigen::Index k = static_cast<Eigen::Index>(j);
-      summary.contained &= std::abs(summary.marginals[j].unit_mean - out.region_centre(k)) + 2 * summary.marginals[j].unit_sd <=
-                           out.region_sd(k);
-    }
-  summary.moved = l.before.empty() ? 1 : largest_move(l.before, summary.marginals);
-  l.before = summary.marginals;
-  std::printf("[calibrate] iteration %d: %d of %zu sets scored%s; posterior from %s (effective sample size %.1f), moved %.3f of "
-              "the prior ranges;", it, summary.valued, sets.size(), unscored_text(out).c_str(), posterior_source(out).c_str(),
-              summary.ess, summary.moved);
-  for (std::size_t j = 0; j < c.parameters.size(); ++j)
-    std::printf(" %s %.4g +- %.3g", c.parameters[j].name.c_str(), summary.marginals[j].mean, summary.marginals[j].sd);
-  std::printf("\n");
-  std::fflush(stdout);
-  return summary;
-}
-
-// Whether the posterior has settled after iteration `it` (then out.stop_reason says why). With
-// larger sizes, only once each has spent its sets and has its discrepancy.
-bool settled(Loop& l, int it, const IterationSummary& summary) {
-  const Calibration& c = l.c;
-  if (it < c.min_iterations || summary.moved > c.tolerance || summary.ess < c.min_effective_sets || !summary.contained) return false;
-  for (std::size_t k = 1; k < l.out.sizes.size(); ++k)
-    if (static_cast<int>(l.out.sizes[k].sets.size()) < l.out.sizes[k].sets_at_most() || l.out.sizes[k].discrepancy_pairs == 0) return false;
-  l.out.converged = true;
-  l.out.stop_reason = "no posterior mean or sd moved by more than " + validation::significant(c.tolerance, 3) + " of its prior range (" +
-                      validation::significant(summary.moved, 2) + ") in iteration " + std::to_string(it) +
-                      ", and the posterior rests on " + validation::significant(summary.ess, 3) + " effective points (at least " +
-                      validation::significant(c.min_effective_sets, 3) + " asked)" +
-                      (l.out.posterior_from.empty() ? "" : " inside the region of its response surface");
-  return true;
-}
-
-std::string unsettled_reason(const Calibration& c, const Outcome& out) {
-  const IterationSummary& last = out.iterations.back();
-  return "max_iterations (" + std::to_string(c.max_iterations) + ") reached before the posterior settled (it moved " +
-         validation::significant(last.moved, 2) + " of a prior range in the last iteration and rests on " +
-         validation::significant(last.ess, 3) + " effective points, " + validation::significant(c.min_effective_sets, 3) + " asked" +
-         (last.contained ? "" : "; its mean +- 2 sd reaches out of its response surface's region") + ")";
 }
 
 }  // namespace
@@ -475,10 +394,10 @@ std::optional<Outcome> run_calibration(const Calibration& c, const RunOptions& o
       return std::nullopt;
     }
     weigh(l, it);
-    for (std::size_t k = 1; k < out.sizes.size(); ++k) {
-      choose_larger_sets(l, k, it);
-      step_size(l, k, it);
-    }
+    const std::size_t first_sets = out.first().sets.size();
+    for (std::size_t k = 1; k < out.sizes.size(); ++k) choose_larger_sets(l, k, it);
+    if (out.first().sets.size() > first_sets) step_size(l, 0, it);  // the probes' runs at the first size, for their pairs
+    for (std::size_t k = 1; k < out.sizes.size(); ++k) step_size(l, k, it);
     weigh_larger(l);
     const IterationSummary summary = summarize(l, it);
     out.iterations.push_back(summary);

@@ -72,12 +72,19 @@ struct SizeOutcome {
   // most): each set's name and the probability the posterior gave, when it chose it, that one
   // sample of it agrees with every scalar row of this size (and row by row, in `rows`' order).
   int confirm = 0;
+  // Then the new sets run at the point of the surface's region where that probability is largest
+  // (Size::probe at most; the reach's maximum), recorded as confirmed sets too.
+  int probe = 0;
   struct Confirmed {
     std::string set;
     double probability = 0;
     std::vector<std::string> rows;
     std::vector<double> row_probability;
+    bool probe = false;  // a new set at the reach's maximum, else the best of the sets scored
   };
+  int confirmed_of_kind(bool probes) const {
+    return static_cast<int>(std::count_if(confirmed.begin(), confirmed.end(), [&](const Confirmed& c) { return c.probe == probes; }));
+  }
   std::vector<Confirmed> confirmed;
   // A confirmed set's verdict on each of its rows, on its samples at this size (none: the set not
   // scored yet, or the row not judged).
@@ -90,7 +97,7 @@ struct SizeOutcome {
         if (m.name == c.rows[i] && m.valued) out[i] = m.consistent;
     return out;
   }
-  int sets_at_most() const { return budget + confirm; }
+  int sets_at_most() const { return budget + confirm + probe; }
   // Once every size has its discrepancy: how far the posterior at this size lets its scalar rows
   // be reached (discrepancy.hpp, reach): the points of the surface's region tried, and per row
   // (`reach_rows`) the largest probability that one sample agrees with it; with all of them at once.

@@ -43,7 +43,7 @@ void weigh(Loop& l, int it) {
   Outcome& out = l.out;
   std::vector<Eigen::VectorXd> u;
   std::vector<double> log_likelihood;
-  for (const ParameterSet& s : out.first().sets) u.push_back(s.u), log_likelihood.push_back(s.log_likelihood);
+  for (const ParameterSet& s : out.first().sets) u.push_back(s.u), log_likelihood.push_back(s.drawn_log_likelihood());
   out.weights = importance_weights(u, log_likelihood, l.proposals, l.drawn);
   const Proposal region = it > 1 ? l.proposals.back()
                                  : fit_proposal(u, proposal_weights(u, log_likelihood, l.proposals, l.drawn, 2.0 * quadratic_terms(l.dimensions())), 0);
@@ -106,7 +106,7 @@ std::vector<std::size_t> rows_covered(const References& refs, const Discrepancy&
 std::vector<std::size_t> choose_to_confirm(Loop& l, std::size_t k, const std::vector<const ParameterSet*>& candidates,
                                            const std::vector<Eigen::VectorXd>& candidate_u) {
   SizeOutcome& so = l.out.sizes[k];
-  if (static_cast<int>(so.confirmed.size()) >= so.confirm || !l.surface || k >= l.deltas.size() || !l.deltas[k]) return {};
+  if (so.confirmed_of_kind(false) >= so.confirm || !l.surface || k >= l.deltas.size() || !l.deltas[k]) return {};
   std::vector<Discrepancy> larger;
   for (const std::optional<Discrepancy>& d : l.deltas)
     if (d) larger.push_back(*d);
@@ -119,12 +119,45 @@ std::vector<std::size_t> choose_to_confirm(Loop& l, std::size_t k, const std::ve
   return {c->index};
 }
 
+// The uniform points a reach draws (those inside the surface's region count).
+constexpr int reach_points = 20000;
+
+// After its confirm sets, size k's next probe, once the size has its discrepancy and the first size
+// its surface: a new set at the reach's maximum (discrepancy.hpp), added to the first size's sets
+// too, where it runs for its discrepancy pair. False when there is none yet.
+bool probe(Loop& l, std::size_t k, int it) {
+  SizeOutcome& so = l.out.sizes[k];
+  if (so.confirmed_of_kind(true) >= so.probe || !l.surface || k >= l.deltas.size() || !l.deltas[k]) return false;
+  std::vector<Discrepancy> larger;
+  for (const std::optional<Discrepancy>& d : l.deltas)
+    if (d) larger.push_back(*d);
+  const std::vector<std::size_t> rows = rows_covered(l.out.references, *l.deltas[k]);
+  const Reach reached = reach(*l.surface, larger, rows, reach_points);
+  if (reached.all_best.size() == 0) return false;
+  ParameterSet s;
+  s.name = "i" + std::to_string(it) + "p" + std::to_string(k), s.u = reached.all_best, s.iteration = it, s.drawn = false;
+  SizeOutcome::Confirmed c{s.name, reached.all_most, {}, {}, true};
+  const std::vector<double> p = l.surface->row_probabilities(s.u, larger);
+  for (const std::size_t r : rows) c.rows.push_back(l.out.references.rows[r].name), c.row_probability.push_back(p[r]);
+  std::printf("[calibrate] iteration %d: size %s runs the new set %s at the reach's maximum, where the posterior expects one sample to "
+              "agree with all %zu of its rows with probability %.3g (best of %d points; %zu of at most %d there); the first size runs it too\n",
+              it, so.label().c_str(), s.name.c_str(), rows.size(), reached.all_most, reached.points, so.sets.size() + 1, so.sets_at_most());
+  std::fflush(stdout);
+  so.confirmed.push_back(std::move(c));
+  l.out.first().sets.push_back(s);
+  so.sets.push_back(std::move(s));
+  return true;
+}
+
 }  // namespace
 
 void choose_larger_sets(Loop& l, std::size_t k, int it) {
   SizeOutcome& so = l.out.sizes[k];
   const int room = std::min(l.c.sizes[k].per_iteration, so.budget - static_cast<int>(so.sets.size()));
-  if (room <= 0 && static_cast<int>(so.confirmed.size()) >= so.confirm) return;
+  if (room <= 0 && so.confirmed_of_kind(false) >= so.confirm) {
+    probe(l, k, it);
+    return;
+  }
   std::vector<const ParameterSet*> candidates;
   std::vector<Eigen::VectorXd> candidate_u, chosen_u;
   for (const ParameterSet& s : so.sets) chosen_u.push_back(s.u);
@@ -189,7 +222,7 @@ void weigh_larger(Loop& l) {
     const std::vector<std::size_t> rows = rows_covered(out.references, *l.deltas[k]);
     so.reach_rows.clear();
     for (const std::size_t r : rows) so.reach_rows.push_back(out.references.rows[r].name);
-    const Reach reached = reach(*l.surface, deltas, rows, 20000);
+    const Reach reached = reach(*l.surface, deltas, rows, reach_points);
     so.reach_points = reached.points, so.reach_most = reached.row_most, so.reach_all = reached.all_most;
   }
   std::vector<Eigen::VectorXd> pu;

@@ -59,7 +59,7 @@ void read_sizes(dem::Section& root, Calibration& c) {
       s.fail("profile", "'" + size.profile + "': the parts of the largest size share its profile ('" + c.sizes.back().profile + "')");
     if (!(part && c.sizes.size() > 1) && !profiles.insert(size.profile).second) s.fail("profile", "'" + size.profile + "' names two sizes");
     if (c.sizes.empty()) {
-      for (const char* key : {"sets", "per_iteration", "confirm"})
+      for (const char* key : {"sets", "per_iteration", "confirm", "probe"})
         if (s.has(key)) s.fail(key, "is given for the first size, where every set runs");
     } else {
       size.sets = static_cast<int>(s.integer("sets", 3, 4096, std::nullopt, "the sets run at this size in all (at least 3: a discrepancy's fit)"));
@@ -69,6 +69,10 @@ void read_sizes(dem::Section& root, Calibration& c) {
       size.confirm = static_cast<int>(s.integer("confirm", 0, 64, 0,
                                                 "the sets run at this size after its `sets`, one an iteration, each the one the posterior "
                                                 "at this size expects most likely to agree with all of its rows"));
+      size.probe = static_cast<int>(s.integer("probe", 0, 64, 0,
+                                              "the new sets run at this size after its `confirm` sets, one an iteration, each at the point "
+                                              "where the posterior at this size gives the largest probability that one sample agrees with "
+                                              "all of its rows (run at the first size too)"));
     }
     s.finish();
     c.sizes.push_back(size);

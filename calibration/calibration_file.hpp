@@ -12,12 +12,15 @@ namespace calibration {
 // first; a larger one runs `sets` of the sets the size before it scored, `per_iteration` at most
 // each iteration, chosen where they inform the posterior most (discrepancy.hpp); then `confirm`
 // more, one an iteration, each the set the posterior at that size expects most likely to agree
-// with all of its rows (a check of its best prediction).
+// with all of its rows (a check of its best prediction); then `probe` more, one an iteration, each
+// a new set at the point of the surface's region where that probability is largest (the reach's
+// maximum, discrepancy.hpp), run at the first size too for its discrepancy pair.
 struct Size {
   std::string profile;
   int sets = 0;           // a larger size's sets at most (0: the first size, every set)
   int per_iteration = 0;  // a larger size's sets chosen per iteration at most
   int confirm = 0;        // a larger size's sets run after those to confirm the posterior's best prediction
+  int probe = 0;          // then new sets at the reach's maximum
   // A part of the largest size: its sets run these densities' tests only, and its discrepancy from
   // the first size is fitted to these densities' rows and curves only (empty: every density). The
   // parts of a size share its profile and split its densities.

@@ -179,7 +179,7 @@ Reach reach(const ResponseSurface& surface, const std::vector<Discrepancy>& larg
     const std::vector<double> p = surface.row_probabilities(u, larger);
     double all = 1;
     for (std::size_t k = 0; k < rows.size(); ++k) r.row_most[k] = std::max(r.row_most[k], p[rows[k]]), all *= p[rows[k]];
-    r.all_most = std::max(r.all_most, all);
+    if (r.all_best.size() == 0 || all > r.all_most) r.all_most = all, r.all_best = u;
   }
   return r;
 }

@@ -80,6 +80,7 @@ struct Reach {
   int points = 0;                  // inside the region
   std::vector<double> row_most;    // per row of `rows`
   double all_most = 0;
+  Eigen::VectorXd all_best;        // the point of all_most (empty: no point inside the region)
 };
 Reach reach(const ResponseSurface& surface, const std::vector<Discrepancy>& larger, const std::vector<std::size_t>& rows, int n);
 

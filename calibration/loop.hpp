@@ -1,7 +1,8 @@
 #pragma once
 // The calibration loop's state and steps, shared by its files (not an interface of the room):
 // calibrate.cpp (the loop and its sizes' runs), calibrate_plan.cpp (what a plan costs),
-// calibrate_weigh.cpp (the posterior; the larger sizes: which sets run there, their discrepancies).
+// calibrate_weigh.cpp (the posterior; the larger sizes: which sets run there, their discrepancies),
+// calibrate_summary.cpp (an iteration's account: what it scored, whether the posterior settled).
 #include <map>
 #include <memory>
 #include <optional>
@@ -94,5 +95,12 @@ void choose_larger_sets(Loop& l, std::size_t k, int it);
 // the largest size on the first size's surface plus them (the first size's alone is kept in
 // out.first_size_only).
 void weigh_larger(Loop& l);
+
+// An iteration's account (calibrate_summary.cpp): its summary, printed; whether the posterior has
+// settled after it (then out.stop_reason says why; with larger sizes, only once each has spent its
+// sets and has its discrepancy); why it has not, once max_iterations is reached.
+IterationSummary summarize(Loop& l, int it);
+bool settled(Loop& l, int it, const IterationSummary& summary);
+std::string unsettled_reason(const Calibration& c, const Outcome& out);
 
 }  // namespace calibration

@@ -19,7 +19,8 @@ std::string interval_text(const Marginal& m) {
          ", " + validation::significant(m.upper_95, 3) + "]";
 }
 
-// The sets a larger size ran to confirm the posterior's best prediction there: the probability it
+// The sets a larger size ran to confirm the posterior's best prediction there (the best scored set,
+// or a probe: a new set at the reach's maximum): the probability it
 // gave that one sample agrees with every row (its least likely row), and how many rows the set's
 // samples then agreed with.
 std::string confirmed_markdown(const SizeOutcome& s) {
@@ -27,8 +28,10 @@ std::string confirmed_markdown(const SizeOutcome& s) {
   for (const SizeOutcome::Confirmed& c : s.confirmed) {
     const std::size_t least = static_cast<std::size_t>(
         std::min_element(c.row_probability.begin(), c.row_probability.end()) - c.row_probability.begin());
-    md << "To confirm the posterior at " << s.label() << ": set " << c.set << ", where it expected one sample to agree with all "
-       << c.rows.size() << " of its rows with probability " << validation::significant(c.probability, 2);
+    md << "To confirm the posterior at " << s.label() << ": set " << c.set
+       << (c.probe ? ", a new set at the reach's maximum (run at the first size too)" : ", the best of the sets scored")
+       << ", where it expected one sample to agree with all " << c.rows.size() << " of its rows with probability "
+       << validation::significant(c.probability, 2);
     if (!c.rows.empty())
       md << " (the least likely: '" << c.rows[least] << "', " << validation::significant(c.row_probability[least], 2) << ")";
     const auto set = std::find_if(s.sets.begin(), s.sets.end(), [&](const ParameterSet& p) { return p.name == c.set; });

@@ -147,3 +147,57 @@ TEST_CASE("calibrate confirms a part's best prediction with one more set, and sa
   CHECK(refused.exit_code == 2);
   CHECK_THAT(refused.out, Catch::Contains("sizes[1].confirm") && Catch::Contains("no scalar row"));
 }
+
+TEST_CASE("calibrate probes a part at the reach's maximum: a new set run at both sizes, its pair in the discrepancy, replayed from the ledgers",
+          "[calibration][cli]") {
+  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "calibrate_parts_probe";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  // The row of the confirming test above (every packing agrees): the probe's predicted probability
+  // exceeds 0.99 at any point, and its samples agree. Iterations 1 and 2 run the dense part's 3
+  // sets; iteration 3 its probe.
+  dem::test::TinyCalibration tiny{{{"dense", 0.0}, {"loose", 0.5}}, "test", 6,
+                                  "sizes: [{profile: small}, {profile: large, densities: [dense], sets: 3, per_iteration: 2, probe: 1},\n"
+                                  "        {profile: large, densities: [loose], sets: 3, per_iteration: 2}]\n",
+                                  "[{name: wide, quantity: void_ratio_after_preparation, density: dense, reference: 0.9, check: within, "
+                                  "tolerance: 0.6, resolution: 0.01, reason: wide, source: typed}]",
+                                  3, 2};
+  tiny.write(dir);
+  const std::string cmd = "cd '" + dir.string() + "' && '" + bin + "calibrate' cal.yaml -j 2 --threads 1";
+  const auto run = dem::test::run_command(cmd + " 2>&1");
+  INFO(run.out);
+  REQUIRE(run.exit_code == 0);
+  CHECK_THAT(run.out, Catch::Contains("runs the new set i3p1 at the reach's maximum"));
+  const nlohmann::json p = nlohmann::json::parse(dem::test::read_bytes((dir / "report" / "posterior.json").string()));
+  // The first size ran it too (its 3 batches of 6, and the probe), and it is the dense part's fourth pair.
+  CHECK(p["sizes"][0]["sets"] == 3 * 6 + 1);
+  const nlohmann::json& dense = p["sizes"][1];
+  CHECK(dense["sets"] == 4);
+  CHECK(dense["discrepancy"]["pairs"] == 4);
+  REQUIRE(dense["confirmed"].size() == 1);
+  const nlohmann::json& c = dense["confirmed"][0];
+  CHECK(c["set"] == "i3p1");
+  CHECK(c["probe"] == true);
+  CHECK(c["predicted_probability"].get<double>() > 0.99);
+  CHECK(c["rows"][0]["consistent"] == true);
+  const nlohmann::json small_ledger = nlohmann::json::parse(dem::test::read_bytes((dir / "report" / "scored_sets.json").string()));
+  bool in_small_ledger = false;
+  for (const nlohmann::json& s : small_ledger["sets"]) in_small_ledger |= s["name"] == "i3p1";
+  CHECK(in_small_ledger);
+  const std::string section = dem::test::read_bytes((dir / "report" / "section.md").string());
+  CHECK_THAT(section, Catch::Contains("set i3p1, a new set at the reach's maximum"));
+  // The probe is chosen again, at the same point, from the same scores: a replay runs nothing.
+  fs::remove_all(dir / "results");
+  const auto replay = dem::test::run_command(cmd + " --ledger-only 2>&1");
+  INFO(replay.out);
+  REQUIRE(replay.exit_code == 0);
+  const nlohmann::json again = nlohmann::json::parse(dem::test::read_bytes((dir / "report" / "posterior.json").string()));
+  CHECK(again["sizes"][1]["confirmed"] == dense["confirmed"]);
+  // A part without rows has no reach to probe: refused, naming the key.
+  dem::test::TinyCalibration curves_only = tiny;
+  curves_only.rows.clear();
+  curves_only.write(dir);
+  const auto refused = dem::test::run_command(cmd + " --plan 2>&1");
+  CHECK(refused.exit_code == 2);
+  CHECK_THAT(refused.out, Catch::Contains("sizes[1].probe") && Catch::Contains("no scalar row"));
+}

@@ -29,6 +29,7 @@ std::vector<PosteriorSummary::Part::Confirmed> confirmed_of(const nlohmann::json
   if (!size.contains(k::confirmed)) return out;
   for (const nlohmann::json& c : size.at(k::confirmed)) {
     PosteriorSummary::Part::Confirmed x{required<std::string>(c, k::set, where + "." + k::confirmed),
+                                        c.contains(k::probe) && required<bool>(c, k::probe, where + "." + k::confirmed),
                                         required<double>(c, k::predicted_probability, where + "." + k::confirmed), {}};
     for (const nlohmann::json& r : required<nlohmann::json>(c, k::rows, where + "." + k::confirmed)) {
       PosteriorSummary::Part::Confirmed::Row row{required<std::string>(r, k::name, where + ".confirmed.rows"),

@@ -22,7 +22,8 @@ inline constexpr const char* consistent = "consistent";
 inline constexpr const char* judged = "judged";
 inline constexpr const char* sizes = "sizes";                        // [{profile, densities, stamp, confirmed, ...}]
 inline constexpr const char* densities = "densities";
-inline constexpr const char* confirmed = "confirmed";                // [{set, predicted_probability, rows: [...]}]
+inline constexpr const char* confirmed = "confirmed";                // [{set, predicted_probability, probe, rows: [...]}]
+inline constexpr const char* probe = "probe";                        // a new set at the reach's maximum (else the best scored set)
 inline constexpr const char* set = "set";
 inline constexpr const char* predicted_probability = "predicted_probability";
 inline constexpr const char* rows = "rows";
@@ -66,6 +67,7 @@ struct PosteriorSummary {
     std::vector<Row> rows;
     struct Confirmed {
       std::string set;
+      bool probe = false;      // a new set at the reach's maximum, else the best of the sets scored
       double probability = 0;  // the posterior's, that one sample agrees with every row below
       struct Row {
         std::string name;

@@ -88,17 +88,34 @@ TEST_CASE("the paper study's misses among the calibration's parts: answered from
     CHECK_THAT(text, Catch::Contains("| " + dense_slope + " | 1.421 ± 0.040, holds in 0 of 5 ❌ | 1 of 3 | "
                                      "✅ consistent together with all 2 rows of its density in set i2s004 | — |"));
     CHECK_THAT(text, Catch::Contains("| " + medium_growth + " |") &&
-                         Catch::Contains("| 0 of 4 | ❌ in none, not even in set i4s002, the posterior's best prediction (all 2 rows: "
-                                         "0.21; this row: 0.30) | 0.040 (9000 points) |"));
+                         Catch::Contains("| 0 of 4 | ❌ in none, not even in set i4s002, the posterior's best prediction among the sets "
+                                         "scored (all 2 rows: 0.21; this row: 0.30) | 0.040 (9000 points) |"));
   }
   SECTION("a row consistent only in sets that lose another; a confirmed set not scored yet") {
     write_json(file, posterior(1, std::nullopt));
     const std::string text = validation::open_choices_parts_text(report, rows);
     INFO(text);
     CHECK_THAT(text, Catch::Contains("| 1 of 3 | consistent in 1 set(s), never together with all 2 rows of its density (at most 1, set i2s004) |"));
-    CHECK_THAT(text, Catch::Contains("❌ in none; set i4s002, the posterior's best prediction (all 2 rows: 0.21; this row: 0.30), not scored yet"));
+    CHECK_THAT(text, Catch::Contains("❌ in none; set i4s002, the posterior's best prediction among the sets scored (all 2 rows: 0.21; this row: "
+                                     "0.30), not scored yet"));
     CHECK(text.find("✅ consistent together") == std::string::npos);
     CHECK_THAT(text, Catch::Contains("largest probability that one sample agrees, at random points of its region"));  // a part has its reach
+  }
+  SECTION("a probe (a new set at the reach's maximum) after the confirmed set: each named for what it is") {
+    json p = posterior(2, false);
+    p["sizes"][2]["confirmed"].push_back({{"set", "i5p2"}, {"probe", true}, {"predicted_probability", 0.01},
+                                           {"rows", {{{"name", medium_growth}, {"predicted_probability", 0.04}, {"consistent", false}}}}});
+    write_json(file, p);
+    const validation::PosteriorSummary summary = validation::read_posterior_summary(file.string());
+    REQUIRE(summary.parts[1].confirmed.size() == 2);
+    CHECK_FALSE(summary.parts[1].confirmed[0].probe);  // absent: the best scored set
+    CHECK(summary.parts[1].confirmed[1].probe);
+    const std::string text = validation::open_choices_parts_text(report, rows);
+    INFO(text);
+    // (The cell is longer than a table's cells may be: it is given in a note below the table.)
+    CHECK_THAT(text, Catch::Contains("not even in set i4s002, the posterior's best prediction among the sets scored (all 2 rows: 0.21; "
+                                     "this row: 0.30), not even in set i5p2, a new set where the posterior's prediction is best (all 1 "
+                                     "rows: 0.010; this row: 0.040)"));
   }
   SECTION("no part with its reach yet: no column for it") {
     json p = posterior(2, false);
