@@ -268,6 +268,7 @@ void run_iteration(Loop& l, std::size_t k, int it, IterationPlan& p) {
     p.runs = p.to_run.empty() ? std::vector<pipeline::PlannedRun>{} : plan_sets(l.c, size.study, *size.profile, p.to_run, so.results, l.out.engine);
   }
   const int this_iteration = static_cast<int>(std::count_if(so.sets.begin(), so.sets.end(), [&](const ParameterSet& s) { return s.iteration == it; }));
+  if (l.o.plan_only) return;  // replayed: every set it needs is in the ledger or finished here
   std::printf("[calibrate] iteration %d%s: %d sets (%zu scored in the ledger), %zu runs planned (finished ones are reused)\n", it,
               l.out.sizes.size() > 1 ? (", size " + so.label()).c_str() : "", this_iteration, p.in_ledger.size(), p.runs.size());
   std::fflush(stdout);
@@ -323,7 +324,7 @@ void score_iteration(Loop& l, std::size_t k, int it, const IterationPlan& p) {
 // Size k's ledger: every set scored so far (with its share of the runs and their cost), and the
 // entries of sets not drawn yet (a later iteration may draw them again).
 void keep_scores(Loop& l, std::size_t k, const IterationPlan& p) {
-  if (l.o.ledger_only) return;  // a replay writes no ledger
+  if (l.o.ledger_only || l.o.plan_only) return;  // a replay writes no ledger
   SizeState& size = l.at[k];
   const SizeOutcome& so = l.out.sizes[k];
   const std::map<std::string, RunShare> shares = run_shares(p.runs, l.o.threads);
@@ -355,19 +356,56 @@ int probes(const Calibration& c) {
   return n;
 }
 
-// One size's part of an iteration: plan, run, score, keep. False when only a plan was asked (it is printed).
+// Whether size k's plan runs something: a set of it neither in the ledger nor with every run finished here.
+bool needs_runs(const Loop& l, std::size_t k, const IterationPlan& p) {
+  const SizeState& size = l.at[k];
+  return std::any_of(p.unfinished.begin(), p.unfinished.end(), [&](const std::string& set) { return !size.from_ledger.count(set); });
+}
+
+// The sets size k may still score: its sets at most, less those scored so far.
+int sets_left(const Loop& l, std::size_t k) {
+  const SizeOutcome& so = l.out.sizes[k];
+  const int at_most = k == 0 ? l.c.max_iterations * l.c.batch + probes(l.c) : so.sets_at_most();
+  // Scored (its score or the reason it has none): rows judged; a set drawn, chosen or standing in: none yet.
+  const int scored = static_cast<int>(std::count_if(so.sets.begin(), so.sets.end(), [](const ParameterSet& s) { return !s.misfit.rows.empty(); }));
+  return std::max(0, at_most - scored);
+}
+
+// One size's part of an iteration: plan, run, score, keep. With --plan, nothing runs: an iteration
+// the ledgers and the finished runs cover is replayed from them; at the first that needs runs, what
+// it and the rest cost is printed and false returned.
 bool step_size(Loop& l, std::size_t k, int it) {
   IterationPlan p = plan_iteration(l, k, it);
-  if (l.o.plan_only) {
-    const Size* size = l.c.sizes.empty() ? nullptr : &l.c.sizes[k];
-    print_plan(l, k, p, k == 0 ? l.c.max_iterations * l.c.batch + probes(l.c) : size->sets + size->confirm + size->probe,
-               k == 0 ? l.c.batch : size->per_iteration);
+  if (l.o.plan_only && needs_runs(l, k, p)) {
+    print_plan(l, k, it, p, sets_left(l, k));
     return false;
   }
   run_iteration(l, k, it, p);
   score_iteration(l, k, it, p);
   keep_scores(l, k, p);
   return true;
+}
+
+// --plan, once size `from`'s step of iteration `it` needs runs: the cost of the sizes after it. A
+// larger size with sets still to run but none chosen this iteration is costed on stand-ins, the
+// first sets of the size it chooses from that it has not run.
+void plan_rest(Loop& l, int it, std::size_t from) {
+  for (std::size_t k = std::max<std::size_t>(from + 1, 1); k < l.out.sizes.size(); ++k) {
+    SizeOutcome& so = l.out.sizes[k];
+    const int left = sets_left(l, k);
+    const bool chosen = std::any_of(so.sets.begin(), so.sets.end(), [&](const ParameterSet& s) { return s.iteration == it; });
+    int stand_ins = chosen ? 0 : std::min(left, l.c.sizes[k].per_iteration);
+    for (const ParameterSet& s : l.out.sizes[base_of(l.out, k)].sets) {
+      if (stand_ins == 0) break;
+      if (std::none_of(so.sets.begin(), so.sets.end(), [&](const ParameterSet& t) { return t.name == s.name; })) {
+        ParameterSet stand_in = s;
+        stand_in.iteration = it, stand_in.misfit = {};
+        so.sets.push_back(stand_in), --stand_ins;
+      }
+    }
+    IterationPlan p = plan_iteration(l, k, it);
+    print_plan(l, k, it, p, left);
+  }
 }
 
 }  // namespace
@@ -383,30 +421,39 @@ std::optional<Outcome> run_calibration(const Calibration& c, const RunOptions& o
   start(l);
   for (std::size_t k = 0; k < l.at.size(); ++k) verify_ledger(l, k);
   Outcome& out = l.out;
-  for (int it = 1; it <= c.max_iterations; ++it) {
+  // --plan: the iterations the ledgers and the finished runs cover replay; the first that needs
+  // runs prints its cost and the rest's, each size's (plan_rest).
+  const auto plan_from = [&](int it, std::size_t k) {
+    plan_rest(l, it, k);
+    return std::nullopt;
+  };
+  int it = 1;
+  for (; it <= c.max_iterations; ++it) {
     draw_batch(l, it);
-    if (!step_size(l, 0, it)) {  // --plan: each larger size's cost too, for sets chosen as the first batch's first
-      for (std::size_t k = 1; k < out.sizes.size(); ++k) {
-        for (int n = 0; n < c.sizes[k].per_iteration && n < static_cast<int>(out.first().sets.size()); ++n)
-          out.sizes[k].sets.push_back(out.first().sets[static_cast<std::size_t>(n)]);
-        step_size(l, k, it);
-      }
-      return std::nullopt;
-    }
+    if (!step_size(l, 0, it)) return plan_from(it, 0);
     weigh(l, it);
     const std::size_t first_sets = out.first().sets.size();
     for (std::size_t k = 1; k < out.sizes.size(); ++k) choose_larger_sets(l, k, it);
-    if (out.first().sets.size() > first_sets) step_size(l, 0, it);  // the probes' runs at the first size, for their pairs
-    for (std::size_t k = 1; k < out.sizes.size(); ++k) step_size(l, k, it);
+    // The probes' runs at the first size, for their pairs.
+    if (out.first().sets.size() > first_sets && !step_size(l, 0, it)) return plan_from(it, 0);
+    for (std::size_t k = 1; k < out.sizes.size(); ++k)
+      if (!step_size(l, k, it)) return plan_from(it, k);
     weigh_larger(l);
     const IterationSummary summary = summarize(l, it);
     out.iterations.push_back(summary);
     if (settled(l, it, summary)) break;
-    if (it < c.max_iterations && o.after_iteration) {
+    if (it < c.max_iterations && o.after_iteration && !o.plan_only) {
       out.stop_reason = "still iterating: iteration " + std::to_string(it) + " of at most " + std::to_string(c.max_iterations) +
                         " done (it moved " + validation::significant(summary.moved, 2) + " of a prior range); start it again to go on";
       o.after_iteration(out);
     }
+  }
+  if (o.plan_only) {  // every iteration replayed: nothing left to run
+    for (std::size_t k = 0; k < out.sizes.size(); ++k) {
+      IterationPlan p = plan_iteration(l, k, std::min(it, c.max_iterations));
+      print_plan(l, k, 0, p, 0);
+    }
+    return std::nullopt;
   }
   if (!out.converged) out.stop_reason = unsettled_reason(c, out);
   if (!out.unscored.empty())

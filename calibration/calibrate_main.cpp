@@ -198,7 +198,7 @@ int calibrate(int argc, char** argv) {
   app.add_option("-j", o.jobs, "runs at once (default: the number of cores)")->check(CLI::Range(1, 256));
   app.add_option("--threads", threads, "threads inside each run (default: cores / runs at once)")->check(CLI::Range(1, 256));
   app.add_option("--executor", o.executor, "local or slurm (the study's slurm: options)")->check(CLI::IsMember({"local", "slurm"}));
-  app.add_flag("--plan", o.plan_only, "print what the first iteration runs and what max_iterations would cost; run nothing");
+  app.add_flag("--plan", o.plan_only, "replay the iterations the ledgers and finished runs cover, then print what the next one runs and what max_iterations would cost; run nothing, write nothing");
   app.add_option("--truth", truth_file, "a demonstration's true parameters (calibrate truth), set beside the posterior once it is final");
   app.add_option("--dem", o.dem, "the engine (default: dem beside this program)");
   app.add_flag("--ledger-engine", o.ledger_engine,

@@ -38,11 +38,12 @@ std::map<std::string, std::vector<std::string>> run_hashes_by_set(const std::vec
 
 // The throughput: of this plan's finished runs; else of this engine's other runs on this machine;
 // else of the runs that scored the ledger's sets (on the machine that ran them); else the make
-// bench figure. The first iteration runs what has no result here and is needed by a set not in the
-// ledger (a copy of another run costs no engine time); a later iteration's set costs what a
-// first-iteration set's own runs cost, whether they ran here or not; the runs every set shares are
-// run once, if they are not here.
-void print_plan(const Loop& l, std::size_t k, IterationPlan& p, int sets_at_most, int per_iteration) {
+// bench figure. Iteration `it` (the first the ledgers and the finished runs do not cover; 0: none,
+// the calibration is complete) runs what has no result here and is needed by a set not in the
+// ledger (a copy of another run costs no engine time); of the `left` sets still to score, each
+// after this iteration's costs what this iteration's sets' own runs cost on average, whether they
+// ran here or not; the runs every set shares are run once, in this iteration, if they are not here.
+void print_plan(const Loop& l, std::size_t k, int it, IterationPlan& p, int left) {
   const SizeState& size = l.at[k];
   const Ledger& ledger = size.ledger;
   std::vector<pipeline::PlannedRun>& runs = p.runs;
@@ -59,54 +60,54 @@ void print_plan(const Loop& l, std::size_t k, IterationPlan& p, int sets_at_most
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const pipeline::PlannedRun& r = runs[i];
     done[i] = r.copy_of >= 0 || p.finished[i];
-    todo[i] = !done[i] && std::any_of(r.variants.begin(), r.variants.end(), [&](const std::string& v) { return !p.in_ledger.count(v); });
+    todo[i] = it > 0 && !done[i] && std::any_of(r.variants.begin(), r.variants.end(), [&](const std::string& v) { return !p.in_ledger.count(v); });
   }
   const std::vector<double> cost = pipeline::run_costs(runs, todo);
-  double shared = 0, first_own = 0, own_per_set = 0, shared_needed = 0;
+  // Each set of this iteration: its own runs' cost (a run of one set only, not a copy).
+  std::map<std::string, double> own;
+  for (const ParameterSet& s : l.out.sizes[k].sets)
+    if (s.iteration == it) own[s.name] = 0;
+  double shared = 0, first_own = 0;
   int shared_runs = 0, set_runs = 0;
   for (std::size_t i = 0; i < runs.size(); ++i) {
     if (runs[i].variants.size() > 1) {
       shared += cost[i], shared_runs += todo[i];
-      if (!done[i]) shared_needed += runs[i].cost;
     } else {
       first_own += cost[i], set_runs += todo[i];
-      if (runs[i].copy_of < 0) own_per_set += runs[i].cost / per_iteration;
+      if (const auto o = own.find(runs[i].variants.front()); o != own.end() && runs[i].copy_of < 0) o->second += runs[i].cost;
     }
   }
+  double own_per_set = 0;
+  for (const auto& [name, c] : own) own_per_set += c / static_cast<double>(own.size());
   const int jobs = l.o.jobs;
   const double first = pipeline::estimated_wall_time_s(runs, cost, jobs, throughput);
-  // Sets no iteration runs: the first iteration's finished here or in the ledger, and the ledger's
-  // of later iterations (drawn again as they were, from the same scores) when its first-iteration
-  // entries were scored on runs of this plan's inputs (an engine or a scene changed since: none).
-  const bool current = std::all_of(ledger.sets.begin(), ledger.sets.end(), [&](const ScoredSet& e) {
-    const auto h = p.hashes.find(e.name);
-    return h == p.hashes.end() || h->second == e.run_hashes;
-  });
-  std::size_t scored_sets = 0;
-  for (const auto& entry : p.hashes) scored_sets += !p.unfinished.count(entry.first) || p.in_ledger.count(entry.first);
-  if (current)
-    for (const ScoredSet& e : ledger.sets) scored_sets += !p.hashes.count(e.name);
-  const double left = std::max(0.0, static_cast<double>(sets_at_most) - static_cast<double>(scored_sets));
-  const double total = left > 0 ? shared_needed + own_per_set * left : 0;
+  // This iteration's runs still to run, then each set after it at the average's cost.
+  const int unscored_here = static_cast<int>(std::count_if(l.out.sizes[k].sets.begin(), l.out.sizes[k].sets.end(),
+                                                           [&](const ParameterSet& s) { return s.iteration == it && s.misfit.rows.empty(); }));
+  const double total = left > 0 ? shared + first_own + own_per_set * std::max(0, left - unscored_here) : 0;
   const SizeOutcome& so = l.out.sizes[k];
   const std::string what = l.out.sizes.size() > 1 ? "size " + so.label() + " (lattice " + std::to_string(size.profile->lattice) + ", " +
                                                         std::to_string(so.seeds.size()) + " sample(s) a set): "
                                                   : "";
   if (k == 0)
-    std::printf("calibration %s: %zu parameter(s), %d sets per iteration, at most %d iterations\n", l.c.name.c_str(),
-                l.c.parameters.size(), l.c.batch, l.c.max_iterations);
-  std::printf("%sfirst iteration: %zu runs (%d shared by every set, %d for its sets still to run), %.3g particle-steps, "
-              "about %.1f min on %d core(s)\n", what.c_str(), runs.size(), shared_runs, set_runs, shared + first_own, first / 60, jobs);
+    std::printf("calibration %s: %zu parameter(s), %d sets per iteration, at most %d iterations%s\n", l.c.name.c_str(),
+                l.c.parameters.size(), l.c.batch, l.c.max_iterations,
+                it == 1   ? ""
+                : it == 0 ? "; every iteration replays from the ledgers and the finished runs: nothing to run"
+                : it == 2 ? "; iteration 1 replays from the ledgers and the finished runs"
+                          : ("; iterations 1 to " + std::to_string(it - 1) + " replay from the ledgers and the finished runs").c_str());
+  if (it > 0)
+    std::printf("%s%s: %zu runs (%d shared by every set, %d for its sets still to run), %.3g particle-steps, about %.1f min on %d core(s)\n",
+                what.c_str(), it == 1 ? "first iteration" : ("iteration " + std::to_string(it)).c_str(), runs.size(), shared_runs,
+                set_runs, shared + first_own, first / 60, jobs);
   if (ledger.other_sets > 0)
     std::printf("the ledger of scored sets (%s) holds %d set(s) scored against other references: none is "
                 "taken, and a run keeps it aside (scored_sets.kept-N.json) before it writes its own\n", size.ledger_file.c_str(), ledger.other_sets);
   if (!ledger.sets.empty())
-    std::printf("the ledger of scored sets (%s) holds %zu set(s), %zu of them of the first iteration: "
-                "%s\n", size.ledger_file.c_str(), ledger.sets.size(), p.in_ledger.size(),
-                current ? "they are not run again"
-                        : "some were scored on runs of other inputs (an engine or a scene changed): those run again, "
-                          "and the later iterations' are counted as still to score");
-  std::printf("%sall %d iterations at most (%.0f sets still to score): %.3g particle-steps, %.1f core-min, about %.1f min on %d core(s)\n",
+    std::printf("the ledger of scored sets (%s) holds %zu set(s); %zu taken so far (a set is taken when an iteration draws it "
+                "again, at the unit values and on runs of the inputs it was scored with)\n",
+                size.ledger_file.c_str(), ledger.sets.size(), size.from_ledger.size());
+  std::printf("%sall %d iterations at most (%d sets still to score): %.3g particle-steps, %.1f core-min, about %.1f min on %d core(s)\n",
               what.c_str(), l.c.max_iterations, left, total, total / throughput / 60, total / throughput / 60 / jobs, jobs);
   const std::string from = recorded ? "recorded by the finished runs in the results folder"
                            : machine ? "recorded by " + std::to_string(machine->runs) + " finished runs of this engine in " +

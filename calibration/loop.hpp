@@ -80,9 +80,9 @@ void execute_sets(Loop& l, std::size_t k, const std::vector<ParameterSet>& sets,
 // as the ledger has them; throws, naming the set and the row, when one does not (ledger_verify.cpp).
 void verify_ledger(Loop& l, std::size_t k);
 
-// Prints what size k's plan `p` costs now and over the calibration (at most `sets_at_most` sets
-// there, `per_iteration` of them each iteration), the throughput it assumes and where that comes from.
-void print_plan(const Loop& l, std::size_t k, IterationPlan& p, int sets_at_most, int per_iteration);
+// Prints what size k's plan `p` of iteration `it` costs (0: none left to run) and what its `left`
+// sets still to score would cost, the throughput it assumes and where that comes from.
+void print_plan(const Loop& l, std::size_t k, int it, IterationPlan& p, int left);
 
 // Weighing (calibrate_weigh.cpp). Every set of the first size weighted again; the posterior: on a
 // response surface fitted to the sets near it (surrogate.hpp), when enough sets are scored, else

@@ -106,7 +106,7 @@ TEST_CASE("calibrate: the ledger is keyed on the references as parsed, and a led
   fs::rename(dir / "results", dir / "results.away");
   const auto plan = calibrate(dir, "--plan");
   INFO(plan.out);
-  CHECK_THAT(plan.out, Catch::Contains("holds 2 set(s), 2 of them of the first iteration: they are not run again"));
+  CHECK_THAT(plan.out, Catch::Contains("holds 2 set(s); 2 taken so far"));
   CHECK_THAT(plan.out, Catch::Contains("(0 sets still to score)"));
   {  // A forged chi^2 (the set's and its row's, to agree with each other) is refused, naming the set.
     nlohmann::json forged = nlohmann::json::parse(ledger);
