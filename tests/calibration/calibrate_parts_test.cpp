@@ -22,6 +22,21 @@ void write_inputs(const fs::path& dir, const std::string& sizes) {
   dem::test::TinyCalibration{{{"dense", 0.0}, {"loose", 0.5}}, "test", 6, sizes}.write(dir);
 }
 
+// Two parts; the dense part runs 3 sets, then what `then` asks ("confirm: 1", "probe: 1"). A
+// dense e0 row every packing agrees with (e0 lies in [0.3, 1.5]): a set chosen for it agrees. The
+// parameter is the tests', so every set shares its e0 at a size: the surface and the discrepancy
+// are exact, a sample's sd is the row's resolution (0.01, one sample a set at the small size; 2 at
+// the large, so that validate judges the row there), and e0 (about 0.6) lies more than 10 of it
+// from either bound: the predicted probability exceeds 0.99 anywhere. Three iterations.
+dem::test::TinyCalibration one_wide_row(const std::string& then) {
+  return {{{"dense", 0.0}, {"loose", 0.5}}, "test", 6,
+          "sizes: [{profile: small}, {profile: large, densities: [dense], sets: 3, per_iteration: 2, " + then + "},\n"
+          "        {profile: large, densities: [loose], sets: 3, per_iteration: 2}]\n",
+          "[{name: wide, quantity: void_ratio_after_preparation, density: dense, reference: 0.9, check: within, "
+          "tolerance: 0.6, resolution: 0.01, reason: wide, source: typed}]",
+          3, 2};
+}
+
 }  // namespace
 
 TEST_CASE("calibrate with the largest size in parts: each part runs and is scored on its densities only", "[calibration][cli]") {
@@ -102,17 +117,7 @@ TEST_CASE("calibrate confirms a part's best prediction with one more set, and sa
   const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "calibrate_parts_confirm";
   fs::remove_all(dir);
   fs::create_directories(dir);
-  // A dense e0 row every packing agrees with (e0 lies in [0.3, 1.5]): the confirmed set agrees.
-  // The parameter is the tests', so every set shares its e0 at a size: the surface and the
-  // discrepancy are exact, a sample's sd is the row's resolution (0.01, one sample a set at the
-  // small size; 2 at the large, so that validate judges the row there), and e0
-  // (about 0.6) lies more than 10 of it from either bound: the predicted probability exceeds 0.99.
-  dem::test::TinyCalibration tiny{{{"dense", 0.0}, {"loose", 0.5}}, "test", 6,
-                                  "sizes: [{profile: small}, {profile: large, densities: [dense], sets: 3, per_iteration: 2, confirm: 1},\n"
-                                  "        {profile: large, densities: [loose], sets: 3, per_iteration: 2}]\n",
-                                  "[{name: wide, quantity: void_ratio_after_preparation, density: dense, reference: 0.9, check: within, "
-                                  "tolerance: 0.6, resolution: 0.01, reason: wide, source: typed}]",
-                                  3, 2};
+  const dem::test::TinyCalibration tiny = one_wide_row("confirm: 1");
   tiny.write(dir);
   const std::string cmd = "cd '" + dir.string() + "' && '" + bin + "calibrate' cal.yaml -j 2 --threads 1";
   const auto plan = dem::test::run_command(cmd + " --plan 2>&1");
@@ -153,15 +158,8 @@ TEST_CASE("calibrate probes a part at the reach's maximum: a new set run at both
   const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "calibrate_parts_probe";
   fs::remove_all(dir);
   fs::create_directories(dir);
-  // The row of the confirming test above (every packing agrees): the probe's predicted probability
-  // exceeds 0.99 at any point, and its samples agree. Iterations 1 and 2 run the dense part's 3
-  // sets; iteration 3 its probe.
-  dem::test::TinyCalibration tiny{{{"dense", 0.0}, {"loose", 0.5}}, "test", 6,
-                                  "sizes: [{profile: small}, {profile: large, densities: [dense], sets: 3, per_iteration: 2, probe: 1},\n"
-                                  "        {profile: large, densities: [loose], sets: 3, per_iteration: 2}]\n",
-                                  "[{name: wide, quantity: void_ratio_after_preparation, density: dense, reference: 0.9, check: within, "
-                                  "tolerance: 0.6, resolution: 0.01, reason: wide, source: typed}]",
-                                  3, 2};
+  // Iterations 1 and 2 run the dense part's 3 sets; iteration 3 its probe.
+  const dem::test::TinyCalibration tiny = one_wide_row("probe: 1");
   tiny.write(dir);
   const std::string cmd = "cd '" + dir.string() + "' && '" + bin + "calibrate' cal.yaml -j 2 --threads 1";
   const auto run = dem::test::run_command(cmd + " 2>&1");
