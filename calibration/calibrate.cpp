@@ -267,8 +267,8 @@ void run_iteration(Loop& l, std::size_t k, int it, IterationPlan& p) {
                    p.to_run.end());
     p.runs = p.to_run.empty() ? std::vector<pipeline::PlannedRun>{} : plan_sets(l.c, size.study, *size.profile, p.to_run, so.results, l.out.engine);
   }
-  const int this_iteration = static_cast<int>(std::count_if(so.sets.begin(), so.sets.end(), [&](const ParameterSet& s) { return s.iteration == it; }));
   if (l.o.plan_only) return;  // replayed: every set it needs is in the ledger or finished here
+  const int this_iteration = static_cast<int>(std::count_if(so.sets.begin(), so.sets.end(), [&](const ParameterSet& s) { return s.iteration == it; }));
   std::printf("[calibrate] iteration %d%s: %d sets (%zu scored in the ledger), %zu runs planned (finished ones are reused)\n", it,
               l.out.sizes.size() > 1 ? (", size " + so.label()).c_str() : "", this_iteration, p.in_ledger.size(), p.runs.size());
   std::fflush(stdout);

@@ -101,21 +101,31 @@ std::vector<std::size_t> rows_covered(const References& refs, const Discrepancy&
   return rows;
 }
 
+// Whether the posterior at size k predicts its rows: the first size has its surface and size k its
+// discrepancy. Then each larger size's discrepancy fitted so far, and the names of `rows`.
+bool predicts(const Loop& l, std::size_t k) { return l.surface && k < l.deltas.size() && l.deltas[k]; }
+std::vector<Discrepancy> fitted_deltas(const Loop& l) {
+  std::vector<Discrepancy> out;
+  for (const std::optional<Discrepancy>& d : l.deltas)
+    if (d) out.push_back(*d);
+  return out;
+}
+std::vector<std::string> row_names(const References& refs, const std::vector<std::size_t>& rows) {
+  std::vector<std::string> names;
+  for (const std::size_t r : rows) names.push_back(refs.rows[r].name);
+  return names;
+}
+
 // After its budget, size k's next set to confirm the posterior's best prediction there, once the
 // size has its discrepancy and the first size its surface (discrepancy.hpp, choose_to_confirm).
 std::vector<std::size_t> choose_to_confirm(Loop& l, std::size_t k, const std::vector<const ParameterSet*>& candidates,
                                            const std::vector<Eigen::VectorXd>& candidate_u) {
   SizeOutcome& so = l.out.sizes[k];
-  if (so.confirmed_of_kind(false) >= so.confirm || !l.surface || k >= l.deltas.size() || !l.deltas[k]) return {};
-  std::vector<Discrepancy> larger;
-  for (const std::optional<Discrepancy>& d : l.deltas)
-    if (d) larger.push_back(*d);
+  if (so.confirmed_of_kind(false) >= so.confirm || !predicts(l, k)) return {};
   const std::vector<std::size_t> rows = rows_covered(l.out.references, *l.deltas[k]);
-  const std::optional<Confirmation> c = choose_to_confirm(*l.surface, larger, candidate_u, rows);
+  const std::optional<Confirmation> c = choose_to_confirm(*l.surface, fitted_deltas(l), candidate_u, rows);
   if (!c) return {};
-  SizeOutcome::Confirmed confirmed{candidates[c->index]->name, c->probability, {}, c->row_probability};
-  for (const std::size_t r : rows) confirmed.rows.push_back(l.out.references.rows[r].name);
-  so.confirmed.push_back(std::move(confirmed));
+  so.confirmed.push_back({candidates[c->index]->name, c->probability, row_names(l.out.references, rows), c->row_probability});
   return {c->index};
 }
 
@@ -127,18 +137,16 @@ constexpr int reach_points = 20000;
 // too, where it runs for its discrepancy pair. False when there is none yet.
 bool probe(Loop& l, std::size_t k, int it) {
   SizeOutcome& so = l.out.sizes[k];
-  if (so.confirmed_of_kind(true) >= so.probe || !l.surface || k >= l.deltas.size() || !l.deltas[k]) return false;
-  std::vector<Discrepancy> larger;
-  for (const std::optional<Discrepancy>& d : l.deltas)
-    if (d) larger.push_back(*d);
+  if (so.confirmed_of_kind(true) >= so.probe || !predicts(l, k)) return false;
+  const std::vector<Discrepancy> larger = fitted_deltas(l);
   const std::vector<std::size_t> rows = rows_covered(l.out.references, *l.deltas[k]);
   const Reach reached = reach(*l.surface, larger, rows, reach_points);
   if (reached.all_best.size() == 0) return false;
   ParameterSet s;
   s.name = "i" + std::to_string(it) + "p" + std::to_string(k), s.u = reached.all_best, s.iteration = it, s.drawn = false;
-  SizeOutcome::Confirmed c{s.name, reached.all_most, {}, {}, true};
+  SizeOutcome::Confirmed c{s.name, reached.all_most, row_names(l.out.references, rows), {}, true};
   const std::vector<double> p = l.surface->row_probabilities(s.u, larger);
-  for (const std::size_t r : rows) c.rows.push_back(l.out.references.rows[r].name), c.row_probability.push_back(p[r]);
+  for (const std::size_t r : rows) c.row_probability.push_back(p[r]);
   std::printf("[calibrate] iteration %d: size %s runs the new set %s at the reach's maximum, where the posterior expects one sample to "
               "agree with all %zu of its rows with probability %.3g (best of %d points; %zu of at most %d there); the first size runs it too\n",
               it, so.label().c_str(), s.name.c_str(), rows.size(), reached.all_most, reached.points, so.sets.size() + 1, so.sets_at_most());
@@ -220,8 +228,7 @@ void weigh_larger(Loop& l) {
   for (std::size_t k = 1; k < out.sizes.size(); ++k) {
     SizeOutcome& so = out.sizes[k];
     const std::vector<std::size_t> rows = rows_covered(out.references, *l.deltas[k]);
-    so.reach_rows.clear();
-    for (const std::size_t r : rows) so.reach_rows.push_back(out.references.rows[r].name);
+    so.reach_rows = row_names(out.references, rows);
     const Reach reached = reach(*l.surface, deltas, rows, reach_points);
     so.reach_points = reached.points, so.reach_most = reached.row_most, so.reach_all = reached.all_most;
   }
