@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <numeric>
 #include <set>
+#include <utility>
 
 #include "config/yaml_section.hpp"
 #include "exec/scheduler.hpp"
@@ -115,7 +116,7 @@ void start(Loop& l) {
   if (!c.sizes.empty() && !l.o.profile.empty())
     throw dem::ConfigError("--profile " + l.o.profile + " is given, but " + c.file + " names its profiles in sizes: leave --profile out");
   std::vector<Size> sizes = c.sizes;
-  if (sizes.empty()) sizes.push_back({l.o.profile.empty() ? l.study.default_profile().name : l.o.profile, 0, 0, 0, 0, {}});
+  if (sizes.empty()) sizes.push_back({l.o.profile.empty() ? l.study.default_profile().name : l.o.profile, 0, 0, 0, 0, {}, {}});
   for (std::size_t k = 0; k < sizes.size(); ++k) {
     const pipeline::Profile* profile = nullptr;
     try {
@@ -131,6 +132,7 @@ void start(Loop& l) {
     so.budget = sizes[k].sets;
     so.confirm = sizes[k].confirm;
     so.probe = sizes[k].probe;
+    so.named = sizes[k].named;
     // A part of a size has its own results folder and ledger: profile-dense-medium.
     std::string name = profile->name;
     for (const std::string& d : so.densities) name += "-" + d;
@@ -269,8 +271,12 @@ void run_iteration(Loop& l, std::size_t k, int it, IterationPlan& p) {
   }
   if (l.o.plan_only) return;  // replayed: every set it needs is in the ledger or finished here
   const int this_iteration = static_cast<int>(std::count_if(so.sets.begin(), so.sets.end(), [&](const ParameterSet& s) { return s.iteration == it; }));
-  std::printf("[calibrate] iteration %d%s: %d sets (%zu scored in the ledger), %zu runs planned (finished ones are reused)\n", it,
-              l.out.sizes.size() > 1 ? (", size " + so.label()).c_str() : "", this_iteration, p.in_ledger.size(), p.runs.size());
+  if (l.named_step)
+    std::printf("[calibrate] after the iterations, size %s: %zu named set(s), %zu runs planned (finished ones are reused)\n",
+                so.label().c_str(), so.named.size(), p.runs.size());
+  else
+    std::printf("[calibrate] iteration %d%s: %d sets (%zu scored in the ledger), %zu runs planned (finished ones are reused)\n", it,
+                l.out.sizes.size() > 1 ? (", size " + so.label()).c_str() : "", this_iteration, p.in_ledger.size(), p.runs.size());
   std::fflush(stdout);
   if (p.runs.empty()) return;
   if (l.o.ledger_only) {  // a set whose runs all finished here is scored on them: nothing runs for it
@@ -377,9 +383,14 @@ int sets_left(const Loop& l, std::size_t k) {
 bool step_size(Loop& l, std::size_t k, int it) {
   IterationPlan p = plan_iteration(l, k, it);
   if (l.o.plan_only && needs_runs(l, k, p)) {
+    if (l.named_step) {  // the calibration's line first: every iteration replayed
+      IterationPlan first = plan_iteration(l, 0, it);
+      print_plan(l, 0, 0, first, 0);
+    }
     print_plan(l, k, it, p, sets_left(l, k));
     return false;
   }
+  l.ran_new |= needs_runs(l, k, p);
   run_iteration(l, k, it, p);
   score_iteration(l, k, it, p);
   keep_scores(l, k, p);
@@ -442,11 +453,24 @@ std::optional<Outcome> run_calibration(const Calibration& c, const RunOptions& o
     const IterationSummary summary = summarize(l, it);
     out.iterations.push_back(summary);
     if (settled(l, it, summary)) break;
-    if (it < c.max_iterations && o.after_iteration && !o.plan_only) {
+    // The report so far, after an iteration that ran something (a replayed one leaves the report as it is).
+    if (it < c.max_iterations && o.after_iteration && !o.plan_only && std::exchange(l.ran_new, false)) {
       out.stop_reason = "still iterating: iteration " + std::to_string(it) + " of at most " + std::to_string(c.max_iterations) +
                         " done (it moved " + validation::significant(summary.moved, 2) + " of a prior range); start it again to go on";
       o.after_iteration(out);
     }
+  }
+  // The sets named for a size run once the iterations end; the posterior is weighed again with them.
+  const int last = std::min(it, c.max_iterations);
+  bool named = false;
+  for (std::size_t k = 1; k < out.sizes.size(); ++k) named = choose_named(l, k, last) || named;
+  if (named) {
+    l.named_step = true;
+    for (std::size_t k = 1; k < out.sizes.size(); ++k)
+      if (!step_size(l, k, last)) return plan_from(last, k);
+    l.named_step = false;
+    weigh_larger(l);
+    out.iterations.back() = summarize(l, last, true);
   }
   if (o.plan_only) {  // every iteration replayed: nothing left to run
     for (std::size_t k = 0; k < out.sizes.size(); ++k) {

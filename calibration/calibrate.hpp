@@ -14,6 +14,7 @@
 #include "calibration_file.hpp"
 #include "posterior.hpp"
 #include "references.hpp"
+#include "study/posterior_summary.hpp"
 #include "study/stamp.hpp"
 #include "sets.hpp"
 
@@ -75,15 +76,18 @@ struct SizeOutcome {
   // Then the new sets run at the point of the surface's region where that probability is largest
   // (Size::probe at most; the reach's maximum), recorded as confirmed sets too.
   int probe = 0;
+  // Then, once the iterations end, the sets of the first size the calibration file names for this
+  // size (Size::named), recorded as confirmed sets too when the posterior here predicts them.
+  std::vector<std::string> named;
   struct Confirmed {
     std::string set;
     double probability = 0;
     std::vector<std::string> rows;
     std::vector<double> row_probability;
-    bool probe = false;  // a new set at the reach's maximum, else the best of the sets scored
+    validation::Choice chosen = validation::Choice::best;
   };
-  int confirmed_of_kind(bool probes) const {
-    return static_cast<int>(std::count_if(confirmed.begin(), confirmed.end(), [&](const Confirmed& c) { return c.probe == probes; }));
+  int confirmed_of_kind(validation::Choice kind) const {
+    return static_cast<int>(std::count_if(confirmed.begin(), confirmed.end(), [&](const Confirmed& c) { return c.chosen == kind; }));
   }
   std::vector<Confirmed> confirmed;
   // A confirmed set's verdict on each of its rows, on its samples at this size (none: the set not
@@ -97,7 +101,8 @@ struct SizeOutcome {
         if (m.name == c.rows[i] && m.valued) out[i] = m.consistent;
     return out;
   }
-  int sets_at_most() const { return budget + confirm + probe; }
+  int sets_in_iterations() const { return budget + confirm + probe; }
+  int sets_at_most() const { return sets_in_iterations() + static_cast<int>(named.size()); }
   // Once every size has its discrepancy: how far the posterior at this size lets its scalar rows
   // be reached (discrepancy.hpp, reach): the points of the surface's region tried, and per row
   // (`reach_rows`) the largest probability that one sample agrees with it; with all of them at once.

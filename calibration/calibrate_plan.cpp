@@ -85,6 +85,10 @@ void print_plan(const Loop& l, std::size_t k, int it, IterationPlan& p, int left
   const int unscored_here = static_cast<int>(std::count_if(l.out.sizes[k].sets.begin(), l.out.sizes[k].sets.end(),
                                                            [&](const ParameterSet& s) { return s.iteration == it && s.misfit.rows.empty(); }));
   const double total = left > 0 ? shared + first_own + own_per_set * std::max(0, left - unscored_here) : 0;
+  // Of those, the sets whose every run has finished here: scored on them without running anything.
+  const int ready = static_cast<int>(std::count_if(l.out.sizes[k].sets.begin(), l.out.sizes[k].sets.end(), [&](const ParameterSet& s) {
+    return s.iteration == it && s.misfit.rows.empty() && !p.unfinished.count(s.name);
+  }));
   const SizeOutcome& so = l.out.sizes[k];
   const std::string what = l.out.sizes.size() > 1 ? "size " + so.label() + " (lattice " + std::to_string(size.profile->lattice) + ", " +
                                                         std::to_string(so.seeds.size()) + " sample(s) a set): "
@@ -93,12 +97,13 @@ void print_plan(const Loop& l, std::size_t k, int it, IterationPlan& p, int left
     std::printf("calibration %s: %zu parameter(s), %d sets per iteration, at most %d iterations%s\n", l.c.name.c_str(),
                 l.c.parameters.size(), l.c.batch, l.c.max_iterations,
                 it == 1   ? ""
+                : l.named_step ? "; every iteration replays from the ledgers and the finished runs; then the sets named for a size run"
                 : it == 0 ? "; every iteration replays from the ledgers and the finished runs: nothing to run"
                 : it == 2 ? "; iteration 1 replays from the ledgers and the finished runs"
                           : ("; iterations 1 to " + std::to_string(it - 1) + " replay from the ledgers and the finished runs").c_str());
   if (it > 0)
     std::printf("%s%s: %zu runs (%d shared by every set, %d for its sets still to run), %.3g particle-steps, about %.1f min on %d core(s)\n",
-                what.c_str(), it == 1 ? "first iteration" : ("iteration " + std::to_string(it)).c_str(), runs.size(), shared_runs,
+                what.c_str(), l.named_step ? "the named sets" : it == 1 ? "first iteration" : ("iteration " + std::to_string(it)).c_str(), runs.size(), shared_runs,
                 set_runs, shared + first_own, first / 60, jobs);
   if (ledger.other_sets > 0)
     std::printf("the ledger of scored sets (%s) holds %d set(s) scored against other references: none is "
@@ -108,7 +113,7 @@ void print_plan(const Loop& l, std::size_t k, int it, IterationPlan& p, int left
                 "again, at the unit values and on runs of the inputs it was scored with)\n",
                 size.ledger_file.c_str(), ledger.sets.size(), size.from_ledger.size());
   std::printf("%sall %d iterations at most (%d sets still to score): %.3g particle-steps, %.1f core-min, about %.1f min on %d core(s)\n",
-              what.c_str(), l.c.max_iterations, left, total, total / throughput / 60, total / throughput / 60 / jobs, jobs);
+              what.c_str(), l.c.max_iterations, std::max(0, left - ready), total, total / throughput / 60, total / throughput / 60 / jobs, jobs);
   const std::string from = recorded ? "recorded by the finished runs in the results folder"
                            : machine ? "recorded by " + std::to_string(machine->runs) + " finished runs of this engine in " +
                                            std::to_string(machine->studies) + " results folders under " + results_root

@@ -48,7 +48,7 @@ std::string posterior_source(const Outcome& out) {
 
 }  // namespace
 
-IterationSummary summarize(Loop& l, int it) {
+IterationSummary summarize(Loop& l, int it, bool after_named) {
   const Outcome& out = l.out;
   const Calibration& c = l.c;
   const std::vector<ParameterSet>& sets = out.first().sets;
@@ -73,10 +73,12 @@ IterationSummary summarize(Loop& l, int it) {
       summary.contained &= std::abs(summary.marginals[j].unit_mean - out.region_centre(k)) + 2 * summary.marginals[j].unit_sd <=
                            out.region_sd(k);
     }
-  summary.moved = l.before.empty() ? 1 : largest_move(l.before, summary.marginals);
+  // The named sets change the last iteration's posterior, not how far the iteration moved it.
+  summary.moved = after_named ? out.iterations.back().moved : l.before.empty() ? 1 : largest_move(l.before, summary.marginals);
   l.before = summary.marginals;
-  std::printf("[calibrate] iteration %d: %d of %zu sets scored%s; posterior from %s (effective sample size %.1f), moved %.3f of "
-              "the prior ranges;", it, summary.valued, sets.size(), unscored_text(out).c_str(), posterior_source(out).c_str(),
+  const std::string step = after_named ? "iteration " + std::to_string(it) + " with the named sets" : "iteration " + std::to_string(it);
+  std::printf("[calibrate] %s: %d of %zu sets scored%s; posterior from %s (effective sample size %.1f), moved %.3f of "
+              "the prior ranges;", step.c_str(), summary.valued, sets.size(), unscored_text(out).c_str(), posterior_source(out).c_str(),
               summary.ess, summary.moved);
   for (std::size_t j = 0; j < c.parameters.size(); ++j)
     std::printf(" %s %.4g +- %.3g", c.parameters[j].name.c_str(), summary.marginals[j].mean, summary.marginals[j].sd);
@@ -91,7 +93,8 @@ bool settled(Loop& l, int it, const IterationSummary& summary) {
   const Calibration& c = l.c;
   if (it < c.min_iterations || summary.moved > c.tolerance || summary.ess < c.min_effective_sets || !summary.contained) return false;
   for (std::size_t k = 1; k < l.out.sizes.size(); ++k)
-    if (static_cast<int>(l.out.sizes[k].sets.size()) < l.out.sizes[k].sets_at_most() || l.out.sizes[k].discrepancy_pairs == 0) return false;
+    if (static_cast<int>(l.out.sizes[k].sets.size()) < l.out.sizes[k].sets_in_iterations() || l.out.sizes[k].discrepancy_pairs == 0)
+      return false;
   l.out.converged = true;
   l.out.stop_reason = "no posterior mean or sd moved by more than " + validation::significant(c.tolerance, 3) + " of its prior range (" +
                       validation::significant(summary.moved, 2) + ") in iteration " + std::to_string(it) +

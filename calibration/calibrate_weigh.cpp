@@ -66,6 +66,7 @@ void weigh(Loop& l, int it) {
     }
   }
   require_weight(out);
+  l.first_u = out.posterior_u, l.first_w = out.posterior_w;
 }
 
 
@@ -121,12 +122,23 @@ std::vector<std::string> row_names(const References& refs, const std::vector<std
 std::vector<std::size_t> choose_to_confirm(Loop& l, std::size_t k, const std::vector<const ParameterSet*>& candidates,
                                            const std::vector<Eigen::VectorXd>& candidate_u) {
   SizeOutcome& so = l.out.sizes[k];
-  if (so.confirmed_of_kind(false) >= so.confirm || !predicts(l, k)) return {};
+  if (so.confirmed_of_kind(validation::Choice::best) >= so.confirm || !predicts(l, k)) return {};
   const std::vector<std::size_t> rows = rows_covered(l.out.references, *l.deltas[k]);
   const std::optional<Confirmation> c = choose_to_confirm(*l.surface, fitted_deltas(l), candidate_u, rows);
   if (!c) return {};
-  so.confirmed.push_back({candidates[c->index]->name, c->probability, row_names(l.out.references, rows), c->row_probability});
+  so.confirmed.push_back({candidates[c->index]->name, c->probability, row_names(l.out.references, rows), c->row_probability,
+                          validation::Choice::best});
   return {c->index};
+}
+
+// Set s as a confirmed set of size k, chosen as `chosen`: the probability the posterior at size k
+// gives that one sample of it agrees with each of the size's rows, and with all (their product).
+SizeOutcome::Confirmed predicted(const Loop& l, std::size_t k, const ParameterSet& s, validation::Choice chosen) {
+  const std::vector<std::size_t> rows = rows_covered(l.out.references, *l.deltas[k]);
+  SizeOutcome::Confirmed c{s.name, 1, row_names(l.out.references, rows), {}, chosen};
+  const std::vector<double> p = l.surface->row_probabilities(s.u, fitted_deltas(l));
+  for (const std::size_t r : rows) c.row_probability.push_back(p[r]), c.probability *= p[r];
+  return c;
 }
 
 // The uniform points a reach draws (those inside the surface's region count).
@@ -137,16 +149,14 @@ constexpr int reach_points = 20000;
 // too, where it runs for its discrepancy pair. False when there is none yet.
 bool probe(Loop& l, std::size_t k, int it) {
   SizeOutcome& so = l.out.sizes[k];
-  if (so.confirmed_of_kind(true) >= so.probe || !predicts(l, k)) return false;
+  if (so.confirmed_of_kind(validation::Choice::probe) >= so.probe || !predicts(l, k)) return false;
   const std::vector<Discrepancy> larger = fitted_deltas(l);
   const std::vector<std::size_t> rows = rows_covered(l.out.references, *l.deltas[k]);
   const Reach reached = reach(*l.surface, larger, rows, reach_points);
   if (reached.all_best.size() == 0) return false;
   ParameterSet s;
   s.name = "i" + std::to_string(it) + "p" + std::to_string(k), s.u = reached.all_best, s.iteration = it, s.drawn = false;
-  SizeOutcome::Confirmed c{s.name, reached.all_most, row_names(l.out.references, rows), {}, true};
-  const std::vector<double> p = l.surface->row_probabilities(s.u, larger);
-  for (const std::size_t r : rows) c.row_probability.push_back(p[r]);
+  const SizeOutcome::Confirmed c = predicted(l, k, s, validation::Choice::probe);
   std::printf("[calibrate] iteration %d: size %s runs the new set %s at the reach's maximum, where the posterior expects one sample to "
               "agree with all %zu of its rows with probability %.3g (best of %d points; %zu of at most %d there); the first size runs it too\n",
               it, so.label().c_str(), s.name.c_str(), rows.size(), reached.all_most, reached.points, so.sets.size() + 1, so.sets_at_most());
@@ -162,7 +172,7 @@ bool probe(Loop& l, std::size_t k, int it) {
 void choose_larger_sets(Loop& l, std::size_t k, int it) {
   SizeOutcome& so = l.out.sizes[k];
   const int room = std::min(l.c.sizes[k].per_iteration, so.budget - static_cast<int>(so.sets.size()));
-  if (room <= 0 && so.confirmed_of_kind(false) >= so.confirm) {
+  if (room <= 0 && so.confirmed_of_kind(validation::Choice::best) >= so.confirm) {
     probe(l, k, it);
     return;
   }
@@ -197,12 +207,40 @@ void choose_larger_sets(Loop& l, std::size_t k, int it) {
   std::fflush(stdout);
 }
 
+bool choose_named(Loop& l, std::size_t k, int it) {
+  SizeOutcome& so = l.out.sizes[k];
+  bool added = false;
+  for (const std::string& name : so.named) {
+    if (std::any_of(so.sets.begin(), so.sets.end(), [&](const ParameterSet& s) { return s.name == name; })) continue;
+    const std::vector<ParameterSet>& base = l.out.sizes[base_of(l.out, k)].sets;
+    const auto found = std::find_if(base.begin(), base.end(), [&](const ParameterSet& s) { return s.name == name; });
+    if (found == base.end() || !found->misfit.valued)
+      throw dem::ConfigError(l.c.file + ": sizes[" + std::to_string(k) + "].named: '" + name + "' is not a set " +
+                             l.out.sizes[base_of(l.out, k)].label() + " scored in the " + std::to_string(it) +
+                             " iterations (its sets are named i<iteration>s<number> and i<iteration>p<size>)");
+    ParameterSet s;
+    s.name = found->name, s.u = found->u, s.iteration = it;
+    if (predicts(l, k)) {
+      so.confirmed.push_back(predicted(l, k, s, validation::Choice::named));
+      std::printf("[calibrate] after the iterations: size %s runs %s, named in the calibration file; the posterior there expects it to "
+                  "agree with all %zu of its rows with probability %.3g\n", so.label().c_str(), name.c_str(),
+                  so.confirmed.back().rows.size(), so.confirmed.back().probability);
+    } else {
+      std::printf("[calibrate] after the iterations: size %s runs %s, named in the calibration file\n", so.label().c_str(), name.c_str());
+    }
+    std::fflush(stdout);
+    so.sets.push_back(std::move(s));
+    added = true;
+  }
+  return added;
+}
+
 void weigh_larger(Loop& l) {
   Outcome& out = l.out;
   if (out.sizes.size() < 2) return;
   out.first_size_only.clear();
   for (std::size_t j = 0; j < l.c.parameters.size(); ++j)
-    out.first_size_only.push_back(marginal(l.c.parameters[j], j, out.posterior_u, out.posterior_w));
+    out.first_size_only.push_back(marginal(l.c.parameters[j], j, l.first_u, l.first_w));
   std::vector<Discrepancy> deltas;
   l.deltas.assign(out.sizes.size(), std::nullopt);
   for (std::size_t k = 1; k < out.sizes.size(); ++k) {
@@ -218,7 +256,7 @@ void weigh_larger(Loop& l) {
     if (delta && !so.densities.empty()) delta = extended(*delta, part, out.references);
     if (delta) {
       so.discrepancy_pairs = delta->pairs, so.discrepancy_linear = delta->linear;
-      so.changes = changes_at(out, *delta, mean_of(out.posterior_u, out.posterior_w));
+      so.changes = changes_at(out, *delta, mean_of(l.first_u, l.first_w));
       deltas.push_back(*delta);
       l.deltas[k] = delta;
     }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <set>
 
 #include "config/study_config.hpp"
@@ -37,6 +38,16 @@ void read_readings(dem::Section& s, Parameter& p) {
   p.prior = Parameter::Prior::Values;
 }
 
+// Whether `name` is one the calibration can give a set of the first size: i<it>s<n> (a drawn set:
+// it <= max_iterations, n <= batch) or i<it>p<k> (a probe of size k, one of at most 64). Whether
+// that set was scored is known once the iterations end.
+bool drawable(const Calibration& c, const std::string& name) {
+  int it = 0, n = 0;
+  char kind = 0, rest = 0;
+  if (std::sscanf(name.c_str(), "i%d%c%d%c", &it, &kind, &n, &rest) != 3 || (kind != 's' && kind != 'p')) return false;
+  return it >= 1 && it <= c.max_iterations && n >= 1 && n <= (kind == 'p' ? 64 : c.batch);
+}
+
 // `sizes: [{profile: small}, {profile: paper, sets: 8, per_iteration: 3}]`: the study's profiles the
 // sets run at, the smallest (every set) first.
 void read_sizes(dem::Section& root, Calibration& c) {
@@ -59,7 +70,7 @@ void read_sizes(dem::Section& root, Calibration& c) {
       s.fail("profile", "'" + size.profile + "': the parts of the largest size share its profile ('" + c.sizes.back().profile + "')");
     if (!(part && c.sizes.size() > 1) && !profiles.insert(size.profile).second) s.fail("profile", "'" + size.profile + "' names two sizes");
     if (c.sizes.empty()) {
-      for (const char* key : {"sets", "per_iteration", "confirm", "probe"})
+      for (const char* key : {"sets", "per_iteration", "confirm", "probe", "named"})
         if (s.has(key)) s.fail(key, "is given for the first size, where every set runs");
     } else {
       size.sets = static_cast<int>(s.integer("sets", 3, 4096, std::nullopt, "the sets run at this size in all (at least 3: a discrepancy's fit)"));
@@ -73,6 +84,20 @@ void read_sizes(dem::Section& root, Calibration& c) {
                                               "the new sets run at this size after its `confirm` sets, one an iteration, each at the point "
                                               "where the posterior at this size gives the largest probability that one sample agrees with "
                                               "all of its rows (run at the first size too)"));
+      if (s.has("named")) {
+        const YAML::Node n = s.raw("named", "a list of set names", "sets of the first size (i2s007, ...) run at this size once the iterations end");
+        if (!n.IsSequence() || n.size() == 0) s.fail("named", "is not a non-empty list of set names (as the first size's ledger names them)");
+        std::set<std::string> seen;
+        for (const YAML::Node& name : n) {
+          if (!name.IsScalar()) s.fail("named", "holds an entry that is not a set name");
+          size.named.push_back(name.as<std::string>());
+          if (!seen.insert(size.named.back()).second) s.fail("named", "names '" + size.named.back() + "' twice");
+          if (!drawable(c, size.named.back()))
+            s.fail("named", "'" + size.named.back() + "' is not a set this calibration can draw: i<iteration>s<number> (iteration 1 to " +
+                                std::to_string(c.max_iterations) + ", number 1 to " + std::to_string(c.batch) +
+                                ", e.g. i2s007) or i<iteration>p<size> (a probe)");
+        }
+      }
     }
     s.finish();
     c.sizes.push_back(size);

@@ -14,13 +14,16 @@ namespace calibration {
 // more, one an iteration, each the set the posterior at that size expects most likely to agree
 // with all of its rows (a check of its best prediction); then `probe` more, one an iteration, each
 // a new set at the point of the surface's region where that probability is largest (the reach's
-// maximum, discrepancy.hpp), run at the first size too for its discrepancy pair.
+// maximum, discrepancy.hpp), run at the first size too for its discrepancy pair; then, once the
+// iterations end, the sets of the first size `named` for it (a researcher's choice: e.g. one whose
+// rows the surface smooths over), which enter its discrepancy and the posterior at the end.
 struct Size {
   std::string profile;
   int sets = 0;           // a larger size's sets at most (0: the first size, every set)
   int per_iteration = 0;  // a larger size's sets chosen per iteration at most
   int confirm = 0;        // a larger size's sets run after those to confirm the posterior's best prediction
   int probe = 0;          // then new sets at the reach's maximum
+  std::vector<std::string> named;  // then, once the iterations end, these sets of the first size
   // A part of the largest size: its sets run these densities' tests only, and its discrepancy from
   // the first size is fitted to these densities' rows and curves only (empty: every density). The
   // parts of a size share its profile and split its densities.

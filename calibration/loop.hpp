@@ -43,9 +43,13 @@ struct Loop {
   std::vector<Marginal> before;
   std::vector<SizeState> at;  // parallel to out.sizes
   std::optional<ResponseSurface> surface;  // the first size's, of the last weighing
+  std::vector<Eigen::VectorXd> first_u;    // the posterior at the first size, of the last weighing (weigh_larger may replace out's)
+  std::vector<double> first_w;
   std::vector<Eigen::VectorXd> larger_u;   // the posterior at the largest size, of the last weighing (empty: none yet)
   std::vector<double> larger_w;
   std::vector<std::optional<Discrepancy>> deltas;  // per size (none at the first), of the last weighing
+  bool ran_new = false;     // some size's step since the last report so far ran sets neither in a ledger nor finished here
+  bool named_step = false;  // the iterations have ended; the sets named for the sizes are planned
   Loop(const Calibration& calibration, const RunOptions& options)
       : c(calibration), o(options), sampler(static_cast<int>(calibration.parameters.size())) {}
   int dimensions() const { return static_cast<int>(c.parameters.size()); }
@@ -91,6 +95,10 @@ void weigh(Loop& l, int it);
 // Size k's sets for iteration `it`: chosen among the sets the size before scored, near the
 // posterior so far (discrepancy.hpp), up to its per_iteration and its budget.
 void choose_larger_sets(Loop& l, std::size_t k, int it);
+// Once the iterations end (`it`: the last), size k's sets named in the calibration file
+// (Size::named) that it has not run, added to its sets with what the posterior predicts of them;
+// whether any was. Throws, naming the key, for a name the size it chooses from has not scored.
+bool choose_named(Loop& l, std::size_t k, int it);
 // The discrepancies from each size to the next and, once each has enough pairs, the posterior at
 // the largest size on the first size's surface plus them (the first size's alone is kept in
 // out.first_size_only).
@@ -99,7 +107,8 @@ void weigh_larger(Loop& l);
 // An iteration's account (calibrate_summary.cpp): its summary, printed; whether the posterior has
 // settled after it (then out.stop_reason says why; with larger sizes, only once each has spent its
 // sets and has its discrepancy); why it has not, once max_iterations is reached.
-IterationSummary summarize(Loop& l, int it);
+// After the named sets (after_named): the last iteration's account again, its `moved` kept.
+IterationSummary summarize(Loop& l, int it, bool after_named = false);
 bool settled(Loop& l, int it, const IterationSummary& summary);
 std::string unsettled_reason(const Calibration& c, const Outcome& out);
 

@@ -169,7 +169,7 @@ json confirmed_json(const SizeOutcome& s) {
       if (verdicts[i]) row[keys::consistent] = *verdicts[i];
       rows.push_back(row);
     }
-    out.push_back({{keys::set, c.set}, {keys::probe, c.probe}, {keys::predicted_probability, c.probability}, {keys::rows, rows}});
+    out.push_back({{keys::set, c.set}, {keys::chosen, validation::choice_names[static_cast<int>(c.chosen)]}, {keys::predicted_probability, c.probability}, {keys::rows, rows}});
   }
   return out;
 }

@@ -29,7 +29,7 @@ std::string confirmed_markdown(const SizeOutcome& s) {
     const std::size_t least = static_cast<std::size_t>(
         std::min_element(c.row_probability.begin(), c.row_probability.end()) - c.row_probability.begin());
     md << "To confirm the posterior at " << s.label() << ": set " << c.set
-       << (c.probe ? ", a new set at the reach's maximum (run at the first size too)" : ", the best of the sets scored")
+       << validation::chosen_words(c.chosen)
        << ", where it expected one sample to agree with all " << c.rows.size() << " of its rows with probability "
        << validation::significant(c.probability, 2);
     if (!c.rows.empty())

@@ -96,6 +96,8 @@ TEST_CASE("calibrate runs, writes its posterior, and replays itself from its run
   REQUIRE(again.exit_code == 0);
   CHECK(again.out.find("] started ") == std::string::npos);
   CHECK(read(dir / "report" / "posterior.json") == before);
+  // An iteration that ran nothing new leaves the finished report as it is until the end.
+  CHECK(again.out.find("the posterior so far") == std::string::npos);
 
   // On a machine without the runs' results (another session): every set's score comes from the
   // ledger beside the report, nothing runs, and the posterior is the same but for the recorded

@@ -175,7 +175,7 @@ TEST_CASE("calibrate probes a part at the reach's maximum: a new set run at both
   REQUIRE(dense["confirmed"].size() == 1);
   const nlohmann::json& c = dense["confirmed"][0];
   CHECK(c["set"] == "i3p1");
-  CHECK(c["probe"] == true);
+  CHECK(c["chosen"] == "probe");
   CHECK(c["predicted_probability"].get<double>() > 0.99);
   CHECK(c["rows"][0]["consistent"] == true);
   const nlohmann::json small_ledger = nlohmann::json::parse(dem::test::read_bytes((dir / "report" / "scored_sets.json").string()));
@@ -183,7 +183,7 @@ TEST_CASE("calibrate probes a part at the reach's maximum: a new set run at both
   for (const nlohmann::json& s : small_ledger["sets"]) in_small_ledger |= s["name"] == "i3p1";
   CHECK(in_small_ledger);
   const std::string section = dem::test::read_bytes((dir / "report" / "section.md").string());
-  CHECK_THAT(section, Catch::Contains("set i3p1, a new set at the reach's maximum"));
+  CHECK_THAT(section, Catch::Contains("set i3p1, a new set where the posterior's prediction is best (run at the first size too)"));
   // The probe is chosen again, at the same point, from the same scores: a replay runs nothing.
   fs::remove_all(dir / "results");
   const auto replay = dem::test::run_command(cmd + " --ledger-only 2>&1");
@@ -198,4 +198,67 @@ TEST_CASE("calibrate probes a part at the reach's maximum: a new set run at both
   const auto refused = dem::test::run_command(cmd + " --plan 2>&1");
   CHECK(refused.exit_code == 2);
   CHECK_THAT(refused.out, Catch::Contains("sizes[1].probe") && Catch::Contains("no scalar row"));
+}
+
+TEST_CASE("calibrate runs the sets named for a part once the iterations end: in its discrepancy, planned alone, replayed from the ledgers",
+          "[calibration][cli]") {
+  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "calibrate_parts_named";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  // The dense part chooses its 3 sets in iterations 1 and 2, among the sets scored by then: a set
+  // of iteration 3 is not among them, so the part runs it after the iterations.
+  const dem::test::TinyCalibration tiny = one_wide_row("named: [i3s004]");
+  tiny.write(dir);
+  const std::string cmd = "cd '" + dir.string() + "' && '" + bin + "calibrate' cal.yaml -j 2 --threads 1";
+  const auto run = dem::test::run_command(cmd + " 2>&1");
+  INFO(run.out);
+  REQUIRE(run.exit_code == 0);
+  CHECK_THAT(run.out, Catch::Contains("after the iterations: size large (dense) runs i3s004, named in the calibration file"));
+  CHECK_THAT(run.out, Catch::Contains("iteration 3 with the named sets"));
+  const nlohmann::json p = nlohmann::json::parse(dem::test::read_bytes((dir / "report" / "posterior.json").string()));
+  const nlohmann::json& dense = p["sizes"][1];
+  CHECK(p["sizes"][0]["sets"] == 3 * 6);  // no new set at the first size
+  CHECK(dense["sets"] == 4);
+  CHECK(dense["discrepancy"]["pairs"] == 4);
+  REQUIRE(dense["confirmed"].size() == 1);
+  CHECK(dense["confirmed"][0]["set"] == "i3s004");
+  CHECK(dense["confirmed"][0]["chosen"] == "named");
+  CHECK(dense["confirmed"][0]["rows"][0]["consistent"] == true);
+  const std::string section = dem::test::read_bytes((dir / "report" / "section.md").string());
+  CHECK_THAT(section, Catch::Contains("set i3s004, a set of the first size the calibration file names"));
+  // Another name added later: the plan replays every iteration and the first named set, and prices the new one alone.
+  dem::test::TinyCalibration more = one_wide_row("named: [i3s004, i3s005]");
+  more.write(dir);
+  const auto plan = dem::test::run_command(cmd + " --plan 2>&1");
+  INFO(plan.out);
+  REQUIRE(plan.exit_code == 0);
+  CHECK_THAT(plan.out, Catch::Contains("every iteration replays from the ledgers and the finished runs; then the sets named for a size run"));
+  CHECK_THAT(plan.out, Catch::Contains("size large (dense) (lattice 5, 2 sample(s) a set): the named sets: "));
+  CHECK_THAT(plan.out, Catch::Contains("(1 sets still to score)"));
+  // The first name replays from the ledgers: the same prediction, the same verdict, nothing run.
+  tiny.write(dir);
+  fs::remove_all(dir / "results");
+  const auto replay = dem::test::run_command(cmd + " --ledger-only 2>&1");
+  INFO(replay.out);
+  REQUIRE(replay.exit_code == 0);
+  const nlohmann::json again = nlohmann::json::parse(dem::test::read_bytes((dir / "report" / "posterior.json").string()));
+  CHECK(again["sizes"][1]["confirmed"] == dense["confirmed"]);
+  // The first size's own posterior is the one without the named set, which has no effect there.
+  one_wide_row("confirm: 0").write(dir);
+  const auto without = dem::test::run_command(cmd + " --ledger-only 2>&1");
+  INFO(without.out);
+  REQUIRE(without.exit_code == 0);
+  const nlohmann::json alone = nlohmann::json::parse(dem::test::read_bytes((dir / "report" / "posterior.json").string()));
+  CHECK(alone["parameters"][0]["first_size_only"] == again["parameters"][0]["first_size_only"]);
+  CHECK(alone["sizes"][1]["sets"] == 3);
+  // A name the calibration cannot draw is refused before anything runs, naming the key; a set
+  // drawn but not scored (an engine stop in one of its runs), once the iterations end.
+  one_wide_row("named: [i4s001]").write(dir);
+  const auto refused = dem::test::run_command(cmd + " --plan 2>&1");
+  CHECK(refused.exit_code == 2);
+  CHECK_THAT(refused.out, Catch::Contains("sizes[1].named: 'i4s001' is not a set this calibration can draw"));
+  one_wide_row("named: [i3s006]").write(dir);
+  const auto unscored = dem::test::run_command(cmd + " --ledger-only 2>&1");
+  CHECK(unscored.exit_code == 2);
+  CHECK_THAT(unscored.out, Catch::Contains("sizes[1].named: 'i3s006' is not a set small scored in the 3 iterations"));
 }

@@ -31,7 +31,7 @@ std::pair<const Part*, const Part::Row*> judged_in(const std::vector<Part>& part
 // "set i3s004, the posterior's best prediction (all 7 rows: 0.21; this row: 0.45)": the
 // probabilities it gave that one sample agrees.
 std::string confirmed_words(const Part::Confirmed& c, const std::string& row) {
-  std::string out = "set " + c.set + (c.probe ? ", a new set where the posterior's prediction is best" : ", the posterior's best prediction among the sets scored") +
+  std::string out = "set " + c.set + validation::chosen_words(c.chosen) +
                     " (all " + std::to_string(c.rows.size()) + " rows: " + significant(c.probability, 2);
   for (const Part::Confirmed::Row& r : c.rows)
     if (r.name == row) out += "; this row: " + significant(r.probability, 2);

@@ -6,6 +6,21 @@
 
 namespace validation {
 
+std::optional<Choice> choice_from(const std::string& word) {
+  for (std::size_t i = 0; i < std::size(choice_names); ++i)
+    if (word == choice_names[i]) return static_cast<Choice>(i);
+  return std::nullopt;
+}
+
+std::string chosen_words(Choice chosen) {
+  switch (chosen) {
+    case Choice::best: return ", the posterior's best prediction among the sets scored";
+    case Choice::probe: return ", a new set where the posterior's prediction is best (run at the first size too)";
+    case Choice::named: return ", a set of the first size the calibration file names (run once the iterations end)";
+  }
+  return "";
+}
+
 namespace {
 
 std::optional<int> int_at(const nlohmann::json& j, const char* key) {
@@ -28,8 +43,10 @@ std::vector<PosteriorSummary::Part::Confirmed> confirmed_of(const nlohmann::json
   std::vector<PosteriorSummary::Part::Confirmed> out;
   if (!size.contains(k::confirmed)) return out;
   for (const nlohmann::json& c : size.at(k::confirmed)) {
-    PosteriorSummary::Part::Confirmed x{required<std::string>(c, k::set, where + "." + k::confirmed),
-                                        c.contains(k::probe) && required<bool>(c, k::probe, where + "." + k::confirmed),
+    const std::string word = required<std::string>(c, k::chosen, where + "." + k::confirmed);
+    const std::optional<Choice> chosen = choice_from(word);
+    if (!chosen) throw std::runtime_error(where + "." + k::confirmed + "." + k::chosen + ": '" + word + "' is not best, probe or named");
+    PosteriorSummary::Part::Confirmed x{required<std::string>(c, k::set, where + "." + k::confirmed), *chosen,
                                         required<double>(c, k::predicted_probability, where + "." + k::confirmed), {}};
     for (const nlohmann::json& r : required<nlohmann::json>(c, k::rows, where + "." + k::confirmed)) {
       PosteriorSummary::Part::Confirmed::Row row{required<std::string>(r, k::name, where + ".confirmed.rows"),

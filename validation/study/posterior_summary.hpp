@@ -22,8 +22,8 @@ inline constexpr const char* consistent = "consistent";
 inline constexpr const char* judged = "judged";
 inline constexpr const char* sizes = "sizes";                        // [{profile, densities, stamp, confirmed, ...}]
 inline constexpr const char* densities = "densities";
-inline constexpr const char* confirmed = "confirmed";                // [{set, predicted_probability, probe, rows: [...]}]
-inline constexpr const char* probe = "probe";                        // a new set at the reach's maximum (else the best scored set)
+inline constexpr const char* confirmed = "confirmed";                // [{set, chosen, predicted_probability, rows: [...]}]
+inline constexpr const char* chosen = "chosen";                      // how the set was chosen: choice_names
 inline constexpr const char* set = "set";
 inline constexpr const char* predicted_probability = "predicted_probability";
 inline constexpr const char* rows = "rows";
@@ -38,6 +38,16 @@ inline constexpr const char* points = "points";
 inline constexpr const char* largest_probability = "largest_probability";
 inline constexpr const char* largest_probability_all_rows = "largest_probability_all_rows";
 }  // namespace posterior_keys
+
+// How a set a larger size ran after its budget was chosen: the best of the sets scored (the
+// posterior's best prediction among them), a new set at the reach's maximum (a probe), or a set
+// of the first size the calibration file names for the size (run once the iterations end).
+enum class Choice { best, probe, named };
+inline constexpr const char* choice_names[] = {"best", "probe", "named"};  // posterior.json's words, in Choice's order
+// The Choice a word of choice_names stands for; none for another word.
+std::optional<Choice> choice_from(const std::string& word);
+// How a report names a Choice after the set's name: ", the posterior's best prediction among the sets scored".
+std::string chosen_words(Choice chosen);
 
 struct PosteriorSummary {
   std::string best_set;  // the best set's name
@@ -67,7 +77,7 @@ struct PosteriorSummary {
     std::vector<Row> rows;
     struct Confirmed {
       std::string set;
-      bool probe = false;      // a new set at the reach's maximum, else the best of the sets scored
+      Choice chosen = Choice::best;
       double probability = 0;  // the posterior's, that one sample agrees with every row below
       struct Row {
         std::string name;

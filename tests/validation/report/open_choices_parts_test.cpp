@@ -47,7 +47,7 @@ json posterior(int most, std::optional<bool> confirmed_consistent) {
                 {{"profile", "check"}, {"densities", {"medium"}}, {"stamp", stamp()},
                  {"reach", {{"points", 9000}, {"largest_probability_all_rows", 0.01},
                             {"rows", {{{"name", "e0, medium"}, {"largest_probability", 0.99}}, {{"name", medium_growth}, {"largest_probability", 0.04}}}}}},
-                 {"confirmed", {{{"set", "i4s002"}, {"predicted_probability", 0.21},
+                 {"confirmed", {{{"set", "i4s002"}, {"chosen", "best"}, {"predicted_probability", 0.21},
                                  {"rows", {{{"name", "e0, medium"}, {"predicted_probability", 0.7}}, medium_confirmed_row}}}}}}};
   p["largest_size_parts"] = {
       {{"densities", {"dense"}},
@@ -101,21 +101,28 @@ TEST_CASE("the paper study's misses among the calibration's parts: answered from
     CHECK(text.find("✅ consistent together") == std::string::npos);
     CHECK_THAT(text, Catch::Contains("largest probability that one sample agrees, at random points of its region"));  // a part has its reach
   }
-  SECTION("a probe (a new set at the reach's maximum) after the confirmed set: each named for what it is") {
+  SECTION("a probe and a named set after the confirmed set: each named for what it is; another choice refused") {
     json p = posterior(2, false);
-    p["sizes"][2]["confirmed"].push_back({{"set", "i5p2"}, {"probe", true}, {"predicted_probability", 0.01},
+    p["sizes"][2]["confirmed"].push_back({{"set", "i5p2"}, {"chosen", "probe"}, {"predicted_probability", 0.01},
                                            {"rows", {{{"name", medium_growth}, {"predicted_probability", 0.04}, {"consistent", false}}}}});
+    p["sizes"][2]["confirmed"].push_back({{"set", "i2s007"}, {"chosen", "named"}, {"predicted_probability", 0.002},
+                                           {"rows", {{{"name", medium_growth}, {"predicted_probability", 0.5}, {"consistent", false}}}}});
     write_json(file, p);
     const validation::PosteriorSummary summary = validation::read_posterior_summary(file.string());
-    REQUIRE(summary.parts[1].confirmed.size() == 2);
-    CHECK_FALSE(summary.parts[1].confirmed[0].probe);  // absent: the best scored set
-    CHECK(summary.parts[1].confirmed[1].probe);
+    REQUIRE(summary.parts[1].confirmed.size() == 3);
+    CHECK(summary.parts[1].confirmed[0].chosen == validation::Choice::best);
+    CHECK(summary.parts[1].confirmed[1].chosen == validation::Choice::probe);
+    CHECK(summary.parts[1].confirmed[2].chosen == validation::Choice::named);
     const std::string text = validation::open_choices_parts_text(report, rows);
     INFO(text);
     // (The cell is longer than a table's cells may be: it is given in a note below the table.)
     CHECK_THAT(text, Catch::Contains("not even in set i4s002, the posterior's best prediction among the sets scored (all 2 rows: 0.21; "
-                                     "this row: 0.30), not even in set i5p2, a new set where the posterior's prediction is best (all 1 "
-                                     "rows: 0.010; this row: 0.040)"));
+                                     "this row: 0.30), not even in set i5p2, a new set where the posterior's prediction is best (run at "
+                                     "the first size too) (all 1 rows: 0.010; this row: 0.040), not even in set i2s007, a set of the "
+                                     "first size the calibration file names (run once the iterations end) (all 1 rows: 0.0020; this row: 0.50)"));
+    p["sizes"][2]["confirmed"][2]["chosen"] = "guessed";
+    write_json(file, p);
+    CHECK_THROWS_WITH(validation::read_posterior_summary(file.string()), Catch::Contains("chosen: 'guessed' is not best, probe or named"));
   }
   SECTION("no part with its reach yet: no column for it") {
     json p = posterior(2, false);
