@@ -90,15 +90,20 @@ struct SizeOutcome {
     return static_cast<int>(std::count_if(confirmed.begin(), confirmed.end(), [&](const Confirmed& c) { return c.chosen == kind; }));
   }
   std::vector<Confirmed> confirmed;
-  // A confirmed set's verdict on each of its rows, on its samples at this size (none: the set not
-  // scored yet, or the row not judged).
-  std::vector<std::optional<bool>> verdicts(const Confirmed& c) const {
-    std::vector<std::optional<bool>> out(c.rows.size());
+  // A confirmed set's misfit of each of its rows, on its samples at this size (none: the set not
+  // scored yet, or the row without a value), and its verdict on each (none: not judged either).
+  std::vector<const RowMisfit*> measured(const Confirmed& c) const {
+    std::vector<const RowMisfit*> out(c.rows.size(), nullptr);
     const auto set = std::find_if(sets.begin(), sets.end(), [&](const ParameterSet& p) { return p.name == c.set; });
     if (set == sets.end() || !set->misfit.valued) return out;
     for (std::size_t i = 0; i < c.rows.size(); ++i)
       for (const RowMisfit& m : set->misfit.rows)
-        if (m.name == c.rows[i] && m.valued) out[i] = m.consistent;
+        if (m.name == c.rows[i] && m.valued) out[i] = &m;
+    return out;
+  }
+  std::vector<std::optional<bool>> verdicts(const Confirmed& c) const {
+    std::vector<std::optional<bool>> out;
+    for (const RowMisfit* m : measured(c)) out.push_back(m ? m->consistent : std::nullopt);
     return out;
   }
   int sets_in_iterations() const { return budget + confirm + probe; }

@@ -162,11 +162,14 @@ json confirmed_json(const SizeOutcome& s) {
   namespace keys = validation::posterior_keys;
   json out = json::array();
   for (const SizeOutcome::Confirmed& c : s.confirmed) {
-    const std::vector<std::optional<bool>> verdicts = s.verdicts(c);
+    const std::vector<const RowMisfit*> measured = s.measured(c);
     json rows = json::array();
     for (std::size_t i = 0; i < c.rows.size(); ++i) {
       json row{{keys::name, c.rows[i]}, {keys::predicted_probability, c.row_probability[i]}};
-      if (verdicts[i]) row[keys::consistent] = *verdicts[i];
+      if (const RowMisfit* m = measured[i]) {
+        if (m->consistent) row[keys::consistent] = *m->consistent;
+        if (m->model.size() == 1) row[keys::mean] = m->model[0], row[keys::sd] = m->model_sd[0], row[keys::samples] = m->samples;
+      }
       rows.push_back(row);
     }
     out.push_back({{keys::set, c.set}, {keys::chosen, validation::choice_names[static_cast<int>(c.chosen)]}, {keys::predicted_probability, c.probability}, {keys::rows, rows}});

@@ -224,6 +224,10 @@ TEST_CASE("calibrate runs the sets named for a part once the iterations end: in 
   CHECK(dense["confirmed"][0]["set"] == "i3s004");
   CHECK(dense["confirmed"][0]["chosen"] == "named");
   CHECK(dense["confirmed"][0]["rows"][0]["consistent"] == true);
+  // What its 2 samples gave: e0 of the dense packing, inside the row's region [0.3, 1.5].
+  CHECK(dense["confirmed"][0]["rows"][0]["samples"] == 2);
+  CHECK(dense["confirmed"][0]["rows"][0]["mean"].get<double>() > 0.3);
+  CHECK(dense["confirmed"][0]["rows"][0]["mean"].get<double>() < 1.5);
   const std::string section = dem::test::read_bytes((dir / "report" / "section.md").string());
   CHECK_THAT(section, Catch::Contains("set i3s004, a set of the first size the calibration file names"));
   // Another name added later: the plan replays every iteration and the first named set, and prices the new one alone.

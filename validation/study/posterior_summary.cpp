@@ -50,8 +50,12 @@ std::vector<PosteriorSummary::Part::Confirmed> confirmed_of(const nlohmann::json
                                         required<double>(c, k::predicted_probability, where + "." + k::confirmed), {}};
     for (const nlohmann::json& r : required<nlohmann::json>(c, k::rows, where + "." + k::confirmed)) {
       PosteriorSummary::Part::Confirmed::Row row{required<std::string>(r, k::name, where + ".confirmed.rows"),
-                                                 required<double>(r, k::predicted_probability, where + ".confirmed.rows"), std::nullopt};
+                                                 required<double>(r, k::predicted_probability, where + ".confirmed.rows"), std::nullopt,
+                                                 std::nullopt};
       if (r.contains(k::consistent) && r.at(k::consistent).is_boolean()) row.consistent = r.at(k::consistent).get<bool>();
+      if (r.contains(k::mean))
+        row.measured = {required<double>(r, k::mean, where + ".confirmed.rows"), required<double>(r, k::sd, where + ".confirmed.rows"),
+                        required<int>(r, k::samples, where + ".confirmed.rows")};
       x.rows.push_back(std::move(row));
     }
     out.push_back(std::move(x));

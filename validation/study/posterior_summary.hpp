@@ -26,7 +26,10 @@ inline constexpr const char* confirmed = "confirmed";                // [{set, c
 inline constexpr const char* chosen = "chosen";                      // how the set was chosen: choice_names
 inline constexpr const char* set = "set";
 inline constexpr const char* predicted_probability = "predicted_probability";
-inline constexpr const char* rows = "rows";
+inline constexpr const char* rows = "rows";                          // of a confirmed set: [{name, predicted_probability, consistent, mean, sd, samples}]
+inline constexpr const char* mean = "mean";                          // a confirmed set's row: its samples' mean at the size, once scored
+inline constexpr const char* sd = "sd";
+inline constexpr const char* samples = "samples";
 inline constexpr const char* largest_size_parts = "largest_size_parts";  // [{densities, rows_consistent}]
 inline constexpr const char* scored_sets = "scored_sets";
 inline constexpr const char* consistent_sets = "consistent_sets";
@@ -83,6 +86,11 @@ struct PosteriorSummary {
         std::string name;
         double probability = 0;
         std::optional<bool> consistent;  // on the set's samples (none: not scored yet, or not judged)
+        struct Measured {
+          double mean = 0, sd = 0;
+          int samples = 0;
+        };
+        std::optional<Measured> measured;  // the set's samples' mean and sd (none: not scored yet)
       };
       std::vector<Row> rows;
     };

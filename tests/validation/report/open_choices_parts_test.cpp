@@ -106,7 +106,8 @@ TEST_CASE("the paper study's misses among the calibration's parts: answered from
     p["sizes"][2]["confirmed"].push_back({{"set", "i5p2"}, {"chosen", "probe"}, {"predicted_probability", 0.01},
                                            {"rows", {{{"name", medium_growth}, {"predicted_probability", 0.04}, {"consistent", false}}}}});
     p["sizes"][2]["confirmed"].push_back({{"set", "i2s007"}, {"chosen", "named"}, {"predicted_probability", 0.002},
-                                           {"rows", {{{"name", medium_growth}, {"predicted_probability", 0.5}, {"consistent", false}}}}});
+                                           {"rows", {{{"name", medium_growth}, {"predicted_probability", 0.5}, {"consistent", false},
+                                                      {"mean", 0.0398}, {"sd", 0.0065}, {"samples", 3}}}}});
     write_json(file, p);
     const validation::PosteriorSummary summary = validation::read_posterior_summary(file.string());
     REQUIRE(summary.parts[1].confirmed.size() == 3);
@@ -119,7 +120,8 @@ TEST_CASE("the paper study's misses among the calibration's parts: answered from
     CHECK_THAT(text, Catch::Contains("not even in set i4s002, the posterior's best prediction among the sets scored (all 2 rows: 0.21; "
                                      "this row: 0.30), not even in set i5p2, a new set where the posterior's prediction is best (run at "
                                      "the first size too) (all 1 rows: 0.010; this row: 0.040), not even in set i2s007, a set of the "
-                                     "first size the calibration file names (run once the iterations end) (all 1 rows: 0.0020; this row: 0.50)"));
+                                     "first size the calibration file names (run once the iterations end) (all 1 rows: 0.0020; this row: 0.50; "
+                                     "measured 0.0398 ± 0.0065 on 3 samples)"));
     p["sizes"][2]["confirmed"][2]["chosen"] = "guessed";
     write_json(file, p);
     CHECK_THROWS_WITH(validation::read_posterior_summary(file.string()), Catch::Contains("chosen: 'guessed' is not best, probe or named"));
