@@ -467,7 +467,7 @@ std::optional<Outcome> run_calibration(const Calibration& c, const RunOptions& o
   if (named) {
     l.named_step = true;
     for (std::size_t k = 1; k < out.sizes.size(); ++k)
-      if (!step_size(l, k, last)) return plan_from(last, k);
+      if (!out.sizes[k].named.empty() && !step_size(l, k, last)) return plan_from(last, k);
     l.named_step = false;
     weigh_larger(l);
     out.iterations.back() = summarize(l, last, true);
