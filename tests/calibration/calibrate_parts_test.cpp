@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -37,6 +38,27 @@ dem::test::TinyCalibration one_wide_row(const std::string& then) {
           3, 2};
 }
 
+// A fresh folder test_tmp/<name> holding `tiny`'s files, and the command line that calibrates there.
+std::pair<fs::path, std::string> fresh(const std::string& name, const dem::test::TinyCalibration& tiny) {
+  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  tiny.write(dir);
+  return {dir, "cd '" + dir.string() + "' && '" + bin + "calibrate' cal.yaml -j 2 --threads 1"};
+}
+
+// Runs `command`, which must succeed (its output shown when it does not); its output.
+std::string succeeded(const std::string& command) {
+  const auto r = dem::test::run_command(command + " 2>&1");
+  INFO(r.out);
+  REQUIRE(r.exit_code == 0);
+  return r.out;
+}
+
+nlohmann::json posterior_in(const fs::path& dir) {
+  return nlohmann::json::parse(dem::test::read_bytes((dir / "report" / "posterior.json").string()));
+}
+
 }  // namespace
 
 TEST_CASE("calibrate with the largest size in parts: each part runs and is scored on its densities only", "[calibration][cli]") {
@@ -56,7 +78,7 @@ TEST_CASE("calibrate with the largest size in parts: each part runs and is score
   const auto run = dem::test::run_command(cmd + " 2>&1");
   INFO(run.out);
   REQUIRE(run.exit_code == 0);
-  const nlohmann::json p = nlohmann::json::parse(dem::test::read_bytes((dir / "report" / "posterior.json").string()));
+  const nlohmann::json p = posterior_in(dir);
   REQUIRE(p["sizes"].size() == 3);
   for (int k : {1, 2}) {
     const std::string density = k == 1 ? "dense" : "loose", other = k == 1 ? "loose" : "dense";
@@ -114,21 +136,13 @@ TEST_CASE("calibrate refuses a wrong parts key, naming it", "[calibration][cli]"
 }
 
 TEST_CASE("calibrate confirms a part's best prediction with one more set, and says what it predicted and what the set gave", "[calibration][cli]") {
-  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "calibrate_parts_confirm";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
   const dem::test::TinyCalibration tiny = one_wide_row("confirm: 1");
-  tiny.write(dir);
-  const std::string cmd = "cd '" + dir.string() + "' && '" + bin + "calibrate' cal.yaml -j 2 --threads 1";
-  const auto plan = dem::test::run_command(cmd + " --plan 2>&1");
-  INFO(plan.out);
-  REQUIRE(plan.exit_code == 0);
-  CHECK_THAT(plan.out, Catch::Contains("size large (dense) (lattice 5, 2 sample(s) a set): all 3 iterations at most (4 sets still to score)"));
-  const auto run = dem::test::run_command(cmd + " 2>&1");
-  INFO(run.out);
-  REQUIRE(run.exit_code == 0);
-  CHECK_THAT(run.out, Catch::Contains("to confirm the posterior there"));
-  const nlohmann::json p = nlohmann::json::parse(dem::test::read_bytes((dir / "report" / "posterior.json").string()));
+  const auto [dir, cmd] = fresh("calibrate_parts_confirm", tiny);
+  const std::string plan = succeeded(cmd + " --plan");
+  CHECK_THAT(plan, Catch::Contains("size large (dense) (lattice 5, 2 sample(s) a set): all 3 iterations at most (4 sets still to score)"));
+  const std::string run = succeeded(cmd);
+  CHECK_THAT(run, Catch::Contains("to confirm the posterior there"));
+  const nlohmann::json p = posterior_in(dir);
   const nlohmann::json& dense = p["sizes"][1];
   CHECK(dense["sets"] == 4);
   CHECK(dense["sets_at_most"] == 4);
@@ -155,18 +169,12 @@ TEST_CASE("calibrate confirms a part's best prediction with one more set, and sa
 
 TEST_CASE("calibrate probes a part at the reach's maximum: a new set run at both sizes, its pair in the discrepancy, replayed from the ledgers",
           "[calibration][cli]") {
-  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "calibrate_parts_probe";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
   // Iterations 1 and 2 run the dense part's 3 sets; iteration 3 its probe.
   const dem::test::TinyCalibration tiny = one_wide_row("probe: 1");
-  tiny.write(dir);
-  const std::string cmd = "cd '" + dir.string() + "' && '" + bin + "calibrate' cal.yaml -j 2 --threads 1";
-  const auto run = dem::test::run_command(cmd + " 2>&1");
-  INFO(run.out);
-  REQUIRE(run.exit_code == 0);
-  CHECK_THAT(run.out, Catch::Contains("runs the new set i3p1 at the reach's maximum"));
-  const nlohmann::json p = nlohmann::json::parse(dem::test::read_bytes((dir / "report" / "posterior.json").string()));
+  const auto [dir, cmd] = fresh("calibrate_parts_probe", tiny);
+  const std::string run = succeeded(cmd);
+  CHECK_THAT(run, Catch::Contains("runs the new set i3p1 at the reach's maximum"));
+  const nlohmann::json p = posterior_in(dir);
   // The first size ran it too (its 3 batches of 6, and the probe), and it is the dense part's fourth pair.
   CHECK(p["sizes"][0]["sets"] == 3 * 6 + 1);
   const nlohmann::json& dense = p["sizes"][1];
@@ -186,10 +194,8 @@ TEST_CASE("calibrate probes a part at the reach's maximum: a new set run at both
   CHECK_THAT(section, Catch::Contains("set i3p1, a new set where the posterior's prediction is best (run at the first size too)"));
   // The probe is chosen again, at the same point, from the same scores: a replay runs nothing.
   fs::remove_all(dir / "results");
-  const auto replay = dem::test::run_command(cmd + " --ledger-only 2>&1");
-  INFO(replay.out);
-  REQUIRE(replay.exit_code == 0);
-  const nlohmann::json again = nlohmann::json::parse(dem::test::read_bytes((dir / "report" / "posterior.json").string()));
+  const std::string replay = succeeded(cmd + " --ledger-only");
+  const nlohmann::json again = posterior_in(dir);
   CHECK(again["sizes"][1]["confirmed"] == dense["confirmed"]);
   // A part without rows has no reach to probe: refused, naming the key.
   dem::test::TinyCalibration curves_only = tiny;
@@ -202,20 +208,14 @@ TEST_CASE("calibrate probes a part at the reach's maximum: a new set run at both
 
 TEST_CASE("calibrate runs the sets named for a part once the iterations end: in its discrepancy, planned alone, replayed from the ledgers",
           "[calibration][cli]") {
-  const fs::path dir = fs::path(DEM_BINARY_DIR) / "test_tmp" / "calibrate_parts_named";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
   // The dense part chooses its 3 sets in iterations 1 and 2, among the sets scored by then: a set
   // of iteration 3 is not among them, so the part runs it after the iterations.
   const dem::test::TinyCalibration tiny = one_wide_row("named: [i3s004]");
-  tiny.write(dir);
-  const std::string cmd = "cd '" + dir.string() + "' && '" + bin + "calibrate' cal.yaml -j 2 --threads 1";
-  const auto run = dem::test::run_command(cmd + " 2>&1");
-  INFO(run.out);
-  REQUIRE(run.exit_code == 0);
-  CHECK_THAT(run.out, Catch::Contains("after the iterations: size large (dense) runs i3s004, named in the calibration file"));
-  CHECK_THAT(run.out, Catch::Contains("iteration 3 with the named sets"));
-  const nlohmann::json p = nlohmann::json::parse(dem::test::read_bytes((dir / "report" / "posterior.json").string()));
+  const auto [dir, cmd] = fresh("calibrate_parts_named", tiny);
+  const std::string run = succeeded(cmd);
+  CHECK_THAT(run, Catch::Contains("after the iterations: size large (dense) runs i3s004, named in the calibration file"));
+  CHECK_THAT(run, Catch::Contains("iteration 3 with the named sets"));
+  const nlohmann::json p = posterior_in(dir);
   const nlohmann::json& dense = p["sizes"][1];
   CHECK(p["sizes"][0]["sets"] == 3 * 6);  // no new set at the first size
   CHECK(dense["sets"] == 4);
@@ -233,26 +233,20 @@ TEST_CASE("calibrate runs the sets named for a part once the iterations end: in 
   // Another name added later: the plan replays every iteration and the first named set, and prices the new one alone.
   dem::test::TinyCalibration more = one_wide_row("named: [i3s004, i3s005]");
   more.write(dir);
-  const auto plan = dem::test::run_command(cmd + " --plan 2>&1");
-  INFO(plan.out);
-  REQUIRE(plan.exit_code == 0);
-  CHECK_THAT(plan.out, Catch::Contains("every iteration replays from the ledgers and the finished runs; then the sets named for a size run"));
-  CHECK_THAT(plan.out, Catch::Contains("size large (dense) (lattice 5, 2 sample(s) a set): the named sets: "));
-  CHECK_THAT(plan.out, Catch::Contains("(1 sets still to score)"));
+  const std::string plan = succeeded(cmd + " --plan");
+  CHECK_THAT(plan, Catch::Contains("every iteration replays from the ledgers and the finished runs; then the sets named for a size run"));
+  CHECK_THAT(plan, Catch::Contains("size large (dense) (lattice 5, 2 sample(s) a set): the named sets: "));
+  CHECK_THAT(plan, Catch::Contains("(1 sets still to score)"));
   // The first name replays from the ledgers: the same prediction, the same verdict, nothing run.
   tiny.write(dir);
   fs::remove_all(dir / "results");
-  const auto replay = dem::test::run_command(cmd + " --ledger-only 2>&1");
-  INFO(replay.out);
-  REQUIRE(replay.exit_code == 0);
-  const nlohmann::json again = nlohmann::json::parse(dem::test::read_bytes((dir / "report" / "posterior.json").string()));
+  const std::string replay = succeeded(cmd + " --ledger-only");
+  const nlohmann::json again = posterior_in(dir);
   CHECK(again["sizes"][1]["confirmed"] == dense["confirmed"]);
   // The first size's own posterior is the one without the named set, which has no effect there.
   one_wide_row("confirm: 0").write(dir);
-  const auto without = dem::test::run_command(cmd + " --ledger-only 2>&1");
-  INFO(without.out);
-  REQUIRE(without.exit_code == 0);
-  const nlohmann::json alone = nlohmann::json::parse(dem::test::read_bytes((dir / "report" / "posterior.json").string()));
+  const std::string without = succeeded(cmd + " --ledger-only");
+  const nlohmann::json alone = posterior_in(dir);
   CHECK(alone["parameters"][0]["first_size_only"] == again["parameters"][0]["first_size_only"]);
   CHECK(alone["sizes"][1]["sets"] == 3);
   // A name the calibration cannot draw is refused before anything runs, naming the key; a set
