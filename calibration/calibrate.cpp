@@ -22,12 +22,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string set_name(int iteration, int index) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "i%ds%03d", iteration, index);
-  return buf;
-}
-
 // What a run cost, from its result: its core-seconds (wall time x threads) and particle-steps;
 // a copy, or a run not finished: nothing.
 struct RunCost {
@@ -116,7 +110,7 @@ void start(Loop& l) {
   if (!c.sizes.empty() && !l.o.profile.empty())
     throw dem::ConfigError("--profile " + l.o.profile + " is given, but " + c.file + " names its profiles in sizes: leave --profile out");
   std::vector<Size> sizes = c.sizes;
-  if (sizes.empty()) sizes.push_back({l.o.profile.empty() ? l.study.default_profile().name : l.o.profile, 0, 0, 0, 0, {}, {}});
+  if (sizes.empty()) sizes.emplace_back().profile = l.o.profile.empty() ? l.study.default_profile().name : l.o.profile;
   for (std::size_t k = 0; k < sizes.size(); ++k) {
     const pipeline::Profile* profile = nullptr;
     try {
@@ -188,7 +182,7 @@ void draw_batch(Loop& l, int it) {
   l.drawn.push_back(l.c.batch);
   for (int k = 0; k < l.c.batch; ++k) {
     ParameterSet s;
-    s.name = set_name(it, k + 1);
+    s.name = drawn_set_name(it, k + 1);
     s.iteration = it;
     s.u = batch[static_cast<std::size_t>(k)];
     sets.push_back(std::move(s));

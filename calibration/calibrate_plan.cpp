@@ -82,13 +82,12 @@ void print_plan(const Loop& l, std::size_t k, int it, IterationPlan& p, int left
   const int jobs = l.o.jobs;
   const double first = pipeline::estimated_wall_time_s(runs, cost, jobs, throughput);
   // This iteration's runs still to run, then each set after it at the average's cost.
-  const int unscored_here = static_cast<int>(std::count_if(l.out.sizes[k].sets.begin(), l.out.sizes[k].sets.end(),
-                                                           [&](const ParameterSet& s) { return s.iteration == it && s.misfit.rows.empty(); }));
+  // This iteration's sets not scored yet; of those, the ones whose every run has finished here
+  // (scored on them without running anything).
+  int unscored_here = 0, ready = 0;
+  for (const ParameterSet& s : l.out.sizes[k].sets)
+    if (s.iteration == it && s.misfit.rows.empty()) ++unscored_here, ready += !p.unfinished.count(s.name);
   const double total = left > 0 ? shared + first_own + own_per_set * std::max(0, left - unscored_here) : 0;
-  // Of those, the sets whose every run has finished here: scored on them without running anything.
-  const int ready = static_cast<int>(std::count_if(l.out.sizes[k].sets.begin(), l.out.sizes[k].sets.end(), [&](const ParameterSet& s) {
-    return s.iteration == it && s.misfit.rows.empty() && !p.unfinished.count(s.name);
-  }));
   const SizeOutcome& so = l.out.sizes[k];
   const std::string what = l.out.sizes.size() > 1 ? "size " + so.label() + " (lattice " + std::to_string(size.profile->lattice) + ", " +
                                                         std::to_string(so.seeds.size()) + " sample(s) a set): "

@@ -155,7 +155,7 @@ bool probe(Loop& l, std::size_t k, int it) {
   const Reach reached = reach(*l.surface, larger, rows, reach_points);
   if (reached.all_best.size() == 0) return false;
   ParameterSet s;
-  s.name = "i" + std::to_string(it) + "p" + std::to_string(k), s.u = reached.all_best, s.iteration = it, s.drawn = false;
+  s.name = probe_set_name(it, k), s.u = reached.all_best, s.iteration = it, s.drawn = false;
   const SizeOutcome::Confirmed c = predicted(l, k, s, validation::Choice::probe);
   std::printf("[calibrate] iteration %d: size %s runs the new set %s at the reach's maximum, where the posterior expects one sample to "
               "agree with all %zu of its rows with probability %.3g (best of %d points; %zu of at most %d there); the first size runs it too\n",

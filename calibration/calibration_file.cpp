@@ -38,16 +38,6 @@ void read_readings(dem::Section& s, Parameter& p) {
   p.prior = Parameter::Prior::Values;
 }
 
-// Whether `name` is one the calibration can give a set of the first size: i<it>s<n> (a drawn set:
-// it <= max_iterations, n <= batch) or i<it>p<k> (a probe of size k, one of at most 64). Whether
-// that set was scored is known once the iterations end.
-bool drawable(const Calibration& c, const std::string& name) {
-  int it = 0, n = 0;
-  char kind = 0, rest = 0;
-  if (std::sscanf(name.c_str(), "i%d%c%d%c", &it, &kind, &n, &rest) != 3 || (kind != 's' && kind != 'p')) return false;
-  return it >= 1 && it <= c.max_iterations && n >= 1 && n <= (kind == 'p' ? 64 : c.batch);
-}
-
 // `sizes: [{profile: small}, {profile: paper, sets: 8, per_iteration: 3}]`: the study's profiles the
 // sets run at, the smallest (every set) first.
 void read_sizes(dem::Section& root, Calibration& c) {
@@ -92,7 +82,7 @@ void read_sizes(dem::Section& root, Calibration& c) {
           if (!name.IsScalar()) s.fail("named", "holds an entry that is not a set name");
           size.named.push_back(name.as<std::string>());
           if (!seen.insert(size.named.back()).second) s.fail("named", "names '" + size.named.back() + "' twice");
-          if (!drawable(c, size.named.back()))
+          if (!can_name_set(c, size.named.back()))
             s.fail("named", "'" + size.named.back() + "' is not a set this calibration can draw: i<iteration>s<number> (iteration 1 to " +
                                 std::to_string(c.max_iterations) + ", number 1 to " + std::to_string(c.batch) +
                                 ", e.g. i2s007) or i<iteration>p<size> (a probe)");
@@ -110,6 +100,24 @@ void read_sizes(dem::Section& root, Calibration& c) {
 }
 
 }  // namespace
+
+std::string drawn_set_name(int iteration, int number) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "i%ds%03d", iteration, number);
+  return buf;
+}
+
+std::string probe_set_name(int iteration, std::size_t size) { return "i" + std::to_string(iteration) + "p" + std::to_string(size); }
+
+bool can_name_set(const Calibration& c, const std::string& name) {
+  int it = 0, n = 0;
+  char kind = 0;
+  if (std::sscanf(name.c_str(), "i%d%c%d", &it, &kind, &n) != 3 || it < 1 || it > c.max_iterations || n < 1) return false;
+  // The name the calibration would give those numbers, character for character (i2s7 is not i2s007).
+  if (kind == 's') return n <= c.batch && name == drawn_set_name(it, n);
+  // A probe's size: whether it ran one is known once the iterations end, as for any set.
+  return kind == 'p' && name == probe_set_name(it, static_cast<std::size_t>(n));
+}
 
 Calibration read_calibration(const std::string& file) {
   dem::Section root = dem::Section::load_file(file);

@@ -51,6 +51,14 @@ struct Calibration {
   std::vector<Size> sizes;
 };
 
+// How a calibration names the first size's sets: i<iteration>s<number> for a drawn one (the number
+// in three digits: i2s007), i<iteration>p<size> for a probe run for size k (i6p2).
+std::string drawn_set_name(int iteration, int number);
+std::string probe_set_name(int iteration, std::size_t size);
+// Whether `name` is one of those that calibration `c` can give (iteration <= max_iterations, number
+// <= batch, size < its sizes); whether that set was scored is known once the iterations end.
+bool can_name_set(const Calibration& c, const std::string& name);
+
 // Reads and checks the file; errors name the file, the key and the allowed values.
 Calibration read_calibration(const std::string& file);
 

@@ -255,6 +255,8 @@ TEST_CASE("calibrate runs the sets named for a part once the iterations end: in 
   const auto refused = dem::test::run_command(cmd + " --plan 2>&1");
   CHECK(refused.exit_code == 2);
   CHECK_THAT(refused.out, Catch::Contains("sizes[1].named: 'i4s001' is not a set this calibration can draw"));
+  one_wide_row("named: [i3s4]").write(dir);  // the set is i3s004
+  CHECK_THAT(dem::test::run_command(cmd + " --plan 2>&1").out, Catch::Contains("sizes[1].named: 'i3s4' is not a set this calibration can draw"));
   one_wide_row("named: [i3s006]").write(dir);
   const auto unscored = dem::test::run_command(cmd + " --ledger-only 2>&1");
   CHECK(unscored.exit_code == 2);
