@@ -136,16 +136,11 @@ struct PairForces {
   std::vector<StepSums> chunk_sums;       // per pair chunk; every chunk writes its own entry
   std::vector<MotionSums> motion_sums;    // per chunk of particles
   std::vector<Sum4> net_force;            // per particle: the scattered sums, zero between steps
-  // Laws with contact dashpots: per pair, the dashpots' force on `second` [N] (0 out of contact)
-  // and the branch vector [m] of this evaluation, for the second half of their dissipation
-  // (dashpot_second_half, below).
-  PairComponents dashpot_force, dashpot_branch;
-  // Laws that rotate: a_i (n x F_d) and a_j (n x F_d), a the lever arms, n the normal: the
-  // dashpot force's share in the power of the spins, F_d . ((a_i w_i + a_j w_j) x n) =
-  // w_i . a_i (n x F_d) + w_j . a_j (n x F_d), so that the second half needs no geometry again.
-  PairComponents dashpot_spin_i, dashpot_spin_j;
+  // Laws with contact dashpots: per pair, the dashpots' force on `second` [N] of this evaluation
+  // (0 out of contact), for the second half of their dissipation (dashpot_second_half, below).
+  PairComponents dashpot_force;
   // Per pair chunk, when the pair loop booked the evaluation before's second half
-  // (PairLoop::DashpotOut::book_previous_half): -sum F_d . u(n-1/2) of its pairs [W].
+  // (PairLoop::DashpotOut::previous): -sum F_d . u(n-1/2) of its pairs [W].
   std::vector<double> previous_dashpot_sums;
   // Laws whose dashpot coefficients depend on the masses only (Law::dashpot_per_pair): per pair,
   // c_n = 2 zeta sqrt(m* k_n) [kg/s] and c_t / dt [kg/s^2] (frictional laws), and the pair list
@@ -162,6 +157,17 @@ struct PairForces {
 // even at 216,000 and 3 to 9 % slower at 512,000. With torques too (mu = 0.5) it was 8 % slower
 // at 8,000 spheres and no faster at 64,000 (docs/performance.md).
 inline constexpr std::size_t scatter_max_particles = 150'000;
+
+// The second half of the evaluation before's dashpot work, booked by the next pair loop
+// (dashpot_second_half): whether to book it, and the map from a branch vector of the cell now to
+// the cell of that evaluation, back = H(n) H(n+1)^-1 (upper triangular; Simulation keeps it). The
+// update moved each particle's fractional position by H(n)^-1 v dt, so the branch vector of that
+// evaluation is l(n) = back l(n+1) - (v_j - v_i) dt: its normal and lever arms come back without
+// being stored.
+struct PreviousHalf {
+  bool book = false;
+  Mat3 back = Mat3::Identity();
+};
 
 // The inputs and outputs of the pair loop, as raw pointers (the arrays do not alias, and the
 // compiler keeps them in registers). The pair loop itself (dynamics/kernel_simd_pairs.inc) is
@@ -189,28 +195,25 @@ struct PairLoop {
   Vec3* __restrict torque_j;
   Sum4* __restrict scattered = nullptr;  // set: add the forces into these particle sums instead (see PairForces)
   const double* __restrict mass;  // laws with contact dashpots (m*); last, so the other laws' loop reads the fields it did
-  // Laws with contact dashpots: where the pair loop leaves each pair's dashpot force and branch
-  // vector (PairForces); no member at all for the other laws.
+  // Laws with contact dashpots: where the pair loop leaves each pair's dashpot force
+  // (PairForces); no member at all for the other laws.
   struct DashpotOut {
     ComponentsAt<double> force;
-    ComponentsAt<double> branch;
-    ComponentsAt<double> spin_i;  // PairForces::dashpot_spin_i, _j (laws that rotate)
-    ComponentsAt<double> spin_j;
     const double* __restrict c_n;          // the per-pair coefficients (Law::dashpot_per_pair), else null
     const double* __restrict c_t_over_dt;
     // Book the second half of the evaluation before's dashpot work (dashpot_second_half) while
-    // this loop has the velocities of the half step after it: from the force and branch vector
-    // still stored for each pair, before this evaluation's replace them, into
-    // DashpotSums::previous (then PairForces::previous_dashpot_sums). Only while the pair list is
-    // the one they were stored for.
-    bool book_previous_half = false;
+    // this loop has the velocities of the half step after it: from the force still stored for
+    // each pair, before this evaluation's replaces it, and that evaluation's geometry rebuilt
+    // from this one's (PreviousHalf), into DashpotSums::previous (then
+    // PairForces::previous_dashpot_sums). Only while the pair list is the one it was stored for.
+    PreviousHalf previous;
   };
   struct NoDashpot {};
   [[no_unique_address]] std::conditional_t<Law::damped, DashpotOut, NoDashpot> dashpot_out;
 
   // Sizes the outputs and points at them.
   PairLoop(const Law& law_, const Particles& p, const PeriodicCell& cell_, const PairList& pairs, ContactHistory& history,
-           const CellRates& rates_, double dt_, PairForces& out, bool book_previous_half = false)
+           const CellRates& rates_, double dt_, PairForces& out, const PreviousHalf& previous = {})
       : law(law_), cell(cell_), rates(rates_), dt(dt_) {
     // One spare entry, zero: the vectorised update reads each entry as four doubles (the fourth
     // is the next entry's first, and is dropped), so the last pair's read stays inside the array.
@@ -238,10 +241,7 @@ struct PairLoop {
     torque_j = out.torque_j.data();
     if constexpr (Law::damped) {
       out.dashpot_force.resize(pairs.size());
-      out.dashpot_branch.resize(pairs.size());
-      if constexpr (Law::rotates) out.dashpot_spin_i.resize(pairs.size()), out.dashpot_spin_j.resize(pairs.size());
-      dashpot_out = {components_at(out.dashpot_force), components_at(out.dashpot_branch), components_at(out.dashpot_spin_i),
-                     components_at(out.dashpot_spin_j), out.dashpot_c_n.data(), out.dashpot_c_t_over_dt.data(), book_previous_half};
+      dashpot_out = {components_at(out.dashpot_force), out.dashpot_c_n.data(), out.dashpot_c_t_over_dt.data(), previous};
     }
   }
 };
@@ -453,26 +453,28 @@ MotionSums total_of_chunks(const std::vector<MotionSums>& chunk_sums, bool wrapp
 // Instantiated for every law of AnyContactLaw, both damping forms, orthorhombic and sheared
 // (dynamics/kernel_simd.cpp).
 //
-// Laws with contact dashpots, `book_previous_half`: the loop also books the second half of the
+// Laws with contact dashpots, `previous.book`: the loop also books the second half of the
 // evaluation before's dashpot work (PairLoop::DashpotOut), into out.previous_dashpot_sums: added
 // in chunk order, the same bits as dashpot_second_half would have given after that step.
 template <class Law, class DampingPolicy, bool Sheared>
 MotionSums forces_and_motion(int simd_lanes, const Law& law, const DampingPolicy& damping, Particles& p,
                              const PeriodicCell& cell, const PairList& pairs, ContactHistory& history,
                              const PairIndex& index, const CellRates& rates, double dt, PairForces& out,
-                             StepSums& sums, std::vector<Vec3>& force, bool book_previous_half = false);
+                             StepSums& sums, std::vector<Vec3>& force, const PreviousHalf& previous = {});
 
 // What the second half of the contact dashpots' work reads (dashpot_second_half), as raw pointers.
 struct DashpotWork {
-  ComponentsAt<const double> force;   // PairForces::dashpot_force
-  ComponentsAt<const double> branch;  // PairForces::dashpot_branch
-  ComponentsAt<const double> spin_i;  // PairForces::dashpot_spin_i, _j (laws that rotate)
-  ComponentsAt<const double> spin_j;
+  ComponentsAt<const double> force;  // PairForces::dashpot_force
   const std::uint32_t* __restrict first;
   const std::uint32_t* __restrict second;
+  const Vec3* __restrict s;
+  const double* __restrict radius;
   const Vec3* __restrict v;
   const Vec3* __restrict omega;
-  Vec3 axial, shear;  // the cell's rates of the coming step (CellRates)
+  Vec3 lengths, tilts;  // the cell of the coming evaluation (PeriodicCell)
+  Vec3 axial, shear;    // the cell's rates of the coming step (CellRates)
+  Mat3 back;            // PreviousHalf::back
+  double dt;
 };
 
 // Laws with contact dashpots: the second half of their work in the step just taken [J]. The
@@ -482,16 +484,18 @@ struct DashpotWork {
 // velocity gradient of the coming step, as the next evaluation's closing speed takes it). That is
 // the work the time-centred kinetic energy sees: the leapfrog changes 1/2 m v(n-1/2).v(n+1/2) by
 // dt v(n-1/2).(F_n + F_(n-1))/2, i.e. by dt F_n.(v(n-1/2) + v(n+1/2))/2 summed over the steps.
-// The pair loop books the half with v(n-1/2); this is the half with v(n+1/2), from the forces and
-// branch vectors it stored, `simd_lanes` pairs at a time (the same bits at any width: each pair's
-// term is subtracted from its chunk's sum in pair order, the chunks' sums added in chunk order, the
-// pair chunks of the step's sweep: so the next step's pair loop can book it instead, with the same
-// bits, while it has the velocities in hand; forces_and_motion). Booking dt F_d . u(n-1/2) alone leaves
-// c dt/4 (u_end^2 - u_start^2) open per contact, an O(dt) closure error; with both halves what is
-// left is the leapfrog's O(dt^2) (energy_balance_test.cpp). Instantiated for the laws with
-// dashpots (dynamics/kernel_simd_dashpot.cpp).
+// The pair loop books the half with v(n-1/2); this is the half with v(n+1/2), from the forces it
+// stored and this evaluation's branch vector l, normal n and lever arms a rebuilt from the
+// positions now (PreviousHalf), `simd_lanes` pairs at a time (the same bits at any width: each
+// pair's term is subtracted from its chunk's sum in pair order, the chunks' sums added in chunk
+// order, the pair chunks of the step's sweep: so the next step's pair loop can book it instead,
+// with the same bits, while it has the velocities in hand; forces_and_motion). Booking
+// dt F_d . u(n-1/2) alone leaves c dt/4 (u_end^2 - u_start^2) open per contact, an O(dt) closure
+// error; with both halves what is left is the leapfrog's O(dt^2) (energy_balance_test.cpp), which
+// the arms of the next evaluation instead of this one's would spoil with an O(|w| dt) error
+// (docs/performance.md). Instantiated for the laws with dashpots (dynamics/kernel_simd_dashpot.cpp).
 template <class Law>
-double dashpot_second_half(int simd_lanes, const Particles& p, const PairList& pairs, const PairIndex& index, const PairForces& out,
-                           const CellRates& rates, double dt);
+double dashpot_second_half(int simd_lanes, const Particles& p, const PeriodicCell& cell, const PairList& pairs, const PairIndex& index,
+                           const PairForces& out, const CellRates& rates, const Mat3& back, double dt);
 
 }  // namespace dem

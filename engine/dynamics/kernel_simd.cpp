@@ -502,8 +502,8 @@ template <class Law, class DampingPolicy, bool Sheared>
 MotionSums forces_and_motion(int simd_lanes, const Law& law, const DampingPolicy& damping, Particles& p,
                              const PeriodicCell& cell, const PairList& pairs, ContactHistory& history,
                              const PairIndex& index, const CellRates& rates, double dt, PairForces& out,
-                             StepSums& sums, std::vector<Vec3>& force, bool book_previous_half) {
-  PairLoop<Law, Sheared> gathered_pairs(law, p, cell, pairs, history, rates, dt, out, book_previous_half);
+                             StepSums& sums, std::vector<Vec3>& force, const PreviousHalf& previous) {
+  PairLoop<Law, Sheared> gathered_pairs(law, p, cell, pairs, history, rates, dt, out, previous);
   ParticleLoop<Law::rotates, DampingPolicy, Sheared> gathered_moves(damping, p, cell, index, out, force, dt);
   // On one thread, a law without torques adds into the particles' sums (PairForces), up to
   // `scatter_max_particles`.
@@ -541,12 +541,8 @@ MotionSums forces_and_motion(int simd_lanes, const Law& law, const DampingPolicy
   return total_of_chunks(out.motion_sums, wrapped);
 }
 
-template <class Law>
-double dashpot_second_half(int simd_lanes, const Particles& p, const PairList& pairs, const PairIndex& index, const PairForces& out,
-                           const CellRates& rates, double dt) {
-  const DashpotWork w{components_at(out.dashpot_force), components_at(out.dashpot_branch), components_at(out.dashpot_spin_i),
-                      components_at(out.dashpot_spin_j),
-                      pairs.first.data(), pairs.second.data(), p.v.data(), p.omega.data(), rates.axial, rates.shear};
+template <class Law, bool Sheared>
+double dashpot_second_half_as(int simd_lanes, const DashpotWork& w, const PairIndex& index) {
   // The pair chunks of sweep_chunks, each summed from zero, then added in chunk order: what the
   // next step's pair loop books (total_of_chunks).
   double total = 0;
@@ -554,11 +550,21 @@ double dashpot_second_half(int simd_lanes, const Particles& p, const PairList& p
     const auto [begin, end] = pair_chunk_range(index, c);
     double lost = 0;
     std::size_t k = begin;  // pairs before k done by the vector loop
-    if (simd_lanes == 8) k = begin + (end - begin) / 8 * 8, lost = avx512::dashpot_work<Law>(w, begin, k, lost);
-    if (simd_lanes == 4) k = begin + (end - begin) / 4 * 4, lost = avx2::dashpot_work<Law>(w, begin, k, lost);
-    total += one_lane::dashpot_work<Law>(w, k, end, lost);
+    if (simd_lanes == 8) k = begin + (end - begin) / 8 * 8, lost = avx512::dashpot_work<Law, Sheared>(w, begin, k, lost);
+    if (simd_lanes == 4) k = begin + (end - begin) / 4 * 4, lost = avx2::dashpot_work<Law, Sheared>(w, begin, k, lost);
+    total += one_lane::dashpot_work<Law, Sheared>(w, k, end, lost);
   }
-  return 0.5 * dt * total;
+  return total;
+}
+
+template <class Law>
+double dashpot_second_half(int simd_lanes, const Particles& p, const PeriodicCell& cell, const PairList& pairs, const PairIndex& index,
+                           const PairForces& out, const CellRates& rates, const Mat3& back, double dt) {
+  const DashpotWork w{components_at(out.dashpot_force), pairs.first.data(), pairs.second.data(), p.s.data(), p.radius.data(),
+                      p.v.data(), p.omega.data(), cell.lengths(), cell.tilts(), rates.axial, rates.shear, back, dt};
+  // The next evaluation's kernel: sheared if the cell is tilted or shearing (Simulation's step).
+  const bool sheared = cell.sheared() || rates.shears();
+  return 0.5 * dt * (sheared ? dashpot_second_half_as<Law, true>(simd_lanes, w, index) : dashpot_second_half_as<Law, false>(simd_lanes, w, index));
 }
 
 // forces_and_motion for every law a scene can choose, both damping forms, orthorhombic and

@@ -48,7 +48,7 @@ MotionSums total_of_chunks(const std::vector<MotionSums>& chunk_sums, bool wrapp
 struct Simulation::Kernel {
   virtual ~Kernel() = default;
   // Forces (into sims.sums_ and the pair forces) and the update of one step; `book_previous_half`:
-  // also the second half of the step before's dashpot work (forces_and_motion).
+  // also the second half of the step before's dashpot work (forces_and_motion, with cell_back_).
   virtual MotionSums step(Simulation& sim, bool book_previous_half) = 0;
   // Laws with contact dashpots: the second half of their dissipation in the step just taken [J]
   // (dashpot_second_half); 0 for the other laws.
@@ -69,7 +69,8 @@ struct KernelImpl final : Simulation::Kernel {
   }
   double dashpot_second_half(const Simulation& s) const override {
     if constexpr (Law::damped) {
-      return dem::dashpot_second_half<Law>(simd, s.particles_, s.list_.pairs(), s.list_.index(), *s.pair_forces_, s.rates_, s.dt_);
+      return dem::dashpot_second_half<Law>(simd, s.particles_, s.cell_, s.list_.pairs(), s.list_.index(), *s.pair_forces_, s.rates_,
+                                            s.cell_back_, s.dt_);
     } else {
       return 0.0;
     }
@@ -82,7 +83,7 @@ struct KernelImpl final : Simulation::Kernel {
     }
     return forces_and_motion<Law, DampingPolicy, Sheared>(simd, law, damping, s.particles_, s.cell_, s.list_.pairs(),
                                                           s.history_, s.list_.index(), s.rates_, s.dt_, *s.pair_forces_,
-                                                          s.sums_, s.force_, book_previous_half);
+                                                          s.sums_, s.force_, PreviousHalf{book_previous_half, s.cell_back_});
   }
 };
 
@@ -237,7 +238,9 @@ void Simulation::advance(const std::function<CellRates()>& rates) {
         << time() << " s): the run is unstable (time step too large for the stiffness?)";
     throw NonFiniteError(msg.str());
   }
+  const Mat3 evaluated = cell_.matrix();
   cell_.deform(rates_, dt_);
+  cell_back_ = evaluated * cell_.matrix().inverse();  // before a remap: a branch vector is the same in either
   if (remap_cell_ && cell_.sheared()) remap_cell();
   ++step_;
 }

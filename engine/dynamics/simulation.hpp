@@ -177,6 +177,9 @@ class Simulation {
   // loop books it (it has the velocities in hand), or dashpot_second_half before the pair list
   // changes; energy() adds it to what it returns. Both give the same bits.
   bool dashpot_half_pending_ = false;
+  // H(n) H(n+1)^-1 of the last step's deformation, before any remap (PreviousHalf::back): the
+  // dashpots' pending half rebuilds its evaluation's branch vectors with it.
+  Mat3 cell_back_ = Mat3::Identity();
   void book_pending_dashpot_half();
 };
 
