@@ -205,7 +205,10 @@ int tool_main(int argc, char** argv) {
     for (const std::string& o : outs) locks.push_back(pipeline::lock_results_folder(o));
     for (std::size_t i = 0; i < plans.size(); ++i) {
       pipeline::write_scenes(plans[i].runs);
-      pipeline::write_manifest(plans[i].runs, studies[i], outs[i], version);
+      // A plan runs nothing, so it lists no runs: a runs.tsv is what tells the other tools (validate,
+      // compare-runs, report) that a study ran here, and one written by a plan made the report take
+      // a folder of scenes for the study's results.
+      if (!plan_only) pipeline::write_manifest(plans[i].runs, studies[i], outs[i], version);
       if (!plan_only)
         std::printf("[pipeline] study '%s', profile %s, engine %s, results in %s\n", studies[i].name.c_str(),
                     profiles[i].c_str(), version.c_str(), outs[i].c_str());

@@ -25,6 +25,9 @@ planned() {  # the particle-steps and basis the plan gives the run: "6.8e+08 mod
 study ""
 read -r plan basis < <(planned)
 [ "$basis" = model ] || { echo "plan: basis '$basis', expected model"; cat "$work/plan.txt"; exit 1; }
+# A plan runs nothing and lists nothing: no runs.tsv for the other tools to take as a study that ran.
+[ -d "$work/out/quick/scenes" ] || { echo "plan: no resolved scenes in $work/out/quick"; exit 1; }
+[ ! -e "$work/out/quick/runs.tsv" ] || { echo "plan: wrote $work/out/quick/runs.tsv"; exit 1; }
 "$bin/pipeline" "$work/study.yaml" --profile quick -j 1 --threads 1 > "$work/run.txt" 2>&1 || { cat "$work/run.txt"; exit 1; }
 result=$work/out/quick/seed2/dense_prepare.h5
 steps=$(h5dump -a /state/step "$result" | awk '/\(0\)/ { print $2 }')
