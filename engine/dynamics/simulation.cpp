@@ -238,9 +238,13 @@ void Simulation::advance(const std::function<CellRates()>& rates) {
         << time() << " s): the run is unstable (time step too large for the stiffness?)";
     throw NonFiniteError(msg.str());
   }
-  const Mat3 evaluated = cell_.matrix();
-  cell_.deform(rates_, dt_);
-  cell_back_ = evaluated * cell_.matrix().inverse();  // before a remap: a branch vector is the same in either
+  if (contact_dashpots_) {  // their pending half rebuilds this evaluation's branch vectors (PreviousHalf)
+    const Mat3 evaluated = cell_.matrix();
+    cell_.deform(rates_, dt_);
+    cell_back_ = evaluated * cell_.matrix().inverse();  // before a remap: a branch vector is the same in either
+  } else {
+    cell_.deform(rates_, dt_);
+  }
   if (remap_cell_ && cell_.sheared()) remap_cell();
   ++step_;
 }
