@@ -139,6 +139,10 @@ struct PairForces {
   // Laws with contact dashpots: per pair, the dashpots' force on `second` [N] of this evaluation
   // (0 out of contact), for the second half of their dissipation (dashpot_second_half, below).
   PairComponents dashpot_force;
+  // Laws with contact dashpots that rotate: per pair, the centre distance |l| of this evaluation
+  // [m], from which the second half takes that evaluation's lever arms over |l| with one division
+  // (no square root, one division where three were).
+  std::vector<double> dashpot_distance;
   // Per pair chunk, when the pair loop booked the evaluation before's second half
   // (PairLoop::DashpotOut::previous): -sum F_d . u(n-1/2) of its pairs [W].
   std::vector<double> previous_dashpot_sums;
@@ -199,6 +203,7 @@ struct PairLoop {
   // (PairForces); no member at all for the other laws.
   struct DashpotOut {
     ComponentsAt<double> force;
+    double* __restrict distance;           // PairForces::dashpot_distance (laws that rotate)
     const double* __restrict c_n;          // the per-pair coefficients (Law::dashpot_per_pair), else null
     const double* __restrict c_t_over_dt;
     // Book the second half of the evaluation before's dashpot work (dashpot_second_half) while
@@ -241,7 +246,9 @@ struct PairLoop {
     torque_j = out.torque_j.data();
     if constexpr (Law::damped) {
       out.dashpot_force.resize(pairs.size());
-      dashpot_out = {components_at(out.dashpot_force), out.dashpot_c_n.data(), out.dashpot_c_t_over_dt.data(), previous};
+      if constexpr (Law::rotates) out.dashpot_distance.resize(pairs.size());
+      dashpot_out = {components_at(out.dashpot_force), out.dashpot_distance.data(), out.dashpot_c_n.data(),
+                     out.dashpot_c_t_over_dt.data(), previous};
     }
   }
 };
@@ -465,6 +472,7 @@ MotionSums forces_and_motion(int simd_lanes, const Law& law, const DampingPolicy
 // What the second half of the contact dashpots' work reads (dashpot_second_half), as raw pointers.
 struct DashpotWork {
   ComponentsAt<const double> force;  // PairForces::dashpot_force
+  const double* __restrict distance;  // PairForces::dashpot_distance
   const std::uint32_t* __restrict first;
   const std::uint32_t* __restrict second;
   const Vec3* __restrict s;

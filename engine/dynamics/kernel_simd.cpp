@@ -560,7 +560,7 @@ double dashpot_second_half_as(int simd_lanes, const DashpotWork& w, const PairIn
 template <class Law>
 double dashpot_second_half(int simd_lanes, const Particles& p, const PeriodicCell& cell, const PairList& pairs, const PairIndex& index,
                            const PairForces& out, const CellRates& rates, const Mat3& back, double dt) {
-  const DashpotWork w{components_at(out.dashpot_force), pairs.first.data(), pairs.second.data(), p.s.data(), p.radius.data(),
+  const DashpotWork w{components_at(out.dashpot_force), out.dashpot_distance.data(), pairs.first.data(), pairs.second.data(), p.s.data(), p.radius.data(),
                       p.v.data(), p.omega.data(), cell.lengths(), cell.tilts(), rates.axial, rates.shear, back, dt};
   // The next evaluation's kernel: sheared if the cell is tilted or shearing (Simulation's step).
   const bool sheared = cell.sheared() || rates.shears();
