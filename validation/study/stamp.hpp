@@ -19,7 +19,9 @@ struct Stamp {
   std::string date;      // the day (UTC, YYYY-MM-DD) its last result was written
   std::string engine_source;      // the engine source hash every result was checked to be made by ("": not recorded)
   long other_engine_results = 0;  // results not made by engine_source from their manifest's inputs (stale)
-  bool recorded() const { return !engine.empty() || !baseline.empty(); }
+  // Recorded: something says which engine or baseline made it (a record recovered after the fact
+  // may know the engine's source alone).
+  bool recorded() const { return !engine.empty() || !engine_source.empty() || !baseline.empty(); }
 };
 
 // The text a stamp field has in JSON when it is not recorded.

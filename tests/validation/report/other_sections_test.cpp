@@ -332,4 +332,14 @@ TEST_CASE("other sections: a stamp recorded elsewhere is taken only for the same
   CHECK(bench.spheres == 8000);
   CHECK(bench.baseline.empty());
   CHECK(validation::stamp_text(bench).find("engine `0.1.0+1cb397751ed6`") != std::string::npos);
+  // The earlier baseline's record, stamped after the fact with its engine's source alone: what
+  // is known said, what is not said so, and another engine than the paper study's.
+  write_json(report / "baselines" / "orthorhombic_validation.json",
+             {{"stamp", {{"engine", "not recorded"}, {"engine_source", "85398fbd83a3644f"}, {"baseline", "not recorded"}, {"spheres", 8000},
+                         {"samples", 5}, {"date", "2026-11-24"}}}});
+  const Stamp earlier = validation::read_section_stamp(report, section("Appendix: This baseline against the earlier one (orthorhombic cell)"));
+  CHECK(validation::stamp_text(earlier) ==
+        "made by an engine not recorded (source `85398fbd83a3644f`) on a baseline not recorded (8,000 spheres, 5 samples, 2026-11-24)");
+  const Stamp paper{"0.1.0+3d448a9766e3", "b40cf9b5afd6759b", 8000, 5, "2026-11-28", "7a8331262cc8c4ff schema 4"};
+  CHECK(validation::stamp_difference(earlier, paper) == "engine");
 }

@@ -143,6 +143,12 @@ TEST_CASE("stamp: JSON written and read back; what is missing is not recorded", 
   REQUIRE(part.recorded());
   REQUIRE(part.spheres == 0);
   REQUIRE(part.samples == 0);
+  // A record stamped after the fact that knows its engine's source alone is recorded (the earlier
+  // baseline's, reports/baselines/): it is another engine's, not one made before stamps.
+  const validation::Stamp source_only = validation::stamp_from_json(
+      {{"engine", "not recorded"}, {"engine_source", "85398fbd83a3644f"}, {"baseline", "not recorded"}, {"spheres", 8000}});
+  REQUIRE(source_only.engine.empty());
+  REQUIRE(source_only.recorded());
 }
 
 TEST_CASE("stamp: several studies' stamps combined list the values on which they differ", "[stamp]") {
