@@ -220,31 +220,36 @@ int tool_main(int argc, char** argv) {
     const validation::Stamp paper_stamp = validation::read_paper_stamp(report);
     v["stamp.paper"] = paper_stamp.recorded() ? validation::stamp_text(paper_stamp)
                                               : "made before stamps (their engine and baseline are not recorded, so no section is compared with them)";
-    // The sections kept from another baseline (with --allow-other-baseline), named in the header.
-    std::vector<std::string> elsewhere;
-    for (const auto& [section, differs] : validation::sections_from_elsewhere(report, v, paper_stamp))
-      elsewhere.push_back("\"" + validation::section_shown(section) + "\" (another " + differs + ")");
+    // What is kept from another baseline or engine (with --allow-other-baseline), named in the
+    // header: the verdicts and values here, the sections once every table is in (below).
+    std::vector<std::string> kept;
     // The verdicts shown are validation.json's: it must have judged these results (the same
     // engine, baseline, spheres and samples), or the report would present another study's verdicts
     // as this one's.
     if (const std::string differs = fresh ? validation::judged_difference(from_results->stamp, paper_stamp) : "";
-        !kept_or_refused(differs, allow_other_baseline, elsewhere, "the verdicts of `" + (report / "validation.json").string() + "`",
+        !kept_or_refused(differs, allow_other_baseline, kept, "the verdicts of `" + (report / "validation.json").string() + "`",
                          (report / "validation.json").string() + " judged other results than --results " + validation::shown_path(results) +
                              ": its " + differs + " differ; run validate on these results first"))
       return 1;
     // The values read back must come from the results validation.json judged: another baseline is
     // refused as a section would be.
     if (const std::string differs = read_back ? validation::stamp_difference(from_results->stamp, paper_stamp) : "";
-        !kept_or_refused(differs, allow_other_baseline, elsewhere, "the values of `" + values_file + "`",
+        !kept_or_refused(differs, allow_other_baseline, kept, "the values of `" + values_file + "`",
                          values_file + " was written from results on another " + differs + " than reports/validation.json's (" +
                              from_results->stamp.baseline + " against " + paper_stamp.baseline + "); write the report with the results here"))
       return 1;
-    v["stamp.elsewhere"] = allow_other_baseline ? validation::joined(elsewhere, ", ") : "";
     validation::add_setup(v, report, !from_results ? "" : read_back ? "`" + values_file + "`" : "the resolved scenes of the results");
     // The stability study's settings: read once from its results (above, with fresh values), else as
     // the values file kept them, else none.
     if ((stability_here && !fresh) || !v.count("have_stability")) validation::add_study_settings(v, stability_here ? opt["--stability"] : "");
     add_judged_values(v, report, in.rows, opt["--baseline"]);
+    // The sections from elsewhere, after the last table is filled (the earlier baseline's is
+    // added just above): the header names every section stamp_sections heads with ⚠.
+    std::vector<std::string> elsewhere;
+    for (const auto& [section, differs] : validation::sections_from_elsewhere(report, v, paper_stamp))
+      elsewhere.push_back("\"" + validation::section_shown(section) + "\" (another " + differs + ")");
+    elsewhere.insert(elsewhere.end(), kept.begin(), kept.end());
+    v["stamp.elsewhere"] = allow_other_baseline ? validation::joined(elsewhere, ", ") : "";
     const std::string notes = validation::read_text(fs::path(opt["--templates"]) / "figure_notes.tsv");
     if (notes.empty()) throw std::runtime_error(opt["--templates"] + "/figure_notes.tsv is missing or empty");
     validation::add_figures(v, report, notes);

@@ -165,3 +165,34 @@ TEST_CASE("report: a validation.json that judged other results than --results is
     CHECK(dem::test::read_bytes((out / "index.md").string()) == before);  // not written
   }
 }
+
+// The class behind a section headed ⚠ that the header did not name (the earlier baseline's
+// comparison, whose table is filled after the header's list was made): on the committed reports
+// with the earlier baseline given, every heading "## Appendix: ⚠ from another ...: NAME" is named
+// in the header's list.
+TEST_CASE("report: the header names every section it heads with ⚠", "[report][stamp][cli]") {
+  const fs::path dir = dem::test::scratch_dir("report_stamps_header");
+  const fs::path out = dir / "reports";
+  fs::copy(source + "/reports", out, fs::copy_options::recursive);
+  const std::string report = "cd '" + source + "' && '" + bin + "report' --results '" + (dir / "no_results").string() +
+                             "' --references reference_data/paper.yaml --out '" + out.string() +
+                             "' --sample seed1 --baseline reports/baselines/orthorhombic_validation.json --allow-other-baseline 2>&1";
+  const auto run = dem::test::run_command(report);
+  INFO(run.out);
+  REQUIRE(run.exit_code == 0);
+  const std::string text = dem::test::read_bytes((out / "index.md").string());
+  const std::string banner_start = "\n⚠ Made on another baseline or engine than the paper study's";
+  const std::size_t banner_at = text.find(banner_start);
+  REQUIRE(banner_at != std::string::npos);
+  const std::string banner = text.substr(banner_at, text.find('\n', banner_at + 1) - banner_at);
+  const std::string mark = "\n## Appendix: ⚠ from another ";
+  int headed = 0;
+  for (std::size_t at = text.find(mark); at != std::string::npos; at = text.find(mark, at + 1)) {
+    const std::size_t name_at = text.find(": ", at + mark.size()) + 2, end = text.find('\n', name_at);
+    const std::string name = text.substr(name_at, end - name_at);
+    INFO("headed ⚠: " << name);
+    CHECK_THAT(banner, Catch::Contains("\"" + name + "\""));
+    ++headed;
+  }
+  CHECK(headed >= 1);  // the earlier baseline's comparison at least: another engine's
+}
