@@ -495,8 +495,8 @@ struct DashpotWork {
 // The pair loop books the half with v(n-1/2); this is the half with v(n+1/2), from the forces it
 // stored and this evaluation's branch vector l rebuilt from the positions now (PreviousHalf),
 // its lever arms over |l| from the centre distance it stored, `simd_lanes` pairs at a time (the
-// same bits at any width: each pair's term is subtracted from its chunk's sum in pair order, the chunks' sums added in chunk
-// order, the pair chunks of the step's sweep: so the next step's pair loop can book it instead,
+// same bits at any width: each pair's term is subtracted from its chunk's sum in pair order, the
+// chunks' sums added in chunk order, the pair chunks of the step's sweep: so the next step's pair loop can book it instead,
 // with the same bits, while it has the velocities in hand; forces_and_motion). Booking
 // dt F_d . u(n-1/2) alone leaves c dt/4 (u_end^2 - u_start^2) open per contact, an O(dt) closure
 // error; with both halves what is left is the leapfrog's O(dt^2) (energy_balance_test.cpp), which
