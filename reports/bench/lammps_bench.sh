@@ -2,10 +2,14 @@
 # lammps_bench.sh: time LAMMPS (Debian package `lammps`) on the same sphere packing as `make bench`,
 # so that LAMMPS and our engine can be shown side by side. Speed is in particle-steps per second.
 #
-#   reports/bench/lammps_bench.sh PARTICLES.txt LX LY LZ STEPS REPS OUT.json
+#   reports/bench/lammps_bench.sh PARTICLES.txt LX LY LZ [XY XZ YZ] STEPS REPS OUT.json
 #
 # PARTICLES.txt: "x y z radius" (m), one sphere per line, '#' comment lines (`dem state R.h5`).
-# LX LY LZ: periodic box 0..L (m). Settings as in dem-bench: SI units, density 2650 kg/m^3, Hookean
+# LX LY LZ: periodic box 0..L (m). XY XZ YZ: the cell's tilts (m; `dem table` cell_tilt_12, _13, _23),
+# LAMMPS's triclinic box, edges (LX,0,0), (XY,LY,0), (XZ,YZ,LZ), as the engine's; 0 0 0 if left out.
+# A cell that holds its shear stresses at zero (a preparation with zero_shear_stress) tilts: read as
+# orthogonal, its spheres overlap across the boundary (a tilt of 0.4 mm on a 70 mm packing gave LAMMPS
+# 361.7 kPa and 2Nc/N 4.37 where the engine had 100 kPa and 6.11). Settings as in dem-bench: SI units, density 2650 kg/m^3, Hookean
 # contacts kn = kt = 1e6 N/m with tangential history and Coulomb friction mu, dt = 1e-6 s, neighbour
 # skin $SKIN m (default 2e-4) checked every step. Serial, one core (OMP_NUM_THREADS=1), mu = 0.5 then mu = 0
 # (FRICTIONS="0.5" or "0" times one only, e.g. each on the packing jammed with that friction).
@@ -34,8 +38,13 @@
 set -euo pipefail
 
 die() { echo "lammps_bench: $*" >&2; exit 1; }
-[ $# -eq 7 ] || die "usage: $0 PARTICLES.txt LX LY LZ STEPS REPS OUT.json"
-particles=$1 lx=$2 ly=$3 lz=$4 steps=$5 reps=$6 out=$7
+usage="usage: $0 PARTICLES.txt LX LY LZ [XY XZ YZ] STEPS REPS OUT.json"
+xy=0 xz=0 yz=0
+case $# in
+  7) particles=$1 lx=$2 ly=$3 lz=$4 steps=$5 reps=$6 out=$7 ;;
+  10) particles=$1 lx=$2 ly=$3 lz=$4 xy=$5 xz=$6 yz=$7 steps=$8 reps=$9 out=${10} ;;
+  *) die "$usage" ;;
+esac
 [ -r "$particles" ] || die "cannot read $particles"
 [[ $steps =~ ^[1-9][0-9]*$ && $reps =~ ^[1-9][0-9]*$ ]] || die "STEPS and REPS must be positive integers"
 LMP=${LMP:-lmp}
@@ -54,7 +63,7 @@ trap 'rm -rf "$tmp"' EXIT
 
 # 1. LAMMPS data file (atom_style sphere: id type diameter density x y z); prints the atom count,
 #    gamma_n (1/s; the Hooke damping force is m_eff gamma_n v_n) and the fix viscous gamma (kg/s).
-read -r natoms gamman gammav < <(awk -v lx="$lx" -v ly="$ly" -v lz="$lz" -v rho="$density" -v kn="$kn" -v zeta="$zeta" \
+read -r natoms gamman gammav < <(awk -v lx="$lx" -v ly="$ly" -v lz="$lz" -v xy="$xy" -v xz="$xz" -v yz="$yz" -v rho="$density" -v kn="$kn" -v zeta="$zeta" \
     -v data="$tmp/data.spheres" '
   /^[[:space:]]*(#|$)/ { next }
   NF < 4 { print "lammps_bench: bad line " NR ": " $0 > "/dev/stderr"; exit 1 }
@@ -62,7 +71,9 @@ read -r natoms gamman gammav < <(awk -v lx="$lx" -v ly="$ly" -v lz="$lz" -v rho=
   END {
     if (n == 0) { print "lammps_bench: no particles" > "/dev/stderr"; exit 1 }
     printf "spheres from dem state\n\n%d atoms\n1 atom types\n\n", n > data
-    printf "0 %s xlo xhi\n0 %s ylo yhi\n0 %s zlo zhi\n\nAtoms # sphere\n\n", lx, ly, lz > data
+    printf "0 %s xlo xhi\n0 %s ylo yhi\n0 %s zlo zhi\n", lx, ly, lz > data
+    if (xy != 0 || xz != 0 || yz != 0) printf "%s %s %s xy xz yz\n", xy, xz, yz > data
+    printf "\nAtoms # sphere\n\n" > data
     for (i = 1; i <= n; i++) printf "%d 1 %.17g %s %s %s %s\n", i, 2 * r[i], rho, x[i], y[i], z[i] > data
     m = msum / n
     printf "%d %.6g %.6g\n", n, 2 * zeta * sqrt(kn / (m / 2)), 2 * zeta * sqrt(kn * m)
@@ -128,5 +139,5 @@ done
 pkg=$(dpkg-query -W -f='${Version}' lammps 2>/dev/null || echo unknown)
 "$BENCH_REPORT" lammps-json "$tmp" "$out" --frictions "$frictions" --atoms "$natoms" --tiles "$tiles" --steps "$steps" \
   --reps "$reps" --package "$pkg" \
-  --settings "pair_style gran/hooke/history $kn $kt $gamman $gammat MU 1; fix nve/sphere; fix viscous $gammav; fixed periodic box" ||
+  --settings "pair_style gran/hooke/history $kn $kt $gamman $gammat MU 1; fix nve/sphere; fix viscous $gammav; fixed periodic box, tilts $xy $xz $yz m" ||
   die "could not write $out from the logs"

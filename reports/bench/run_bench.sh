@@ -65,9 +65,11 @@ cases="mu05:0.5 mu0:0 mu0:0.5"   # packing:friction, the engine's order
 for c in $cases; do
   name=${c%%:*} mu=${c##*:}
   "$build/bin/dem" state "$work/packing_$name.h5" >"$work/packing_$name.txt"
-  read -r lx ly lz < <("$build/bin/dem" table "$work/packing_$name.h5" cell_length_1 cell_length_2 cell_length_3 | tail -n 1)
-  echo "$lx $ly $lz" >"$work/packing_$name.box"
-  FRICTIONS=$mu "$here/lammps_bench.sh" "$work/packing_$name.txt" "$lx" "$ly" "$lz" "$steps" "$reps" "$work/lammps_${name}_$mu.json"
+  # The cell's lengths and tilts (a preparation that holds its shear stresses at zero tilts its cell).
+  "$build/bin/dem" table "$work/packing_$name.h5" cell_length_1 cell_length_2 cell_length_3 cell_tilt_12 cell_tilt_13 \
+    cell_tilt_23 | tail -n 1 >"$work/packing_$name.box"
+  FRICTIONS=$mu "$here/lammps_bench.sh" "$work/packing_$name.txt" $(cat "$work/packing_$name.box") "$steps" "$reps" \
+    "$work/lammps_${name}_$mu.json"
 done
 
 # Cost against size: one dem-bench process per size, then LAMMPS on the same tiled packing.

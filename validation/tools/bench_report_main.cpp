@@ -14,6 +14,7 @@
 // PACKING:FRICTION of --cases, and lammps_size_<N>.json. A file or a run that is missing is an
 // error naming it (exit 1); bad arguments exit 2.
 #include <algorithm>
+#include <cmath>
 #include <cstdarg>
 #include <cstdio>
 #include <fstream>
@@ -106,6 +107,13 @@ std::vector<std::string> words(const std::string& s) {
   return out;
 }
 
+// How far apart the two codes' contacts per sphere (2Nc/N) may be on the packing jammed with mu = 0
+// before the side-by-side table is refused. LAMMPS's figure is taken after its 200 warm-up steps,
+// ours after the timed run; on the same packing they were 6.11 / 6.11 and 6.07 / 6.08 (make bench
+// of 2026-11-24), and a cell read without its tilts gave 6.11 / 4.37. 0.1 is 400 of the 8,000 spheres'
+// 24,400 contacts (1.6 %): ten times the largest difference seen on the same packing.
+constexpr double kSamePackingContacts = 0.1;
+
 // The side-by-side table (8,000 spheres) and what it was measured on.
 std::string side_by_side(const Options& o, const std::vector<Case>& cases, const json& engine, const std::string& engine_file) {
   validation::MarkdownTable table({"packing jammed with", "friction", "2Nc/N (ours / LAMMPS at start → end)", "ours, 1 thread",
@@ -124,8 +132,17 @@ std::string side_by_side(const Options& o, const std::vector<Case>& cases, const
     const json lammps = read_json(lammps_file);
     const json& lr = run_where(lammps, "runs", {{"friction", c.mu}}, lammps_file);
     const double l = number(lr, "particle_steps_per_s_median", lammps_file);
+    const double zl = number(lr, "coordination_number_start", lammps_file);
+    // The packing jammed with mu = 0 stands without tangential springs, so both codes must time it
+    // with the same contacts; a start that differs means LAMMPS read another packing (a tilted cell
+    // read as orthogonal gave 4.37 against 6.11), and a row that says "like for like" would not be.
+    if (c.packing == "mu0" && std::abs(ze - zl) > kSamePackingContacts)
+      throw std::runtime_error(format("%s: on the packing jammed with mu = 0 (friction %s) LAMMPS started at 2Nc/N %.3f, our engine "
+                                      "timed %.3f: more than %.2f apart, so the two codes did not time the same packing (its cell, "
+                                      "tilts and positions as LAMMPS read them: %s/packing_mu0.box and .txt)",
+                                      lammps_file.c_str(), c.friction.c_str(), zl, ze, kSamePackingContacts, o.bench_dir.c_str()));
     table.row({c.packing == "mu0" ? "μ = 0" : "μ = 0.5", c.friction,
-               format("%.2f / %.2f → %.2f", ze, number(lr, "coordination_number_start", lammps_file),
+               format("%.2f / %.2f → %.2f", ze, zl,
                       number(lr, "coordination_number_end", lammps_file)),
                format("%.3g", e1), format("%.3g", e2), format("%.2f", e2 / e1), format("%.3g", r2), format("%.2f", r2 / e1),
                format("%.3g", l), format("%.2f", e1 / l)});

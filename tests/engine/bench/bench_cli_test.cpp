@@ -55,3 +55,43 @@ TEST_CASE("dem-bench and bench-report: --help exits 0, unknown options and bad v
   CHECK(missing.exit_code == 2);
   CHECK_THAT(missing.out, Catch::Matchers::Contains("--skin"));
 }
+
+// The side-by-side table is refused when LAMMPS did not time the packing our engine timed: on the
+// packing jammed with mu = 0 (which stands without the tangential springs LAMMPS starts without)
+// the two codes' contacts per sphere must agree. The files are the shape dem-bench and
+// lammps_bench.sh write, cut to one case (--cases mu0:0.5) and no sizes; the 2Nc/N values are those
+// of two real runs: 6.11 against LAMMPS's 6.10 (the cell's tilts given) and 4.37 (read orthogonal).
+TEST_CASE("bench-report: refuses a like-for-like row whose two codes started from different packings", "[bench][cli]") {
+  const std::string dir = dem::test::scratch_dir("bench_report_same_packing");
+  dem::test::write_text(dir + "/bench.json", R"({"vector_lanes": 8, "peak_rss_MB": 27.4,
+    "runs": [{"packing": "mu0", "friction": 0.5, "threads": 1, "particle_steps_per_s_median": 3.0e7, "coordination_number": 6.11},
+             {"packing": "mu0", "friction": 0.5, "threads": 2, "particle_steps_per_s_median": 5.5e7, "coordination_number": 6.11}],
+    "two_runs_at_once": [{"packing": "mu0", "friction": 0.5, "total_particle_steps_per_s_median": 5.8e7}]})");
+  dem::test::write_text(dir + "/shear.json", R"({"runs": [{"cell": "orthorhombic", "cpu_rate_median": 1.5e7, "min": 1.4e7, "max": 1.6e7},
+    {"cell": "sheared", "cpu_rate_median": 1.4e7, "min": 1.3e7, "max": 1.6e7}]})");
+  dem::test::write_text(dir + "/laws.json", R"({"scene": "scenes/tests/test1.yaml", "path": "[TC1]", "repetitions": 5,
+    "runs": [{"law": "linear", "set": "", "steps": 100, "cpu_s_per_step_median": 5.8e-5, "min": 5.6e-5, "max": 6.3e-5,
+              "over_linear_median": 1.0, "over_linear_min": 1.0, "over_linear_max": 1.0}]})");
+  const auto lammps = [&](double start) {
+    dem::test::write_text(dir + "/lammps_mu0_0.5.json",
+                          R"({"runs": [{"friction": 0.5, "particle_steps_per_s_median": 1.0e7, "coordination_number_start": )" +
+                              std::to_string(start) + R"(, "coordination_number_end": 6.10}]})");
+  };
+  const std::string out = dir + "/out";
+  std::filesystem::create_directories(out);
+  const std::string args = "'" + dir + "' '" + out + "' --steps 5000 --reps 7 --skin 2.5e-5 --cases mu0:0.5";
+
+  lammps(4.37);
+  const auto refused = tool("bench-report", args);
+  INFO(refused.out);
+  CHECK(refused.exit_code == 1);
+  CHECK_THAT(refused.out, Catch::Matchers::Contains("4.370") && Catch::Matchers::Contains("6.110") &&
+                              Catch::Matchers::Contains("did not time the same packing"));
+  CHECK(std::filesystem::is_empty(out));  // neither bench.json nor bench.md
+
+  lammps(6.10);
+  const auto kept = tool("bench-report", args);
+  INFO(kept.out);
+  REQUIRE(kept.exit_code == 0);
+  CHECK_THAT(dem::test::read_bytes(out + "/bench.md"), Catch::Matchers::Contains("6.11 / 6.10 → 6.10"));
+}
