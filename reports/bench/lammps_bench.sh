@@ -9,7 +9,9 @@
 # LAMMPS's triclinic box, edges (LX,0,0), (XY,LY,0), (XZ,YZ,LZ), as the engine's; 0 0 0 if left out.
 # A cell that holds its shear stresses at zero (a preparation with zero_shear_stress) tilts: read as
 # orthogonal, its spheres overlap across the boundary (a tilt of 0.4 mm on a 70 mm packing gave LAMMPS
-# 361.7 kPa and 2Nc/N 4.37 where the engine had 100 kPa and 6.11). Settings as in dem-bench: SI units, density 2650 kg/m^3, Hookean
+# 361.7 kPa and 2Nc/N 4.37 where the engine had 100 kPa and 6.11).
+#
+# Settings as in dem-bench: SI units, density 2650 kg/m^3, Hookean
 # contacts kn = kt = 1e6 N/m with tangential history and Coulomb friction mu, dt = 1e-6 s, neighbour
 # skin $SKIN m (default 2e-4) checked every step. Serial, one core (OMP_NUM_THREADS=1), mu = 0.5 then mu = 0
 # (FRICTIONS="0.5" or "0" times one only, e.g. each on the packing jammed with that friction).

@@ -109,9 +109,10 @@ std::vector<std::string> words(const std::string& s) {
 
 // How far apart the two codes' contacts per sphere (2Nc/N) may be on the packing jammed with mu = 0
 // before the side-by-side table is refused. LAMMPS's figure is taken after its 200 warm-up steps,
-// ours after the timed run; on the same packing they were 6.11 / 6.11 and 6.07 / 6.08 (make bench
-// of 2026-11-24), and a cell read without its tilts gave 6.11 / 4.37. 0.1 is 400 of the 8,000 spheres'
-// 24,400 contacts (1.6 %): ten times the largest difference seen on the same packing.
+// ours after the timed run; on the same packing they differed by at most 0.01 in both committed runs
+// (6.02 / 6.02 and 5.97 / 5.98 on 2026-11-24, 6.11 / 6.11 and 6.07 / 6.08 before), and a cell read
+// without its tilts gave 6.11 / 4.37. 0.1 is 400 of the 8,000 spheres' 24,400 contacts (1.6 %): ten
+// times the largest difference seen on the same packing.
 constexpr double kSamePackingContacts = 0.1;
 
 // The side-by-side table (8,000 spheres) and what it was measured on.
@@ -139,8 +140,9 @@ std::string side_by_side(const Options& o, const std::vector<Case>& cases, const
     if (c.packing == "mu0" && std::abs(ze - zl) > kSamePackingContacts)
       throw std::runtime_error(format("%s: on the packing jammed with mu = 0 (friction %s) LAMMPS started at 2Nc/N %.3f, our engine "
                                       "timed %.3f: more than %.2f apart, so the two codes did not time the same packing (its cell, "
-                                      "tilts and positions as LAMMPS read them: %s/packing_mu0.box and .txt)",
-                                      lammps_file.c_str(), c.friction.c_str(), zl, ze, kSamePackingContacts, o.bench_dir.c_str()));
+                                      "tilts and positions as LAMMPS read them: %s/packing_%s.box and .txt)",
+                                      lammps_file.c_str(), c.friction.c_str(), zl, ze, kSamePackingContacts, o.bench_dir.c_str(),
+                                      c.packing.c_str()));
     table.row({c.packing == "mu0" ? "μ = 0" : "μ = 0.5", c.friction,
                format("%.2f / %.2f → %.2f", ze, zl,
                       number(lr, "coordination_number_end", lammps_file)),
