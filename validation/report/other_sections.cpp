@@ -134,6 +134,7 @@ Stamp bench_stamp(const fs::path& report) {
     if (e.contains("version") && e.at("version").is_string()) s.engine = e.at("version").get<std::string>();
     if (e.contains("particles") && e.at("particles").is_number_integer()) s.spheres = e.at("particles").get<long>();
   }
+  if (j.is_object() && j.contains("date") && j.at("date").is_string()) s.date = j.at("date").get<std::string>();
   return s;
 }
 

@@ -5,7 +5,7 @@
 //
 //   bench-report BENCH_DIR OUT_DIR --steps N --reps N --skin TEXT --cases "mu05:0.5 mu0:0 mu0:0.5"
 //                [--sizes "8000 64000 ..."] [--size-plan TEXT] [--cores N] [--cpu TEXT]
-//                [--load-start TEXT] [--load-end TEXT]
+//                [--load-start TEXT] [--load-end TEXT] [--date YYYY-MM-DD]
 //   bench-report lammps-json LOG_DIR OUT.json ...   (lammps_bench.sh's JSON from its LAMMPS logs:
 //                validation/tools/bench_report_lammps.cpp)
 //
@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
+#include <ctime>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -88,6 +89,16 @@ std::string commas(long long n) {
   return out;
 }
 
+// Today's date in UTC, YYYY-MM-DD.
+std::string utc_today() {
+  const std::time_t now = std::time(nullptr);
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char day[11];
+  std::strftime(day, sizeof day, "%Y-%m-%d", &utc);
+  return day;
+}
+
 struct Case {
   std::string packing, friction;  // the friction as written in --cases (and in the file's name)
   double mu;
@@ -96,6 +107,7 @@ struct Case {
 struct Options {
   std::string bench_dir, out_dir, skin, cases = "mu05:0.5 mu0:0 mu0:0.5", sizes, size_plan, cpu = "unknown";
   std::string load_start = "unknown", load_end = "unknown";
+  std::string date;  // the day the benchmark ran (UTC, YYYY-MM-DD)
   long steps = 0;
   int reps = 0, cores = 0;
 };
@@ -152,7 +164,7 @@ std::string side_by_side(const Options& o, const std::vector<Case>& cases, const
   std::string md = table.text();
   md += "\nParticle-steps per second, medians of " + std::to_string(o.reps) + " repetitions of " + std::to_string(o.steps) +
         " steps (dt = 1 µs, 8,000 spheres,\nVerlet skin " + o.skin + " m in both codes),\nmeasured by `make bench` on " +
-        std::to_string(o.cores) + " cores (" + o.cpu + "),\n" +
+        o.date + " (" + std::to_string(o.cores) + " cores, " + o.cpu + "),\n" +
         format("force loop %.0f pairs per vector operation (8: AVX-512, 4: AVX2, 0: scalar).\n", number(engine, "vector_lanes", engine_file)) +
         format("Peak memory of dem-bench: %g MB.\n", number(engine, "peak_rss_MB", engine_file)) +
         "LAMMPS runs in a fixed cell without our stress servo and starts without tangential springs. On the\n"
@@ -290,7 +302,7 @@ int report(const Options& o) {
   const std::string engine_file = o.bench_dir + "/bench.json", shear_file = o.bench_dir + "/shear.json";
   const std::string laws_file = o.bench_dir + "/laws.json";
   const json engine = read_json(engine_file), shear = read_json(shear_file), laws = read_json(laws_file);
-  json all = {{"engine", engine}, {"sheared_cell", shear}, {"contact_laws", laws}, {"lammps", json::array()}};
+  json all = {{"date", o.date}, {"engine", engine}, {"sheared_cell", shear}, {"contact_laws", laws}, {"lammps", json::array()}};
   for (const Case& c : cases) all["lammps"].push_back(read_json(o.bench_dir + "/lammps_" + c.packing + "_" + c.friction + ".json"));
   std::vector<json> size_engine, size_lammps;
   for (long long n : sizes) {
@@ -329,6 +341,16 @@ int main(int argc, char** argv) {
   app.add_option("--cpu", o.cpu, "the processor's model name");
   app.add_option("--load-start", o.load_start, "the load average (1, 5, 15 min) before the benchmark");
   app.add_option("--load-end", o.load_end, "the load average (1, 5, 15 min) after it");
+  o.date = utc_today();
+  app.add_option("--date", o.date, "the day the benchmark ran, UTC (the report's stamp of its section)")
+      ->capture_default_str()
+      ->check(CLI::Validator(
+          [](const std::string& d) {
+            const bool shape = d.size() == 10 && d[4] == '-' && d[7] == '-' &&
+                               std::all_of(d.begin(), d.end(), [](char c) { return c == '-' || (c >= '0' && c <= '9'); });
+            return shape ? std::string() : "not a date YYYY-MM-DD: " + d;
+          },
+          "YYYY-MM-DD"));
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

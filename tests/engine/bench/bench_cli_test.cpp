@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <string>
 #include <utility>
+#include <nlohmann/json.hpp>
 
 #include "engine/io/io_test_support.hpp"
 
@@ -54,6 +55,11 @@ TEST_CASE("dem-bench and bench-report: --help exits 0, unknown options and bad v
   INFO(missing.out);
   CHECK(missing.exit_code == 2);
   CHECK_THAT(missing.out, Catch::Matchers::Contains("--skin"));
+  // A date not shaped YYYY-MM-DD is refused before any file is read.
+  const auto date = tool("bench-report", "a b --steps 1 --reps 1 --skin 1 --date 4/12/2026");
+  INFO(date.out);
+  CHECK(date.exit_code == 2);
+  CHECK_THAT(date.out, Catch::Matchers::Contains("--date") && Catch::Matchers::Contains("4/12/2026"));
 }
 
 // The side-by-side table is refused when LAMMPS did not time the packing our engine timed: on the
@@ -90,8 +96,12 @@ TEST_CASE("bench-report: refuses a like-for-like row whose two codes started fro
   CHECK(std::filesystem::is_empty(out));  // neither bench.json nor bench.md
 
   lammps(6.10);
-  const auto kept = tool("bench-report", args);
+  const auto kept = tool("bench-report", args + " --cores 2 --date 2026-12-04");
   INFO(kept.out);
   REQUIRE(kept.exit_code == 0);
-  CHECK_THAT(dem::test::read_bytes(out + "/bench.md"), Catch::Matchers::Contains("6.11 / 6.10 → 6.10"));
+  const std::string md = dem::test::read_bytes(out + "/bench.md");
+  CHECK_THAT(md, Catch::Matchers::Contains("6.11 / 6.10 → 6.10"));
+  // The day it ran, said in the table's text and in bench.json (the report's stamp of the section).
+  CHECK_THAT(md, Catch::Matchers::Contains("measured by `make bench` on 2026-12-04 (2 cores,"));
+  CHECK(nlohmann::json::parse(dem::test::read_bytes(out + "/bench.json")).at("date") == "2026-12-04");
 }

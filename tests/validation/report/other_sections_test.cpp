@@ -325,13 +325,20 @@ TEST_CASE("other sections: a stamp recorded elsewhere is taken only for the same
   CHECK_FALSE(validation::read_section_stamp(report, section("The critical state on ")).recorded());
   // The rates part has no record elsewhere: not recorded, none invented.
   CHECK_FALSE(validation::read_section_stamp(report, section("Rate convergence: ")).recorded());
-  // make bench's file without a "stamp": the engine and the spheres it records.
+  // make bench's file without a "stamp": the engine and the spheres it records, and the day it ran
+  // where it says (bench-report writes it; earlier files do not).
   write_json(report / "bench.json", {{"engine", {{"version", "0.1.0+1cb397751ed6"}, {"particles", 8000}, {"runs", nlohmann::json::array()}}}});
   const Stamp bench = validation::read_section_stamp(report, section("Appendix: Performance"));
   CHECK(bench.engine == "0.1.0+1cb397751ed6");
   CHECK(bench.spheres == 8000);
   CHECK(bench.baseline.empty());
+  CHECK(bench.date.empty());
   CHECK(validation::stamp_text(bench).find("engine `0.1.0+1cb397751ed6`") != std::string::npos);
+  write_json(report / "bench.json",
+             {{"date", "2026-12-04"}, {"engine", {{"version", "0.1.0+fbd873cbcaac"}, {"particles", 8000}, {"runs", nlohmann::json::array()}}}});
+  const Stamp dated = validation::read_section_stamp(report, section("Appendix: Performance"));
+  CHECK(dated.date == "2026-12-04");
+  CHECK(validation::stamp_text(dated).find("2026-12-04") != std::string::npos);
   // The earlier baseline's record, stamped after the fact with its engine's source alone: what
   // is known said, what is not said so, and another engine than the paper study's.
   write_json(report / "baselines" / "orthorhombic_validation.json",
