@@ -346,9 +346,12 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->check(CLI::Validator(
           [](const std::string& d) {
-            const bool shape = d.size() == 10 && d[4] == '-' && d[7] == '-' &&
-                               std::all_of(d.begin(), d.end(), [](char c) { return c == '-' || (c >= '0' && c <= '9'); });
-            return shape ? std::string() : "not a date YYYY-MM-DD: " + d;
+            std::tm day{};
+            const char* end = strptime(d.c_str(), "%Y-%m-%d", &day);
+            std::tm normal = day;
+            timegm(&normal);  // normalises a day past the month's end (2026-02-30 to March 2)
+            const bool ok = d.size() == 10 && end != nullptr && *end == '\0' && normal.tm_mday == day.tm_mday;
+            return ok ? std::string() : "not a date YYYY-MM-DD: " + d;
           },
           "YYYY-MM-DD"));
   try {

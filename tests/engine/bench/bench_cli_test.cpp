@@ -55,11 +55,13 @@ TEST_CASE("dem-bench and bench-report: --help exits 0, unknown options and bad v
   INFO(missing.out);
   CHECK(missing.exit_code == 2);
   CHECK_THAT(missing.out, Catch::Matchers::Contains("--skin"));
-  // A date not shaped YYYY-MM-DD is refused before any file is read.
-  const auto date = tool("bench-report", "a b --steps 1 --reps 1 --skin 1 --date 4/12/2026");
-  INFO(date.out);
-  CHECK(date.exit_code == 2);
-  CHECK_THAT(date.out, Catch::Matchers::Contains("--date") && Catch::Matchers::Contains("4/12/2026"));
+  // A date that is not YYYY-MM-DD, or no such day, is refused before any file is read.
+  for (const char* bad : {"4/12/2026", "2026-13-01", "2026-02-30", "2026-12-4"}) {
+    const auto date = tool("bench-report", std::string("a b --steps 1 --reps 1 --skin 1 --date ") + bad);
+    INFO(date.out);
+    CHECK(date.exit_code == 2);
+    CHECK_THAT(date.out, Catch::Matchers::Contains("--date") && Catch::Matchers::Contains(bad));
+  }
 }
 
 // The side-by-side table is refused when LAMMPS did not time the packing our engine timed: on the
