@@ -1,10 +1,8 @@
 #include "report/report_values.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <fstream>
 #include <map>
 #include <set>
@@ -31,6 +29,7 @@
 #include "study/paths.hpp"
 #include "study/section_doc.hpp"
 #include "study/settings.hpp"
+#include "study/utc_day.hpp"
 #include "version.hpp"
 #include "study/columns.hpp"
 
@@ -155,10 +154,7 @@ std::string read_text(const fs::path& p) {
 }
 
 void add_provenance(Values& v, const ReportSources& src, bool have_results, std::size_t missing) {
-  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
-  char date[32];
-  std::strftime(date, sizeof date, "%Y-%m-%d", std::gmtime(&now));
-  v["date"] = date;
+  v["date"] = utc_day();
   v["results"] = shown_path(src.results);
   v["note"] = src.note;
   v["source"] = src.source.empty() ? "not given" : src.source;

@@ -1,7 +1,6 @@
 #include "sections/convergence_summary.hpp"
 
 #include <cmath>
-#include <ctime>
 #include <set>
 #include <stdexcept>
 
@@ -15,6 +14,7 @@
 #include "study/paths.hpp"
 #include "study/results.hpp"
 #include "study/stamp.hpp"
+#include "study/utc_day.hpp"
 
 namespace validation {
 namespace {
@@ -28,13 +28,6 @@ std::string string_attribute(const std::string& file, const std::string& name) {
   } catch (const std::exception&) {
     return "";
   }
-}
-
-std::string today() {
-  const std::time_t now = std::time(nullptr);
-  char buf[16];
-  std::strftime(buf, sizeof buf, "%Y-%m-%d", std::gmtime(&now));
-  return buf;
 }
 
 // A number as JSON, to 10 significant digits (null when not finite).
@@ -75,7 +68,7 @@ void set_size(ConvergenceSummary& s) {
 ConvergenceSummary summarise_convergence(const sections::Manifest& manifest, const std::string& results, int threads) {
   ConvergenceSummary s;
   s.results = shown_path(results);
-  s.date = today();
+  s.date = utc_day();
   s.threads = threads;
   // The runs by (variant, density, seed): the preparation and the test of each.
   for (const std::string& variant : manifest.variants) {

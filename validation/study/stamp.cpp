@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <ctime>
 #include <filesystem>
 #include <stdexcept>
 
@@ -12,6 +11,7 @@
 #include "study/baseline.hpp"
 #include "study/manifest.hpp"
 #include "study/results.hpp"
+#include "study/utc_day.hpp"
 
 namespace fs = std::filesystem;
 
@@ -25,10 +25,7 @@ std::string day_written(const std::string& file) {
   if (ec) return "";
   const auto sys = std::chrono::time_point_cast<std::chrono::system_clock::duration>(t - fs::file_time_type::clock::now() +
                                                                                        std::chrono::system_clock::now());
-  const std::time_t tt = std::chrono::system_clock::to_time_t(sys);
-  char buf[16];
-  std::strftime(buf, sizeof buf, "%Y-%m-%d", std::gmtime(&tt));
-  return buf;
+  return utc_day(std::chrono::system_clock::to_time_t(sys));
 }
 
 std::string text_field(const nlohmann::json& j, const char* key) {

@@ -17,7 +17,6 @@
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
-#include <ctime>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -28,6 +27,7 @@
 #include <nlohmann/json.hpp>
 
 #include "study/markdown_table.hpp"
+#include "study/utc_day.hpp"
 
 namespace {
 
@@ -87,16 +87,6 @@ std::string commas(long long n) {
     out += s[k];
   }
   return out;
-}
-
-// Today's date in UTC, YYYY-MM-DD.
-std::string utc_today() {
-  const std::time_t now = std::time(nullptr);
-  std::tm utc{};
-  gmtime_r(&now, &utc);
-  char day[11];
-  std::strftime(day, sizeof day, "%Y-%m-%d", &utc);
-  return day;
 }
 
 struct Case {
@@ -341,18 +331,11 @@ int main(int argc, char** argv) {
   app.add_option("--cpu", o.cpu, "the processor's model name");
   app.add_option("--load-start", o.load_start, "the load average (1, 5, 15 min) before the benchmark");
   app.add_option("--load-end", o.load_end, "the load average (1, 5, 15 min) after it");
-  o.date = utc_today();
+  o.date = validation::utc_day();
   app.add_option("--date", o.date, "the day the benchmark ran, UTC (the report's stamp of its section)")
       ->capture_default_str()
       ->check(CLI::Validator(
-          [](const std::string& d) {
-            std::tm day{};
-            const char* end = strptime(d.c_str(), "%Y-%m-%d", &day);
-            std::tm normal = day;
-            timegm(&normal);  // normalises a day past the month's end (2026-02-30 to March 2)
-            const bool ok = d.size() == 10 && end != nullptr && *end == '\0' && normal.tm_mday == day.tm_mday;
-            return ok ? std::string() : "not a date YYYY-MM-DD: " + d;
-          },
+          [](const std::string& d) { return validation::is_utc_day(d) ? std::string() : "not a date YYYY-MM-DD: " + d; },
           "YYYY-MM-DD"));
   try {
     app.parse(argc, argv);

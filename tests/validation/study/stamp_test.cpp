@@ -13,6 +13,7 @@
 #include "io/hdf5.hpp"
 #include "study/baseline.hpp"
 #include "study/stamp.hpp"
+#include "study/utc_day.hpp"
 
 namespace fs = std::filesystem;
 
@@ -163,4 +164,17 @@ TEST_CASE("stamp: several studies' stamps combined list the values on which they
   REQUIRE(d.engine == "E");
   REQUIRE(d.baseline == "b1");
   REQUIRE(d.date == "2026-11-20");
+}
+
+// Seconds since the epoch of two known days (1970-01-01 00:00 UTC and 2024-02-29 23:59:59 UTC,
+// 19,782 days and 86,399 s later), and the days a stamp or a --date may say.
+TEST_CASE("stamp: the day in UTC, written and checked", "[stamp]") {
+  CHECK(validation::utc_day(0) == "1970-01-01");
+  CHECK(validation::utc_day(19782L * 86400 + 86399) == "2024-02-29");
+  CHECK(validation::is_utc_day(validation::utc_day()));
+  CHECK(validation::is_utc_day("2024-02-29"));
+  for (const char* bad : {"2026-02-30", "2026-13-01", "2026-12-4", "4/12/2026", "2026-12-04x", ""}) {
+    INFO(bad);
+    CHECK_FALSE(validation::is_utc_day(bad));
+  }
 }
